@@ -1,0 +1,9 @@
+# Warnings for the project's own targets (never for third-party headers, which come in as SYSTEM).
+function(celform_set_warnings target)
+  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow=local
+                                             -Wnon-virtual-dtor -Wno-unused-parameter)
+  endif()
+  # Release with assertions: RelWithDebInfo keeps assert() on (no NDEBUG).
+  target_compile_options(${target} PRIVATE $<$<CONFIG:RelWithDebInfo>:-UNDEBUG>)
+endfunction()

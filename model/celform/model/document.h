@@ -1,0 +1,93 @@
+// The Celform document: the project data, the undo stack, and the edit methods that views and
+// the command line call. Every edit is a QUndoCommand; nothing changes the data behind its back.
+#pragma once
+
+#include "celform/model/project_data.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <memory>
+
+namespace celform::model {
+
+class Document : public QObject {
+    Q_OBJECT
+public:
+    explicit Document(QObject* parent = nullptr);
+    ~Document() override;
+
+    [[nodiscard]] const ProjectData& data() const { return m_data; }
+    [[nodiscard]] QUndoStack* undoStack() const { return m_undo; }
+    [[nodiscard]] bool hasMesh() const { return m_data.baseMesh != nullptr; }
+
+    // --- files -----------------------------------------------------------------------------
+    /// The project's file, empty until saved or opened.
+    [[nodiscard]] QString filePath() const { return m_filePath; }
+    [[nodiscard]] bool isModified() const { return !m_undo->isClean(); }
+    /// Replaces the document by a project file. Throws IoError and leaves the document untouched
+    /// when the file cannot be read.
+    void open(const QString& path);
+    /// Saves to path (atomic, backup kept) and marks the document clean. Throws IoError.
+    void saveAs(const QString& path);
+    /// Writes a copy (autosave, recovery) without touching the file path or clean state.
+    void saveCopy(const QString& path) const;
+    /// Starts a new project on a mesh file. Throws IoError and leaves the document untouched.
+    /// Returns the import warnings.
+    QStringList newFromMesh(const QString& meshPath);
+    /// Replaces everything, clears undo history; for open and tests.
+    void reset(ProjectData data, const QString& filePath = {});
+
+    // --- edits (each pushes one undo command) --------------------------------------------------
+    /// Replaces the base model. Keys whose offsets do not fit the new vertex count are refused:
+    /// throws IoError naming meshName in that case, and the document is unchanged.
+    void setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QString& meshName);
+    /// Imports a mesh file as the base model; returns the import warnings. Throws IoError.
+    QStringList importBaseMesh(const QString& path);
+
+    ObjectId addDrawing(Drawing drawing);
+    /// Imports an image file as a drawing; returns its id. Throws IoError.
+    ObjectId importDrawing(const QString& path);
+    void removeDrawing(ObjectId id);
+    void renameDrawing(ObjectId id, const QString& name);
+    /// Mergeable: a slider drag is one undo step.
+    void setDrawingOpacity(ObjectId id, double opacity);
+    void setDrawingCamera(ObjectId id, const Camera& camera);
+
+    ObjectId addKey(KeyViewpoint key);
+    void removeKey(ObjectId id);
+    void renameKey(ObjectId id, const QString& name);
+    void setKeyEnabled(ObjectId id, bool enabled);
+
+    void setBlendSettings(const BlendSettings& settings);
+    void setLook(const Look& look);
+
+    /// Makes a name unique among drawings or keys by appending " 2", " 3", ...
+    [[nodiscard]] QString uniqueDrawingName(const QString& wanted) const;
+    [[nodiscard]] QString uniqueKeyName(const QString& wanted) const;
+
+    /// Low-level access for undo commands only.
+    ProjectData& mutableData() { return m_data; }
+
+    enum class Part { Mesh, Drawings, Keys, Blend, Look };
+    /// Called by commands after they changed a part.
+    void notifyChanged(Part part);
+
+signals:
+    void meshChanged();
+    void drawingsChanged();
+    void keysChanged();
+    void blendChanged();
+    void lookChanged();
+    /// The whole document was replaced (open, new).
+    void documentReset();
+    void filePathChanged(const QString& path);
+
+private:
+    ProjectData m_data;
+    QUndoStack* m_undo;
+    QString m_filePath;
+};
+
+} // namespace celform::model

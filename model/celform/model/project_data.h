@@ -1,0 +1,122 @@
+// Everything a Celform project holds, as plain values (DESIGN.md, "The document"). The Document
+// owns one ProjectData and changes it only through undo commands; file I/O reads and writes it.
+#pragma once
+
+#include "celform/algorithms/tri_mesh.h"
+#include "celform/model/camera.h"
+
+#include <QByteArray>
+#include <QImage>
+#include <QString>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace celform::model {
+
+using ObjectId = std::uint64_t; ///< stable id of a drawing or key, never reused in a project
+
+/// Sparse per-vertex offsets from the base model (paper 1, section 3.1.2: deformations touch
+/// few vertices). indices are strictly increasing.
+struct SparseOffsets {
+    std::vector<std::uint32_t> indices;
+    std::vector<Eigen::Vector3f> deltas;
+    bool operator==(const SparseOffsets& o) const { return indices == o.indices && deltas == o.deltas; }
+};
+
+struct Drawing {
+    ObjectId id = 0;
+    QString name;
+    QByteArray imageData; ///< the original file's bytes, embedded in the project
+    QString imageFormat; ///< lower-case suffix of the original file: png, jpg, tif, exr, psd, svg
+    QImage image; ///< decoded for display; not saved (rebuilt from imageData on load)
+    Camera camera; ///< the camera aligned to the drawing
+    bool aligned = false; ///< whether camera has been set by the artist
+    double opacity = 0.5; ///< overlay opacity in the viewport
+    int frame = 0;
+
+    /// Equality of the stored data (the decoded image is derived and not compared).
+    bool operator==(const Drawing& o) const
+    {
+        return id == o.id && name == o.name && imageData == o.imageData && imageFormat == o.imageFormat
+            && camera == o.camera && aligned == o.aligned && opacity == o.opacity && frame == o.frame;
+    }
+};
+
+struct KeyViewpoint {
+    ObjectId id = 0;
+    QString name;
+    Eigen::Vector3d direction{0.0, 0.0, 1.0}; ///< unit, from the base centroid towards the eye
+    Camera camera;
+    std::vector<ObjectId> drawingIds;
+    std::map<int, SparseOffsets> offsetsByFrame; ///< key deformation per frame
+    bool enabled = true;
+
+    bool operator==(const KeyViewpoint& o) const
+    {
+        return id == o.id && name == o.name && direction == o.direction && camera == o.camera
+            && drawingIds == o.drawingIds && offsetsByFrame == o.offsetsByFrame && enabled == o.enabled;
+    }
+};
+
+/// Paper 1, section 3.3: how views outside the hull of the key directions are filled.
+enum class UnspecifiedMode { Dummy, Cosine, Cosine2 };
+/// Paper 1, section 4.2: interpolation of key deformations over time.
+enum class TimeInterpolation { NaturalSpline, PeriodicSpline };
+
+struct BlendSettings {
+    double sharpness = 1.0; ///< alpha of paper 1, section 3.2.2
+    UnspecifiedMode unspecified = UnspecifiedMode::Dummy;
+    TimeInterpolation time = TimeInterpolation::NaturalSpline;
+    bool operator==(const BlendSettings& o) const
+    {
+        return sharpness == o.sharpness && unspecified == o.unspecified && time == o.time;
+    }
+    bool operator!=(const BlendSettings& o) const { return !(*this == o); }
+};
+
+enum class ShadingStyle { Lambert, Toon, Gooch, Comic };
+enum class LightType { Directional, Point };
+
+struct Light {
+    LightType type = LightType::Directional;
+    /// Directional: unit vector from the model towards the light. Point: position in model space.
+    Eigen::Vector3d vector{0.4, 0.6, 0.7};
+    bool operator==(const Light& o) const { return type == o.type && vector == o.vector; }
+};
+
+struct Look {
+    ShadingStyle style = ShadingStyle::Toon;
+    Light light;
+    Eigen::Vector3f backgroundColor{0.93f, 0.93f, 0.91f};
+    bool showLines = true;
+    bool operator==(const Look& o) const
+    {
+        return style == o.style && light == o.light && backgroundColor == o.backgroundColor && showLines == o.showLines;
+    }
+    bool operator!=(const Look& o) const { return !(*this == o); }
+};
+
+struct ProjectData {
+    std::shared_ptr<const algo::TriMesh> baseMesh; ///< shared, immutable: edits replace it whole
+    QString baseMeshName; ///< file name the base model came from
+    std::vector<Drawing> drawings;
+    std::vector<KeyViewpoint> keys;
+    BlendSettings blend;
+    Look look;
+    ObjectId nextId = 1;
+
+    [[nodiscard]] const Drawing* drawing(ObjectId id) const;
+    [[nodiscard]] Drawing* drawing(ObjectId id);
+    [[nodiscard]] const KeyViewpoint* key(ObjectId id) const;
+    [[nodiscard]] KeyViewpoint* key(ObjectId id);
+    [[nodiscard]] const KeyViewpoint* keyByName(const QString& name) const;
+    [[nodiscard]] const Drawing* drawingByName(const QString& name) const;
+
+    /// Equal stored data, mesh compared by value (used by tests and the save/load round trip).
+    bool operator==(const ProjectData& o) const;
+};
+
+} // namespace celform::model

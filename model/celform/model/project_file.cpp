@@ -1,0 +1,551 @@
+// Reading and writing .celform files (layout in docs/file-format.md): a header, raw binary chunks,
+// a JSON manifest describing them, and a trailer that locates the manifest. Chunks are written
+// straight from memory and verified by CRC-32 on read.
+#include "celform/model/project_file.h"
+
+#include "celform/algorithms/mesh_analysis.h"
+#include "celform/model/image_io.h"
+#include "celform/model/io_error.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QtEndian>
+
+#include <zlib.h>
+
+#include <cstring>
+#include <limits>
+
+#include <unistd.h>
+
+namespace celform::model {
+namespace {
+
+static_assert(Q_BYTE_ORDER == Q_LITTLE_ENDIAN, "the chunk layout is little-endian; add byte swapping first");
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("celform::model::ProjectFile", text);
+}
+
+constexpr char kMagic[8] = {'\x89', 'C', 'E', 'L', 'F', '\r', '\n', '\x1a'};
+constexpr char kEndMagic[8] = {'C', 'E', 'L', 'F', 'E', 'N', 'D', '\n'};
+constexpr qint64 kHeaderSize = 16;
+constexpr qint64 kTrailerSize = 32;
+
+quint32 crc32Of(const char* data, qint64 size)
+{
+    uLong crc = crc32(0L, Z_NULL, 0);
+    while (size > 0) {
+        const auto n = uInt(std::min<qint64>(size, 1 << 30));
+        crc = crc32(crc, reinterpret_cast<const Bytef*>(data), n);
+        data += n;
+        size -= n;
+    }
+    return quint32(crc);
+}
+
+// --- enums as stable strings ------------------------------------------------------------------
+
+template <typename E> struct EnumNames;
+template <> struct EnumNames<UnspecifiedMode> {
+    static constexpr std::pair<UnspecifiedMode, const char*> list[] = {
+        {UnspecifiedMode::Dummy, "dummy"}, {UnspecifiedMode::Cosine, "cosine"}, {UnspecifiedMode::Cosine2, "cosine2"}};
+};
+template <> struct EnumNames<TimeInterpolation> {
+    static constexpr std::pair<TimeInterpolation, const char*> list[]
+        = {{TimeInterpolation::NaturalSpline, "natural"}, {TimeInterpolation::PeriodicSpline, "periodic"}};
+};
+template <> struct EnumNames<ShadingStyle> {
+    static constexpr std::pair<ShadingStyle, const char*> list[] = {{ShadingStyle::Lambert, "lambert"},
+        {ShadingStyle::Toon, "toon"}, {ShadingStyle::Gooch, "gooch"}, {ShadingStyle::Comic, "comic"}};
+};
+template <> struct EnumNames<LightType> {
+    static constexpr std::pair<LightType, const char*> list[]
+        = {{LightType::Directional, "directional"}, {LightType::Point, "point"}};
+};
+template <> struct EnumNames<Projection> {
+    static constexpr std::pair<Projection, const char*> list[]
+        = {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}};
+};
+
+template <typename E> QString enumName(E value)
+{
+    for (const auto& [v, name] : EnumNames<E>::list)
+        if (v == value)
+            return QString::fromLatin1(name);
+    return {};
+}
+
+// --- writing ----------------------------------------------------------------------------------
+
+QJsonArray vec3(const Eigen::Vector3d& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
+QJsonArray vec3f(const Eigen::Vector3f& v)
+{
+    return {double(v.x()), double(v.y()), double(v.z())};
+}
+
+QJsonObject cameraJson(const Camera& c)
+{
+    return {{"eye", vec3(c.eye)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
+        {"projection", enumName(c.projection)}, {"fov_y_degrees", c.fovYDegrees}, {"ortho_height", c.orthoHeight}};
+}
+
+/// Collects chunks (pointers into the data, no copies) and their manifest entries.
+class ChunkWriter {
+public:
+    QString add(const QString& name, const void* data, qint64 size)
+    {
+        m_chunks.push_back({name, static_cast<const char*>(data), size});
+        return name;
+    }
+    template <typename Matrix> QString addMatrix(const QString& name, const Matrix& m)
+    {
+        return add(name, m.data(), qint64(m.size()) * qint64(sizeof(typename Matrix::Scalar)));
+    }
+    template <typename T> QString addVector(const QString& name, const std::vector<T>& v)
+    {
+        return add(name, v.data(), qint64(v.size() * sizeof(T)));
+    }
+
+    void write(QSaveFile& file, QJsonObject manifest)
+    {
+        QByteArray header(kHeaderSize, '\0');
+        std::memcpy(header.data(), kMagic, 8);
+        qToLittleEndian<quint32>(quint32(kProjectFormatVersion), header.data() + 8);
+        put(file, header.constData(), header.size());
+
+        QJsonObject table;
+        static const char zeros[8] = {};
+        for (const Chunk& c : m_chunks) {
+            const qint64 pad = (8 - m_pos % 8) % 8;
+            put(file, zeros, pad);
+            table.insert(c.name,
+                QJsonObject{
+                    {"offset", double(m_pos)}, {"size", double(c.size)}, {"crc32", double(crc32Of(c.data, c.size))}});
+            put(file, c.data, c.size);
+        }
+        manifest.insert("chunks", table);
+        const QByteArray json = QJsonDocument(manifest).toJson(QJsonDocument::Indented);
+        const qint64 manifestOffset = m_pos;
+        put(file, json.constData(), json.size());
+
+        char trailer[kTrailerSize] = {};
+        qToLittleEndian<quint64>(quint64(manifestOffset), trailer);
+        qToLittleEndian<quint64>(quint64(json.size()), trailer + 8);
+        qToLittleEndian<quint32>(crc32Of(json.constData(), json.size()), trailer + 16);
+        std::memcpy(trailer + 24, kEndMagic, 8);
+        put(file, trailer, kTrailerSize);
+    }
+
+private:
+    void put(QSaveFile& file, const char* data, qint64 size)
+    {
+        if (size > 0 && file.write(data, size) != size)
+            throw IoError(file.fileName(), tr("could not be written: %1").arg(file.errorString()));
+        m_pos += size;
+    }
+
+    struct Chunk {
+        QString name;
+        const char* data;
+        qint64 size;
+    };
+    std::vector<Chunk> m_chunks;
+    qint64 m_pos = 0;
+};
+
+QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
+{
+    QJsonObject root;
+    root.insert("format_version", kProjectFormatVersion);
+    root.insert("generator", QStringLiteral("Celform %1").arg(QStringLiteral(CELFORM_VERSION)));
+
+    if (const auto& mesh = data.baseMesh) {
+        QJsonObject m{{"name", data.baseMeshName}, {"vertex_count", double(mesh->vertexCount())},
+            {"face_count", double(mesh->faceCount())}, {"vertices", chunks.addMatrix("mesh/vertices", mesh->vertices)},
+            {"faces", chunks.addMatrix("mesh/faces", mesh->faces)}};
+        if (mesh->uvs.rows() > 0) {
+            m.insert("uv_count", double(mesh->uvs.rows()));
+            m.insert("uvs", chunks.addMatrix("mesh/uvs", mesh->uvs));
+            m.insert("uv_faces", chunks.addMatrix("mesh/uv_faces", mesh->uvFaces));
+        }
+        if (!mesh->faceMaterials.empty())
+            m.insert("face_materials", chunks.addVector("mesh/face_materials", mesh->faceMaterials));
+        QJsonArray materials;
+        for (const auto& mat : mesh->materials)
+            materials.append(
+                QJsonObject{{"name", QString::fromStdString(mat.name)}, {"base_color", vec3f(mat.baseColor)}});
+        m.insert("materials", materials);
+        QJsonArray sets;
+        for (std::size_t i = 0; i < mesh->faceSets.size(); ++i) {
+            const auto& set = mesh->faceSets[i];
+            sets.append(QJsonObject{{"name", QString::fromStdString(set.name)}, {"count", double(set.faces.size())},
+                {"faces", chunks.addVector(QStringLiteral("mesh/face_sets/%1").arg(i), set.faces)}});
+        }
+        m.insert("face_sets", sets);
+        root.insert("base_mesh", m);
+    }
+
+    QJsonArray drawings;
+    for (const auto& d : data.drawings) {
+        drawings.append(QJsonObject{{"id", double(d.id)}, {"name", d.name}, {"format", d.imageFormat},
+            {"image",
+                chunks.add(QStringLiteral("drawings/%1/image").arg(d.id), d.imageData.constData(), d.imageData.size())},
+            {"camera", cameraJson(d.camera)}, {"aligned", d.aligned}, {"opacity", d.opacity}, {"frame", d.frame}});
+    }
+    root.insert("drawings", drawings);
+
+    QJsonArray keys;
+    for (const auto& k : data.keys) {
+        QJsonArray frames;
+        for (const auto& [frame, offsets] : k.offsetsByFrame) {
+            const QString prefix = QStringLiteral("keys/%1/frames/%2/").arg(k.id).arg(frame);
+            frames.append(QJsonObject{{"frame", frame}, {"count", double(offsets.indices.size())},
+                {"indices", chunks.addVector(prefix + "indices", offsets.indices)},
+                {"offsets",
+                    chunks.add(prefix + "offsets", offsets.deltas.data(),
+                        qint64(offsets.deltas.size() * sizeof(Eigen::Vector3f)))}});
+        }
+        QJsonArray linked;
+        for (ObjectId id : k.drawingIds)
+            linked.append(double(id));
+        keys.append(QJsonObject{{"id", double(k.id)}, {"name", k.name}, {"direction", vec3(k.direction)},
+            {"camera", cameraJson(k.camera)}, {"drawings", linked}, {"enabled", k.enabled}, {"frames", frames}});
+    }
+    root.insert("keys", keys);
+
+    root.insert("blend",
+        QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", enumName(data.blend.unspecified)},
+            {"time", enumName(data.blend.time)}});
+    root.insert("look",
+        QJsonObject{{"style", enumName(data.look.style)},
+            {"light", QJsonObject{{"type", enumName(data.look.light.type)}, {"vector", vec3(data.look.light.vector)}}},
+            {"background", vec3f(data.look.backgroundColor)}, {"lines", data.look.showLines}});
+    root.insert("next_id", double(data.nextId));
+    return root;
+}
+
+// --- reading ----------------------------------------------------------------------------------
+
+/// Reads the manifest's values, throwing IoError with the file name on anything malformed.
+class Reader {
+public:
+    Reader(QString path, const char* bytes, qint64 size, QJsonObject chunks)
+        : m_path(std::move(path))
+        , m_bytes(bytes)
+        , m_size(size)
+        , m_chunks(std::move(chunks))
+    { }
+
+    [[noreturn]] void fail(const QString& problem) const { throw IoError(m_path, problem); }
+    [[noreturn]] void corrupt(const QString& what) const { fail(tr("is damaged: %1").arg(what)); }
+
+    QJsonValue member(const QJsonObject& o, const char* name, QJsonValue::Type type) const
+    {
+        const QJsonValue v = o.value(QLatin1String(name));
+        if (v.type() != type)
+            corrupt(tr("the entry “%1” is missing or has the wrong type").arg(QLatin1String(name)));
+        return v;
+    }
+    double number(const QJsonObject& o, const char* name) const
+    {
+        const double d = member(o, name, QJsonValue::Double).toDouble();
+        if (!std::isfinite(d))
+            corrupt(tr("the entry “%1” is not a finite number").arg(QLatin1String(name)));
+        return d;
+    }
+    qint64 count(const QJsonObject& o, const char* name) const
+    {
+        const double d = number(o, name);
+        if (d < 0 || d > double(std::numeric_limits<std::int32_t>::max()) || d != std::floor(d))
+            corrupt(tr("the count “%1” is out of range").arg(QLatin1String(name)));
+        return qint64(d);
+    }
+    QString string(const QJsonObject& o, const char* name) const
+    {
+        return member(o, name, QJsonValue::String).toString();
+    }
+    bool boolean(const QJsonObject& o, const char* name) const { return member(o, name, QJsonValue::Bool).toBool(); }
+    QJsonObject object(const QJsonObject& o, const char* name) const
+    {
+        return member(o, name, QJsonValue::Object).toObject();
+    }
+    QJsonArray array(const QJsonObject& o, const char* name) const
+    {
+        return member(o, name, QJsonValue::Array).toArray();
+    }
+    Eigen::Vector3d vector3(const QJsonObject& o, const char* name) const
+    {
+        const QJsonArray a = array(o, name);
+        if (a.size() != 3 || !a[0].isDouble() || !a[1].isDouble() || !a[2].isDouble())
+            corrupt(tr("the entry “%1” is not a 3D vector").arg(QLatin1String(name)));
+        Eigen::Vector3d v(a[0].toDouble(), a[1].toDouble(), a[2].toDouble());
+        if (!v.allFinite())
+            corrupt(tr("the entry “%1” is not finite").arg(QLatin1String(name)));
+        return v;
+    }
+    template <typename E> E enumValue(const QJsonObject& o, const char* name) const
+    {
+        const QString s = string(o, name);
+        for (const auto& [v, n] : EnumNames<E>::list)
+            if (s == QLatin1String(n))
+                return v;
+        corrupt(tr("the entry “%1” has the unknown value “%2”").arg(QLatin1String(name), s));
+    }
+    Camera camera(const QJsonObject& o) const
+    {
+        Camera c;
+        c.eye = vector3(o, "eye");
+        c.target = vector3(o, "target");
+        c.up = vector3(o, "up");
+        c.projection = enumValue<Projection>(o, "projection");
+        c.fovYDegrees = number(o, "fov_y_degrees");
+        c.orthoHeight = number(o, "ortho_height");
+        return c;
+    }
+
+    /// The verified bytes of a chunk named by o[name]; expectedSize < 0 accepts any size.
+    std::pair<const char*, qint64> chunk(const QJsonObject& o, const char* name, qint64 expectedSize) const
+    {
+        const QString chunkName = string(o, name);
+        const QJsonValue entry = m_chunks.value(chunkName);
+        if (!entry.isObject())
+            corrupt(tr("the data block “%1” is missing").arg(chunkName));
+        const QJsonObject e = entry.toObject();
+        const double offset = number(e, "offset"), size = number(e, "size"), crc = number(e, "crc32");
+        if (offset < kHeaderSize || size < 0 || offset + size > double(m_size))
+            corrupt(tr("the data block “%1” lies outside the file").arg(chunkName));
+        if (expectedSize >= 0 && qint64(size) != expectedSize)
+            corrupt(tr("the data block “%1” has %2 bytes instead of %3")
+                        .arg(chunkName)
+                        .arg(qint64(size))
+                        .arg(expectedSize));
+        const char* p = m_bytes + qint64(offset);
+        if (crc32Of(p, qint64(size)) != quint32(crc))
+            corrupt(tr("the data block “%1” fails its checksum").arg(chunkName));
+        return {p, qint64(size)};
+    }
+    template <typename Matrix>
+    void readMatrix(const QJsonObject& o, const char* name, Eigen::Index rows, Matrix& m) const
+    {
+        m.resize(rows, Matrix::ColsAtCompileTime);
+        const auto [p, size] = chunk(o, name, qint64(m.size()) * qint64(sizeof(typename Matrix::Scalar)));
+        std::memcpy(m.data(), p, std::size_t(size));
+    }
+    template <typename T> void readVector(const QJsonObject& o, const char* name, qint64 n, std::vector<T>& v) const
+    {
+        v.resize(std::size_t(n));
+        const auto [p, size] = chunk(o, name, n * qint64(sizeof(T)));
+        std::memcpy(v.data(), p, std::size_t(size));
+    }
+
+private:
+    QString m_path;
+    const char* m_bytes;
+    qint64 m_size;
+    QJsonObject m_chunks;
+};
+
+ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QString& path)
+{
+    ProjectData data;
+    if (root.contains("base_mesh")) {
+        const QJsonObject m = r.object(root, "base_mesh");
+        auto mesh = std::make_shared<algo::TriMesh>();
+        data.baseMeshName = r.string(m, "name");
+        r.readMatrix(m, "vertices", r.count(m, "vertex_count"), mesh->vertices);
+        r.readMatrix(m, "faces", r.count(m, "face_count"), mesh->faces);
+        if (m.contains("uvs")) {
+            r.readMatrix(m, "uvs", r.count(m, "uv_count"), mesh->uvs);
+            r.readMatrix(m, "uv_faces", mesh->faces.rows(), mesh->uvFaces);
+            if (mesh->uvFaces.size() > 0
+                && (mesh->uvFaces.minCoeff() < 0 || mesh->uvFaces.maxCoeff() >= mesh->uvs.rows()))
+                r.corrupt(tr("a texture coordinate index is out of range"));
+        }
+        if (m.contains("face_materials"))
+            r.readVector(m, "face_materials", mesh->faces.rows(), mesh->faceMaterials);
+        for (const QJsonValue& v : r.array(m, "materials")) {
+            const QJsonObject o = v.toObject();
+            mesh->materials.push_back({r.string(o, "name").toStdString(), r.vector3(o, "base_color").cast<float>()});
+        }
+        for (const QJsonValue& v : r.array(m, "face_sets")) {
+            const QJsonObject o = v.toObject();
+            algo::FaceSet set;
+            set.name = r.string(o, "name").toStdString();
+            r.readVector(o, "faces", r.count(o, "count"), set.faces);
+            for (auto f : set.faces)
+                if (f < 0 || f >= mesh->faces.rows())
+                    r.corrupt(tr("face set “%1” refers to a face out of range").arg(QString::fromStdString(set.name)));
+            mesh->faceSets.push_back(std::move(set));
+        }
+        for (auto f : mesh->faceMaterials)
+            if (f < 0 || (f > 0 && std::size_t(f) >= mesh->materials.size()))
+                r.corrupt(tr("a face material index is out of range"));
+        if (auto defect = algo::findFatalDefect(*mesh))
+            r.corrupt(tr("the base model is invalid (%1)").arg(QString::fromStdString(*defect)));
+        data.baseMesh = std::move(mesh);
+    }
+    const qint64 vertexCount = data.baseMesh ? data.baseMesh->vertexCount() : 0;
+
+    for (const QJsonValue& v : r.array(root, "drawings")) {
+        const QJsonObject o = v.toObject();
+        Drawing d;
+        d.id = ObjectId(r.number(o, "id"));
+        d.name = r.string(o, "name");
+        d.imageFormat = r.string(o, "format");
+        const auto [p, size] = r.chunk(o, "image", -1);
+        d.imageData = QByteArray(p, qsizetype(size));
+        d.camera = r.camera(r.object(o, "camera"));
+        d.aligned = r.boolean(o, "aligned");
+        d.opacity = r.number(o, "opacity");
+        d.frame = int(r.number(o, "frame"));
+        d.image = decodeImage(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
+        data.drawings.push_back(std::move(d));
+    }
+
+    for (const QJsonValue& v : r.array(root, "keys")) {
+        const QJsonObject o = v.toObject();
+        KeyViewpoint k;
+        k.id = ObjectId(r.number(o, "id"));
+        k.name = r.string(o, "name");
+        k.direction = r.vector3(o, "direction");
+        k.camera = r.camera(r.object(o, "camera"));
+        k.enabled = r.boolean(o, "enabled");
+        for (const QJsonValue& id : r.array(o, "drawings"))
+            k.drawingIds.push_back(ObjectId(id.toDouble()));
+        for (const QJsonValue& fv : r.array(o, "frames")) {
+            const QJsonObject f = fv.toObject();
+            SparseOffsets offsets;
+            const qint64 n = r.count(f, "count");
+            r.readVector(f, "indices", n, offsets.indices);
+            offsets.deltas.resize(std::size_t(n));
+            const auto [p, size] = r.chunk(f, "offsets", n * qint64(sizeof(Eigen::Vector3f)));
+            std::memcpy(static_cast<void*>(offsets.deltas.data()), p, std::size_t(size));
+            for (std::size_t i = 0; i < offsets.indices.size(); ++i) {
+                if (offsets.indices[i] >= vertexCount || (i > 0 && offsets.indices[i] <= offsets.indices[i - 1]))
+                    r.corrupt(tr("key “%1” has a vertex index out of range or out of order").arg(k.name));
+                if (!offsets.deltas[i].allFinite())
+                    r.corrupt(tr("key “%1” has a non-finite offset").arg(k.name));
+            }
+            k.offsetsByFrame.emplace(int(r.number(f, "frame")), std::move(offsets));
+        }
+        data.keys.push_back(std::move(k));
+    }
+
+    const QJsonObject blend = r.object(root, "blend");
+    data.blend.sharpness = r.number(blend, "sharpness");
+    data.blend.unspecified = r.enumValue<UnspecifiedMode>(blend, "unspecified");
+    data.blend.time = r.enumValue<TimeInterpolation>(blend, "time");
+
+    const QJsonObject look = r.object(root, "look");
+    data.look.style = r.enumValue<ShadingStyle>(look, "style");
+    const QJsonObject light = r.object(look, "light");
+    data.look.light.type = r.enumValue<LightType>(light, "type");
+    data.look.light.vector = r.vector3(light, "vector");
+    data.look.backgroundColor = r.vector3(look, "background").cast<float>();
+    data.look.showLines = r.boolean(look, "lines");
+
+    data.nextId = ObjectId(r.number(root, "next_id"));
+    for (const auto& d : data.drawings)
+        if (d.id >= data.nextId)
+            r.corrupt(tr("an object id is not below next_id"));
+    for (const auto& k : data.keys)
+        if (k.id >= data.nextId)
+            r.corrupt(tr("an object id is not below next_id"));
+    return data;
+}
+
+} // namespace
+
+void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        throw IoError(path, tr("could not be opened for writing: %1").arg(file.errorString()));
+    ChunkWriter chunks;
+    const QJsonObject manifest = buildManifest(data, chunks);
+    chunks.write(file, manifest);
+
+    if (keepBackup && QFileInfo::exists(path)) {
+        // A hard link keeps the previous version at no cost; fall back to a copy.
+        const QString backup = path + QStringLiteral(".bak");
+        QFile::remove(backup);
+        if (::link(QFile::encodeName(path).constData(), QFile::encodeName(backup).constData()) != 0)
+            QFile::copy(path, backup);
+    }
+    if (!file.commit())
+        throw IoError(path, tr("could not be saved: %1").arg(file.errorString()));
+}
+
+ProjectData loadProject(const QString& path)
+{
+    QFile file(path);
+    if (!file.exists())
+        throw IoError(path, tr("does not exist"));
+    if (!file.open(QIODevice::ReadOnly))
+        throw IoError(path, tr("could not be opened: %1").arg(file.errorString()));
+    const qint64 size = file.size();
+    if (size == 0)
+        throw IoError(path, tr("is empty"));
+    if (size < 8)
+        throw IoError(path, tr("is not a Celform project"));
+    const uchar* mapped = file.map(0, size);
+    QByteArray fallback;
+    if (!mapped) {
+        fallback = file.readAll();
+        mapped = reinterpret_cast<const uchar*>(fallback.constData());
+    }
+    const char* bytes = reinterpret_cast<const char*>(mapped);
+    if (std::memcmp(bytes, kMagic, 8) != 0)
+        throw IoError(path, tr("is not a Celform project"));
+    if (size < kHeaderSize + kTrailerSize)
+        throw IoError(path, tr("is truncated"));
+    const auto version = qFromLittleEndian<quint32>(bytes + 8);
+    if (version > quint32(kProjectFormatVersion))
+        throw IoError(path,
+            tr("was written by a newer version of Celform (file format %1; this version reads up "
+               "to %2). Please update Celform to open it.")
+                .arg(version)
+                .arg(kProjectFormatVersion));
+    if (version == 0)
+        throw IoError(path, tr("is damaged: the format version is 0"));
+
+    const char* trailer = bytes + size - kTrailerSize;
+    if (std::memcmp(trailer + 24, kEndMagic, 8) != 0)
+        throw IoError(path, tr("is truncated or damaged: its end marker is missing"));
+    const auto manifestOffset = qFromLittleEndian<quint64>(trailer);
+    const auto manifestSize = qFromLittleEndian<quint64>(trailer + 8);
+    if (manifestOffset < quint64(kHeaderSize) || manifestSize > quint64(size)
+        || manifestOffset + manifestSize > quint64(size - kTrailerSize))
+        throw IoError(path, tr("is damaged: its table of contents lies outside the file"));
+    const char* manifestBytes = bytes + manifestOffset;
+    if (crc32Of(manifestBytes, qint64(manifestSize)) != qFromLittleEndian<quint32>(trailer + 16))
+        throw IoError(path, tr("is damaged: its table of contents fails its checksum"));
+
+    QJsonParseError jsonError;
+    const QJsonDocument json
+        = QJsonDocument::fromJson(QByteArray::fromRawData(manifestBytes, qsizetype(manifestSize)), &jsonError);
+    if (json.isNull() || !json.isObject())
+        throw IoError(path, tr("is damaged: %1").arg(jsonError.errorString()));
+    const QJsonObject root = json.object();
+    const double manifestVersion = root.value("format_version").toDouble(-1);
+    if (manifestVersion > kProjectFormatVersion)
+        throw IoError(path,
+            tr("was written by a newer version of Celform (file format %1; this version reads up "
+               "to %2). Please update Celform to open it.")
+                .arg(manifestVersion)
+                .arg(kProjectFormatVersion));
+    const Reader reader(path, bytes, size, root.value("chunks").toObject());
+    return parseManifest(reader, root, path);
+}
+
+} // namespace celform::model

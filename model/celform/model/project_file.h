@@ -1,0 +1,22 @@
+// The .celform project file: one binary container of named chunks with a JSON manifest
+// (docs/file-format.md). Writes are atomic and keep one backup; reads verify every checksum.
+#pragma once
+
+#include "celform/model/project_data.h"
+
+#include <QString>
+
+namespace celform::model {
+
+/// The format version this build writes; it reads this and every older one.
+constexpr int kProjectFormatVersion = 1;
+
+/// Writes the project atomically (QSaveFile). When the file exists, its previous version is kept
+/// as PATH.bak. Throws IoError; on error the file on disk is unchanged.
+void saveProject(const ProjectData& data, const QString& path, bool keepBackup = true);
+
+/// Reads a project. Throws IoError for a missing, truncated or corrupt file, or one written by a
+/// newer format version.
+ProjectData loadProject(const QString& path);
+
+} // namespace celform::model

@@ -1,0 +1,248 @@
+// The editor as a user drives it, under Xvfb: opening the sample project, orbiting in the viewport,
+// the unsaved-changes marker, undo, deleting from the scene, dropping files, autosave and recovery,
+// and the --screenshot option.
+#include "test_support.h"
+
+#include "main_window.h"
+#include "recovery.h"
+
+#include "celform/model/project_file.h"
+#include "celform/views/scene_panel.h"
+#include "celform/views/viewport.h"
+
+#include <QAction>
+#include <QElapsedTimer>
+#include <QApplication>
+#include <QMimeData>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+
+using namespace celform;
+
+namespace {
+
+QString sampleProject()
+{
+    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+}
+
+/// Share of pixels that differ clearly from the top-left corner's colour (the background).
+double coverage(const QImage& image)
+{
+    if (image.isNull())
+        return 0;
+    const QImage img = image.convertToFormat(QImage::Format_RGB32);
+    const QRgb bg = img.pixel(2, 2);
+    qint64 differing = 0;
+    for (int y = 0; y < img.height(); y += 2)
+        for (int x = 0; x < img.width(); x += 2) {
+            const QRgb p = img.pixel(x, y);
+            if (std::abs(qRed(p) - qRed(bg)) + std::abs(qGreen(p) - qGreen(bg)) + std::abs(qBlue(p) - qBlue(bg)) > 60)
+                ++differing;
+        }
+    return double(differing) / (double(img.width() / 2) * double(img.height() / 2));
+}
+
+void sendDrag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPoint from, QPoint to)
+{
+    QMouseEvent press(QEvent::MouseButtonPress, from, w->mapToGlobal(from), button, button, mods);
+    QApplication::sendEvent(w, &press);
+    for (int i = 1; i <= 10; ++i) {
+        const QPoint p = from + (to - from) * i / 10;
+        QMouseEvent move(QEvent::MouseMove, p, w->mapToGlobal(p), Qt::NoButton, button, mods);
+        QApplication::sendEvent(w, &move);
+    }
+    QMouseEvent release(QEvent::MouseButtonRelease, to, w->mapToGlobal(to), button, Qt::NoButton, mods);
+    QApplication::sendEvent(w, &release);
+}
+
+QImage renderNow(views::Viewport* vp)
+{
+    const int before = vp->renderCount();
+    vp->update();
+    QElapsedTimer timer;
+    timer.start();
+    while (vp->renderCount() <= before && timer.elapsed() < 5000)
+        QTest::qWait(10);
+    return vp->renderedImage();
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY2(QFileInfo::exists(sampleProject()), "the bundled sample project is missing");
+    }
+
+    void opensSampleAndOrbits()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.resize(1200, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(window.document()->hasMesh());
+        QVERIFY(!window.document()->data().drawings.empty());
+        QVERIFY(window.windowTitle().startsWith(QStringLiteral("elephant.celform")));
+
+        auto* vp = window.viewport();
+        const QImage first = renderNow(vp);
+        QVERIFY2(coverage(first) > 0.05, "the viewport shows no model");
+
+        QSignalSpy cameraSpy(vp, &views::Viewport::cameraChanged);
+        const model::Camera before = vp->camera();
+        const QPoint c = vp->rect().center();
+        sendDrag(vp, Qt::LeftButton, Qt::AltModifier, c, c + QPoint(150, 40));
+        QVERIFY(cameraSpy.count() > 0);
+        const model::Camera after = vp->camera();
+        QVERIFY((after.eye - before.eye).norm() > 1e-3);
+        // Orbit keeps the distance to the pivot.
+        QVERIFY(std::abs((after.eye - vp->pivot()).norm() - (before.eye - vp->pivot()).norm())
+            < 1e-6 * (1 + (before.eye - vp->pivot()).norm()));
+        const QImage orbited = renderNow(vp);
+        QVERIFY2(coverage(orbited) > 0.05, "the viewport went blank after orbiting");
+        QVERIFY(orbited != first);
+
+        // Plain middle-button drag orbits too.
+        sendDrag(vp, Qt::MiddleButton, Qt::NoModifier, c, c + QPoint(-80, 0));
+        QVERIFY((vp->camera().eye - after.eye).norm() > 1e-3);
+        QVERIFY(coverage(renderNow(vp)) > 0.05);
+    }
+
+    void titleMarksUnsavedChangesAndUndo()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.show();
+        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(!window.isWindowModified());
+        const auto id = window.document()->data().drawings.front().id;
+        window.document()->renameDrawing(id, QStringLiteral("side view"));
+        QVERIFY(window.isWindowModified());
+        window.action(QStringLiteral("actionUndo"))->trigger();
+        QVERIFY(!window.isWindowModified());
+        QCOMPARE(window.document()->data().drawings.front().name, QStringLiteral("tuxpaint_elephant"));
+    }
+
+    void deleteKeyInSceneRemovesDrawing()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.show();
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QVERIFY(window.openFile(sampleProject()));
+        const auto id = window.document()->data().drawings.front().id;
+        window.scenePanel()->select({views::ScenePanel::ItemKind::Drawing, id});
+        window.scenePanel()->tree()->setFocus();
+        QTest::keyClick(window.scenePanel()->tree(), Qt::Key_Delete);
+        QTRY_VERIFY(window.document()->data().drawings.empty());
+        QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+        QTRY_COMPARE(window.document()->data().drawings.size(), std::size_t(1));
+    }
+
+    void dropMeshAndImage()
+    {
+        CELFORM_REQUIRE_SHARED(mesh, QStringLiteral("meshes/npm_bunny.off"));
+        CELFORM_REQUIRE_SHARED(image, QStringLiteral("drawings/openclipart_cartoon_cat_gerald_g._01.svg"));
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        for (const QString& path : {mesh, image}) {
+            QMimeData mime;
+            mime.setUrls({QUrl::fromLocalFile(path)});
+            QDragEnterEvent enter(QPoint(300, 300), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(&window, &enter);
+            QVERIFY(enter.isAccepted());
+            QDropEvent drop(QPointF(300, 300), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(&window, &drop);
+        }
+        QTRY_VERIFY(window.document()->hasMesh());
+        QTRY_COMPARE(window.document()->data().drawings.size(), std::size_t(1));
+        QCOMPARE(window.document()->data().baseMesh->vertexCount(), Eigen::Index(1839));
+    }
+
+    void badFileLeavesDocumentAlone()
+    {
+        QTemporaryDir dir;
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(window.openFile(sampleProject()));
+        const model::ProjectData before = window.document()->data();
+        const QString bad = dir.filePath(QStringLiteral("bad.celform"));
+        QFile f(bad);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("garbage");
+        f.close();
+        QVERIFY(!window.openFile(bad));
+        QVERIFY(window.document()->data() == before);
+    }
+
+    void autosaveAndRecovery()
+    {
+        QTemporaryDir dir;
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(window.openFile(sampleProject()));
+        auto* recovery = window.recovery();
+        window.document()->renameDrawing(window.document()->data().drawings.front().id, QStringLiteral("edited"));
+        QVERIFY(recovery->autosaveNow());
+        QVERIFY(QFileInfo::exists(recovery->ownRecoveryFile()));
+        QCOMPARE(model::loadProject(recovery->ownRecoveryFile()).drawings.front().name, QStringLiteral("edited"));
+        // The autosave is a copy: the document still points at its own file and is still unsaved.
+        QVERIFY(window.document()->isModified());
+        QVERIFY(window.document()->filePath().endsWith(QStringLiteral("elephant.celform")));
+
+        // A session that crashed left a recovery file and a lock whose process is gone.
+        const QString orphanBase
+            = QFileInfo(recovery->ownRecoveryFile()).absolutePath() + QStringLiteral("/session-999999-1");
+        QVERIFY(QFile::copy(recovery->ownRecoveryFile(), orphanBase + QStringLiteral(".celform")));
+        QFile lock(orphanBase + QStringLiteral(".lock"));
+        QVERIFY(lock.open(QIODevice::WriteOnly));
+        lock.write(QByteArray("999999\n") + QCoreApplication::applicationName().toUtf8() + "\n"
+            + QSysInfo::machineHostName().toUtf8() + "\n");
+        lock.close();
+        const auto orphans = recovery->orphans();
+        QCOMPARE(orphans.size(), std::size_t(1));
+        QCOMPARE(orphans.front().recoveryFile, orphanBase + QStringLiteral(".celform"));
+        // Our own live session is never offered.
+        for (const auto& o : orphans)
+            QVERIFY(o.recoveryFile != recovery->ownRecoveryFile());
+        app::RecoveryManager::discard(orphans.front());
+        QVERIFY(recovery->orphans().empty());
+
+        // Saving makes the recovery copy unnecessary.
+        const QString saved = dir.filePath(QStringLiteral("saved.celform"));
+        QVERIFY(window.saveAs(saved));
+        QVERIFY(!QFileInfo::exists(recovery->ownRecoveryFile()));
+        QVERIFY(!window.isWindowModified());
+    }
+
+    void screenshotOption()
+    {
+        QTemporaryDir dir;
+        const QString png = dir.filePath(QStringLiteral("shot.png"));
+        QProcess p;
+        p.start(QStringLiteral(CELFORM_EXECUTABLE), {sampleProject(), QStringLiteral("--screenshot"), png});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        const QImage shot(png);
+        QVERIFY(!shot.isNull());
+        QVERIFY(shot.width() >= 800);
+        QVERIFY(coverage(shot) > 0.05);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(views::Viewport::defaultFormat());
+    QApplication app(argc, argv);
+    app.setApplicationName(QStringLiteral("CelformTest"));
+    TestMainWindow test;
+    return QTest::qExec(&test, argc, argv);
+}
+#include "test_main_window.moc"

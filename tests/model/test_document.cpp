@@ -1,0 +1,232 @@
+// Document commands: every edit applies, undoes to the exact previous data, and redoes.
+#include "test_support.h"
+
+#include "celform/model/document.h"
+#include "celform/model/io_error.h"
+
+#include <QSignalSpy>
+
+using namespace celform;
+using namespace celform::model;
+
+namespace {
+
+std::shared_ptr<const algo::TriMesh> tetrahedron(float scale = 1.f)
+{
+    auto mesh = std::make_shared<algo::TriMesh>();
+    mesh->vertices.resize(4, 3);
+    mesh->vertices << 0, 0, 0, scale, 0, 0, 0, scale, 0, 0, 0, scale;
+    mesh->faces.resize(4, 3);
+    mesh->faces << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
+    return mesh;
+}
+
+Drawing smallDrawing(const QString& name)
+{
+    Drawing d;
+    d.name = name;
+    d.imageFormat = QStringLiteral("png");
+    d.imageData = QByteArray("not decoded in this test");
+    d.image = QImage(8, 4, QImage::Format_RGBA8888);
+    d.image.fill(Qt::red);
+    return d;
+}
+
+KeyViewpoint keyWithOffsets(const QString& name)
+{
+    KeyViewpoint k;
+    k.name = name;
+    k.direction = Eigen::Vector3d(1, 0, 0);
+    k.camera.eye = Eigen::Vector3d(5, 0, 0);
+    k.offsetsByFrame[0] = SparseOffsets{{1, 3}, {Eigen::Vector3f(0.1f, 0, 0), Eigen::Vector3f(0, 0.2f, 0)}};
+    return k;
+}
+
+} // namespace
+
+class TestDocument : public QObject {
+    Q_OBJECT
+
+private:
+    Document m_doc;
+
+    void startFresh()
+    {
+        ProjectData data;
+        data.baseMesh = tetrahedron();
+        data.baseMeshName = QStringLiteral("tet.off");
+        m_doc.reset(std::move(data));
+    }
+
+    /// Applies an edit, checks it changed the data, undoes, checks the data is back exactly,
+    /// redoes, checks the edited data is back exactly.
+    template <typename Edit> ProjectData applyUndoRedo(Edit edit)
+    {
+        const ProjectData before = m_doc.data();
+        const int count = m_doc.undoStack()->count();
+        edit();
+        const ProjectData after = m_doc.data();
+        [&] { QVERIFY2(!(after == before), "the edit changed nothing"); }();
+        [&] { QCOMPARE(m_doc.undoStack()->count(), count + 1); }();
+        m_doc.undoStack()->undo();
+        [&] { QVERIFY2(m_doc.data() == before, "undo did not restore the data"); }();
+        m_doc.undoStack()->redo();
+        [&] { QVERIFY2(m_doc.data() == after, "redo did not restore the edit"); }();
+        return after;
+    }
+
+private slots:
+    void init() { startFresh(); }
+
+    void resetIsClean()
+    {
+        QVERIFY(!m_doc.isModified());
+        QCOMPARE(m_doc.undoStack()->count(), 0);
+    }
+
+    void addDrawing()
+    {
+        QSignalSpy spy(&m_doc, &Document::drawingsChanged);
+        ObjectId id = 0;
+        const ProjectData after = applyUndoRedo([&] { id = m_doc.addDrawing(smallDrawing(QStringLiteral("side"))); });
+        QCOMPARE(after.drawings.size(), std::size_t(1));
+        QCOMPARE(after.drawings.front().id, id);
+        QVERIFY(after.nextId > id);
+        QVERIFY(spy.count() >= 3);
+        QVERIFY(m_doc.isModified());
+    }
+
+    void drawingNamesAreUnique()
+    {
+        m_doc.addDrawing(smallDrawing(QStringLiteral("side")));
+        const ObjectId second = m_doc.addDrawing(smallDrawing(QStringLiteral("side")));
+        QCOMPARE(m_doc.data().drawing(second)->name, QStringLiteral("side 2"));
+    }
+
+    void removeDrawingUnlinksKeys()
+    {
+        const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("front")));
+        KeyViewpoint key = keyWithOffsets(QStringLiteral("front key"));
+        key.drawingIds = {d};
+        const ObjectId k = m_doc.addKey(key);
+        const ProjectData after = applyUndoRedo([&] { m_doc.removeDrawing(d); });
+        QVERIFY(after.drawings.empty());
+        QVERIFY(after.key(k)->drawingIds.empty());
+    }
+
+    void renameDrawing()
+    {
+        const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
+        const ProjectData after = applyUndoRedo([&] { m_doc.renameDrawing(d, QStringLiteral("three-quarter")); });
+        QCOMPARE(after.drawing(d)->name, QStringLiteral("three-quarter"));
+        // An empty name is refused and pushes nothing.
+        const int count = m_doc.undoStack()->count();
+        m_doc.renameDrawing(d, QStringLiteral("   "));
+        QCOMPARE(m_doc.undoStack()->count(), count);
+    }
+
+    void opacityDragIsOneUndoStep()
+    {
+        const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
+        const double start = m_doc.data().drawing(d)->opacity;
+        const int count = m_doc.undoStack()->count();
+        for (int i = 1; i <= 10; ++i)
+            m_doc.setDrawingOpacity(d, i / 10.0);
+        QCOMPARE(m_doc.undoStack()->count(), count + 1);
+        QCOMPARE(m_doc.data().drawing(d)->opacity, 1.0);
+        m_doc.undoStack()->undo();
+        QCOMPARE(m_doc.data().drawing(d)->opacity, start);
+    }
+
+    void drawingCamera()
+    {
+        const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
+        Camera c;
+        c.eye = Eigen::Vector3d(0, 0, 10);
+        c.projection = Projection::Orthographic;
+        const ProjectData after = applyUndoRedo([&] { m_doc.setDrawingCamera(d, c); });
+        QVERIFY(after.drawing(d)->aligned);
+        QVERIFY(after.drawing(d)->camera == c);
+        // A degenerate camera is refused.
+        Camera bad = c;
+        bad.target = bad.eye;
+        const int count = m_doc.undoStack()->count();
+        m_doc.setDrawingCamera(d, bad);
+        QCOMPARE(m_doc.undoStack()->count(), count);
+    }
+
+    void keys()
+    {
+        ObjectId k = 0;
+        ProjectData after = applyUndoRedo([&] { k = m_doc.addKey(keyWithOffsets(QStringLiteral("side"))); });
+        QCOMPARE(after.keys.size(), std::size_t(1));
+        after = applyUndoRedo([&] { m_doc.renameKey(k, QStringLiteral("left side")); });
+        QCOMPARE(after.key(k)->name, QStringLiteral("left side"));
+        after = applyUndoRedo([&] { m_doc.setKeyEnabled(k, false); });
+        QVERIFY(!after.key(k)->enabled);
+        after = applyUndoRedo([&] { m_doc.removeKey(k); });
+        QVERIFY(after.keys.empty());
+    }
+
+    void removeThenUndoKeepsOrder()
+    {
+        const ObjectId a = m_doc.addKey(keyWithOffsets(QStringLiteral("a")));
+        const ObjectId b = m_doc.addKey(keyWithOffsets(QStringLiteral("b")));
+        const ObjectId c = m_doc.addKey(keyWithOffsets(QStringLiteral("c")));
+        m_doc.removeKey(b);
+        m_doc.undoStack()->undo();
+        QCOMPARE(m_doc.data().keys.at(0).id, a);
+        QCOMPARE(m_doc.data().keys.at(1).id, b);
+        QCOMPARE(m_doc.data().keys.at(2).id, c);
+    }
+
+    void blendAndLook()
+    {
+        BlendSettings blend;
+        blend.sharpness = 2.5;
+        blend.unspecified = UnspecifiedMode::Cosine2;
+        ProjectData after = applyUndoRedo([&] { m_doc.setBlendSettings(blend); });
+        QVERIFY(after.blend == blend);
+        Look look;
+        look.style = ShadingStyle::Gooch;
+        look.light.type = LightType::Point;
+        after = applyUndoRedo([&] { m_doc.setLook(look); });
+        QVERIFY(after.look == look);
+    }
+
+    void replaceBaseMesh()
+    {
+        const ProjectData after
+            = applyUndoRedo([&] { m_doc.setBaseMesh(tetrahedron(2.f), QStringLiteral("big.off")); });
+        QCOMPARE(after.baseMeshName, QStringLiteral("big.off"));
+        QCOMPARE(after.baseMesh->vertices(1, 0), 2.f);
+    }
+
+    void replaceBaseMeshRefusesMismatchedKeys()
+    {
+        m_doc.addKey(keyWithOffsets(QStringLiteral("k"))); // uses vertex 3
+        auto small = std::make_shared<algo::TriMesh>();
+        small->vertices.resize(3, 3);
+        small->vertices.setZero();
+        small->vertices(1, 0) = 1;
+        small->vertices(2, 1) = 1;
+        small->faces.resize(1, 3);
+        small->faces << 0, 1, 2;
+        const ProjectData before = m_doc.data();
+        QVERIFY_THROWS_EXCEPTION(IoError, m_doc.setBaseMesh(small, QStringLiteral("tri.obj")));
+        QVERIFY(m_doc.data() == before);
+    }
+
+    void cleanStateFollowsUndo()
+    {
+        QSignalSpy clean(m_doc.undoStack(), &QUndoStack::cleanChanged);
+        m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
+        QVERIFY(m_doc.isModified());
+        m_doc.undoStack()->undo();
+        QVERIFY(!m_doc.isModified());
+        QCOMPARE(clean.count(), 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestDocument)
+#include "test_document.moc"

@@ -1,0 +1,492 @@
+// Mesh import/export: vertex order kept per format, polygons triangulated, real meshes with their
+// documented counts, every malformed file a clean IoError or a warning, bit-exact round trips.
+#include "celform/model/io_error.h"
+#include "celform/model/mesh_io.h"
+#include "test_support.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtEndian>
+#include <QtTest/QtTest>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+using celform::algo::Faces;
+using celform::algo::Positions;
+using celform::algo::TriMesh;
+using celform::model::importMesh;
+using celform::model::IoError;
+using celform::model::MeshImport;
+
+/// Runs an import expected to succeed; an IoError fails the test instead of aborting the run.
+#define CELFORM_IMPORT_OR_FAIL(var, expr)                                                                              \
+    decltype(expr) var;                                                                                                \
+    try {                                                                                                              \
+        var = (expr);                                                                                                  \
+    } catch (const IoError& e) {                                                                                       \
+        QFAIL(qPrintable(e.message()));                                                                                \
+    }
+
+namespace {
+
+QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
+{
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size())
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
+}
+
+/// Four vertices in a deliberately non-sorted order and one quad: the fan must be (0 1 2), (0 2 3).
+Positions quadPositions()
+{
+    Positions v(4, 3);
+    v << 0.5f, -1.25f, 3.0f, //
+        2.0f, 0.0f, 0.125f, //
+        7.0f, 8.5f, -9.0f, //
+        -4.0f, 1.0e-3f, 1.0e6f;
+    return v;
+}
+
+Faces quadFan()
+{
+    Faces f(2, 3);
+    f << 0, 1, 2, 0, 2, 3;
+    return f;
+}
+
+template <typename T> void appendBinary(QByteArray& out, T value, bool bigEndian)
+{
+    char b[sizeof(T)];
+    if (bigEndian)
+        qToBigEndian(value, b);
+    else
+        qToLittleEndian(value, b);
+    out.append(b, sizeof(T));
+}
+
+/// Binary PLY with double coordinates, an extra per-vertex property, an unknown element between
+/// vertices and faces, and "list uchar uint": exercises the general (non-fast) paths.
+QByteArray quadPlyBinary(bool bigEndian)
+{
+    QByteArray out = "ply\n";
+    out += bigEndian ? "format binary_big_endian 1.0\n" : "format binary_little_endian 1.0\n";
+    out += "comment test\nelement vertex 4\nproperty double x\nproperty uchar red\nproperty double y\n"
+           "property double z\nelement edge 1\nproperty int vertex1\nproperty list uchar int extra\n"
+           "element face 1\nproperty list uchar uint vertex_indices\nproperty float quality\nend_header\n";
+    const Positions v = quadPositions();
+    for (int i = 0; i < 4; ++i) {
+        appendBinary<double>(out, v(i, 0), bigEndian);
+        out.append(char(200));
+        appendBinary<double>(out, v(i, 1), bigEndian);
+        appendBinary<double>(out, v(i, 2), bigEndian);
+    }
+    appendBinary<qint32>(out, 0, bigEndian);
+    out.append(char(2));
+    appendBinary<qint32>(out, 5, bigEndian);
+    appendBinary<qint32>(out, 6, bigEndian);
+    out.append(char(4));
+    for (quint32 i : {0u, 1u, 2u, 3u})
+        appendBinary<quint32>(out, i, bigEndian);
+    appendBinary<float>(out, 1.0f, bigEndian);
+    return out;
+}
+
+QByteArray tightBinaryPly(int vertexCountInHeader, int verticesWritten)
+{
+    QByteArray out = "ply\nformat binary_little_endian 1.0\nelement vertex " + QByteArray::number(vertexCountInHeader)
+        + "\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
+          "property list uchar int vertex_indices\nend_header\n";
+    for (int i = 0; i < verticesWritten; ++i)
+        for (int k = 0; k < 3; ++k)
+            appendBinary<float>(out, float(i + k), false);
+    out.append(char(3));
+    for (qint32 i : {0, 1, 2})
+        appendBinary<qint32>(out, i, false);
+    return out;
+}
+
+void verifyQuad(const MeshImport& result)
+{
+    QCOMPARE(result.mesh.vertexCount(), 4);
+    QVERIFY(result.mesh.vertices == quadPositions());
+    QVERIFY(result.mesh.faces == quadFan());
+}
+
+} // namespace
+
+class TestMeshIo : public QObject {
+    Q_OBJECT
+
+private slots:
+    void offVertexOrderAndFan_data();
+    void offVertexOrderAndFan();
+    void plyVertexOrderAndFan_data();
+    void plyVertexOrderAndFan();
+    void objVertexOrderUvsAndMaterials();
+    void objRelativeIndices();
+    void gltfNodeTransforms();
+    void malformed_data();
+    void malformed();
+    void realMeshes_data();
+    void realMeshes();
+    void dragonTopology();
+    void badFiles_data();
+    void badFiles();
+    void stlIsWelded();
+    void roundTrip_data();
+    void roundTrip();
+    void exportErrors();
+    void suffixesAndFilter();
+};
+
+void TestMeshIo::offVertexOrderAndFan_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    const QByteArray body = "0.5 -1.25 3\n2 0 0.125\n7 8.5 -9\n-4 0.001 1e6\n4 0 1 2 3\n";
+    QTest::newRow("OFF") << QByteArray("OFF\n# comment line\n4 1 0\n" + body);
+    QTest::newRow("counts on header line") << QByteArray("OFF 4 1 0\n" + body);
+    QTest::newRow("no edge count, CRLF") << QByteArray("OFF\r\n4 1\r\n" + QByteArray(body).replace("\n", "\r\n"));
+    QTest::newRow("COFF with colours") << QByteArray(
+        "COFF\n4 1 0\n0.5 -1.25 3 255 0 0 255\n2 0 0.125 0 255 0 255\n7 8.5 -9 0 0 255 255\n"
+        "-4 0.001 1e6 9 9 9 255\n4 0 1 2 3 1 0 0\n");
+    QTest::newRow("NOFF with normals and comments")
+        << QByteArray("NOFF # header\n4 1 0 # counts\n0.5 -1.25 3 0 0 1 # v0\n\n2 0 0.125 0 0 1\n7 8.5 -9 0 0 1\n"
+                      "-4 0.001 1e6 0 0 1\n# faces\n4 0 1 2 3\n");
+    QTest::newRow("headerless") << QByteArray("4 1 0\n" + body);
+}
+
+void TestMeshIo::offVertexOrderAndFan()
+{
+    QFETCH(QByteArray, text);
+    QTemporaryDir dir;
+    CELFORM_IMPORT_OR_FAIL(result, importMesh(writeFile(dir, QStringLiteral("quad.off"), text)))
+    verifyQuad(result);
+    QCOMPARE(result.topology.boundaryLoops, 1);
+    QVERIFY(!result.warnings.isEmpty()); // an open quad has a hole
+}
+
+void TestMeshIo::plyVertexOrderAndFan_data()
+{
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::newRow("ascii") << QByteArray(
+        "ply\nformat ascii 1.0\ncomment x\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "property uchar red\nelement face 1\nproperty list uchar int vertex_index\nend_header\n"
+        "0.5 -1.25 3 1\n2 0 0.125 2\n7 8.5 -9 3\n-4 0.001 1e6 4\n4 0 1 2 3\n");
+    QTest::newRow("binary little endian") << quadPlyBinary(false);
+    QTest::newRow("binary big endian") << quadPlyBinary(true);
+}
+
+void TestMeshIo::plyVertexOrderAndFan()
+{
+    QFETCH(QByteArray, bytes);
+    QTemporaryDir dir;
+    CELFORM_IMPORT_OR_FAIL(result, importMesh(writeFile(dir, QStringLiteral("quad.ply"), bytes)))
+    verifyQuad(result);
+}
+
+void TestMeshIo::objVertexOrderUvsAndMaterials()
+{
+    QTemporaryDir dir;
+    writeFile(dir, QStringLiteral("quad.mtl"), "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 0.5\n");
+    const QString path = writeFile(dir, QStringLiteral("quad.obj"),
+        "mtllib quad.mtl\n"
+        "v 0.5 -1.25 3\nv 2 0 0.125\nv 7 8.5 -9\nv -4 0.001 1e6\nv 1 1 1\n"
+        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+        "usemtl blue\nf 1/4 2/3 3/2 4/1\nusemtl red\nf 1/1 3/2 5/3\n");
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(path))
+    QCOMPARE(r.mesh.vertexCount(), 5);
+    QVERIFY(r.mesh.vertices.topRows(4) == quadPositions());
+    Faces expected(3, 3);
+    expected << 0, 1, 2, 0, 2, 3, 0, 2, 4;
+    QVERIFY(r.mesh.faces == expected);
+    QVERIFY(r.mesh.hasUvs());
+    Faces expectedUv(3, 3);
+    expectedUv << 3, 2, 1, 3, 1, 0, 0, 1, 2;
+    QVERIFY(r.mesh.uvFaces == expectedUv);
+    QCOMPARE(r.mesh.uvs(2, 0), 1.0f);
+    QCOMPARE(r.mesh.uvs(2, 1), 1.0f);
+    QCOMPARE(int(r.mesh.materials.size()), 2);
+    QCOMPARE(r.mesh.materials[0].name, std::string("red"));
+    QCOMPARE(r.mesh.materials[1].baseColor, Eigen::Vector3f(0, 0, 0.5f));
+    QCOMPARE(r.mesh.faceMaterials, (std::vector<std::int32_t>{1, 1, 0}));
+}
+
+void TestMeshIo::objRelativeIndices()
+{
+    QTemporaryDir dir;
+    CELFORM_IMPORT_OR_FAIL(
+        r, importMesh(writeFile(dir, QStringLiteral("rel.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n")))
+    Faces expected(1, 3);
+    expected << 0, 1, 2;
+    QVERIFY(r.mesh.faces == expected);
+    QVERIFY(!r.mesh.hasUvs());
+    QVERIFY(r.mesh.materials.empty());
+}
+
+void TestMeshIo::gltfNodeTransforms()
+{
+    // One triangle under a child node (translate 10 in x) of a root scaled by 2.
+    QByteArray buffer;
+    for (float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
+        appendBinary<float>(buffer, c, false);
+    for (quint16 i : {0, 1, 2, 0})
+        appendBinary<quint16>(buffer, i, false);
+    const QByteArray json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+      "nodes":[{"scale":[2,2,2],"children":[1]},{"translation":[10,0,0],"mesh":0}],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+                   {"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}],
+      "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}],
+      "buffers":[{"byteLength":44,"uri":"data:application/octet-stream;base64,)"
+        + buffer.toBase64() + R"("}]})";
+    QTemporaryDir dir;
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(writeFile(dir, QStringLiteral("tri.gltf"), json)))
+    QCOMPARE(r.mesh.vertexCount(), 3);
+    QCOMPARE(r.mesh.faceCount(), 1);
+    const Eigen::AlignedBox3d box = celform::algo::boundingBox(r.mesh.vertices);
+    QCOMPARE(box.min().x(), 20.0);
+    QCOMPARE(box.max().x(), 22.0);
+    QCOMPARE(box.max().y(), 2.0);
+}
+
+void TestMeshIo::malformed_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::addColumn<QString>("expected"); // a piece of the problem text
+    const QByteArray tri = "3 0 1 2\n";
+    QTest::newRow("empty off") << "empty.off" << QByteArray() << "empty";
+    QTest::newRow("off NaN") << "nan.off" << QByteArray("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n" + tri) << "vertex 2";
+    QTest::newRow("off inf") << "inf.off" << QByteArray("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 inf\n" + tri) << "finite";
+    QTest::newRow("off float overflow") << "big.off" << QByteArray("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 1e300\n" + tri)
+                                        << "finite";
+    QTest::newRow("off index out of range")
+        << "range.off" << QByteArray("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n") << "vertex 3";
+    QTest::newRow("off negative index") << "neg.off" << QByteArray("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n")
+                                        << "vertex -1";
+    QTest::newRow("off too few vertex lines")
+        << "short.off" << QByteArray("OFF\n30 1 0\n0 0 0\n1 0 0\n0 1 0\n" + tri) << "30";
+    QTest::newRow("off too few faces") << "shortf.off"
+                                       << QByteArray(
+                                              "OFF\n3 2 0\n0.0000 0.0000 0\n1.0000 0.0000 0\n0.0000 1.0000 0\n" + tri)
+                                       << "1 of 2 faces";
+    QTest::newRow("off huge counts") << "huge.off" << QByteArray("OFF\n1000000000000 1000000000000 0\n0 0 0\n")
+                                     << "more than the file";
+    QTest::newRow("off garbage") << "garbage.off" << QByteArray("OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n" + tri) << "line 4";
+    QTest::newRow("off no header") << "text.off" << QByteArray("hello world\n") << "OFF";
+    QTest::newRow("off no faces") << "nofaces.off" << QByteArray("OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n") << "no faces";
+    QTest::newRow("ply truncated binary") << "trunc.ply" << tightBinaryPly(10, 2) << "10 vertices";
+    QTest::newRow("ply truncated faces") << "truncf.ply" << tightBinaryPly(3, 3).chopped(5) << "truncated";
+    QTest::newRow("ply huge count") << "huge.ply" << tightBinaryPly(2000000000, 3) << "more than the file";
+    QTest::newRow("ply binary NaN") << "nan.ply" << [] {
+        QByteArray b = tightBinaryPly(3, 3);
+        const float nan = std::numeric_limits<float>::quiet_NaN();
+        std::memcpy(b.data() + b.indexOf("end_header\n") + 11 + 4, &nan, 4);
+        return b;
+    }() << "vertex 1";
+    QTest::newRow("ply binary index range") << "range.ply" << [] {
+        QByteArray b = tightBinaryPly(3, 3);
+        b[b.size() - 4] = 7;
+        return b;
+    }() << "vertex 7";
+    QTest::newRow("ply ascii inf")
+        << "inf.ply"
+        << QByteArray(
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+               "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 -inf 0\n3 0 1 2\n")
+        << "finite";
+    QTest::newRow("ply ascii truncated")
+        << "trunc_ascii.ply"
+        << QByteArray(
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+               "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n")
+        << "ends early";
+    QTest::newRow("ply no end_header") << "noend.ply" << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\n")
+                                       << "end_header";
+    QTest::newRow("ply bad type") << "type.ply"
+                                  << QByteArray(
+                                         "ply\nformat ascii 1.0\nelement vertex 1\nproperty quux x\nend_header\n")
+                                  << "type";
+    QTest::newRow("ply not ply") << "not.ply" << QByteArray("solid x\n") << "PLY";
+    QTest::newRow("obj out of range") << "range.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
+                                      << "vertex 8";
+    QTest::newRow("obj negative out of range")
+        << "neg.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -10\n") << "vertex -7";
+    QTest::newRow("obj zero index") << "zero.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n") << "OBJ";
+    QTest::newRow("obj texcoord out of range")
+        << "vt.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/5\n") << "texture";
+    QTest::newRow("obj float overflow") << "big.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n")
+                                        << "vertex 3";
+    QTest::newRow("obj NaN") << "nan.obj" << QByteArray("v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n") << "vertex 2";
+    QTest::newRow("obj no faces") << "nofaces.obj" << QByteArray("v 0 0 0\n") << "no faces";
+    QTest::newRow("stl garbage") << "garbage.stl" << QByteArray("this is not an stl file at all, not even close\n")
+                                 << "STL";
+    QTest::newRow("unknown suffix") << "mesh.xyz" << QByteArray("1 2 3\n") << "xyz";
+}
+
+void TestMeshIo::malformed()
+{
+    QFETCH(QString, name);
+    QFETCH(QByteArray, bytes);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, name, bytes);
+    try {
+        importMesh(path);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), path);
+        QVERIFY2(e.problem().contains(expected), qPrintable(e.message()));
+        QVERIFY2(!e.problem().contains(QLatin1Char('\n')), qPrintable(e.message()));
+    }
+}
+
+void TestMeshIo::realMeshes_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<int>("vertices");
+    QTest::addColumn<int>("triangles");
+    QTest::addColumn<bool>("clean");
+    QTest::newRow("bunny") << "meshes/npm_bunny.off" << 1839 << 3674 << true;
+    QTest::newRow("elephant") << "meshes/cgal_elephant.off" << 2775 << 5558 << true;
+    QTest::newRow("fandisk") << "meshes/cgal_fandisk.off" << 6475 << 12946 << true;
+    QTest::newRow("armadillo") << "meshes/cgal_armadillo.off" << 26002 << 52000 << true;
+    QTest::newRow("bunny00") << "meshes/cgal_bunny00.off" << 37706 << 75408 << true;
+    QTest::newRow("refined elephant") << "meshes/cgal_refined_elephant.off" << 44460 << 88928 << true;
+    QTest::newRow("dragon") << "meshes/stanford_dragon.ply" << 437645 << 871414 << false;
+}
+
+void TestMeshIo::realMeshes()
+{
+    QFETCH(QString, file);
+    QFETCH(int, vertices);
+    QFETCH(int, triangles);
+    QFETCH(bool, clean);
+    CELFORM_REQUIRE_SHARED(path, file);
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(path))
+    QCOMPARE(r.mesh.vertexCount(), vertices);
+    QCOMPARE(r.mesh.faceCount(), triangles);
+    QCOMPARE(r.topology.isClean(), clean);
+    QCOMPARE(r.warnings.isEmpty(), clean);
+}
+
+void TestMeshIo::dragonTopology()
+{
+    CELFORM_REQUIRE_SHARED(path, QStringLiteral("meshes/stanford_dragon.ply"));
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(path))
+    QCOMPARE(r.topology.components, 151);
+    QVERIFY(r.topology.boundaryLoops > 0);
+    QVERIFY2(r.warnings.first().contains(QStringLiteral("151 component")), qPrintable(r.warnings.join('|')));
+    // The first vertex of the file stays first (the converted dragon starts at this position).
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray bytes = f.readAll();
+    const int body = bytes.indexOf("end_header\n") + 11;
+    float first[3];
+    std::memcpy(first, bytes.constData() + body, sizeof first);
+    QCOMPARE(r.mesh.vertices(0, 0), first[0]);
+    QCOMPARE(r.mesh.vertices(0, 2), first[2]);
+}
+
+void TestMeshIo::badFiles_data()
+{
+    QTest::addColumn<QString>("path");
+    const QString dir = celform::test::sharedDataPath(QStringLiteral("bad"));
+    if (dir.isEmpty()) {
+        QTest::newRow("absent") << QString();
+        return;
+    }
+    for (const QFileInfo& info : QDir(dir).entryInfoList(QDir::Files, QDir::Name))
+        QTest::newRow(qPrintable(info.fileName())) << info.absoluteFilePath();
+}
+
+void TestMeshIo::badFiles()
+{
+    QFETCH(QString, path);
+    if (path.isEmpty())
+        QSKIP("shared test data not found: ../shared/data/bad");
+    const QString name = QFileInfo(path).fileName();
+    try {
+        const MeshImport r = importMesh(path);
+        QVERIFY2(!r.warnings.isEmpty(), "a bad file loaded without any warning");
+        qInfo("%s -> warning: %s", qPrintable(name), qPrintable(r.warnings.join(QStringLiteral(" | "))));
+    } catch (const IoError& e) {
+        QVERIFY2(e.message().contains(name), qPrintable(e.message()));
+        qInfo("%s -> error: %s", qPrintable(name), qPrintable(e.problem()));
+    }
+}
+
+void TestMeshIo::stlIsWelded()
+{
+    CELFORM_REQUIRE_SHARED(path, QStringLiteral("bad/sphereWithHole.stl"));
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(path))
+    QVERIFY(r.mesh.faceCount() > 100);
+    // A welded closed-ish sphere has about half as many vertices as faces, a soup three times.
+    QVERIFY2(r.mesh.vertexCount() < r.mesh.faceCount(),
+        qPrintable(QStringLiteral("%1 vertices, %2 faces").arg(r.mesh.vertexCount()).arg(r.mesh.faceCount())));
+    QCOMPARE(r.topology.boundaryLoops, 1);
+    QCOMPARE(r.topology.components, 1);
+}
+
+void TestMeshIo::roundTrip_data()
+{
+    QTest::addColumn<QString>("suffix");
+    QTest::newRow("ply") << "ply";
+    QTest::newRow("obj") << "obj";
+}
+
+void TestMeshIo::roundTrip()
+{
+    QFETCH(QString, suffix);
+    // Awkward floats: subnormal-free random bits over many magnitudes, negatives, exact integers.
+    std::mt19937 rng(42);
+    std::uniform_real_distribution<float> mantissa(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> exponent(-30, 30);
+    TriMesh mesh;
+    mesh.vertices.resize(300, 3);
+    for (Eigen::Index i = 0; i < mesh.vertices.size(); ++i)
+        mesh.vertices.data()[i] = std::ldexp(mantissa(rng), exponent(rng));
+    mesh.vertices.row(0) << 0.1f, -0.0f, 16777216.0f;
+    mesh.faces.resize(299 - 1, 3);
+    for (int f = 0; f < mesh.faces.rows(); ++f)
+        mesh.faces.row(f) << f, f + 1, f + 2;
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("round.") + suffix);
+    celform::model::exportMesh(mesh, path);
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(path))
+    QCOMPARE(r.mesh.vertexCount(), mesh.vertexCount());
+    QVERIFY(std::memcmp(r.mesh.vertices.data(), mesh.vertices.data(), sizeof(float) * std::size_t(mesh.vertices.size()))
+        == 0);
+    QVERIFY(r.mesh.faces == mesh.faces);
+}
+
+void TestMeshIo::exportErrors()
+{
+    TriMesh mesh;
+    mesh.vertices = quadPositions();
+    mesh.faces = quadFan();
+    QTemporaryDir dir;
+    QVERIFY_THROWS_EXCEPTION(IoError, celform::model::exportMesh(mesh, dir.filePath(QStringLiteral("a.stl"))));
+    QVERIFY_THROWS_EXCEPTION(
+        IoError, celform::model::exportMesh(mesh, dir.filePath(QStringLiteral("no/such/dir/a.ply"))));
+    QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("a.stl"))));
+    QVERIFY_THROWS_EXCEPTION(IoError, importMesh(dir.filePath(QStringLiteral("missing.ply"))));
+}
+
+void TestMeshIo::suffixesAndFilter()
+{
+    const QStringList s = celform::model::meshSuffixes();
+    for (const char* needed : {"obj", "ply", "off", "stl", "gltf", "glb"})
+        QVERIFY(s.contains(QLatin1String(needed)));
+    QVERIFY(celform::model::meshFileFilter().contains(QStringLiteral("*.ply")));
+}
+
+QTEST_GUILESS_MAIN(TestMeshIo)
+#include "test_mesh_io.moc"

@@ -1,0 +1,267 @@
+// The .celform file: bit-identical round trip, atomic save with backup, refusal of newer,
+// corrupt and truncated files with the open document left as it was.
+#include "test_support.h"
+
+#include "celform/model/document.h"
+#include "celform/model/io_error.h"
+#include "celform/model/mesh_io.h"
+#include "celform/model/project_file.h"
+
+#include <QBuffer>
+#include <QCryptographicHash>
+#include <QTemporaryDir>
+#include <QtEndian>
+
+using namespace celform;
+using namespace celform::model;
+
+namespace {
+
+QByteArray pngBytes(int w, int h, QColor color)
+{
+    QImage image(w, h, QImage::Format_RGBA8888);
+    image.fill(color);
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    image.save(&buffer, "PNG");
+    return bytes;
+}
+
+/// A project using every part of the format: UVs, materials, face sets, drawings, keys with
+/// offsets at two frames, non-default settings.
+ProjectData richProject()
+{
+    auto mesh = std::make_shared<algo::TriMesh>();
+    mesh->vertices.resize(5, 3);
+    mesh->vertices << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1.f / 3.f;
+    mesh->faces.resize(4, 3);
+    mesh->faces << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4;
+    mesh->uvs.resize(5, 2);
+    mesh->uvs << 0, 0, 1, 0, 1, 1, 0, 1, 0.5f, 0.5f;
+    mesh->uvFaces = mesh->faces;
+    mesh->materials = {{"skin", {0.9f, 0.7f, 0.6f}}, {"hair", {0.1f, 0.1f, 0.2f}}};
+    mesh->faceMaterials = {0, 0, 1, 1};
+    mesh->faceSets = {{"forehead", {0, 1}}};
+
+    ProjectData data;
+    data.baseMesh = mesh;
+    data.baseMeshName = QStringLiteral("pyramid.obj");
+    Drawing d;
+    d.id = 1;
+    d.name = QStringLiteral("side view");
+    d.imageFormat = QStringLiteral("png");
+    d.imageData = pngBytes(16, 8, Qt::blue);
+    d.camera.eye = Eigen::Vector3d(0.1, 0.2, 7.123456789012345);
+    d.camera.projection = Projection::Orthographic;
+    d.camera.orthoHeight = 3.3;
+    d.aligned = true;
+    d.opacity = 0.37;
+    d.frame = 12;
+    data.drawings.push_back(d);
+
+    KeyViewpoint k;
+    k.id = 2;
+    k.name = QStringLiteral("キー 1");
+    k.direction = Eigen::Vector3d(1, 2, 3).normalized();
+    k.camera.eye = k.direction * 5;
+    k.drawingIds = {1};
+    k.offsetsByFrame[0] = SparseOffsets{{0, 4}, {Eigen::Vector3f(0.1f, 0.2f, 0.3f), Eigen::Vector3f(-1e-7f, 0, 1e6f)}};
+    k.offsetsByFrame[24] = SparseOffsets{{2}, {Eigen::Vector3f(0, 0, 1)}};
+    k.enabled = false;
+    data.keys.push_back(k);
+
+    data.blend.sharpness = 1.75;
+    data.blend.unspecified = UnspecifiedMode::Cosine;
+    data.blend.time = TimeInterpolation::PeriodicSpline;
+    data.look.style = ShadingStyle::Comic;
+    data.look.light = {LightType::Point, Eigen::Vector3d(1.5, -2, 3)};
+    data.look.showLines = false;
+    data.nextId = 3;
+    return data;
+}
+
+QByteArray readAll(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+void writeAll(const QString& path, const QByteArray& bytes)
+{
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    QCOMPARE(f.write(bytes), bytes.size());
+}
+
+} // namespace
+
+class TestProjectFile : public QObject {
+    Q_OBJECT
+
+private slots:
+    void roundTripIsExact()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("rich.celform"));
+        const ProjectData original = richProject();
+        saveProject(original, path);
+        const ProjectData loaded = loadProject(path);
+        QVERIFY(loaded == original);
+        QCOMPARE(loaded.drawings.front().image.size(), QSize(16, 8));
+        // Saving what was loaded gives the same bytes: nothing drifts through a round trip.
+        const QString again = dir.filePath(QStringLiteral("again.celform"));
+        saveProject(loaded, again);
+        QCOMPARE(readAll(again), readAll(path));
+    }
+
+    void emptyProjectRoundTrip()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("empty.celform"));
+        saveProject(ProjectData{}, path);
+        QVERIFY(loadProject(path) == ProjectData{});
+    }
+
+    void realMeshRoundTrip()
+    {
+        CELFORM_REQUIRE_SHARED(meshPath, QStringLiteral("meshes/cgal_elephant.off"));
+        QTemporaryDir dir;
+        ProjectData data;
+        data.baseMesh = std::make_shared<algo::TriMesh>(importMesh(meshPath).mesh);
+        data.baseMeshName = QStringLiteral("cgal_elephant.off");
+        const QString path = dir.filePath(QStringLiteral("elephant.celform"));
+        saveProject(data, path);
+        const ProjectData loaded = loadProject(path);
+        QVERIFY(loaded == data);
+        QCOMPARE(loaded.baseMesh->vertexCount(), Eigen::Index(2775));
+        QCOMPARE(loaded.baseMesh->faceCount(), Eigen::Index(5558));
+    }
+
+    void saveKeepsBackupOfPreviousVersion()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.celform"));
+        ProjectData first = richProject();
+        saveProject(first, path);
+        const QByteArray firstBytes = readAll(path);
+        ProjectData second = first;
+        second.blend.sharpness = 4.0;
+        saveProject(second, path);
+        QCOMPARE(readAll(path + QStringLiteral(".bak")), firstBytes);
+        QCOMPARE(loadProject(path).blend.sharpness, 4.0);
+        QCOMPARE(loadProject(path + QStringLiteral(".bak")).blend.sharpness, 1.75);
+    }
+
+    void failedSaveLeavesFileIntact()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.celform"));
+        saveProject(richProject(), path);
+        const QByteArray before = readAll(path);
+        // A save into a folder that does not exist fails cleanly and touches nothing.
+        QVERIFY_THROWS_EXCEPTION(
+            IoError, saveProject(richProject(), dir.filePath(QStringLiteral("no/such/dir/p.celform"))));
+        QCOMPARE(readAll(path), before);
+    }
+
+    void refusesBadFiles_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("missing") << "missing"
+                                 << "does not exist";
+        QTest::newRow("empty") << "empty"
+                               << "is empty";
+        QTest::newRow("not a project") << "text"
+                                       << "not a Celform project";
+        QTest::newRow("newer version") << "newer"
+                                       << "newer version of Celform";
+        QTest::newRow("truncated") << "truncated"
+                                   << "truncated";
+        QTest::newRow("truncated to header") << "header"
+                                             << "truncated";
+        QTest::newRow("flipped byte in mesh") << "flip-chunk"
+                                              << "checksum";
+        QTest::newRow("flipped byte in manifest") << "flip-manifest"
+                                                  << "checksum";
+    }
+
+    void refusesBadFiles()
+    {
+        QFETCH(QString, kind);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        const QString good = dir.filePath(QStringLiteral("good.celform"));
+        saveProject(richProject(), good);
+        QByteArray bytes = readAll(good);
+        const QString bad = dir.filePath(QStringLiteral("bad.celform"));
+        if (kind == "empty")
+            writeAll(bad, {});
+        else if (kind == "text")
+            writeAll(bad, "this is a text file, not a project\n");
+        else if (kind == "newer") {
+            qToLittleEndian<quint32>(quint32(kProjectFormatVersion + 1), bytes.data() + 8);
+            writeAll(bad, bytes);
+        } else if (kind == "truncated")
+            writeAll(bad, bytes.left(bytes.size() / 2));
+        else if (kind == "header")
+            writeAll(bad, bytes.left(12));
+        else if (kind == "flip-chunk") {
+            bytes[20] = char(bytes[20] ^ 0x5a); // inside the first chunk (mesh vertices)
+            writeAll(bad, bytes);
+        } else if (kind == "flip-manifest") {
+            const int pos = int(bytes.indexOf("\"format_version\""));
+            QVERIFY(pos > 0);
+            bytes[pos + 3] = char(bytes[pos + 3] ^ 0x01);
+            writeAll(bad, bytes);
+        }
+        try {
+            loadProject(bad);
+            QFAIL("a bad file was accepted");
+        } catch (const IoError& e) {
+            QVERIFY2(e.message().contains(expected), qPrintable(e.message()));
+            QVERIFY2(e.message().contains(QStringLiteral("bad.celform")), qPrintable(e.message()));
+        }
+    }
+
+    void failedOpenLeavesDocumentUntouched()
+    {
+        QTemporaryDir dir;
+        const QString good = dir.filePath(QStringLiteral("good.celform"));
+        saveProject(richProject(), good);
+        Document doc;
+        doc.open(good);
+        doc.setBlendSettings(BlendSettings{3.0, UnspecifiedMode::Dummy, TimeInterpolation::NaturalSpline});
+        const ProjectData before = doc.data();
+        const int undoCount = doc.undoStack()->count();
+
+        QByteArray bytes = readAll(good);
+        const QString truncated = dir.filePath(QStringLiteral("truncated.celform"));
+        writeAll(truncated, bytes.left(bytes.size() - 10));
+        QVERIFY_THROWS_EXCEPTION(IoError, doc.open(truncated));
+        QVERIFY(doc.data() == before);
+        QCOMPARE(doc.undoStack()->count(), undoCount);
+        QCOMPARE(doc.filePath(), QFileInfo(good).absoluteFilePath());
+        QVERIFY(doc.isModified());
+    }
+
+    void documentSaveMarksClean()
+    {
+        QTemporaryDir dir;
+        Document doc;
+        doc.reset(richProject());
+        doc.renameKey(2, QStringLiteral("renamed"));
+        QVERIFY(doc.isModified());
+        const QString path = dir.filePath(QStringLiteral("saved.celform"));
+        doc.saveAs(path);
+        QVERIFY(!doc.isModified());
+        QCOMPARE(doc.filePath(), QFileInfo(path).absoluteFilePath());
+        Document other;
+        other.open(path);
+        QVERIFY(other.data() == doc.data());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestProjectFile)
+#include "test_project_file.moc"

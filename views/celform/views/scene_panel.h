@@ -1,0 +1,47 @@
+// The scene dock: the base model, the reference drawings and the key viewpoints as a tree.
+// Renames, deletions and enabling go through the Document, so each one is an undo step.
+#pragma once
+
+#include "celform/model/document.h"
+
+#include <QWidget>
+
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace celform::views {
+
+class ScenePanel : public QWidget {
+    Q_OBJECT
+public:
+    enum class ItemKind { None, BaseModel, Drawing, Key };
+    struct Selection {
+        ItemKind kind = ItemKind::None;
+        model::ObjectId id = 0;
+        bool operator==(const Selection& o) const { return kind == o.kind && id == o.id; }
+    };
+
+    explicit ScenePanel(model::Document* document, QWidget* parent = nullptr);
+
+    [[nodiscard]] Selection selection() const;
+    void select(Selection selection);
+    /// Removes the selected drawing or key (Delete key, Edit menu).
+    void removeSelected();
+    [[nodiscard]] QTreeWidget* tree() const { return m_tree; }
+
+signals:
+    void selectionChanged(celform::views::ScenePanel::Selection selection);
+
+private:
+    void rebuild();
+    void onItemChanged(QTreeWidgetItem* item, int column);
+
+    model::Document* m_document;
+    QTreeWidget* m_tree;
+    QTreeWidgetItem* m_modelRoot = nullptr;
+    QTreeWidgetItem* m_drawingsRoot = nullptr;
+    QTreeWidgetItem* m_keysRoot = nullptr;
+    bool m_rebuilding = false;
+};
+
+} // namespace celform::views

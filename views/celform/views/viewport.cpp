@@ -1,0 +1,705 @@
+// The 3D viewport: a vtkGenericOpenGLRenderWindow drawing into the QOpenGLWidget's framebuffer
+// (STACK.md pitfall 5), the base model as zero-conversion vtkPolyData, and the widget's own camera.
+#include "celform/views/viewport.h"
+
+#include "celform/model/document.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QWheelEvent>
+
+#include <vtkActor.h>
+#include <vtkAppendPolyData.h>
+#include <vtkArrowSource.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkFloatArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkLightKit.h>
+#include <vtkNew.h>
+#include <vtkOpenGLState.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace celform::views {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kOrbitDegreesPerPixel = 0.4;
+constexpr double kDollyPerPixel = 0.005; // exp(-kDollyPerPixel * pixels)
+constexpr double kDollyPerWheelNotch = 0.85; // factor per 120 units of wheel angle
+constexpr double kMaxElevationDegrees = 89.0; // turntable never passes over the pole
+constexpr int kTriadSizePixels = 90; // logical pixels
+
+Eigen::Vector3d toEigen(const double v[3])
+{
+    return {v[0], v[1], v[2]};
+}
+
+double radians(double degrees)
+{
+    return degrees * kPi / 180.0;
+}
+
+/// One arrow of the axes triad, along +X rotated onto axis.
+vtkSmartPointer<vtkPolyData> triadArrow(int axis)
+{
+    vtkNew<vtkArrowSource> arrow;
+    arrow->SetTipResolution(16);
+    arrow->SetShaftResolution(16);
+    arrow->SetShaftRadius(0.04);
+    arrow->SetTipRadius(0.11);
+    arrow->SetTipLength(0.3);
+    vtkNew<vtkTransform> transform;
+    if (axis == 1)
+        transform->RotateZ(90.0);
+    else if (axis == 2)
+        transform->RotateY(-90.0);
+    vtkNew<vtkTransformPolyDataFilter> filter;
+    filter->SetInputConnection(arrow->GetOutputPort());
+    filter->SetTransform(transform);
+    filter->Update();
+    vtkSmartPointer<vtkPolyData> out = filter->GetOutput();
+    return out;
+}
+
+} // namespace
+
+struct Viewport::Vtk {
+    vtkNew<vtkGenericOpenGLRenderWindow> window;
+    vtkNew<vtkRenderer> renderer;
+    vtkNew<vtkRenderer> triadRenderer;
+    vtkNew<vtkPolyData> mesh;
+    vtkNew<vtkPolyDataMapper> meshMapper;
+    vtkNew<vtkActor> meshActor;
+    vtkNew<vtkPolyData> grid;
+    vtkNew<vtkPolyDataMapper> gridMapper;
+    vtkNew<vtkActor> gridActor;
+    vtkNew<vtkCallbackCommand> makeCurrent;
+    // Whether the main camera has been placed: VTK does not reset a camera that was touched
+    // before the first render (STACK.md pitfall 5), so the first frame depends on our framing.
+    bool cameraPlaced = false;
+};
+
+Viewport::Viewport(model::Document* document, QWidget* parent)
+    : QOpenGLWidget(parent)
+    , m_document(document)
+    , m_vtk(std::make_unique<Vtk>())
+{
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(64, 64);
+    setAccessibleName(tr("3D viewport"));
+    setWhatsThis(tr("<p>The 3D view of the model.</p>"
+                    "<p>Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. "
+                    "Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. "
+                    "F: frame the model. Home: front view.</p>"));
+
+    Vtk& v = *m_vtk;
+    // The context belongs to Qt; VTK only draws into the framebuffer Qt has bound in paintGL.
+    v.window->SetOwnContext(false);
+    v.window->SetIsCurrent(true);
+    // Antialiasing is VTK's: it resolves its own multisampled buffer before blitting into Qt's,
+    // which must stay single-sampled (see defaultFormat()). FXAA is not an option: its pass
+    // re-binds framebuffers behind Qt and the frame comes out black.
+    v.window->SetMultiSamples(4);
+    v.window->SetNumberOfLayers(2);
+    v.window->AddRenderer(v.renderer);
+    v.window->AddRenderer(v.triadRenderer);
+
+    // VTK asks for the context when it releases resources outside paintGL. An unconditional
+    // makeCurrent() would re-bind Qt's framebuffer behind VTK's cached state (black viewport).
+    v.makeCurrent->SetClientData(this);
+    v.makeCurrent->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
+        auto* self = static_cast<Viewport*>(clientData);
+        if (self->context() && QOpenGLContext::currentContext() != self->context())
+            self->makeCurrent();
+    });
+    v.window->AddObserver(vtkCommand::WindowMakeCurrentEvent, v.makeCurrent);
+
+    v.renderer->GradientBackgroundOn();
+    setBackgroundColors(QColor(200, 201, 204), QColor(150, 151, 155));
+    // A three-light kit reads shapes far better than the single default headlight.
+    vtkNew<vtkLightKit> lights;
+    lights->SetKeyLightIntensity(0.85);
+    lights->AddLightsToRenderer(v.renderer);
+
+    v.meshMapper->SetInputData(v.mesh);
+    v.meshMapper->ScalarVisibilityOff();
+    v.meshActor->SetMapper(v.meshMapper);
+    vtkProperty* material = v.meshActor->GetProperty();
+    material->SetInterpolationToPhong();
+    material->SetColor(0.80, 0.77, 0.72); // light warm grey clay
+    material->SetAmbient(0.12);
+    material->SetDiffuse(0.85);
+    material->SetSpecular(0.12);
+    material->SetSpecularPower(24.0);
+    material->SetSpecularColor(1.0, 0.98, 0.95);
+    v.renderer->AddActor(v.meshActor);
+
+    v.gridMapper->SetInputData(v.grid);
+    v.gridActor->SetMapper(v.gridMapper);
+    v.gridActor->GetProperty()->LightingOff();
+    v.gridActor->PickableOff();
+    v.renderer->AddActor(v.gridActor);
+
+    // The triad lives in a second layer with its own camera that only copies the orientation of
+    // the main one, so it stays the same size whatever the zoom.
+    v.triadRenderer->SetLayer(1);
+    v.triadRenderer->InteractiveOff();
+    const double axisColors[3][3] = {{0.85, 0.25, 0.22}, {0.35, 0.70, 0.25}, {0.25, 0.45, 0.85}};
+    for (int axis = 0; axis < 3; ++axis) {
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(triadArrow(axis));
+        vtkNew<vtkActor> actor;
+        actor->SetMapper(mapper);
+        actor->GetProperty()->SetColor(axisColors[axis][0], axisColors[axis][1], axisColors[axis][2]);
+        actor->GetProperty()->SetAmbient(0.35);
+        actor->GetProperty()->SetDiffuse(0.7);
+        v.triadRenderer->AddActor(actor);
+    }
+
+    if (m_document) {
+        connect(m_document, &model::Document::meshChanged, this, [this] {
+            rebuildMesh();
+            update();
+        });
+        connect(m_document, &model::Document::documentReset, this, [this] {
+            rebuildMesh();
+            resetView();
+        });
+    }
+    rebuildMesh();
+    resetView();
+}
+
+Viewport::~Viewport()
+{
+    // The base class destroys the context after our members are gone: drop the connection first.
+    if (context())
+        disconnect(context(), &QOpenGLContext::aboutToBeDestroyed, this, nullptr);
+    releaseGraphics();
+    m_vtk->window->RemoveObserver(m_vtk->makeCurrent);
+}
+
+QSurfaceFormat Viewport::defaultFormat()
+{
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 2);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    format.setAlphaBufferSize(8);
+    // Single-sampled on purpose: VTK blits its frame into Qt's framebuffer, and a blit into a
+    // multisampled framebuffer is invalid in OpenGL. VTK multisamples its own buffer instead.
+    // (Under Xvfb's llvmpipe GLX offers no multisampled configs anyway: a request for 4 gave 0.)
+    format.setSamples(0);
+    return format;
+}
+
+// --- camera ---------------------------------------------------------------------------------
+
+model::Camera Viewport::camera() const
+{
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    model::Camera c;
+    c.eye = toEigen(cam->GetPosition());
+    c.target = toEigen(cam->GetFocalPoint());
+    c.up = toEigen(cam->GetViewUp());
+    c.projection = cam->GetParallelProjection() ? model::Projection::Orthographic : model::Projection::Perspective;
+    c.fovYDegrees = cam->GetViewAngle();
+    c.orthoHeight = 2.0 * cam->GetParallelScale();
+    return c;
+}
+
+void Viewport::setCamera(const model::Camera& camera)
+{
+    if (!camera.isValid())
+        return;
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    cam->SetPosition(camera.eye.data());
+    cam->SetFocalPoint(camera.target.data());
+    cam->SetViewUp(camera.up.data());
+    cam->SetParallelProjection(camera.projection == model::Projection::Orthographic);
+    cam->SetViewAngle(camera.fovYDegrees);
+    cam->SetParallelScale(camera.orthoHeight / 2.0);
+    // Orbit turns around the model: the point of the view axis nearest to its centre, so the
+    // pivot stays on screen whatever target the camera was given.
+    const Eigen::Vector3d forward = camera.forward();
+    double along = (m_bounds.center() - camera.eye).dot(forward);
+    if (!(along > 1e-6 * m_bounds.diagonal().norm()))
+        along = (camera.target - camera.eye).norm(); // model behind the camera: turn about the target
+    m_pivot = camera.eye + along * forward;
+    m_vtk->cameraPlaced = true;
+    cameraEdited();
+}
+
+void Viewport::setProjection(model::Projection projection)
+{
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    const bool ortho = projection == model::Projection::Orthographic;
+    if (bool(cam->GetParallelProjection()) == ortho)
+        return;
+    // Keep the size of the model at the pivot's depth, so switching does not jump.
+    const double distance = (m_pivot - toEigen(cam->GetPosition())).norm();
+    const double halfAngle = radians(cam->GetViewAngle() / 2.0);
+    if (ortho)
+        cam->SetParallelScale(distance * std::tan(halfAngle));
+    cam->SetParallelProjection(ortho);
+    cameraEdited();
+}
+
+model::Projection Viewport::projection() const
+{
+    return m_vtk->renderer->GetActiveCamera()->GetParallelProjection() ? model::Projection::Orthographic
+                                                                       : model::Projection::Perspective;
+}
+
+void Viewport::frameAll()
+{
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    const Eigen::Vector3d center = m_bounds.center();
+    const double radius = std::max(0.5 * m_bounds.diagonal().norm(), 1e-6);
+    Eigen::Vector3d forward = (toEigen(cam->GetFocalPoint()) - toEigen(cam->GetPosition())).normalized();
+    if (!forward.allFinite())
+        forward = -Eigen::Vector3d::UnitZ();
+
+    // The bounding sphere must fit the narrower of the two fields of view.
+    const double aspect = height() > 0 ? double(width()) / double(height()) : 1.0;
+    const double halfY = radians(cam->GetViewAngle() / 2.0);
+    const double halfX = std::atan(std::tan(halfY) * aspect);
+    const double halfMin = std::min(halfX, halfY);
+    const double margin = 1.05;
+    const double distance = margin * radius / std::sin(halfMin);
+
+    const Eigen::Vector3d eye = center - distance * forward;
+    cam->SetFocalPoint(center.data());
+    cam->SetPosition(eye.data());
+    cam->SetParallelScale(margin * radius * std::max(1.0, 1.0 / aspect));
+    m_pivot = center;
+    m_vtk->cameraPlaced = true;
+    cameraEdited();
+    m_framed = true;
+}
+
+void Viewport::resetView()
+{
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    const Eigen::Vector3d center = m_bounds.center();
+    cam->SetFocalPoint(center.data());
+    const Eigen::Vector3d eye = center + Eigen::Vector3d::UnitZ();
+    cam->SetPosition(eye.data());
+    cam->SetViewUp(0.0, 1.0, 0.0);
+    frameAll();
+}
+
+void Viewport::cameraEdited()
+{
+    m_framed = false;
+    m_vtk->renderer->GetActiveCamera()->OrthogonalizeViewUp();
+    update();
+    emit cameraChanged();
+}
+
+void Viewport::orbit(double yawDegrees, double pitchDegrees)
+{
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    const Eigen::Vector3d eye = toEigen(cam->GetPosition());
+    const Eigen::Vector3d target = toEigen(cam->GetFocalPoint());
+    const Eigen::Vector3d up = toEigen(cam->GetViewUp());
+    const Eigen::Vector3d forward = (target - eye).normalized();
+    const Eigen::Vector3d worldUp = Eigen::Vector3d::UnitY();
+
+    // Turntable: yaw about the world up axis, then pitch about the camera's horizontal axis,
+    // clamped by elevation so the view never rolls over the pole.
+    const double elevation = std::asin(std::clamp(-forward.dot(worldUp), -1.0, 1.0)) * 180.0 / kPi;
+    const double newElevation = std::clamp(elevation + pitchDegrees, -kMaxElevationDegrees, kMaxElevationDegrees);
+    const double pitch = newElevation - elevation;
+
+    const Eigen::AngleAxisd yaw(radians(-yawDegrees), worldUp);
+    Eigen::Vector3d right = yaw * forward.cross(worldUp);
+    if (right.norm() < 1e-9)
+        right = yaw * forward.cross(up);
+    const Eigen::AngleAxisd tilt(radians(-pitch), right.normalized());
+    const Eigen::Matrix3d rotation = (tilt * yaw).toRotationMatrix();
+
+    const Eigen::Vector3d newEye = m_pivot + rotation * (eye - m_pivot);
+    const Eigen::Vector3d newTarget = m_pivot + rotation * (target - m_pivot);
+    const Eigen::Vector3d newUp = rotation * up;
+    cam->SetPosition(newEye.data());
+    cam->SetFocalPoint(newTarget.data());
+    cam->SetViewUp(newUp.data());
+    cameraEdited();
+}
+
+void Viewport::pan(const QPointF& deltaPixels)
+{
+    if (height() <= 0)
+        return;
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    const model::Camera c = camera();
+    // World units per logical pixel at the pivot's depth, so the model follows the cursor.
+    double viewHeight = c.orthoHeight;
+    if (c.projection == model::Projection::Perspective) {
+        const double depth = (m_pivot - c.eye).dot(c.forward());
+        viewHeight = 2.0 * std::max(depth, 1e-9) * std::tan(radians(c.fovYDegrees / 2.0));
+    }
+    const double perPixel = viewHeight / double(height());
+    const Eigen::Vector3d shift = perPixel * (-deltaPixels.x() * c.right() + deltaPixels.y() * c.trueUp());
+    const Eigen::Vector3d eye = c.eye + shift;
+    const Eigen::Vector3d target = c.target + shift;
+    cam->SetPosition(eye.data());
+    cam->SetFocalPoint(target.data());
+    // Maya's centre of interest moves with a track: orbit then turns about what is on screen.
+    m_pivot += shift;
+    cameraEdited();
+}
+
+void Viewport::dolly(double factor)
+{
+    if (!(factor > 0.0) || !std::isfinite(factor))
+        return;
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    if (cam->GetParallelProjection()) {
+        cam->SetParallelScale(std::max(cam->GetParallelScale() * factor, 1e-6));
+        cameraEdited();
+        return;
+    }
+    const Eigen::Vector3d eye = toEigen(cam->GetPosition());
+    const Eigen::Vector3d target = toEigen(cam->GetFocalPoint());
+    const double distance = (m_pivot - eye).norm();
+    // Never reach the pivot: a zero distance would lose the view direction.
+    const double minDistance = 1e-4 * std::max(m_bounds.diagonal().norm(), 1e-6);
+    const double newDistance = std::max(distance * factor, minDistance);
+    const Eigen::Vector3d shift = (distance - newDistance) * (m_pivot - eye).normalized();
+    const Eigen::Vector3d newEye = eye + shift;
+    const Eigen::Vector3d newTarget = target + shift;
+    cam->SetPosition(newEye.data());
+    cam->SetFocalPoint(newTarget.data());
+    cameraEdited();
+}
+
+// --- scene ----------------------------------------------------------------------------------
+
+void Viewport::setBackgroundColors(const QColor& top, const QColor& bottom)
+{
+    m_vtk->renderer->SetBackground2(top.redF(), top.greenF(), top.blueF());
+    m_vtk->renderer->SetBackground(bottom.redF(), bottom.greenF(), bottom.blueF());
+    // The grid is a shade of the background: visible, never louder than the model.
+    const double r = 0.5 * (top.redF() + bottom.redF()), g = 0.5 * (top.greenF() + bottom.greenF()),
+                 b = 0.5 * (top.blueF() + bottom.blueF());
+    m_vtk->gridActor->GetProperty()->SetColor(r * 0.82, g * 0.82, b * 0.82);
+    update();
+}
+
+void Viewport::rebuildMesh()
+{
+    Vtk& v = *m_vtk;
+    const auto mesh = (m_document && m_document->hasMesh()) ? m_document->data().baseMesh : nullptr;
+    if (!mesh || mesh->vertexCount() == 0) {
+        v.mesh->Initialize();
+        v.meshActor->VisibilityOff();
+        m_bounds = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-1.0), Eigen::Vector3d::Constant(1.0));
+        rebuildGrid();
+        return;
+    }
+
+    const auto vertexCount = static_cast<vtkIdType>(mesh->vertexCount());
+    const auto faceCount = static_cast<vtkIdType>(mesh->faceCount());
+
+    // Row-major #V x 3 floats are exactly VTK's AOS layout: one memcpy, no per-point calls.
+    vtkNew<vtkFloatArray> positions;
+    positions->SetNumberOfComponents(3);
+    positions->SetNumberOfTuples(vertexCount);
+    std::memcpy(positions->GetPointer(0), mesh->vertices.data(), sizeof(float) * 3 * size_t(vertexCount));
+    vtkNew<vtkPoints> points;
+    points->SetData(positions);
+
+    // 32-bit cell storage like algo::Faces: the connectivity is one memcpy too, and the offsets
+    // of fixed-size triangles are a trivial ramp. Half the memory of VTK's default 64-bit ids.
+    vtkNew<vtkTypeInt32Array> connectivity;
+    connectivity->SetNumberOfTuples(3 * faceCount);
+    std::memcpy(connectivity->GetPointer(0), mesh->faces.data(), sizeof(std::int32_t) * 3 * size_t(faceCount));
+    vtkNew<vtkTypeInt32Array> offsets;
+    offsets->SetNumberOfTuples(faceCount + 1);
+    std::int32_t* offset = offsets->GetPointer(0);
+    for (vtkIdType f = 0; f <= faceCount; ++f)
+        offset[f] = static_cast<std::int32_t>(3 * f);
+    vtkNew<vtkCellArray> triangles;
+    triangles->SetData(offsets, connectivity);
+
+    const algo::Positions normals = algo::vertexNormals(mesh->vertices, mesh->faces);
+    vtkNew<vtkFloatArray> normalArray;
+    normalArray->SetName("Normals");
+    normalArray->SetNumberOfComponents(3);
+    normalArray->SetNumberOfTuples(vertexCount);
+    std::memcpy(normalArray->GetPointer(0), normals.data(), sizeof(float) * 3 * size_t(vertexCount));
+
+    v.mesh->Initialize();
+    v.mesh->SetPoints(points);
+    v.mesh->SetPolys(triangles);
+    v.mesh->GetPointData()->SetNormals(normalArray);
+    v.mesh->Modified();
+    v.meshActor->VisibilityOn();
+
+    m_bounds = algo::boundingBox(mesh->vertices);
+    if (m_bounds.isEmpty() || !m_bounds.min().allFinite() || !m_bounds.max().allFinite())
+        m_bounds = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-1.0), Eigen::Vector3d::Constant(1.0));
+    rebuildGrid();
+}
+
+void Viewport::rebuildGrid()
+{
+    // A ground grid under the model (Y up), with a round spacing a little under a tenth of its
+    // size, so the floor reads as scale without competing with the model.
+    const Eigen::Vector3d center = m_bounds.center();
+    const Eigen::Vector3d size = m_bounds.sizes();
+    const double extent = std::max({size.x(), size.z(), 0.5 * size.y(), 1e-6});
+    const double spacing = std::pow(10.0, std::floor(std::log10(extent / 4.0)));
+    const int halfLines = std::min(int(std::ceil(extent / spacing)), 40);
+    const double half = halfLines * spacing;
+    const double y = m_bounds.min().y();
+    const double cx = std::round(center.x() / spacing) * spacing;
+    const double cz = std::round(center.z() / spacing) * spacing;
+
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> lines;
+    for (int i = -halfLines; i <= halfLines; ++i) {
+        const double t = i * spacing;
+        const vtkIdType a = points->InsertNextPoint(cx + t, y, cz - half);
+        const vtkIdType b = points->InsertNextPoint(cx + t, y, cz + half);
+        const vtkIdType c = points->InsertNextPoint(cx - half, y, cz + t);
+        const vtkIdType d = points->InsertNextPoint(cx + half, y, cz + t);
+        const vtkIdType first[2] = {a, b};
+        const vtkIdType second[2] = {c, d};
+        lines->InsertNextCell(2, first);
+        lines->InsertNextCell(2, second);
+    }
+    m_vtk->grid->Initialize();
+    m_vtk->grid->SetPoints(points);
+    m_vtk->grid->SetLines(lines);
+    m_vtk->grid->Modified();
+}
+
+void Viewport::updateTriadViewport()
+{
+    const double w = std::max(width(), 1), h = std::max(height(), 1);
+    const double side = std::min(double(kTriadSizePixels), 0.3 * std::min(w, h));
+    m_vtk->triadRenderer->SetViewport(0.0, 0.0, side / w, side / h);
+}
+
+void Viewport::syncTriadCamera()
+{
+    vtkCamera* main = m_vtk->renderer->GetActiveCamera();
+    vtkCamera* triad = m_vtk->triadRenderer->GetActiveCamera();
+    const Eigen::Vector3d forward = (toEigen(main->GetFocalPoint()) - toEigen(main->GetPosition())).normalized();
+    const Eigen::Vector3d eye = -4.0 * forward;
+    triad->SetFocalPoint(0.0, 0.0, 0.0);
+    triad->SetPosition(eye.data());
+    triad->SetViewUp(main->GetViewUp());
+    // Orthographic keeps the arrows undistorted in the corner.
+    triad->ParallelProjectionOn();
+    triad->SetParallelScale(1.3);
+    triad->SetClippingRange(0.1, 10.0);
+}
+
+// --- OpenGL ---------------------------------------------------------------------------------
+
+void Viewport::initializeGL()
+{
+    vtkGenericOpenGLRenderWindow* window = m_vtk->window;
+    window->SetReadyForRendering(false);
+    window->InitializeFromCurrentContext();
+    window->SetFrameBlitModeToBlitToCurrent();
+    window->SetReadyForRendering(true);
+    m_initialized = true;
+    // Reparenting to another window replaces the context: VTK's objects die with the old one.
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGraphics, Qt::UniqueConnection);
+}
+
+void Viewport::releaseGraphics()
+{
+    if (!m_initialized || !context())
+        return;
+    makeCurrent();
+    m_vtk->window->ReleaseGraphicsResources(m_vtk->window);
+    m_initialized = false;
+    doneCurrent();
+}
+
+void Viewport::resizeGL(int w, int h)
+{
+    const qreal dpr = devicePixelRatioF();
+    m_vtk->window->SetSize(qRound(w * dpr), qRound(h * dpr));
+    updateTriadViewport();
+    // A view framed by the program (load, F, Home) stays framed while the window is resized:
+    // the widget's first size is only known here, after the constructor framed the model.
+    if (m_framed)
+        frameAll();
+}
+
+void Viewport::paintGL()
+{
+    if (!m_initialized)
+        return;
+    Vtk& v = *m_vtk;
+    if (!v.cameraPlaced)
+        frameAll();
+    // Qt touched the GL state (its framebuffer, depth function) since VTK last looked: make VTK
+    // re-read it rather than trust its cache, and hand Qt its state back afterwards.
+    vtkOpenGLState* state = v.window->GetState();
+    state->Reset();
+    state->Push();
+    v.renderer->ResetCameraClippingRange();
+    syncTriadCamera();
+    v.window->Render();
+    state->Pop();
+    ++m_renderCount;
+}
+
+QImage Viewport::renderedImage()
+{
+    return grabFramebuffer();
+}
+
+// --- navigation -----------------------------------------------------------------------------
+
+void Viewport::mousePressEvent(QMouseEvent* event)
+{
+    if (m_drag != Drag::None) {
+        event->accept();
+        return;
+    }
+    const Qt::KeyboardModifiers mods = event->modifiers();
+    const Qt::MouseButton button = event->button();
+    Drag drag = Drag::None;
+    if (mods & Qt::AltModifier) {
+        // Maya: Alt + left orbit, middle pan, right dolly.
+        if (button == Qt::LeftButton)
+            drag = Drag::Orbit;
+        else if (button == Qt::MiddleButton)
+            drag = Drag::Pan;
+        else if (button == Qt::RightButton)
+            drag = Drag::Dolly;
+    } else if (button == Qt::MiddleButton) {
+        // Middle button alone for tablets and laptops where Alt is taken by the window manager.
+        if (mods & Qt::ShiftModifier)
+            drag = Drag::Pan;
+        else if (mods & Qt::ControlModifier)
+            drag = Drag::Dolly;
+        else
+            drag = Drag::Orbit;
+    }
+    if (drag == Drag::None) {
+        QOpenGLWidget::mousePressEvent(event);
+        return;
+    }
+    m_drag = drag;
+    m_dragButton = button;
+    m_lastPos = event->position();
+    switch (drag) {
+    case Drag::Orbit:
+        setCursor(Qt::ClosedHandCursor);
+        break;
+    case Drag::Pan:
+        setCursor(Qt::SizeAllCursor);
+        break;
+    case Drag::Dolly:
+        setCursor(Qt::SizeVerCursor);
+        break;
+    case Drag::None:
+        break;
+    }
+    event->accept();
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event)
+{
+    if (m_drag == Drag::None) {
+        QOpenGLWidget::mouseMoveEvent(event);
+        return;
+    }
+    if (!(event->buttons() & m_dragButton)) {
+        // The release went elsewhere (a popup, a window manager grab): end the drag here.
+        m_drag = Drag::None;
+        m_dragButton = Qt::NoButton;
+        unsetCursor();
+        return;
+    }
+    const QPointF delta = event->position() - m_lastPos;
+    m_lastPos = event->position();
+    if (delta.isNull())
+        return;
+    switch (m_drag) {
+    case Drag::Orbit:
+        orbit(delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
+        break;
+    case Drag::Pan:
+        pan(delta);
+        break;
+    // Dragging right or up brings the camera closer.
+    case Drag::Dolly:
+        dolly(std::exp(-kDollyPerPixel * (delta.x() - delta.y())));
+        break;
+    case Drag::None:
+        break;
+    }
+    event->accept();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (m_drag != Drag::None && event->button() == m_dragButton) {
+        m_drag = Drag::None;
+        m_dragButton = Qt::NoButton;
+        unsetCursor();
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::mouseReleaseEvent(event);
+}
+
+void Viewport::wheelEvent(QWheelEvent* event)
+{
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches == 0.0) {
+        event->ignore();
+        return;
+    }
+    dolly(std::pow(kDollyPerWheelNotch, notches));
+    event->accept();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_F && !(event->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
+        frameAll();
+        event->accept();
+        return;
+    }
+    if (event->key() == Qt::Key_Home) {
+        resetView();
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+} // namespace celform::views
