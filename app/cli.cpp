@@ -22,10 +22,10 @@
 namespace celform::app {
 namespace {
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("celform::app::Cli", text);
-}
+// Gives lupdate the context "celform::app::Cli" for every Cli::tr() below.
+struct Cli {
+    Q_DECLARE_TR_FUNCTIONS(celform::app::Cli)
+};
 
 const QStringList kSubCommands = {QStringLiteral("new"), QStringLiteral("info")};
 
@@ -55,33 +55,33 @@ void parseOrThrow(QCommandLineParser& parser, const QStringList& args, int posit
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     parser.addHelpOption();
     if (!parser.parse(args))
-        throw UsageError{parser.errorText() + QLatin1Char('\n') + tr("usage: %1").arg(synopsis)};
+        throw UsageError{parser.errorText() + QLatin1Char('\n') + Cli::tr("usage: %1").arg(synopsis)};
     if (parser.isSet(QStringLiteral("help"))) {
         printOut(parser.helpText());
         throw UsageError{}; // help printed: exit 0 is handled by the caller through an empty message
     }
     if (parser.positionalArguments().size() != positionalCount)
-        throw UsageError{tr("usage: %1").arg(synopsis)};
+        throw UsageError{Cli::tr("usage: %1").arg(synopsis)};
 }
 
 int commandNew(const QStringList& args)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Creates a project from a mesh file."));
-    parser.addPositionalArgument(QStringLiteral("MESH"), tr("Mesh file (OBJ, PLY, STL, OFF, glTF, GLB)."));
-    const QCommandLineOption out(QStringLiteral("out"), tr("Project file to write."), QStringLiteral("P.celform"));
+    parser.setApplicationDescription(Cli::tr("Creates a project from a mesh file."));
+    parser.addPositionalArgument(QStringLiteral("MESH"), Cli::tr("Mesh file (OBJ, PLY, STL, OFF, glTF, GLB)."));
+    const QCommandLineOption out(QStringLiteral("out"), Cli::tr("Project file to write."), QStringLiteral("P.celform"));
     const QCommandLineOption drawing(
-        QStringLiteral("drawing"), tr("Reference drawing to embed (repeatable)."), QStringLiteral("IMAGE"));
+        QStringLiteral("drawing"), Cli::tr("Reference drawing to embed (repeatable)."), QStringLiteral("IMAGE"));
     parser.addOptions({out, drawing});
     parseOrThrow(parser, args, 1, QStringLiteral("celform new MESH --out P.celform [--drawing IMAGE]..."));
     if (!parser.isSet(out))
-        throw UsageError{tr("--out is required\nusage: %1")
+        throw UsageError{Cli::tr("--out is required\nusage: %1")
                              .arg(QStringLiteral("celform new MESH --out P.celform [--drawing IMAGE]..."))};
 
     model::Document doc;
     const QStringList warnings = doc.newFromMesh(parser.positionalArguments().front());
     for (const QString& w : warnings)
-        printErr(tr("warning: %1: %2").arg(parser.positionalArguments().front(), w));
+        printErr(Cli::tr("warning: %1: %2").arg(parser.positionalArguments().front(), w));
     for (const QString& image : parser.values(drawing))
         doc.importDrawing(image);
     doc.saveAs(parser.value(out));
@@ -99,9 +99,9 @@ QJsonObject cameraJson(const model::Camera& c)
 int commandInfo(const QStringList& args)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Prints what a project holds."));
-    parser.addPositionalArgument(QStringLiteral("P"), tr("Project file (.celform)."));
-    const QCommandLineOption json(QStringLiteral("json"), tr("Print machine-readable JSON."));
+    parser.setApplicationDescription(Cli::tr("Prints what a project holds."));
+    parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
+    const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print machine-readable JSON."));
     parser.addOption(json);
     parseOrThrow(parser, args, 1, QStringLiteral("celform info P.celform [--json]"));
 
@@ -153,21 +153,21 @@ int commandInfo(const QStringList& args)
     }
     QString text;
     QTextStream s(&text);
-    s << tr("Project: %1 (format %2)").arg(path).arg(model::kProjectFormatVersion) << '\n';
+    s << Cli::tr("Project: %1 (format %2)").arg(path).arg(model::kProjectFormatVersion) << '\n';
     if (data.baseMesh) {
         const auto& m = root["base_mesh"].toObject();
-        s << tr("Base model: %1, %2 vertices, %3 triangles")
+        s << Cli::tr("Base model: %1, %2 vertices, %3 triangles")
                  .arg(data.baseMeshName)
                  .arg(qint64(m["vertex_count"].toDouble()))
                  .arg(qint64(m["triangle_count"].toDouble()))
           << '\n';
     } else {
-        s << tr("Base model: none") << '\n';
+        s << Cli::tr("Base model: none") << '\n';
     }
-    s << tr("Drawings: %1").arg(data.drawings.size()) << '\n';
+    s << Cli::tr("Drawings: %1").arg(data.drawings.size()) << '\n';
     for (const auto& d : data.drawings)
         s << "  " << d.name << " (" << d.image.width() << "x" << d.image.height() << ' ' << d.imageFormat << ")\n";
-    s << tr("Key viewpoints: %1").arg(data.keys.size()) << '\n';
+    s << Cli::tr("Key viewpoints: %1").arg(data.keys.size()) << '\n';
     for (const auto& k : data.keys)
         s << "  " << k.name << " (" << k.direction.x() << ", " << k.direction.y() << ", " << k.direction.z() << ")\n";
     printOut(text);
@@ -188,7 +188,7 @@ bool isCommandLineInvocation(const QStringList& arguments)
 int runCommandLine(const QStringList& arguments)
 {
     const QString first = arguments.value(1);
-    const QString usage = tr("usage: celform [PROJECT] [--screenshot FILE.png]\n"
+    const QString usage = Cli::tr("usage: celform [PROJECT] [--screenshot FILE.png]\n"
                              "       celform new MESH --out P.celform [--drawing IMAGE]...\n"
                              "       celform info P.celform [--json]\n"
                              "       celform --version");
@@ -219,7 +219,7 @@ int runCommandLine(const QStringList& arguments)
         printErr(QStringLiteral("celform: ") + e.message());
         return kExitBadInput;
     } catch (const std::bad_alloc&) {
-        printErr(tr("celform: out of memory"));
+        printErr(Cli::tr("celform: out of memory"));
         return kExitBadInput;
     } catch (const std::exception& e) {
         printErr(QStringLiteral("celform: ") + QString::fromLocal8Bit(e.what()));

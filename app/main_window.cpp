@@ -30,7 +30,9 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTimer>
+#include <QToolBar>
 #include <QUndoView>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -281,6 +283,27 @@ void MainWindow::createMenus()
     m_viewMenu->addSeparator();
     for (auto* dock : findChildren<QDockWidget*>())
         m_viewMenu->addAction(dock->toggleViewAction());
+
+    // The toolbar holds what artists reach for most; icons from the desktop theme with Qt's own
+    // standard icons as the fallback, so it works on any desktop and on bare farm nodes alike.
+    QToolBar* tools = addToolBar(tr("Main"));
+    tools->setObjectName(QStringLiteral("mainToolBar"));
+    tools->setIconSize(QSize(20, 20));
+    auto withIcon = [this](const char* name, const char* themeIcon, QStyle::StandardPixmap fallback) {
+        QAction* a = action(QString::fromLatin1(name));
+        a->setIcon(QIcon::fromTheme(QString::fromLatin1(themeIcon), style()->standardIcon(fallback)));
+        return a;
+    };
+    tools->addAction(withIcon("actionNewFromMesh", "document-new", QStyle::SP_FileIcon));
+    tools->addAction(withIcon("actionOpen", "document-open", QStyle::SP_DialogOpenButton));
+    tools->addAction(withIcon("actionSave", "document-save", QStyle::SP_DialogSaveButton));
+    tools->addSeparator();
+    tools->addAction(withIcon("actionUndo", "edit-undo", QStyle::SP_ArrowBack));
+    tools->addAction(withIcon("actionRedo", "edit-redo", QStyle::SP_ArrowForward));
+    tools->addSeparator();
+    tools->addAction(withIcon("actionImportDrawing", "insert-image", QStyle::SP_FileDialogContentsView));
+    tools->addAction(withIcon("actionFrameAll", "zoom-fit-best", QStyle::SP_TitleBarMaxButton));
+    m_viewMenu->addAction(tools->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(action(QStringLiteral("actionNavigationHelp")));

@@ -13,11 +13,6 @@
 namespace celform::model {
 namespace {
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("celform::model::Document", text);
-}
-
 using MeshPtr = std::shared_ptr<const algo::TriMesh>;
 
 /// Highest vertex index any key offset refers to, or -1.
@@ -51,7 +46,7 @@ private:
 
 QString uniqueName(const QString& wanted, const std::function<bool(const QString&)>& taken)
 {
-    const QString base = wanted.trimmed().isEmpty() ? tr("Untitled") : wanted.trimmed();
+    const QString base = wanted.trimmed().isEmpty() ? Document::tr("Untitled") : wanted.trimmed();
     if (!taken(base))
         return base;
     for (int n = 2;; ++n) {

@@ -28,10 +28,12 @@ namespace {
 
 static_assert(Q_BYTE_ORDER == Q_LITTLE_ENDIAN, "the chunk layout is little-endian; add byte swapping first");
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("celform::model::ProjectFile", text);
-}
+// Gives lupdate the context "celform::model::ProjectFile" for every ProjectFile::tr() below.
+struct ProjectFile {
+    Q_DECLARE_TR_FUNCTIONS(celform::model::ProjectFile)
+};
+
+using Vec3 = Eigen::Vector3d; // an alias: lupdate misreads a qualified return type as a context
 
 constexpr char kMagic[8] = {'\x89', 'C', 'E', 'L', 'F', '\r', '\n', '\x1a'};
 constexpr char kEndMagic[8] = {'C', 'E', 'L', 'F', 'E', 'N', 'D', '\n'};
@@ -150,7 +152,7 @@ private:
     void put(QSaveFile& file, const char* data, qint64 size)
     {
         if (size > 0 && file.write(data, size) != size)
-            throw IoError(file.fileName(), tr("could not be written: %1").arg(file.errorString()));
+            throw IoError(file.fileName(), ProjectFile::tr("could not be written: %1").arg(file.errorString()));
         m_pos += size;
     }
 
@@ -247,27 +249,27 @@ public:
     { }
 
     [[noreturn]] void fail(const QString& problem) const { throw IoError(m_path, problem); }
-    [[noreturn]] void corrupt(const QString& what) const { fail(tr("is damaged: %1").arg(what)); }
+    [[noreturn]] void corrupt(const QString& what) const { fail(ProjectFile::tr("is damaged: %1").arg(what)); }
 
     QJsonValue member(const QJsonObject& o, const char* name, QJsonValue::Type type) const
     {
         const QJsonValue v = o.value(QLatin1String(name));
         if (v.type() != type)
-            corrupt(tr("the entry “%1” is missing or has the wrong type").arg(QLatin1String(name)));
+            corrupt(ProjectFile::tr("the entry “%1” is missing or has the wrong type").arg(QLatin1String(name)));
         return v;
     }
     double number(const QJsonObject& o, const char* name) const
     {
         const double d = member(o, name, QJsonValue::Double).toDouble();
         if (!std::isfinite(d))
-            corrupt(tr("the entry “%1” is not a finite number").arg(QLatin1String(name)));
+            corrupt(ProjectFile::tr("the entry “%1” is not a finite number").arg(QLatin1String(name)));
         return d;
     }
     qint64 count(const QJsonObject& o, const char* name) const
     {
         const double d = number(o, name);
         if (d < 0 || d > double(std::numeric_limits<std::int32_t>::max()) || d != std::floor(d))
-            corrupt(tr("the count “%1” is out of range").arg(QLatin1String(name)));
+            corrupt(ProjectFile::tr("the count “%1” is out of range").arg(QLatin1String(name)));
         return qint64(d);
     }
     QString string(const QJsonObject& o, const char* name) const
@@ -283,14 +285,14 @@ public:
     {
         return member(o, name, QJsonValue::Array).toArray();
     }
-    Eigen::Vector3d vector3(const QJsonObject& o, const char* name) const
+    Vec3 vector3(const QJsonObject& o, const char* name) const
     {
         const QJsonArray a = array(o, name);
         if (a.size() != 3 || !a[0].isDouble() || !a[1].isDouble() || !a[2].isDouble())
-            corrupt(tr("the entry “%1” is not a 3D vector").arg(QLatin1String(name)));
+            corrupt(ProjectFile::tr("the entry “%1” is not a 3D vector").arg(QLatin1String(name)));
         Eigen::Vector3d v(a[0].toDouble(), a[1].toDouble(), a[2].toDouble());
         if (!v.allFinite())
-            corrupt(tr("the entry “%1” is not finite").arg(QLatin1String(name)));
+            corrupt(ProjectFile::tr("the entry “%1” is not finite").arg(QLatin1String(name)));
         return v;
     }
     template <typename E> E enumValue(const QJsonObject& o, const char* name) const
@@ -299,7 +301,7 @@ public:
         for (const auto& [v, n] : EnumNames<E>::list)
             if (s == QLatin1String(n))
                 return v;
-        corrupt(tr("the entry “%1” has the unknown value “%2”").arg(QLatin1String(name), s));
+        corrupt(ProjectFile::tr("the entry “%1” has the unknown value “%2”").arg(QLatin1String(name), s));
     }
     Camera camera(const QJsonObject& o) const
     {
@@ -319,19 +321,19 @@ public:
         const QString chunkName = string(o, name);
         const QJsonValue entry = m_chunks.value(chunkName);
         if (!entry.isObject())
-            corrupt(tr("the data block “%1” is missing").arg(chunkName));
+            corrupt(ProjectFile::tr("the data block “%1” is missing").arg(chunkName));
         const QJsonObject e = entry.toObject();
         const double offset = number(e, "offset"), size = number(e, "size"), crc = number(e, "crc32");
         if (offset < kHeaderSize || size < 0 || offset + size > double(m_size))
-            corrupt(tr("the data block “%1” lies outside the file").arg(chunkName));
+            corrupt(ProjectFile::tr("the data block “%1” lies outside the file").arg(chunkName));
         if (expectedSize >= 0 && qint64(size) != expectedSize)
-            corrupt(tr("the data block “%1” has %2 bytes instead of %3")
+            corrupt(ProjectFile::tr("the data block “%1” has %2 bytes instead of %3")
                         .arg(chunkName)
                         .arg(qint64(size))
                         .arg(expectedSize));
         const char* p = m_bytes + qint64(offset);
         if (crc32Of(p, qint64(size)) != quint32(crc))
-            corrupt(tr("the data block “%1” fails its checksum").arg(chunkName));
+            corrupt(ProjectFile::tr("the data block “%1” fails its checksum").arg(chunkName));
         return {p, qint64(size)};
     }
     template <typename Matrix>
@@ -369,7 +371,7 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
             r.readMatrix(m, "uv_faces", mesh->faces.rows(), mesh->uvFaces);
             if (mesh->uvFaces.size() > 0
                 && (mesh->uvFaces.minCoeff() < 0 || mesh->uvFaces.maxCoeff() >= mesh->uvs.rows()))
-                r.corrupt(tr("a texture coordinate index is out of range"));
+                r.corrupt(ProjectFile::tr("a texture coordinate index is out of range"));
         }
         if (m.contains("face_materials"))
             r.readVector(m, "face_materials", mesh->faces.rows(), mesh->faceMaterials);
@@ -384,14 +386,14 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
             r.readVector(o, "faces", r.count(o, "count"), set.faces);
             for (auto f : set.faces)
                 if (f < 0 || f >= mesh->faces.rows())
-                    r.corrupt(tr("face set “%1” refers to a face out of range").arg(QString::fromStdString(set.name)));
+                    r.corrupt(ProjectFile::tr("face set “%1” refers to a face out of range").arg(QString::fromStdString(set.name)));
             mesh->faceSets.push_back(std::move(set));
         }
         for (auto f : mesh->faceMaterials)
             if (f < 0 || (f > 0 && std::size_t(f) >= mesh->materials.size()))
-                r.corrupt(tr("a face material index is out of range"));
+                r.corrupt(ProjectFile::tr("a face material index is out of range"));
         if (auto defect = algo::findFatalDefect(*mesh))
-            r.corrupt(tr("the base model is invalid (%1)").arg(QString::fromStdString(*defect)));
+            r.corrupt(ProjectFile::tr("the base model is invalid (%1)").arg(QString::fromStdString(*defect)));
         data.baseMesh = std::move(mesh);
     }
     const qint64 vertexCount = data.baseMesh ? data.baseMesh->vertexCount() : 0;
@@ -432,9 +434,9 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
             std::memcpy(static_cast<void*>(offsets.deltas.data()), p, std::size_t(size));
             for (std::size_t i = 0; i < offsets.indices.size(); ++i) {
                 if (offsets.indices[i] >= vertexCount || (i > 0 && offsets.indices[i] <= offsets.indices[i - 1]))
-                    r.corrupt(tr("key “%1” has a vertex index out of range or out of order").arg(k.name));
+                    r.corrupt(ProjectFile::tr("key “%1” has a vertex index out of range or out of order").arg(k.name));
                 if (!offsets.deltas[i].allFinite())
-                    r.corrupt(tr("key “%1” has a non-finite offset").arg(k.name));
+                    r.corrupt(ProjectFile::tr("key “%1” has a non-finite offset").arg(k.name));
             }
             k.offsetsByFrame.emplace(int(r.number(f, "frame")), std::move(offsets));
         }
@@ -457,10 +459,10 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     data.nextId = ObjectId(r.number(root, "next_id"));
     for (const auto& d : data.drawings)
         if (d.id >= data.nextId)
-            r.corrupt(tr("an object id is not below next_id"));
+            r.corrupt(ProjectFile::tr("an object id is not below next_id"));
     for (const auto& k : data.keys)
         if (k.id >= data.nextId)
-            r.corrupt(tr("an object id is not below next_id"));
+            r.corrupt(ProjectFile::tr("an object id is not below next_id"));
     return data;
 }
 
@@ -470,7 +472,7 @@ void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        throw IoError(path, tr("could not be opened for writing: %1").arg(file.errorString()));
+        throw IoError(path, ProjectFile::tr("could not be opened for writing: %1").arg(file.errorString()));
     ChunkWriter chunks;
     const QJsonObject manifest = buildManifest(data, chunks);
     chunks.write(file, manifest);
@@ -483,21 +485,21 @@ void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
             QFile::copy(path, backup);
     }
     if (!file.commit())
-        throw IoError(path, tr("could not be saved: %1").arg(file.errorString()));
+        throw IoError(path, ProjectFile::tr("could not be saved: %1").arg(file.errorString()));
 }
 
 ProjectData loadProject(const QString& path)
 {
     QFile file(path);
     if (!file.exists())
-        throw IoError(path, tr("does not exist"));
+        throw IoError(path, ProjectFile::tr("does not exist"));
     if (!file.open(QIODevice::ReadOnly))
-        throw IoError(path, tr("could not be opened: %1").arg(file.errorString()));
+        throw IoError(path, ProjectFile::tr("could not be opened: %1").arg(file.errorString()));
     const qint64 size = file.size();
     if (size == 0)
-        throw IoError(path, tr("is empty"));
+        throw IoError(path, ProjectFile::tr("is empty"));
     if (size < 8)
-        throw IoError(path, tr("is not a Celform project"));
+        throw IoError(path, ProjectFile::tr("is not a Celform project"));
     const uchar* mapped = file.map(0, size);
     QByteArray fallback;
     if (!mapped) {
@@ -506,41 +508,41 @@ ProjectData loadProject(const QString& path)
     }
     const char* bytes = reinterpret_cast<const char*>(mapped);
     if (std::memcmp(bytes, kMagic, 8) != 0)
-        throw IoError(path, tr("is not a Celform project"));
+        throw IoError(path, ProjectFile::tr("is not a Celform project"));
     if (size < kHeaderSize + kTrailerSize)
-        throw IoError(path, tr("is truncated"));
+        throw IoError(path, ProjectFile::tr("is truncated"));
     const auto version = qFromLittleEndian<quint32>(bytes + 8);
     if (version > quint32(kProjectFormatVersion))
         throw IoError(path,
-            tr("was written by a newer version of Celform (file format %1; this version reads up "
+            ProjectFile::tr("was written by a newer version of Celform (file format %1; this version reads up "
                "to %2). Please update Celform to open it.")
                 .arg(version)
                 .arg(kProjectFormatVersion));
     if (version == 0)
-        throw IoError(path, tr("is damaged: the format version is 0"));
+        throw IoError(path, ProjectFile::tr("is damaged: the format version is 0"));
 
     const char* trailer = bytes + size - kTrailerSize;
     if (std::memcmp(trailer + 24, kEndMagic, 8) != 0)
-        throw IoError(path, tr("is truncated or damaged: its end marker is missing"));
+        throw IoError(path, ProjectFile::tr("is truncated or damaged: its end marker is missing"));
     const auto manifestOffset = qFromLittleEndian<quint64>(trailer);
     const auto manifestSize = qFromLittleEndian<quint64>(trailer + 8);
     if (manifestOffset < quint64(kHeaderSize) || manifestSize > quint64(size)
         || manifestOffset + manifestSize > quint64(size - kTrailerSize))
-        throw IoError(path, tr("is damaged: its table of contents lies outside the file"));
+        throw IoError(path, ProjectFile::tr("is damaged: its table of contents lies outside the file"));
     const char* manifestBytes = bytes + manifestOffset;
     if (crc32Of(manifestBytes, qint64(manifestSize)) != qFromLittleEndian<quint32>(trailer + 16))
-        throw IoError(path, tr("is damaged: its table of contents fails its checksum"));
+        throw IoError(path, ProjectFile::tr("is damaged: its table of contents fails its checksum"));
 
     QJsonParseError jsonError;
     const QJsonDocument json
         = QJsonDocument::fromJson(QByteArray::fromRawData(manifestBytes, qsizetype(manifestSize)), &jsonError);
     if (json.isNull() || !json.isObject())
-        throw IoError(path, tr("is damaged: %1").arg(jsonError.errorString()));
+        throw IoError(path, ProjectFile::tr("is damaged: %1").arg(jsonError.errorString()));
     const QJsonObject root = json.object();
     const double manifestVersion = root.value("format_version").toDouble(-1);
     if (manifestVersion > kProjectFormatVersion)
         throw IoError(path,
-            tr("was written by a newer version of Celform (file format %1; this version reads up "
+            ProjectFile::tr("was written by a newer version of Celform (file format %1; this version reads up "
                "to %2). Please update Celform to open it.")
                 .arg(manifestVersion)
                 .arg(kProjectFormatVersion));
