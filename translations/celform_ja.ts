@@ -5,1038 +5,1047 @@
     <name>celform::app::Cli</name>
     <message>
         <source>usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>使い方: %1</translation>
     </message>
     <message>
         <source>Creates a project from a mesh file.</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュファイルからプロジェクトを作成します。</translation>
     </message>
     <message>
         <source>Mesh file (OBJ, PLY, STL, OFF, glTF, GLB).</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュファイル（OBJ、PLY、STL、OFF、glTF、GLB）。</translation>
     </message>
     <message>
         <source>Project file to write.</source>
-        <translation type="unfinished"></translation>
+        <translation>書き出すプロジェクトファイル。</translation>
     </message>
     <message>
         <source>Reference drawing to embed (repeatable).</source>
-        <translation type="unfinished"></translation>
+        <translation>埋め込む参照画（複数指定可）。</translation>
     </message>
     <message>
         <source>--out is required
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--out の指定が必要です
+使い方: %1</translation>
     </message>
     <message>
         <source>warning: %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>警告: %1: %2</translation>
     </message>
     <message>
         <source>Prints what a project holds.</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトの内容を表示します。</translation>
     </message>
     <message>
         <source>Project file (.celform).</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトファイル（.celform）。</translation>
     </message>
     <message>
         <source>Print machine-readable JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>機械可読な JSON 形式で出力します。</translation>
     </message>
     <message>
         <source>Project: %1 (format %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクト: %1（フォーマット %2）</translation>
     </message>
     <message>
         <source>Base model: %1, %2 vertices, %3 triangles</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデル: %1、頂点数 %2、三角形数 %3</translation>
     </message>
     <message>
         <source>Base model: none</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデル: なし</translation>
     </message>
     <message>
         <source>Drawings: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画: %1</translation>
     </message>
     <message>
         <source>Key viewpoints: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>キー視点: %1</translation>
     </message>
     <message>
         <source>usage: celform [PROJECT] [--screenshot FILE.png]
        celform new MESH --out P.celform [--drawing IMAGE]...
        celform info P.celform [--json]
        celform --version</source>
-        <translation type="unfinished"></translation>
+        <translation>使い方: celform [PROJECT] [--screenshot FILE.png]
+        celform new MESH --out P.celform [--drawing IMAGE]...
+        celform info P.celform [--json]
+        celform --version</translation>
     </message>
     <message>
         <source>celform: out of memory</source>
-        <translation type="unfinished"></translation>
+        <translation>celform: メモリが不足しています</translation>
     </message>
 </context>
 <context>
     <name>celform::app::MainWindow</name>
     <message>
         <source>Not enough memory.</source>
-        <translation type="unfinished"></translation>
+        <translation>メモリが不足しています。</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>キャンセル</translation>
     </message>
     <message>
         <source>Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>準備完了</translation>
     </message>
     <message>
         <source>Autosaved a recovery copy</source>
-        <translation type="unfinished"></translation>
+        <translation>復旧用のコピーを自動保存しました</translation>
     </message>
     <message>
         <source>Autosave failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>自動保存に失敗しました: %1</translation>
     </message>
     <message>
         <source>Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>シーン</translation>
     </message>
     <message>
         <source>&lt;Opened project&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;プロジェクトを開いた状態&gt;</translation>
     </message>
     <message>
         <source>Every edit of the project; click an entry to go back to it</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトに対するすべての編集です。項目をクリックするとその時点に戻ります</translation>
     </message>
     <message>
         <source>History</source>
-        <translation type="unfinished"></translation>
+        <translation>履歴</translation>
     </message>
     <message>
         <source>Properties</source>
-        <translation type="unfinished"></translation>
+        <translation>プロパティ</translation>
     </message>
     <message>
         <source>&amp;New from Mesh…</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュから新規作成(&amp;N)…</translation>
     </message>
     <message>
         <source>Start a new project on a base model (OBJ, PLY, STL, OFF, glTF)</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデル（OBJ、PLY、STL、OFF、glTF）から新しいプロジェクトを開始します</translation>
     </message>
     <message>
         <source>&amp;Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>開く(&amp;O)…</translation>
     </message>
     <message>
         <source>Open a Celform project</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform プロジェクトを開きます</translation>
     </message>
     <message>
         <source>&amp;Save</source>
-        <translation type="unfinished"></translation>
+        <translation>保存(&amp;S)</translation>
     </message>
     <message>
         <source>Save the project</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトを保存します</translation>
     </message>
     <message>
         <source>Save &amp;As…</source>
-        <translation type="unfinished"></translation>
+        <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
         <source>Save the project under a new name</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトに新しい名前を付けて保存します</translation>
     </message>
     <message>
         <source>Import &amp;Mesh…</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュをインポート(&amp;M)…</translation>
     </message>
     <message>
         <source>Replace the base model by a mesh file with the same vertex order</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点順序が同じメッシュファイルでベースモデルを置き換えます</translation>
     </message>
     <message>
         <source>Import &amp;Drawing…</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画をインポート(&amp;D)…</translation>
     </message>
     <message>
         <source>Add a reference drawing (PNG, JPEG, TIFF, EXR, PSD, SVG) to the model sheet</source>
-        <translation type="unfinished"></translation>
+        <translation>設定画に参照画（PNG、JPEG、TIFF、EXR、PSD、SVG）を追加します</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>終了(&amp;Q)</translation>
     </message>
     <message>
         <source>Quit Celform</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform を終了します</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>やり直し(&amp;R)</translation>
     </message>
     <message>
         <source>&amp;Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>削除(&amp;D)</translation>
     </message>
     <message>
         <source>Remove the selected drawing or key viewpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>選択した参照画またはキー視点を削除します</translation>
     </message>
     <message>
         <source>&amp;Frame All</source>
-        <translation type="unfinished"></translation>
+        <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
         <source>Fit the whole model in the viewport</source>
-        <translation type="unfinished"></translation>
+        <translation>モデル全体をビューポートに収めます</translation>
     </message>
     <message>
         <source>&amp;Orthographic</source>
-        <translation type="unfinished"></translation>
+        <translation>平行投影(&amp;O)</translation>
     </message>
     <message>
         <source>Switch between perspective and orthographic projection</source>
-        <translation type="unfinished"></translation>
+        <translation>透視投影と平行投影を切り替えます</translation>
     </message>
     <message>
         <source>&amp;About Celform</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform について(&amp;A)</translation>
     </message>
     <message>
         <source>Version and licence</source>
-        <translation type="unfinished"></translation>
+        <translation>バージョンとライセンス</translation>
     </message>
     <message>
         <source>About Celform</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform について</translation>
     </message>
     <message>
         <source>&lt;h3&gt;Celform %1&lt;/h3&gt;&lt;p&gt;View-dependent models, shaped highlights and stereo-aware toon rendering for cel animation.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;Celform %1&lt;/h3&gt;&lt;p&gt;セルアニメーションのための視点依存モデル、形状を調整できるハイライト、立体視に対応したトゥーンレンダリング。&lt;/p&gt;</translation>
     </message>
     <message>
         <source>About &amp;Qt</source>
-        <translation type="unfinished"></translation>
+        <translation>Qt について(&amp;Q)</translation>
     </message>
     <message>
         <source>Qt version and licence</source>
-        <translation type="unfinished"></translation>
+        <translation>Qt のバージョンとライセンス</translation>
     </message>
     <message>
         <source>&amp;Navigation</source>
-        <translation type="unfinished"></translation>
+        <translation>ナビゲーション(&amp;N)</translation>
     </message>
     <message>
         <source>Mouse and keyboard navigation in the viewport</source>
-        <translation type="unfinished"></translation>
+        <translation>ビューポートでのマウスとキーボードによる操作</translation>
     </message>
     <message>
         <source>Viewport navigation</source>
-        <translation type="unfinished"></translation>
+        <translation>ビューポートの操作</translation>
     </message>
     <message>
         <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt + left drag&lt;/b&gt;, &lt;b&gt;middle drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;orbit&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt + middle drag&lt;/b&gt;, &lt;b&gt;Shift + middle drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt + right drag&lt;/b&gt;, &lt;b&gt;Ctrl + middle drag&lt;/b&gt;, &lt;b&gt;wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;dolly&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;frame all&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Home&lt;/b&gt;&lt;/td&gt;&lt;td&gt;front view&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;perspective / orthographic&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt + 左ボタンドラッグ&lt;/b&gt;、&lt;b&gt;中ボタンドラッグ&lt;/b&gt;&lt;/td&gt;&lt;td&gt;回転（オービット）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt + 中ボタンドラッグ&lt;/b&gt;、&lt;b&gt;Shift + 中ボタンドラッグ&lt;/b&gt;&lt;/td&gt;&lt;td&gt;パン&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt + 右ボタンドラッグ&lt;/b&gt;、&lt;b&gt;Ctrl + 中ボタンドラッグ&lt;/b&gt;、&lt;b&gt;ホイール&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ドリー&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;全体を表示&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Home&lt;/b&gt;&lt;/td&gt;&lt;td&gt;正面ビュー&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;透視投影 / 平行投影&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
         <source>Open &amp;Recent</source>
-        <translation type="unfinished"></translation>
+        <translation>最近使ったプロジェクト(&amp;R)</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>編集(&amp;E)</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>表示(&amp;V)</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
         <source>Untitled</source>
-        <translation type="unfinished"></translation>
+        <translation>無題</translation>
     </message>
     <message>
         <source>%1[*] — Celform</source>
-        <translation type="unfinished"></translation>
+        <translation>%1[*] — Celform</translation>
     </message>
     <message>
         <source>No base model</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデルなし</translation>
     </message>
     <message>
         <source>%1 vertices · %2 triangles · %3 drawings · %4 keys</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点 %1 · 三角形 %2 · 参照画 %3 · キー %4</translation>
     </message>
     <message>
         <source>Celform</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform</translation>
     </message>
     <message>
         <source>%1 loaded with warnings: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 を読み込みました（警告あり）: %2</translation>
     </message>
     <message>
         <source>%1: not a project, mesh or image file Celform can read</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Celform で読み込めるプロジェクト、メッシュ、画像のいずれのファイルでもありません</translation>
     </message>
     <message>
         <source>Opening %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 を開いています…</translation>
     </message>
     <message>
         <source>Opened %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 を開きました</translation>
     </message>
     <message>
         <source>Reading %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 を読み込んでいます…</translation>
     </message>
     <message>
         <source>Loaded %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 を読み込みました</translation>
     </message>
     <message>
         <source>Added drawing %1</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画 %1 を追加しました</translation>
     </message>
     <message>
         <source>Saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 を保存しました</translation>
     </message>
     <message>
         <source>Save Project</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトを保存</translation>
     </message>
     <message>
         <source>Celform projects (*.celform)</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform プロジェクト (*.celform)</translation>
     </message>
     <message>
         <source>Unsaved changes</source>
-        <translation type="unfinished"></translation>
+        <translation>未保存の変更</translation>
     </message>
     <message>
         <source>The project “%1” has unsaved changes. Save them first?</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクト「%1」には保存されていない変更があります。先に保存しますか？</translation>
     </message>
     <message>
         <source>New Project from Mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュから新規プロジェクト</translation>
     </message>
     <message>
         <source>Open Project</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトを開く</translation>
     </message>
     <message>
         <source>Import Mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュをインポート</translation>
     </message>
     <message>
         <source>Import Drawings</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画をインポート</translation>
     </message>
     <message>
         <source>No recent projects</source>
-        <translation type="unfinished"></translation>
+        <translation>最近使ったプロジェクトはありません</translation>
     </message>
     <message>
         <source>&amp;Clear List</source>
-        <translation type="unfinished"></translation>
+        <translation>一覧をクリア(&amp;C)</translation>
     </message>
     <message>
         <source>an untitled project</source>
-        <translation type="unfinished"></translation>
+        <translation>無題のプロジェクト</translation>
     </message>
     <message>
         <source>Recover unsaved work</source>
-        <translation type="unfinished"></translation>
+        <translation>未保存の作業の復旧</translation>
     </message>
     <message>
         <source>Celform did not close normally. A recovery copy of %1 from %2 was found.
 
 Recover it now?</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform は正常に終了しませんでした。%2 に保存された %1 の復旧用コピーが見つかりました。
+
+今すぐ復旧しますか？</translation>
     </message>
     <message>
         <source>&amp;Recover</source>
-        <translation type="unfinished"></translation>
+        <translation>復旧(&amp;R)</translation>
     </message>
     <message>
         <source>&amp;Keep for Later</source>
-        <translation type="unfinished"></translation>
+        <translation>残しておく(&amp;K)</translation>
     </message>
     <message>
         <source>&amp;Discard…</source>
-        <translation type="unfinished"></translation>
+        <translation>破棄(&amp;D)…</translation>
     </message>
     <message>
         <source>Recovered %1; save it to keep it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 を復旧しました。残すには保存してください</translation>
     </message>
     <message>
         <source>Discard recovery copy</source>
-        <translation type="unfinished"></translation>
+        <translation>復旧用コピーの破棄</translation>
     </message>
     <message>
         <source>Delete the recovery copy of %1 for good?</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 の復旧用コピーを完全に削除しますか？</translation>
     </message>
     <message>
         <source>Main</source>
-        <translation type="unfinished"></translation>
+        <translation>メイン</translation>
     </message>
 </context>
 <context>
     <name>celform::model::Document</name>
     <message>
         <source>has %1 vertices, but the key deformations use vertex %2; a replacement base model needs the same vertex count and order</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点数が %1 ですが、キー変形では頂点 %2 が使われています。置き換えるベースモデルは頂点数と頂点順序が同じである必要があります</translation>
     </message>
     <message>
         <source>Replace Base Model</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデルを置き換え</translation>
     </message>
     <message>
         <source>Add Drawing “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画「%1」を追加</translation>
     </message>
     <message>
         <source>Remove Drawing “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画「%1」を削除</translation>
     </message>
     <message>
         <source>Rename Drawing to “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画の名前を「%1」に変更</translation>
     </message>
     <message>
         <source>Set Drawing Opacity</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画の不透明度を設定</translation>
     </message>
     <message>
         <source>Align Drawing “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画「%1」に位置合わせ</translation>
     </message>
     <message>
         <source>Add Key “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」を追加</translation>
     </message>
     <message>
         <source>Remove Key “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」を削除</translation>
     </message>
     <message>
         <source>Rename Key to “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>キーの名前を「%1」に変更</translation>
     </message>
     <message>
         <source>Enable Key “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」を有効化</translation>
     </message>
     <message>
         <source>Disable Key “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」を無効化</translation>
     </message>
     <message>
         <source>Change Blend Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>ブレンド設定を変更</translation>
     </message>
     <message>
         <source>Change Look</source>
-        <translation type="unfinished"></translation>
+        <translation>ルックを変更</translation>
     </message>
     <message>
         <source>Untitled</source>
-        <translation type="unfinished"></translation>
+        <translation>無題</translation>
     </message>
 </context>
 <context>
     <name>celform::model::ImageIo</name>
     <message>
         <source>not a valid SVG drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>有効な SVG 画像ではありません</translation>
     </message>
     <message>
         <source>the SVG drawing has no size</source>
-        <translation type="unfinished"></translation>
+        <translation>SVG 画像にサイズが指定されていません</translation>
     </message>
     <message>
         <source>the SVG drawing is too large</source>
-        <translation type="unfinished"></translation>
+        <translation>SVG 画像が大きすぎます</translation>
     </message>
     <message>
         <source>images of type &quot;%1&quot; cannot be read</source>
-        <translation type="unfinished"></translation>
+        <translation>種類「%1」の画像は読み込めません</translation>
     </message>
     <message>
         <source>a temporary copy of the image cannot be written</source>
-        <translation type="unfinished"></translation>
+        <translation>画像の一時コピーを書き込めません</translation>
     </message>
     <message>
         <source>the image cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>画像を読み込めません: %1</translation>
     </message>
     <message>
         <source>the image has no pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>画像にピクセルがありません</translation>
     </message>
     <message>
         <source>the image is too large (%1 x %2 pixels)</source>
-        <translation type="unfinished"></translation>
+        <translation>画像が大きすぎます（%1 × %2 ピクセル）</translation>
     </message>
     <message>
         <source>the image data is damaged or truncated: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>画像データが破損しているか、途中で切れています: %1</translation>
     </message>
     <message>
         <source>the file is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルが空です</translation>
     </message>
     <message>
         <source>unknown image format &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>不明な画像フォーマット「%1」です</translation>
     </message>
     <message>
         <source>the file does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルが存在しません</translation>
     </message>
     <message>
         <source>the file cannot be opened: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルを開けません: %1</translation>
     </message>
     <message>
         <source>the file cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルを読み込めません: %1</translation>
     </message>
     <message>
         <source>Drawings (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画 (%1)</translation>
     </message>
 </context>
 <context>
     <name>celform::model::MeshIo</name>
     <message>
         <source>the file does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルが存在しません</translation>
     </message>
     <message>
         <source>the file cannot be opened: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルを開けません: %1</translation>
     </message>
     <message>
         <source>the file is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルが空です</translation>
     </message>
     <message>
         <source>the file cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルを読み込めません: %1</translation>
     </message>
     <message>
         <source>face %1 refers to vertex %2, but the file has %3 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>面 %1 が頂点 %2 を参照していますが、ファイルの頂点数は %3 です</translation>
     </message>
     <message>
         <source>1 face with fewer than three corners ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>角が 3 つ未満の面を 1 個無視しました</translation>
     </message>
     <message numerus="yes">
         <source>%n faces with fewer than three corners ignored</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>角が 3 つ未満の面を %n 個無視しました</numerusform>
         </translation>
     </message>
     <message>
         <source>the header announces %1 vertices and %2 faces, more than the file holds</source>
-        <translation type="unfinished"></translation>
+        <translation>ヘッダーには頂点 %1 個、面 %2 個とありますが、ファイルにはそれだけのデータがありません</translation>
     </message>
     <message>
         <source>the file ends early, while reading %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1の読み込み中にファイルが終わっています</translation>
     </message>
     <message>
         <source>line %1: expected %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 行目: %2が必要です</translation>
     </message>
     <message>
         <source>a vertex coordinate</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点座標</translation>
     </message>
     <message>
         <source>a count</source>
-        <translation type="unfinished"></translation>
+        <translation>個数</translation>
     </message>
     <message>
         <source>a vertex index</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点インデックス</translation>
     </message>
     <message>
         <source>a property value</source>
-        <translation type="unfinished"></translation>
+        <translation>プロパティ値</translation>
     </message>
     <message>
         <source>vertex %1 has a coordinate that is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点 %1 の座標に有限でない数値があります</translation>
     </message>
     <message>
         <source>only three-dimensional OFF files are supported</source>
-        <translation type="unfinished"></translation>
+        <translation>3 次元の OFF ファイルのみサポートしています</translation>
     </message>
     <message>
         <source>binary OFF files are not supported</source>
-        <translation type="unfinished"></translation>
+        <translation>バイナリ形式の OFF ファイルはサポートしていません</translation>
     </message>
     <message>
         <source>not an OFF file (it does not start with &quot;OFF&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>OFF ファイルではありません（&quot;OFF&quot; で始まっていません）</translation>
     </message>
     <message>
         <source>the header has a negative vertex or face count</source>
-        <translation type="unfinished"></translation>
+        <translation>ヘッダーの頂点数または面数が負の値です</translation>
     </message>
     <message>
         <source>the file ends after %1 of %2 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点 %2 個のうち %1 個を読んだところでファイルが終わっています</translation>
     </message>
     <message>
         <source>the file ends after %1 of %2 faces</source>
-        <translation type="unfinished"></translation>
+        <translation>面 %2 個のうち %1 個を読んだところでファイルが終わっています</translation>
     </message>
     <message>
         <source>face %1 has an invalid corner count %2</source>
-        <translation type="unfinished"></translation>
+        <translation>面 %1 の角の数 %2 が不正です</translation>
     </message>
     <message>
         <source>PLY header line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>PLY ヘッダー %1 行目: %2</translation>
     </message>
     <message>
         <source>not a PLY file (it does not start with &quot;ply&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>PLY ファイルではありません（&quot;ply&quot; で始まっていません）</translation>
     </message>
     <message>
         <source>the PLY header has no end_header line</source>
-        <translation type="unfinished"></translation>
+        <translation>PLY ヘッダーに end_header 行がありません</translation>
     </message>
     <message>
         <source>incomplete format line</source>
-        <translation type="unfinished"></translation>
+        <translation>format 行が不完全です</translation>
     </message>
     <message>
         <source>unknown format &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>不明なフォーマット「%1」です</translation>
     </message>
     <message>
         <source>invalid element line</source>
-        <translation type="unfinished"></translation>
+        <translation>element 行が不正です</translation>
     </message>
     <message>
         <source>property before any element</source>
-        <translation type="unfinished"></translation>
+        <translation>element より前に property があります</translation>
     </message>
     <message>
         <source>unknown property type</source>
-        <translation type="unfinished"></translation>
+        <translation>不明なプロパティ型です</translation>
     </message>
     <message>
         <source>invalid property line</source>
-        <translation type="unfinished"></translation>
+        <translation>property 行が不正です</translation>
     </message>
     <message>
         <source>unknown keyword &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>不明なキーワード「%1」です</translation>
     </message>
     <message>
         <source>the PLY header has no format line</source>
-        <translation type="unfinished"></translation>
+        <translation>PLY ヘッダーに format 行がありません</translation>
     </message>
     <message>
         <source>the file is truncated: it ends inside the &quot;%1&quot; element</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルが途中で切れています（要素「%1」の途中で終わっています）</translation>
     </message>
     <message>
         <source>the face element has no vertex_indices list</source>
-        <translation type="unfinished"></translation>
+        <translation>face 要素に vertex_indices リストがありません</translation>
     </message>
     <message>
         <source>element &quot;%1&quot; row %2 has an invalid list length %3</source>
-        <translation type="unfinished"></translation>
+        <translation>要素「%1」の %2 行目のリスト長 %3 が不正です</translation>
     </message>
     <message>
         <source>the PLY file has no vertex element</source>
-        <translation type="unfinished"></translation>
+        <translation>PLY ファイルに vertex 要素がありません</translation>
     </message>
     <message>
         <source>the vertex element lacks an x, y or z property</source>
-        <translation type="unfinished"></translation>
+        <translation>vertex 要素に x、y、z のいずれかのプロパティがありません</translation>
     </message>
     <message>
         <source>line %1: vertex %2 has a coordinate that is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 行目: 頂点 %2 の座標に有限でない数値があります</translation>
     </message>
     <message>
         <source>not a readable OBJ file: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>読み込み可能な OBJ ファイルではありません: %1</translation>
     </message>
     <message>
         <source>face %1 is incomplete</source>
-        <translation type="unfinished"></translation>
+        <translation>面 %1 が不完全です</translation>
     </message>
     <message>
         <source>face %1 refers to texture coordinate %2, but the file has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>面 %1 がテクスチャ座標 %2 を参照していますが、ファイル内のテクスチャ座標は %3 個です</translation>
     </message>
     <message>
         <source>some materials could not be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>一部のマテリアルを読み込めませんでした: %1</translation>
     </message>
     <message>
         <source>the scene has more vertices than Celform can hold</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンの頂点数が Celform で扱える上限を超えています</translation>
     </message>
     <message>
         <source>not a readable %1 file: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>読み込み可能な %1 ファイルではありません: %2</translation>
     </message>
     <message>
         <source>1 point or line ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>点または線を 1 個無視しました</translation>
     </message>
     <message numerus="yes">
         <source>%n points or lines ignored</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>点または線を %n 個無視しました</numerusform>
         </translation>
     </message>
     <message>
         <source>the file contains no vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルに頂点がありません</translation>
     </message>
     <message>
         <source>the file contains no faces</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルに面がありません</translation>
     </message>
     <message>
         <source>the mesh is unusable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュを使用できません: %1</translation>
     </message>
     <message>
         <source>1 hole</source>
-        <translation type="unfinished"></translation>
+        <translation>穴 1 個</translation>
     </message>
     <message numerus="yes">
         <source>%n holes</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>穴 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>%n components</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>連結成分 %n 個</numerusform>
         </translation>
     </message>
     <message>
         <source>1 non-manifold edge</source>
-        <translation type="unfinished"></translation>
+        <translation>非多様体エッジ 1 本</translation>
     </message>
     <message numerus="yes">
         <source>%n non-manifold edges</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>非多様体エッジ %n 本</numerusform>
         </translation>
     </message>
     <message>
         <source>1 edge with inconsistent face orientation</source>
-        <translation type="unfinished"></translation>
+        <translation>面の向きが揃っていないエッジ 1 本</translation>
     </message>
     <message numerus="yes">
         <source>%n edges with inconsistent face orientation</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>面の向きが揃っていないエッジ %n 本</numerusform>
         </translation>
     </message>
     <message>
         <source>1 degenerate face</source>
-        <translation type="unfinished"></translation>
+        <translation>縮退面 1 個</translation>
     </message>
     <message numerus="yes">
         <source>%n degenerate faces</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>縮退面 %n 個</numerusform>
         </translation>
     </message>
     <message>
         <source>, </source>
-        <translation type="unfinished"></translation>
+        <translation>、</translation>
     </message>
     <message>
         <source>unknown mesh format &quot;%1&quot;; use one of: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>不明なメッシュフォーマット「%1」です。次のいずれかを使用してください: %2</translation>
     </message>
     <message>
         <source>Meshes (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュ (%1)</translation>
     </message>
     <message>
         <source>cannot write &quot;%1&quot; files; use .obj or .ply</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」形式のファイルは書き出せません。.obj または .ply を使用してください</translation>
     </message>
     <message>
         <source>the file cannot be written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルを書き込めません: %1</translation>
     </message>
 </context>
 <context>
     <name>celform::model::ProjectFile</name>
     <message>
         <source>could not be written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>書き込めませんでした: %1</translation>
     </message>
     <message>
         <source>is damaged: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>破損しています: %1</translation>
     </message>
     <message>
         <source>the entry “%1” is missing or has the wrong type</source>
-        <translation type="unfinished"></translation>
+        <translation>項目「%1」が存在しないか、型が正しくありません</translation>
     </message>
     <message>
         <source>the entry “%1” is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>項目「%1」が有限の数値ではありません</translation>
     </message>
     <message>
         <source>the count “%1” is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>個数「%1」が範囲外です</translation>
     </message>
     <message>
         <source>the entry “%1” has the unknown value “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>項目「%1」の値「%2」は不明です</translation>
     </message>
     <message>
         <source>the data block “%1” is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>データブロック「%1」がありません</translation>
     </message>
     <message>
         <source>the data block “%1” lies outside the file</source>
-        <translation type="unfinished"></translation>
+        <translation>データブロック「%1」がファイルの範囲外にあります</translation>
     </message>
     <message>
         <source>the data block “%1” has %2 bytes instead of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>データブロック「%1」のサイズが %3 バイトではなく %2 バイトです</translation>
     </message>
     <message>
         <source>the data block “%1” fails its checksum</source>
-        <translation type="unfinished"></translation>
+        <translation>データブロック「%1」のチェックサムが一致しません</translation>
     </message>
     <message>
         <source>a texture coordinate index is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>テクスチャ座標のインデックスが範囲外です</translation>
     </message>
     <message>
         <source>face set “%1” refers to a face out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>面セット「%1」が範囲外の面を参照しています</translation>
     </message>
     <message>
         <source>a face material index is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>面のマテリアルインデックスが範囲外です</translation>
     </message>
     <message>
         <source>the base model is invalid (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデルが不正です（%1）</translation>
     </message>
     <message>
         <source>key “%1” has a vertex index out of range or out of order</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」の頂点インデックスが範囲外か、順序が正しくありません</translation>
     </message>
     <message>
         <source>key “%1” has a non-finite offset</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」に有限でないオフセットがあります</translation>
     </message>
     <message>
         <source>an object id is not below next_id</source>
-        <translation type="unfinished"></translation>
+        <translation>オブジェクト ID が next_id 未満ではありません</translation>
     </message>
     <message>
         <source>could not be opened for writing: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>書き込み用に開けませんでした: %1</translation>
     </message>
     <message>
         <source>could not be saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>保存できませんでした: %1</translation>
     </message>
     <message>
         <source>does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>存在しません</translation>
     </message>
     <message>
         <source>could not be opened: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>開けませんでした: %1</translation>
     </message>
     <message>
         <source>is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>空のファイルです</translation>
     </message>
     <message>
         <source>is not a Celform project</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform プロジェクトではありません</translation>
     </message>
     <message>
         <source>is truncated</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルが途中で切れています</translation>
     </message>
     <message>
         <source>was written by a newer version of Celform (file format %1; this version reads up to %2). Please update Celform to open it.</source>
-        <translation type="unfinished"></translation>
+        <translation>新しいバージョンの Celform で保存されています（ファイル形式 %1。このバージョンで読み込めるのは %2 までです）。開くには Celform を更新してください。</translation>
     </message>
     <message>
         <source>is damaged: the format version is 0</source>
-        <translation type="unfinished"></translation>
+        <translation>破損しています: フォーマットバージョンが 0 です</translation>
     </message>
     <message>
         <source>is truncated or damaged: its end marker is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>途中で切れているか破損しています: 終端マーカーがありません</translation>
     </message>
     <message>
         <source>is damaged: its table of contents lies outside the file</source>
-        <translation type="unfinished"></translation>
+        <translation>破損しています: 目次がファイルの範囲外にあります</translation>
     </message>
     <message>
         <source>is damaged: its table of contents fails its checksum</source>
-        <translation type="unfinished"></translation>
+        <translation>破損しています: 目次のチェックサムが一致しません</translation>
     </message>
     <message>
         <source>the entry “%1” is not a 3D vector</source>
-        <translation type="unfinished"></translation>
+        <translation>項目「%1」が 3D ベクトルではありません</translation>
     </message>
     <message>
         <source>the entry “%1” is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>項目「%1」が有限の値ではありません</translation>
     </message>
 </context>
 <context>
     <name>celform::views::PropertiesPanel</name>
     <message>
         <source>Selection</source>
-        <translation type="unfinished"></translation>
+        <translation>選択</translation>
     </message>
     <message>
         <source>Name shown in the scene tree and used by the command line</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンツリーに表示され、コマンドラインでも使われる名前</translation>
     </message>
     <message>
         <source>&amp;Name:</source>
-        <translation type="unfinished"></translation>
+        <translation>名前(&amp;N):</translation>
     </message>
     <message>
         <source>Opacity of the drawing over the model in the viewport</source>
-        <translation type="unfinished"></translation>
+        <translation>ビューポートでモデルに重ねて表示する参照画の不透明度</translation>
     </message>
     <message>
         <source>&amp;Opacity:</source>
-        <translation type="unfinished"></translation>
+        <translation>不透明度(&amp;O):</translation>
     </message>
     <message>
         <source>&amp;Enabled in the blend</source>
-        <translation type="unfinished"></translation>
+        <translation>ブレンドに使用(&amp;E)</translation>
     </message>
     <message>
         <source>A disabled key keeps its deformation but takes no part in the blend</source>
-        <translation type="unfinished"></translation>
+        <translation>無効にしたキーは変形を保持したまま、ブレンドには加わりません</translation>
     </message>
     <message>
         <source>View-dependent blend</source>
-        <translation type="unfinished"></translation>
+        <translation>視点依存ブレンド</translation>
     </message>
     <message>
         <source>Sharpness α of the blend weights: 1 blends linearly across the viewing sphere; larger values hold each key longer and switch faster near facet centres.</source>
-        <translation type="unfinished"></translation>
+        <translation>ブレンドウェイトのシャープネス α: 1 では視点球全体で線形にブレンドします。値を大きくするほど各キーが長く保持され、ファセット中心付近で素早く切り替わります。</translation>
     </message>
     <message>
         <source>&amp;Sharpness α:</source>
-        <translation type="unfinished"></translation>
+        <translation>シャープネス α(&amp;S):</translation>
     </message>
     <message>
         <source>Dummy keys (base model)</source>
-        <translation type="unfinished"></translation>
+        <translation>ダミーキー（ベースモデル）</translation>
     </message>
     <message>
         <source>Cosine falloff</source>
-        <translation type="unfinished"></translation>
+        <translation>コサイン減衰</translation>
     </message>
     <message>
         <source>Squared cosine falloff</source>
-        <translation type="unfinished"></translation>
+        <translation>コサイン二乗減衰</translation>
     </message>
     <message>
         <source>How views far from every key are shaped: dummy keys return to the base model along the main axes; cosine modes fade each key out with the angle.</source>
-        <translation type="unfinished"></translation>
+        <translation>どのキーからも遠い視点での形状の決め方です。ダミーキーでは主軸方向に向かってベースモデルに戻り、コサイン系のモードでは角度に応じて各キーがフェードアウトします。</translation>
     </message>
     <message>
         <source>&amp;Unspecified regions:</source>
-        <translation type="unfinished"></translation>
+        <translation>未指定の領域(&amp;U):</translation>
     </message>
     <message>
         <source>Reference drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画</translation>
     </message>
     <message>
         <source>%1 × %2 pixels, %3, %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 × %2 ピクセル、%3、%4</translation>
     </message>
     <message>
         <source>camera aligned</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラ位置合わせ済み</translation>
     </message>
     <message>
         <source>camera not aligned yet</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラ未位置合わせ</translation>
     </message>
     <message>
         <source>Key viewpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>キー視点</translation>
     </message>
     <message numerus="yes">
         <source>frame %1: %n vertices moved</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>フレーム %1: 頂点 %n 個を移動</numerusform>
         </translation>
     </message>
     <message>
         <source>Direction (%1, %2, %3)
 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>方向 (%1, %2, %3)
+%4</translation>
     </message>
     <message>
         <source>No deformation yet</source>
-        <translation type="unfinished"></translation>
+        <translation>まだ変形がありません</translation>
     </message>
     <message>
         <source>Base model</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデル</translation>
     </message>
     <message>
         <source>%1
 %2 vertices, %3 triangles
 Size %4 × %5 × %6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+頂点 %2、三角形 %3
+サイズ %4 × %5 × %6</translation>
     </message>
     <message>
         <source>No base model. Import a mesh with File &gt; Import Mesh, or drop a mesh file on the window.</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデルがありません。「ファイル」&gt;「メッシュをインポート」でメッシュを読み込むか、メッシュファイルをウィンドウにドロップしてください。</translation>
     </message>
 </context>
 <context>
@@ -1044,66 +1053,67 @@ Size %4 × %5 × %6</source>
     <message>
         <source>The base model, the reference drawings and the key viewpoints of the project.
 Double-click or press F2 to rename; Delete removes; the check box disables a key.</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトのベースモデル、参照画、キー視点です。
+ダブルクリックまたは F2 キーで名前を変更、Delete キーで削除、チェックボックスでキーを無効化できます。</translation>
     </message>
     <message>
         <source>Base model</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデル</translation>
     </message>
     <message>
         <source>The 3D model that the key deformations change</source>
-        <translation type="unfinished"></translation>
+        <translation>キー変形の対象となる 3D モデル</translation>
     </message>
     <message>
         <source>Base model: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデル: %1</translation>
     </message>
     <message>
         <source>Base model: none (File &gt; Import Mesh)</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデル: なし（「ファイル」&gt;「メッシュをインポート」）</translation>
     </message>
     <message>
         <source>Reference drawings (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画 (%1)</translation>
     </message>
     <message>
         <source>The model sheet: hand-drawn views of the character</source>
-        <translation type="unfinished"></translation>
+        <translation>設定画: キャラクターを各方向から手描きした絵</translation>
     </message>
     <message>
         <source>%1 × %2 px, %3%4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 × %2 px、%3%4</translation>
     </message>
     <message>
         <source>, aligned</source>
-        <translation type="unfinished"></translation>
+        <translation>、位置合わせ済み</translation>
     </message>
     <message>
         <source>, not aligned yet</source>
-        <translation type="unfinished"></translation>
+        <translation>、未位置合わせ</translation>
     </message>
     <message>
         <source>Key viewpoints (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>キー視点 (%1)</translation>
     </message>
     <message>
         <source>Key deformations, each seen from its key viewpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>キー変形（それぞれのキー視点から見たもの）</translation>
     </message>
     <message>
         <source>Direction (%1, %2, %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>方向 (%1, %2, %3)</translation>
     </message>
 </context>
 <context>
     <name>celform::views::Viewport</name>
     <message>
         <source>3D viewport</source>
-        <translation type="unfinished"></translation>
+        <translation>3D ビューポート</translation>
     </message>
     <message>
         <source>&lt;p&gt;The 3D view of the model.&lt;/p&gt;&lt;p&gt;Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. F: frame the model. Home: front view.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;モデルの 3D ビューです。&lt;/p&gt;&lt;p&gt;Alt + 左ボタンドラッグまたは中ボタンドラッグ: 回転（オービット）。Alt + 中ボタンドラッグまたは Shift + 中ボタンドラッグ: パン。Alt + 右ボタンドラッグ、Ctrl + 中ボタンドラッグ、マウスホイール: ドリー。F: モデル全体を表示。Home: 正面ビュー。&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -1111,19 +1121,20 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     <message>
         <source>Celform: view-dependent models and cartoon looks for cel animation.
 Sub-commands (celform new, info, ...) run without the editor: see celform --help.</source>
-        <translation type="unfinished"></translation>
+        <translation>Celform: セルアニメーションのための視点依存モデルとアニメ調のルック。
+サブコマンド（celform new、info など）はエディターを起動せずに実行されます。詳しくは celform --help を参照してください。</translation>
     </message>
     <message>
         <source>Project (.celform) or mesh file to open.</source>
-        <translation type="unfinished"></translation>
+        <translation>開くプロジェクト（.celform）またはメッシュファイル。</translation>
     </message>
     <message>
         <source>Open, render once, save a PNG of the main window to FILE and quit.</source>
-        <translation type="unfinished"></translation>
+        <translation>起動して一度レンダリングし、メインウィンドウの PNG 画像を FILE に保存して終了します。</translation>
     </message>
     <message>
         <source>only one project can be opened</source>
-        <translation type="unfinished"></translation>
+        <translation>開けるプロジェクトは 1 つだけです</translation>
     </message>
 </context>
 </TS>

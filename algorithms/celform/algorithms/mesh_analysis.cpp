@@ -73,14 +73,10 @@ TopologyReport analyzeTopology(const TriMesh& mesh)
     const auto nv = static_cast<std::int32_t>(mesh.vertices.rows());
     const auto nf = static_cast<std::int32_t>(mesh.faces.rows());
 
-    // Half-edges keyed by (min, max) vertex; the low bit of the payload records direction.
-    struct HalfEdge {
-        std::uint64_t key;
-        std::int32_t face;
-        bool forward; // true when the face walks min -> max
-    };
-    std::vector<HalfEdge> edges;
-    edges.reserve(std::size_t(nf) * 3);
+    // Edge adjacency without a global sort: half-edges are bucketed by their lower vertex
+    // (a counting sort, O(E)), and each small bucket is sorted by the upper vertex. On the
+    // 871k-triangle dragon this is several times faster than sorting 64-bit edge keys.
+    std::vector<std::int32_t> bucketStart(std::size_t(nv) + 1, 0);
     std::vector<char> used(std::size_t(nv), 0);
     for (std::int32_t f = 0; f < nf; ++f) {
         const std::int32_t a = mesh.faces(f, 0), b = mesh.faces(f, 1), c = mesh.faces(f, 2);
@@ -89,43 +85,67 @@ TopologyReport analyzeTopology(const TriMesh& mesh)
             ++r.degenerateFaces;
             continue;
         }
-        const Eigen::Vector3f pa = mesh.vertices.row(a), pb = mesh.vertices.row(b), pc = mesh.vertices.row(c);
-        if ((pb - pa).cross(pc - pa).squaredNorm() == 0.f)
-            ++r.degenerateFaces;
-        const std::int32_t tri[3] = {a, b, c};
-        for (int k = 0; k < 3; ++k) {
-            const std::int32_t u = tri[k], v = tri[(k + 1) % 3];
-            const auto lo = std::uint64_t(std::min(u, v)), hi = std::uint64_t(std::max(u, v));
-            edges.push_back({(lo << 32) | hi, f, u < v});
-        }
+        ++bucketStart[std::min(a, b) + 1];
+        ++bucketStart[std::min(b, c) + 1];
+        ++bucketStart[std::min(c, a) + 1];
     }
     r.unreferencedVertices = std::count(used.begin(), used.end(), 0);
-    std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) { return x.key < y.key; });
+    for (std::int32_t v = 0; v < nv; ++v)
+        bucketStart[v + 1] += bucketStart[v];
 
-    DisjointSets faceSets(std::size_t(std::max(nf, 1)));
+    // Upper vertex in the high bits, direction in bit 0: sorting these ints orders a bucket by
+    // upper vertex, and equal edges stay adjacent.
+    std::vector<std::int64_t> halfEdges(static_cast<std::size_t>(bucketStart[nv]));
+    {
+        std::vector<std::int32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
+        for (std::int32_t f = 0; f < nf; ++f) {
+            const std::int32_t tri[3] = {mesh.faces(f, 0), mesh.faces(f, 1), mesh.faces(f, 2)};
+            if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
+                continue;
+            const Eigen::Vector3f pa = mesh.vertices.row(tri[0]), pb = mesh.vertices.row(tri[1]),
+                                  pc = mesh.vertices.row(tri[2]);
+            if ((pb - pa).cross(pc - pa).squaredNorm() == 0.f)
+                ++r.degenerateFaces;
+            for (int k = 0; k < 3; ++k) {
+                const std::int32_t u = tri[k], v = tri[(k + 1) % 3];
+                const std::int32_t lo = std::min(u, v), hi = std::max(u, v);
+                halfEdges[std::size_t(fill[lo]++)] = (std::int64_t(hi) << 1) | (u < v ? 1 : 0);
+            }
+        }
+    }
+
     DisjointSets boundaryVerts(std::size_t(std::max(nv, 1)));
     std::vector<char> onBoundary(std::size_t(nv), 0);
-    for (std::size_t i = 0; i < edges.size();) {
-        std::size_t j = i + 1;
-        while (j < edges.size() && edges[j].key == edges[i].key)
-            ++j;
-        const std::size_t count = j - i;
-        for (std::size_t k = i + 1; k < j; ++k)
-            faceSets.unite(edges[i].face, edges[k].face);
-        if (count == 1) {
-            ++r.boundaryEdges;
-            const auto lo = std::int32_t(edges[i].key >> 32), hi = std::int32_t(edges[i].key & 0xffffffffu);
-            boundaryVerts.unite(lo, hi);
-            onBoundary[lo] = onBoundary[hi] = 1;
-        } else if (count == 2) {
-            if (edges[i].forward == edges[i + 1].forward)
-                ++r.inconsistentEdges;
-        } else {
-            ++r.nonManifoldEdges;
+    for (std::int32_t lo = 0; lo < nv; ++lo) {
+        auto* first = halfEdges.data() + bucketStart[lo];
+        auto* last = halfEdges.data() + bucketStart[lo + 1];
+        // Buckets hold about six entries: insertion sort beats std::sort here.
+        for (auto* i = first + 1; i < last; ++i)
+            for (auto* j = i; j > first && *(j - 1) > *j; --j)
+                std::swap(*(j - 1), *j);
+        for (auto* i = first; i < last;) {
+            const std::int64_t edge = *i >> 1;
+            auto* j = i + 1;
+            while (j < last && (*j >> 1) == edge)
+                ++j;
+            const auto count = j - i;
+            if (count == 1) {
+                ++r.boundaryEdges;
+                const auto hi = std::int32_t(edge);
+                boundaryVerts.unite(lo, hi);
+                onBoundary[lo] = onBoundary[hi] = 1;
+            } else if (count == 2) {
+                if ((*i & 1) == (*(i + 1) & 1))
+                    ++r.inconsistentEdges;
+            } else {
+                ++r.nonManifoldEdges;
+            }
+            i = j;
         }
-        i = j;
     }
-    // Faces joined only through a vertex count as one piece too: unite faces around each vertex.
+
+    // Pieces: faces that share a vertex belong together (this covers shared edges too).
+    DisjointSets faceSets(std::size_t(std::max(nf, 1)));
     std::vector<std::int32_t> firstFace(std::size_t(nv), -1);
     for (std::int32_t f = 0; f < nf; ++f) {
         for (int k = 0; k < 3; ++k) {

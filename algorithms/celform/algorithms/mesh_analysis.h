@@ -32,7 +32,7 @@ struct TopologyReport {
     [[nodiscard]] std::string summary() const;
 };
 
-/// Edge adjacency by sorting 64-bit edge keys: O(E log E), no quadratic edge list.
+/// Edge adjacency by bucketing half-edges per lower vertex: O(E), no quadratic edge list.
 /// Expects a mesh that passed findFatalDefect().
 TopologyReport analyzeTopology(const TriMesh& mesh);
 
