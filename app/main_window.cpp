@@ -14,6 +14,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -31,6 +32,8 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
+#include <QPlainTextEdit>
+#include <QTime>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoView>
@@ -177,6 +180,12 @@ void MainWindow::createDocks()
     makeDock(tr("History"), QStringLiteral("historyDock"), m_history, Qt::LeftDockWidgetArea);
     m_properties = new views::PropertiesPanel(m_document, this);
     makeDock(tr("Properties"), QStringLiteral("propertiesDock"), m_properties, Qt::RightDockWidgetArea);
+    m_log = new QPlainTextEdit(this);
+    m_log->setReadOnly(true);
+    m_log->setMaximumBlockCount(2000);
+    m_log->setToolTip(tr("Messages of this session: files opened and saved, import warnings, errors"));
+    QDockWidget* logDock = makeDock(tr("Log"), QStringLiteral("logDock"), m_log, Qt::RightDockWidgetArea);
+    logDock->hide(); // shown on demand from the View menu; warnings also reach the status bar
     connect(m_scene, &views::ScenePanel::selectionChanged, m_properties, &views::PropertiesPanel::showSelection);
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("sceneDock")),
                     findChild<QDockWidget*>(QStringLiteral("propertiesDock"))},
@@ -345,9 +354,22 @@ void MainWindow::changeEvent(QEvent* event)
     QMainWindow::changeEvent(event);
 }
 
+void MainWindow::log(LogLevel level, const QString& message)
+{
+    const QString time = QTime::currentTime().toString(QStringLiteral("HH:mm:ss"));
+    const char* colour = level == LogLevel::Error ? "#c0392b" : level == LogLevel::Warning ? "#b9770e" : "#555555";
+    const QString label = level == LogLevel::Error ? tr("Error")
+        : level == LogLevel::Warning               ? tr("Warning")
+                                                   : tr("Info");
+    m_log->appendHtml(QStringLiteral("<span style=\"color:#888\">%1</span> <b style=\"color:%2\">%3</b> %4")
+                          .arg(time, QLatin1String(colour), label, message.toHtmlEscaped()));
+    if (level != LogLevel::Info)
+        qWarning("%s", qPrintable(message));
+}
+
 void MainWindow::showError(const QString& message)
 {
-    qWarning("%s", qPrintable(message));
+    log(LogLevel::Error, message);
     statusBar()->showMessage(message, 15000);
     if (m_mode == Mode::Interactive)
         QMessageBox::warning(this, tr("Celform"), message);
@@ -359,7 +381,7 @@ void MainWindow::showWarnings(const QString& file, const QStringList& warnings)
         return;
     const QString text
         = tr("%1 loaded with warnings: %2").arg(QFileInfo(file).fileName(), warnings.join(QStringLiteral("; ")));
-    qWarning("%s", qPrintable(text));
+    log(LogLevel::Warning, text);
     statusBar()->showMessage(text, 20000);
 }
 
@@ -392,6 +414,7 @@ bool MainWindow::openProject(const QString& path)
     m_document->reset(std::move(*outcome.value), QFileInfo(path).absoluteFilePath());
     addRecentFile(path);
     statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 5000);
+    log(LogLevel::Info, tr("Opened %1").arg(QDir::toNativeSeparators(path)));
     return true;
 }
 
@@ -479,6 +502,7 @@ bool MainWindow::saveAs(const QString& given)
     }
     addRecentFile(path);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 5000);
+    log(LogLevel::Info, tr("Saved %1").arg(QDir::toNativeSeparators(path)));
     return true;
 }
 

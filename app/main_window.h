@@ -10,6 +10,7 @@
 class QAction;
 class QLabel;
 class QMenu;
+class QPlainTextEdit;
 class QUndoView;
 
 namespace celform::views {
@@ -63,6 +64,9 @@ private:
     void updateTitle();
     void updateRecentMenu();
     void addRecentFile(const QString& path);
+    enum class LogLevel { Info, Warning, Error };
+    /// Appends to the Log dock; warnings and errors also go to the process log (stderr).
+    void log(LogLevel level, const QString& message);
     void showError(const QString& message);
     void showWarnings(const QString& file, const QStringList& warnings);
     bool maybeSave();
@@ -86,6 +90,7 @@ private:
     QMenu* m_recentMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     QLabel* m_statistics = nullptr;
+    QPlainTextEdit* m_log = nullptr;
     QStringList m_dropQueue;
     bool m_processingDrops = false;
 };

@@ -406,6 +406,26 @@ Recover it now?</source>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
+    <message>
+        <source>Messages of this session: files opened and saved, import warnings, errors</source>
+        <translation>このセッションのメッセージ: 開いた/保存したファイル、インポート時の警告、エラー</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>ログ</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>エラー</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation>情報</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::Document</name>

@@ -131,20 +131,26 @@ private slots:
         QCOMPARE(window.document()->data().drawings.front().name, QStringLiteral("tuxpaint_elephant"));
     }
 
-    void deleteKeyInSceneRemovesDrawing()
+    void deleteInSceneRemovesDrawing()
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);
         window.show();
-        window.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
         QVERIFY(window.openFile(sampleProject()));
+        const std::size_t count = window.document()->data().drawings.size();
         const auto id = window.document()->data().drawings.front().id;
         window.scenePanel()->select({views::ScenePanel::ItemKind::Drawing, id});
-        window.scenePanel()->tree()->setFocus();
-        QTest::keyClick(window.scenePanel()->tree(), Qt::Key_Delete);
-        QTRY_VERIFY(window.document()->data().drawings.empty());
-        QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
-        QTRY_COMPARE(window.document()->data().drawings.size(), std::size_t(1));
+        QAction* del = window.action(QStringLiteral("actionDelete"));
+        QVERIFY(del);
+        QCOMPARE(del->shortcut(), QKeySequence(QKeySequence::Delete));
+        // Triggered directly: key shortcuts need an active window, which a shared Xvfb without a
+        // window manager does not guarantee while other UI tests run.
+        del->trigger();
+        QCOMPARE(window.document()->data().drawings.size(), count - 1);
+        QVERIFY(!window.document()->data().drawing(id));
+        window.action(QStringLiteral("actionUndo"))->trigger();
+        QCOMPARE(window.document()->data().drawings.size(), count);
+        QVERIFY(window.document()->data().drawing(id));
     }
 
     void dropMeshAndImage()
