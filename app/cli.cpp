@@ -6,6 +6,9 @@
 #include "celform/model/document.h"
 #include "celform/model/io_error.h"
 #include "celform/model/project_file.h"
+#include "celform/model/mesh_io.h"
+#include "celform/model/view_blend.h"
+#include "celform/algorithms/brush.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -15,7 +18,10 @@
 #include <QJsonObject>
 #include <QTextStream>
 
+#include <cmath>
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <exception>
 #include <new>
 
@@ -27,7 +33,8 @@ struct Cli {
     Q_DECLARE_TR_FUNCTIONS(celform::app::Cli)
 };
 
-const QStringList kSubCommands = {QStringLiteral("new"), QStringLiteral("info")};
+const QStringList kSubCommands = {QStringLiteral("new"), QStringLiteral("info"), QStringLiteral("key"),
+    QStringLiteral("brush"), QStringLiteral("eval"), QStringLiteral("set")};
 
 /// Thrown for a usage error; main turns it into exit code 2 with the message and a hint.
 struct UsageError {
@@ -174,6 +181,366 @@ int commandInfo(const QStringList& args)
     return kExitOk;
 }
 
+/// Parses "X,Y,Z" (a usage error when malformed or not finite).
+Eigen::Vector3d parseVector(const QString& option, const QString& text)
+{
+    const QStringList parts = text.split(QLatin1Char(','));
+    Eigen::Vector3d v;
+    bool ok = parts.size() == 3;
+    for (int i = 0; ok && i < 3; ++i)
+        v[i] = parts[i].trimmed().toDouble(&ok);
+    if (!ok || !v.allFinite())
+        throw UsageError{Cli::tr("--%1 needs three numbers X,Y,Z, not “%2”").arg(option, text)};
+    return v;
+}
+
+/// Parses "A,B" (a usage error when malformed).
+Eigen::Vector2d parsePair(const QString& option, const QString& text)
+{
+    const QStringList parts = text.split(QLatin1Char(','));
+    Eigen::Vector2d v;
+    bool ok = parts.size() == 2;
+    for (int i = 0; ok && i < 2; ++i)
+        v[i] = parts[i].trimmed().toDouble(&ok);
+    if (!ok || !v.allFinite())
+        throw UsageError{Cli::tr("--%1 needs two numbers A,B, not “%2”").arg(option, text)};
+    return v;
+}
+
+double parseNumber(const QString& option, const QString& text)
+{
+    bool ok = false;
+    const double v = text.toDouble(&ok);
+    if (!ok || !std::isfinite(v))
+        throw UsageError{Cli::tr("--%1 needs a number, not “%2”").arg(option, text)};
+    return v;
+}
+
+int parseInt(const QString& option, const QString& text)
+{
+    bool ok = false;
+    const int v = text.toInt(&ok);
+    if (!ok)
+        throw UsageError{Cli::tr("--%1 needs a whole number, not “%2”").arg(option, text)};
+    return v;
+}
+
+/// Opens a project for an edit; the caller saves it.
+std::unique_ptr<model::Document> openProject(const QString& path)
+{
+    auto doc = std::make_unique<model::Document>();
+    doc->open(path);
+    return doc;
+}
+
+const model::KeyViewpoint& findKey(const model::Document& doc, const QString& name, const QString& path)
+{
+    const model::KeyViewpoint* key = doc.data().keyByName(name);
+    if (!key)
+        throw model::IoError(path, Cli::tr("has no key named “%1”").arg(name));
+    return *key;
+}
+
+/// A camera looking at the base centroid from a view direction, far enough to see the model.
+model::Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector3d& view)
+{
+    model::Camera camera;
+    const Eigen::Vector3d centre = algo::centroid(data.baseMesh->vertices);
+    const double diagonal = std::max(algo::boundingBox(data.baseMesh->vertices).diagonal().norm(), 1e-6);
+    camera.target = centre;
+    camera.eye = centre + view.normalized() * (1.2 * diagonal / std::tan(camera.fovYDegrees * M_PI / 360.0));
+    camera.up = std::abs(view.normalized().y()) > 0.99 ? Eigen::Vector3d(0, 0, -1) : Eigen::Vector3d(0, 1, 0);
+    return camera;
+}
+
+int commandKey(const QStringList& args)
+{
+    const QString synopsis = QStringLiteral(
+        "celform key add P --name N (--mesh KEY.obj | --from-base) (--view X,Y,Z | --eye X,Y,Z --target X,Y,Z "
+        "--up X,Y,Z) [--frame F] [--drawing IMAGE] [--json]");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(Cli::tr("Adds a key viewpoint with its key deformation."));
+    parser.addPositionalArgument(QStringLiteral("add"), Cli::tr("The action (add)."));
+    parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
+    const QCommandLineOption name(QStringLiteral("name"), Cli::tr("Name of the new key."), QStringLiteral("N"));
+    const QCommandLineOption mesh(QStringLiteral("mesh"),
+        Cli::tr("Key deformation: a mesh with the base model's vertex count and order."), QStringLiteral("KEY.obj"));
+    const QCommandLineOption fromBase(QStringLiteral("from-base"), Cli::tr("Start as a copy of the base model."));
+    const QCommandLineOption view(QStringLiteral("view"),
+        Cli::tr("View direction from the model's centroid towards the eye."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption eye(QStringLiteral("eye"), Cli::tr("Camera position."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption target(
+        QStringLiteral("target"), Cli::tr("Point the camera looks at."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption up(QStringLiteral("up"), Cli::tr("Camera up vector."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption frame(
+        QStringLiteral("frame"), Cli::tr("Frame of the deformation (default 0)."), QStringLiteral("F"));
+    const QCommandLineOption drawing(QStringLiteral("drawing"),
+        Cli::tr("Reference drawing to embed and link, aligned with the key's camera."), QStringLiteral("IMAGE"));
+    const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print the new key as JSON."));
+    parser.addOptions({name, mesh, fromBase, view, eye, target, up, frame, drawing, json});
+    parseOrThrow(parser, args, 2, synopsis);
+    if (parser.positionalArguments().front() != QLatin1String("add"))
+        throw UsageError{
+            Cli::tr("unknown key action “%1”\nusage: %2").arg(parser.positionalArguments().front(), synopsis)};
+    if (!parser.isSet(name) || parser.isSet(mesh) == parser.isSet(fromBase))
+        throw UsageError{
+            Cli::tr("--name and exactly one of --mesh or --from-base are required\nusage: %1").arg(synopsis)};
+    const bool byView = parser.isSet(view);
+    const bool byCamera = parser.isSet(eye) || parser.isSet(target) || parser.isSet(up);
+    if (byView == byCamera || (byCamera && !(parser.isSet(eye) && parser.isSet(target) && parser.isSet(up))))
+        throw UsageError{Cli::tr("give either --view or all of --eye, --target and --up\nusage: %1").arg(synopsis)};
+    const int f = parser.isSet(frame) ? parseInt(QStringLiteral("frame"), parser.value(frame)) : 0;
+
+    const QString path = parser.positionalArguments().at(1);
+    auto doc = openProject(path);
+    if (!doc->hasMesh())
+        throw model::IoError(path, Cli::tr("has no base model"));
+    model::Camera camera;
+    if (byView) {
+        const Eigen::Vector3d v = parseVector(QStringLiteral("view"), parser.value(view));
+        if (v.norm() == 0.0)
+            throw UsageError{Cli::tr("--view must not be zero")};
+        camera = cameraFromView(doc->data(), v);
+    } else {
+        camera.eye = parseVector(QStringLiteral("eye"), parser.value(eye));
+        camera.target = parseVector(QStringLiteral("target"), parser.value(target));
+        camera.up = parseVector(QStringLiteral("up"), parser.value(up));
+        if (!camera.isValid())
+            throw UsageError{Cli::tr("--eye, --target and --up do not make a camera (eye equals target, or up is "
+                                     "parallel to the view)")};
+    }
+    std::vector<model::ObjectId> drawingIds;
+    if (parser.isSet(drawing)) {
+        const model::ObjectId d = doc->importDrawing(parser.value(drawing));
+        doc->setDrawingCamera(d, camera);
+        drawingIds.push_back(d);
+    }
+    model::SparseOffsets offsets;
+    if (parser.isSet(mesh)) {
+        const QString meshPath = parser.value(mesh);
+        model::MeshImport imported = model::importMesh(meshPath);
+        if (imported.mesh.vertexCount() != doc->data().baseMesh->vertexCount())
+            throw model::IoError(meshPath,
+                Cli::tr("has %1 vertices, but the base model has %2: a key deformation "
+                        "needs the base model's vertex count and order")
+                    .arg(imported.mesh.vertexCount())
+                    .arg(doc->data().baseMesh->vertexCount()));
+        offsets = model::SparseOffsets::difference(imported.mesh.vertices, doc->data().baseMesh->vertices);
+    }
+    const model::ObjectId id = doc->createKey(parser.value(name), camera, drawingIds, std::move(offsets), f);
+    doc->saveAs(path);
+    const model::KeyViewpoint& key = *doc->data().key(id);
+    if (parser.isSet(json)) {
+        printOut(
+            QString::fromUtf8(QJsonDocument(QJsonObject{{"id", double(key.id)}, {"name", key.name},
+                                                {"direction", vec3(key.direction)}, {"camera", cameraJson(key.camera)}})
+                                  .toJson(QJsonDocument::Indented)));
+    }
+    return kExitOk;
+}
+
+int commandBrush(const QStringList& args)
+{
+    const QString synopsis = QStringLiteral(
+        "celform brush P --key N --vertex I --radius R (--drag DX,DY | --push DZ) [--frame F] [--json]");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(Cli::tr("Deforms a key with the falloff brush, seen from the key's camera."));
+    parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
+    const QCommandLineOption key(QStringLiteral("key"), Cli::tr("Name of the key to deform."), QStringLiteral("N"));
+    const QCommandLineOption vertex(
+        QStringLiteral("vertex"), Cli::tr("Index of the picked vertex."), QStringLiteral("I"));
+    const QCommandLineOption radius(
+        QStringLiteral("radius"), Cli::tr("Selection radius in world units."), QStringLiteral("R"));
+    const QCommandLineOption drag(QStringLiteral("drag"),
+        Cli::tr("Move along the camera's right and up vectors, in world units."), QStringLiteral("DX,DY"));
+    const QCommandLineOption push(QStringLiteral("push"),
+        Cli::tr("Move along the viewing direction (away from the camera), in world units."), QStringLiteral("DZ"));
+    const QCommandLineOption frame(
+        QStringLiteral("frame"), Cli::tr("Frame of the deformation (default 0)."), QStringLiteral("F"));
+    const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print what moved as JSON."));
+    parser.addOptions({key, vertex, radius, drag, push, frame, json});
+    parseOrThrow(parser, args, 1, synopsis);
+    if (!parser.isSet(key) || !parser.isSet(vertex) || !parser.isSet(radius)
+        || parser.isSet(drag) == parser.isSet(push))
+        throw UsageError{
+            Cli::tr("--key, --vertex, --radius and exactly one of --drag or --push are required\nusage: %1")
+                .arg(synopsis)};
+    const int picked = parseInt(QStringLiteral("vertex"), parser.value(vertex));
+    const double r = parseNumber(QStringLiteral("radius"), parser.value(radius));
+    if (r <= 0)
+        throw UsageError{Cli::tr("--radius must be positive")};
+    const int f = parser.isSet(frame) ? parseInt(QStringLiteral("frame"), parser.value(frame)) : 0;
+
+    const QString path = parser.positionalArguments().front();
+    auto doc = openProject(path);
+    const model::KeyViewpoint& k = findKey(*doc, parser.value(key), path);
+    if (picked < 0 || picked >= doc->data().baseMesh->vertexCount())
+        throw model::IoError(path,
+            Cli::tr("has no vertex %1 (the base model has %2 vertices)")
+                .arg(picked)
+                .arg(doc->data().baseMesh->vertexCount()));
+    const algo::Positions shape = doc->data().keyShape(k, f);
+    const algo::VertexGrid grid(shape);
+    const algo::BrushSelection selection = algo::selectForBrush(shape, grid, std::uint32_t(picked), r);
+    algo::ImageFrame imageFrame{k.camera.right(), k.camera.trueUp(), k.camera.forward()};
+    algo::Positions moves;
+    if (parser.isSet(drag)) {
+        const Eigen::Vector2d d = parsePair(QStringLiteral("drag"), parser.value(drag));
+        moves = algo::brushDrag(selection, imageFrame, d.x(), d.y());
+    } else {
+        moves = algo::brushPush(selection, imageFrame, parseNumber(QStringLiteral("push"), parser.value(push)));
+    }
+    const QString keyName = k.name;
+    doc->displaceKeyVertices(k.id, f, selection.indices, moves, 0, Cli::tr("Brush “%1”").arg(keyName));
+    doc->saveAs(path);
+    if (parser.isSet(json))
+        printOut(QString::fromUtf8(QJsonDocument(
+            QJsonObject{{"key", keyName}, {"picked", picked}, {"moved_vertices", double(selection.indices.size())}})
+                                       .toJson(QJsonDocument::Indented)));
+    return kExitOk;
+}
+
+int commandEval(const QStringList& args)
+{
+    const QString synopsis = QStringLiteral("celform eval P --view X,Y,Z [--frame F] [--out MESH] [--json]");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(Cli::tr("Evaluates the view-dependent shape for a view direction."));
+    parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
+    const QCommandLineOption view(QStringLiteral("view"),
+        Cli::tr("View direction from the model's centroid towards the eye."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption frame(QStringLiteral("frame"), Cli::tr("Frame (default 0)."), QStringLiteral("F"));
+    const QCommandLineOption out(QStringLiteral("out"),
+        Cli::tr("Write the blended mesh (OBJ or PLY, base vertex order)."), QStringLiteral("MESH"));
+    const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print the keys and weights as JSON."));
+    parser.addOptions({view, frame, out, json});
+    parseOrThrow(parser, args, 1, synopsis);
+    if (!parser.isSet(view))
+        throw UsageError{Cli::tr("--view is required\nusage: %1").arg(synopsis)};
+    const Eigen::Vector3d v = parseVector(QStringLiteral("view"), parser.value(view));
+    const int f = parser.isSet(frame) ? parseInt(QStringLiteral("frame"), parser.value(frame)) : 0;
+
+    const QString path = parser.positionalArguments().front();
+    const model::ProjectData data = model::loadProject(path);
+    if (!data.baseMesh)
+        throw model::IoError(path, Cli::tr("has no base model"));
+    model::BlendEvaluator blender;
+    QString error;
+    if (!blender.update(data, &error))
+        throw model::IoError(path, error);
+    const model::BlendResult blend = blender.weights(data, v);
+    if (parser.isSet(out)) {
+        algo::TriMesh mesh;
+        mesh.faces = data.baseMesh->faces;
+        blender.shape(data, v, f, mesh.vertices);
+        model::exportMesh(mesh, parser.value(out));
+    }
+    QJsonArray shares;
+    for (const auto& share : blend.shares)
+        shares.append(
+            QJsonObject{{"key", data.key(share.key)->name}, {"id", double(share.key)}, {"weight", share.weight}});
+    const QJsonObject result{{"view", vec3(v.normalized())}, {"frame", f}, {"keys", shares},
+        {"base_weight", blend.baseShare}, {"facet", blend.raw.facet}, {"falloff", blend.raw.falloff}};
+    if (parser.isSet(json)) {
+        printOut(QString::fromUtf8(QJsonDocument(result).toJson(QJsonDocument::Indented)));
+    } else {
+        QString text;
+        for (const auto& share : blend.shares)
+            text += QStringLiteral("%1\t%2\n").arg(data.key(share.key)->name).arg(share.weight, 0, 'g', 10);
+        text += QStringLiteral("(base)\t%1\n").arg(blend.baseShare, 0, 'g', 10);
+        printOut(text);
+    }
+    return kExitOk;
+}
+
+int commandSet(const QStringList& args)
+{
+    const QString synopsis
+        = QStringLiteral("celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] "
+                         "[--light point:X,Y,Z|directional:X,Y,Z] [--style toon|gooch|comic|lambert]");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(Cli::tr("Changes project settings."));
+    parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
+    const QCommandLineOption sharpness(
+        QStringLiteral("sharpness"), Cli::tr("Blend sharpness alpha (> 0)."), QStringLiteral("A"));
+    const QCommandLineOption unspecified(
+        QStringLiteral("unspecified"), Cli::tr("Unspecified-region mode."), QStringLiteral("MODE"));
+    const QCommandLineOption light(QStringLiteral("light"),
+        Cli::tr("Key light: a point position or a direction towards the light."), QStringLiteral("TYPE:X,Y,Z"));
+    const QCommandLineOption style(QStringLiteral("style"), Cli::tr("Shading style."), QStringLiteral("STYLE"));
+    parser.addOptions({sharpness, unspecified, light, style});
+    parseOrThrow(parser, args, 1, synopsis);
+    if (!parser.isSet(sharpness) && !parser.isSet(unspecified) && !parser.isSet(light) && !parser.isSet(style))
+        throw UsageError{Cli::tr("nothing to set\nusage: %1").arg(synopsis)};
+
+    model::BlendSettings blend;
+    model::Look look;
+    const QString path = parser.positionalArguments().front();
+    // Parse every option before touching the file: a usage error changes nothing.
+    std::optional<double> alpha;
+    if (parser.isSet(sharpness)) {
+        alpha = parseNumber(QStringLiteral("sharpness"), parser.value(sharpness));
+        if (*alpha <= 0)
+            throw UsageError{Cli::tr("--sharpness must be positive")};
+    }
+    std::optional<model::UnspecifiedMode> mode;
+    if (parser.isSet(unspecified)) {
+        const QString m = parser.value(unspecified);
+        if (m == QLatin1String("dummy"))
+            mode = model::UnspecifiedMode::Dummy;
+        else if (m == QLatin1String("cosine"))
+            mode = model::UnspecifiedMode::Cosine;
+        else if (m == QLatin1String("cosine2"))
+            mode = model::UnspecifiedMode::Cosine2;
+        else
+            throw UsageError{Cli::tr("--unspecified takes dummy, cosine or cosine2, not “%1”").arg(m)};
+    }
+    std::optional<model::Light> newLight;
+    if (parser.isSet(light)) {
+        const QString value = parser.value(light);
+        const int colon = int(value.indexOf(QLatin1Char(':')));
+        const QString type = value.left(colon);
+        model::Light l;
+        if (colon < 0 || (type != QLatin1String("point") && type != QLatin1String("directional")))
+            throw UsageError{Cli::tr("--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”").arg(value)};
+        l.type = type == QLatin1String("point") ? model::LightType::Point : model::LightType::Directional;
+        l.vector = parseVector(QStringLiteral("light"), value.mid(colon + 1));
+        if (l.type == model::LightType::Directional) {
+            if (l.vector.norm() == 0)
+                throw UsageError{Cli::tr("a directional light needs a non-zero direction")};
+            l.vector.normalize();
+        }
+        newLight = l;
+    }
+    std::optional<model::ShadingStyle> newStyle;
+    if (parser.isSet(style)) {
+        const QString st = parser.value(style);
+        const std::pair<const char*, model::ShadingStyle> styles[]
+            = {{"toon", model::ShadingStyle::Toon}, {"gooch", model::ShadingStyle::Gooch},
+                {"comic", model::ShadingStyle::Comic}, {"lambert", model::ShadingStyle::Lambert}};
+        for (const auto& [n, v] : styles)
+            if (st == QLatin1String(n))
+                newStyle = v;
+        if (!newStyle)
+            throw UsageError{Cli::tr("--style takes toon, gooch, comic or lambert, not “%1”").arg(st)};
+    }
+
+    auto doc = openProject(path);
+    blend = doc->data().blend;
+    if (alpha)
+        blend.sharpness = *alpha;
+    if (mode)
+        blend.unspecified = *mode;
+    doc->setBlendSettings(blend);
+    look = doc->data().look;
+    if (newLight)
+        look.light = *newLight;
+    if (newStyle)
+        look.style = *newStyle;
+    doc->setLook(look);
+    doc->saveAs(path);
+    return kExitOk;
+}
+
 } // namespace
 
 bool isCommandLineInvocation(const QStringList& arguments)
@@ -188,10 +555,21 @@ bool isCommandLineInvocation(const QStringList& arguments)
 int runCommandLine(const QStringList& arguments)
 {
     const QString first = arguments.value(1);
-    const QString usage = Cli::tr("usage: celform [PROJECT] [--screenshot FILE.png]\n"
-                             "       celform new MESH --out P.celform [--drawing IMAGE]...\n"
-                             "       celform info P.celform [--json]\n"
-                             "       celform --version");
+    // Command syntax is not translated; only the word "usage" is.
+    const QString usage = Cli::tr("usage:")
+        + QStringLiteral(
+            " celform [PROJECT] [--screenshot FILE.png]\n"
+            "  celform new MESH --out P.celform [--drawing IMAGE]...\n"
+            "  celform info P.celform [--json]\n"
+            "  celform key add P --name N (--mesh KEY.obj | --from-base) (--view X,Y,Z | --eye X,Y,Z --target X,Y,Z "
+            "--up X,Y,Z) [--frame F] [--drawing IMAGE] [--json]\n"
+            "  celform brush P --key N --vertex I --radius R (--drag DX,DY | --push DZ) [--frame F] [--json]\n"
+            "  celform eval P --view X,Y,Z [--frame F] [--out MESH] [--json]\n"
+            "  celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--light "
+            "point:X,Y,Z|directional:X,Y,Z] "
+            "[--style toon|gooch|comic|lambert]\n"
+            "  celform --version\n"
+            "Exit codes: 0 success, 2 usage error, 3 bad input.");
     try {
         if (first == QLatin1String("--version") || first == QLatin1String("-v")) {
             printOut(QStringLiteral("celform %1\n").arg(QCoreApplication::applicationVersion()));
@@ -208,6 +586,14 @@ int runCommandLine(const QStringList& arguments)
             return commandNew(rest);
         if (first == QLatin1String("info"))
             return commandInfo(rest);
+        if (first == QLatin1String("key"))
+            return commandKey(rest);
+        if (first == QLatin1String("brush"))
+            return commandBrush(rest);
+        if (first == QLatin1String("eval"))
+            return commandEval(rest);
+        if (first == QLatin1String("set"))
+            return commandSet(rest);
         printErr(usage);
         return kExitUsage;
     } catch (const UsageError& e) {
@@ -217,6 +603,9 @@ int runCommandLine(const QStringList& arguments)
         return kExitUsage;
     } catch (const model::IoError& e) {
         printErr(QStringLiteral("celform: ") + e.message());
+        return kExitBadInput;
+    } catch (const model::EditRefused& e) {
+        printErr(QStringLiteral("celform: ") + arguments.value(2) + QStringLiteral(": ") + e.message());
         return kExitBadInput;
     } catch (const std::bad_alloc&) {
         printErr(Cli::tr("celform: out of memory"));

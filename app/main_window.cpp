@@ -9,6 +9,7 @@
 #include "celform/model/project_file.h"
 #include "celform/views/properties_panel.h"
 #include "celform/views/scene_panel.h"
+#include "celform/views/view_sphere_panel.h"
 #include "celform/views/viewport.h"
 
 #include <QAction>
@@ -180,6 +181,39 @@ void MainWindow::createDocks()
     makeDock(tr("History"), QStringLiteral("historyDock"), m_history, Qt::LeftDockWidgetArea);
     m_properties = new views::PropertiesPanel(m_document, this);
     makeDock(tr("Properties"), QStringLiteral("propertiesDock"), m_properties, Qt::RightDockWidgetArea);
+    m_properties->setViewport(m_viewport);
+    connect(m_properties, &views::PropertiesPanel::keyCreated, this, [this](model::ObjectId key) {
+        m_scene->select({views::ScenePanel::ItemKind::Key, key});
+        statusBar()->showMessage(tr("Key created: select Edit Key with the Brush to deform it"), 8000);
+    });
+    connect(m_properties, &views::PropertiesPanel::message, this,
+        [this](const QString& text) { statusBar()->showMessage(text, 10000); });
+    connect(m_viewport, &views::Viewport::message, this,
+        [this](const QString& text) { statusBar()->showMessage(text, 6000); });
+
+    // Paper 1, figure 4: the key directions on the viewing sphere and the facet of this view.
+    m_sphere = new views::ViewSpherePanel(m_document, this);
+    makeDock(tr("Viewing Sphere"), QStringLiteral("sphereDock"), m_sphere, Qt::RightDockWidgetArea);
+    auto followCamera = [this] { m_sphere->setViewDirection(m_viewport->viewDirection()); };
+    connect(m_viewport, &views::Viewport::cameraChanged, this, followCamera);
+    connect(m_document, &model::Document::documentReset, this, followCamera);
+    connect(m_document, &model::Document::keysChanged, this, followCamera);
+    connect(m_sphere, &views::ViewSpherePanel::keyActivated, this, [this](model::ObjectId key) {
+        m_scene->select({views::ScenePanel::ItemKind::Key, key});
+        if (const auto* k = m_document->data().key(key))
+            m_viewport->setCamera(k->camera);
+    });
+
+    // Paper 1, figure 6 (bottom row): the blended model from a fixed camera of its own, so the
+    // distortion shows while the main camera orbits.
+    m_observer = new views::Viewport(m_document, this);
+    m_observer->setObjectName(QStringLiteral("observerViewport"));
+    m_observer->setMinimumSize(200, 160);
+    m_observer->setObserved(m_viewport);
+    m_observer->setToolTip(tr("The view-dependent shape for the main camera, seen from this camera of its own"));
+    QDockWidget* observerDock
+        = makeDock(tr("Observer"), QStringLiteral("observerDock"), m_observer, Qt::BottomDockWidgetArea);
+    observerDock->hide(); // a second GL view costs frames: shown on demand from the View menu
     m_log = new QPlainTextEdit(this);
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(2000);
@@ -242,6 +276,24 @@ void MainWindow::createActions()
             m_viewport->setProjection(on ? model::Projection::Orthographic : model::Projection::Perspective);
         });
     ortho->setCheckable(true);
+    auto* preview = make(QStringLiteral("actionPreview"), tr("&Preview View-Dependent Shape"), QKeySequence(Qt::Key_P),
+        tr("Show the blend of the keys for the current camera, updated while orbiting"), [this](bool on) {
+            if (m_properties->previewButton()->isChecked() != on)
+                m_properties->previewButton()->setChecked(on);
+        });
+    preview->setCheckable(true);
+    connect(m_properties->previewButton(), &QAbstractButton::toggled, preview, &QAction::setChecked);
+    make(QStringLiteral("actionNavigate"), tr("&Navigate Only"), QKeySequence(Qt::Key_Escape),
+        tr("Leave alignment and brush tools"), [this] { m_viewport->setTool(views::Viewport::Tool::Navigate); });
+    make(QStringLiteral("actionCreateKeyFromView"), tr("Create Key from &View"), QKeySequence(Qt::CTRL | Qt::Key_K),
+        tr("Make a key viewpoint seen from the current camera, starting as a copy of the base model"), [this] {
+            try {
+                const auto id = m_document->createKey(tr("Key"), m_viewport->camera());
+                m_scene->select({views::ScenePanel::ItemKind::Key, id});
+            } catch (const model::EditRefused& e) {
+                showError(e.message());
+            }
+        });
     make(QStringLiteral("actionAbout"), tr("&About Celform"), QKeySequence(), tr("Version and licence"), [this] {
         QMessageBox::about(this, tr("About Celform"),
             tr("<h3>Celform %1</h3><p>View-dependent models, shaped highlights and stereo-aware toon "
@@ -285,10 +337,14 @@ void MainWindow::createMenus()
     edit->addAction(action(QStringLiteral("actionRedo")));
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionDelete")));
+    edit->addSeparator();
+    edit->addAction(action(QStringLiteral("actionCreateKeyFromView")));
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("actionFrameAll")));
     m_viewMenu->addAction(action(QStringLiteral("actionOrthographic")));
+    m_viewMenu->addAction(action(QStringLiteral("actionPreview")));
+    m_viewMenu->addAction(action(QStringLiteral("actionNavigate")));
     m_viewMenu->addSeparator();
     for (auto* dock : findChildren<QDockWidget*>())
         m_viewMenu->addAction(dock->toggleViewAction());
@@ -312,6 +368,8 @@ void MainWindow::createMenus()
     tools->addSeparator();
     tools->addAction(withIcon("actionImportDrawing", "insert-image", QStyle::SP_FileDialogContentsView));
     tools->addAction(withIcon("actionFrameAll", "zoom-fit-best", QStyle::SP_TitleBarMaxButton));
+    tools->addSeparator();
+    tools->addAction(withIcon("actionPreview", "view-preview", QStyle::SP_MediaPlay));
     m_viewMenu->addAction(tools->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));

@@ -17,6 +17,7 @@ namespace celform::views {
 class Viewport;
 class ScenePanel;
 class PropertiesPanel;
+class ViewSpherePanel;
 } // namespace celform::views
 
 namespace celform::app {
@@ -35,6 +36,8 @@ public:
     [[nodiscard]] model::Document* document() const { return m_document; }
     [[nodiscard]] views::Viewport* viewport() const { return m_viewport; }
     [[nodiscard]] views::ScenePanel* scenePanel() const { return m_scene; }
+    [[nodiscard]] views::PropertiesPanel* propertiesPanel() const { return m_properties; }
+    [[nodiscard]] views::Viewport* observer() const { return m_observer; }
     [[nodiscard]] RecoveryManager* recovery() const { return m_recovery; }
     /// The action with the given object name (tests and shortcuts), or null.
     [[nodiscard]] QAction* action(const QString& name) const;
@@ -85,6 +88,8 @@ private:
     views::Viewport* m_viewport = nullptr;
     views::ScenePanel* m_scene = nullptr;
     views::PropertiesPanel* m_properties = nullptr;
+    views::ViewSpherePanel* m_sphere = nullptr;
+    views::Viewport* m_observer = nullptr;
     QUndoView* m_history = nullptr;
     RecoveryManager* m_recovery = nullptr;
     QMenu* m_recentMenu = nullptr;

@@ -159,6 +159,113 @@ private slots:
         }
     }
 
+    void viewDependentWorkflow()
+    {
+        // key add, brush, set and eval as a pipeline script would run them (paper 1, section 3).
+        const QString project = bunnyProject();
+        if (project.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString p = m_dir.filePath(QStringLiteral("vdg.celform"));
+        QFile::remove(p);
+        QVERIFY(QFile::copy(project, p));
+
+        Run r = runCelform({"key", "add", p, "--name", "front", "--from-base", "--view", "0,0,1", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject key = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(key["name"].toString(), QStringLiteral("front"));
+        QCOMPARE(key["direction"].toArray()[2].toDouble(), 1.0);
+        r = runCelform({"key", "add", p, "--name", "side", "--from-base", "--view", "1,0,0"});
+        QCOMPARE(r.exitCode, 0);
+        // The same direction twice is refused (exit 3, one line).
+        r = runCelform({"key", "add", p, "--name", "again", "--from-base", "--view", "0,0,2"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains(QStringLiteral("front")), qPrintable(r.err));
+
+        // info reports each key camera's frame.
+        r = runCelform({"info", p, "--json"});
+        const QJsonObject info = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject camera = info["key_viewpoints"].toArray()[0].toObject()["camera"].toObject();
+        for (const char* v : {"eye", "right", "up", "forward"})
+            QCOMPARE(camera[v].toArray().size(), 3);
+
+        // Brush vertex 100 of "front" by (0.01, 0.02) along the key camera's right and up.
+        const QString before = m_dir.filePath(QStringLiteral("before.obj"));
+        const QString after = m_dir.filePath(QStringLiteral("after.obj"));
+        QCOMPARE(runCelform({"eval", p, "--view", "0,0,1", "--out", before}).exitCode, 0);
+        r = runCelform(
+            {"brush", p, "--key", "front", "--vertex", "100", "--radius", "0.02", "--drag", "0.01,0.02", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(QJsonDocument::fromJson(r.out.toUtf8()).object()["moved_vertices"].toInt() >= 1);
+        r = runCelform({"eval", p, "--view", "0,0,1", "--out", after, "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject eval = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(eval["keys"].toArray().size(), 1);
+        QCOMPARE(eval["keys"].toArray()[0].toObject()["weight"].toDouble(), 1.0);
+        const auto right = camera["right"].toArray(), up = camera["up"].toArray();
+        auto vertex = [](const QString& obj, int index) {
+            QFile f(obj);
+            f.open(QIODevice::ReadOnly);
+            int n = 0;
+            while (!f.atEnd()) {
+                const QByteArray line = f.readLine();
+                if (line.startsWith("v ") && n++ == index) {
+                    const auto parts = line.simplified().split(' ');
+                    return Eigen::Vector3d(parts[1].toDouble(), parts[2].toDouble(), parts[3].toDouble());
+                }
+            }
+            return Eigen::Vector3d(Eigen::Vector3d::Constant(std::nan("")));
+        };
+        const Eigen::Vector3d moved = vertex(after, 100) - vertex(before, 100);
+        const Eigen::Vector3d expected
+            = 0.01 * Eigen::Vector3d(right[0].toDouble(), right[1].toDouble(), right[2].toDouble())
+            + 0.02 * Eigen::Vector3d(up[0].toDouble(), up[1].toDouble(), up[2].toDouble());
+        QVERIFY2((moved - expected).norm() < 1e-6,
+            qPrintable(QStringLiteral("moved %1 %2 %3").arg(moved.x()).arg(moved.y()).arg(moved.z())));
+        // Seen from the side key's direction, the front deformation is not there.
+        const QString side = m_dir.filePath(QStringLiteral("side.obj"));
+        QCOMPARE(runCelform({"eval", p, "--view", "1,0,0", "--out", side}).exitCode, 0);
+        QVERIFY((vertex(side, 100) - vertex(before, 100)).norm() < 1e-9);
+
+        // Cosine mode with sharpness: settable, and eval follows it.
+        QCOMPARE(runCelform({"set", p, "--sharpness", "2", "--unspecified", "cosine"}).exitCode, 0);
+        r = runCelform({"info", p, "--json"});
+        const QJsonObject blend = QJsonDocument::fromJson(r.out.toUtf8()).object()["blend"].toObject();
+        QCOMPARE(blend["sharpness"].toDouble(), 2.0);
+        QCOMPARE(blend["unspecified"].toString(), QStringLiteral("cosine"));
+        QCOMPARE(runCelform({"set", p, "--unspecified", "sideways"}).exitCode, 2);
+        QCOMPARE(runCelform({"set", p}).exitCode, 2);
+        QCOMPARE(
+            runCelform({"brush", p, "--key", "nobody", "--vertex", "1", "--radius", "0.1", "--push", "0.1"}).exitCode,
+            3);
+        QCOMPARE(runCelform({"brush", p, "--key", "front", "--vertex", "99999999", "--radius", "0.1", "--push", "0.1"})
+                     .exitCode,
+            3);
+        QCOMPARE(runCelform({"eval", p, "--view", "1,0"}).exitCode, 2);
+    }
+
+    void keyAddRefusesMismatchedMesh()
+    {
+        const QString project = bunnyProject();
+        CELFORM_REQUIRE_SHARED(elephant, QStringLiteral("meshes/cgal_elephant.off"));
+        if (project.isEmpty())
+            QSKIP("shared test data not found");
+        const QString p = m_dir.filePath(QStringLiteral("mismatch.celform"));
+        QFile::remove(p);
+        QVERIFY(QFile::copy(project, p));
+        const QByteArray before = [&] {
+            QFile f(p);
+            f.open(QIODevice::ReadOnly);
+            return f.readAll();
+        }();
+        const Run r = runCelform({"key", "add", p, "--name", "k", "--mesh", elephant, "--view", "0,0,1"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains(QStringLiteral("cgal_elephant.off")) && r.err.contains(QStringLiteral("2775")),
+            qPrintable(r.err));
+        QFile f(p);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), before); // the project on disk is untouched
+    }
+
     void infoOnTruncatedProject()
     {
         const QString good = bunnyProject();

@@ -32,11 +32,11 @@ Drawing smallDrawing(const QString& name)
     return d;
 }
 
-KeyViewpoint keyWithOffsets(const QString& name)
+KeyViewpoint keyWithOffsets(const QString& name, const Eigen::Vector3d& direction = Eigen::Vector3d(1, 0, 0))
 {
     KeyViewpoint k;
     k.name = name;
-    k.direction = Eigen::Vector3d(1, 0, 0);
+    k.direction = direction;
     k.camera.eye = Eigen::Vector3d(5, 0, 0);
     k.offsetsByFrame[0] = SparseOffsets{{1, 3}, {Eigen::Vector3f(0.1f, 0, 0), Eigen::Vector3f(0, 0.2f, 0)}};
     return k;
@@ -170,9 +170,9 @@ private slots:
 
     void removeThenUndoKeepsOrder()
     {
-        const ObjectId a = m_doc.addKey(keyWithOffsets(QStringLiteral("a")));
-        const ObjectId b = m_doc.addKey(keyWithOffsets(QStringLiteral("b")));
-        const ObjectId c = m_doc.addKey(keyWithOffsets(QStringLiteral("c")));
+        const ObjectId a = m_doc.addKey(keyWithOffsets(QStringLiteral("a"), {1, 0, 0}));
+        const ObjectId b = m_doc.addKey(keyWithOffsets(QStringLiteral("b"), {0, 1, 0}));
+        const ObjectId c = m_doc.addKey(keyWithOffsets(QStringLiteral("c"), {0, 0, 1}));
         m_doc.removeKey(b);
         m_doc.undoStack()->undo();
         QCOMPARE(m_doc.data().keys.at(0).id, a);

@@ -7,6 +7,8 @@
 #include "celform/model/mesh_io.h"
 #include "celform/model/project_file.h"
 
+#include <cmath>
+
 #include <QCoreApplication>
 #include <QFileInfo>
 
@@ -260,12 +262,26 @@ void Document::setDrawingCamera(ObjectId id, const Camera& camera)
     m_undo->push(cmd);
 }
 
+void Document::refuseDuplicateDirection(const Eigen::Vector3d& direction, ObjectId ignoredKey) const
+{
+    const double limit = std::cos(algo::ViewSphere::kDuplicateAngleDegrees * M_PI / 180.0);
+    for (const auto& other : m_data.keys) {
+        if (other.id != ignoredKey && other.direction.dot(direction) > limit)
+            throw EditRefused(tr("Key “%1” already has this view direction; a second key needs a different "
+                                 "direction (at least %2° apart).")
+                                  .arg(other.name)
+                                  .arg(algo::ViewSphere::kDuplicateAngleDegrees));
+    }
+}
+
 ObjectId Document::addKey(KeyViewpoint key)
 {
+    if (!key.direction.allFinite() || key.direction.norm() == 0.0)
+        throw EditRefused(tr("A key needs a view direction."));
+    key.direction.normalize();
+    refuseDuplicateDirection(key.direction, 0);
     key.id = m_data.nextId;
     key.name = uniqueKeyName(key.name);
-    if (key.direction.norm() > 0)
-        key.direction.normalize();
     const ObjectId id = key.id;
     auto* cmd = new QUndoCommand(tr("Add Key “%1”").arg(key.name));
     new NextIdCommand(this, id + 1, cmd);
@@ -274,6 +290,221 @@ ObjectId Document::addKey(KeyViewpoint key)
         m_data.keys.size(), false, Part::Keys, cmd);
     m_undo->push(cmd);
     return id;
+}
+
+ObjectId Document::createKey(
+    const QString& name, const Camera& camera, std::vector<ObjectId> drawingIds, SparseOffsets offsets, int frame)
+{
+    if (!m_data.baseMesh)
+        throw EditRefused(tr("Import a base model before making keys."));
+    if (!camera.isValid())
+        throw EditRefused(tr("The key's camera is not valid (eye, target and up must differ)."));
+    KeyViewpoint key;
+    key.name = name;
+    key.camera = camera;
+    key.direction = m_blender.viewDirection(m_data, camera.eye);
+    if (key.direction.norm() == 0.0)
+        throw EditRefused(tr("The key's camera sits at the centre of the model; move it away first."));
+    key.drawingIds = std::move(drawingIds);
+    key.offsetsByFrame[frame] = std::move(offsets);
+    return addKey(std::move(key));
+}
+
+ObjectId Document::createKeyFromDrawing(ObjectId drawingId)
+{
+    const Drawing* drawing = m_data.drawing(drawingId);
+    if (!drawing)
+        throw EditRefused(tr("The drawing no longer exists."));
+    if (!drawing->aligned)
+        throw EditRefused(
+            tr("Align the drawing “%1” first: its camera gives the key's view direction.").arg(drawing->name));
+    return createKey(drawing->name, drawing->camera, {drawingId});
+}
+
+void Document::setKeyCamera(ObjectId id, const Camera& camera)
+{
+    const KeyViewpoint* key = m_data.key(id);
+    if (!key || !camera.isValid() || key->camera == camera)
+        return;
+    const Eigen::Vector3d direction = m_blender.viewDirection(m_data, camera.eye);
+    if (direction.norm() == 0.0)
+        throw EditRefused(tr("The key's camera sits at the centre of the model; move it away first."));
+    refuseDuplicateDirection(direction, id);
+    auto* cmd = new QUndoCommand(tr("Re-align Key “%1”").arg(key->name));
+    new AssignCommand<Camera>(
+        this, {},
+        [id](ProjectData& d) {
+            auto* k = d.key(id);
+            return k ? &k->camera : nullptr;
+        },
+        camera, Part::Keys, -1, 0, cmd);
+    new AssignCommand<Eigen::Vector3d>(
+        this, {},
+        [id](ProjectData& d) {
+            auto* k = d.key(id);
+            return k ? &k->direction : nullptr;
+        },
+        direction, Part::Keys, -1, 0, cmd);
+    m_undo->push(cmd);
+}
+
+void Document::linkKeyDrawing(ObjectId keyId, ObjectId drawingId)
+{
+    const KeyViewpoint* key = m_data.key(keyId);
+    if (!key)
+        return;
+    std::vector<ObjectId> ids;
+    if (drawingId != 0 && m_data.drawing(drawingId))
+        ids.push_back(drawingId);
+    if (ids == key->drawingIds)
+        return;
+    m_undo->push(new AssignCommand<std::vector<ObjectId>>(
+        this, ids.empty() ? tr("Unlink Key “%1”").arg(key->name) : tr("Link Key “%1” to a Drawing").arg(key->name),
+        [keyId](ProjectData& d) {
+            auto* k = d.key(keyId);
+            return k ? &k->drawingIds : nullptr;
+        },
+        ids, Part::Keys));
+}
+
+void Document::setKeyOffsets(ObjectId id, int frame, SparseOffsets offsets, const QString& undoText)
+{
+    const KeyViewpoint* key = m_data.key(id);
+    if (!key)
+        return;
+    // Express the replacement as a sparse change of the union of old and new vertices.
+    const SparseOffsets* old = nullptr;
+    if (auto it = key->offsetsByFrame.find(frame); it != key->offsetsByFrame.end())
+        old = &it->second;
+    KeyOffsetsCommand::Change change;
+    std::size_t i = 0, j = 0;
+    const std::size_t n = old ? old->indices.size() : 0;
+    while (i < n || j < offsets.indices.size()) {
+        const bool takeOld = j == offsets.indices.size() || (i < n && old->indices[i] <= offsets.indices[j]);
+        const bool takeNew = i == n || (j < offsets.indices.size() && offsets.indices[j] <= old->indices[i]);
+        change.indices.push_back(takeOld ? old->indices[i] : offsets.indices[j]);
+        change.before.push_back(takeOld ? old->deltas[i] : Eigen::Vector3f::Zero());
+        change.beforePresent.push_back(takeOld);
+        change.after.push_back(takeNew ? offsets.deltas[j] : Eigen::Vector3f::Zero());
+        change.afterPresent.push_back(takeNew);
+        i += takeOld;
+        j += takeNew;
+    }
+    m_undo->push(new KeyOffsetsCommand(this, undoText, id, frame, std::move(change), 0));
+}
+
+QStringList Document::importKeyDeformation(ObjectId id, const QString& meshPath, int frame)
+{
+    const KeyViewpoint* key = m_data.key(id);
+    if (!key || !m_data.baseMesh)
+        return {};
+    MeshImport imported = importMesh(meshPath);
+    const auto& base = *m_data.baseMesh;
+    if (imported.mesh.vertexCount() != base.vertexCount())
+        throw IoError(meshPath,
+            tr("has %1 vertices, but the base model has %2: a key deformation needs the base "
+               "model's vertex count and order")
+                .arg(imported.mesh.vertexCount())
+                .arg(base.vertexCount()));
+    QStringList warnings;
+    if (imported.mesh.faces.rows() != base.faces.rows() || imported.mesh.faces != base.faces)
+        warnings << tr("its triangles differ from the base model's; only the vertex positions are used");
+    setKeyOffsets(id, frame, SparseOffsets::difference(imported.mesh.vertices, base.vertices),
+        tr("Import Deformation into “%1”").arg(key->name));
+    return warnings;
+}
+
+void Document::displaceKeyVertices(ObjectId id, int frame, const std::vector<std::uint32_t>& indices,
+    const algo::Positions& displacements, int strokeId, const QString& undoText)
+{
+    const KeyViewpoint* key = m_data.key(id);
+    if (!key || indices.empty() || !m_data.baseMesh)
+        return;
+    Q_ASSERT(displacements.rows() == Eigen::Index(indices.size()));
+    const auto nv = std::uint32_t(m_data.baseMesh->vertexCount());
+    const SparseOffsets* current = nullptr;
+    if (auto it = key->offsetsByFrame.find(frame); it != key->offsetsByFrame.end())
+        current = &it->second;
+    KeyOffsetsCommand::Change change;
+    change.indices.reserve(indices.size());
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        const std::uint32_t v = indices[k];
+        if (v >= nv || (k > 0 && v <= indices[k - 1]) || !displacements.row(Eigen::Index(k)).allFinite())
+            continue; // out of range, out of order or NaN: never written into the document
+        const Eigen::Vector3f before = current ? current->at(v) : Eigen::Vector3f::Zero();
+        bool present = false;
+        if (current) {
+            const auto it = std::lower_bound(current->indices.begin(), current->indices.end(), v);
+            present = it != current->indices.end() && *it == v;
+        }
+        change.indices.push_back(v);
+        change.before.push_back(before);
+        change.beforePresent.push_back(present);
+        change.after.push_back(before + displacements.row(Eigen::Index(k)).transpose());
+        change.afterPresent.push_back(1);
+    }
+    if (change.indices.empty())
+        return;
+    m_undo->push(new KeyOffsetsCommand(this, undoText, id, frame, std::move(change), strokeId));
+}
+
+BlendEvaluator& Document::blender()
+{
+    m_blender.update(m_data);
+    return m_blender;
+}
+
+// --- KeyOffsetsCommand ------------------------------------------------------------------------
+
+KeyOffsetsCommand::KeyOffsetsCommand(
+    Document* doc, const QString& text, ObjectId key, int frame, Change change, int strokeId)
+    : QUndoCommand(text)
+    , m_doc(doc)
+    , m_key(key)
+    , m_frame(frame)
+    , m_change(std::move(change))
+    , m_strokeId(strokeId)
+{
+    const KeyViewpoint* k = doc->data().key(key);
+    m_frameExisted = k && k->offsetsByFrame.count(frame) > 0;
+}
+
+void KeyOffsetsCommand::apply(bool forward)
+{
+    KeyViewpoint* key = m_doc->mutableData().key(m_key);
+    if (!key)
+        return;
+    SparseOffsets& offsets = key->offsetsByFrame[m_frame];
+    offsets.assign(m_change.indices, forward ? m_change.after : m_change.before,
+        forward ? m_change.afterPresent : m_change.beforePresent);
+    if (!forward && !m_frameExisted && offsets.indices.empty())
+        key->offsetsByFrame.erase(m_frame); // undo leaves the key exactly as it was
+    m_doc->notifyChanged(Document::Part::Keys);
+}
+
+bool KeyOffsetsCommand::mergeWith(const QUndoCommand* other)
+{
+    const auto* o = dynamic_cast<const KeyOffsetsCommand*>(other);
+    if (!o || o->m_strokeId != m_strokeId || o->m_key != m_key || o->m_frame != m_frame)
+        return false;
+    // Union of two ascending index lists: keep our "before", take their "after".
+    Change merged;
+    const Change& a = m_change;
+    const Change& b = o->m_change;
+    std::size_t i = 0, j = 0;
+    while (i < a.indices.size() || j < b.indices.size()) {
+        const bool fromA = j == b.indices.size() || (i < a.indices.size() && a.indices[i] <= b.indices[j]);
+        const bool fromB = i == a.indices.size() || (j < b.indices.size() && b.indices[j] <= a.indices[i]);
+        merged.indices.push_back(fromA ? a.indices[i] : b.indices[j]);
+        merged.before.push_back(fromA ? a.before[i] : b.before[j]);
+        merged.beforePresent.push_back(fromA ? a.beforePresent[i] : b.beforePresent[j]);
+        merged.after.push_back(fromB ? b.after[j] : a.after[i]);
+        merged.afterPresent.push_back(fromB ? b.afterPresent[j] : a.afterPresent[i]);
+        i += fromA;
+        j += fromB;
+    }
+    m_change = std::move(merged);
+    return true;
 }
 
 void Document::removeKey(ObjectId id)

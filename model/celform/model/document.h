@@ -3,6 +3,7 @@
 #pragma once
 
 #include "celform/model/project_data.h"
+#include "celform/model/view_blend.h"
 
 #include <QObject>
 #include <QString>
@@ -55,7 +56,35 @@ public:
     void setDrawingOpacity(ObjectId id, double opacity);
     void setDrawingCamera(ObjectId id, const Camera& camera);
 
+    /// Adds a key as given. Throws EditRefused when its direction is within
+    /// algo::ViewSphere::kDuplicateAngleDegrees of another key's.
     ObjectId addKey(KeyViewpoint key);
+    /// A key seen from camera: its direction runs from the base centroid towards the eye
+    /// (DESIGN.md); it starts as a copy of the base model unless offsets are given (at frame).
+    /// Throws EditRefused (no base model, eye at the centroid, duplicate direction).
+    ObjectId createKey(const QString& name, const Camera& camera, std::vector<ObjectId> drawingIds = {},
+        SparseOffsets offsets = {}, int frame = 0);
+    /// "Create key from this drawing": the drawing's aligned camera, linked to the drawing.
+    ObjectId createKeyFromDrawing(ObjectId drawingId);
+    /// Re-aligns a key: new camera and direction. Throws EditRefused for a duplicate direction.
+    void setKeyCamera(ObjectId id, const Camera& camera);
+    /// Links a key to one drawing (0 unlinks every drawing).
+    void linkKeyDrawing(ObjectId keyId, ObjectId drawingId);
+    /// Replaces a key's offsets at a frame (one undo step).
+    void setKeyOffsets(ObjectId id, int frame, SparseOffsets offsets, const QString& undoText);
+    /// Reads a mesh with the base model's vertex count and order and makes its difference from
+    /// the base the key's deformation at frame. Throws IoError (unreadable, vertex count
+    /// mismatch). Returns import warnings.
+    QStringList importKeyDeformation(ObjectId id, const QString& meshPath, int frame = 0);
+    /// Adds displacements (#indices by 3) to a key's vertices at a frame: one brush step. Steps
+    /// with the same non-zero strokeId merge into one undo step (one drag = one undo).
+    void displaceKeyVertices(ObjectId id, int frame, const std::vector<std::uint32_t>& indices,
+        const algo::Positions& displacements, int strokeId, const QString& undoText);
+    /// A fresh id for displaceKeyVertices strokes.
+    int newStrokeId() { return ++m_lastStrokeId; }
+
+    /// The view-dependent blend of the current keys, up to date.
+    BlendEvaluator& blender();
     void removeKey(ObjectId id);
     void renameKey(ObjectId id, const QString& name);
     void setKeyEnabled(ObjectId id, bool enabled);
@@ -85,8 +114,12 @@ signals:
     void filePathChanged(const QString& path);
 
 private:
+    void refuseDuplicateDirection(const Eigen::Vector3d& direction, ObjectId ignoredKey) const;
+
     ProjectData m_data;
     QUndoStack* m_undo;
+    BlendEvaluator m_blender;
+    int m_lastStrokeId = 0;
     QString m_filePath;
 };
 

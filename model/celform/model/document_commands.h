@@ -12,7 +12,7 @@
 namespace celform::model {
 
 /// Merge ids of commands that a single gesture repeats (slider drags).
-enum CommandId { kDrawingOpacityId = 1001, kBlendId = 1002, kLookId = 1003 };
+enum CommandId { kDrawingOpacityId = 1001, kBlendId = 1002, kLookId = 1003, kKeyOffsetsId = 1004 };
 
 /// Sets one value found by a locator (by id) from `before` to `after`. With a merge id, repeated
 /// pushes for the same target fold into one undo step keeping the first "before".
@@ -110,6 +110,35 @@ private:
     std::size_t m_index;
     bool m_remove;
     Document::Part m_part;
+};
+
+/// Changes some of a key's offsets at one frame, storing before and after values of just those
+/// vertices (sparse). Steps of one brush stroke merge: the union of the vertices, the first
+/// "before" and the last "after" of each.
+class KeyOffsetsCommand : public QUndoCommand {
+public:
+    struct Change {
+        std::vector<std::uint32_t> indices; ///< ascending
+        std::vector<Eigen::Vector3f> before, after;
+        std::vector<char> beforePresent, afterPresent;
+    };
+
+    KeyOffsetsCommand(Document* doc, const QString& text, ObjectId key, int frame, Change change, int strokeId);
+
+    void redo() override { apply(true); }
+    void undo() override { apply(false); }
+    int id() const override { return m_strokeId != 0 ? kKeyOffsetsId : -1; }
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    void apply(bool forward);
+
+    Document* m_doc;
+    ObjectId m_key;
+    int m_frame;
+    Change m_change;
+    int m_strokeId;
+    bool m_frameExisted; ///< whether the key had offsets at m_frame before the first step
 };
 
 } // namespace celform::model

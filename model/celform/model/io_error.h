@@ -25,4 +25,18 @@ private:
     QString m_problem;
 };
 
+/// An edit the document refuses (two keys with the same direction, a key deformation whose
+/// vertex count does not match): the document is unchanged; the message says why.
+class EditRefused : public std::runtime_error {
+public:
+    explicit EditRefused(QString message)
+        : std::runtime_error(message.toStdString())
+        , m_message(std::move(message))
+    { }
+    [[nodiscard]] const QString& message() const { return m_message; }
+
+private:
+    QString m_message;
+};
+
 } // namespace celform::model

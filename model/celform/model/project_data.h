@@ -24,6 +24,15 @@ struct SparseOffsets {
     std::vector<std::uint32_t> indices;
     std::vector<Eigen::Vector3f> deltas;
     bool operator==(const SparseOffsets& o) const { return indices == o.indices && deltas == o.deltas; }
+
+    /// The offset of a vertex, zero when it has none.
+    [[nodiscard]] Eigen::Vector3f at(std::uint32_t index) const;
+    /// Sets the offsets of the given vertices (indices ascending); present[i] == false removes
+    /// vertex i's entry instead. Keeps indices ascending.
+    void assign(const std::vector<std::uint32_t>& changed, const std::vector<Eigen::Vector3f>& values,
+        const std::vector<char>& present);
+    /// Offsets of the keyed shape from the base: every vertex whose position differs.
+    static SparseOffsets difference(const algo::Positions& shape, const algo::Positions& base);
 };
 
 struct Drawing {
@@ -114,6 +123,12 @@ struct ProjectData {
     [[nodiscard]] KeyViewpoint* key(ObjectId id);
     [[nodiscard]] const KeyViewpoint* keyByName(const QString& name) const;
     [[nodiscard]] const Drawing* drawingByName(const QString& name) const;
+
+    /// Key offsets at a frame: the frame's own, else the nearest earlier frame's, else the
+    /// first frame's (static models use frame 0), else none.
+    [[nodiscard]] static const SparseOffsets* offsetsAt(const KeyViewpoint& key, int frame);
+    /// Base model plus a key's offsets at a frame (#V by 3). Needs a base mesh.
+    [[nodiscard]] algo::Positions keyShape(const KeyViewpoint& key, int frame) const;
 
     /// Equal stored data, mesh compared by value (used by tests and the save/load round trip).
     bool operator==(const ProjectData& o) const;

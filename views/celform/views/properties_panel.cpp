@@ -1,17 +1,24 @@
-// Properties of the selection and the blend settings, kept in sync with the document.
+// Properties of the selection, the tools that work on it, and the blend settings, kept in sync
+// with the document and the viewport.
 #include "celform/views/properties_panel.h"
 
 #include "celform/algorithms/tri_mesh.h"
+#include "celform/model/io_error.h"
+#include "celform/model/mesh_io.h"
+#include "celform/views/viewport.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSlider>
 #include <QVBoxLayout>
 
@@ -24,18 +31,19 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
 
     m_selectionBox = new QGroupBox(tr("Selection"), this);
-    auto* form = new QFormLayout(m_selectionBox);
+    m_form = new QFormLayout(m_selectionBox);
     m_summary = new QLabel(m_selectionBox);
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    form->addRow(m_summary);
+    m_form->addRow(m_summary);
     m_thumbnail = new QLabel(m_selectionBox);
     m_thumbnail->setAlignment(Qt::AlignCenter);
-    form->addRow(m_thumbnail);
+    m_form->addRow(m_thumbnail);
     m_name = new QLineEdit(m_selectionBox);
     m_name->setToolTip(tr("Name shown in the scene tree and used by the command line"));
-    form->addRow(tr("&Name:"), m_name);
+    m_form->addRow(tr("&Name:"), m_name);
 
+    // Drawing: overlay and alignment (paper 1, section 3.1.1).
     m_opacityRow = new QWidget(m_selectionBox);
     auto* opacityLayout = new QHBoxLayout(m_opacityRow);
     opacityLayout->setContentsMargins(0, 0, 0, 0);
@@ -46,11 +54,70 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_opacityValue->setMinimumWidth(40);
     opacityLayout->addWidget(m_opacity);
     opacityLayout->addWidget(m_opacityValue);
-    form->addRow(tr("&Opacity:"), m_opacityRow);
+    m_form->addRow(tr("&Opacity:"), m_opacityRow);
+    m_onTop = new QCheckBox(tr("Drawing over the &model"), m_selectionBox);
+    m_onTop->setChecked(true);
+    m_onTop->setToolTip(tr("Show the drawing over the model (with its opacity) or behind it as a backdrop"));
+    m_form->addRow(m_onTop);
+    m_align = new QPushButton(tr("&Align to Drawing"), m_selectionBox);
+    m_align->setCheckable(true);
+    m_align->setToolTip(tr("Show the drawing fixed in the viewport and move the camera until the model matches it "
+                           "(Alt+drag orbit/pan/dolly, Alt+Shift+drag roll). The camera is stored with the drawing."));
+    m_form->addRow(m_align);
+    m_fov = new QDoubleSpinBox(m_selectionBox);
+    m_fov->setRange(1.0, 120.0);
+    m_fov->setDecimals(1);
+    m_fov->setSuffix(QStringLiteral("°"));
+    m_fov->setToolTip(tr("Vertical field of view of the aligned camera (perspective); a narrower angle is a longer "
+                         "focal length"));
+    m_form->addRow(tr("&Field of view:"), m_fov);
+    m_projection = new QComboBox(m_selectionBox);
+    m_projection->addItem(tr("Perspective"), int(model::Projection::Perspective));
+    m_projection->addItem(tr("Orthographic"), int(model::Projection::Orthographic));
+    m_projection->setToolTip(tr("Projection of the aligned camera"));
+    m_form->addRow(tr("&Projection:"), m_projection);
+    m_createKey = new QPushButton(tr("Create &Key from Drawing"), m_selectionBox);
+    m_createKey->setToolTip(tr("Make a key viewpoint in the direction of the drawing's aligned camera, starting as a "
+                               "copy of the base model"));
+    m_form->addRow(m_createKey);
+
+    // Key.
     m_enabled = new QCheckBox(tr("&Enabled in the blend"), m_selectionBox);
     m_enabled->setToolTip(tr("A disabled key keeps its deformation but takes no part in the blend"));
-    form->addRow(m_enabled);
+    m_form->addRow(m_enabled);
+    m_linkedDrawing = new QComboBox(m_selectionBox);
+    m_linkedDrawing->setToolTip(tr("The reference drawing shown while the key is edited"));
+    m_form->addRow(tr("&Drawing:"), m_linkedDrawing);
+    m_editKey = new QPushButton(tr("&Edit Key with the Brush"), m_selectionBox);
+    m_editKey->setCheckable(true);
+    m_editKey->setToolTip(tr("Look through the key's camera with its drawing and deform the key: drag moves in the "
+                             "image plane, Ctrl+drag pushes or pulls along the view, Shift+drag rotates, "
+                             "Ctrl+Shift+drag scales; [ and ] change the radius"));
+    m_form->addRow(m_editKey);
+    m_importDeformation = new QPushButton(tr("&Import Deformation…"), m_selectionBox);
+    m_importDeformation->setToolTip(tr("Use a mesh made in another tool (same vertex count and order) as this key's "
+                                       "deformation"));
+    m_form->addRow(m_importDeformation);
     layout->addWidget(m_selectionBox);
+
+    m_brushBox = new QGroupBox(tr("Brush"), this);
+    auto* brushForm = new QFormLayout(m_brushBox);
+    m_radius = new QDoubleSpinBox(m_brushBox);
+    m_radius->setDecimals(4);
+    m_radius->setRange(1e-4, 1e4);
+    m_radius->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    m_radius->setToolTip(tr("Vertices within this distance of the picked vertex (world units) follow it with the "
+                            "falloff (1 − d/r)²; [ and ] in the viewport"));
+    brushForm->addRow(tr("&Radius:"), m_radius);
+    m_brushMode = new QComboBox(m_brushBox);
+    m_brushMode->addItem(tr("Move"), int(Viewport::BrushMode::Move));
+    m_brushMode->addItem(tr("Smooth"), int(Viewport::BrushMode::Smooth));
+    m_brushMode->setToolTip(tr("Move drags the selection; Smooth relaxes it toward its neighbours while you drag"));
+    brushForm->addRow(tr("&Mode:"), m_brushMode);
+    m_mirror = new QCheckBox(tr("&X mirror"), m_brushBox);
+    m_mirror->setToolTip(tr("Apply every stroke to the mirrored side too (x → −x), for symmetric characters"));
+    brushForm->addRow(m_mirror);
+    layout->addWidget(m_brushBox);
 
     auto* blendBox = new QGroupBox(tr("View-dependent blend"), this);
     auto* blendForm = new QFormLayout(blendBox);
@@ -68,6 +135,10 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_unspecified->setToolTip(tr("How views far from every key are shaped: dummy keys return to the base model "
                                  "along the main axes; cosine modes fade each key out with the angle."));
     blendForm->addRow(tr("&Unspecified regions:"), m_unspecified);
+    m_preview = new QPushButton(tr("&Preview View-Dependent Shape"), blendBox);
+    m_preview->setCheckable(true);
+    m_preview->setToolTip(tr("Show the blend of the keys for the viewport's camera, updated while you orbit (P)"));
+    blendForm->addRow(m_preview);
     layout->addWidget(blendBox);
     layout->addStretch(1);
 
@@ -84,9 +155,86 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         if (!m_updating && m_selection.kind == ScenePanel::ItemKind::Drawing)
             m_document->setDrawingOpacity(m_selection.id, value / 100.0);
     });
+    connect(m_onTop, &QCheckBox::toggled, this, [this](bool on) {
+        if (m_viewport)
+            m_viewport->setOverlayOnTop(on);
+    });
+    connect(m_align, &QPushButton::toggled, this, [this](bool on) {
+        if (m_updating || !m_viewport)
+            return;
+        if (on && m_selection.kind == ScenePanel::ItemKind::Drawing) {
+            m_viewport->setDisplayedKey(0);
+            m_viewport->setOverlayDrawing(m_selection.id);
+            m_viewport->setTool(Viewport::Tool::Align);
+        } else {
+            m_viewport->setTool(Viewport::Tool::Navigate);
+        }
+        refreshTools();
+    });
+    connect(m_fov, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double degrees) {
+        if (m_updating || !m_viewport)
+            return;
+        model::Camera c = m_viewport->camera();
+        c.fovYDegrees = degrees;
+        m_viewport->setCamera(c);
+    });
+    connect(m_projection, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        if (!m_updating && m_viewport)
+            m_viewport->setProjection(model::Projection(m_projection->itemData(index).toInt()));
+    });
+    connect(m_createKey, &QPushButton::clicked, this, [this] {
+        if (m_selection.kind != ScenePanel::ItemKind::Drawing)
+            return;
+        try {
+            if (m_viewport && m_viewport->tool() == Viewport::Tool::Align)
+                m_viewport->setTool(Viewport::Tool::Navigate); // stores the alignment first
+            emit keyCreated(m_document->createKeyFromDrawing(m_selection.id));
+        } catch (const model::EditRefused& e) {
+            emit message(e.message());
+            QMessageBox::information(this, tr("Create Key"), e.message());
+        }
+    });
     connect(m_enabled, &QCheckBox::toggled, this, [this](bool on) {
         if (!m_updating && m_selection.kind == ScenePanel::ItemKind::Key)
             m_document->setKeyEnabled(m_selection.id, on);
+    });
+    connect(m_linkedDrawing, qOverload<int>(&QComboBox::activated), this, [this](int index) {
+        if (m_selection.kind != ScenePanel::ItemKind::Key)
+            return;
+        m_document->linkKeyDrawing(m_selection.id, m_linkedDrawing->itemData(index).toULongLong());
+        if (m_viewport && m_viewport->displayedKey() == m_selection.id)
+            m_viewport->setOverlayDrawing(m_linkedDrawing->itemData(index).toULongLong());
+    });
+    connect(m_editKey, &QPushButton::toggled, this, [this](bool on) {
+        if (m_updating || !m_viewport)
+            return;
+        const model::KeyViewpoint* key
+            = m_selection.kind == ScenePanel::ItemKind::Key ? m_document->data().key(m_selection.id) : nullptr;
+        if (on && key) {
+            // Paper 1, section 3.1.2: deform in the key's camera, with its drawing for reference.
+            m_viewport->setTool(Viewport::Tool::Navigate);
+            m_viewport->setCamera(key->camera);
+            m_viewport->setOverlayDrawing(key->drawingIds.empty() ? 0 : key->drawingIds.front());
+            m_viewport->setDisplayedKey(key->id);
+            m_viewport->setTool(Viewport::Tool::Brush);
+        } else {
+            m_viewport->setTool(Viewport::Tool::Navigate);
+            m_viewport->setDisplayedKey(0);
+        }
+        refreshTools();
+    });
+    connect(m_importDeformation, &QPushButton::clicked, this, &PropertiesPanel::importDeformation);
+    connect(m_radius, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double r) {
+        if (!m_updating && m_viewport)
+            m_viewport->setBrushRadius(r);
+    });
+    connect(m_brushMode, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        if (m_viewport)
+            m_viewport->setBrushMode(Viewport::BrushMode(m_brushMode->itemData(index).toInt()));
+    });
+    connect(m_mirror, &QCheckBox::toggled, this, [this](bool on) {
+        if (m_viewport)
+            m_viewport->setBrushMirrorX(on);
     });
     connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double value) {
         if (m_updating)
@@ -102,19 +250,106 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         blend.unspecified = model::UnspecifiedMode(m_unspecified->itemData(index).toInt());
         m_document->setBlendSettings(blend);
     });
+    connect(m_preview, &QPushButton::toggled, this, [this](bool on) {
+        if (m_updating || !m_viewport)
+            return;
+        if (on) {
+            m_viewport->setTool(Viewport::Tool::Navigate);
+            m_viewport->setOverlayDrawing(0);
+        }
+        m_viewport->setPreview(on);
+        refreshTools();
+    });
     for (auto signal : {&model::Document::meshChanged, &model::Document::drawingsChanged, &model::Document::keysChanged,
              &model::Document::documentReset})
         connect(m_document, signal, this, &PropertiesPanel::refresh);
     connect(m_document, &model::Document::blendChanged, this, &PropertiesPanel::refreshBlend);
     connect(m_document, &model::Document::documentReset, this, &PropertiesPanel::refreshBlend);
+    connect(m_document, &model::Document::meshChanged, this, [this] {
+        // A radius of a few percent of the model is a useful first brush on any scale.
+        if (m_viewport && m_document->hasMesh())
+            m_viewport->setBrushRadius(
+                0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm());
+    });
+    connect(m_document, &model::Document::documentReset, this, [this] {
+        if (m_viewport && m_document->hasMesh())
+            m_viewport->setBrushRadius(
+                0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm());
+    });
     refresh();
     refreshBlend();
 }
 
+void PropertiesPanel::setViewport(Viewport* viewport)
+{
+    m_viewport = viewport;
+    if (!viewport)
+        return;
+    connect(viewport, &Viewport::toolChanged, this, &PropertiesPanel::refreshTools);
+    connect(viewport, &Viewport::brushRadiusChanged, this, [this](double r) {
+        m_updating = true;
+        m_radius->setValue(r);
+        m_updating = false;
+    });
+    connect(viewport, &Viewport::cameraChanged, this, [this] {
+        if (m_fov->hasFocus())
+            return;
+        m_updating = true;
+        m_fov->setValue(m_viewport->camera().fovYDegrees);
+        m_projection->setCurrentIndex(m_projection->findData(int(m_viewport->projection())));
+        m_updating = false;
+    });
+    if (m_document->hasMesh())
+        viewport->setBrushRadius(0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm());
+    m_radius->setValue(viewport->brushRadius());
+    refreshTools();
+}
+
 void PropertiesPanel::showSelection(ScenePanel::Selection selection)
 {
+    const ScenePanel::Selection previous = m_selection;
     m_selection = selection;
+    // Leaving a drawing or key ends the tools that worked on it.
+    if (m_viewport && !(previous == selection)) {
+        if (m_viewport->tool() == Viewport::Tool::Align && selection.kind != ScenePanel::ItemKind::Drawing)
+            m_viewport->setTool(Viewport::Tool::Navigate);
+        if (selection.kind == ScenePanel::ItemKind::Drawing && !m_viewport->isPreview()
+            && m_viewport->tool() != Viewport::Tool::Brush)
+            m_viewport->setOverlayDrawing(selection.id);
+    }
     refresh();
+}
+
+void PropertiesPanel::importDeformation()
+{
+    if (m_selection.kind != ScenePanel::ItemKind::Key)
+        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import Key Deformation"), {}, model::meshFileFilter());
+    if (path.isEmpty())
+        return;
+    try {
+        const QStringList warnings = m_document->importKeyDeformation(m_selection.id, path);
+        for (const QString& w : warnings)
+            emit message(w);
+    } catch (const model::IoError& e) {
+        emit message(e.message());
+        QMessageBox::warning(this, tr("Import Deformation"), e.message());
+    }
+}
+
+void PropertiesPanel::refreshTools()
+{
+    m_updating = true;
+    const bool aligning = m_viewport && m_viewport->tool() == Viewport::Tool::Align;
+    const bool brushing = m_viewport && m_viewport->tool() == Viewport::Tool::Brush;
+    m_align->setChecked(aligning && m_selection.kind == ScenePanel::ItemKind::Drawing);
+    m_editKey->setChecked(
+        brushing && m_selection.kind == ScenePanel::ItemKind::Key && m_viewport->displayedKey() == m_selection.id);
+    m_preview->setChecked(m_viewport && m_viewport->isPreview());
+    m_brushBox->setEnabled(brushing);
+    m_fov->setEnabled(aligning);
+    m_projection->setEnabled(aligning);
+    m_updating = false;
 }
 
 void PropertiesPanel::refresh()
@@ -122,12 +357,13 @@ void PropertiesPanel::refresh()
     m_updating = true;
     const auto& data = m_document->data();
     const QLocale locale;
-    bool nameVisible = false, opacityVisible = false, enabledVisible = false;
+    bool isDrawing = false, isKey = false;
     m_thumbnail->clear();
     m_thumbnail->setVisible(false);
 
     if (m_selection.kind == ScenePanel::ItemKind::Drawing && data.drawing(m_selection.id)) {
         const auto& d = *data.drawing(m_selection.id);
+        isDrawing = true;
         m_selectionBox->setTitle(tr("Reference drawing"));
         m_summary->setText(tr("%1 × %2 pixels, %3, %4")
                                .arg(d.image.width())
@@ -142,9 +378,10 @@ void PropertiesPanel::refresh()
         m_name->setText(d.name);
         m_opacity->setValue(int(std::lround(d.opacity * 100)));
         m_opacityValue->setText(QStringLiteral("%1 %").arg(m_opacity->value()));
-        nameVisible = opacityVisible = true;
+        m_createKey->setEnabled(d.aligned && data.baseMesh);
     } else if (m_selection.kind == ScenePanel::ItemKind::Key && data.key(m_selection.id)) {
         const auto& k = *data.key(m_selection.id);
+        isKey = true;
         m_selectionBox->setTitle(tr("Key viewpoint"));
         QStringList frames;
         for (const auto& [frame, offsets] : k.offsetsByFrame)
@@ -155,7 +392,13 @@ void PropertiesPanel::refresh()
                                    frames.isEmpty() ? tr("No deformation yet") : frames.join('\n')));
         m_name->setText(k.name);
         m_enabled->setChecked(k.enabled);
-        nameVisible = enabledVisible = true;
+        m_linkedDrawing->clear();
+        m_linkedDrawing->addItem(tr("(none)"), QVariant::fromValue<qulonglong>(0));
+        for (const auto& d : data.drawings)
+            m_linkedDrawing->addItem(d.name, QVariant::fromValue<qulonglong>(d.id));
+        const model::ObjectId linked = k.drawingIds.empty() ? 0 : k.drawingIds.front();
+        m_linkedDrawing->setCurrentIndex(
+            std::max(0, m_linkedDrawing->findData(QVariant::fromValue<qulonglong>(linked))));
     } else if (data.baseMesh) {
         const auto& mesh = *data.baseMesh;
         const auto box = algo::boundingBox(mesh.vertices);
@@ -170,14 +413,13 @@ void PropertiesPanel::refresh()
         m_summary->setText(
             tr("No base model. Import a mesh with File > Import Mesh, or drop a mesh file on the window."));
     }
-    m_name->setVisible(nameVisible);
-    m_opacityRow->setVisible(opacityVisible);
-    m_enabled->setVisible(enabledVisible);
-    if (auto* form = qobject_cast<QFormLayout*>(m_selectionBox->layout())) {
-        form->setRowVisible(m_name, nameVisible);
-        form->setRowVisible(m_opacityRow, opacityVisible);
-    }
+    for (QWidget* w : std::initializer_list<QWidget*>{m_opacityRow, m_onTop, m_align, m_fov, m_projection, m_createKey})
+        m_form->setRowVisible(w, isDrawing);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_enabled, m_linkedDrawing, m_editKey, m_importDeformation})
+        m_form->setRowVisible(w, isKey);
+    m_form->setRowVisible(m_name, isDrawing || isKey);
     m_updating = false;
+    refreshTools();
 }
 
 void PropertiesPanel::refreshBlend()

@@ -1,11 +1,12 @@
-// The properties dock: what is selected in the scene (model statistics, a drawing's image and
-// overlay opacity, a key's direction) and the project-wide blend settings. Edits go through the
-// Document; a slider drag is a single undo step.
+// The properties dock: what is selected in the scene (model statistics; a drawing's image,
+// overlay and alignment; a key's direction, drawing, deformation and the brush) and the
+// project-wide blend settings. Edits go through the Document; a slider drag is one undo step.
 #pragma once
 
 #include "celform/model/document.h"
 #include "celform/views/scene_panel.h"
 
+#include <QPointer>
 #include <QWidget>
 
 class QCheckBox;
@@ -15,37 +16,72 @@ class QFormLayout;
 class QGroupBox;
 class QLabel;
 class QLineEdit;
+class QPushButton;
 class QSlider;
 
 namespace celform::views {
+
+class Viewport;
 
 class PropertiesPanel : public QWidget {
     Q_OBJECT
 public:
     explicit PropertiesPanel(model::Document* document, QWidget* parent = nullptr);
+    /// The viewport whose tools (align, brush, preview) the panel drives.
+    void setViewport(Viewport* viewport);
+
+    // The buttons, for shortcuts in menus and for tests.
+    [[nodiscard]] QPushButton* alignButton() const { return m_align; }
+    [[nodiscard]] QPushButton* createKeyButton() const { return m_createKey; }
+    [[nodiscard]] QPushButton* editKeyButton() const { return m_editKey; }
+    [[nodiscard]] QPushButton* previewButton() const { return m_preview; }
 
 public slots:
     void showSelection(celform::views::ScenePanel::Selection selection);
 
+signals:
+    /// A key was made from the selected drawing; the scene can select it.
+    void keyCreated(celform::model::ObjectId key);
+    /// A message for the status bar (refused edits, hints).
+    void message(const QString& text);
+
 private:
     void refresh();
     void refreshBlend();
+    void refreshTools();
+    void importDeformation();
 
     model::Document* m_document;
+    QPointer<Viewport> m_viewport;
     ScenePanel::Selection m_selection;
     bool m_updating = false;
 
     QGroupBox* m_selectionBox;
+    QFormLayout* m_form;
     QLabel* m_summary;
     QLabel* m_thumbnail;
     QLineEdit* m_name;
     QSlider* m_opacity;
     QLabel* m_opacityValue;
-    QCheckBox* m_enabled;
     QWidget* m_opacityRow;
+    QCheckBox* m_onTop;
+    QPushButton* m_align;
+    QDoubleSpinBox* m_fov;
+    QComboBox* m_projection;
+    QPushButton* m_createKey;
+    QCheckBox* m_enabled;
+    QComboBox* m_linkedDrawing;
+    QPushButton* m_editKey;
+    QPushButton* m_importDeformation;
+
+    QGroupBox* m_brushBox;
+    QDoubleSpinBox* m_radius;
+    QComboBox* m_brushMode;
+    QCheckBox* m_mirror;
 
     QDoubleSpinBox* m_sharpness;
     QComboBox* m_unspecified;
+    QPushButton* m_preview;
 };
 
 } // namespace celform::views

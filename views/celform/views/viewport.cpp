@@ -4,6 +4,7 @@
 
 #include "celform/model/document.h"
 
+#include <QPainter>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -15,6 +16,11 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellPicker.h>
+#include <vtkCoordinate.h>
+#include <vtkImageActor.h>
+#include <vtkImageData.h>
+#include <vtkImageProperty.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -36,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace celform::views {
 
@@ -93,6 +100,16 @@ struct Viewport::Vtk {
     vtkNew<vtkPolyDataMapper> gridMapper;
     vtkNew<vtkActor> gridActor;
     vtkNew<vtkCallbackCommand> makeCurrent;
+    // The reference drawing, in a renderer of its own with a parallel camera fitted to the
+    // image height: under the model (layer 0) or over it (layer 2).
+    vtkNew<vtkRenderer> drawingRenderer;
+    vtkNew<vtkImageData> drawingImage;
+    vtkNew<vtkImageActor> drawingActor;
+    qint64 drawingImageKey = 0;
+    vtkNew<vtkCellPicker> picker;
+    vtkSmartPointer<vtkFloatArray> positions;
+    vtkSmartPointer<vtkFloatArray> normals;
+    vtkNew<vtkUnsignedCharArray> colors;
     // Whether the main camera has been placed: VTK does not reset a camera that was touched
     // before the first render (STACK.md pitfall 5), so the first frame depends on our framing.
     bool cameraPlaced = false;
@@ -119,8 +136,11 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     // which must stay single-sampled (see defaultFormat()). FXAA is not an option: its pass
     // re-binds framebuffers behind Qt and the frame comes out black.
     v.window->SetMultiSamples(4);
-    v.window->SetNumberOfLayers(2);
+    // Layers: 0 background (the drawing when it is under the model, else the model), 1 the
+    // model over a drawing, 2 a drawing over the model, 3 the axes triad.
+    v.window->SetNumberOfLayers(4);
     v.window->AddRenderer(v.renderer);
+    v.window->AddRenderer(v.drawingRenderer);
     v.window->AddRenderer(v.triadRenderer);
 
     // VTK asks for the context when it releases resources outside paintGL. An unconditional
@@ -134,6 +154,20 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     v.window->AddObserver(vtkCommand::WindowMakeCurrentEvent, v.makeCurrent);
 
     v.renderer->GradientBackgroundOn();
+    v.drawingRenderer->GradientBackgroundOn();
+    v.drawingRenderer->InteractiveOff();
+    v.drawingRenderer->SetLayer(2);
+    v.drawingRenderer->GetActiveCamera()->ParallelProjectionOn();
+    v.drawingActor->SetInputData(v.drawingImage);
+    v.drawingActor->GetProperty()->SetInterpolationTypeToLinear();
+    v.drawingActor->VisibilityOff();
+    v.drawingActor->PickableOff();
+    v.drawingRenderer->AddActor(v.drawingActor);
+    v.picker->SetTolerance(0.0005);
+    v.picker->PickFromListOn();
+    v.picker->AddPickList(v.meshActor);
+    v.colors->SetName("BrushFalloff");
+    v.colors->SetNumberOfComponents(3);
     setBackgroundColors(QColor(200, 201, 204), QColor(150, 151, 155));
     // A three-light kit reads shapes far better than the single default headlight.
     vtkNew<vtkLightKit> lights;
@@ -142,6 +176,7 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
 
     v.meshMapper->SetInputData(v.mesh);
     v.meshMapper->ScalarVisibilityOff();
+    v.meshMapper->SetColorModeToDirectScalars();
     v.meshActor->SetMapper(v.meshMapper);
     vtkProperty* material = v.meshActor->GetProperty();
     material->SetInterpolationToPhong();
@@ -161,7 +196,7 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
 
     // The triad lives in a second layer with its own camera that only copies the orientation of
     // the main one, so it stays the same size whatever the zoom.
-    v.triadRenderer->SetLayer(1);
+    v.triadRenderer->SetLayer(3);
     v.triadRenderer->InteractiveOff();
     const double axisColors[3][3] = {{0.85, 0.25, 0.22}, {0.35, 0.70, 0.25}, {0.25, 0.45, 0.85}};
     for (int axis = 0; axis < 3; ++axis) {
@@ -181,10 +216,33 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
             update();
         });
         connect(m_document, &model::Document::documentReset, this, [this] {
+            m_displayedKey = 0;
+            m_overlayDrawing = 0;
+            m_selection = {};
             rebuildMesh();
+            updateOverlay();
             resetView();
         });
+        connect(m_document, &model::Document::keysChanged, this, [this] {
+            if (m_displayedKey && !m_document->data().key(m_displayedKey)) {
+                m_displayedKey = 0;
+                m_selection = {};
+            }
+            if (m_displayedKey || m_preview || m_observed)
+                updateShape();
+        });
+        connect(m_document, &model::Document::blendChanged, this, [this] {
+            if (m_preview || m_observed)
+                updateShape();
+        });
+        connect(m_document, &model::Document::drawingsChanged, this, &Viewport::updateOverlay);
     }
+    m_alignCommit.setSingleShot(true);
+    m_alignCommit.setInterval(300);
+    connect(&m_alignCommit, &QTimer::timeout, this, [this] {
+        if (m_tool == Tool::Align && m_overlayDrawing && m_document)
+            m_document->setDrawingCamera(m_overlayDrawing, camera());
+    });
     rebuildMesh();
     resetView();
 }
@@ -314,8 +372,19 @@ void Viewport::cameraEdited()
 {
     m_framed = false;
     m_vtk->renderer->GetActiveCamera()->OrthogonalizeViewUp();
+    if (m_preview)
+        updateShape();
+    if (m_tool == Tool::Align && m_overlayDrawing)
+        m_alignCommit.start();
     update();
     emit cameraChanged();
+}
+
+void Viewport::roll(double degrees)
+{
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    cam->Roll(degrees);
+    cameraEdited();
 }
 
 void Viewport::orbit(double yawDegrees, double pitchDegrees)
@@ -402,6 +471,8 @@ void Viewport::setBackgroundColors(const QColor& top, const QColor& bottom)
 {
     m_vtk->renderer->SetBackground2(top.redF(), top.greenF(), top.blueF());
     m_vtk->renderer->SetBackground(bottom.redF(), bottom.greenF(), bottom.blueF());
+    m_vtk->drawingRenderer->SetBackground2(top.redF(), top.greenF(), top.blueF());
+    m_vtk->drawingRenderer->SetBackground(bottom.redF(), bottom.greenF(), bottom.blueF());
     // The grid is a shade of the background: visible, never louder than the model.
     const double r = 0.5 * (top.redF() + bottom.redF()), g = 0.5 * (top.greenF() + bottom.greenF()),
                  b = 0.5 * (top.blueF() + bottom.blueF());
@@ -445,19 +516,20 @@ void Viewport::rebuildMesh()
     vtkNew<vtkCellArray> triangles;
     triangles->SetData(offsets, connectivity);
 
-    const algo::Positions normals = algo::vertexNormals(mesh->vertices, mesh->faces);
-    vtkNew<vtkFloatArray> normalArray;
-    normalArray->SetName("Normals");
-    normalArray->SetNumberOfComponents(3);
-    normalArray->SetNumberOfTuples(vertexCount);
-    std::memcpy(normalArray->GetPointer(0), normals.data(), sizeof(float) * 3 * size_t(vertexCount));
+    v.normals = vtkSmartPointer<vtkFloatArray>::New();
+    v.normals->SetName("Normals");
+    v.normals->SetNumberOfComponents(3);
+    v.normals->SetNumberOfTuples(vertexCount);
+    v.positions = positions;
 
     v.mesh->Initialize();
     v.mesh->SetPoints(points);
     v.mesh->SetPolys(triangles);
-    v.mesh->GetPointData()->SetNormals(normalArray);
-    v.mesh->Modified();
+    v.mesh->GetPointData()->SetNormals(v.normals);
     v.meshActor->VisibilityOn();
+    m_selection = {};
+    m_mirror.clear();
+    updateShape();
 
     m_bounds = algo::boundingBox(mesh->vertices);
     if (m_bounds.isEmpty() || !m_bounds.min().allFinite() || !m_bounds.max().allFinite())
@@ -518,6 +590,350 @@ void Viewport::syncTriadCamera()
     triad->ParallelProjectionOn();
     triad->SetParallelScale(1.3);
     triad->SetClippingRange(0.1, 10.0);
+}
+
+// --- displayed shape ------------------------------------------------------------------------
+
+void Viewport::setDisplayedKey(model::ObjectId key)
+{
+    if (key == m_displayedKey && !m_preview)
+        return;
+    m_displayedKey = key;
+    m_preview = false;
+    m_selection = {};
+    updateShape();
+}
+
+void Viewport::setPreview(bool on)
+{
+    if (on == m_preview)
+        return;
+    m_preview = on;
+    if (on)
+        m_displayedKey = 0;
+    m_selection = {};
+    updateShape();
+}
+
+void Viewport::setObserved(Viewport* driver)
+{
+    if (m_observed)
+        disconnect(m_observed, nullptr, this, nullptr);
+    m_observed = driver;
+    if (driver)
+        connect(driver, &Viewport::cameraChanged, this, &Viewport::updateShape);
+    updateShape();
+}
+
+Eigen::Vector3d Viewport::viewDirection() const
+{
+    if (!m_document || !m_document->hasMesh())
+        return Eigen::Vector3d::Zero();
+    return m_document->blender().viewDirection(m_document->data(), camera().eye);
+}
+
+void Viewport::updateShape()
+{
+    Vtk& v = *m_vtk;
+    if (!m_document || !m_document->hasMesh() || !v.positions)
+        return;
+    const model::ProjectData& data = m_document->data();
+    const model::KeyViewpoint* key = m_displayedKey ? data.key(m_displayedKey) : nullptr;
+    if (m_observed)
+        m_document->blender().shape(data, m_observed->viewDirection(), 0, m_shape);
+    else if (m_preview)
+        m_document->blender().shape(data, viewDirection(), 0, m_shape);
+    else if (key)
+        m_shape = data.keyShape(*key, 0);
+    else
+        m_shape = data.baseMesh->vertices;
+
+    const auto count = size_t(m_shape.rows());
+    if (v.positions->GetNumberOfTuples() != vtkIdType(count))
+        return; // a mesh change is on its way: rebuildMesh() calls here again
+    std::memcpy(v.positions->GetPointer(0), m_shape.data(), sizeof(float) * 3 * count);
+    v.positions->Modified();
+    const algo::Positions normals = algo::vertexNormals(m_shape, data.baseMesh->faces);
+    std::memcpy(v.normals->GetPointer(0), normals.data(), sizeof(float) * 3 * count);
+    v.normals->Modified();
+    v.mesh->Modified();
+    updateSelectionColors();
+    update();
+}
+
+void Viewport::updateSelectionColors()
+{
+    Vtk& v = *m_vtk;
+    if (m_selection.indices.empty() || m_shape.rows() == 0) {
+        v.meshMapper->ScalarVisibilityOff();
+        v.mesh->GetPointData()->SetScalars(nullptr);
+        update();
+        return;
+    }
+    // Paper 1, section 3.1.2: the selected vertices are drawn in red, here shaded by their falloff.
+    v.colors->SetNumberOfTuples(m_shape.rows());
+    unsigned char* c = v.colors->GetPointer(0);
+    const unsigned char base[3] = {204, 196, 184};
+    for (Eigen::Index i = 0; i < m_shape.rows(); ++i)
+        std::memcpy(c + 3 * i, base, 3);
+    auto paint = [c, &base](const algo::BrushSelection& selection) {
+        for (size_t k = 0; k < selection.indices.size(); ++k) {
+            const float w = selection.weights[k];
+            unsigned char* p = c + 3 * size_t(selection.indices[k]);
+            const float red[3] = {230.f, 40.f, 30.f};
+            for (int j = 0; j < 3; ++j)
+                p[j] = static_cast<unsigned char>(std::lround(base[j] + (red[j] - base[j]) * (0.25f + 0.75f * w)));
+        }
+    };
+    paint(m_selection);
+    paint(m_mirrorSelection);
+    v.colors->Modified();
+    v.mesh->GetPointData()->SetScalars(v.colors);
+    v.meshMapper->ScalarVisibilityOn();
+    update();
+}
+
+// --- reference drawing overlay ----------------------------------------------------------------
+
+void Viewport::setOverlayDrawing(model::ObjectId drawing)
+{
+    if (drawing == m_overlayDrawing)
+        return;
+    m_overlayDrawing = drawing;
+    updateOverlay();
+}
+
+void Viewport::setOverlayOnTop(bool onTop)
+{
+    if (onTop == m_overlayOnTop)
+        return;
+    m_overlayOnTop = onTop;
+    updateOverlay();
+}
+
+void Viewport::updateOverlay()
+{
+    Vtk& v = *m_vtk;
+    const model::Drawing* drawing
+        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
+    if (!drawing) {
+        m_overlayDrawing = 0;
+        if (m_tool == Tool::Align)
+            setTool(Tool::Navigate);
+    }
+    if (!drawing || drawing->image.isNull()) {
+        v.drawingActor->VisibilityOff();
+        v.renderer->SetLayer(0);
+        v.drawingRenderer->SetLayer(2);
+        update();
+        return;
+    }
+    if (drawing->image.cacheKey() != v.drawingImageKey) {
+        // VTK images start at the bottom row: copy the rows upside down.
+        const QImage rgba = drawing->image.convertToFormat(QImage::Format_RGBA8888);
+        v.drawingImage->SetDimensions(rgba.width(), rgba.height(), 1);
+        v.drawingImage->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+        auto* dst = static_cast<unsigned char*>(v.drawingImage->GetScalarPointer());
+        for (int y = 0; y < rgba.height(); ++y)
+            std::memcpy(dst + size_t(y) * size_t(rgba.width()) * 4, rgba.constScanLine(rgba.height() - 1 - y),
+                size_t(rgba.width()) * 4);
+        v.drawingImage->Modified();
+        v.drawingImageKey = drawing->image.cacheKey();
+        // The image's height fills the view, as the vertical field of view of an aligned camera.
+        vtkCamera* cam = v.drawingRenderer->GetActiveCamera();
+        const double cx = 0.5 * (rgba.width() - 1), cy = 0.5 * (rgba.height() - 1);
+        cam->SetFocalPoint(cx, cy, 0.0);
+        cam->SetPosition(cx, cy, 1000.0);
+        cam->SetViewUp(0.0, 1.0, 0.0);
+        cam->SetParallelScale(0.5 * rgba.height());
+        cam->SetClippingRange(1.0, 2000.0);
+    }
+    v.drawingActor->VisibilityOn();
+    v.drawingActor->SetOpacity(m_overlayOnTop ? std::clamp(drawing->opacity, 0.0, 1.0) : 1.0);
+    if (m_overlayOnTop) {
+        v.renderer->SetLayer(0);
+        v.drawingRenderer->SetLayer(2);
+    } else {
+        v.drawingRenderer->SetLayer(0);
+        v.renderer->SetLayer(1);
+    }
+    update();
+}
+
+// --- tools ----------------------------------------------------------------------------------
+
+void Viewport::setTool(Tool tool)
+{
+    if (tool == m_tool)
+        return;
+    if (m_tool == Tool::Align && m_alignCommit.isActive()) {
+        m_alignCommit.stop();
+        if (m_overlayDrawing && m_document)
+            m_document->setDrawingCamera(m_overlayDrawing, camera());
+    }
+    m_tool = tool;
+    if (tool == Tool::Align && m_document && m_overlayDrawing) {
+        // Start from the stored alignment, so refining it does not jump.
+        const model::Drawing* drawing = m_document->data().drawing(m_overlayDrawing);
+        if (drawing && drawing->aligned)
+            setCamera(drawing->camera);
+    }
+    if (tool != Tool::Brush) {
+        m_selection = {};
+        m_mirrorSelection = {};
+        updateSelectionColors();
+    }
+    setCursor(tool == Tool::Brush ? Qt::CrossCursor : Qt::ArrowCursor);
+    emit toolChanged(tool);
+}
+
+void Viewport::setBrushRadius(double radius)
+{
+    if (!(radius > 0.0) || !std::isfinite(radius) || radius == m_brushRadius)
+        return;
+    m_brushRadius = radius;
+    emit brushRadiusChanged(radius);
+}
+
+std::int64_t Viewport::pickVertex(const QPointF& position)
+{
+    Vtk& v = *m_vtk;
+    if (!m_initialized || m_shape.rows() == 0 || !v.meshActor->GetVisibility())
+        return -1;
+    const qreal dpr = devicePixelRatioF();
+    const double x = position.x() * dpr, y = (height() - position.y()) * dpr;
+    makeCurrent();
+    v.renderer->ResetCameraClippingRange();
+    const int hit = v.picker->Pick(x, y, 0.0, v.renderer);
+    doneCurrent();
+    const vtkIdType cell = v.picker->GetCellId();
+    if (!hit || cell < 0 || cell >= vtkIdType(m_document->data().baseMesh->faceCount()))
+        return -1;
+    const Eigen::Vector3d p = toEigen(v.picker->GetPickPosition());
+    const auto& faces = m_document->data().baseMesh->faces;
+    std::int64_t best = -1;
+    double bestDistance = std::numeric_limits<double>::max();
+    for (int k = 0; k < 3; ++k) {
+        const auto vertex = faces(cell, k);
+        const double d = (m_shape.row(vertex).cast<double>().transpose() - p).squaredNorm();
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = vertex;
+        }
+    }
+    return best;
+}
+
+double Viewport::worldUnitsPerPixel(const Eigen::Vector3d& point) const
+{
+    const model::Camera c = camera();
+    double viewHeight = c.orthoHeight;
+    if (c.projection == model::Projection::Perspective) {
+        const double depth = (point - c.eye).dot(c.forward());
+        viewHeight = 2.0 * std::max(depth, 1e-9) * std::tan(radians(c.fovYDegrees / 2.0));
+    }
+    return viewHeight / double(std::max(height(), 1));
+}
+
+QPointF Viewport::projectToWidget(const Eigen::Vector3d& point) const
+{
+    vtkNew<vtkCoordinate> coordinate;
+    coordinate->SetCoordinateSystemToWorld();
+    coordinate->SetValue(point.x(), point.y(), point.z());
+    const double* display = coordinate->GetComputedDoubleDisplayValue(m_vtk->renderer);
+    const qreal dpr = devicePixelRatioF();
+    return {display[0] / dpr, height() - display[1] / dpr};
+}
+
+void Viewport::beginBrush(const QPointF& position, Qt::KeyboardModifiers)
+{
+    const model::KeyViewpoint* key = m_document ? m_document->data().key(m_displayedKey) : nullptr;
+    if (!key) {
+        emit message(tr("Choose a key to deform first (Scene panel, then Edit Key)."));
+        return;
+    }
+    const std::int64_t picked = pickVertex(position);
+    if (picked < 0) {
+        m_selection = {};
+        m_mirrorSelection = {};
+        updateSelectionColors();
+        return;
+    }
+    const algo::VertexGrid grid(m_shape);
+    m_selection = algo::selectForBrush(m_shape, grid, std::uint32_t(picked), m_brushRadius);
+    m_mirrorSelection = {};
+    if (m_brushMirror) {
+        if (m_mirror.size() != size_t(m_shape.rows())) {
+            const double diagonal = algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm();
+            m_mirror = algo::mirrorMap(m_document->data().baseMesh->vertices, 1e-4 * diagonal);
+        }
+        const std::int32_t twin = m_mirror[size_t(picked)];
+        if (twin >= 0 && twin != picked)
+            m_mirrorSelection = algo::selectForBrush(m_shape, grid, std::uint32_t(twin), m_brushRadius);
+    }
+    m_strokeId = m_document->newStrokeId();
+    m_strokeUnitsPerPixel = worldUnitsPerPixel(m_shape.row(picked).cast<double>().transpose());
+    updateSelectionColors();
+}
+
+void Viewport::brushMove(const QPointF& delta, Qt::KeyboardModifiers modifiers)
+{
+    if (m_strokeId == 0 || m_selection.indices.empty())
+        return;
+    const model::ProjectData& data = m_document->data();
+    const model::Camera c = camera();
+    const algo::ImageFrame frame{c.right(), c.trueUp(), c.forward()};
+    // The mirror image of the frame: the twin selection moves as the reflection of the first.
+    const Eigen::Vector3d flip(-1.0, 1.0, 1.0);
+    const algo::ImageFrame mirrored{
+        -frame.right.cwiseProduct(flip), frame.up.cwiseProduct(flip), frame.forward.cwiseProduct(flip)};
+    const double units = m_strokeUnitsPerPixel;
+    auto displace = [&](const algo::BrushSelection& selection, const algo::ImageFrame& f) {
+        if (m_brushMode == BrushMode::Smooth)
+            return algo::brushSmooth(selection, m_shape, data.baseMesh->faces, 0.25);
+        const bool ctrl = modifiers & Qt::ControlModifier, shift = modifiers & Qt::ShiftModifier;
+        if (ctrl && shift)
+            return algo::brushScale(selection, m_shape, f, std::exp(0.005 * delta.x()));
+        if (shift)
+            return algo::brushRotate(selection, m_shape, f, radians(-0.5 * delta.x()));
+        if (ctrl)
+            return algo::brushPush(selection, f, -delta.y() * units);
+        return algo::brushDrag(selection, f, delta.x() * units, -delta.y() * units);
+    };
+    algo::Positions moves = displace(m_selection, frame);
+    std::vector<std::uint32_t> indices = m_selection.indices;
+    if (!m_mirrorSelection.indices.empty()) {
+        const algo::Positions twinMoves = displace(m_mirrorSelection, mirrored);
+        // Union of the two ascending lists; where both touch a vertex the first selection wins.
+        std::vector<std::uint32_t> merged;
+        algo::Positions mergedMoves(Eigen::Index(indices.size() + m_mirrorSelection.indices.size()), 3);
+        size_t i = 0, j = 0;
+        while (i < indices.size() || j < m_mirrorSelection.indices.size()) {
+            const bool takeFirst = j == m_mirrorSelection.indices.size()
+                || (i < indices.size() && indices[i] <= m_mirrorSelection.indices[j]);
+            if (takeFirst) {
+                if (j < m_mirrorSelection.indices.size() && m_mirrorSelection.indices[j] == indices[i])
+                    ++j;
+                mergedMoves.row(Eigen::Index(merged.size())) = moves.row(Eigen::Index(i));
+                merged.push_back(indices[i++]);
+            } else {
+                mergedMoves.row(Eigen::Index(merged.size())) = twinMoves.row(Eigen::Index(j));
+                merged.push_back(m_mirrorSelection.indices[j++]);
+            }
+        }
+        mergedMoves.conservativeResize(Eigen::Index(merged.size()), 3);
+        indices = std::move(merged);
+        moves = std::move(mergedMoves);
+    }
+    const model::KeyViewpoint* key = data.key(m_displayedKey);
+    if (!key)
+        return;
+    m_document->displaceKeyVertices(m_displayedKey, 0, indices, moves, m_strokeId, tr("Brush “%1”").arg(key->name));
+}
+
+void Viewport::endBrush()
+{
+    m_strokeId = 0;
 }
 
 // --- OpenGL ---------------------------------------------------------------------------------
@@ -590,7 +1006,9 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     const Qt::KeyboardModifiers mods = event->modifiers();
     const Qt::MouseButton button = event->button();
     Drag drag = Drag::None;
-    if (mods & Qt::AltModifier) {
+    if ((mods & Qt::AltModifier) && (mods & Qt::ShiftModifier) && button == Qt::LeftButton) {
+        drag = Drag::Roll; // for matching a drawing's tilt (paper 1, section 3.1.1)
+    } else if (mods & Qt::AltModifier) {
         // Maya: Alt + left orbit, middle pan, right dolly.
         if (button == Qt::LeftButton)
             drag = Drag::Orbit;
@@ -606,6 +1024,9 @@ void Viewport::mousePressEvent(QMouseEvent* event)
             drag = Drag::Dolly;
         else
             drag = Drag::Orbit;
+    } else if (button == Qt::LeftButton && m_tool == Tool::Brush) {
+        drag = Drag::Brush;
+        beginBrush(event->position(), mods);
     }
     if (drag == Drag::None) {
         QOpenGLWidget::mousePressEvent(event);
@@ -624,6 +1045,10 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     case Drag::Dolly:
         setCursor(Qt::SizeVerCursor);
         break;
+    case Drag::Roll:
+        setCursor(Qt::SizeHorCursor);
+        break;
+    case Drag::Brush:
     case Drag::None:
         break;
     }
@@ -638,6 +1063,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
     }
     if (!(event->buttons() & m_dragButton)) {
         // The release went elsewhere (a popup, a window manager grab): end the drag here.
+        if (m_drag == Drag::Brush)
+            endBrush();
         m_drag = Drag::None;
         m_dragButton = Qt::NoButton;
         unsetCursor();
@@ -658,6 +1085,12 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
     case Drag::Dolly:
         dolly(std::exp(-kDollyPerPixel * (delta.x() - delta.y())));
         break;
+    case Drag::Roll:
+        roll(delta.x() * kOrbitDegreesPerPixel);
+        break;
+    case Drag::Brush:
+        brushMove(delta, event->modifiers());
+        break;
     case Drag::None:
         break;
     }
@@ -667,6 +1100,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
 void Viewport::mouseReleaseEvent(QMouseEvent* event)
 {
     if (m_drag != Drag::None && event->button() == m_dragButton) {
+        if (m_drag == Drag::Brush)
+            endBrush();
         m_drag = Drag::None;
         m_dragButton = Qt::NoButton;
         unsetCursor();
@@ -696,6 +1131,13 @@ void Viewport::keyPressEvent(QKeyEvent* event)
     }
     if (event->key() == Qt::Key_Home) {
         resetView();
+        event->accept();
+        return;
+    }
+    // Krita's and Photoshop's brush-size keys.
+    if (event->key() == Qt::Key_BracketLeft || event->key() == Qt::Key_BracketRight) {
+        setBrushRadius(m_brushRadius * (event->key() == Qt::Key_BracketRight ? 1.25 : 0.8));
+        emit message(tr("Brush radius %1").arg(m_brushRadius, 0, 'g', 3));
         event->accept();
         return;
     }

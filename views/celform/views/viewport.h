@@ -2,13 +2,17 @@
 // document's base model, with Maya-style navigation handled here rather than by a VTK interactor.
 #pragma once
 
+#include "celform/algorithms/brush.h"
 #include "celform/model/camera.h"
+#include "celform/model/project_data.h"
 
 #include <QColor>
 #include <QImage>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QPointer>
 #include <QSurfaceFormat>
+#include <QTimer>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -47,6 +51,52 @@ public:
     /// Centre of the frame-all bounds, moved by panning: the point orbit turns around.
     [[nodiscard]] Eigen::Vector3d pivot() const { return m_pivot; }
 
+    // --- what is shown (paper 1, section 3) ------------------------------------------------
+    /// Shows a key's deformed shape (0: the base model). Leaves preview mode.
+    void setDisplayedKey(model::ObjectId key);
+    [[nodiscard]] model::ObjectId displayedKey() const { return m_displayedKey; }
+    /// Preview mode: the shape is the view-dependent blend for this viewport's camera, updated
+    /// live while orbiting (paper 1, section 3.2).
+    void setPreview(bool on);
+    [[nodiscard]] bool isPreview() const { return m_preview; }
+    /// Observer mode: shows the blend for another viewport's camera from this one's (paper 1,
+    /// figure 6, bottom row). Null ends it.
+    void setObserved(Viewport* driver);
+    /// The view direction of this camera, from the base centroid towards the eye (DESIGN.md).
+    [[nodiscard]] Eigen::Vector3d viewDirection() const;
+    /// The vertex positions on screen now (#V by 3): base, key or blend.
+    [[nodiscard]] const algo::Positions& displayedShape() const { return m_shape; }
+
+    /// A reference drawing fixed in the viewport (0: none), its height filling the view, so a
+    /// camera aligned here matches the drawing (paper 1, section 3.1.1).
+    void setOverlayDrawing(model::ObjectId drawing);
+    [[nodiscard]] model::ObjectId overlayDrawing() const { return m_overlayDrawing; }
+    /// Over the model (with the drawing's opacity) or under it, as a backdrop.
+    void setOverlayOnTop(bool onTop);
+    [[nodiscard]] bool overlayOnTop() const { return m_overlayOnTop; }
+
+    // --- tools ------------------------------------------------------------------------------
+    enum class Tool {
+        Navigate, ///< mouse only navigates
+        Align, ///< navigation edits the overlay drawing's camera (one undo step per gesture)
+        Brush, ///< left drag deforms the displayed key (paper 1, section 3.1.2)
+    };
+    enum class BrushMode { Move, Smooth };
+    void setTool(Tool tool);
+    [[nodiscard]] Tool tool() const { return m_tool; }
+    void setBrushRadius(double radius);
+    [[nodiscard]] double brushRadius() const { return m_brushRadius; }
+    void setBrushMode(BrushMode mode) { m_brushMode = mode; }
+    [[nodiscard]] BrushMode brushMode() const { return m_brushMode; }
+    void setBrushMirrorX(bool on) { m_brushMirror = on; }
+    [[nodiscard]] bool brushMirrorX() const { return m_brushMirror; }
+    /// The vertex under a widget position (logical pixels) on the displayed shape, or -1.
+    [[nodiscard]] std::int64_t pickVertex(const QPointF& position);
+    /// World units per logical pixel at a point's depth (for brush drags and tests).
+    [[nodiscard]] double worldUnitsPerPixel(const Eigen::Vector3d& point) const;
+    /// Projects a model point to widget coordinates (logical pixels, y down).
+    [[nodiscard]] QPointF projectToWidget(const Eigen::Vector3d& point) const;
+
 public slots:
     /// Keeps the view direction and fits the whole model in the view.
     void frameAll();
@@ -56,6 +106,10 @@ public slots:
 signals:
     /// Emitted after every navigation step and every programmatic camera change.
     void cameraChanged();
+    void brushRadiusChanged(double radius);
+    void toolChanged(celform::views::Viewport::Tool tool);
+    /// A message for the status bar (brush refused, nothing picked, ...).
+    void message(const QString& text);
 
 protected:
     void initializeGL() override;
@@ -69,10 +123,18 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan, Dolly };
+    enum class Drag { None, Orbit, Pan, Dolly, Roll, Brush };
 
     void releaseGraphics();
     void rebuildMesh();
+    /// Recomputes m_shape for the current source and uploads positions and normals.
+    void updateShape();
+    void updateOverlay();
+    void updateSelectionColors();
+    void roll(double degrees);
+    void beginBrush(const QPointF& position, Qt::KeyboardModifiers modifiers);
+    void brushMove(const QPointF& delta, Qt::KeyboardModifiers modifiers);
+    void endBrush();
     void rebuildGrid();
     void updateTriadViewport();
     void syncTriadCamera();
@@ -94,6 +156,24 @@ private:
     int m_renderCount = 0;
     bool m_framed = false; ///< the camera is as frameAll() left it, not moved since
     bool m_initialized = false;
+
+    algo::Positions m_shape; ///< the displayed positions
+    model::ObjectId m_displayedKey = 0;
+    bool m_preview = false;
+    QPointer<Viewport> m_observed;
+    model::ObjectId m_overlayDrawing = 0;
+    bool m_overlayOnTop = true;
+
+    Tool m_tool = Tool::Navigate;
+    QTimer m_alignCommit; ///< stores the aligned camera once navigation settles
+    double m_brushRadius = 0.1;
+    BrushMode m_brushMode = BrushMode::Move;
+    bool m_brushMirror = false;
+    algo::BrushSelection m_selection;
+    std::vector<std::int32_t> m_mirror; ///< mirror map of the base, built on demand
+    algo::BrushSelection m_mirrorSelection;
+    int m_strokeId = 0;
+    double m_strokeUnitsPerPixel = 0.0;
 };
 
 } // namespace celform::views

@@ -1,0 +1,105 @@
+// Blend evaluation over the document's keys.
+#include "celform/model/view_blend.h"
+
+#include "celform/algorithms/blend.h"
+
+#include <QCoreApplication>
+
+namespace celform::model {
+namespace {
+
+algo::UnspecifiedRegions toAlgo(UnspecifiedMode mode)
+{
+    switch (mode) {
+    case UnspecifiedMode::Cosine:
+        return algo::UnspecifiedRegions::Cosine;
+    case UnspecifiedMode::Cosine2:
+        return algo::UnspecifiedRegions::Cosine2;
+    case UnspecifiedMode::Dummy:
+        break;
+    }
+    return algo::UnspecifiedRegions::Dummy;
+}
+
+} // namespace
+
+bool BlendEvaluator::update(const ProjectData& data, QString* error)
+{
+    std::vector<ObjectId> ids;
+    std::vector<Eigen::Vector3d> directions;
+    for (const auto& key : data.keys) {
+        if (!key.enabled)
+            continue;
+        ids.push_back(key.id);
+        directions.push_back(key.direction);
+    }
+    if (m_built && ids == m_keyIds && directions == m_directions && m_mode == data.blend.unspecified)
+        return m_sphere.has_value();
+    m_keyIds = std::move(ids);
+    m_directions = std::move(directions);
+    m_mode = data.blend.unspecified;
+    m_built = true;
+    std::string message;
+    m_sphere = algo::ViewSphere::build(m_directions, toAlgo(m_mode), &message);
+    if (!m_sphere && error)
+        *error = QString::fromStdString(message);
+    return m_sphere.has_value();
+}
+
+BlendResult BlendEvaluator::weights(const ProjectData& data, const Eigen::Vector3d& viewDirection) const
+{
+    Q_UNUSED(data);
+    BlendResult result;
+    if (!m_sphere)
+        return result;
+    result.raw = m_sphere->blend(viewDirection, data.blend.sharpness);
+    for (const auto& kw : result.raw.weights) {
+        if (kw.weight <= 0.0)
+            continue;
+        result.shares.push_back({m_keyIds[std::size_t(kw.key)], kw.weight});
+        result.baseShare -= kw.weight;
+    }
+    return result;
+}
+
+void BlendEvaluator::shape(
+    const ProjectData& data, const Eigen::Vector3d& viewDirection, int frame, algo::Positions& out) const
+{
+    Q_ASSERT(data.baseMesh);
+    const BlendResult blend = weights(data, viewDirection);
+    std::vector<algo::WeightedOffsets> parts;
+    for (const KeyShare& share : blend.shares) {
+        const KeyViewpoint* key = data.key(share.key);
+        const SparseOffsets* offsets = key ? ProjectData::offsetsAt(*key, frame) : nullptr;
+        if (!offsets || offsets->indices.empty())
+            continue;
+        algo::OffsetsView view;
+        view.indices = offsets->indices.data();
+        view.offsets = offsets->deltas.front().data();
+        view.count = offsets->indices.size();
+        view.dense = view.count == std::size_t(data.baseMesh->vertexCount());
+        parts.push_back({view, float(share.weight)});
+    }
+    algo::blendShape(data.baseMesh->vertices, parts, out);
+}
+
+Eigen::Vector3d BlendEvaluator::viewDirection(const ProjectData& data, const Eigen::Vector3d& eye)
+{
+    if (data.baseMesh != m_centroidMesh) {
+        m_centroidMesh = data.baseMesh;
+        m_centroid = data.baseMesh ? algo::centroid(data.baseMesh->vertices) : Eigen::Vector3d::Zero();
+    }
+    const Eigen::Vector3d d = eye - m_centroid;
+    const double n = d.norm();
+    return n > 0 && std::isfinite(n) ? Eigen::Vector3d(d / n) : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d viewDirectionFromEye(const ProjectData& data, const Eigen::Vector3d& eye)
+{
+    const Eigen::Vector3d centre = data.baseMesh ? algo::centroid(data.baseMesh->vertices) : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d d = eye - centre;
+    const double n = d.norm();
+    return n > 0 && std::isfinite(n) ? Eigen::Vector3d(d / n) : Eigen::Vector3d::Zero();
+}
+
+} // namespace celform::model

@@ -1,0 +1,232 @@
+// Key viewpoints in the document (paper 1, section 3): keys from cameras and drawings, brush
+// strokes as single undo steps, imported deformations, and the blended shape.
+#include "test_support.h"
+
+#include "celform/algorithms/brush.h"
+#include "celform/model/document.h"
+#include "celform/model/io_error.h"
+#include "celform/model/mesh_io.h"
+#include "celform/model/project_file.h"
+
+#include <QTemporaryDir>
+
+using namespace celform;
+using namespace celform::model;
+
+namespace {
+
+/// A unit octahedron around the origin: centroid 0, so view directions are eye directions.
+std::shared_ptr<algo::TriMesh> octahedron()
+{
+    auto m = std::make_shared<algo::TriMesh>();
+    m->vertices.resize(6, 3);
+    m->vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
+    m->faces.resize(8, 3);
+    m->faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
+    return m;
+}
+
+Camera cameraAt(const Eigen::Vector3d& eye)
+{
+    Camera c;
+    c.eye = eye;
+    c.target = Eigen::Vector3d::Zero();
+    c.up = std::abs(eye.normalized().y()) > 0.99 ? Eigen::Vector3d(0, 0, -1) : Eigen::Vector3d(0, 1, 0);
+    return c;
+}
+
+} // namespace
+
+class TestKeys : public QObject {
+    Q_OBJECT
+
+private:
+    Document m_doc;
+
+private slots:
+    void init()
+    {
+        ProjectData data;
+        data.baseMesh = octahedron();
+        data.baseMeshName = QStringLiteral("octahedron");
+        m_doc.reset(std::move(data));
+    }
+
+    void keyDirectionComesFromCameraAndCentroid()
+    {
+        const ObjectId id = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        QVERIFY(m_doc.data().key(id)->direction.isApprox(Eigen::Vector3d(0, 0, 1)));
+        // Offset target: the direction still runs from the centroid towards the eye.
+        Camera c = cameraAt({3, 0, 4});
+        c.target = Eigen::Vector3d(1, 1, 0);
+        const ObjectId k2 = m_doc.createKey(QStringLiteral("side"), c);
+        QVERIFY(m_doc.data().key(k2)->direction.isApprox(Eigen::Vector3d(0.6, 0, 0.8)));
+        QCOMPARE(m_doc.data().key(k2)->offsetsByFrame.count(0), std::size_t(1));
+    }
+
+    void duplicateDirectionIsRefused()
+    {
+        m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ProjectData before = m_doc.data();
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.createKey(QStringLiteral("again"), cameraAt({0, 0, 9})));
+        QVERIFY(m_doc.data() == before);
+    }
+
+    void keyFromDrawingNeedsAlignment()
+    {
+        Drawing d;
+        d.name = QStringLiteral("side drawing");
+        d.image = QImage(4, 4, QImage::Format_RGBA8888);
+        const ObjectId drawing = m_doc.addDrawing(d);
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.createKeyFromDrawing(drawing));
+        m_doc.setDrawingCamera(drawing, cameraAt({5, 0, 0}));
+        const ObjectId key = m_doc.createKeyFromDrawing(drawing);
+        const KeyViewpoint* k = m_doc.data().key(key);
+        QVERIFY(k->direction.isApprox(Eigen::Vector3d(1, 0, 0)));
+        QCOMPARE(k->drawingIds, std::vector<ObjectId>{drawing});
+        QCOMPARE(k->name, QStringLiteral("side drawing"));
+        QVERIFY(k->camera == m_doc.data().drawing(drawing)->camera);
+    }
+
+    void strokeIsOneUndoStepAndUndoIsExact()
+    {
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ProjectData before = m_doc.data();
+        const int count = m_doc.undoStack()->count();
+        const int stroke = m_doc.newStrokeId();
+        for (int step = 0; step < 5; ++step) {
+            algo::Positions move(2, 3);
+            move << 0.1f, 0, 0, 0, 0.05f, 0;
+            m_doc.displaceKeyVertices(key, 0, {2, 4}, move, stroke, QStringLiteral("Brush"));
+        }
+        QCOMPARE(m_doc.undoStack()->count(), count + 1);
+        const algo::Positions shape = m_doc.data().keyShape(*m_doc.data().key(key), 0);
+        QVERIFY(shape.row(2).isApprox(Eigen::RowVector3f(0.5f, 1, 0)));
+        QVERIFY(shape.row(4).isApprox(Eigen::RowVector3f(0, 0.25f, 1)));
+        QVERIFY(shape.row(0) == m_doc.data().baseMesh->vertices.row(0));
+        const ProjectData after = m_doc.data();
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data() == before);
+        m_doc.undoStack()->redo();
+        QVERIFY(m_doc.data() == after);
+        // A new stroke is a new undo step.
+        algo::Positions move(1, 3);
+        move << 0, 0, 0.2f;
+        m_doc.displaceKeyVertices(key, 0, {4}, move, m_doc.newStrokeId(), QStringLiteral("Brush"));
+        QCOMPARE(m_doc.undoStack()->count(), count + 2);
+    }
+
+    void brushAlgorithmThroughDocument()
+    {
+        // The falloff brush of paper 1, section 3.1.2, driven as the command line and viewport do.
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const KeyViewpoint& k = *m_doc.data().key(key);
+        const algo::Positions shape = m_doc.data().keyShape(k, 0);
+        const algo::VertexGrid grid(shape);
+        const auto selection = algo::selectForBrush(shape, grid, 4, 1.5); // picks (0,0,1)
+        const algo::ImageFrame frame{k.camera.right(), k.camera.trueUp(), k.camera.forward()};
+        m_doc.displaceKeyVertices(
+            key, 0, selection.indices, algo::brushDrag(selection, frame, 0.3, 0.0), 0, QStringLiteral("Brush"));
+        const algo::Positions moved = m_doc.data().keyShape(*m_doc.data().key(key), 0);
+        // The picked vertex follows exactly; depth (z for this camera) is kept everywhere.
+        QVERIFY(moved.row(4).isApprox(Eigen::RowVector3f(0.3f, 0, 1)));
+        for (Eigen::Index v = 0; v < moved.rows(); ++v)
+            QCOMPARE(moved(v, 2), shape(v, 2));
+        // (1, 0, 0) is at distance sqrt(2) from the pick: falloff (1 - sqrt2/1.5)^2.
+        const double w = algo::brushFalloff(std::sqrt(2.0), 1.5);
+        QVERIFY(std::abs(moved(0, 0) - (1.0 + 0.3 * w)) < 1e-6);
+    }
+
+    void importDeformation()
+    {
+        QTemporaryDir dir;
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        algo::TriMesh deformed = *m_doc.data().baseMesh;
+        deformed.vertices(4, 2) = 1.5f;
+        const QString good = dir.filePath(QStringLiteral("deformed.obj"));
+        exportMesh(deformed, good);
+        QVERIFY(m_doc.importKeyDeformation(key, good).isEmpty());
+        const SparseOffsets& offsets = m_doc.data().key(key)->offsetsByFrame.at(0);
+        QCOMPARE(offsets.indices, std::vector<std::uint32_t>{4});
+        QCOMPARE(offsets.deltas.front(), Eigen::Vector3f(0, 0, 0.5f));
+
+        algo::TriMesh small;
+        small.vertices = deformed.vertices.topRows(3);
+        small.faces.resize(1, 3);
+        small.faces << 0, 1, 2;
+        const QString bad = dir.filePath(QStringLiteral("small.obj"));
+        exportMesh(small, bad);
+        const ProjectData before = m_doc.data();
+        try {
+            m_doc.importKeyDeformation(key, bad);
+            QFAIL("a mesh with the wrong vertex count was accepted");
+        } catch (const IoError& e) {
+            QVERIFY(e.message().contains(QStringLiteral("small.obj")));
+            QVERIFY(e.message().contains(QStringLiteral("3 vertices")));
+        }
+        QVERIFY(m_doc.data() == before);
+    }
+
+    void blendAtKeyIsTheKeyAndBetweenIsBarycentric()
+    {
+        // Keys at +X, +Y, +Z with distinct offsets on vertex 4; Dummy mode adds the other axes.
+        const Eigen::Vector3d dirs[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        ObjectId ids[3];
+        for (int i = 0; i < 3; ++i) {
+            SparseOffsets o{{4}, {Eigen::Vector3f(float(i + 1), 0, 0)}};
+            ids[i] = m_doc.createKey(QStringLiteral("k%1").arg(i), cameraAt(5 * dirs[i]), {}, o);
+        }
+        algo::Positions shape;
+        for (int i = 0; i < 3; ++i) {
+            m_doc.blender().shape(m_doc.data(), dirs[i], 0, shape);
+            QVERIFY(shape == m_doc.data().keyShape(*m_doc.data().key(ids[i]), 0));
+        }
+        // The centre of the facet: weights 1/3 each, offset (1 + 2 + 3) / 3 = 2.
+        m_doc.blender().shape(m_doc.data(), Eigen::Vector3d(1, 1, 1), 0, shape);
+        QVERIFY(std::abs(shape(4, 0) - 2.f) < 1e-5f);
+        const BlendResult r = m_doc.blender().weights(m_doc.data(), Eigen::Vector3d(1, 1, 1).normalized());
+        QCOMPARE(r.shares.size(), std::size_t(3));
+        QVERIFY(std::abs(r.baseShare) < 1e-9);
+        // Disabling a key takes it out of the blend: +X becomes the base (dummy) there.
+        m_doc.setKeyEnabled(ids[0], false);
+        m_doc.blender().shape(m_doc.data(), dirs[0], 0, shape);
+        QVERIFY(shape == m_doc.data().baseMesh->vertices);
+    }
+
+    void relinkAndRealign()
+    {
+        Drawing d;
+        d.name = QStringLiteral("a");
+        const ObjectId drawing = m_doc.addDrawing(d);
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        m_doc.linkKeyDrawing(key, drawing);
+        QCOMPARE(m_doc.data().key(key)->drawingIds, std::vector<ObjectId>{drawing});
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data().key(key)->drawingIds.empty());
+        m_doc.setKeyCamera(key, cameraAt({0, 5, 0.001}));
+        QVERIFY(m_doc.data().key(key)->direction.y() > 0.99);
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data().key(key)->direction.isApprox(Eigen::Vector3d(0, 0, 1)));
+    }
+
+    void keysSurviveSaveAndOpen()
+    {
+        QTemporaryDir dir;
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        algo::Positions move(1, 3);
+        move << 0.25f, 0, 0;
+        m_doc.displaceKeyVertices(key, 0, {4}, move, 0, QStringLiteral("Brush"));
+        const QString path = dir.filePath(QStringLiteral("keys.celform"));
+        m_doc.saveAs(path);
+        Document other;
+        other.open(path);
+        QVERIFY(other.data() == m_doc.data());
+        algo::Positions a, b;
+        m_doc.blender().shape(m_doc.data(), Eigen::Vector3d(0.3, 0.2, 1), 0, a);
+        other.blender().shape(other.data(), Eigen::Vector3d(0.3, 0.2, 1), 0, b);
+        QVERIFY(a == b);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestKeys)
+#include "test_keys.moc"
