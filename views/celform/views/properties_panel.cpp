@@ -76,6 +76,27 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_projection->addItem(tr("Orthographic"), int(model::Projection::Orthographic));
     m_projection->setToolTip(tr("Projection of the aligned camera"));
     m_form->addRow(tr("&Projection:"), m_projection);
+    // Beyond the paper: solve the camera from matched points, then refine by hand.
+    m_matchRow = new QWidget(m_selectionBox);
+    auto* matchLayout = new QVBoxLayout(m_matchRow);
+    matchLayout->setContentsMargins(0, 0, 0, 0);
+    auto* matchButtons = new QHBoxLayout;
+    m_match = new QPushButton(tr("&Match Points"), m_matchRow);
+    m_match->setCheckable(true);
+    m_match->setToolTip(tr("Click a feature on the model, then Shift+click the same feature on the drawing; repeat "
+                           "for six or more features spread over the model, then Solve Camera"));
+    m_solve = new QPushButton(tr("S&olve Camera"), m_matchRow);
+    m_solve->setToolTip(tr("Find the camera that best projects the model points onto the drawing points"));
+    m_clearPoints = new QPushButton(tr("Clear"), m_matchRow);
+    m_clearPoints->setToolTip(tr("Remove every matched point"));
+    matchButtons->addWidget(m_match);
+    matchButtons->addWidget(m_solve);
+    matchButtons->addWidget(m_clearPoints);
+    matchLayout->addLayout(matchButtons);
+    m_matchStatus = new QLabel(m_matchRow);
+    m_matchStatus->setWordWrap(true);
+    matchLayout->addWidget(m_matchStatus);
+    m_form->addRow(m_matchRow);
     m_createKey = new QPushButton(tr("Create &Key from Drawing"), m_selectionBox);
     m_createKey->setToolTip(tr("Make a key viewpoint in the direction of the drawing's aligned camera, starting as a "
                                "copy of the base model"));
@@ -170,6 +191,32 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
             m_viewport->setTool(Viewport::Tool::Navigate);
         }
         refreshTools();
+    });
+    connect(m_match, &QPushButton::toggled, this, [this](bool on) {
+        if (m_updating || !m_viewport)
+            return;
+        if (on && m_viewport->tool() != Viewport::Tool::Align)
+            m_align->setChecked(true);
+        m_viewport->setPointMatching(on);
+        refreshMatching();
+    });
+    connect(m_solve, &QPushButton::clicked, this, [this] {
+        if (!m_viewport)
+            return;
+        QString error;
+        const auto rms = m_viewport->solveFromMatchedPoints(&error);
+        if (!rms) {
+            emit message(error);
+            QMessageBox::information(this, tr("Solve Camera"), error);
+            return;
+        }
+        emit message(tr("Camera solved: the points are %1 drawing pixels off on average. Refine by hand if needed.")
+                         .arg(*rms, 0, 'f', 1));
+        refreshMatching();
+    });
+    connect(m_clearPoints, &QPushButton::clicked, this, [this] {
+        if (m_viewport)
+            m_viewport->clearMatchedPoints();
     });
     connect(m_fov, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double degrees) {
         if (m_updating || !m_viewport)
@@ -286,6 +333,7 @@ void PropertiesPanel::setViewport(Viewport* viewport)
     if (!viewport)
         return;
     connect(viewport, &Viewport::toolChanged, this, &PropertiesPanel::refreshTools);
+    connect(viewport, &Viewport::matchedPointsChanged, this, &PropertiesPanel::refreshMatching);
     connect(viewport, &Viewport::brushRadiusChanged, this, [this](double r) {
         m_updating = true;
         m_radius->setValue(r);
@@ -337,6 +385,19 @@ void PropertiesPanel::importDeformation()
     }
 }
 
+void PropertiesPanel::refreshMatching()
+{
+    if (!m_viewport)
+        return;
+    const size_t models = m_viewport->matchedModelPoints().size();
+    const size_t drawings = m_viewport->matchedDrawingPoints().size();
+    const size_t pairs = std::min(models, drawings);
+    m_matchStatus->setText(
+        tr("%1 model points, %2 drawing points: %3 pairs (six or more needed)").arg(models).arg(drawings).arg(pairs));
+    m_solve->setEnabled(pairs >= 6);
+    m_clearPoints->setEnabled(models + drawings > 0);
+}
+
 void PropertiesPanel::refreshTools()
 {
     m_updating = true;
@@ -349,7 +410,9 @@ void PropertiesPanel::refreshTools()
     m_brushBox->setEnabled(brushing);
     m_fov->setEnabled(aligning);
     m_projection->setEnabled(aligning);
+    m_match->setChecked(m_viewport && m_viewport->isPointMatching());
     m_updating = false;
+    refreshMatching();
 }
 
 void PropertiesPanel::refresh()
@@ -413,7 +476,8 @@ void PropertiesPanel::refresh()
         m_summary->setText(
             tr("No base model. Import a mesh with File > Import Mesh, or drop a mesh file on the window."));
     }
-    for (QWidget* w : std::initializer_list<QWidget*>{m_opacityRow, m_onTop, m_align, m_fov, m_projection, m_createKey})
+    for (QWidget* w :
+        std::initializer_list<QWidget*>{m_opacityRow, m_onTop, m_align, m_fov, m_projection, m_matchRow, m_createKey})
         m_form->setRowVisible(w, isDrawing);
     for (QWidget* w : std::initializer_list<QWidget*>{m_enabled, m_linkedDrawing, m_editKey, m_importDeformation})
         m_form->setRowVisible(w, isKey);

@@ -35,6 +35,8 @@ public:
     [[nodiscard]] QPushButton* createKeyButton() const { return m_createKey; }
     [[nodiscard]] QPushButton* editKeyButton() const { return m_editKey; }
     [[nodiscard]] QPushButton* previewButton() const { return m_preview; }
+    [[nodiscard]] QPushButton* matchPointsButton() const { return m_match; }
+    [[nodiscard]] QPushButton* solveCameraButton() const { return m_solve; }
 
 public slots:
     void showSelection(celform::views::ScenePanel::Selection selection);
@@ -49,6 +51,7 @@ private:
     void refresh();
     void refreshBlend();
     void refreshTools();
+    void refreshMatching();
     void importDeformation();
 
     model::Document* m_document;
@@ -69,6 +72,11 @@ private:
     QDoubleSpinBox* m_fov;
     QComboBox* m_projection;
     QPushButton* m_createKey;
+    QWidget* m_matchRow;
+    QPushButton* m_match;
+    QPushButton* m_solve;
+    QPushButton* m_clearPoints;
+    QLabel* m_matchStatus;
     QCheckBox* m_enabled;
     QComboBox* m_linkedDrawing;
     QPushButton* m_editKey;

@@ -2,12 +2,14 @@
 // (STACK.md pitfall 5), the base model as zero-conversion vtkPolyData, and the widget's own camera.
 #include "celform/views/viewport.h"
 
+#include "celform/algorithms/camera_solve.h"
 #include "celform/model/document.h"
 
 #include <QPainter>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QWheelEvent>
 
 #include <vtkActor.h>
@@ -86,6 +88,60 @@ vtkSmartPointer<vtkPolyData> triadArrow(int axis)
     vtkSmartPointer<vtkPolyData> out = filter->GetOutput();
     return out;
 }
+
+/// Paints the matched points of the semi-automatic alignment over the viewport: model points
+/// as red numbered dots, drawing points as blue numbered rings, a line between each pair.
+class MatchMarkers : public QWidget {
+public:
+    explicit MatchMarkers(Viewport* viewport)
+        : QWidget(viewport)
+        , m_viewport(viewport)
+    {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override
+    {
+        QPainter p(this);
+        p.setRenderHint(QPainter::Antialiasing);
+        QFont font = p.font();
+        font.setBold(true);
+        p.setFont(font);
+        const auto& model = m_viewport->matchedModelPoints();
+        const auto& drawing = m_viewport->matchedDrawingPoints();
+        for (size_t i = 0; i < std::max(model.size(), drawing.size()); ++i) {
+            const QString label = QString::number(i + 1);
+            QPointF a, b;
+            if (i < model.size())
+                a = m_viewport->projectToWidget(model[i]);
+            if (i < drawing.size())
+                b = m_viewport->drawingToWidget(drawing[i]);
+            if (i < model.size() && i < drawing.size()) {
+                p.setPen(QPen(QColor(40, 40, 40, 160), 1, Qt::DashLine));
+                p.drawLine(a, b);
+            }
+            if (i < model.size()) {
+                p.setPen(QPen(Qt::white, 1.5));
+                p.setBrush(QColor(220, 50, 40));
+                p.drawEllipse(a, 5, 5);
+                p.setPen(QColor(150, 20, 10));
+                p.drawText(a + QPointF(7, -6), label);
+            }
+            if (i < drawing.size()) {
+                p.setPen(QPen(QColor(30, 90, 220), 2.5));
+                p.setBrush(Qt::NoBrush);
+                p.drawEllipse(b, 6, 6);
+                p.setPen(QColor(20, 60, 170));
+                p.drawText(b + QPointF(8, 14), label);
+            }
+        }
+    }
+
+private:
+    Viewport* m_viewport;
+};
 
 } // namespace
 
@@ -237,6 +293,9 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
         });
         connect(m_document, &model::Document::drawingsChanged, this, &Viewport::updateOverlay);
     }
+    m_markers = new MatchMarkers(this);
+    m_markers->hide();
+    connect(this, &Viewport::cameraChanged, m_markers, qOverload<>(&QWidget::update));
     m_alignCommit.setSingleShot(true);
     m_alignCommit.setInterval(300);
     connect(&m_alignCommit, &QTimer::timeout, this, [this] {
@@ -282,8 +341,10 @@ model::Camera Viewport::camera() const
     c.target = toEigen(cam->GetFocalPoint());
     c.up = toEigen(cam->GetViewUp());
     c.projection = cam->GetParallelProjection() ? model::Projection::Orthographic : model::Projection::Perspective;
-    c.fovYDegrees = cam->GetViewAngle();
-    c.orthoHeight = 2.0 * cam->GetParallelScale();
+    // With a drawing shown, the stored camera's field of view spans the drawing's height, which
+    // is letterboxed inside the viewport (m_frameScale >= 1): undo that here.
+    c.fovYDegrees = 2.0 * std::atan(std::tan(radians(cam->GetViewAngle() / 2.0)) / m_frameScale) * 180.0 / kPi;
+    c.orthoHeight = 2.0 * cam->GetParallelScale() / m_frameScale;
     return c;
 }
 
@@ -296,8 +357,8 @@ void Viewport::setCamera(const model::Camera& camera)
     cam->SetFocalPoint(camera.target.data());
     cam->SetViewUp(camera.up.data());
     cam->SetParallelProjection(camera.projection == model::Projection::Orthographic);
-    cam->SetViewAngle(camera.fovYDegrees);
-    cam->SetParallelScale(camera.orthoHeight / 2.0);
+    cam->SetViewAngle(2.0 * std::atan(m_frameScale * std::tan(radians(camera.fovYDegrees / 2.0))) * 180.0 / kPi);
+    cam->SetParallelScale(m_frameScale * camera.orthoHeight / 2.0);
     // Orbit turns around the model: the point of the view axis nearest to its centre, so the
     // pivot stays on screen whatever target the camera was given.
     const Eigen::Vector3d forward = camera.forward();
@@ -425,12 +486,7 @@ void Viewport::pan(const QPointF& deltaPixels)
     vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
     const model::Camera c = camera();
     // World units per logical pixel at the pivot's depth, so the model follows the cursor.
-    double viewHeight = c.orthoHeight;
-    if (c.projection == model::Projection::Perspective) {
-        const double depth = (m_pivot - c.eye).dot(c.forward());
-        viewHeight = 2.0 * std::max(depth, 1e-9) * std::tan(radians(c.fovYDegrees / 2.0));
-    }
-    const double perPixel = viewHeight / double(height());
+    const double perPixel = worldUnitsPerPixel(m_pivot);
     const Eigen::Vector3d shift = perPixel * (-deltaPixels.x() * c.right() + deltaPixels.y() * c.trueUp());
     const Eigen::Vector3d eye = c.eye + shift;
     const Eigen::Vector3d target = c.target + shift;
@@ -700,6 +756,8 @@ void Viewport::setOverlayDrawing(model::ObjectId drawing)
     if (drawing == m_overlayDrawing)
         return;
     m_overlayDrawing = drawing;
+    if (!m_modelPoints.empty() || !m_drawingPoints.empty())
+        clearMatchedPoints(); // the pairs belong to the drawing they were placed on
     updateOverlay();
 }
 
@@ -725,6 +783,7 @@ void Viewport::updateOverlay()
         v.drawingActor->VisibilityOff();
         v.renderer->SetLayer(0);
         v.drawingRenderer->SetLayer(2);
+        refreshFrameScale();
         update();
         return;
     }
@@ -745,7 +804,6 @@ void Viewport::updateOverlay()
         cam->SetFocalPoint(cx, cy, 0.0);
         cam->SetPosition(cx, cy, 1000.0);
         cam->SetViewUp(0.0, 1.0, 0.0);
-        cam->SetParallelScale(0.5 * rgba.height());
         cam->SetClippingRange(1.0, 2000.0);
     }
     v.drawingActor->VisibilityOn();
@@ -757,6 +815,7 @@ void Viewport::updateOverlay()
         v.drawingRenderer->SetLayer(0);
         v.renderer->SetLayer(1);
     }
+    refreshFrameScale();
     update();
 }
 
@@ -772,6 +831,8 @@ void Viewport::setTool(Tool tool)
             m_document->setDrawingCamera(m_overlayDrawing, camera());
     }
     m_tool = tool;
+    if (tool != Tool::Align && m_matching)
+        setPointMatching(false);
     if (tool == Tool::Align && m_document && m_overlayDrawing) {
         // Start from the stored alignment, so refining it does not jump.
         const model::Drawing* drawing = m_document->data().drawing(m_overlayDrawing);
@@ -826,13 +887,48 @@ std::int64_t Viewport::pickVertex(const QPointF& position)
 
 double Viewport::worldUnitsPerPixel(const Eigen::Vector3d& point) const
 {
-    const model::Camera c = camera();
-    double viewHeight = c.orthoHeight;
-    if (c.projection == model::Projection::Perspective) {
-        const double depth = (point - c.eye).dot(c.forward());
-        viewHeight = 2.0 * std::max(depth, 1e-9) * std::tan(radians(c.fovYDegrees / 2.0));
+    // From VTK's own camera: its angle spans the whole widget height, drawing or not.
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    double viewHeight = 2.0 * cam->GetParallelScale();
+    if (!cam->GetParallelProjection()) {
+        const Eigen::Vector3d eye = toEigen(cam->GetPosition());
+        const Eigen::Vector3d forward = (toEigen(cam->GetFocalPoint()) - eye).normalized();
+        const double depth = (point - eye).dot(forward);
+        viewHeight = 2.0 * std::max(depth, 1e-9) * std::tan(radians(cam->GetViewAngle() / 2.0));
     }
     return viewHeight / double(std::max(height(), 1));
+}
+
+double Viewport::wantedFrameScale() const
+{
+    const model::Drawing* drawing
+        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
+    if (!drawing || drawing->image.isNull() || width() <= 0 || height() <= 0)
+        return 1.0;
+    // The drawing fits inside the viewport; the camera's frame is the drawing's frame.
+    const double fit = std::min(double(width()) / drawing->image.width(), double(height()) / drawing->image.height());
+    return std::max(1.0, double(height()) / (fit * drawing->image.height()));
+}
+
+void Viewport::refreshFrameScale()
+{
+    Vtk& v = *m_vtk;
+    const double wanted = wantedFrameScale();
+    if (wanted != m_frameScale) {
+        const model::Camera kept = camera();
+        const Eigen::Vector3d pivot = m_pivot;
+        m_frameScale = wanted;
+        setCamera(kept);
+        m_pivot = pivot;
+    }
+    if (const vtkImageData* image = v.drawingImage; v.drawingActor->GetVisibility() && image) {
+        int dims[3];
+        v.drawingImage->GetDimensions(dims);
+        if (dims[0] > 0 && dims[1] > 0 && width() > 0 && height() > 0) {
+            const double fit = std::min(double(width()) / dims[0], double(height()) / dims[1]);
+            v.drawingRenderer->GetActiveCamera()->SetParallelScale(0.5 * height() / fit);
+        }
+    }
 }
 
 QPointF Viewport::projectToWidget(const Eigen::Vector3d& point) const
@@ -936,6 +1032,103 @@ void Viewport::endBrush()
     m_strokeId = 0;
 }
 
+// --- semi-automatic alignment ----------------------------------------------------------------
+
+void Viewport::setPointMatching(bool on)
+{
+    m_matching = on;
+    m_markers->setVisible(on || !m_modelPoints.empty() || !m_drawingPoints.empty());
+    m_markers->setGeometry(rect());
+    m_markers->update();
+    if (on)
+        emit message(tr("Click a feature on the model, then Shift+click the same feature on the drawing; "
+                        "six pairs or more, then Solve Camera."));
+}
+
+void Viewport::clearMatchedPoints()
+{
+    m_modelPoints.clear();
+    m_drawingPoints.clear();
+    m_markers->setVisible(m_matching);
+    m_markers->update();
+    emit matchedPointsChanged();
+}
+
+void Viewport::removeLastMatchedPoint()
+{
+    if (m_drawingPoints.size() >= m_modelPoints.size() && !m_drawingPoints.empty())
+        m_drawingPoints.pop_back();
+    else if (!m_modelPoints.empty())
+        m_modelPoints.pop_back();
+    m_markers->update();
+    emit matchedPointsChanged();
+}
+
+std::optional<Eigen::Vector2d> Viewport::widgetToDrawing(const QPointF& position) const
+{
+    const model::Drawing* drawing
+        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
+    if (!drawing || drawing->image.isNull())
+        return std::nullopt;
+    const double w = drawing->image.width(), h = drawing->image.height();
+    const double fit = std::min(double(width()) / w, double(height()) / h);
+    const double x = (position.x() - 0.5 * (width() - fit * w)) / fit;
+    const double y = (position.y() - 0.5 * (height() - fit * h)) / fit;
+    if (x < 0 || y < 0 || x > w || y > h)
+        return std::nullopt;
+    return Eigen::Vector2d(x, y);
+}
+
+QPointF Viewport::drawingToWidget(const Eigen::Vector2d& pixel) const
+{
+    const model::Drawing* drawing
+        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
+    if (!drawing || drawing->image.isNull())
+        return {};
+    const double w = drawing->image.width(), h = drawing->image.height();
+    const double fit = std::min(double(width()) / w, double(height()) / h);
+    return {0.5 * (width() - fit * w) + fit * pixel.x(), 0.5 * (height() - fit * h) + fit * pixel.y()};
+}
+
+std::optional<double> Viewport::solveFromMatchedPoints(QString* error)
+{
+    const model::Drawing* drawing
+        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
+    const size_t pairs = std::min(m_modelPoints.size(), m_drawingPoints.size());
+    if (!drawing || drawing->image.isNull()) {
+        if (error)
+            *error = tr("Show a drawing to align first.");
+        return std::nullopt;
+    }
+    if (pairs < 6) {
+        if (error)
+            *error = tr("%1 pairs of points so far; the camera needs at least six.").arg(pairs);
+        return std::nullopt;
+    }
+    std::string message;
+    const auto solved = algo::solveCamera(
+        std::vector<Eigen::Vector3d>(m_modelPoints.begin(), m_modelPoints.begin() + std::ptrdiff_t(pairs)),
+        std::vector<Eigen::Vector2d>(m_drawingPoints.begin(), m_drawingPoints.begin() + std::ptrdiff_t(pairs)),
+        drawing->image.width(), drawing->image.height(), &message);
+    if (!solved) {
+        if (error)
+            *error = tr("The camera could not be solved: %1").arg(QString::fromStdString(message));
+        return std::nullopt;
+    }
+    model::Camera camera;
+    camera.eye = solved->eye;
+    camera.target = solved->target;
+    camera.up = solved->up;
+    camera.projection = model::Projection::Perspective;
+    camera.fovYDegrees = solved->fovYDegrees;
+    m_alignCommit.stop();
+    setCamera(camera);
+    m_alignCommit.stop();
+    m_document->setDrawingCamera(m_overlayDrawing, camera);
+    m_markers->update();
+    return solved->rmsPixelError;
+}
+
 // --- OpenGL ---------------------------------------------------------------------------------
 
 void Viewport::initializeGL()
@@ -964,7 +1157,9 @@ void Viewport::resizeGL(int w, int h)
 {
     const qreal dpr = devicePixelRatioF();
     m_vtk->window->SetSize(qRound(w * dpr), qRound(h * dpr));
+    m_markers->setGeometry(0, 0, w, h);
     updateTriadViewport();
+    refreshFrameScale();
     // A view framed by the program (load, F, Home) stays framed while the window is resized:
     // the widget's first size is only known here, after the constructor framed the model.
     if (m_framed)
@@ -987,6 +1182,13 @@ void Viewport::paintGL()
     syncTriadCamera();
     v.window->Render();
     state->Pop();
+    // Blending the drawing layer lowers the framebuffer's alpha, and Qt composites the widget
+    // with it (premultiplied): the viewport must stay opaque whatever the layers did.
+    QOpenGLFunctions* gl = context()->functions();
+    gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    gl->glClearColor(0.f, 0.f, 0.f, 1.f);
+    gl->glClear(GL_COLOR_BUFFER_BIT);
+    gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ++m_renderCount;
 }
 
@@ -1024,6 +1226,27 @@ void Viewport::mousePressEvent(QMouseEvent* event)
             drag = Drag::Dolly;
         else
             drag = Drag::Orbit;
+    } else if (button == Qt::LeftButton && m_tool == Tool::Align && m_matching) {
+        if (mods & Qt::ShiftModifier) {
+            if (const auto pixel = widgetToDrawing(event->position())) {
+                m_drawingPoints.push_back(*pixel);
+            } else {
+                emit message(tr("Shift+click inside the drawing to place its point."));
+            }
+        } else {
+            const std::int64_t vertex = pickVertex(event->position());
+            if (vertex >= 0) {
+                // The picked surface point, not the nearest vertex: features rarely sit on one.
+                m_modelPoints.push_back(toEigen(m_vtk->picker->GetPickPosition()));
+            } else {
+                emit message(tr("Click on the model to place a model point; Shift+click places the drawing point."));
+            }
+        }
+        m_markers->setVisible(true);
+        m_markers->update();
+        emit matchedPointsChanged();
+        event->accept();
+        return;
     } else if (button == Qt::LeftButton && m_tool == Tool::Brush) {
         drag = Drag::Brush;
         beginBrush(event->position(), mods);

@@ -18,6 +18,8 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace celform::model {
 class Document;
@@ -90,6 +92,24 @@ public:
     [[nodiscard]] BrushMode brushMode() const { return m_brushMode; }
     void setBrushMirrorX(bool on) { m_brushMirror = on; }
     [[nodiscard]] bool brushMirrorX() const { return m_brushMirror; }
+    // --- semi-automatic alignment: model points matched to drawing points --------------------
+    /// While aligning, a click on the model adds a model point and Shift+click adds a drawing
+    /// point; the i-th of each form a pair.
+    void setPointMatching(bool on);
+    [[nodiscard]] bool isPointMatching() const { return m_matching; }
+    [[nodiscard]] const std::vector<Eigen::Vector3d>& matchedModelPoints() const { return m_modelPoints; }
+    /// Drawing pixels (x right, y down from the top-left corner).
+    [[nodiscard]] const std::vector<Eigen::Vector2d>& matchedDrawingPoints() const { return m_drawingPoints; }
+    void clearMatchedPoints();
+    void removeLastMatchedPoint();
+    /// Solves the camera from at least six pairs (DLT, then Levenberg-Marquardt) and stores it
+    /// with the drawing as one undo step. Returns the RMS reprojection error in drawing pixels,
+    /// or nothing with a message.
+    std::optional<double> solveFromMatchedPoints(QString* error);
+    /// Widget position (logical pixels) to drawing pixels and back, for the drawing shown.
+    [[nodiscard]] std::optional<Eigen::Vector2d> widgetToDrawing(const QPointF& position) const;
+    [[nodiscard]] QPointF drawingToWidget(const Eigen::Vector2d& pixel) const;
+
     /// The vertex under a widget position (logical pixels) on the displayed shape, or -1.
     [[nodiscard]] std::int64_t pickVertex(const QPointF& position);
     /// World units per logical pixel at a point's depth (for brush drags and tests).
@@ -110,6 +130,7 @@ signals:
     void toolChanged(celform::views::Viewport::Tool tool);
     /// A message for the status bar (brush refused, nothing picked, ...).
     void message(const QString& text);
+    void matchedPointsChanged();
 
 protected:
     void initializeGL() override;
@@ -130,6 +151,9 @@ private:
     /// Recomputes m_shape for the current source and uploads positions and normals.
     void updateShape();
     void updateOverlay();
+    [[nodiscard]] double wantedFrameScale() const;
+    /// Keeps the stored camera when the drawing frame's share of the viewport changes.
+    void refreshFrameScale();
     void updateSelectionColors();
     void roll(double degrees);
     void beginBrush(const QPointF& position, Qt::KeyboardModifiers modifiers);
@@ -163,6 +187,7 @@ private:
     QPointer<Viewport> m_observed;
     model::ObjectId m_overlayDrawing = 0;
     bool m_overlayOnTop = true;
+    double m_frameScale = 1.0; ///< widget height / drawing height on screen (>= 1)
 
     Tool m_tool = Tool::Navigate;
     QTimer m_alignCommit; ///< stores the aligned camera once navigation settles
@@ -173,6 +198,10 @@ private:
     std::vector<std::int32_t> m_mirror; ///< mirror map of the base, built on demand
     algo::BrushSelection m_mirrorSelection;
     int m_strokeId = 0;
+    bool m_matching = false;
+    std::vector<Eigen::Vector3d> m_modelPoints;
+    std::vector<Eigen::Vector2d> m_drawingPoints;
+    QWidget* m_markers = nullptr; ///< transparent child painting the matched points
     double m_strokeUnitsPerPixel = 0.0;
 };
 

@@ -1,0 +1,234 @@
+// The view-dependent workflow in the editor, driven as an artist would under Xvfb: align the
+// sample's drawing, make a key from it, deform the key with the brush in the viewport, undo and
+// redo, then preview the blend (paper 1, section 3).
+#include "test_support.h"
+
+#include "main_window.h"
+
+#include "celform/algorithms/camera_solve.h"
+#include "celform/algorithms/tri_mesh.h"
+
+#include "celform/views/properties_panel.h"
+#include "celform/views/scene_panel.h"
+#include "celform/views/viewport.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QPushButton>
+#include <QStandardPaths>
+
+using namespace celform;
+
+namespace {
+
+QString sampleProject()
+{
+    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+}
+
+void waitForRender(views::Viewport* vp)
+{
+    const int before = vp->renderCount();
+    vp->update();
+    QElapsedTimer timer;
+    timer.start();
+    while (vp->renderCount() <= before && timer.elapsed() < 5000)
+        QTest::qWait(10);
+}
+
+/// Saves a picture of the window when CELFORM_SCREENSHOT_DIR is set (for looking at by eye).
+void keepScreenshot(QWidget* window, const char* name)
+{
+    const QString dir = qEnvironmentVariable("CELFORM_SCREENSHOT_DIR");
+    if (!dir.isEmpty())
+        window->grab().save(dir + QLatin1Char('/') + QLatin1String(name) + QStringLiteral(".png"));
+}
+
+void drag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPoint from, QPoint to, int steps = 10)
+{
+    QMouseEvent press(QEvent::MouseButtonPress, from, w->mapToGlobal(from), button, button, mods);
+    QApplication::sendEvent(w, &press);
+    for (int i = 1; i <= steps; ++i) {
+        const QPoint p = from + (to - from) * i / steps;
+        QMouseEvent move(QEvent::MouseMove, p, w->mapToGlobal(p), Qt::NoButton, button, mods);
+        QApplication::sendEvent(w, &move);
+    }
+    QMouseEvent release(QEvent::MouseButtonRelease, to, w->mapToGlobal(to), button, Qt::NoButton, mods);
+    QApplication::sendEvent(w, &release);
+}
+
+} // namespace
+
+class TestViewDependentUi : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void alignKeyBrushUndoPreview()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(sampleProject()));
+        model::Document* doc = window.document();
+        views::Viewport* vp = window.viewport();
+        views::PropertiesPanel* props = window.propertiesPanel();
+        const model::ObjectId drawing = doc->data().drawings.front().id;
+        QVERIFY(!doc->data().drawings.front().aligned);
+
+        // 1. Align (paper 1, section 3.1.1): the drawing is shown fixed in the viewport and the
+        // camera, moved by the artist, is stored with it.
+        window.scenePanel()->select({views::ScenePanel::ItemKind::Drawing, drawing});
+        QCOMPARE(vp->overlayDrawing(), drawing);
+        props->alignButton()->click();
+        QCOMPARE(vp->tool(), views::Viewport::Tool::Align);
+        model::Camera side = vp->camera();
+        const Eigen::Vector3d centre = vp->pivot();
+        const double distance = (side.eye - centre).norm();
+        side.eye = centre + distance * Eigen::Vector3d(1, 0, 0);
+        side.target = centre;
+        side.up = Eigen::Vector3d(0, 1, 0);
+        vp->setCamera(side);
+        const QPoint c = vp->rect().center();
+        drag(vp, Qt::LeftButton, Qt::AltModifier, c, c + QPoint(6, 0)); // a touch of orbit by hand
+        QTRY_VERIFY_WITH_TIMEOUT(doc->data().drawing(drawing)->aligned, 3000);
+        QVERIFY(doc->data().drawing(drawing)->camera == vp->camera());
+        waitForRender(vp);
+        keepScreenshot(&window, "1-align");
+
+        // 2. Make a key from the drawing.
+        QVERIFY(props->createKeyButton()->isEnabled());
+        props->createKeyButton()->click();
+        QCOMPARE(doc->data().keys.size(), std::size_t(1));
+        const model::KeyViewpoint key = doc->data().keys.front();
+        QVERIFY(key.direction.isApprox(doc->blender().viewDirection(doc->data(), vp->camera().eye)));
+        QCOMPARE(window.scenePanel()->selection().kind, views::ScenePanel::ItemKind::Key);
+
+        // 3. Deform with the brush in the key's camera: the picked vertex follows the cursor in
+        // the image plane.
+        props->editKeyButton()->click();
+        QCOMPARE(vp->tool(), views::Viewport::Tool::Brush);
+        QCOMPARE(vp->displayedKey(), key.id);
+        waitForRender(vp);
+        const model::ProjectData beforeStroke = doc->data();
+        const int undoCount = doc->undoStack()->count();
+        const std::int64_t picked = vp->pickVertex(c);
+        QVERIFY2(picked >= 0, "nothing under the viewport centre");
+        const Eigen::Vector3d start = vp->displayedShape().row(picked).cast<double>().transpose();
+        const double units = vp->worldUnitsPerPixel(start);
+        drag(vp, Qt::LeftButton, Qt::NoModifier, c, c + QPoint(40, -20), 8);
+        QCOMPARE(doc->undoStack()->count(), undoCount + 1); // one drag, one undo step
+        const model::KeyViewpoint& edited = *doc->data().key(key.id);
+        const Eigen::Vector3d moved = doc->data().keyShape(edited, 0).row(picked).cast<double>().transpose();
+        const model::Camera keyCamera = edited.camera;
+        const Eigen::Vector3d expected = start + units * (40 * keyCamera.right() + 20 * keyCamera.trueUp());
+        QVERIFY2((moved - expected).norm() < 1e-4 * distance,
+            qPrintable(QStringLiteral("off by %1").arg((moved - expected).norm())));
+        QVERIFY(std::abs((moved - start).dot(keyCamera.forward())) < 1e-5 * distance); // depth kept
+        const std::size_t movedCount = edited.offsetsByFrame.at(0).indices.size();
+        QVERIFY(movedCount > 1);
+        waitForRender(vp);
+        keepScreenshot(&window, "2-brush");
+
+        // 4. Undo restores the exact positions; redo brings the stroke back.
+        const model::ProjectData afterStroke = doc->data();
+        window.action(QStringLiteral("actionUndo"))->trigger();
+        QVERIFY(doc->data() == beforeStroke);
+        QVERIFY(vp->displayedShape().row(picked).cast<double>().transpose().isApprox(start));
+        window.action(QStringLiteral("actionRedo"))->trigger();
+        QVERIFY(doc->data() == afterStroke);
+
+        // 5. Preview: at the key's direction the shape is the key; elsewhere it blends back.
+        props->previewButton()->click();
+        QVERIFY(vp->isPreview());
+        QCOMPARE(vp->tool(), views::Viewport::Tool::Navigate);
+        vp->setCamera(keyCamera);
+        QVERIFY(vp->displayedShape() == doc->data().keyShape(*doc->data().key(key.id), 0));
+        model::Camera front = keyCamera;
+        front.eye = centre + distance * Eigen::Vector3d(0, 0, 1);
+        vp->setCamera(front);
+        QVERIFY(vp->displayedShape() == doc->data().baseMesh->vertices); // dummy mode: base at +Z
+        drag(vp, Qt::MiddleButton, Qt::NoModifier, c, c + QPoint(-60, 0));
+        waitForRender(vp);
+        keepScreenshot(&window, "3-preview");
+        window.action(QStringLiteral("actionPreview"))->trigger();
+        QVERIFY(!vp->isPreview());
+    }
+
+    void solveCameraFromMatchedPoints()
+    {
+        // Beyond the paper: the artist clicks model points and the same features on the drawing;
+        // the camera is solved. Here the drawing points come from a known camera, which the
+        // solve must find again.
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(sampleProject()));
+        model::Document* doc = window.document();
+        views::Viewport* vp = window.viewport();
+        views::PropertiesPanel* props = window.propertiesPanel();
+        const model::Drawing& drawing = doc->data().drawings.front();
+        window.scenePanel()->select({views::ScenePanel::ItemKind::Drawing, drawing.id});
+        props->matchPointsButton()->click();
+        QCOMPARE(vp->tool(), views::Viewport::Tool::Align);
+        QVERIFY(vp->isPointMatching());
+        waitForRender(vp);
+
+        const auto& base = doc->data().baseMesh->vertices;
+        const Eigen::Vector3d centre = vp->pivot();
+        const double size = algo::boundingBox(base).diagonal().norm();
+        algo::SolvedCamera truth;
+        truth.eye = centre + 2.2 * size * Eigen::Vector3d(0.35, 0.25, 1.0).normalized();
+        truth.target = centre;
+        truth.up = Eigen::Vector3d(0, 1, 0);
+        truth.fovYDegrees = 35.0;
+        // Click well-spread vertices as they appear in the viewport's current (front) view.
+        int placed = 0;
+        for (Eigen::Index v = 0; v < base.rows() && placed < 12; v += base.rows() / 40) {
+            const QPointF at = vp->projectToWidget(base.row(v).cast<double>().transpose());
+            if (!vp->rect().contains(at.toPoint()))
+                continue;
+            const size_t before = vp->matchedModelPoints().size();
+            QTest::mouseClick(vp, Qt::LeftButton, Qt::NoModifier, at.toPoint());
+            if (vp->matchedModelPoints().size() == before)
+                continue;
+            const Eigen::Vector2d pixel = algo::projectToImage(
+                truth, vp->matchedModelPoints().back(), drawing.image.width(), drawing.image.height());
+            QTest::mouseClick(vp, Qt::LeftButton, Qt::ShiftModifier, vp->drawingToWidget(pixel).toPoint());
+            if (vp->matchedDrawingPoints().size() != vp->matchedModelPoints().size()) {
+                vp->removeLastMatchedPoint(); // the feature fell outside the drawing
+                continue;
+            }
+            ++placed;
+        }
+        QVERIFY2(placed >= 8, qPrintable(QStringLiteral("only %1 pairs placed").arg(placed)));
+        QVERIFY(props->solveCameraButton()->isEnabled());
+        waitForRender(vp);
+        keepScreenshot(&window, "4-match-points");
+        props->solveCameraButton()->click();
+        const model::Drawing& aligned = *doc->data().drawing(drawing.id);
+        QVERIFY(aligned.aligned);
+        // Clicks land on whole widget pixels: the solve is as good as that rounding allows.
+        QVERIFY2((aligned.camera.eye - truth.eye).norm() < 0.05 * (truth.eye - centre).norm(),
+            qPrintable(QStringLiteral("eye off by %1").arg((aligned.camera.eye - truth.eye).norm())));
+        QVERIFY(std::abs(aligned.camera.fovYDegrees - truth.fovYDegrees) < 3.0);
+        QVERIFY(aligned.camera.forward().dot((truth.target - truth.eye).normalized()) > 0.999);
+        waitForRender(vp);
+        keepScreenshot(&window, "5-solved");
+        window.action(QStringLiteral("actionUndo"))->trigger();
+        QVERIFY(!doc->data().drawing(drawing.id)->aligned);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(views::Viewport::defaultFormat());
+    QApplication app(argc, argv);
+    app.setApplicationName(QStringLiteral("CelformTest"));
+    TestViewDependentUi test;
+    return QTest::qExec(&test, argc, argv);
+}
+#include "test_view_dependent_ui.moc"
