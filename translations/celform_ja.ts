@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
 <context>
+    <name>Cli</name>
+    <message>
+        <source>--%1 needs three numbers X,Y,Z, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 needs two numbers A,B, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has no key named “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>celform::app::Cli</name>
     <message>
         <source>usage: %1</source>
@@ -66,18 +81,210 @@ usage: %1</source>
         <translation>キー視点: %1</translation>
     </message>
     <message>
-        <source>usage: celform [PROJECT] [--screenshot FILE.png]
-       celform new MESH --out P.celform [--drawing IMAGE]...
-       celform info P.celform [--json]
-       celform --version</source>
-        <translation>使い方: celform [PROJECT] [--screenshot FILE.png]
-        celform new MESH --out P.celform [--drawing IMAGE]...
-        celform info P.celform [--json]
-        celform --version</translation>
-    </message>
-    <message>
         <source>celform: out of memory</source>
         <translation>celform: メモリが不足しています</translation>
+    </message>
+    <message>
+        <source>--%1 needs a number, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 needs a whole number, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adds a key viewpoint with its key deformation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The action (add).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name of the new key.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key deformation: a mesh with the base model&apos;s vertex count and order.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start as a copy of the base model.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>View direction from the model&apos;s centroid towards the eye.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Camera position.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point the camera looks at.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Camera up vector.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame of the deformation (default 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference drawing to embed and link, aligned with the key&apos;s camera.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print the new key as JSON.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown key action “%1”
+usage: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--name and exactly one of --mesh or --from-base are required
+usage: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give either --view or all of --eye, --target and --up
+usage: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has no base model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--view must not be zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--eye, --target and --up do not make a camera (eye equals target, or up is parallel to the view)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has %1 vertices, but the base model has %2: a key deformation needs the base model&apos;s vertex count and order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deforms a key with the falloff brush, seen from the key&apos;s camera.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name of the key to deform.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Index of the picked vertex.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Selection radius in world units.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move along the camera&apos;s right and up vectors, in world units.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move along the viewing direction (away from the camera), in world units.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print what moved as JSON.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--key, --vertex, --radius and exactly one of --drag or --push are required
+usage: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--radius must be positive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has no vertex %1 (the base model has %2 vertices)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Evaluates the view-dependent shape for a view direction.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame (default 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the blended mesh (OBJ or PLY, base vertex order).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print the keys and weights as JSON.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--view is required
+usage: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Changes project settings.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Blend sharpness alpha (&gt; 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unspecified-region mode.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key light: a point position or a direction towards the light.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading style.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nothing to set
+usage: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--sharpness must be positive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--unspecified takes dummy, cosine or cosine2, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a directional light needs a non-zero direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>usage:</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -426,6 +633,50 @@ Recover it now?</source>
         <source>Info</source>
         <translation>情報</translation>
     </message>
+    <message>
+        <source>Key created: select Edit Key with the Brush to deform it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Viewing Sphere</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The view-dependent shape for the main camera, seen from this camera of its own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Observer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Preview View-Dependent Shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the blend of the keys for the current camera, updated while orbiting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Navigate Only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leave alignment and brush tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Create Key from &amp;View</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make a key viewpoint seen from the current camera, starting as a copy of the base model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::model::Document</name>
@@ -488,6 +739,58 @@ Recover it now?</source>
     <message>
         <source>Untitled</source>
         <translation>無題</translation>
+    </message>
+    <message>
+        <source>Key “%1” already has this view direction; a second key needs a different direction (at least %2° apart).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A key needs a view direction.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import a base model before making keys.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The key&apos;s camera is not valid (eye, target and up must differ).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The key&apos;s camera sits at the centre of the model; move it away first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drawing no longer exists.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Align the drawing “%1” first: its camera gives the key&apos;s view direction.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re-align Key “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unlink Key “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Link Key “%1” to a Drawing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has %1 vertices, but the base model has %2: a key deformation needs the base model&apos;s vertex count and order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its triangles differ from the base model&apos;s; only the vertex positions are used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Deformation into “%1”</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1067,6 +1370,174 @@ Size %4 × %5 × %6</source>
         <source>No base model. Import a mesh with File &gt; Import Mesh, or drop a mesh file on the window.</source>
         <translation>ベースモデルがありません。「ファイル」&gt;「メッシュをインポート」でメッシュを読み込むか、メッシュファイルをウィンドウにドロップしてください。</translation>
     </message>
+    <message>
+        <source>Drawing over the &amp;model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the drawing over the model (with its opacity) or behind it as a backdrop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Align to Drawing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the drawing fixed in the viewport and move the camera until the model matches it (Alt+drag orbit/pan/dolly, Alt+Shift+drag roll). The camera is stored with the drawing.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertical field of view of the aligned camera (perspective); a narrower angle is a longer focal length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Field of view:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Perspective</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Projection of the aligned camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Projection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Match Points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click a feature on the model, then Shift+click the same feature on the drawing; repeat for six or more features spread over the model, then Solve Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;olve Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Find the camera that best projects the model points onto the drawing points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove every matched point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Create &amp;Key from Drawing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make a key viewpoint in the direction of the drawing&apos;s aligned camera, starting as a copy of the base model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reference drawing shown while the key is edited</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Drawing:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Edit Key with the Brush</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Look through the key&apos;s camera with its drawing and deform the key: drag moves in the image plane, Ctrl+drag pushes or pulls along the view, Shift+drag rotates, Ctrl+Shift+drag scales; [ and ] change the radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import Deformation…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use a mesh made in another tool (same vertex count and order) as this key&apos;s deformation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertices within this distance of the picked vertex (world units) follow it with the falloff (1 − d/r)²; [ and ] in the viewport</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Radius:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Smooth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move drags the selection; Smooth relaxes it toward its neighbours while you drag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Mode:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;X mirror</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply every stroke to the mirrored side too (x → −x), for symmetric characters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Preview View-Dependent Shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the blend of the keys for the viewport&apos;s camera, updated while you orbit (P)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Solve Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Camera solved: the points are %1 drawing pixels off on average. Refine by hand if needed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Create Key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Key Deformation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Deformation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 model points, %2 drawing points: %3 pairs (six or more needed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::views::ScenePanel</name>
@@ -1126,6 +1597,76 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     </message>
 </context>
 <context>
+    <name>celform::views::ViewSpherePanel</name>
+    <message>
+        <source>Viewing sphere</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The key viewpoints on the viewing sphere and their hull. The green facet holds the current view; its red keys are the ones being blended.
+Drag to orbit, double-click a key to edit it, double-click empty space to reset the orientation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <comment>key name and its weight</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>base %1</source>
+        <comment>the base model&apos;s share of the blend</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · </source>
+        <comment>separator between key weights</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>view · falloff c = %1</source>
+        <comment>marker of the current view outside the keys</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>view</source>
+        <comment>marker of the current view direction</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No base model yet: import a model to build its viewing sphere</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No keys yet: create a key from an aligned drawing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All keys are disabled: enable a key to blend it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The key directions cannot be hulled: the model shows its base shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3)</source>
+        <comment>a direction vector</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Direction %2&lt;br&gt;Weight in this view: %3&lt;br&gt;&lt;i&gt;Double-click to edit this key&lt;/i&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Dummy key&lt;/b&gt; %1&lt;br&gt;The base model, filling a view no key covers (paper 1, section 3.3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Current view&lt;/b&gt;&lt;br&gt;Direction %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>celform::views::Viewport</name>
     <message>
         <source>3D viewport</source>
@@ -1134,6 +1675,42 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     <message>
         <source>&lt;p&gt;The 3D view of the model.&lt;/p&gt;&lt;p&gt;Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. F: frame the model. Home: front view.&lt;/p&gt;</source>
         <translation>&lt;p&gt;モデルの 3D ビューです。&lt;/p&gt;&lt;p&gt;Alt + 左ボタンドラッグまたは中ボタンドラッグ: 回転（オービット）。Alt + 中ボタンドラッグまたは Shift + 中ボタンドラッグ: パン。Alt + 右ボタンドラッグ、Ctrl + 中ボタンドラッグ、マウスホイール: ドリー。F: モデル全体を表示。Home: 正面ビュー。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click a feature on the model, then Shift+click the same feature on the drawing; six pairs or more, then Solve Camera.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show a drawing to align first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 pairs of points so far; the camera needs at least six.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The camera could not be solved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shift+click inside the drawing to place its point.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click on the model to place a model point; Shift+click places the drawing point.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush radius %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -191,7 +191,7 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     // Antialiasing is VTK's: it resolves its own multisampled buffer before blitting into Qt's,
     // which must stay single-sampled (see defaultFormat()). FXAA is not an option: its pass
     // re-binds framebuffers behind Qt and the frame comes out black.
-    v.window->SetMultiSamples(4);
+    v.window->SetMultiSamples(4); // see initializeGL() for software GL
     // Layers: 0 background (the drawing when it is under the model, else the model), 1 the
     // model over a drawing, 2 a drawing over the model, 3 the axes triad.
     v.window->SetNumberOfLayers(4);
@@ -1134,6 +1134,14 @@ std::optional<double> Viewport::solveFromMatchedPoints(QString* error)
 void Viewport::initializeGL()
 {
     vtkGenericOpenGLRenderWindow* window = m_vtk->window;
+    // On a software rasteriser (Mesa llvmpipe under Xvfb, remote desktops) 4x multisampling
+    // halves the frame rate: interaction matters more there. CELFORM_MSAA overrides.
+    const auto* renderer = reinterpret_cast<const char*>(context()->functions()->glGetString(GL_RENDERER));
+    const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe")
+                                       || std::strstr(renderer, "Software"));
+    bool overridden = false;
+    const int samples = qEnvironmentVariableIntValue("CELFORM_MSAA", &overridden);
+    window->SetMultiSamples(overridden ? std::clamp(samples, 0, 16) : (software ? 0 : 4));
     window->SetReadyForRendering(false);
     window->InitializeFromCurrentContext();
     window->SetFrameBlitModeToBlitToCurrent();
