@@ -181,30 +181,23 @@ int commandInfo(const QStringList& args)
     return kExitOk;
 }
 
-/// Parses "X,Y,Z" (a usage error when malformed or not finite).
-Eigen::Vector3d parseVector(const QString& option, const QString& text)
+/// Parses N comma-separated finite numbers ("X,Y,Z", "DX,DY"); anything else is a usage error.
+template <int N> Eigen::Matrix<double, N, 1> parseNumbers(const QString& option, const QString& text)
 {
     const QStringList parts = text.split(QLatin1Char(','));
-    Eigen::Vector3d v;
-    bool ok = parts.size() == 3;
-    for (int i = 0; ok && i < 3; ++i)
+    Eigen::Matrix<double, N, 1> v;
+    bool ok = parts.size() == N;
+    for (int i = 0; ok && i < N; ++i)
         v[i] = parts[i].trimmed().toDouble(&ok);
     if (!ok || !v.allFinite())
-        throw UsageError{Cli::tr("--%1 needs three numbers X,Y,Z, not “%2”").arg(option, text)};
+        throw UsageError{N == 3 ? Cli::tr("--%1 needs three numbers X,Y,Z, not “%2”").arg(option, text)
+                                : Cli::tr("--%1 needs two numbers A,B, not “%2”").arg(option, text)};
     return v;
 }
 
-/// Parses "A,B" (a usage error when malformed).
-Eigen::Vector2d parsePair(const QString& option, const QString& text)
+Eigen::Vector3d parseVector(const QString& option, const QString& text)
 {
-    const QStringList parts = text.split(QLatin1Char(','));
-    Eigen::Vector2d v;
-    bool ok = parts.size() == 2;
-    for (int i = 0; ok && i < 2; ++i)
-        v[i] = parts[i].trimmed().toDouble(&ok);
-    if (!ok || !v.allFinite())
-        throw UsageError{Cli::tr("--%1 needs two numbers A,B, not “%2”").arg(option, text)};
-    return v;
+    return parseNumbers<3>(option, text);
 }
 
 double parseNumber(const QString& option, const QString& text)
@@ -385,7 +378,7 @@ int commandBrush(const QStringList& args)
     algo::ImageFrame imageFrame{k.camera.right(), k.camera.trueUp(), k.camera.forward()};
     algo::Positions moves;
     if (parser.isSet(drag)) {
-        const Eigen::Vector2d d = parsePair(QStringLiteral("drag"), parser.value(drag));
+        const Eigen::Vector2d d = parseNumbers<2>(QStringLiteral("drag"), parser.value(drag));
         moves = algo::brushDrag(selection, imageFrame, d.x(), d.y());
     } else {
         moves = algo::brushPush(selection, imageFrame, parseNumber(QStringLiteral("push"), parser.value(push)));

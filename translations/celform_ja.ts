@@ -4,16 +4,8 @@
 <context>
     <name>Cli</name>
     <message>
-        <source>--%1 needs three numbers X,Y,Z, not “%2”</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>--%1 needs two numbers A,B, not “%2”</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>has no key named “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」という名前のキーがありません</translation>
     </message>
 </context>
 <context>
@@ -86,205 +78,219 @@ usage: %1</source>
     </message>
     <message>
         <source>--%1 needs a number, not “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 には数値を指定してください（「%2」は無効です）</translation>
     </message>
     <message>
         <source>--%1 needs a whole number, not “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 には整数を指定してください（「%2」は無効です）</translation>
     </message>
     <message>
         <source>Adds a key viewpoint with its key deformation.</source>
-        <translation type="unfinished"></translation>
+        <translation>キー視点をキー変形とともに追加します。</translation>
     </message>
     <message>
         <source>The action (add).</source>
-        <translation type="unfinished"></translation>
+        <translation>操作（add）。</translation>
     </message>
     <message>
         <source>Name of the new key.</source>
-        <translation type="unfinished"></translation>
+        <translation>新しいキーの名前。</translation>
     </message>
     <message>
         <source>Key deformation: a mesh with the base model&apos;s vertex count and order.</source>
-        <translation type="unfinished"></translation>
+        <translation>キー変形: ベースモデルと頂点数・頂点順序が同じメッシュ。</translation>
     </message>
     <message>
         <source>Start as a copy of the base model.</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデルのコピーから開始します。</translation>
     </message>
     <message>
         <source>View direction from the model&apos;s centroid towards the eye.</source>
-        <translation type="unfinished"></translation>
+        <translation>視線方向（モデルの重心からカメラ位置に向かう方向）。</translation>
     </message>
     <message>
         <source>Camera position.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラ位置。</translation>
     </message>
     <message>
         <source>Point the camera looks at.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラの注視点。</translation>
     </message>
     <message>
         <source>Camera up vector.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラの上方向ベクトル。</translation>
     </message>
     <message>
         <source>Frame of the deformation (default 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>変形のフレーム（既定値 0）。</translation>
     </message>
     <message>
         <source>Reference drawing to embed and link, aligned with the key&apos;s camera.</source>
-        <translation type="unfinished"></translation>
+        <translation>埋め込んでリンクする参照画（キーのカメラに位置合わせされます）。</translation>
     </message>
     <message>
         <source>Print the new key as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>新しいキーを JSON 形式で出力します。</translation>
     </message>
     <message>
         <source>unknown key action “%1”
 usage: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>不明な key の操作「%1」です
+使い方: %2</translation>
     </message>
     <message>
         <source>--name and exactly one of --mesh or --from-base are required
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--name と、--mesh または --from-base のどちらか一方の指定が必要です
+使い方: %1</translation>
     </message>
     <message>
         <source>give either --view or all of --eye, --target and --up
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--view を指定するか、--eye、--target、--up をすべて指定してください
+使い方: %1</translation>
     </message>
     <message>
         <source>has no base model</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデルがありません</translation>
     </message>
     <message>
         <source>--view must not be zero</source>
-        <translation type="unfinished"></translation>
+        <translation>--view にゼロベクトルは指定できません</translation>
     </message>
     <message>
         <source>--eye, --target and --up do not make a camera (eye equals target, or up is parallel to the view)</source>
-        <translation type="unfinished"></translation>
+        <translation>--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
     </message>
     <message>
         <source>has %1 vertices, but the base model has %2: a key deformation needs the base model&apos;s vertex count and order</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点数が %1 ですが、ベースモデルの頂点数は %2 です。キー変形にはベースモデルと同じ頂点数と頂点順序が必要です</translation>
     </message>
     <message>
         <source>Deforms a key with the falloff brush, seen from the key&apos;s camera.</source>
-        <translation type="unfinished"></translation>
+        <translation>キーのカメラから見て、減衰付きブラシでキーを変形します。</translation>
     </message>
     <message>
         <source>Name of the key to deform.</source>
-        <translation type="unfinished"></translation>
+        <translation>変形するキーの名前。</translation>
     </message>
     <message>
         <source>Index of the picked vertex.</source>
-        <translation type="unfinished"></translation>
+        <translation>選択する頂点のインデックス。</translation>
     </message>
     <message>
         <source>Selection radius in world units.</source>
-        <translation type="unfinished"></translation>
+        <translation>選択半径（ワールド単位）。</translation>
     </message>
     <message>
         <source>Move along the camera&apos;s right and up vectors, in world units.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラの右方向と上方向に沿った移動量（ワールド単位）。</translation>
     </message>
     <message>
         <source>Move along the viewing direction (away from the camera), in world units.</source>
-        <translation type="unfinished"></translation>
+        <translation>視線方向（カメラから遠ざかる向き）に沿った移動量（ワールド単位）。</translation>
     </message>
     <message>
         <source>Print what moved as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>移動した内容を JSON 形式で出力します。</translation>
     </message>
     <message>
         <source>--key, --vertex, --radius and exactly one of --drag or --push are required
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--key、--vertex、--radius と、--drag または --push のどちらか一方の指定が必要です
+使い方: %1</translation>
     </message>
     <message>
         <source>--radius must be positive</source>
-        <translation type="unfinished"></translation>
+        <translation>--radius には正の値を指定してください</translation>
     </message>
     <message>
         <source>has no vertex %1 (the base model has %2 vertices)</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点 %1 がありません（ベースモデルの頂点数は %2 です）</translation>
     </message>
     <message>
         <source>Brush “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシ「%1」</translation>
     </message>
     <message>
         <source>Evaluates the view-dependent shape for a view direction.</source>
-        <translation type="unfinished"></translation>
+        <translation>指定した視線方向での視点依存形状を評価します。</translation>
     </message>
     <message>
         <source>Frame (default 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム（既定値 0）。</translation>
     </message>
     <message>
         <source>Write the blended mesh (OBJ or PLY, base vertex order).</source>
-        <translation type="unfinished"></translation>
+        <translation>ブレンドしたメッシュを書き出します（OBJ または PLY、ベースモデルの頂点順序）。</translation>
     </message>
     <message>
         <source>Print the keys and weights as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>キーとウェイトを JSON 形式で出力します。</translation>
     </message>
     <message>
         <source>--view is required
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--view の指定が必要です
+使い方: %1</translation>
     </message>
     <message>
         <source>Changes project settings.</source>
-        <translation type="unfinished"></translation>
+        <translation>プロジェクトの設定を変更します。</translation>
     </message>
     <message>
         <source>Blend sharpness alpha (&gt; 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>ブレンドのシャープネス α（&gt; 0）。</translation>
     </message>
     <message>
         <source>Unspecified-region mode.</source>
-        <translation type="unfinished"></translation>
+        <translation>未指定領域のモード。</translation>
     </message>
     <message>
         <source>Key light: a point position or a direction towards the light.</source>
-        <translation type="unfinished"></translation>
+        <translation>キーライト: 点光源の位置、またはライトに向かう方向。</translation>
     </message>
     <message>
         <source>Shading style.</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングスタイル。</translation>
     </message>
     <message>
         <source>nothing to set
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>設定する項目が指定されていません
+使い方: %1</translation>
     </message>
     <message>
         <source>--sharpness must be positive</source>
-        <translation type="unfinished"></translation>
+        <translation>--sharpness には正の値を指定してください</translation>
     </message>
     <message>
         <source>--unspecified takes dummy, cosine or cosine2, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--unspecified には dummy、cosine、cosine2 のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>a directional light needs a non-zero direction</source>
-        <translation type="unfinished"></translation>
+        <translation>平行光源にはゼロ以外の方向が必要です</translation>
     </message>
     <message>
         <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>usage:</source>
-        <translation type="unfinished"></translation>
+        <translation>使い方:</translation>
+    </message>
+    <message>
+        <source>--%1 needs three numbers X,Y,Z, not “%2”</source>
+        <translation>--%1 には X,Y,Z の 3 つの数値が必要です（「%2」ではありません）</translation>
+    </message>
+    <message>
+        <source>--%1 needs two numbers A,B, not “%2”</source>
+        <translation>--%1 には A,B の 2 つの数値が必要です（「%2」ではありません）</translation>
     </message>
 </context>
 <context>
@@ -635,47 +641,47 @@ Recover it now?</source>
     </message>
     <message>
         <source>Key created: select Edit Key with the Brush to deform it</source>
-        <translation type="unfinished"></translation>
+        <translation>キーを作成しました。変形するには「ブラシでキーを編集」を選択してください</translation>
     </message>
     <message>
         <source>Viewing Sphere</source>
-        <translation type="unfinished"></translation>
+        <translation>視点球</translation>
     </message>
     <message>
         <source>The view-dependent shape for the main camera, seen from this camera of its own</source>
-        <translation type="unfinished"></translation>
+        <translation>メインカメラに対する視点依存形状を、このビュー独自のカメラから表示します</translation>
     </message>
     <message>
         <source>Observer</source>
-        <translation type="unfinished"></translation>
+        <translation>観察ビュー</translation>
     </message>
     <message>
         <source>&amp;Preview View-Dependent Shape</source>
-        <translation type="unfinished"></translation>
+        <translation>視点依存形状をプレビュー(&amp;P)</translation>
     </message>
     <message>
         <source>Show the blend of the keys for the current camera, updated while orbiting</source>
-        <translation type="unfinished"></translation>
+        <translation>現在のカメラに対するキーのブレンド結果を表示します（回転中も更新されます）</translation>
     </message>
     <message>
         <source>&amp;Navigate Only</source>
-        <translation type="unfinished"></translation>
+        <translation>ナビゲーションのみ(&amp;N)</translation>
     </message>
     <message>
         <source>Leave alignment and brush tools</source>
-        <translation type="unfinished"></translation>
+        <translation>位置合わせツールとブラシツールを終了します</translation>
     </message>
     <message>
         <source>Create Key from &amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>現在のビューからキーを作成(&amp;V)</translation>
     </message>
     <message>
         <source>Make a key viewpoint seen from the current camera, starting as a copy of the base model</source>
-        <translation type="unfinished"></translation>
+        <translation>現在のカメラから見たキー視点を作成します。初期形状はベースモデルのコピーです</translation>
     </message>
     <message>
         <source>Key</source>
-        <translation type="unfinished"></translation>
+        <translation>キー</translation>
     </message>
 </context>
 <context>
@@ -742,55 +748,55 @@ Recover it now?</source>
     </message>
     <message>
         <source>Key “%1” already has this view direction; a second key needs a different direction (at least %2° apart).</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」がすでにこの視線方向を使用しています。別のキーには異なる方向（%2° 以上離れた方向）が必要です。</translation>
     </message>
     <message>
         <source>A key needs a view direction.</source>
-        <translation type="unfinished"></translation>
+        <translation>キーには視線方向が必要です。</translation>
     </message>
     <message>
         <source>Import a base model before making keys.</source>
-        <translation type="unfinished"></translation>
+        <translation>キーを作成する前にベースモデルをインポートしてください。</translation>
     </message>
     <message>
         <source>The key&apos;s camera is not valid (eye, target and up must differ).</source>
-        <translation type="unfinished"></translation>
+        <translation>キーのカメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
     </message>
     <message>
         <source>The key&apos;s camera sits at the centre of the model; move it away first.</source>
-        <translation type="unfinished"></translation>
+        <translation>キーのカメラがモデルの中心にあります。先にカメラを中心から離してください。</translation>
     </message>
     <message>
         <source>The drawing no longer exists.</source>
-        <translation type="unfinished"></translation>
+        <translation>この参照画はすでに存在しません。</translation>
     </message>
     <message>
         <source>Align the drawing “%1” first: its camera gives the key&apos;s view direction.</source>
-        <translation type="unfinished"></translation>
+        <translation>先に参照画「%1」の位置合わせを行ってください。そのカメラの向きがキーの視線方向になります。</translation>
     </message>
     <message>
         <source>Re-align Key “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」を再位置合わせ</translation>
     </message>
     <message>
         <source>Unlink Key “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」のリンクを解除</translation>
     </message>
     <message>
         <source>Link Key “%1” to a Drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」を参照画にリンク</translation>
     </message>
     <message>
         <source>has %1 vertices, but the base model has %2: a key deformation needs the base model&apos;s vertex count and order</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点数が %1 ですが、ベースモデルの頂点数は %2 です。キー変形にはベースモデルと同じ頂点数と頂点順序が必要です</translation>
     </message>
     <message>
         <source>its triangles differ from the base model&apos;s; only the vertex positions are used</source>
-        <translation type="unfinished"></translation>
+        <translation>三角形の構成がベースモデルと異なります。頂点位置のみを使用します</translation>
     </message>
     <message>
         <source>Import Deformation into “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」に変形をインポート</translation>
     </message>
 </context>
 <context>
@@ -1372,171 +1378,171 @@ Size %4 × %5 × %6</source>
     </message>
     <message>
         <source>Drawing over the &amp;model</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画をモデルの手前に表示(&amp;M)</translation>
     </message>
     <message>
         <source>Show the drawing over the model (with its opacity) or behind it as a backdrop</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画をモデルの手前に（不透明度を適用して）重ねるか、背景としてモデルの奥に表示します</translation>
     </message>
     <message>
         <source>&amp;Align to Drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画に位置合わせ(&amp;A)</translation>
     </message>
     <message>
         <source>Show the drawing fixed in the viewport and move the camera until the model matches it (Alt+drag orbit/pan/dolly, Alt+Shift+drag roll). The camera is stored with the drawing.</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画をビューポートに固定して表示し、モデルが参照画に重なるまでカメラを動かします（Alt + ドラッグで回転/パン/ドリー、Alt + Shift + ドラッグでロール）。カメラは参照画とともに保存されます。</translation>
     </message>
     <message>
         <source>Vertical field of view of the aligned camera (perspective); a narrower angle is a longer focal length</source>
-        <translation type="unfinished"></translation>
+        <translation>位置合わせしたカメラの垂直画角（透視投影時）。画角が狭いほど焦点距離が長くなります</translation>
     </message>
     <message>
         <source>&amp;Field of view:</source>
-        <translation type="unfinished"></translation>
+        <translation>画角(&amp;F):</translation>
     </message>
     <message>
         <source>Perspective</source>
-        <translation type="unfinished"></translation>
+        <translation>透視投影</translation>
     </message>
     <message>
         <source>Orthographic</source>
-        <translation type="unfinished"></translation>
+        <translation>平行投影</translation>
     </message>
     <message>
         <source>Projection of the aligned camera</source>
-        <translation type="unfinished"></translation>
+        <translation>位置合わせしたカメラの投影方法</translation>
     </message>
     <message>
         <source>&amp;Projection:</source>
-        <translation type="unfinished"></translation>
+        <translation>投影(&amp;P):</translation>
     </message>
     <message>
         <source>&amp;Match Points</source>
-        <translation type="unfinished"></translation>
+        <translation>点の対応付け(&amp;M)</translation>
     </message>
     <message>
         <source>Click a feature on the model, then Shift+click the same feature on the drawing; repeat for six or more features spread over the model, then Solve Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>モデル上の特徴的な箇所をクリックし、参照画上の同じ箇所を Shift + クリックします。モデル全体に散らばる 6 か所以上で繰り返してから「カメラを推定」を実行します</translation>
     </message>
     <message>
         <source>S&amp;olve Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラを推定(&amp;O)</translation>
     </message>
     <message>
         <source>Find the camera that best projects the model points onto the drawing points</source>
-        <translation type="unfinished"></translation>
+        <translation>モデル上の点を参照画上の点に最もよく一致させて投影するカメラを求めます</translation>
     </message>
     <message>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>クリア</translation>
     </message>
     <message>
         <source>Remove every matched point</source>
-        <translation type="unfinished"></translation>
+        <translation>すべての対応点を削除します</translation>
     </message>
     <message>
         <source>Create &amp;Key from Drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画からキーを作成(&amp;K)</translation>
     </message>
     <message>
         <source>Make a key viewpoint in the direction of the drawing&apos;s aligned camera, starting as a copy of the base model</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画に位置合わせしたカメラの方向にキー視点を作成します。初期形状はベースモデルのコピーです</translation>
     </message>
     <message>
         <source>The reference drawing shown while the key is edited</source>
-        <translation type="unfinished"></translation>
+        <translation>キーの編集中に表示する参照画</translation>
     </message>
     <message>
         <source>&amp;Drawing:</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画(&amp;D):</translation>
     </message>
     <message>
         <source>&amp;Edit Key with the Brush</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシでキーを編集(&amp;E)</translation>
     </message>
     <message>
         <source>Look through the key&apos;s camera with its drawing and deform the key: drag moves in the image plane, Ctrl+drag pushes or pulls along the view, Shift+drag rotates, Ctrl+Shift+drag scales; [ and ] change the radius</source>
-        <translation type="unfinished"></translation>
+        <translation>キーのカメラから参照画とともに表示し、キーを変形します。ドラッグで画像平面内を移動、Ctrl + ドラッグで視線方向に押し/引き、Shift + ドラッグで回転、Ctrl + Shift + ドラッグでスケール。[ と ] で半径を変更します</translation>
     </message>
     <message>
         <source>&amp;Import Deformation…</source>
-        <translation type="unfinished"></translation>
+        <translation>変形をインポート(&amp;I)…</translation>
     </message>
     <message>
         <source>Use a mesh made in another tool (same vertex count and order) as this key&apos;s deformation</source>
-        <translation type="unfinished"></translation>
+        <translation>他のツールで作成したメッシュ（頂点数と頂点順序が同じもの）をこのキーの変形として使用します</translation>
     </message>
     <message>
         <source>Brush</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシ</translation>
     </message>
     <message>
         <source>Vertices within this distance of the picked vertex (world units) follow it with the falloff (1 − d/r)²; [ and ] in the viewport</source>
-        <translation type="unfinished"></translation>
+        <translation>選択した頂点からこの距離（ワールド単位）以内にある頂点が、減衰 (1 − d/r)² で追従します。ビューポートでは [ と ] で変更できます</translation>
     </message>
     <message>
         <source>&amp;Radius:</source>
-        <translation type="unfinished"></translation>
+        <translation>半径(&amp;R):</translation>
     </message>
     <message>
         <source>Move</source>
-        <translation type="unfinished"></translation>
+        <translation>移動</translation>
     </message>
     <message>
         <source>Smooth</source>
-        <translation type="unfinished"></translation>
+        <translation>スムーズ</translation>
     </message>
     <message>
         <source>Move drags the selection; Smooth relaxes it toward its neighbours while you drag</source>
-        <translation type="unfinished"></translation>
+        <translation>「移動」はドラッグで選択範囲を動かします。「スムーズ」はドラッグ中に選択範囲を周囲の頂点になじませます</translation>
     </message>
     <message>
         <source>&amp;Mode:</source>
-        <translation type="unfinished"></translation>
+        <translation>モード(&amp;M):</translation>
     </message>
     <message>
         <source>&amp;X mirror</source>
-        <translation type="unfinished"></translation>
+        <translation>X ミラー(&amp;X)</translation>
     </message>
     <message>
         <source>Apply every stroke to the mirrored side too (x → −x), for symmetric characters</source>
-        <translation type="unfinished"></translation>
+        <translation>すべてのストロークをミラー側（x → −x）にも適用します。左右対称のキャラクター向けです</translation>
     </message>
     <message>
         <source>&amp;Preview View-Dependent Shape</source>
-        <translation type="unfinished"></translation>
+        <translation>視点依存形状をプレビュー(&amp;P)</translation>
     </message>
     <message>
         <source>Show the blend of the keys for the viewport&apos;s camera, updated while you orbit (P)</source>
-        <translation type="unfinished"></translation>
+        <translation>ビューポートのカメラに対するキーのブレンド結果を表示します。回転中も更新されます（P）</translation>
     </message>
     <message>
         <source>Solve Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラを推定</translation>
     </message>
     <message>
         <source>Camera solved: the points are %1 drawing pixels off on average. Refine by hand if needed.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラを推定しました。点のずれは参照画上で平均 %1 ピクセルです。必要に応じて手動で調整してください。</translation>
     </message>
     <message>
         <source>Create Key</source>
-        <translation type="unfinished"></translation>
+        <translation>キーを作成</translation>
     </message>
     <message>
         <source>Import Key Deformation</source>
-        <translation type="unfinished"></translation>
+        <translation>キー変形をインポート</translation>
     </message>
     <message>
         <source>Import Deformation</source>
-        <translation type="unfinished"></translation>
+        <translation>変形をインポート</translation>
     </message>
     <message>
         <source>%1 model points, %2 drawing points: %3 pairs (six or more needed)</source>
-        <translation type="unfinished"></translation>
+        <translation>モデル上の点 %1、参照画上の点 %2: %3 組（6 組以上必要）</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>（なし）</translation>
     </message>
 </context>
 <context>
@@ -1600,70 +1606,71 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     <name>celform::views::ViewSpherePanel</name>
     <message>
         <source>Viewing sphere</source>
-        <translation type="unfinished"></translation>
+        <translation>視点球</translation>
     </message>
     <message>
         <source>The key viewpoints on the viewing sphere and their hull. The green facet holds the current view; its red keys are the ones being blended.
 Drag to orbit, double-click a key to edit it, double-click empty space to reset the orientation.</source>
-        <translation type="unfinished"></translation>
+        <translation>視点球上のキー視点とその凸包です。緑のファセットに現在の視点があり、そのファセットの赤いキーがブレンドされています。
+ドラッグで回転、キーをダブルクリックで編集、何もない場所をダブルクリックで向きをリセットします。</translation>
     </message>
     <message>
         <source>%1 %2</source>
         <comment>key name and its weight</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>base %1</source>
         <comment>the base model&apos;s share of the blend</comment>
-        <translation type="unfinished"></translation>
+        <translation>ベース %1</translation>
     </message>
     <message>
         <source> · </source>
         <comment>separator between key weights</comment>
-        <translation type="unfinished"></translation>
+        <translation> · </translation>
     </message>
     <message>
         <source>view · falloff c = %1</source>
         <comment>marker of the current view outside the keys</comment>
-        <translation type="unfinished"></translation>
+        <translation>視点 · 減衰 c = %1</translation>
     </message>
     <message>
         <source>view</source>
         <comment>marker of the current view direction</comment>
-        <translation type="unfinished"></translation>
+        <translation>視点</translation>
     </message>
     <message>
         <source>No base model yet: import a model to build its viewing sphere</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデルがまだありません。モデルをインポートすると視点球が作成されます</translation>
     </message>
     <message>
         <source>No keys yet: create a key from an aligned drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>キーがまだありません。位置合わせした参照画からキーを作成してください</translation>
     </message>
     <message>
         <source>All keys are disabled: enable a key to blend it</source>
-        <translation type="unfinished"></translation>
+        <translation>すべてのキーが無効です。ブレンドするにはキーを有効にしてください</translation>
     </message>
     <message>
         <source>The key directions cannot be hulled: the model shows its base shape</source>
-        <translation type="unfinished"></translation>
+        <translation>キーの方向から凸包を作成できません。モデルはベース形状で表示されます</translation>
     </message>
     <message>
         <source>(%1, %2, %3)</source>
         <comment>a direction vector</comment>
-        <translation type="unfinished"></translation>
+        <translation>(%1, %2, %3)</translation>
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Direction %2&lt;br&gt;Weight in this view: %3&lt;br&gt;&lt;i&gt;Double-click to edit this key&lt;/i&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;方向 %2&lt;br&gt;この視点でのウェイト: %3&lt;br&gt;&lt;i&gt;ダブルクリックでこのキーを編集&lt;/i&gt;</translation>
     </message>
     <message>
         <source>&lt;b&gt;Dummy key&lt;/b&gt; %1&lt;br&gt;The base model, filling a view no key covers (paper 1, section 3.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;ダミーキー&lt;/b&gt; %1&lt;br&gt;どのキーにも覆われない視点を埋めるベースモデル（論文 1、3.3 節）</translation>
     </message>
     <message>
         <source>&lt;b&gt;Current view&lt;/b&gt;&lt;br&gt;Direction %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;現在の視点&lt;/b&gt;&lt;br&gt;方向 %1</translation>
     </message>
 </context>
 <context>
@@ -1678,39 +1685,39 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
     </message>
     <message>
         <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
-        <translation type="unfinished"></translation>
+        <translation>先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
     </message>
     <message>
         <source>Brush “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシ「%1」</translation>
     </message>
     <message>
         <source>Click a feature on the model, then Shift+click the same feature on the drawing; six pairs or more, then Solve Camera.</source>
-        <translation type="unfinished"></translation>
+        <translation>モデル上の特徴的な箇所をクリックし、参照画上の同じ箇所を Shift + クリックします。6 組以上指定したら「カメラを推定」を実行します。</translation>
     </message>
     <message>
         <source>Show a drawing to align first.</source>
-        <translation type="unfinished"></translation>
+        <translation>先に位置合わせする参照画を表示してください。</translation>
     </message>
     <message>
         <source>%1 pairs of points so far; the camera needs at least six.</source>
-        <translation type="unfinished"></translation>
+        <translation>現在の対応点は %1 組です。カメラの推定には 6 組以上必要です。</translation>
     </message>
     <message>
         <source>The camera could not be solved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラを推定できませんでした: %1</translation>
     </message>
     <message>
         <source>Shift+click inside the drawing to place its point.</source>
-        <translation type="unfinished"></translation>
+        <translation>参照画の内側を Shift + クリックして参照画側の点を配置してください。</translation>
     </message>
     <message>
         <source>Click on the model to place a model point; Shift+click places the drawing point.</source>
-        <translation type="unfinished"></translation>
+        <translation>モデル上をクリックしてモデル側の点を配置します。Shift + クリックで参照画側の点を配置します。</translation>
     </message>
     <message>
         <source>Brush radius %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシ半径 %1</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 // the unsaved-changes marker, undo, deleting from the scene, dropping files, autosave and recovery,
 // and the --screenshot option.
 #include "test_support.h"
+#include "ui_test_support.h"
 
 #include "main_window.h"
 #include "recovery.h"
@@ -24,11 +25,6 @@ using namespace celform;
 
 namespace {
 
-QString sampleProject()
-{
-    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
-}
-
 /// Share of pixels that differ clearly from the top-left corner's colour (the background).
 double coverage(const QImage& image)
 {
@@ -46,27 +42,9 @@ double coverage(const QImage& image)
     return double(differing) / (double(img.width() / 2) * double(img.height() / 2));
 }
 
-void sendDrag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPoint from, QPoint to)
-{
-    QMouseEvent press(QEvent::MouseButtonPress, from, w->mapToGlobal(from), button, button, mods);
-    QApplication::sendEvent(w, &press);
-    for (int i = 1; i <= 10; ++i) {
-        const QPoint p = from + (to - from) * i / 10;
-        QMouseEvent move(QEvent::MouseMove, p, w->mapToGlobal(p), Qt::NoButton, button, mods);
-        QApplication::sendEvent(w, &move);
-    }
-    QMouseEvent release(QEvent::MouseButtonRelease, to, w->mapToGlobal(to), button, Qt::NoButton, mods);
-    QApplication::sendEvent(w, &release);
-}
-
 QImage renderNow(views::Viewport* vp)
 {
-    const int before = vp->renderCount();
-    vp->update();
-    QElapsedTimer timer;
-    timer.start();
-    while (vp->renderCount() <= before && timer.elapsed() < 5000)
-        QTest::qWait(10);
+    test::waitForRender(vp);
     return vp->renderedImage();
 }
 
@@ -79,7 +57,7 @@ private slots:
     void initTestCase()
     {
         QStandardPaths::setTestModeEnabled(true);
-        QVERIFY2(QFileInfo::exists(sampleProject()), "the bundled sample project is missing");
+        QVERIFY2(QFileInfo::exists(test::sampleProject()), "the bundled sample project is missing");
     }
 
     void opensSampleAndOrbits()
@@ -88,7 +66,7 @@ private slots:
         window.resize(1200, 800);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(window.openFile(test::sampleProject()));
         QVERIFY(window.document()->hasMesh());
         QVERIFY(!window.document()->data().drawings.empty());
         QVERIFY(window.windowTitle().startsWith(QStringLiteral("elephant.celform")));
@@ -100,7 +78,7 @@ private slots:
         QSignalSpy cameraSpy(vp, &views::Viewport::cameraChanged);
         const model::Camera before = vp->camera();
         const QPoint c = vp->rect().center();
-        sendDrag(vp, Qt::LeftButton, Qt::AltModifier, c, c + QPoint(150, 40));
+        test::drag(vp, Qt::LeftButton, Qt::AltModifier, c, c + QPoint(150, 40));
         QVERIFY(cameraSpy.count() > 0);
         const model::Camera after = vp->camera();
         QVERIFY((after.eye - before.eye).norm() > 1e-3);
@@ -112,7 +90,7 @@ private slots:
         QVERIFY(orbited != first);
 
         // Plain middle-button drag orbits too.
-        sendDrag(vp, Qt::MiddleButton, Qt::NoModifier, c, c + QPoint(-80, 0));
+        test::drag(vp, Qt::MiddleButton, Qt::NoModifier, c, c + QPoint(-80, 0));
         QVERIFY((vp->camera().eye - after.eye).norm() > 1e-3);
         QVERIFY(coverage(renderNow(vp)) > 0.05);
     }
@@ -121,7 +99,7 @@ private slots:
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);
         window.show();
-        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(window.openFile(test::sampleProject()));
         QVERIFY(!window.isWindowModified());
         const auto id = window.document()->data().drawings.front().id;
         window.document()->renameDrawing(id, QStringLiteral("side view"));
@@ -136,7 +114,7 @@ private slots:
         app::MainWindow window(app::MainWindow::Mode::Batch);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(window.openFile(test::sampleProject()));
         const std::size_t count = window.document()->data().drawings.size();
         const auto id = window.document()->data().drawings.front().id;
         window.scenePanel()->select({views::ScenePanel::ItemKind::Drawing, id});
@@ -178,7 +156,7 @@ private slots:
     {
         QTemporaryDir dir;
         app::MainWindow window(app::MainWindow::Mode::Batch);
-        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(window.openFile(test::sampleProject()));
         const model::ProjectData before = window.document()->data();
         const QString bad = dir.filePath(QStringLiteral("bad.celform"));
         QFile f(bad);
@@ -193,7 +171,7 @@ private slots:
     {
         QTemporaryDir dir;
         app::MainWindow window(app::MainWindow::Mode::Batch);
-        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(window.openFile(test::sampleProject()));
         auto* recovery = window.recovery();
         window.document()->renameDrawing(window.document()->data().drawings.front().id, QStringLiteral("edited"));
         QVERIFY(recovery->autosaveNow());
@@ -233,7 +211,7 @@ private slots:
         QTemporaryDir dir;
         const QString png = dir.filePath(QStringLiteral("shot.png"));
         QProcess p;
-        p.start(QStringLiteral(CELFORM_EXECUTABLE), {sampleProject(), QStringLiteral("--screenshot"), png});
+        p.start(QStringLiteral(CELFORM_EXECUTABLE), {test::sampleProject(), QStringLiteral("--screenshot"), png});
         QVERIFY(p.waitForFinished(60000));
         QCOMPARE(p.exitCode(), 0);
         const QImage shot(png);

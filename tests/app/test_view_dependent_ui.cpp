@@ -2,6 +2,7 @@
 // sample's drawing, make a key from it, deform the key with the brush in the viewport, undo and
 // redo, then preview the blend (paper 1, section 3).
 #include "test_support.h"
+#include "ui_test_support.h"
 
 #include "main_window.h"
 
@@ -19,45 +20,10 @@
 
 using namespace celform;
 
-namespace {
-
-QString sampleProject()
-{
-    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
-}
-
-void waitForRender(views::Viewport* vp)
-{
-    const int before = vp->renderCount();
-    vp->update();
-    QElapsedTimer timer;
-    timer.start();
-    while (vp->renderCount() <= before && timer.elapsed() < 5000)
-        QTest::qWait(10);
-}
-
-/// Saves a picture of the window when CELFORM_SCREENSHOT_DIR is set (for looking at by eye).
-void keepScreenshot(QWidget* window, const char* name)
-{
-    const QString dir = qEnvironmentVariable("CELFORM_SCREENSHOT_DIR");
-    if (!dir.isEmpty())
-        window->grab().save(dir + QLatin1Char('/') + QLatin1String(name) + QStringLiteral(".png"));
-}
-
-void drag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPoint from, QPoint to, int steps = 10)
-{
-    QMouseEvent press(QEvent::MouseButtonPress, from, w->mapToGlobal(from), button, button, mods);
-    QApplication::sendEvent(w, &press);
-    for (int i = 1; i <= steps; ++i) {
-        const QPoint p = from + (to - from) * i / steps;
-        QMouseEvent move(QEvent::MouseMove, p, w->mapToGlobal(p), Qt::NoButton, button, mods);
-        QApplication::sendEvent(w, &move);
-    }
-    QMouseEvent release(QEvent::MouseButtonRelease, to, w->mapToGlobal(to), button, Qt::NoButton, mods);
-    QApplication::sendEvent(w, &release);
-}
-
-} // namespace
+using test::drag;
+using test::keepScreenshot;
+using test::sampleProject;
+using test::waitForRender;
 
 class TestViewDependentUi : public QObject {
     Q_OBJECT

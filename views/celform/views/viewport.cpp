@@ -677,7 +677,11 @@ void Viewport::setObserved(Viewport* driver)
         disconnect(m_observed, nullptr, this, nullptr);
     m_observed = driver;
     if (driver)
-        connect(driver, &Viewport::cameraChanged, this, &Viewport::updateShape);
+        connect(driver, &Viewport::cameraChanged, this, [this] {
+            // A hidden observer (a closed dock) costs nothing while the main camera orbits.
+            if (isVisible())
+                updateShape();
+        });
     updateShape();
 }
 
@@ -1131,14 +1135,22 @@ std::optional<double> Viewport::solveFromMatchedPoints(QString* error)
 
 // --- OpenGL ---------------------------------------------------------------------------------
 
+void Viewport::showEvent(QShowEvent* event)
+{
+    QOpenGLWidget::showEvent(event);
+    if (m_observed)
+        updateShape(); // catch up with what the main camera did while hidden
+}
+
 void Viewport::initializeGL()
 {
     vtkGenericOpenGLRenderWindow* window = m_vtk->window;
     // On a software rasteriser (Mesa llvmpipe under Xvfb, remote desktops) 4x multisampling
     // halves the frame rate: interaction matters more there. CELFORM_MSAA overrides.
     const auto* renderer = reinterpret_cast<const char*>(context()->functions()->glGetString(GL_RENDERER));
-    const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe")
-                                       || std::strstr(renderer, "Software"));
+    const bool software = renderer
+        && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe")
+            || std::strstr(renderer, "Software"));
     bool overridden = false;
     const int samples = qEnvironmentVariableIntValue("CELFORM_MSAA", &overridden);
     window->SetMultiSamples(overridden ? std::clamp(samples, 0, 16) : (software ? 0 : 4));

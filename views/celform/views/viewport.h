@@ -133,6 +133,7 @@ signals:
     void matchedPointsChanged();
 
 protected:
+    void showEvent(QShowEvent* event) override;
     void initializeGL() override;
     void resizeGL(int w, int h) override;
     void paintGL() override;

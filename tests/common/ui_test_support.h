@@ -1,0 +1,52 @@
+// Helpers of the UI tests: the bundled sample, waiting for a frame, mouse drags with buttons held
+// (QTest::mouseMove carries no buttons in Qt 6), and screenshots kept for looking at by eye.
+#pragma once
+
+#include "celform/views/viewport.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QMouseEvent>
+#include <QtTest/QtTest>
+
+namespace celform::test {
+
+inline QString sampleProject()
+{
+    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+}
+
+/// Asks for a frame and waits (up to 5 s) until the viewport has drawn it.
+inline void waitForRender(views::Viewport* viewport)
+{
+    const int before = viewport->renderCount();
+    viewport->update();
+    QElapsedTimer timer;
+    timer.start();
+    while (viewport->renderCount() <= before && timer.elapsed() < 5000)
+        QTest::qWait(10);
+}
+
+/// A press, `steps` moves with the button held, and a release.
+inline void drag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPoint from, QPoint to, int steps = 10)
+{
+    QMouseEvent press(QEvent::MouseButtonPress, from, w->mapToGlobal(from), button, button, mods);
+    QApplication::sendEvent(w, &press);
+    for (int i = 1; i <= steps; ++i) {
+        const QPoint p = from + (to - from) * i / steps;
+        QMouseEvent move(QEvent::MouseMove, p, w->mapToGlobal(p), Qt::NoButton, button, mods);
+        QApplication::sendEvent(w, &move);
+    }
+    QMouseEvent release(QEvent::MouseButtonRelease, to, w->mapToGlobal(to), button, Qt::NoButton, mods);
+    QApplication::sendEvent(w, &release);
+}
+
+/// Saves a picture of a widget when CELFORM_SCREENSHOT_DIR is set.
+inline void keepScreenshot(QWidget* widget, const char* name)
+{
+    const QString dir = qEnvironmentVariable("CELFORM_SCREENSHOT_DIR");
+    if (!dir.isEmpty())
+        widget->grab().save(dir + QLatin1Char('/') + QLatin1String(name) + QStringLiteral(".png"));
+}
+
+} // namespace celform::test
