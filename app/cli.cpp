@@ -7,12 +7,15 @@
 #include "celform/model/io_error.h"
 #include "celform/model/project_file.h"
 #include "celform/model/mesh_io.h"
+#include "celform/model/render_output.h"
 #include "celform/model/view_blend.h"
 #include "celform/algorithms/brush.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QDir>
 #include <QFileInfo>
+#include <QSize>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -34,7 +37,7 @@ struct Cli {
 };
 
 const QStringList kSubCommands = {QStringLiteral("new"), QStringLiteral("info"), QStringLiteral("key"),
-    QStringLiteral("brush"), QStringLiteral("eval"), QStringLiteral("set")};
+    QStringLiteral("brush"), QStringLiteral("eval"), QStringLiteral("set"), QStringLiteral("render")};
 
 /// Thrown for a usage error; main turns it into exit code 2 with the message and a hint.
 struct UsageError {
@@ -235,13 +238,18 @@ const model::KeyViewpoint& findKey(const model::Document& doc, const QString& na
 }
 
 /// A camera looking at the base centroid from a view direction, far enough to see the model.
-model::Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector3d& view)
+model::Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector3d& view, double aspect = 1.0)
 {
     model::Camera camera;
     const Eigen::Vector3d centre = algo::centroid(data.baseMesh->vertices);
-    const double diagonal = std::max(algo::boundingBox(data.baseMesh->vertices).diagonal().norm(), 1e-6);
+    // The sphere around the centroid holding every vertex fits the narrower field of view.
+    const double radius = std::max(
+        std::sqrt((data.baseMesh->vertices.cast<double>().rowwise() - centre.transpose()).rowwise().squaredNorm().maxCoeff()),
+        1e-6);
+    const double halfY = camera.fovYDegrees * M_PI / 360.0;
+    const double halfMin = std::min(halfY, std::atan(std::tan(halfY) * aspect));
     camera.target = centre;
-    camera.eye = centre + view.normalized() * (1.2 * diagonal / std::tan(camera.fovYDegrees * M_PI / 360.0));
+    camera.eye = centre + view.normalized() * (1.05 * radius / std::sin(halfMin));
     camera.up = std::abs(view.normalized().y()) > 0.99 ? Eigen::Vector3d(0, 0, -1) : Eigen::Vector3d(0, 1, 0);
     return camera;
 }
@@ -445,6 +453,37 @@ int commandEval(const QStringList& args)
     return kExitOk;
 }
 
+/// Parses a light override like "point:X,Y,Z" or "directional:X,Y,Z".
+model::Light parseLight(const QString& value)
+{
+    const int colon = int(value.indexOf(QLatin1Char(':')));
+    const QString type = value.left(colon);
+    model::Light l;
+    if (colon < 0 || (type != QLatin1String("point") && type != QLatin1String("directional")))
+        throw UsageError{Cli::tr("--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”").arg(value)};
+    l.type = type == QLatin1String("point") ? model::LightType::Point : model::LightType::Directional;
+    l.vector = parseVector(QStringLiteral("light"), value.mid(colon + 1));
+    if (l.type == model::LightType::Directional) {
+        if (l.vector.norm() == 0)
+            throw UsageError{Cli::tr("a directional light needs a non-zero direction")};
+        l.vector.normalize();
+    }
+    return l;
+}
+
+/// Parses a shading style name.
+model::ShadingStyle parseStyle(const QString& text)
+{
+    const std::pair<const char*, model::ShadingStyle> styles[] = {{"toon", model::ShadingStyle::Toon},
+                                                                  {"gooch", model::ShadingStyle::Gooch},
+                                                                  {"comic", model::ShadingStyle::Comic},
+                                                                  {"lambert", model::ShadingStyle::Lambert}};
+    for (const auto& [name, style] : styles)
+        if (text == QLatin1String(name))
+            return style;
+    throw UsageError{Cli::tr("--style takes toon, gooch, comic or lambert, not “%1”").arg(text)};
+}
+
 int commandSet(const QStringList& args)
 {
     const QString synopsis
@@ -487,35 +526,10 @@ int commandSet(const QStringList& args)
         else
             throw UsageError{Cli::tr("--unspecified takes dummy, cosine or cosine2, not “%1”").arg(m)};
     }
-    std::optional<model::Light> newLight;
-    if (parser.isSet(light)) {
-        const QString value = parser.value(light);
-        const int colon = int(value.indexOf(QLatin1Char(':')));
-        const QString type = value.left(colon);
-        model::Light l;
-        if (colon < 0 || (type != QLatin1String("point") && type != QLatin1String("directional")))
-            throw UsageError{Cli::tr("--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”").arg(value)};
-        l.type = type == QLatin1String("point") ? model::LightType::Point : model::LightType::Directional;
-        l.vector = parseVector(QStringLiteral("light"), value.mid(colon + 1));
-        if (l.type == model::LightType::Directional) {
-            if (l.vector.norm() == 0)
-                throw UsageError{Cli::tr("a directional light needs a non-zero direction")};
-            l.vector.normalize();
-        }
-        newLight = l;
-    }
-    std::optional<model::ShadingStyle> newStyle;
-    if (parser.isSet(style)) {
-        const QString st = parser.value(style);
-        const std::pair<const char*, model::ShadingStyle> styles[]
-            = {{"toon", model::ShadingStyle::Toon}, {"gooch", model::ShadingStyle::Gooch},
-                {"comic", model::ShadingStyle::Comic}, {"lambert", model::ShadingStyle::Lambert}};
-        for (const auto& [n, v] : styles)
-            if (st == QLatin1String(n))
-                newStyle = v;
-        if (!newStyle)
-            throw UsageError{Cli::tr("--style takes toon, gooch, comic or lambert, not “%1”").arg(st)};
-    }
+    const std::optional<model::Light> newLight =
+        parser.isSet(light) ? std::optional<model::Light>(parseLight(parser.value(light))) : std::nullopt;
+    const std::optional<model::ShadingStyle> newStyle =
+        parser.isSet(style) ? std::optional<model::ShadingStyle>(parseStyle(parser.value(style))) : std::nullopt;
 
     auto doc = openProject(path);
     blend = doc->data().blend;
@@ -531,6 +545,172 @@ int commandSet(const QStringList& args)
         look.style = *newStyle;
     doc->setLook(look);
     doc->saveAs(path);
+    return kExitOk;
+}
+
+/// Parses "WxH" (a usage error when malformed or out of range).
+QSize parseSize(const QString& text)
+{
+    const QStringList parts = text.toLower().split(QLatin1Char('x'));
+    bool okW = false, okH = false;
+    const int w = parts.size() == 2 ? parts[0].toInt(&okW) : 0;
+    const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
+    if (!okW || !okH || w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw UsageError{Cli::tr("--size takes WIDTHxHEIGHT between 1 and 16384, not “%1”").arg(text)};
+    return {w, h};
+}
+
+/// The frame's file name: a run of # in the name becomes the zero-padded frame number; without
+/// one, "_FFFF" goes before the suffix when several frames are rendered.
+QString framePath(const QString& pattern, int frame, bool sequence)
+{
+    const int first = int(pattern.indexOf(QLatin1Char('#')));
+    if (first >= 0) {
+        int last = first;
+        while (last + 1 < pattern.size() && pattern[last + 1] == QLatin1Char('#'))
+            ++last;
+        return pattern.left(first) + QStringLiteral("%1").arg(frame, last - first + 1, 10, QLatin1Char('0'))
+            + pattern.mid(last + 1);
+    }
+    if (!sequence)
+        return pattern;
+    const QFileInfo info(pattern);
+    return info.dir().filePath(QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(frame, 4, 10, QLatin1Char('0')).arg(info.suffix()));
+}
+
+int commandRender(const QStringList& args)
+{
+    const QString synopsis = QStringLiteral(
+        "celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
+        "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] [--light point:X,Y,Z|directional:X,Y,Z] "
+        "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] [--pass beauty|lines|tone|highlights|depth|normal|id] "
+        "[--out FILE.png|.exr|.tif]");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(Cli::tr("Renders the project's look without a display (CPU renderer)."));
+    parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
+    const QCommandLineOption view(QStringLiteral("view"), Cli::tr("View direction from the model's centroid towards the eye."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption eye(QStringLiteral("eye"), Cli::tr("Camera position."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption target(QStringLiteral("target"), Cli::tr("Point the camera looks at."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption up(QStringLiteral("up"), Cli::tr("Camera up vector."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption frame(QStringLiteral("frame"), Cli::tr("Frame to render (default 0)."), QStringLiteral("F"));
+    const QCommandLineOption frames(QStringLiteral("frames"), Cli::tr("Frames to render, A-B inclusive."), QStringLiteral("A-B"));
+    const QCommandLineOption size(QStringLiteral("size"), Cli::tr("Image size (default 1280x720)."), QStringLiteral("WxH"));
+    const QCommandLineOption style(QStringLiteral("style"), Cli::tr("Shading style for this render."), QStringLiteral("STYLE"));
+    const QCommandLineOption lines(QStringLiteral("lines"), Cli::tr("Draw the lines (on) or not (off)."), QStringLiteral("on|off"));
+    const QCommandLineOption light(QStringLiteral("light"), Cli::tr("Key light for this render."), QStringLiteral("TYPE:X,Y,Z"));
+    const QCommandLineOption stereo(QStringLiteral("stereo"), Cli::tr("Stereo output."), QStringLiteral("MODE"));
+    const QCommandLineOption pass(QStringLiteral("pass"), Cli::tr("Write one render pass."), QStringLiteral("NAME"));
+    const QCommandLineOption out(QStringLiteral("out"), Cli::tr("Output image (default: the project's name with .png)."), QStringLiteral("FILE"));
+    parser.addOptions({view, eye, target, up, frame, frames, size, style, lines, light, stereo, pass, out});
+    parseOrThrow(parser, args, 1, synopsis);
+
+    // Every option is checked before any work: a usage error renders nothing.
+    const bool byCamera = parser.isSet(eye) || parser.isSet(target) || parser.isSet(up);
+    if (parser.isSet(view) && byCamera)
+        throw UsageError{Cli::tr("give either --view or --eye, --target and --up\nusage: %1").arg(synopsis)};
+    if (byCamera && !(parser.isSet(eye) && parser.isSet(target) && parser.isSet(up)))
+        throw UsageError{Cli::tr("--eye, --target and --up go together\nusage: %1").arg(synopsis)};
+    if (parser.isSet(frame) && parser.isSet(frames))
+        throw UsageError{Cli::tr("give either --frame or --frames")};
+    int firstFrame = parser.isSet(frame) ? parseInt(QStringLiteral("frame"), parser.value(frame)) : 0;
+    int lastFrame = firstFrame;
+    if (parser.isSet(frames)) {
+        const QStringList range = parser.value(frames).split(QLatin1Char('-'));
+        bool okA = false, okB = false;
+        firstFrame = range.size() == 2 ? range[0].toInt(&okA) : 0;
+        lastFrame = range.size() == 2 ? range[1].toInt(&okB) : 0;
+        if (!okA || !okB || lastFrame < firstFrame)
+            throw UsageError{Cli::tr("--frames takes A-B with A <= B, not “%1”").arg(parser.value(frames))};
+    }
+    const QSize imageSize = parser.isSet(size) ? parseSize(parser.value(size)) : QSize(1280, 720);
+    const std::optional<model::ShadingStyle> styleOverride =
+        parser.isSet(style) ? std::optional<model::ShadingStyle>(parseStyle(parser.value(style))) : std::nullopt;
+    std::optional<bool> linesOverride;
+    if (parser.isSet(lines)) {
+        const QString v = parser.value(lines);
+        if (v != QLatin1String("on") && v != QLatin1String("off"))
+            throw UsageError{Cli::tr("--lines takes on or off, not “%1”").arg(v)};
+        linesOverride = v == QLatin1String("on");
+    }
+    const std::optional<model::Light> lightOverride =
+        parser.isSet(light) ? std::optional<model::Light>(parseLight(parser.value(light))) : std::nullopt;
+    algo::StereoOutput stereoOutput = algo::StereoOutput::Off;
+    if (parser.isSet(stereo)) {
+        const QString v = parser.value(stereo);
+        const std::pair<const char*, algo::StereoOutput> modes[] = {
+            {"off", algo::StereoOutput::Off},          {"anaglyph", algo::StereoOutput::Anaglyph},
+            {"dubois", algo::StereoOutput::Dubois},    {"halfcolor", algo::StereoOutput::HalfColor},
+            {"sbs", algo::StereoOutput::SideBySide},   {"tb", algo::StereoOutput::TopBottom}};
+        bool found = false;
+        for (const auto& [n, m] : modes)
+            if (v == QLatin1String(n)) {
+                stereoOutput = m;
+                found = true;
+            }
+        if (!found)
+            throw UsageError{Cli::tr("--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”").arg(v)};
+    }
+    const QString passName = parser.value(pass);
+    if (parser.isSet(pass) && !model::renderPassNames().contains(passName))
+        throw UsageError{Cli::tr("--pass takes one of %1, not “%2”").arg(model::renderPassNames().join(QStringLiteral(", ")), passName)};
+    if (stereoOutput != algo::StereoOutput::Off && parser.isSet(pass) && passName != QLatin1String("beauty"))
+        throw UsageError{Cli::tr("a stereo render writes the beauty pass only")};
+    const QString path = parser.positionalArguments().front();
+    const QString outPattern = parser.isSet(out) ? parser.value(out)
+                                                 : QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".png"));
+    const QString suffix = QFileInfo(outPattern).suffix().toLower();
+    if (!QStringList{QStringLiteral("png"), QStringLiteral("exr"), QStringLiteral("tif"), QStringLiteral("tiff"),
+                     QStringLiteral("jpg"), QStringLiteral("jpeg")}
+             .contains(suffix))
+        throw UsageError{Cli::tr("--out must end in .png, .exr, .tif or .jpg, not “%1”").arg(outPattern)};
+
+    const model::ProjectData data = model::loadProject(path);
+    if (!data.baseMesh)
+        throw model::IoError(path, Cli::tr("has no base model"));
+    model::Look look = data.look;
+    if (styleOverride) {
+        look.style = *styleOverride;
+        look.materialStyles.clear();
+    }
+    if (linesOverride)
+        look.showLines = *linesOverride;
+    if (lightOverride)
+        look.light = *lightOverride;
+    model::Camera camera;
+    if (byCamera) {
+        camera.eye = parseVector(QStringLiteral("eye"), parser.value(eye));
+        camera.target = parseVector(QStringLiteral("target"), parser.value(target));
+        camera.up = parseVector(QStringLiteral("up"), parser.value(up));
+        if (!camera.isValid())
+            throw UsageError{Cli::tr("--eye, --target and --up do not make a camera")};
+    } else {
+        const Eigen::Vector3d v = parser.isSet(view) ? parseVector(QStringLiteral("view"), parser.value(view))
+                                                     : Eigen::Vector3d(0.35, 0.25, 1.0);
+        if (v.norm() == 0.0)
+            throw UsageError{Cli::tr("--view must not be zero")};
+        camera = cameraFromView(data, v, double(imageSize.width()) / imageSize.height());
+    }
+
+    model::BlendEvaluator blender;
+    QString error;
+    if (!blender.update(data, &error))
+        throw model::IoError(path, error);
+    const Eigen::Vector3d direction = blender.viewDirection(data, camera.eye);
+    algo::RenderCache cache;
+    const bool sequence = lastFrame > firstFrame;
+    for (int f = firstFrame; f <= lastFrame; ++f) {
+        algo::Positions shape;
+        blender.shape(data, direction, f, shape);
+        const algo::RenderPasses passes =
+            model::renderShape(data, look, shape, camera, imageSize.width(), imageSize.height(), stereoOutput, cache);
+        const QString target = framePath(outPattern, f, sequence);
+        if (suffix == QLatin1String("exr") && !parser.isSet(pass) && stereoOutput == algo::StereoOutput::Off)
+            model::writePassesExr(passes, target);
+        else
+            model::writeImage(model::passImage(passes, parser.isSet(pass) ? passName : QStringLiteral("beauty"),
+                                               suffix == QLatin1String("exr")),
+                              target);
+    }
     return kExitOk;
 }
 
@@ -561,7 +741,10 @@ int runCommandLine(const QStringList& arguments)
             "  celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--light "
             "point:X,Y,Z|directional:X,Y,Z] "
             "[--style toon|gooch|comic|lambert]\n"
-            "  celform --version\n"
+            "  celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
+        "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] [--light TYPE:X,Y,Z] "
+        "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] [--pass NAME] [--out FILE.png|.exr|.tif]\n"
+        "  celform --version\n"
             "Exit codes: 0 success, 2 usage error, 3 bad input.");
     try {
         if (first == QLatin1String("--version") || first == QLatin1String("-v")) {
@@ -587,6 +770,8 @@ int runCommandLine(const QStringList& arguments)
             return commandEval(rest);
         if (first == QLatin1String("set"))
             return commandSet(rest);
+        if (first == QLatin1String("render"))
+            return commandRender(rest);
         printErr(usage);
         return kExitUsage;
     } catch (const UsageError& e) {

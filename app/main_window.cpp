@@ -2,11 +2,13 @@
 #include "main_window.h"
 
 #include "recovery.h"
+#include "review_window.h"
 
 #include "celform/model/image_io.h"
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
 #include "celform/model/project_file.h"
+#include "celform/views/look_panel.h"
 #include "celform/views/properties_panel.h"
 #include "celform/views/scene_panel.h"
 #include "celform/views/view_sphere_panel.h"
@@ -191,6 +193,11 @@ void MainWindow::createDocks()
     connect(m_viewport, &views::Viewport::message, this,
         [this](const QString& text) { statusBar()->showMessage(text, 6000); });
 
+    m_look = new views::LookPanel(m_document, this);
+    makeDock(tr("Look"), QStringLiteral("lookDock"), m_look, Qt::RightDockWidgetArea);
+    tabifyDockWidget(findChild<QDockWidget*>(QStringLiteral("propertiesDock")), findChild<QDockWidget*>(QStringLiteral("lookDock")));
+    findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
+
     // Paper 1, figure 4: the key directions on the viewing sphere and the facet of this view.
     m_sphere = new views::ViewSpherePanel(m_document, this);
     makeDock(tr("Viewing Sphere"), QStringLiteral("sphereDock"), m_sphere, Qt::RightDockWidgetArea);
@@ -283,6 +290,18 @@ void MainWindow::createActions()
         });
     preview->setCheckable(true);
     connect(m_properties->previewButton(), &QAbstractButton::toggled, preview, &QAction::setChecked);
+    auto* look = make(QStringLiteral("actionShowLook"), tr("Show Cartoon &Look"), QKeySequence(Qt::SHIFT | Qt::Key_L),
+        tr("Shade the model with the document's look as the renderer does (off: neutral clay for modelling); "
+           "Ctrl+drag the light gizmo to move the key light"),
+        [this](bool on) { m_viewport->setShadingEnabled(on); });
+    look->setCheckable(true);
+    look->setChecked(true);
+    make(QStringLiteral("actionStereoReview"), tr("Stereo &Review"), QKeySequence(Qt::Key_F11),
+        tr("Full-screen stereo review of the look: turntable, keys' cameras, stereo modes (H for help)"), [this] {
+            auto* review = new ReviewWindow(m_document, m_viewport->camera(), this);
+            review->setAttribute(Qt::WA_DeleteOnClose);
+            review->showReview();
+        });
     make(QStringLiteral("actionNavigate"), tr("&Navigate Only"), QKeySequence(Qt::Key_Escape),
         tr("Leave alignment and brush tools"), [this] { m_viewport->setTool(views::Viewport::Tool::Navigate); });
     make(QStringLiteral("actionCreateKeyFromView"), tr("Create Key from &View"), QKeySequence(Qt::CTRL | Qt::Key_K),
@@ -344,6 +363,8 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(action(QStringLiteral("actionFrameAll")));
     m_viewMenu->addAction(action(QStringLiteral("actionOrthographic")));
     m_viewMenu->addAction(action(QStringLiteral("actionPreview")));
+    m_viewMenu->addAction(action(QStringLiteral("actionStereoReview")));
+    m_viewMenu->addAction(action(QStringLiteral("actionShowLook")));
     m_viewMenu->addAction(action(QStringLiteral("actionNavigate")));
     m_viewMenu->addSeparator();
     for (auto* dock : findChildren<QDockWidget*>())
@@ -489,10 +510,7 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
     }
     auto mesh = std::make_shared<const algo::TriMesh>(std::move(outcome.value->mesh));
     if (asNewProject) {
-        model::ProjectData data;
-        data.baseMesh = std::move(mesh);
-        data.baseMeshName = QFileInfo(path).fileName();
-        m_document->reset(std::move(data));
+        m_document->reset(model::newProject(std::move(mesh), QFileInfo(path).fileName()));
     } else {
         try {
             m_document->setBaseMesh(std::move(mesh), QFileInfo(path).fileName());

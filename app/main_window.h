@@ -18,6 +18,7 @@ class Viewport;
 class ScenePanel;
 class PropertiesPanel;
 class ViewSpherePanel;
+class LookPanel;
 } // namespace celform::views
 
 namespace celform::app {
@@ -89,6 +90,7 @@ private:
     views::ScenePanel* m_scene = nullptr;
     views::PropertiesPanel* m_properties = nullptr;
     views::ViewSpherePanel* m_sphere = nullptr;
+    views::LookPanel* m_look = nullptr;
     views::Viewport* m_observer = nullptr;
     QUndoView* m_history = nullptr;
     RecoveryManager* m_recovery = nullptr;

@@ -127,10 +127,7 @@ void Document::saveCopy(const QString& path) const
 QStringList Document::newFromMesh(const QString& meshPath)
 {
     MeshImport imported = importMesh(meshPath);
-    ProjectData data;
-    data.baseMesh = std::make_shared<const algo::TriMesh>(std::move(imported.mesh));
-    data.baseMeshName = QFileInfo(meshPath).fileName();
-    reset(std::move(data));
+    reset(newProject(std::make_shared<const algo::TriMesh>(std::move(imported.mesh)), QFileInfo(meshPath).fileName()));
     return imported.warnings;
 }
 

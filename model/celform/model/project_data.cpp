@@ -2,6 +2,7 @@
 #include "celform/model/project_data.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace celform::model {
 namespace {
@@ -109,6 +110,20 @@ algo::Positions ProjectData::keyShape(const KeyViewpoint& key, int frame) const
         for (std::size_t i = 0; i < offsets->indices.size(); ++i)
             shape.row(offsets->indices[i]) += offsets->deltas[i].transpose();
     return shape;
+}
+
+ProjectData newProject(std::shared_ptr<const algo::TriMesh> mesh, const QString& meshName)
+{
+    ProjectData data;
+    if (mesh) {
+        // Strokes about 1.5% of the model apart read as hatching at any model scale.
+        const double diagonal = algo::boundingBox(mesh->vertices).diagonal().norm();
+        if (diagonal > 0 && std::isfinite(diagonal))
+            data.look.hatch.spacing = float(0.015 * diagonal);
+    }
+    data.baseMesh = std::move(mesh);
+    data.baseMeshName = meshName;
+    return data;
 }
 
 bool ProjectData::operator==(const ProjectData& o) const

@@ -2,6 +2,9 @@
 // owns one ProjectData and changes it only through undo commands; file I/O reads and writes it.
 #pragma once
 
+#include "celform/algorithms/lines.h"
+#include "celform/algorithms/shading.h"
+#include "celform/algorithms/stereo.h"
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/camera.h"
 
@@ -89,6 +92,7 @@ struct BlendSettings {
 enum class ShadingStyle { Lambert, Toon, Gooch, Comic };
 enum class LightType { Directional, Point };
 
+/// The key light (DESIGN.md, "Look"), in model space.
 struct Light {
     LightType type = LightType::Directional;
     /// Directional: unit vector from the model towards the light. Point: position in model space.
@@ -96,14 +100,57 @@ struct Light {
     bool operator==(const Light& o) const { return type == o.type && vector == o.vector; }
 };
 
+/// Stereo settings of the look (paper 3, section 3.1). Distances of zero or less mean "auto":
+/// convergence at the model's centre, interocular a thirtieth of the convergence distance.
+struct StereoLook {
+    algo::StereoOutput output = algo::StereoOutput::Anaglyph; ///< used when a preview asks for stereo
+    double interocular = 0.0;
+    double convergence = 0.0;
+    bool toeIn = false;
+    bool swapEyes = false;
+    algo::DuboisMatrices dubois = algo::DuboisMatrices::redCyan();
+    bool operator==(const StereoLook& o) const
+    {
+        return output == o.output && interocular == o.interocular && convergence == o.convergence && toeIn == o.toeIn
+            && swapEyes == o.swapEyes && dubois.left == o.dubois.left && dubois.right == o.dubois.right;
+    }
+};
+
+/// Gooch coefficients chosen per material by the paper's hue rules (preset name "auto").
+inline algo::GoochParams autoGooch()
+{
+    algo::GoochParams g;
+    g.preset = "auto";
+    return g;
+}
+
+/// The cartoon look (DESIGN.md, "Look"): shading style and parameters, lines, key light, stereo.
 struct Look {
     ShadingStyle style = ShadingStyle::Toon;
+    /// Per-material style (material index -> style); materials not listed use style.
+    std::map<int, ShadingStyle> materialStyles;
     Light light;
     Eigen::Vector3f backgroundColor{0.93f, 0.93f, 0.91f};
+    algo::ToonRamp toon;
+    algo::ToonEvaluation toonEvaluation = algo::ToonEvaluation::PerPixel;
+    algo::GoochParams gooch = autoGooch();
+    algo::HatchParams hatch;
     bool showLines = true;
+    algo::LineSettings lines;
+    algo::LineStyle lineStyle;
+    StereoLook stereo;
+
+    [[nodiscard]] ShadingStyle styleOf(int material) const
+    {
+        const auto it = materialStyles.find(material);
+        return it == materialStyles.end() ? style : it->second;
+    }
     bool operator==(const Look& o) const
     {
-        return style == o.style && light == o.light && backgroundColor == o.backgroundColor && showLines == o.showLines;
+        return style == o.style && materialStyles == o.materialStyles && light == o.light
+            && backgroundColor == o.backgroundColor && toon == o.toon && toonEvaluation == o.toonEvaluation
+            && gooch == o.gooch && hatch == o.hatch && showLines == o.showLines && lines == o.lines
+            && lineStyle == o.lineStyle && stereo == o.stereo;
     }
     bool operator!=(const Look& o) const { return !(*this == o); }
 };
@@ -115,6 +162,9 @@ struct ProjectData {
     std::vector<KeyViewpoint> keys;
     BlendSettings blend;
     Look look;
+    /// Per-vertex shading offsets O_v added to N.L before the toon tones (paper 3, equation 4.3);
+    /// empty means all zero.
+    std::vector<float> shadingOffsets;
     ObjectId nextId = 1;
 
     [[nodiscard]] const Drawing* drawing(ObjectId id) const;
@@ -133,5 +183,8 @@ struct ProjectData {
     /// Equal stored data, mesh compared by value (used by tests and the save/load round trip).
     bool operator==(const ProjectData& o) const;
 };
+
+/// A new project on a base model, with the look's lengths (hatch spacing) scaled to the model.
+ProjectData newProject(std::shared_ptr<const algo::TriMesh> mesh, const QString& meshName);
 
 } // namespace celform::model

@@ -76,6 +76,19 @@ template <> struct EnumNames<Projection> {
         = {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}};
 };
 
+template <> struct EnumNames<algo::ToonEvaluation> {
+    static constexpr std::pair<algo::ToonEvaluation, const char*> list[] = {
+        {algo::ToonEvaluation::PerPixel, "pixel"},
+        {algo::ToonEvaluation::PerVertexLut, "vertex_lut"},
+        {algo::ToonEvaluation::PerFace, "face"}};
+};
+template <> struct EnumNames<algo::StereoOutput> {
+    static constexpr std::pair<algo::StereoOutput, const char*> list[] = {{algo::StereoOutput::Off, "off"},
+        {algo::StereoOutput::Anaglyph, "anaglyph"}, {algo::StereoOutput::Dubois, "dubois"},
+        {algo::StereoOutput::HalfColor, "halfcolor"}, {algo::StereoOutput::SideBySide, "sbs"},
+        {algo::StereoOutput::TopBottom, "tb"}};
+};
+
 template <typename E> QString enumName(E value)
 {
     for (const auto& [v, name] : EnumNames<E>::list)
@@ -165,6 +178,58 @@ private:
     qint64 m_pos = 0;
 };
 
+QJsonArray floats(const std::vector<float>& values)
+{
+    QJsonArray a;
+    for (float v : values)
+        a.append(double(v));
+    return a;
+}
+
+QJsonArray matrix3(const Eigen::Matrix3f& m)
+{
+    QJsonArray rows;
+    for (int r = 0; r < 3; ++r)
+        rows.append(vec3f(m.row(r).transpose()));
+    return rows;
+}
+
+QJsonObject lookJson(const Look& look)
+{
+    QJsonObject materialStyles;
+    for (const auto& [material, style] : look.materialStyles)
+        materialStyles.insert(QString::number(material), enumName(style));
+    const auto& g = look.gooch;
+    const auto& l = look.lineStyle;
+    const auto& st = look.stereo;
+    return {{"style", enumName(look.style)},
+            {"material_styles", materialStyles},
+            {"light", QJsonObject{{"type", enumName(look.light.type)}, {"vector", vec3(look.light.vector)}}},
+            {"background", vec3f(look.backgroundColor)},
+            {"toon", QJsonObject{{"thresholds", floats(look.toon.thresholds)},
+                                 {"intensities", floats(look.toon.intensities)},
+                                 {"evaluation", enumName(look.toonEvaluation)}}},
+            {"gooch", QJsonObject{{"preset", QString::fromStdString(g.preset)}, {"ka", double(g.ka)}, {"k1", double(g.k1)},
+                                  {"k2", double(g.k2)}, {"k3", double(g.k3)}, {"k4", double(g.k4)},
+                                  {"warm", vec3f(g.warm)}, {"cool", vec3f(g.cool)}}},
+            {"hatch", QJsonObject{{"spacing", double(look.hatch.spacing)},
+                                  {"angle_degrees", double(look.hatch.angleDegrees)},
+                                  {"width", double(look.hatch.width)}}},
+            {"lines", look.showLines},
+            {"line_kinds", QJsonObject{{"silhouettes", look.lines.silhouettes}, {"creases", look.lines.creases},
+                                       {"borders", look.lines.borders},
+                                       {"material_boundaries", look.lines.materialBoundaries},
+                                       {"crease_angle_degrees", double(look.lines.creaseAngleDegrees)}}},
+            {"line_style", QJsonObject{{"color", vec3f(l.color)}, {"outline_width", double(l.outlineWidth)},
+                                       {"inner_width", double(l.innerWidth)}, {"jitter", double(l.jitter)},
+                                       {"width_variation", double(l.widthVariation)},
+                                       {"overshoot", double(l.overshoot)}, {"seed", double(l.seed)}}},
+            {"stereo", QJsonObject{{"output", enumName(st.output)}, {"interocular", st.interocular},
+                                   {"convergence", st.convergence}, {"toe_in", st.toeIn}, {"swap_eyes", st.swapEyes},
+                                   {"dubois_left", matrix3(st.dubois.left)},
+                                   {"dubois_right", matrix3(st.dubois.right)}}}};
+}
+
 QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
 {
     QJsonObject root;
@@ -228,10 +293,11 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
     root.insert("blend",
         QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", enumName(data.blend.unspecified)},
             {"time", enumName(data.blend.time)}});
-    root.insert("look",
-        QJsonObject{{"style", enumName(data.look.style)},
-            {"light", QJsonObject{{"type", enumName(data.look.light.type)}, {"vector", vec3(data.look.light.vector)}}},
-            {"background", vec3f(data.look.backgroundColor)}, {"lines", data.look.showLines}});
+    root.insert("look", lookJson(data.look));
+    if (!data.shadingOffsets.empty()) {
+        root.insert("shading_offsets", QJsonObject{{"count", double(data.shadingOffsets.size())},
+                                                   {"values", chunks.addVector("mesh/shading_offsets", data.shadingOffsets)}});
+    }
     root.insert("next_id", double(data.nextId));
     return root;
 }
@@ -357,6 +423,107 @@ private:
     QJsonObject m_chunks;
 };
 
+std::vector<float> readFloats(const Reader& r, const QJsonObject& o, const char* name)
+{
+    std::vector<float> values;
+    for (const QJsonValue& v : r.array(o, name)) {
+        if (!v.isDouble() || !std::isfinite(v.toDouble()))
+            r.corrupt(ProjectFile::tr("the entry “%1” holds something that is not a number").arg(QLatin1String(name)));
+        values.push_back(float(v.toDouble()));
+    }
+    return values;
+}
+
+Eigen::Matrix3f readMatrix3(const Reader& r, const QJsonObject& o, const char* name)
+{
+    const QJsonArray rows = r.array(o, name);
+    if (rows.size() != 3)
+        r.corrupt(ProjectFile::tr("the entry “%1” is not a 3 by 3 matrix").arg(QLatin1String(name)));
+    Eigen::Matrix3f m;
+    for (int i = 0; i < 3; ++i) {
+        const QJsonObject wrapper{{"row", rows[i]}};
+        m.row(i) = r.vector3(wrapper, "row").cast<float>().transpose();
+    }
+    return m;
+}
+
+/// The look; every part but the style, light, background and lines switch is optional, so
+/// projects from before the cartoon look still open with its defaults.
+Look readLook(const Reader& r, const QJsonObject& look)
+{
+    Look out;
+    out.style = r.enumValue<ShadingStyle>(look, "style");
+    const QJsonObject light = r.object(look, "light");
+    out.light.type = r.enumValue<LightType>(light, "type");
+    out.light.vector = r.vector3(light, "vector");
+    out.backgroundColor = r.vector3(look, "background").cast<float>();
+    out.showLines = r.boolean(look, "lines");
+    if (look.contains("material_styles")) {
+        const QJsonObject styles = r.object(look, "material_styles");
+        for (auto it = styles.begin(); it != styles.end(); ++it) {
+            bool ok = false;
+            const int material = it.key().toInt(&ok);
+            if (!ok)
+                r.corrupt(ProjectFile::tr("a material style names no material"));
+            out.materialStyles[material] = r.enumValue<ShadingStyle>(QJsonObject{{"style", it.value()}}, "style");
+        }
+    }
+    if (look.contains("toon")) {
+        const QJsonObject t = r.object(look, "toon");
+        out.toon.thresholds = readFloats(r, t, "thresholds");
+        out.toon.intensities = readFloats(r, t, "intensities");
+        out.toonEvaluation = r.enumValue<algo::ToonEvaluation>(t, "evaluation");
+        if (!out.toon.isValid())
+            r.corrupt(ProjectFile::tr("the toon tones are not valid"));
+    }
+    if (look.contains("gooch")) {
+        const QJsonObject g = r.object(look, "gooch");
+        out.gooch.preset = r.string(g, "preset").toStdString();
+        out.gooch.ka = float(r.number(g, "ka"));
+        out.gooch.k1 = float(r.number(g, "k1"));
+        out.gooch.k2 = float(r.number(g, "k2"));
+        out.gooch.k3 = float(r.number(g, "k3"));
+        out.gooch.k4 = float(r.number(g, "k4"));
+        out.gooch.warm = r.vector3(g, "warm").cast<float>();
+        out.gooch.cool = r.vector3(g, "cool").cast<float>();
+    }
+    if (look.contains("hatch")) {
+        const QJsonObject h = r.object(look, "hatch");
+        out.hatch.spacing = float(r.number(h, "spacing"));
+        out.hatch.angleDegrees = float(r.number(h, "angle_degrees"));
+        out.hatch.width = float(r.number(h, "width"));
+    }
+    if (look.contains("line_kinds")) {
+        const QJsonObject k = r.object(look, "line_kinds");
+        out.lines.silhouettes = r.boolean(k, "silhouettes");
+        out.lines.creases = r.boolean(k, "creases");
+        out.lines.borders = r.boolean(k, "borders");
+        out.lines.materialBoundaries = r.boolean(k, "material_boundaries");
+        out.lines.creaseAngleDegrees = float(r.number(k, "crease_angle_degrees"));
+    }
+    if (look.contains("line_style")) {
+        const QJsonObject l = r.object(look, "line_style");
+        out.lineStyle.color = r.vector3(l, "color").cast<float>();
+        out.lineStyle.outlineWidth = float(r.number(l, "outline_width"));
+        out.lineStyle.innerWidth = float(r.number(l, "inner_width"));
+        out.lineStyle.jitter = float(r.number(l, "jitter"));
+        out.lineStyle.widthVariation = float(r.number(l, "width_variation"));
+        out.lineStyle.overshoot = float(r.number(l, "overshoot"));
+        out.lineStyle.seed = std::uint32_t(r.count(l, "seed"));
+    }
+    if (look.contains("stereo")) {
+        const QJsonObject st = r.object(look, "stereo");
+        out.stereo.output = r.enumValue<algo::StereoOutput>(st, "output");
+        out.stereo.interocular = r.number(st, "interocular");
+        out.stereo.convergence = r.number(st, "convergence");
+        out.stereo.toeIn = r.boolean(st, "toe_in");
+        out.stereo.swapEyes = r.boolean(st, "swap_eyes");
+        out.stereo.dubois.left = readMatrix3(r, st, "dubois_left");
+        out.stereo.dubois.right = readMatrix3(r, st, "dubois_right");
+    }
+    return out;
+}
+
 ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QString& path)
 {
     ProjectData data;
@@ -448,13 +615,17 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     data.blend.unspecified = r.enumValue<UnspecifiedMode>(blend, "unspecified");
     data.blend.time = r.enumValue<TimeInterpolation>(blend, "time");
 
-    const QJsonObject look = r.object(root, "look");
-    data.look.style = r.enumValue<ShadingStyle>(look, "style");
-    const QJsonObject light = r.object(look, "light");
-    data.look.light.type = r.enumValue<LightType>(light, "type");
-    data.look.light.vector = r.vector3(light, "vector");
-    data.look.backgroundColor = r.vector3(look, "background").cast<float>();
-    data.look.showLines = r.boolean(look, "lines");
+    data.look = readLook(r, r.object(root, "look"));
+    if (root.contains("shading_offsets")) {
+        const QJsonObject o = r.object(root, "shading_offsets");
+        const qint64 n = r.count(o, "count");
+        if (n != vertexCount)
+            r.corrupt(ProjectFile::tr("the shading offsets do not match the vertex count"));
+        r.readVector(o, "values", n, data.shadingOffsets);
+        for (float v : data.shadingOffsets)
+            if (!std::isfinite(v))
+                r.corrupt(ProjectFile::tr("a shading offset is not finite"));
+    }
 
     data.nextId = ObjectId(r.number(root, "next_id"));
     for (const auto& d : data.drawings)

@@ -4,11 +4,15 @@
 
 #include "celform/algorithms/camera_solve.h"
 #include "celform/model/document.h"
+#include "celform/model/render_output.h"
+#include "celform/views/line_overlay.h"
+#include "celform/views/look_shading.h"
 
 #include <QPainter>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QElapsedTimer>
 #include <QOpenGLFunctions>
 #include <QWheelEvent>
 
@@ -36,6 +40,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkSphereSource.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkTypeInt32Array.h>
@@ -49,6 +54,16 @@
 namespace celform::views {
 
 namespace {
+
+/// The layers leave the framebuffer's alpha below one (see paintGL): the widget is opaque.
+void makeOpaque(QImage& rgba)
+{
+    for (int y = 0; y < rgba.height(); ++y) {
+        uchar* row = rgba.scanLine(y);
+        for (int x = 0; x < rgba.width(); ++x)
+            row[4 * x + 3] = 255;
+    }
+}
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kOrbitDegreesPerPixel = 0.4;
@@ -169,6 +184,16 @@ struct Viewport::Vtk {
     // Whether the main camera has been placed: VTK does not reset a camera that was touched
     // before the first render (STACK.md pitfall 5), so the first frame depends on our framing.
     bool cameraPlaced = false;
+    // The document's look on the mesh actor, and the key-light gizmo (not pickable by the mesh
+    // picker; hit-tested in widget space).
+    std::unique_ptr<LookShading> look;
+    vtkNew<vtkPolyDataMapper> lightMapper;
+    vtkNew<vtkActor> lightActor;
+    // Depth of the model layer, read when its renderer ends: later layers (a drawing on top, the
+    // triad) clear the depth buffer, so the end of the frame is too late for hidden lines.
+    vtkNew<vtkCallbackCommand> depthCapture;
+    bool captureDepth = false;
+    std::vector<float> windowDepth;
 };
 
 Viewport::Viewport(model::Document* document, QWidget* parent)
@@ -182,7 +207,9 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     setWhatsThis(tr("<p>The 3D view of the model.</p>"
                     "<p>Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. "
                     "Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. "
-                    "F: frame the model. Home: front view.</p>"));
+                    "F: frame the model. Home: front view.</p>"
+                    "<p>Ctrl+left drag on the light gizmo (the yellow arrow or sphere): move the key light "
+                    "around the model.</p>"));
 
     Vtk& v = *m_vtk;
     // The context belongs to Qt; VTK only draws into the framebuffer Qt has bound in paintGL.
@@ -243,6 +270,15 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     material->SetSpecularPower(24.0);
     material->SetSpecularColor(1.0, 0.98, 0.95);
     v.renderer->AddActor(v.meshActor);
+    // The look replaces this clay material while shading is enabled (applyShadingState()).
+    v.look = std::make_unique<LookShading>(v.meshActor, v.mesh, v.renderer);
+    v.lightActor->SetMapper(v.lightMapper);
+    v.lightActor->GetProperty()->SetColor(1.0, 0.78, 0.15);
+    v.lightActor->GetProperty()->SetAmbient(0.4);
+    v.lightActor->GetProperty()->SetDiffuse(0.7);
+    v.lightActor->PickableOff();
+    v.lightActor->VisibilityOff();
+    v.renderer->AddActor(v.lightActor);
 
     v.gridMapper->SetInputData(v.grid);
     v.gridActor->SetMapper(v.gridMapper);
@@ -292,7 +328,30 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
                 updateShape();
         });
         connect(m_document, &model::Document::drawingsChanged, this, &Viewport::updateOverlay);
+        connect(m_document, &model::Document::lookChanged, this, [this] {
+            updateLookShading();
+            updateLightGizmo();
+            applyShadingState();
+            update();
+        });
     }
+    // Lines and stereo: the model layer's depth for hidden-line tests, and a repaint per look edit.
+    m_lines = std::make_unique<LineOverlay>();
+    v.depthCapture->SetClientData(this);
+    v.depthCapture->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
+        Vtk& vtk = *static_cast<Viewport*>(clientData)->m_vtk;
+        if (!vtk.captureDepth)
+            return;
+        vtk.captureDepth = false;
+        const int* size = vtk.window->GetSize();
+        vtk.windowDepth.resize(std::size_t(std::max(size[0], 0)) * std::size_t(std::max(size[1], 0)));
+        if (!vtk.windowDepth.empty()
+            && vtk.window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, vtk.windowDepth.data()) != VTK_OK)
+            vtk.windowDepth.clear();
+    });
+    v.renderer->AddObserver(vtkCommand::EndEvent, v.depthCapture);
+    if (m_document)
+        connect(m_document, &model::Document::lookChanged, this, qOverload<>(&QWidget::update));
     m_markers = new MatchMarkers(this);
     m_markers->hide();
     connect(this, &Viewport::cameraChanged, m_markers, qOverload<>(&QWidget::update));
@@ -533,6 +592,9 @@ void Viewport::setBackgroundColors(const QColor& top, const QColor& bottom)
     const double r = 0.5 * (top.redF() + bottom.redF()), g = 0.5 * (top.greenF() + bottom.greenF()),
                  b = 0.5 * (top.blueF() + bottom.blueF());
     m_vtk->gridActor->GetProperty()->SetColor(r * 0.82, g * 0.82, b * 0.82);
+    m_clayTop = top;
+    m_clayBottom = bottom;
+    applyShadingState(); // the look's background replaces these while it is shown
     update();
 }
 
@@ -545,6 +607,8 @@ void Viewport::rebuildMesh()
         v.meshActor->VisibilityOff();
         m_bounds = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-1.0), Eigen::Vector3d::Constant(1.0));
         rebuildGrid();
+        updateLightGizmo();
+        applyShadingState();
         return;
     }
 
@@ -591,6 +655,8 @@ void Viewport::rebuildMesh()
     if (m_bounds.isEmpty() || !m_bounds.min().allFinite() || !m_bounds.max().allFinite())
         m_bounds = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-1.0), Eigen::Vector3d::Constant(1.0));
     rebuildGrid();
+    updateLightGizmo();
+    applyShadingState();
 }
 
 void Viewport::rebuildGrid()
@@ -717,6 +783,7 @@ void Viewport::updateShape()
     std::memcpy(v.normals->GetPointer(0), normals.data(), sizeof(float) * 3 * count);
     v.normals->Modified();
     v.mesh->Modified();
+    updateLookShading();
     updateSelectionColors();
     update();
 }
@@ -727,6 +794,7 @@ void Viewport::updateSelectionColors()
     if (m_selection.indices.empty() || m_shape.rows() == 0) {
         v.meshMapper->ScalarVisibilityOff();
         v.mesh->GetPointData()->SetScalars(nullptr);
+        applyShadingState();
         update();
         return;
     }
@@ -750,6 +818,7 @@ void Viewport::updateSelectionColors()
     v.colors->Modified();
     v.mesh->GetPointData()->SetScalars(v.colors);
     v.meshMapper->ScalarVisibilityOn();
+    applyShadingState(); // the clay look shows the selection colours
     update();
 }
 
@@ -1193,6 +1262,57 @@ void Viewport::paintGL()
     Vtk& v = *m_vtk;
     if (!v.cameraPlaced)
         frameAll();
+    QElapsedTimer timer;
+    timer.start();
+    m_lineMilliseconds = 0.0;
+    if (m_stereo != algo::StereoOutput::Off) {
+        paintStereo();
+    } else {
+        const bool lines = linesShown();
+        GlFrame frame;
+        renderVtkFrame(false, lines, frame);
+        if (lines) {
+            // Only the pixels the strokes can touch go through the CPU: read them back, blend the
+            // coverage in linear light (as the offline renderer), write them back.
+            QElapsedTimer lineTimer;
+            lineTimer.start();
+            const algo::RasterCamera centre = vtkRasterCamera();
+            std::vector<float> coverage;
+            const QRect box = lineCoverage(centre, centre, frame.depth, coverage);
+            if (!box.isEmpty()) {
+                QImage region(box.size(), QImage::Format_RGBA8888);
+                QOpenGLFunctions* gl = context()->functions();
+                gl->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+                gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+                gl->glReadPixels(box.x(), centre.height - 1 - box.bottom(), box.width(), box.height(), GL_RGBA,
+                                 GL_UNSIGNED_BYTE, region.bits());
+                region = region.mirrored();
+                makeOpaque(region);
+                blendLines(region, box.topLeft(), coverage, centre.width, currentLook().lineStyle.color);
+                const qreal dpr = devicePixelRatioF();
+                QPainter painter(this);
+                painter.setCompositionMode(QPainter::CompositionMode_Source);
+                painter.drawImage(QRectF(box.x() / dpr, box.y() / dpr, box.width() / dpr, box.height() / dpr), region);
+            }
+            m_lineMilliseconds = double(lineTimer.nsecsElapsed()) / 1e6;
+        }
+    }
+    // Blending the drawing layer lowers the framebuffer's alpha, and Qt composites the widget
+    // with it (premultiplied): the viewport must stay opaque whatever the layers did.
+    QOpenGLFunctions* gl = context()->functions();
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+    gl->glDisable(GL_SCISSOR_TEST);
+    gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    gl->glClearColor(0.f, 0.f, 0.f, 1.f);
+    gl->glClear(GL_COLOR_BUFFER_BIT);
+    gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    m_frameMilliseconds = double(timer.nsecsElapsed()) / 1e6;
+    ++m_renderCount;
+}
+
+void Viewport::renderVtkFrame(bool readColor, bool readDepth, GlFrame& out)
+{
+    Vtk& v = *m_vtk;
     // Qt touched the GL state (its framebuffer, depth function) since VTK last looked: make VTK
     // re-read it rather than trust its cache, and hand Qt its state back afterwards.
     vtkOpenGLState* state = v.window->GetState();
@@ -1200,16 +1320,179 @@ void Viewport::paintGL()
     state->Push();
     v.renderer->ResetCameraClippingRange();
     syncTriadCamera();
+    v.windowDepth.clear();
+    v.captureDepth = readDepth;
     v.window->Render();
+    v.captureDepth = false;
     state->Pop();
-    // Blending the drawing layer lowers the framebuffer's alpha, and Qt composites the widget
-    // with it (premultiplied): the viewport must stay opaque whatever the layers did.
-    QOpenGLFunctions* gl = context()->functions();
-    gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
-    gl->glClearColor(0.f, 0.f, 0.f, 1.f);
-    gl->glClear(GL_COLOR_BUFFER_BIT);
-    gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ++m_renderCount;
+
+    const int* size = v.window->GetSize();
+    const int w = size[0], h = size[1];
+    if (readDepth) {
+        vtkCamera* cam = v.renderer->GetActiveCamera();
+        double range[2];
+        cam->GetClippingRange(range);
+        out.depth = viewDepthFromWindowDepth(v.windowDepth, w, h, range[0], range[1], cam->GetParallelProjection());
+    }
+    if (readColor && w > 0 && h > 0) {
+        out.color = QImage(w, h, QImage::Format_RGBA8888);
+        QOpenGLFunctions* gl = context()->functions();
+        gl->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+        gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        gl->glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out.color.bits());
+        out.color = out.color.mirrored();
+        makeOpaque(out.color);
+    }
+}
+
+algo::RasterCamera Viewport::vtkRasterCamera() const
+{
+    vtkCamera* cam = m_vtk->renderer->GetActiveCamera();
+    algo::RasterCamera r;
+    r.eye = toEigen(cam->GetPosition());
+    r.target = toEigen(cam->GetFocalPoint());
+    r.up = toEigen(cam->GetViewUp());
+    r.orthographic = cam->GetParallelProjection() != 0;
+    // VTK's own angle and scale span the whole framebuffer height (a drawing's letterbox included).
+    r.fovYDegrees = cam->GetViewAngle();
+    r.orthoHeight = 2.0 * cam->GetParallelScale();
+    const int* size = m_vtk->window->GetSize();
+    r.width = size[0];
+    r.height = size[1];
+    // vtkCamera's window centre puts the view axis at NDC -x; RasterCamera's shift is in widths.
+    r.horizontalShift = -0.5 * cam->GetWindowCenter()[0];
+    return r;
+}
+
+QRect Viewport::lineCoverage(const algo::RasterCamera& camera, const algo::RasterCamera& lineEye,
+                             const std::vector<float>& depth, std::vector<float>& coverage)
+{
+    if (!m_document || !m_document->hasMesh())
+        return {};
+    const algo::TriMesh& mesh = *m_document->data().baseMesh;
+    if (m_shape.rows() != mesh.vertices.rows())
+        return {};
+    const model::Look& look = currentLook();
+    algo::LineView view;
+    view.eye = lineEye.eye.cast<float>();
+    view.direction = lineEye.forward().cast<float>();
+    view.orthographic = lineEye.orthographic;
+    m_lines->update(m_shape, mesh, view, look.lines);
+    return m_lines->draw(m_shape, look.lineStyle, camera, depth, coverage);
+}
+
+void Viewport::paintStereo()
+{
+    Vtk& v = *m_vtk;
+    vtkCamera* cam = v.renderer->GetActiveCamera();
+    double position[3], focal[3], up[3], windowCenter[2];
+    cam->GetPosition(position);
+    cam->GetFocalPoint(focal);
+    cam->GetViewUp(up);
+    cam->GetWindowCenter(windowCenter);
+
+    // Paper 3, section 3.1: the offline renderer's eye pair (off-axis by default) from VTK's
+    // own projection; lines come from the centre eye (section 4.2.2), projected per eye.
+    const algo::RasterCamera centre = vtkRasterCamera();
+    const auto eyes = algo::stereoPair(centre, resolvedStereoSettings());
+    const algo::RasterCamera* eyeCameras[2] = {&eyes.first, &eyes.second};
+    const bool lines = linesShown();
+    const model::Look& look = currentLook();
+    GlFrame frames[2];
+    QElapsedTimer lineTimer;
+    qint64 lineNanoseconds = 0;
+    for (int k = 0; k < 2; ++k) {
+        if ((m_eyeOnly == Eye::Left && k == 1) || (m_eyeOnly == Eye::Right && k == 0))
+            continue;
+        const algo::RasterCamera& eye = *eyeCameras[k];
+        cam->SetPosition(eye.eye.data());
+        cam->SetFocalPoint(eye.target.data());
+        cam->SetViewUp(eye.up.data());
+        cam->SetWindowCenter(-2.0 * eye.horizontalShift, 0.0);
+        renderVtkFrame(true, lines, frames[k]);
+        if (lines && !frames[k].color.isNull()) {
+            lineTimer.start();
+            std::vector<float> coverage;
+            if (!lineCoverage(eye, centre, frames[k].depth, coverage).isEmpty())
+                blendLines(frames[k].color, QPoint(0, 0), coverage, eye.width, look.lineStyle.color);
+            lineNanoseconds += lineTimer.nsecsElapsed();
+        }
+    }
+    cam->SetPosition(position);
+    cam->SetFocalPoint(focal);
+    cam->SetViewUp(up);
+    cam->SetWindowCenter(windowCenter[0], windowCenter[1]);
+    m_lineMilliseconds = double(lineNanoseconds) / 1e6;
+
+    QImage shown;
+    if (m_eyeOnly == Eye::Left)
+        shown = frames[0].color;
+    else if (m_eyeOnly == Eye::Right)
+        shown = frames[1].color;
+    else if (!frames[0].color.isNull() && !frames[1].color.isNull())
+        shown = toSrgb(composeStereo(m_stereo, toLinear(frames[0].color), toLinear(frames[1].color), stereoLook().dubois));
+    if (shown.isNull())
+        return;
+    // Side by side and top-bottom are squeezed into the widget, as 3D displays expect them.
+    QPainter painter(this);
+    painter.setCompositionMode(QPainter::CompositionMode_Source);
+    const bool squeezed = shown.size() != frames[0].color.size() && !frames[0].color.isNull();
+    painter.setRenderHint(QPainter::SmoothPixmapTransform, squeezed);
+    painter.drawImage(QRectF(rect()), shown);
+}
+
+void Viewport::setStereo(algo::StereoOutput output)
+{
+    if (output == m_stereo)
+        return;
+    m_stereo = output;
+    update();
+}
+
+void Viewport::setStereoLook(const std::optional<model::StereoLook>& look)
+{
+    m_stereoLook = look;
+    update();
+}
+
+model::StereoLook Viewport::stereoLook() const
+{
+    if (m_stereoLook)
+        return *m_stereoLook;
+    return m_document ? m_document->data().look.stereo : model::StereoLook{};
+}
+
+algo::StereoSettings Viewport::resolvedStereoSettings() const
+{
+    // The centroid of the base model, as the offline path (model::renderShape) uses.
+    const bool mesh = m_document && m_document->hasMesh() && m_document->data().baseMesh->vertices.rows() > 0;
+    const Eigen::Vector3d centroid = mesh ? algo::centroid(m_document->data().baseMesh->vertices) : m_bounds.center();
+    return model::resolvedStereo(stereoLook(), camera(), centroid);
+}
+
+void Viewport::setLinesOverride(std::optional<bool> show)
+{
+    m_linesOverride = show;
+    update();
+}
+
+bool Viewport::linesShown() const
+{
+    if (!m_document || !m_document->hasMesh())
+        return false;
+    return m_linesOverride.value_or(m_document->data().look.showLines);
+}
+
+const model::Look& Viewport::currentLook() const
+{
+    static const model::Look defaultLook;
+    return m_document ? m_document->data().look : defaultLook;
+}
+
+void Viewport::setEyeOnly(Eye eye)
+{
+    m_eyeOnly = eye;
+    update();
 }
 
 QImage Viewport::renderedImage()
@@ -1228,7 +1511,14 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     const Qt::KeyboardModifiers mods = event->modifiers();
     const Qt::MouseButton button = event->button();
     Drag drag = Drag::None;
-    if ((mods & Qt::AltModifier) && (mods & Qt::ShiftModifier) && button == Qt::LeftButton) {
+    // Ctrl+left on the light gizmo's handle grabs the light (elsewhere Ctrl+left is the brush's).
+    constexpr double kLightGrabPixels = 14.0;
+    const bool onLight = m_vtk->lightActor->GetVisibility() && button == Qt::LeftButton
+        && (mods & Qt::ControlModifier) && !(mods & Qt::AltModifier)
+        && QLineF(projectToWidget(lightGizmoHandle()), event->position()).length() <= kLightGrabPixels;
+    if (onLight) {
+        drag = Drag::Light;
+    } else if ((mods & Qt::AltModifier) && (mods & Qt::ShiftModifier) && button == Qt::LeftButton) {
         drag = Drag::Roll; // for matching a drawing's tilt (paper 1, section 3.1.1)
     } else if (mods & Qt::AltModifier) {
         // Maya: Alt + left orbit, middle pan, right dolly.
@@ -1291,6 +1581,9 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     case Drag::Roll:
         setCursor(Qt::SizeHorCursor);
         break;
+    case Drag::Light:
+        setCursor(Qt::ClosedHandCursor);
+        break;
     case Drag::Brush:
     case Drag::None:
         break;
@@ -1333,6 +1626,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         break;
     case Drag::Brush:
         brushMove(delta, event->modifiers());
+        break;
+    case Drag::Light:
+        dragLight(event->position());
         break;
     case Drag::None:
         break;
@@ -1385,6 +1681,170 @@ void Viewport::keyPressEvent(QKeyEvent* event)
         return;
     }
     QOpenGLWidget::keyPressEvent(event);
+}
+
+// --- the cartoon look and its key light ---------------------------------------------------------
+
+void Viewport::setShadingEnabled(bool on)
+{
+    if (on == m_shadingEnabled)
+        return;
+    m_shadingEnabled = on;
+    applyShadingState();
+    update();
+}
+
+void Viewport::setLightGizmoVisible(bool on)
+{
+    if (on == m_lightGizmoVisible)
+        return;
+    m_lightGizmoVisible = on;
+    applyShadingState();
+    update();
+}
+
+void Viewport::applyShadingState()
+{
+    Vtk& v = *m_vtk;
+    if (!v.look)
+        return; // still constructing
+    const bool hasMesh = m_document && m_document->hasMesh() && v.mesh->GetNumberOfPoints() > 0;
+    // Brush selection colours are VTK scalars, shown by the clay material: the look steps aside
+    // while they are displayed rather than tinting its tones (which would read as a tone change).
+    const bool selectionShown = v.meshMapper->GetScalarVisibility() != 0;
+    const bool active = m_shadingEnabled && hasMesh && !selectionShown;
+    v.look->setActive(active);
+    if (m_shadingEnabled && hasMesh) {
+        // What the offline render shows: the look's flat background (8-bit sRGB, as the PNG has
+        // it) and no ground grid.
+        const Eigen::Vector3f bg = m_document->data().look.backgroundColor;
+        double encoded[3];
+        for (int c = 0; c < 3; ++c)
+            encoded[c] = double(std::lround(algo::linearToSrgb(std::clamp(bg[c], 0.f, 1.f)) * 255.f)) / 255.0;
+        v.renderer->GradientBackgroundOff();
+        v.renderer->SetBackground(encoded);
+        v.gridActor->VisibilityOff();
+    } else {
+        v.renderer->GradientBackgroundOn();
+        v.renderer->SetBackground(m_clayBottom.redF(), m_clayBottom.greenF(), m_clayBottom.blueF());
+        v.renderer->SetBackground2(m_clayTop.redF(), m_clayTop.greenF(), m_clayTop.blueF());
+        v.gridActor->VisibilityOn();
+    }
+    v.lightActor->SetVisibility(m_lightGizmoVisible && m_shadingEnabled && hasMesh);
+}
+
+void Viewport::updateLookShading()
+{
+    Vtk& v = *m_vtk;
+    if (!v.look || !m_document || !m_document->hasMesh() || !v.normals || m_shape.rows() == 0
+        || v.normals->GetNumberOfTuples() != vtkIdType(m_shape.rows()))
+        return;
+    v.look->update(m_document->data(), m_shape, v.normals->GetPointer(0));
+}
+
+double Viewport::lightGizmoRadius() const
+{
+    return std::max(0.5 * m_bounds.diagonal().norm(), 1e-6);
+}
+
+Eigen::Vector3d Viewport::lightGizmoHandle() const
+{
+    const model::Light light = m_document ? m_document->data().look.light : model::Light{};
+    if (light.type == model::LightType::Point)
+        return light.vector;
+    Eigen::Vector3d direction = light.vector.normalized();
+    if (!direction.allFinite())
+        direction = Eigen::Vector3d::UnitZ();
+    return m_bounds.center() + 1.3 * lightGizmoRadius() * direction;
+}
+
+void Viewport::updateLightGizmo()
+{
+    Vtk& v = *m_vtk;
+    const model::Light light = m_document ? m_document->data().look.light : model::Light{};
+    const double radius = lightGizmoRadius();
+    if (light.type == model::LightType::Point) {
+        vtkNew<vtkSphereSource> sphere;
+        sphere->SetCenter(light.vector.data());
+        sphere->SetRadius(0.04 * radius);
+        sphere->SetThetaResolution(20);
+        sphere->SetPhiResolution(12);
+        sphere->Update();
+        v.lightMapper->SetInputData(sphere->GetOutput());
+        return;
+    }
+    // An arrow at the edge of the bounding sphere pointing from the model towards the light.
+    Eigen::Vector3d x = light.vector.normalized();
+    if (!x.allFinite())
+        x = Eigen::Vector3d::UnitZ();
+    Eigen::Vector3d y = x.cross(std::abs(x.y()) < 0.9 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX());
+    y.normalize();
+    const Eigen::Vector3d z = x.cross(y);
+    const double length = 0.3 * radius;
+    const Eigen::Vector3d start = m_bounds.center() + radius * x;
+    vtkNew<vtkTransform> transform;
+    const double matrix[16] = {length * x.x(), length * y.x(), length * z.x(), start.x(),
+                               length * x.y(), length * y.y(), length * z.y(), start.y(),
+                               length * x.z(), length * y.z(), length * z.z(), start.z(),
+                               0.0,            0.0,            0.0,            1.0};
+    transform->SetMatrix(matrix);
+    vtkNew<vtkArrowSource> arrow;
+    arrow->SetTipResolution(20);
+    arrow->SetShaftResolution(12);
+    arrow->SetShaftRadius(0.05);
+    arrow->SetTipRadius(0.14);
+    arrow->SetTipLength(0.35);
+    vtkNew<vtkTransformPolyDataFilter> filter;
+    filter->SetInputConnection(arrow->GetOutputPort());
+    filter->SetTransform(transform);
+    filter->Update();
+    v.lightMapper->SetInputData(filter->GetOutput());
+}
+
+void Viewport::dragLight(const QPointF& position)
+{
+    if (!m_document || !m_document->hasMesh())
+        return;
+    vtkRenderer* renderer = m_vtk->renderer;
+    const qreal dpr = devicePixelRatioF();
+    const double x = position.x() * dpr, y = (height() - position.y()) * dpr;
+    auto unproject = [&](double depth) {
+        renderer->SetDisplayPoint(x, y, depth);
+        renderer->DisplayToWorld();
+        const double* w = renderer->GetWorldPoint();
+        return Eigen::Vector3d(w[0] / w[3], w[1] / w[3], w[2] / w[3]);
+    };
+    const Eigen::Vector3d origin = unproject(0.0);
+    const Eigen::Vector3d direction = (unproject(1.0) - origin).normalized();
+    if (!direction.allFinite())
+        return;
+
+    // The handle moves on a sphere about the model's centre: the arrow tip's for a directional
+    // light, the light's own distance for a point light. It stays on the side (towards or away
+    // from the viewer) it was on; off the sphere it follows the silhouette.
+    model::Look look = m_document->data().look;
+    const Eigen::Vector3d centre = m_bounds.center();
+    const Eigen::Vector3d handle = lightGizmoHandle();
+    double radius = (handle - centre).norm();
+    if (!(radius > 1e-9))
+        radius = lightGizmoRadius();
+    const Eigen::Vector3d toCentre = centre - origin;
+    const double along = toCentre.dot(direction);
+    const Eigen::Vector3d closest = origin + along * direction;
+    const double miss2 = (closest - centre).squaredNorm();
+    Eigen::Vector3d onSphere;
+    if (miss2 <= radius * radius) {
+        const double half = std::sqrt(radius * radius - miss2);
+        const bool front = (handle - centre).dot(-direction) >= 0.0;
+        onSphere = closest + (front ? -half : half) * direction;
+    } else {
+        onSphere = centre + radius * (closest - centre).normalized();
+    }
+    const Eigen::Vector3d unit = (onSphere - centre).normalized();
+    if (!unit.allFinite())
+        return;
+    look.light.vector = look.light.type == model::LightType::Point ? Eigen::Vector3d(centre + radius * unit) : unit;
+    m_document->setLook(look); // consecutive look edits merge: one drag, one undo step
 }
 
 } // namespace celform::views

@@ -27,6 +27,9 @@ class Document;
 
 namespace celform::views {
 
+class LineOverlay;
+struct GlFrame;
+
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
 public:
@@ -47,8 +50,42 @@ public:
     QImage renderedImage();
     /// Number of frames drawn so far; tests wait on it.
     [[nodiscard]] int renderCount() const { return m_renderCount; }
+    /// Wall time of the last paintGL (VTK render, readbacks, lines, stereo composition), ms.
+    [[nodiscard]] double lastFrameMilliseconds() const { return m_frameMilliseconds; }
+    /// Wall time of the last frame's line extraction and drawing alone, ms.
+    [[nodiscard]] double lastLineMilliseconds() const { return m_lineMilliseconds; }
+
+    // --- stereo and lines (paper 3, sections 3.1 and 4.2.2) ---------------------------------
+    /// Renders left and right eyes and shows their composition (Off: mono, the default).
+    void setStereo(algo::StereoOutput output);
+    [[nodiscard]] algo::StereoOutput stereo() const { return m_stereo; }
+    /// Stereo settings used instead of the document look's (a review session's own interocular);
+    /// nothing follows the look again.
+    void setStereoLook(const std::optional<model::StereoLook>& look);
+    [[nodiscard]] model::StereoLook stereoLook() const;
+    /// The eye pair's settings for the current camera, "auto" distances resolved.
+    [[nodiscard]] algo::StereoSettings resolvedStereoSettings() const;
+    /// Lines shown or hidden whatever the look says; nothing follows Look::showLines.
+    void setLinesOverride(std::optional<bool> show);
+    [[nodiscard]] bool linesShown() const;
+    /// Test hook: with stereo on, show one eye's full-colour image instead of the composition.
+    enum class Eye { Both, Left, Right };
+    void setEyeOnly(Eye eye);
 
     void setBackgroundColors(const QColor& top, const QColor& bottom);
+
+    // --- the cartoon look (DESIGN.md, "Look") ---------------------------------------------------
+    /// On (the default): the model is shaded with the document's look exactly as the offline
+    /// renderer shades it, on the look's background. Off: the neutral clay look for modelling.
+    /// The clay look also shows while brush selection colours are displayed.
+    void setShadingEnabled(bool on);
+    [[nodiscard]] bool isShadingEnabled() const { return m_shadingEnabled; }
+    /// The key-light gizmo (an arrow towards a directional light, a sphere at a point light);
+    /// Ctrl+left drag on it moves the light around the model.
+    void setLightGizmoVisible(bool on);
+    [[nodiscard]] bool isLightGizmoVisible() const { return m_lightGizmoVisible; }
+    /// Where the gizmo's handle is drawn (model space): the arrow tip or the point light.
+    [[nodiscard]] Eigen::Vector3d lightGizmoHandle() const;
 
     /// Centre of the frame-all bounds, moved by panning: the point orbit turns around.
     [[nodiscard]] Eigen::Vector3d pivot() const { return m_pivot; }
@@ -145,7 +182,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan, Dolly, Roll, Brush };
+    enum class Drag { None, Orbit, Pan, Dolly, Roll, Brush, Light };
 
     void releaseGraphics();
     void rebuildMesh();
@@ -163,6 +200,27 @@ private:
     void rebuildGrid();
     void updateTriadViewport();
     void syncTriadCamera();
+    /// Look shader on or off (enabled, a mesh, no selection colours), background and grid to match.
+    void applyShadingState();
+    /// Per-vertex look attributes and uniforms for the displayed shape.
+    void updateLookShading();
+    void updateLightGizmo();
+    /// Radius of the sphere the light handle moves on, and its centre (the model's).
+    [[nodiscard]] double lightGizmoRadius() const;
+    /// Moves the light so the handle lies under a widget position (one undo step per drag).
+    void dragLight(const QPointF& position);
+    /// One VTK frame into Qt's framebuffer, read back (colour only when wanted, depth when
+    /// lines are shown), camera and clipping as they are now.
+    void renderVtkFrame(bool readColor, bool readDepth, GlFrame& out);
+    /// The projection VTK uses now, as a raster camera of the framebuffer's size.
+    [[nodiscard]] algo::RasterCamera vtkRasterCamera() const;
+    /// Line coverage of the displayed shape for camera, strokes extracted from lineEye (the
+    /// centre eye in stereo), hidden by depth; returns the rect the lines may touch.
+    QRect lineCoverage(const algo::RasterCamera& camera, const algo::RasterCamera& lineEye,
+                       const std::vector<float>& depth, std::vector<float>& coverage);
+    void paintStereo();
+    /// The document's look, or the default one without a document.
+    [[nodiscard]] const model::Look& currentLook() const;
 
     void orbit(double yawDegrees, double pitchDegrees);
     void pan(const QPointF& deltaPixels);
@@ -204,6 +262,18 @@ private:
     std::vector<Eigen::Vector2d> m_drawingPoints;
     QWidget* m_markers = nullptr; ///< transparent child painting the matched points
     double m_strokeUnitsPerPixel = 0.0;
+    bool m_shadingEnabled = true;
+    bool m_lightGizmoVisible = true;
+    QColor m_clayTop{200, 201, 204};
+    QColor m_clayBottom{150, 151, 155};
+
+    algo::StereoOutput m_stereo = algo::StereoOutput::Off;
+    std::optional<model::StereoLook> m_stereoLook;
+    std::optional<bool> m_linesOverride;
+    Eye m_eyeOnly = Eye::Both;
+    std::unique_ptr<LineOverlay> m_lines;
+    double m_frameMilliseconds = 0.0;
+    double m_lineMilliseconds = 0.0;
 };
 
 } // namespace celform::views

@@ -1,0 +1,61 @@
+// The display-free renderer (DESIGN.md, "Rendering"): a CPU G-buffer of the shape, the cartoon
+// shading functions per pixel, feature lines on top, and the render passes compositors expect.
+#pragma once
+
+#include "celform/algorithms/image.h"
+#include "celform/algorithms/lines.h"
+#include "celform/algorithms/raster.h"
+#include "celform/algorithms/shading.h"
+#include "celform/algorithms/tri_mesh.h"
+
+#include <functional>
+#include <vector>
+
+namespace celform::algo {
+
+enum class Style { Lambert, Toon, Gooch, Comic };
+
+/// Everything about the look the renderer needs, independent of the document.
+struct RenderLook {
+    Style style = Style::Toon;
+    std::vector<Style> materialStyles; ///< per material index; empty or short: style
+    std::vector<Color> materialColors; ///< base colour per material; empty: defaultColor
+    Color defaultColor{0.85f, 0.82f, 0.78f};
+    Color background{0.93f, 0.93f, 0.91f};
+    bool pointLight = false;
+    Eigen::Vector3f light{0.4f, 0.6f, 0.7f}; ///< towards the light (directional) or its position (point)
+    ToonRamp toon;
+    ToonEvaluation toonEvaluation = ToonEvaluation::PerPixel;
+    GoochParams gooch;
+    std::vector<GoochParams> materialGooch; ///< per material index (the "auto" preset); empty: gooch
+    HatchParams hatch;
+    bool lines = true;
+    LineSettings lineSettings;
+    LineStyle lineStyle;
+    const std::vector<float>* shadingOffsets = nullptr; ///< per vertex (paper 3, eq. 4.3), may be null
+};
+
+/// One frame's passes (Pencil+ render elements, Blender view layers), all width x height.
+struct RenderPasses {
+    ImageRGBA beauty;              ///< the look: shading with lines, background, alpha = coverage of the model
+    std::vector<float> lines;      ///< line coverage in [0, 1]
+    std::vector<float> tone;       ///< shading intensity before colour (toon tone, Lambert or Gooch luminance)
+    std::vector<float> highlights; ///< stylized highlights mask (empty until that issue fills it): zeros
+    std::vector<float> depth;      ///< distance along the view axis, +infinity off the model
+    std::vector<Eigen::Vector3f> normal; ///< model-space unit normal, zero off the model
+    std::vector<std::int32_t> id;  ///< face id, -1 off the model
+};
+
+/// Topology data derived once per mesh and reused frame after frame (trimesh2-style caching).
+struct RenderCache {
+    const Faces* faces = nullptr;
+    EdgeTopology topology;
+};
+
+/// Renders shape (the view-dependent blend for this camera, #V by 3) with mesh's faces and
+/// materials. lineView lets stereo pairs take their lines from the centre eye (paper 3, section
+/// 4.2.2); null uses camera itself. Deterministic.
+void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera& camera, const RenderLook& look,
+                 RenderCache& cache, RenderPasses& out, const RasterCamera* lineView = nullptr);
+
+} // namespace celform::algo

@@ -1,0 +1,283 @@
+// Render output through OpenImageIO.
+#include "celform/model/render_output.h"
+
+#include "celform/model/io_error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace celform::model {
+namespace {
+
+struct RenderOutput {
+    Q_DECLARE_TR_FUNCTIONS(celform::model::RenderOutput)
+};
+
+/// A temporary name beside the target with the same suffix, so OpenImageIO picks the format.
+QString temporaryBeside(const QString& path)
+{
+    const QFileInfo info(path);
+    return info.dir().filePath(QStringLiteral(".%1.%2.tmp.%3")
+                                   .arg(info.completeBaseName())
+                                   .arg(QCoreApplication::applicationPid())
+                                   .arg(info.suffix()));
+}
+
+void commit(const QString& temporary, const QString& path)
+{
+    if (std::rename(QFile::encodeName(temporary).constData(), QFile::encodeName(path).constData()) != 0) {
+        QFile::remove(temporary);
+        throw IoError(path, RenderOutput::tr("could not be written (the folder refused the new file)"));
+    }
+}
+
+/// Writes channels of float data; 8-bit formats get sRGB-encoded colour channels.
+void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+                   const std::vector<float>& data, bool encodeSrgb)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    const bool isFloat = suffix == QLatin1String("exr");
+    const QStringList known = {QStringLiteral("png"), QStringLiteral("tif"), QStringLiteral("tiff"), QStringLiteral("jpg"),
+                               QStringLiteral("jpeg"), QStringLiteral("exr")};
+    if (!known.contains(suffix))
+        throw IoError(path, RenderOutput::tr("has an unknown image type; use .png, .tif, .jpg or .exr"));
+    const int channels = int(names.size());
+    OIIO::ImageSpec spec(width, height, channels, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    spec.channelnames = names;
+    spec.alpha_channel = -1;
+    for (int c = 0; c < channels; ++c)
+        if (names[std::size_t(c)] == "A")
+            spec.alpha_channel = c;
+    if (isFloat)
+        spec.attribute("compression", "zip");
+    const QString temporary = temporaryBeside(path);
+    auto out = OIIO::ImageOutput::create(QFile::encodeName(temporary).toStdString());
+    if (!out || !out->open(QFile::encodeName(temporary).toStdString(), spec))
+        throw IoError(path, RenderOutput::tr("could not be written: %1")
+                                .arg(QString::fromStdString(out ? out->geterror() : OIIO::geterror())));
+    bool ok = false;
+    if (isFloat) {
+        ok = out->write_image(OIIO::TypeDesc::FLOAT, data.data());
+    } else {
+        std::vector<unsigned char> bytes(data.size());
+        for (std::size_t i = 0; i < data.size(); ++i) {
+            const int c = int(i % std::size_t(channels));
+            float v = std::clamp(data[i], 0.f, 1.f);
+            if (encodeSrgb && c < 3 && names[std::size_t(c)] != "A")
+                v = algo::linearToSrgb(v);
+            bytes[i] = static_cast<unsigned char>(std::lround(v * 255.f));
+        }
+        ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    }
+    const std::string error = out->geterror();
+    out->close();
+    if (!ok) {
+        QFile::remove(temporary);
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(QString::fromStdString(error)));
+    }
+    commit(temporary, path);
+}
+
+} // namespace
+
+algo::RenderLook renderLookFor(const ProjectData& data, const Look& look)
+{
+    algo::RenderLook r;
+    auto toAlgo = [](ShadingStyle s) {
+        switch (s) {
+        case ShadingStyle::Lambert: return algo::Style::Lambert;
+        case ShadingStyle::Gooch: return algo::Style::Gooch;
+        case ShadingStyle::Comic: return algo::Style::Comic;
+        case ShadingStyle::Toon: break;
+        }
+        return algo::Style::Toon;
+    };
+    r.style = toAlgo(look.style);
+    const std::size_t materials = data.baseMesh ? data.baseMesh->materials.size() : 0;
+    for (std::size_t m = 0; m < std::max<std::size_t>(materials, 1); ++m) {
+        r.materialStyles.push_back(toAlgo(look.styleOf(int(m))));
+        r.materialColors.push_back(m < materials ? data.baseMesh->materials[m].baseColor : r.defaultColor);
+    }
+    r.background = look.backgroundColor;
+    r.pointLight = look.light.type == LightType::Point;
+    r.light = look.light.vector.cast<float>();
+    r.toon = look.toon;
+    r.toonEvaluation = look.toonEvaluation;
+    r.gooch = look.gooch;
+    if (look.gooch.preset == "auto") {
+        // Paper 1, section 3.2.4: the coefficients follow each material's hue; the artist's
+        // warm and cool colours stay.
+        for (const algo::Color& base : r.materialColors) {
+            algo::GoochParams p = algo::goochPresetForColor(base);
+            p.warm = look.gooch.warm;
+            p.cool = look.gooch.cool;
+            r.materialGooch.push_back(p);
+        }
+        r.gooch = r.materialGooch.front();
+    }
+    r.hatch = look.hatch;
+    r.lines = look.showLines;
+    r.lineSettings = look.lines;
+    r.lineStyle = look.lineStyle;
+    r.shadingOffsets = data.shadingOffsets.empty() ? nullptr : &data.shadingOffsets;
+    return r;
+}
+
+algo::RasterCamera rasterCamera(const Camera& camera, int width, int height)
+{
+    algo::RasterCamera r;
+    r.eye = camera.eye;
+    r.target = camera.target;
+    r.up = camera.up;
+    r.orthographic = camera.projection == Projection::Orthographic;
+    r.fovYDegrees = camera.fovYDegrees;
+    r.orthoHeight = camera.orthoHeight;
+    r.width = width;
+    r.height = height;
+    return r;
+}
+
+algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& camera, const Eigen::Vector3d& centroid)
+{
+    algo::StereoSettings s;
+    const double depth = std::max((centroid - camera.eye).dot(camera.forward()), 1e-6);
+    s.convergence = stereo.convergence > 0 ? stereo.convergence : depth;
+    s.interocular = stereo.interocular > 0 ? stereo.interocular : s.convergence / 30.0;
+    s.toeIn = stereo.toeIn;
+    s.swapEyes = stereo.swapEyes;
+    return s;
+}
+
+algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape,
+                               const Camera& camera, int width, int height, algo::StereoOutput stereo,
+                               algo::RenderCache& cache)
+{
+    const algo::RenderLook renderLook = renderLookFor(data, look);
+    const algo::RasterCamera centre = rasterCamera(camera, width, height);
+    algo::RenderPasses passes;
+    algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);
+    if (stereo == algo::StereoOutput::Off)
+        return passes;
+    const auto [left, right] =
+        algo::stereoPair(centre, resolvedStereo(look.stereo, camera, algo::centroid(data.baseMesh->vertices)));
+    algo::RenderPasses l, r;
+    algo::renderFrame(shape, *data.baseMesh, left, renderLook, cache, l, &centre);
+    algo::renderFrame(shape, *data.baseMesh, right, renderLook, cache, r, &centre);
+    switch (stereo) {
+    case algo::StereoOutput::Anaglyph: passes.beauty = algo::composeAnaglyph(l.beauty, r.beauty); break;
+    case algo::StereoOutput::Dubois: passes.beauty = algo::composeDubois(l.beauty, r.beauty, look.stereo.dubois); break;
+    case algo::StereoOutput::HalfColor: passes.beauty = algo::composeHalfColor(l.beauty, r.beauty); break;
+    case algo::StereoOutput::SideBySide: passes.beauty = algo::composeSideBySide(l.beauty, r.beauty); break;
+    case algo::StereoOutput::TopBottom: passes.beauty = algo::composeTopBottom(l.beauty, r.beauty); break;
+    case algo::StereoOutput::Off: break;
+    }
+    return passes;
+}
+
+QStringList renderPassNames()
+{
+    return {QStringLiteral("beauty"), QStringLiteral("lines"), QStringLiteral("tone"), QStringLiteral("highlights"),
+            QStringLiteral("depth"), QStringLiteral("normal"), QStringLiteral("id")};
+}
+
+algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile)
+{
+    const int w = passes.beauty.width, h = passes.beauty.height;
+    algo::ImageRGBA image(w, h, Eigen::Vector4f(0, 0, 0, 1));
+    auto grey = [&](const std::vector<float>& values) {
+        for (int i = 0; i < w * h; ++i)
+            for (int c = 0; c < 3; ++c)
+                image.pixels[std::size_t(i) * 4 + std::size_t(c)] = values[std::size_t(i)];
+    };
+    if (pass == QLatin1String("beauty"))
+        return passes.beauty;
+    if (pass == QLatin1String("lines")) {
+        grey(passes.lines);
+    } else if (pass == QLatin1String("tone")) {
+        grey(passes.tone);
+    } else if (pass == QLatin1String("highlights")) {
+        grey(passes.highlights);
+    } else if (pass == QLatin1String("depth")) {
+        std::vector<float> d(passes.depth.size(), 0.f);
+        float lo = std::numeric_limits<float>::max(), hi = 0.f;
+        for (float v : passes.depth)
+            if (std::isfinite(v)) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+        for (std::size_t i = 0; i < d.size(); ++i) {
+            const float v = passes.depth[i];
+            if (!std::isfinite(v))
+                d[i] = forFloatFile ? 0.f : 1.f;
+            else
+                d[i] = forFloatFile ? v : (hi > lo ? (v - lo) / (hi - lo) : 0.f);
+        }
+        grey(d);
+    } else if (pass == QLatin1String("normal")) {
+        for (int i = 0; i < w * h; ++i) {
+            const Eigen::Vector3f n = passes.normal[std::size_t(i)];
+            for (int c = 0; c < 3; ++c)
+                image.pixels[std::size_t(i) * 4 + std::size_t(c)] = forFloatFile ? n[c] : (n == Eigen::Vector3f::Zero() ? 0.f : 0.5f * n[c] + 0.5f);
+        }
+    } else if (pass == QLatin1String("id")) {
+        for (int i = 0; i < w * h; ++i) {
+            const std::int32_t id = passes.id[std::size_t(i)];
+            if (forFloatFile) {
+                for (int c = 0; c < 3; ++c)
+                    image.pixels[std::size_t(i) * 4 + std::size_t(c)] = float(id);
+                continue;
+            }
+            if (id < 0)
+                continue;
+            // A hash spreads neighbouring ids over distinct colours.
+            std::uint32_t hsh = std::uint32_t(id) * 2654435761u;
+            hsh ^= hsh >> 15;
+            for (int c = 0; c < 3; ++c)
+                image.pixels[std::size_t(i) * 4 + std::size_t(c)] = algo::srgbToLinear(float((hsh >> (8 * c)) & 0xffu) / 255.f);
+        }
+    } else {
+        throw IoError(pass, RenderOutput::tr("is not a render pass; use one of %1").arg(renderPassNames().join(QStringLiteral(", "))));
+    }
+    return image;
+}
+
+void writeImage(const algo::ImageRGBA& image, const QString& path)
+{
+    writeChannels(path, image.width, image.height, {"R", "G", "B", "A"}, image.pixels, true);
+}
+
+void writePassesExr(const algo::RenderPasses& passes, const QString& path)
+{
+    const int w = passes.beauty.width, h = passes.beauty.height;
+    const std::vector<std::string> names = {"R", "G", "B", "A", "lines.Y", "tone.Y", "highlights.Y", "depth.Z",
+                                            "normal.X", "normal.Y", "normal.Z", "id.ID"};
+    const std::size_t channels = names.size();
+    std::vector<float> data(std::size_t(w) * std::size_t(h) * channels);
+    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {
+        float* p = data.data() + i * channels;
+        for (int c = 0; c < 4; ++c)
+            p[c] = passes.beauty.pixels[i * 4 + std::size_t(c)];
+        p[4] = passes.lines[i];
+        p[5] = passes.tone[i];
+        p[6] = passes.highlights[i];
+        p[7] = std::isfinite(passes.depth[i]) ? passes.depth[i] : 0.f;
+        p[8] = passes.normal[i].x();
+        p[9] = passes.normal[i].y();
+        p[10] = passes.normal[i].z();
+        p[11] = float(passes.id[i]);
+    }
+    if (QFileInfo(path).suffix().toLower() != QLatin1String("exr"))
+        throw IoError(path, RenderOutput::tr("all passes together need an .exr file"));
+    writeChannels(path, w, h, names, data, false);
+}
+
+} // namespace celform::model

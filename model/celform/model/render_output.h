@@ -1,0 +1,48 @@
+// Writing rendered frames: one pass or the beauty as PNG/TIFF/JPEG (8-bit sRGB) or EXR (linear
+// float), and every pass as named channels of one EXR, through OpenImageIO.
+#pragma once
+
+#include "celform/algorithms/render.h"
+#include "celform/algorithms/stereo.h"
+#include "celform/model/project_data.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace celform::model {
+
+/// The renderer's view of the document's look (styles per material, light, tones, lines).
+/// look may override the document's (a render with --style or --light).
+algo::RenderLook renderLookFor(const ProjectData& data, const Look& look);
+
+/// The raster camera of a document camera for an image size.
+algo::RasterCamera rasterCamera(const Camera& camera, int width, int height);
+
+/// The stereo settings with "auto" distances resolved: convergence at the centroid's depth, eyes
+/// a thirtieth of it apart.
+algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& camera, const Eigen::Vector3d& centroid);
+
+/// Renders a frame of the shape, mono or as a stereo composition (lines from the centre eye,
+/// paper 3, section 4.2.2). For stereo only the beauty pass is composed; the other passes are
+/// the centre eye's.
+algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape,
+                               const Camera& camera, int width, int height, algo::StereoOutput stereo,
+                               algo::RenderCache& cache);
+
+/// The pass names of `celform render --pass`.
+QStringList renderPassNames();
+
+/// A single pass as an image: beauty as is, scalar passes as grey, normals as 0.5 * n + 0.5 for
+/// 8-bit files (raw in EXR), depth normalised to [0, 1] over the model for 8-bit files (raw in
+/// EXR, 0 off the model), ids as distinct colours (raw in EXR). Throws IoError for a bad name.
+algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile);
+
+/// Writes an image by suffix (png, tif, tiff, jpg, jpeg, exr), atomically (temporary file beside
+/// it, then a rename). Throws IoError naming the file.
+void writeImage(const algo::ImageRGBA& image, const QString& path);
+
+/// Writes every pass into one EXR with named channels: R G B A (beauty), lines.Y, tone.Y,
+/// highlights.Y, depth.Z, normal.X normal.Y normal.Z, id.ID. Throws IoError.
+void writePassesExr(const algo::RenderPasses& passes, const QString& path);
+
+} // namespace celform::model

@@ -1,0 +1,109 @@
+// Feature-line speed on the dragon (871k triangles): edge adjacency (once per topology), feature
+// edges for one perspective frame (goal < 10 ms on one core) and chaining them into strokes.
+// Run: bench_lines (medians of 5 repetitions; edge and stroke counts are printed as counters).
+#include "celform/algorithms/lines.h"
+#include "celform/model/mesh_io.h"
+
+#include <benchmark/benchmark.h>
+
+#include <QDir>
+#include <QFileInfo>
+
+#include <memory>
+
+namespace {
+
+using namespace celform;
+
+const algo::TriMesh* dragon()
+{
+    static std::unique_ptr<algo::TriMesh> mesh = [] {
+        const QString path
+            = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/stanford_dragon.ply"));
+        if (!QFileInfo::exists(path))
+            return std::unique_ptr<algo::TriMesh>();
+        return std::make_unique<algo::TriMesh>(model::importMesh(path).mesh);
+    }();
+    return mesh.get();
+}
+
+const algo::EdgeTopology& dragonTopology()
+{
+    static const algo::EdgeTopology topology
+        = algo::buildEdgeTopology(dragon()->faces, std::int32_t(dragon()->vertexCount()));
+    return topology;
+}
+
+/// A perspective camera two bounding-box diagonals away, looking at the centre from the front-left.
+algo::LineView dragonView(const algo::TriMesh& mesh)
+{
+    const Eigen::AlignedBox3d box = algo::boundingBox(mesh.vertices);
+    algo::LineView view;
+    const Eigen::Vector3d eye
+        = box.center() + 2.0 * box.diagonal().norm() * Eigen::Vector3d(-0.4, 0.3, 1.0).normalized();
+    view.eye = eye.cast<float>();
+    view.direction = (box.center() - eye).normalized().cast<float>();
+    return view;
+}
+
+void BM_EdgeTopologyDragon(benchmark::State& state)
+{
+    const algo::TriMesh* mesh = dragon();
+    if (!mesh) {
+        state.SkipWithError("shared data not found: meshes/stanford_dragon.ply");
+        return;
+    }
+    std::int64_t edges = 0;
+    for (auto _ : state) {
+        const algo::EdgeTopology t = algo::buildEdgeTopology(mesh->faces, std::int32_t(mesh->vertexCount()));
+        edges = t.edges.rows();
+        benchmark::DoNotOptimize(t.edges.data());
+    }
+    state.counters["edges"] = double(edges);
+}
+BENCHMARK(BM_EdgeTopologyDragon)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+
+void BM_ExtractFeatureEdgesDragon(benchmark::State& state)
+{
+    const algo::TriMesh* mesh = dragon();
+    if (!mesh) {
+        state.SkipWithError("shared data not found: meshes/stanford_dragon.ply");
+        return;
+    }
+    const algo::EdgeTopology& topology = dragonTopology();
+    const algo::LineView view = dragonView(*mesh);
+    const algo::LineSettings settings; // silhouettes, creases (45 degrees), borders
+    algo::FeatureEdges features;
+    for (auto _ : state) {
+        algo::extractFeatureEdges(mesh->vertices, mesh->faces, topology, mesh->faceMaterials, view, settings, features);
+        benchmark::DoNotOptimize(features.edges.data());
+    }
+    state.counters["features"] = double(features.edges.size());
+}
+BENCHMARK(BM_ExtractFeatureEdgesDragon)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+
+void BM_ChainStrokesDragon(benchmark::State& state)
+{
+    const algo::TriMesh* mesh = dragon();
+    if (!mesh) {
+        state.SkipWithError("shared data not found: meshes/stanford_dragon.ply");
+        return;
+    }
+    const algo::EdgeTopology& topology = dragonTopology();
+    algo::FeatureEdges features;
+    algo::extractFeatureEdges(
+        mesh->vertices, mesh->faces, topology, mesh->faceMaterials, dragonView(*mesh), algo::LineSettings{}, features);
+    std::size_t strokes = 0;
+    for (auto _ : state) {
+        const std::vector<algo::Stroke> s = algo::chainStrokes(topology, features);
+        strokes = s.size();
+        benchmark::DoNotOptimize(s.data());
+    }
+    state.counters["features"] = double(features.edges.size());
+    state.counters["strokes"] = double(strokes);
+}
+BENCHMARK(BM_ChainStrokesDragon)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+
+} // namespace
+
+BENCHMARK_MAIN();

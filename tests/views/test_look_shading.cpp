@@ -1,0 +1,559 @@
+// The cartoon look in the viewport: tones, Gooch, style switches and the key-light gizmo under
+// Xvfb, and the cross-path check that the viewport's pixels equal the offline renderer's.
+#include "celform/algorithms/image.h"
+#include "celform/algorithms/shading.h"
+#include "celform/model/document.h"
+#include "celform/model/mesh_io.h"
+#include "celform/model/render_output.h"
+#include "celform/views/viewport.h"
+
+#include "test_support.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QMouseEvent>
+#include <QtTest/QtTest>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <utility>
+
+using celform::algo::TriMesh;
+using celform::model::Camera;
+using celform::model::Document;
+using celform::model::Look;
+using celform::model::ProjectData;
+using celform::model::ShadingStyle;
+using celform::views::Viewport;
+
+Q_DECLARE_METATYPE(celform::model::ShadingStyle)
+Q_DECLARE_METATYPE(celform::algo::ToonEvaluation)
+
+namespace {
+
+constexpr int kSize = 400;
+constexpr int kBand = 2; // pixels excluded on each side of silhouettes and tone boundaries
+constexpr int kTriadPixels = 92; // the axes triad's corner (bottom left), not the model
+
+/// A unit icosphere with 10 * 4^s + 2 vertices (2562 for s = 4).
+std::shared_ptr<TriMesh> makeIcosphere(int subdivisions)
+{
+    const float t = (1.f + std::sqrt(5.f)) / 2.f;
+    std::vector<Eigen::Vector3f> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+        {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9},
+        {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
+        {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (auto& p : v)
+        p.normalize();
+    for (int s = 0; s < subdivisions; ++s) {
+        std::map<std::pair<int, int>, int> middle;
+        auto split = [&](int a, int b) {
+            const auto key = std::minmax(a, b);
+            const auto found = middle.find(key);
+            if (found != middle.end())
+                return found->second;
+            v.push_back((v[std::size_t(a)] + v[std::size_t(b)]).normalized());
+            return middle[key] = int(v.size()) - 1;
+        };
+        std::vector<std::array<int, 3>> finer;
+        for (const auto& tri : f) {
+            const int a = split(tri[0], tri[1]), b = split(tri[1], tri[2]), c = split(tri[2], tri[0]);
+            finer.push_back({tri[0], a, c});
+            finer.push_back({tri[1], b, a});
+            finer.push_back({tri[2], c, b});
+            finer.push_back({a, b, c});
+        }
+        f = std::move(finer);
+    }
+    auto mesh = std::make_shared<TriMesh>();
+    mesh->vertices.resize(Eigen::Index(v.size()), 3);
+    for (std::size_t i = 0; i < v.size(); ++i)
+        mesh->vertices.row(Eigen::Index(i)) = v[i];
+    mesh->faces.resize(Eigen::Index(f.size()), 3);
+    for (std::size_t i = 0; i < f.size(); ++i)
+        mesh->faces.row(Eigen::Index(i)) << f[i][0], f[i][1], f[i][2];
+    return mesh;
+}
+
+int encode8(float linear)
+{
+    return int(std::lround(celform::algo::linearToSrgb(std::clamp(linear, 0.f, 1.f)) * 255.f));
+}
+
+std::array<int, 3> encode8(const Eigen::Vector3f& c)
+{
+    return {encode8(c.x()), encode8(c.y()), encode8(c.z())};
+}
+
+std::array<int, 3> rgbAt(const QImage& image, int x, int y)
+{
+    const QRgb p = image.pixel(x, y);
+    return {qRed(p), qGreen(p), qBlue(p)};
+}
+
+int channelDistance(const std::array<int, 3>& a, const std::array<int, 3>& b)
+{
+    return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
+}
+
+bool inTriad(int x, int y)
+{
+    return x < kTriadPixels && y >= kSize - kTriadPixels;
+}
+
+/// Distinct colours of the model's interior: pixels whose 5x5 neighbourhood is all model and all
+/// the same colour (within 1 per channel), clustered with 1 level of rounding per channel.
+std::vector<std::pair<std::array<int, 3>, int>> interiorColors(
+    const QImage& image, const std::array<int, 3>& background)
+{
+    std::vector<std::pair<std::array<int, 3>, int>> clusters;
+    for (int y = kBand; y < image.height() - kBand; ++y)
+        for (int x = kBand; x < image.width() - kBand; ++x) {
+            if (inTriad(x, y))
+                continue;
+            const auto c = rgbAt(image, x, y);
+            bool interior = true;
+            for (int dy = -kBand; dy <= kBand && interior; ++dy)
+                for (int dx = -kBand; dx <= kBand && interior; ++dx) {
+                    const auto n = rgbAt(image, x + dx, y + dy);
+                    interior = channelDistance(n, background) > 1 && channelDistance(n, c) <= 1;
+                }
+            if (!interior)
+                continue;
+            auto it = std::find_if(
+                clusters.begin(), clusters.end(), [&](const auto& cl) { return channelDistance(cl.first, c) <= 1; });
+            if (it == clusters.end())
+                clusters.push_back({c, 1});
+            else
+                ++it->second;
+        }
+    return clusters;
+}
+
+QString describe(const std::vector<std::pair<std::array<int, 3>, int>>& clusters)
+{
+    QStringList parts;
+    for (const auto& [c, n] : clusters)
+        parts << QStringLiteral("(%1,%2,%3)x%4").arg(c[0]).arg(c[1]).arg(c[2]).arg(n);
+    return parts.join(QStringLiteral(" "));
+}
+
+} // namespace
+
+class TestLookShading : public QObject {
+    Q_OBJECT
+
+private:
+    std::unique_ptr<Document> m_doc;
+    std::unique_ptr<Viewport> m_view;
+    Camera m_camera;
+
+    QImage frame()
+    {
+        const int before = m_view->renderCount();
+        m_view->update();
+        if (!QTest::qWaitFor([&] { return m_view->renderCount() > before; }, 5000))
+            qWarning("viewport did not repaint");
+        return m_view->renderedImage().convertToFormat(QImage::Format_RGB32);
+    }
+
+    Look baseLook() const
+    {
+        Look look;
+        look.style = ShadingStyle::Toon;
+        look.showLines = false;
+        look.light.type = celform::model::LightType::Directional;
+        look.light.vector = Eigen::Vector3d(0.4, 0.6, 0.7);
+        return look;
+    }
+
+    void setLook(const Look& look)
+    {
+        m_doc->setLook(look);
+        m_view->setCamera(m_camera);
+    }
+
+    std::array<int, 3> background() const { return encode8(m_doc->data().look.backgroundColor); }
+
+    /// The offline renderer's picture of the same scene, as the 8-bit file would hold it.
+    QImage cpuImage(celform::algo::RenderPasses* passesOut = nullptr) const
+    {
+        const ProjectData& data = m_doc->data();
+        celform::algo::RenderCache cache;
+        celform::algo::RenderPasses passes = celform::model::renderShape(data, data.look, data.baseMesh->vertices,
+            m_view->camera(), kSize, kSize, celform::algo::StereoOutput::Off, cache);
+        QImage image(kSize, kSize, QImage::Format_RGB32);
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const float* p = passes.beauty.at(x, y);
+                image.setPixel(x, y, qRgb(encode8(p[0]), encode8(p[1]), encode8(p[2])));
+            }
+        if (passesOut)
+            *passesOut = std::move(passes);
+        return image;
+    }
+
+    void useMesh(std::shared_ptr<const TriMesh> mesh, const Camera& camera)
+    {
+        ProjectData data;
+        data.baseMesh = std::move(mesh);
+        data.look = baseLook();
+        m_doc->reset(std::move(data));
+        m_camera = camera;
+        m_view->setCamera(m_camera);
+        frame();
+    }
+
+    static Camera sphereCamera()
+    {
+        Camera c;
+        c.eye = Eigen::Vector3d(0.0, 0.0, 5.5);
+        c.target = Eigen::Vector3d::Zero();
+        c.up = Eigen::Vector3d::UnitY();
+        c.projection = celform::model::Projection::Perspective;
+        c.fovYDegrees = 30.0;
+        return c;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        m_doc = std::make_unique<Document>();
+        m_view = std::make_unique<Viewport>(m_doc.get());
+        m_view->setLightGizmoVisible(false);
+        m_view->resize(kSize, kSize);
+        m_view->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
+        QTRY_VERIFY(m_view->renderCount() > 0);
+        const auto sphere = makeIcosphere(4);
+        QCOMPARE(sphere->vertexCount(), Eigen::Index(2562));
+        useMesh(sphere, sphereCamera());
+        QCOMPARE(m_view->renderedImage().size(), QSize(kSize, kSize));
+    }
+
+    void cleanupTestCase()
+    {
+        m_view.reset();
+        m_doc.reset();
+    }
+
+    void init()
+    {
+        if (m_doc->data().baseMesh->vertexCount() != 2562)
+            useMesh(makeIcosphere(4), sphereCamera());
+        m_view->setShadingEnabled(true);
+        m_view->setLightGizmoVisible(false);
+        setLook(baseLook());
+    }
+
+    void twoTonesGiveTwoColors()
+    {
+        const QImage image = frame();
+        image.save(QStringLiteral("/tmp/look_sphere_toon.png"));
+        const auto clusters = interiorColors(image, background());
+        QVERIFY2(clusters.size() == 2, qPrintable(describe(clusters)));
+        // One per tone: the default base colour times each intensity, sRGB-encoded.
+        const Eigen::Vector3f base(0.85f, 0.82f, 0.78f);
+        for (const float intensity : m_doc->data().look.toon.intensities) {
+            const auto expected = encode8(Eigen::Vector3f(base * intensity));
+            const bool found = std::any_of(clusters.begin(), clusters.end(),
+                [&](const auto& c) { return channelDistance(c.first, expected) <= 1; });
+            QVERIFY2(found, qPrintable(QStringLiteral("tone %1 missing in %2").arg(intensity).arg(describe(clusters))));
+        }
+    }
+
+    void threeToneRampGivesThreeColors()
+    {
+        Look look = baseLook();
+        look.toon.thresholds = {0.2f, 0.6f};
+        look.toon.intensities = {0.2f, 0.55f, 0.9f};
+        setLook(look);
+        const QImage image = frame();
+        const auto clusters = interiorColors(image, background());
+        QVERIFY2(clusters.size() == 3, qPrintable(describe(clusters)));
+    }
+
+    void toneBoundaryWhereLambertCrossesThreshold()
+    {
+        const QImage image = frame();
+        const celform::algo::RasterCamera camera = celform::model::rasterCamera(m_view->camera(), kSize, kSize);
+        const Eigen::Vector3f l = m_doc->data().look.light.vector.cast<float>().normalized();
+        const float threshold = m_doc->data().look.toon.thresholds.front();
+        const auto bright = encode8(Eigen::Vector3f(Eigen::Vector3f(0.85f, 0.82f, 0.78f) * 0.75f));
+        const auto dark = encode8(Eigen::Vector3f(Eigen::Vector3f(0.85f, 0.82f, 0.78f) * 0.25f));
+        int checked = 0, crossings = 0;
+        for (const int y : {150, 200, 250}) {
+            bool wasBright = false;
+            for (int x = 0; x < kSize; ++x) {
+                // The model point under the pixel centre, on the exact unit sphere.
+                Eigen::Vector3d o, d;
+                camera.ray(x + 0.5, y + 0.5, o, d);
+                const double b = o.dot(d), c = o.squaredNorm() - 1.0, disc = b * b - c;
+                if (disc < 0.05) // off the sphere or too near its silhouette
+                    continue;
+                const Eigen::Vector3f n = (o + (-b - std::sqrt(disc)) * d).cast<float>();
+                const float lambert = n.dot(l);
+                // The icosphere's interpolated normals are within ~0.02 of the sphere's.
+                if (std::abs(lambert - threshold) < 0.03f)
+                    continue;
+                const auto pixel = rgbAt(image, x, y);
+                const bool isBright = channelDistance(pixel, bright) <= 1;
+                QVERIFY2(isBright || channelDistance(pixel, dark) <= 1,
+                    qPrintable(QStringLiteral("pixel %1,%2 is neither tone").arg(x).arg(y)));
+                QVERIFY2(isBright == (lambert >= threshold),
+                    qPrintable(
+                        QStringLiteral("pixel %1,%2: N.L = %3 but tone %4").arg(x).arg(y).arg(lambert).arg(isBright)));
+                if (checked > 0 && isBright != wasBright)
+                    ++crossings;
+                wasBright = isBright;
+                ++checked;
+            }
+        }
+        QVERIFY(checked > 500);
+        QVERIFY(crossings >= 2); // the lines do cross the boundary
+    }
+
+    void goochMatchesFormulaWhereNormalIsLight()
+    {
+        Look look = baseLook();
+        look.style = ShadingStyle::Gooch;
+        setLook(look);
+        const QImage image = frame();
+        const celform::algo::RasterCamera camera = celform::model::rasterCamera(m_view->camera(), kSize, kSize);
+        const Eigen::Vector3f l = look.light.vector.cast<float>().normalized();
+        const Eigen::Vector3d pixel = camera.project(l.cast<double>());
+        const int x = int(pixel.x()), y = int(pixel.y());
+        const Eigen::Vector3f base(0.85f, 0.82f, 0.78f);
+        // The coefficients the renderer resolves (the "auto" preset follows the base colour).
+        const celform::algo::GoochParams params = celform::model::renderLookFor(m_doc->data(), look).gooch;
+        const auto expected = encode8(celform::algo::goochShade(base, l, l, params));
+        const auto actual = rgbAt(image, x, y);
+        QVERIFY2(channelDistance(actual, expected) <= 2,
+            qPrintable(QStringLiteral("at %1,%2: (%3,%4,%5), formula (%6,%7,%8)")
+                           .arg(x)
+                           .arg(y)
+                           .arg(actual[0])
+                           .arg(actual[1])
+                           .arg(actual[2])
+                           .arg(expected[0])
+                           .arg(expected[1])
+                           .arg(expected[2])));
+    }
+
+    void switchingStyleChangesThePicture()
+    {
+        std::vector<QImage> images;
+        for (const ShadingStyle style :
+            {ShadingStyle::Toon, ShadingStyle::Lambert, ShadingStyle::Gooch, ShadingStyle::Comic}) {
+            Look look = baseLook();
+            look.style = style;
+            setLook(look);
+            images.push_back(frame());
+        }
+        for (std::size_t i = 0; i < images.size(); ++i)
+            for (std::size_t j = i + 1; j < images.size(); ++j)
+                QVERIFY2(
+                    images[i] != images[j], qPrintable(QStringLiteral("styles %1 and %2 look the same").arg(i).arg(j)));
+        // Clay: the look switched off shows something else again, and back on the same toon.
+        m_view->setShadingEnabled(false);
+        const QImage clay = frame();
+        QVERIFY(clay != images[0]);
+        m_view->setShadingEnabled(true);
+        setLook(baseLook());
+        QCOMPARE(frame(), images[0]);
+    }
+
+    void crossPath_data()
+    {
+        QTest::addColumn<ShadingStyle>("style");
+        QTest::addColumn<celform::algo::ToonEvaluation>("evaluation");
+        QTest::addColumn<bool>("pointLight");
+        QTest::addColumn<bool>("offsets");
+        using E = celform::algo::ToonEvaluation;
+        QTest::newRow("toon per pixel") << ShadingStyle::Toon << E::PerPixel << false << false;
+        QTest::newRow("toon per pixel, offsets") << ShadingStyle::Toon << E::PerPixel << false << true;
+        QTest::newRow("toon per vertex lut") << ShadingStyle::Toon << E::PerVertexLut << false << true;
+        QTest::newRow("toon per face") << ShadingStyle::Toon << E::PerFace << false << false;
+        QTest::newRow("toon point light") << ShadingStyle::Toon << E::PerPixel << true << false;
+        QTest::newRow("lambert") << ShadingStyle::Lambert << E::PerPixel << false << false;
+        QTest::newRow("gooch") << ShadingStyle::Gooch << E::PerPixel << false << false;
+        QTest::newRow("comic") << ShadingStyle::Comic << E::PerPixel << false << false;
+    }
+
+    void crossPath()
+    {
+        QFETCH(ShadingStyle, style);
+        QFETCH(celform::algo::ToonEvaluation, evaluation);
+        QFETCH(bool, pointLight);
+        QFETCH(bool, offsets);
+        ProjectData data = m_doc->data();
+        data.shadingOffsets.clear();
+        if (offsets) {
+            // A smooth field (paper 3, eq. 4.3): moves the boundary, no new discontinuities.
+            for (Eigen::Index v = 0; v < data.baseMesh->vertexCount(); ++v)
+                data.shadingOffsets.push_back(0.3f * data.baseMesh->vertices(v, 1));
+        }
+        data.look = baseLook();
+        data.look.style = style;
+        data.look.toonEvaluation = evaluation;
+        if (pointLight) {
+            data.look.light.type = celform::model::LightType::Point;
+            data.look.light.vector = Eigen::Vector3d(1.6, 1.2, 2.0);
+        }
+        m_doc->reset(std::move(data));
+        m_view->setCamera(m_camera);
+        const QImage gpu = frame();
+        celform::algo::RenderPasses passes;
+        const QImage cpu = cpuImage(&passes);
+        const QString tag = QString::fromLatin1(QTest::currentDataTag())
+                                .replace(QLatin1Char(' '), QLatin1Char('_'))
+                                .remove(QLatin1Char(','));
+        gpu.save(QStringLiteral("/tmp/look_cross_%1_viewport.png").arg(tag));
+        cpu.save(QStringLiteral("/tmp/look_cross_%1_cpu.png").arg(tag));
+
+        // Tone index of every covered CPU pixel, for the boundary band.
+        std::vector<int> tone(std::size_t(kSize * kSize), -1);
+        for (int i = 0; i < kSize * kSize; ++i)
+            if (passes.id[std::size_t(i)] >= 0) {
+                const int x = i % kSize, y = i / kSize;
+                (void)x;
+                (void)y;
+                tone[std::size_t(i)] = style == ShadingStyle::Toon
+                    ? int(std::lround(passes.tone[std::size_t(i)] * 1000.f)) // per-face and LUT tones too
+                    : 0;
+            }
+        const auto bg = background();
+        long both = 0, either = 0, compared = 0;
+        double sum[3] = {0, 0, 0};
+        int worst = 0, over2 = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                if (inTriad(x, y))
+                    continue;
+                const bool inCpu = passes.id[std::size_t(y * kSize + x)] >= 0;
+                const auto g = rgbAt(gpu, x, y);
+                const bool inGpu = channelDistance(g, bg) > 1;
+                either += (inCpu || inGpu) ? 1 : 0;
+                both += (inCpu && inGpu) ? 1 : 0;
+                if (!(inCpu && inGpu))
+                    continue;
+                // Away from silhouettes and tone boundaries (LUT tones blend smoothly: no band).
+                bool band = false;
+                const int centre = tone[std::size_t(y * kSize + x)];
+                for (int dy = -kBand; dy <= kBand && !band; ++dy)
+                    for (int dx = -kBand; dx <= kBand && !band; ++dx) {
+                        const int xx = x + dx, yy = y + dy;
+                        if (xx < 0 || yy < 0 || xx >= kSize || yy >= kSize) {
+                            band = true;
+                            continue;
+                        }
+                        const int other = tone[std::size_t(yy * kSize + xx)];
+                        band = other < 0
+                            || (evaluation != celform::algo::ToonEvaluation::PerVertexLut && other != centre);
+                    }
+                if (band)
+                    continue;
+                const auto c = rgbAt(cpu, x, y);
+                for (int k = 0; k < 3; ++k)
+                    sum[k] += std::abs(g[std::size_t(k)] - c[std::size_t(k)]);
+                const int d = channelDistance(g, c);
+                worst = std::max(worst, d);
+                over2 += d > 2 ? 1 : 0;
+                ++compared;
+            }
+        QVERIFY(compared > 10000);
+        const double agreement = double(both) / double(std::max<long>(either, 1));
+        qInfo("%s: %ld pixels compared, mean |diff| per channel %.3f %.3f %.3f (of 255), max %d, %d pixels over 2; "
+              "coverage agreement %.4f",
+            QTest::currentDataTag(), compared, sum[0] / compared, sum[1] / compared, sum[2] / compared, worst, over2,
+            agreement);
+        for (double s : sum)
+            QVERIFY2(s / compared < 2.0, "mean difference per channel must stay under 2/255");
+        QVERIFY2(agreement > 0.99, qPrintable(QStringLiteral("covered pixels agree on %1").arg(agreement)));
+    }
+
+    void lightGizmoDragMovesTheLight()
+    {
+        // A light in front, so its handle is on screen.
+        Look look = baseLook();
+        look.light.vector = Eigen::Vector3d(0.2, 0.3, 0.93).normalized();
+        setLook(look);
+        m_view->setLightGizmoVisible(true);
+        frame();
+        const Eigen::Vector3d before = m_doc->data().look.light.vector;
+        const int undoCount = m_doc->undoStack()->count();
+        const QPoint from = m_view->projectToWidget(m_view->lightGizmoHandle()).toPoint();
+        QVERIFY(QRect(0, 0, kSize, kSize).contains(from));
+        const QPoint to = from + QPoint(-60, 30);
+        QMouseEvent press(QEvent::MouseButtonPress, from, m_view->mapToGlobal(from), Qt::LeftButton, Qt::LeftButton,
+            Qt::ControlModifier);
+        QApplication::sendEvent(m_view.get(), &press);
+        for (int i = 1; i <= 10; ++i) {
+            const QPoint p = from + (to - from) * i / 10;
+            QMouseEvent move(
+                QEvent::MouseMove, p, m_view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
+            QApplication::sendEvent(m_view.get(), &move);
+        }
+        QMouseEvent release(
+            QEvent::MouseButtonRelease, to, m_view->mapToGlobal(to), Qt::LeftButton, Qt::NoButton, Qt::ControlModifier);
+        QApplication::sendEvent(m_view.get(), &release);
+        const Eigen::Vector3d after = m_doc->data().look.light.vector;
+        QVERIFY2((after - before).norm() > 0.1, "the drag did not move the light");
+        QVERIFY(std::abs(after.norm() - 1.0) < 1e-6); // a direction stays a unit vector
+        // The handle followed the cursor.
+        const QPointF handle = m_view->projectToWidget(m_view->lightGizmoHandle());
+        QVERIFY2(QLineF(handle, QPointF(to)).length() < 3.0,
+            qPrintable(QStringLiteral("handle at %1,%2").arg(handle.x()).arg(handle.y())));
+        QVERIFY(m_doc->undoStack()->count() <= undoCount + 1); // one drag, one undo step
+        frame().save(QStringLiteral("/tmp/look_gizmo.png"));
+        // Consecutive look edits merge (kLookId), so undo may also take back the look set above.
+        m_doc->undoStack()->undo();
+        QVERIFY((m_doc->data().look.light.vector - after).norm() > 0.1);
+        m_view->setLightGizmoVisible(false);
+    }
+
+    void screenshotsOnARealMesh()
+    {
+        const QString path = celform::test::sharedDataPath(QStringLiteral("meshes/cgal_elephant.off"));
+        std::shared_ptr<const TriMesh> mesh;
+        if (!path.isEmpty())
+            mesh = std::make_shared<TriMesh>(celform::model::importMesh(path).mesh);
+        if (!mesh)
+            mesh = makeIcosphere(5);
+        const Eigen::AlignedBox3d box = celform::algo::boundingBox(mesh->vertices);
+        Camera camera;
+        camera.target = box.center();
+        const double radius = 0.5 * box.diagonal().norm();
+        camera.eye = box.center() + radius * 3.2 * Eigen::Vector3d(0.55, 0.25, 0.8).normalized();
+        camera.up = Eigen::Vector3d::UnitY();
+        camera.fovYDegrees = 35.0;
+        useMesh(mesh, camera);
+        for (const auto& [style, name] :
+            {std::pair{ShadingStyle::Toon, "toon"}, std::pair{ShadingStyle::Gooch, "gooch"},
+                std::pair{ShadingStyle::Comic, "comic"}, std::pair{ShadingStyle::Lambert, "lambert"}}) {
+            Look look = baseLook();
+            look.style = style;
+            look.hatch.spacing = float(radius * 0.02);
+            setLook(look);
+            frame().save(QStringLiteral("/tmp/look_%1.png").arg(QLatin1String(name)));
+            cpuImage().save(QStringLiteral("/tmp/look_%1_cpu.png").arg(QLatin1String(name)));
+        }
+        m_view->setLightGizmoVisible(true);
+        frame().save(QStringLiteral("/tmp/look_elephant_gizmo.png"));
+        m_view->setLightGizmoVisible(false);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    // VTK needs an OpenGL 3.2 core context; it must be the default before QApplication exists.
+    QSurfaceFormat::setDefaultFormat(Viewport::defaultFormat());
+    QApplication app(argc, argv);
+    TestLookShading test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_look_shading.moc"

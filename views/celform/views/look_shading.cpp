@@ -1,0 +1,437 @@
+// The look's shader on a VTK actor: the shared GLSL mirror of shading.cpp plus the per-style
+// colour of algo::renderFrame, written as replacements of VTK 9.1's polydata shader tags
+// (STACK.md pitfall 6).
+#include "celform/views/look_shading.h"
+
+#include "celform/algorithms/render.h"
+#include "celform/algorithms/shading.h"
+#include "celform/model/render_output.h"
+#include "celform_shading_glsl.h" // generated from resources/shaders/celform_shading.glsl
+
+#include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkDataObject.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLShaderProperty.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+namespace celform::views {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Array names in the polydata and attribute names in the vertex shader.
+constexpr const char* kOffsetArray = "cfShadingOffset";
+constexpr const char* kLutArray = "cfLutIntensity";
+constexpr const char* kBaseArray = "cfBaseColor";
+constexpr const char* kStyleArray = "cfStyle";
+
+// Vertex shader: model-space position and normal, and the per-vertex look attributes, passed on.
+const char* const kVertexDec = R"glsl(//VTK::Normal::Dec
+in vec3 cfNormalAttr;
+in float cfOffsetAttr;
+in float cfLutAttr;
+in vec3 cfBaseAttr;
+in float cfStyleAttr;
+out vec3 cfPositionMC;
+out vec3 cfNormalMC;
+out float cfOffset;
+out float cfLutIntensity;
+out vec3 cfBase;
+out float cfStyle;
+)glsl";
+
+const char* const kVertexImpl = R"glsl(//VTK::Normal::Impl
+  cfPositionMC = vertexMC.xyz;
+  cfNormalMC = cfNormalAttr;
+  cfOffset = cfOffsetAttr;
+  cfLutIntensity = cfLutAttr;
+  cfBase = cfBaseAttr;
+  cfStyle = cfStyleAttr;
+)glsl";
+
+// Fragment shader declarations after the shared functions: the light, the camera and the style.
+const char* const kFragmentDec = R"glsl(
+in vec3 cfPositionMC;
+in vec3 cfNormalMC;
+in float cfOffset;
+in float cfLutIntensity;
+in vec3 cfBase;
+in float cfStyle;
+uniform vec3 cfLightVector;  // towards the light (directional) or its position (point), model space
+uniform int cfPointLight;
+uniform int cfEvaluation;    // 0 PerPixel, 1 PerVertexLut, 2 PerFace (algo::ToonEvaluation)
+uniform vec3 cfLineColor;
+uniform vec3 cfEye;          // camera position, model space
+uniform vec3 cfForward;      // unit view axis, model space
+uniform float cfPixelScale;  // model units per pixel: times depth (perspective) or as is (ortho)
+uniform int cfOrthographic;
+
+// render.cpp's lightDirection: unit vector towards the light, +Z for a degenerate one.
+vec3 cfLightDirection(vec3 position)
+{
+  vec3 l = cfPointLight != 0 ? cfLightVector - position : cfLightVector;
+  float n = length(l);
+  return n > 0.0 ? l / n : vec3(0.0, 0.0, 1.0);
+}
+
+// algo::toonTone (the shared mirror only exposes the intensity): the number of thresholds at or
+// below lambert, clamped to the tones.
+int cfToneIndex(float lambert)
+{
+  int tone = 0;
+  for (int i = 0; i < 7; ++i)
+    if (i < cfToneCount - 1 && lambert >= cfThresholds[i])
+      ++tone;
+  return clamp(tone, 0, max(0, cfToneCount - 1));
+}
+
+// algo::linearToSrgb: the encoding of the 8-bit files the offline renderer writes (the
+// framebuffer is not sRGB, so the shader encodes).
+float cfEncode(float l)
+{
+  return l > 0.0031308 ? 1.055 * pow(l, 1.0 / 2.4) - 0.055 : 12.92 * l;
+}
+)glsl";
+
+// Appended after VTK's own lighting code: overrides the fragment colour with render.cpp's.
+const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
+  {
+    vec3 cfP = cfPositionMC;
+    float cfLength = length(cfNormalMC);
+    vec3 cfN = cfLength > 0.0 ? cfNormalMC / cfLength : vec3(0.0);
+    // Seen from behind, a surface is lit from the viewer's side (render.cpp).
+    if (dot(cfN, cfEye - cfP) < 0.0)
+      cfN = -cfN;
+    vec3 cfL = cfLightDirection(cfP);
+    float cfLambert = dot(cfN, cfL) + cfOffset;
+    int cfStyleIndex = int(cfStyle + 0.5);
+    vec3 cfColor;
+    if (cfStyleIndex == 0) {
+      float cfIntensity = 0.15 + 0.85 * max(0.0, cfLambert);
+      cfColor = cfBase * cfIntensity;
+    } else if (cfStyleIndex == 1) {
+      float cfIntensity;
+      if (cfEvaluation == 1) {
+        cfIntensity = cfLutIntensity;
+      } else if (cfEvaluation == 2) {
+        // The face normal from the screen derivatives of the position: one value per triangle.
+        vec3 cfFace = normalize(cross(dFdx(cfP), dFdy(cfP)));
+        if (dot(cfFace, cfEye - cfP) < 0.0)
+          cfFace = -cfFace;
+        cfIntensity = cfToonIntensity(dot(cfFace, cfLightDirection(cfP)) + cfOffset);
+      } else {
+        cfIntensity = cfToonIntensity(cfLambert);
+      }
+      cfColor = cfBase * cfIntensity;
+    } else if (cfStyleIndex == 2) {
+      cfColor = cfGoochShade(cfBase, cfN, cfL);
+    } else {
+      // Comic: flat brightest tone, shadow tones as ink strokes; the pixel footprint as in
+      // render.cpp (2 * depth * tan(fov / 2) / height, or orthoHeight / height).
+      int cfTone = cfToneIndex(cfLambert);
+      float cfDepth = dot(cfP - cfEye, cfForward);
+      float cfFootprint = cfOrthographic != 0 ? cfPixelScale : cfDepth * cfPixelScale;
+      float cfInk = cfHatchCoverage(cfP, cfN, cfTone, cfToneCount, cfFootprint);
+      cfColor = cfBase * cfIntensities[max(0, cfToneCount - 1)] * (1.0 - cfInk) + cfLineColor * cfInk;
+    }
+    cfColor = clamp(cfColor, 0.0, 1.0);
+    gl_FragData[0] = vec4(cfEncode(cfColor.r), cfEncode(cfColor.g), cfEncode(cfColor.b), 1.0);
+  }
+)glsl";
+
+int styleIndex(algo::Style style)
+{
+    switch (style) {
+    case algo::Style::Lambert:
+        return 0;
+    case algo::Style::Toon:
+        return 1;
+    case algo::Style::Gooch:
+        return 2;
+    case algo::Style::Comic:
+        return 3;
+    }
+    return 1;
+}
+
+vtkSmartPointer<vtkFloatArray> namedArray(const char* name, int components)
+{
+    auto array = vtkSmartPointer<vtkFloatArray>::New();
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    return array;
+}
+
+/// What the shader needs of the look, kept so the uniforms can be set at every bind.
+struct Uniforms {
+    int toneCount = 2;
+    std::array<float, 7> thresholds{};
+    std::array<float, 8> intensities{};
+    std::array<float, 32> lut{};
+    float ka = 0, k1 = 0, k2 = 0, k3 = 0, k4 = 0;
+    std::array<float, 3> warm{}, cool{};
+    float hatchSpacing = 0, hatchAngle = 0, hatchWidth = 0;
+    std::array<float, 3> light{0.f, 0.f, 1.f};
+    int pointLight = 0;
+    int evaluation = 0;
+    std::array<float, 3> lineColor{};
+};
+
+} // namespace
+
+struct LookShading::Impl {
+    vtkActor* actor = nullptr;
+    vtkOpenGLPolyDataMapper* mapper = nullptr;
+    vtkPolyData* mesh = nullptr;
+    vtkRenderer* renderer = nullptr;
+    vtkNew<vtkCallbackCommand> bindObserver;
+    vtkSmartPointer<vtkFloatArray> offsets = namedArray(kOffsetArray, 1);
+    vtkSmartPointer<vtkFloatArray> lut = namedArray(kLutArray, 1);
+    vtkSmartPointer<vtkFloatArray> base = namedArray(kBaseArray, 3);
+    vtkSmartPointer<vtkFloatArray> style = namedArray(kStyleArray, 1);
+    Uniforms uniforms;
+    bool active = false;
+    // Clay settings restored when the look is turned off.
+    bool clayLighting = true;
+    double claySpecular = 0.0;
+    // Material index per vertex: that of the first face using it (cached per mesh).
+    const algo::TriMesh* materialMesh = nullptr;
+    std::vector<std::int32_t> vertexMaterial;
+
+    void setUniforms(vtkShaderProgram* program) const;
+    void attachArrays();
+};
+
+void LookShading::Impl::setUniforms(vtkShaderProgram* program) const
+{
+    if (!program || !active)
+        return;
+    const Uniforms& u = uniforms;
+    // Unused uniforms (optimised away for a style) are simply not found: no error.
+    program->SetUniformi("cfToneCount", u.toneCount);
+    program->SetUniform1fv("cfThresholds", 7, u.thresholds.data());
+    program->SetUniform1fv("cfIntensities", 8, u.intensities.data());
+    program->SetUniform1fv("cfLut", 32, u.lut.data());
+    program->SetUniformf("cfKa", u.ka);
+    program->SetUniformf("cfK1", u.k1);
+    program->SetUniformf("cfK2", u.k2);
+    program->SetUniformf("cfK3", u.k3);
+    program->SetUniformf("cfK4", u.k4);
+    program->SetUniform3f("cfWarm", u.warm.data());
+    program->SetUniform3f("cfCool", u.cool.data());
+    program->SetUniformf("cfHatchSpacing", u.hatchSpacing);
+    program->SetUniformf("cfHatchAngle", u.hatchAngle);
+    program->SetUniformf("cfHatchWidth", u.hatchWidth);
+    program->SetUniform3f("cfLightVector", u.light.data());
+    program->SetUniformi("cfPointLight", u.pointLight);
+    program->SetUniformi("cfEvaluation", u.evaluation);
+    program->SetUniform3f("cfLineColor", u.lineColor.data());
+
+    // The camera as it is for this very draw (stereo eyes move it between draws).
+    vtkCamera* camera = renderer ? renderer->GetActiveCamera() : nullptr;
+    if (!camera)
+        return;
+    double eye[3], focal[3];
+    camera->GetPosition(eye);
+    camera->GetFocalPoint(focal);
+    double forward[3] = {focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2]};
+    const double length = std::sqrt(forward[0] * forward[0] + forward[1] * forward[1] + forward[2] * forward[2]);
+    for (double& f : forward)
+        f = length > 0 ? f / length : 0.0;
+    program->SetUniform3f("cfEye", eye);
+    program->SetUniform3f("cfForward", forward);
+    const int* size = renderer->GetSize();
+    const double height = std::max(size[1], 1);
+    const bool ortho = camera->GetParallelProjection() != 0;
+    const double scale = ortho ? 2.0 * camera->GetParallelScale() / height
+                               : 2.0 * std::tan(camera->GetViewAngle() * kPi / 360.0) / height;
+    program->SetUniformf("cfPixelScale", float(scale));
+    program->SetUniformi("cfOrthographic", ortho ? 1 : 0);
+}
+
+void LookShading::Impl::attachArrays()
+{
+    // rebuildMesh() re-initialises the polydata, dropping its arrays: put ours back.
+    vtkPointData* pd = mesh->GetPointData();
+    for (vtkFloatArray* a : {offsets.Get(), lut.Get(), base.Get(), style.Get()})
+        if (pd->GetArray(a->GetName()) != a)
+            pd->AddArray(a);
+}
+
+LookShading::LookShading(vtkActor* actor, vtkPolyData* mesh, vtkRenderer* renderer)
+    : m(std::make_unique<Impl>())
+{
+    m->actor = actor;
+    m->mesh = mesh;
+    m->renderer = renderer;
+    m->mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
+    if (m->mapper) {
+        // vertexMC must be the document's coordinates: hatching and the light use them as such.
+        m->mapper->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+        m->bindObserver->SetClientData(m.get());
+        m->bindObserver->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+            static_cast<const Impl*>(clientData)->setUniforms(static_cast<vtkShaderProgram*>(callData));
+        });
+        m->mapper->AddObserver(vtkCommand::UpdateShaderEvent, m->bindObserver);
+    }
+}
+
+LookShading::~LookShading()
+{
+    if (m->mapper)
+        m->mapper->RemoveObserver(m->bindObserver);
+}
+
+bool LookShading::isActive() const
+{
+    return m->active;
+}
+
+void LookShading::setActive(bool active)
+{
+    if (active == m->active || !m->mapper)
+        return;
+    m->active = active;
+    auto* shaders = vtkOpenGLShaderProperty::SafeDownCast(m->actor->GetShaderProperty());
+    vtkProperty* property = m->actor->GetProperty();
+    if (!active) {
+        if (shaders)
+            shaders->ClearAllShaderReplacements();
+        m->mapper->RemoveAllVertexAttributeMappings();
+        property->SetLighting(m->clayLighting);
+        property->SetSpecular(m->claySpecular);
+        m->mapper->Modified();
+        return;
+    }
+    m->clayLighting = property->GetLighting();
+    m->claySpecular = property->GetSpecular();
+    // VTK's lights play no part: the shader computes the whole colour from the look.
+    property->LightingOff();
+    property->SetSpecular(0.0);
+    const int points = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    m->mapper->MapDataArrayToVertexAttribute("cfNormalAttr", "Normals", points, -1);
+    m->mapper->MapDataArrayToVertexAttribute("cfOffsetAttr", kOffsetArray, points, -1);
+    m->mapper->MapDataArrayToVertexAttribute("cfLutAttr", kLutArray, points, -1);
+    m->mapper->MapDataArrayToVertexAttribute("cfBaseAttr", kBaseArray, points, -1);
+    m->mapper->MapDataArrayToVertexAttribute("cfStyleAttr", kStyleArray, points, -1);
+    if (shaders) {
+        shaders->ClearAllShaderReplacements();
+        shaders->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
+        shaders->AddVertexShaderReplacement("//VTK::Normal::Impl", true, kVertexImpl, false);
+        const std::string declarations = std::string("//VTK::Light::Dec\n") + kCelformShadingGlsl + kFragmentDec;
+        shaders->AddFragmentShaderReplacement("//VTK::Light::Dec", true, declarations, false);
+        shaders->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kFragmentImpl, false);
+    }
+    m->mapper->Modified();
+}
+
+void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals)
+{
+    // The renderer's own resolution of the look (styles, colours and Gooch presets per material),
+    // so the two paths cannot disagree on what the document means.
+    const algo::RenderLook look = model::renderLookFor(data, data.look);
+    const algo::TriMesh* mesh = data.baseMesh.get();
+    const Eigen::Index count = shape.rows();
+    if (!mesh || !normals || mesh->vertexCount() != count)
+        return;
+
+    // Uniforms (paper 3, section 3.3 ramp; paper 1, section 3.2.4 Gooch; comic hatching).
+    Uniforms& u = m->uniforms;
+    u.toneCount = int(std::clamp<std::size_t>(look.toon.intensities.size(), 1, 8));
+    u.thresholds.fill(0.f);
+    u.intensities.fill(0.f);
+    for (std::size_t i = 0; i < look.toon.thresholds.size() && i < u.thresholds.size(); ++i)
+        u.thresholds[i] = look.toon.thresholds[i];
+    for (std::size_t i = 0; i < look.toon.intensities.size() && i < u.intensities.size(); ++i)
+        u.intensities[i] = look.toon.intensities[i];
+    u.lut = algo::toonLookupTable(look.toon);
+    // One set of Gooch coefficients: material 0's when the "auto" preset varies them per material
+    // (the shared cfGoochShade reads uniforms).
+    u.ka = look.gooch.ka;
+    u.k1 = look.gooch.k1;
+    u.k2 = look.gooch.k2;
+    u.k3 = look.gooch.k3;
+    u.k4 = look.gooch.k4;
+    u.warm = {look.gooch.warm.x(), look.gooch.warm.y(), look.gooch.warm.z()};
+    u.cool = {look.gooch.cool.x(), look.gooch.cool.y(), look.gooch.cool.z()};
+    u.hatchSpacing = look.hatch.spacing;
+    u.hatchAngle = float(look.hatch.angleDegrees * 0.0174532925);
+    u.hatchWidth = look.hatch.width;
+    const Eigen::Vector3f light = look.light;
+    u.light = {light.x(), light.y(), light.z()};
+    u.pointLight = look.pointLight ? 1 : 0;
+    u.evaluation = look.toonEvaluation == algo::ToonEvaluation::PerVertexLut ? 1
+        : look.toonEvaluation == algo::ToonEvaluation::PerFace               ? 2
+                                                                             : 0;
+    u.lineColor = {look.lineStyle.color.x(), look.lineStyle.color.y(), look.lineStyle.color.z()};
+
+    // Material per vertex, once per mesh: the first face using the vertex decides.
+    if (m->materialMesh != mesh || m->vertexMaterial.size() != std::size_t(count)) {
+        m->vertexMaterial.assign(std::size_t(count), -1);
+        for (Eigen::Index f = 0; f < mesh->faceCount(); ++f) {
+            const std::int32_t material = mesh->faceMaterials.empty() ? 0 : mesh->faceMaterials[std::size_t(f)];
+            for (int k = 0; k < 3; ++k) {
+                std::int32_t& slot = m->vertexMaterial[std::size_t(mesh->faces(f, k))];
+                if (slot < 0)
+                    slot = material;
+            }
+        }
+        for (std::int32_t& slot : m->vertexMaterial)
+            slot = std::max(slot, 0);
+        m->materialMesh = mesh;
+    }
+
+    // Base colour and style per vertex, from the vertex's material as render.cpp resolves it.
+    m->base->SetNumberOfTuples(count);
+    m->style->SetNumberOfTuples(count);
+    m->offsets->SetNumberOfTuples(count);
+    m->lut->SetNumberOfTuples(count);
+    float* base = m->base->GetPointer(0);
+    float* style = m->style->GetPointer(0);
+    float* offset = m->offsets->GetPointer(0);
+    float* lut = m->lut->GetPointer(0);
+    const bool perVertex = look.toonEvaluation == algo::ToonEvaluation::PerVertexLut;
+    for (Eigen::Index v = 0; v < count; ++v) {
+        const auto material = std::size_t(m->vertexMaterial[std::size_t(v)]);
+        const algo::Color c = material < look.materialColors.size() ? look.materialColors[material] : look.defaultColor;
+        base[3 * v + 0] = c.x();
+        base[3 * v + 1] = c.y();
+        base[3 * v + 2] = c.z();
+        style[v]
+            = float(styleIndex(material < look.materialStyles.size() ? look.materialStyles[material] : look.style));
+        offset[v] = std::size_t(v) < data.shadingOffsets.size() ? data.shadingOffsets[std::size_t(v)] : 0.f;
+        lut[v] = 0.f;
+        if (perVertex) {
+            // render.cpp: lookupIntensity(table, N.L + O_v) per vertex, interpolated.
+            const Eigen::Vector3f p = shape.row(v);
+            const Eigen::Vector3f n(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+            Eigen::Vector3f l = u.pointLight ? Eigen::Vector3f(light - p) : light;
+            const float ln = l.norm();
+            l = ln > 0.f ? Eigen::Vector3f(l / ln) : Eigen::Vector3f(0.f, 0.f, 1.f);
+            lut[v] = algo::lookupIntensity(u.lut, n.dot(l) + offset[v]);
+        }
+    }
+    for (vtkFloatArray* a : {m->base.Get(), m->style.Get(), m->offsets.Get(), m->lut.Get()})
+        a->Modified();
+    m->attachArrays();
+    m->mesh->Modified();
+}
+
+} // namespace celform::views

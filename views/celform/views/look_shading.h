@@ -1,0 +1,50 @@
+// The document's cartoon look on the viewport's mesh: VTK shader replacements that shade each
+// fragment as algo::renderFrame shades each pixel (same GLSL mirror of shading.cpp, light and
+// normals in model space), so the viewport shows what `celform render` writes.
+#pragma once
+
+#include "celform/algorithms/tri_mesh.h"
+#include "celform/model/project_data.h"
+
+#include <memory>
+
+class vtkActor;
+class vtkPolyData;
+class vtkRenderer;
+
+namespace celform::views {
+
+/// Configures one actor (its mapper must be a vtkOpenGLPolyDataMapper) for a model::Look.
+///
+/// Spaces: everything is shaded in model space, as the offline renderer does. The vertex shader
+/// passes the model-space position (vertexMC; the mapper's coordinate shift/scale is disabled so
+/// it is the document's coordinates) and the model-space vertex normal (the mesh's "Normals"
+/// array mapped as a custom attribute, not VTK's view-space normal); the light vector, the eye
+/// and the view axis are uniforms in model space (the actor has no transform).
+///
+/// Per-vertex attributes (point arrays added to the polydata): the shading offset O_v (paper 3,
+/// equation 4.3), the PerVertexLut intensity (lookupIntensity of N.L + O_v, computed here on the
+/// CPU exactly as render.cpp does), the base colour and the style of the vertex's material.
+/// Look uniforms are set from a cached copy each time VTK binds the program (UpdateShaderEvent),
+/// so a Look change costs no shader rebuild; only setActive() rebuilds the shaders.
+class LookShading {
+public:
+    LookShading(vtkActor* actor, vtkPolyData* mesh, vtkRenderer* renderer);
+    ~LookShading();
+    LookShading(const LookShading&) = delete;
+    LookShading& operator=(const LookShading&) = delete;
+
+    /// Refreshes the per-vertex arrays and the uniforms for the document and the displayed shape
+    /// (#V by 3, with its vertex normals, row-major #V by 3 floats).
+    void update(const model::ProjectData& data, const algo::Positions& shape, const float* normals);
+    /// On: the look's shader; off: VTK's own lighting (the viewport's clay look) as configured
+    /// before. Rebuilds the shaders only when the state changes.
+    void setActive(bool active);
+    [[nodiscard]] bool isActive() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m;
+};
+
+} // namespace celform::views
