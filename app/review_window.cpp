@@ -89,12 +89,18 @@ void ReviewWindow::showReview()
 algo::StereoOutput ReviewWindow::nextOutput(algo::StereoOutput output)
 {
     switch (output) {
-    case algo::StereoOutput::Anaglyph: return algo::StereoOutput::Dubois;
-    case algo::StereoOutput::Dubois: return algo::StereoOutput::HalfColor;
-    case algo::StereoOutput::HalfColor: return algo::StereoOutput::SideBySide;
-    case algo::StereoOutput::SideBySide: return algo::StereoOutput::TopBottom;
-    case algo::StereoOutput::TopBottom: return algo::StereoOutput::Off;
-    case algo::StereoOutput::Off: break;
+    case algo::StereoOutput::Anaglyph:
+        return algo::StereoOutput::Dubois;
+    case algo::StereoOutput::Dubois:
+        return algo::StereoOutput::HalfColor;
+    case algo::StereoOutput::HalfColor:
+        return algo::StereoOutput::SideBySide;
+    case algo::StereoOutput::SideBySide:
+        return algo::StereoOutput::TopBottom;
+    case algo::StereoOutput::TopBottom:
+        return algo::StereoOutput::Off;
+    case algo::StereoOutput::Off:
+        break;
     }
     return algo::StereoOutput::Anaglyph;
 }
@@ -102,12 +108,18 @@ algo::StereoOutput ReviewWindow::nextOutput(algo::StereoOutput output)
 QString ReviewWindow::outputName(algo::StereoOutput output)
 {
     switch (output) {
-    case algo::StereoOutput::Anaglyph: return tr("Anaglyph");
-    case algo::StereoOutput::Dubois: return tr("Dubois anaglyph");
-    case algo::StereoOutput::HalfColor: return tr("Half-colour anaglyph");
-    case algo::StereoOutput::SideBySide: return tr("Side by side");
-    case algo::StereoOutput::TopBottom: return tr("Top-bottom");
-    case algo::StereoOutput::Off: break;
+    case algo::StereoOutput::Anaglyph:
+        return tr("Anaglyph");
+    case algo::StereoOutput::Dubois:
+        return tr("Dubois anaglyph");
+    case algo::StereoOutput::HalfColor:
+        return tr("Half-colour anaglyph");
+    case algo::StereoOutput::SideBySide:
+        return tr("Side by side");
+    case algo::StereoOutput::TopBottom:
+        return tr("Top-bottom");
+    case algo::StereoOutput::Off:
+        break;
     }
     return tr("Mono");
 }
@@ -125,8 +137,8 @@ bool ReviewWindow::eventFilter(QObject* watched, QEvent* event)
             return QWidget::eventFilter(watched, event);
         if (event->type() == QEvent::ShortcutOverride) {
             // Claim the review's keys before any application shortcut sees them.
-            static const int keys[] = {Qt::Key_Escape, Qt::Key_Space, Qt::Key_Left, Qt::Key_Right, Qt::Key_S,
-                                       Qt::Key_L, Qt::Key_P, Qt::Key_BracketLeft, Qt::Key_BracketRight, Qt::Key_H};
+            static const int keys[] = {Qt::Key_Escape, Qt::Key_Space, Qt::Key_Left, Qt::Key_Right, Qt::Key_S, Qt::Key_L,
+                Qt::Key_P, Qt::Key_BracketLeft, Qt::Key_BracketRight, Qt::Key_H};
             for (int k : keys)
                 if (key->key() == k) {
                     event->accept();
@@ -241,8 +253,8 @@ void ReviewWindow::scaleInterocular(double factor)
 QString ReviewWindow::statusText() const
 {
     const auto& keys = m_document ? m_document->data().keys : std::vector<model::KeyViewpoint>{};
-    const QString key = m_keyIndex >= 0 && m_keyIndex < int(keys.size()) ? keys[std::size_t(m_keyIndex)].name
-                                                                          : tr("free camera");
+    const QString key
+        = m_keyIndex >= 0 && m_keyIndex < int(keys.size()) ? keys[std::size_t(m_keyIndex)].name : tr("free camera");
     QStringList parts;
     parts << outputName(m_viewport->stereo());
     parts << tr("Key: %1").arg(key);

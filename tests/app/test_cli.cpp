@@ -266,6 +266,80 @@ private slots:
         QCOMPARE(f.readAll(), before); // the project on disk is untouched
     }
 
+    void renderWithoutDisplay()
+    {
+        // A farm node: no DISPLAY, every style renders to a non-blank picture of the asked size.
+        const QString project = bunnyProject();
+        if (project.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        QImage previous;
+        for (const char* style : {"toon", "gooch", "comic", "lambert"}) {
+            const QString png = m_dir.filePath(QStringLiteral("bunny_%1.png").arg(QLatin1String(style)));
+            const Run r = runCelform({"render", project, "--style", style, "--size", "320x240", "--out", png});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const QImage image(png);
+            QCOMPARE(image.size(), QSize(320, 240));
+            const QRgb background = image.pixel(0, 0);
+            int covered = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    covered += image.pixel(x, y) != background;
+            QVERIFY2(covered > 320 * 240 / 20, style);
+            QVERIFY(image != previous);
+            previous = image;
+        }
+        // The same frame renders the same bytes.
+        const QString a = m_dir.filePath(QStringLiteral("a.png")), b = m_dir.filePath(QStringLiteral("b.png"));
+        QCOMPARE(runCelform({"render", project, "--size", "200x150", "--out", a}).exitCode, 0);
+        QCOMPARE(runCelform({"render", project, "--size", "200x150", "--out", b}).exitCode, 0);
+        QFile fa(a), fb(b);
+        QVERIFY(fa.open(QIODevice::ReadOnly) && fb.open(QIODevice::ReadOnly));
+        QCOMPARE(fa.readAll(), fb.readAll());
+    }
+
+    void renderPassesStereoAndSequences()
+    {
+        const QString project = bunnyProject();
+        if (project.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString exr = m_dir.filePath(QStringLiteral("all.exr"));
+        Run r = runCelform({"render", project, "--size", "160x120", "--out", exr});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFileInfo(exr).size() > 0);
+        for (const char* pass : {"beauty", "lines", "tone", "highlights", "depth", "normal", "id"}) {
+            const QString png = m_dir.filePath(QStringLiteral("pass_%1.png").arg(QLatin1String(pass)));
+            r = runCelform({"render", project, "--size", "160x120", "--pass", pass, "--out", png});
+            QVERIFY2(r.exitCode == 0 && !QImage(png).isNull(), pass);
+        }
+        const QString anaglyph = m_dir.filePath(QStringLiteral("anaglyph.png"));
+        QCOMPARE(
+            runCelform({"render", project, "--size", "160x120", "--stereo", "anaglyph", "--out", anaglyph}).exitCode,
+            0);
+        const QString sbs = m_dir.filePath(QStringLiteral("sbs.png"));
+        QCOMPARE(runCelform({"render", project, "--size", "160x120", "--stereo", "sbs", "--out", sbs}).exitCode, 0);
+        QCOMPARE(QImage(sbs).size(), QSize(320, 120));
+        const QString pattern = m_dir.filePath(QStringLiteral("seq_####.png"));
+        QCOMPARE(runCelform({"render", project, "--size", "80x60", "--frames", "3-5", "--out", pattern}).exitCode, 0);
+        for (const char* frame : {"seq_0003.png", "seq_0004.png", "seq_0005.png"})
+            QVERIFY(QFileInfo::exists(m_dir.filePath(QLatin1String(frame))));
+        // Light override changes the picture; usage errors render nothing.
+        const QString lit = m_dir.filePath(QStringLiteral("lit.png")),
+                      plain = m_dir.filePath(QStringLiteral("plain.png"));
+        QCOMPARE(runCelform({"render", project, "--size", "120x90", "--out", plain}).exitCode, 0);
+        QCOMPARE(
+            runCelform({"render", project, "--size", "120x90", "--light", "directional:-1,0,0", "--out", lit}).exitCode,
+            0);
+        QVERIFY(QImage(lit) != QImage(plain));
+        for (const QStringList& bad : {QStringList{"--style", "watercolour"}, QStringList{"--size", "12"},
+                 QStringList{"--stereo", "3d"}, QStringList{"--pass", "glow"}, QStringList{"--lines", "maybe"},
+                 QStringList{"--out", "x.gif"}, QStringList{"--light", "spot:1,2,3"}, QStringList{"--frames", "5-3"}}) {
+            QStringList args{"render", project};
+            args << bad;
+            QCOMPARE(runCelform(args).exitCode, 2);
+        }
+        QCOMPARE(runCelform({"render", m_dir.filePath(QStringLiteral("missing.celform"))}).exitCode, 3);
+    }
+
     void infoOnTruncatedProject()
     {
         const QString good = bunnyProject();

@@ -28,8 +28,8 @@ namespace {
 std::shared_ptr<algo::TriMesh> ball()
 {
     std::vector<Eigen::Vector3f> v = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    std::vector<std::array<int, 3>> f = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                                         {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    std::vector<std::array<int, 3>> f
+        = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
     for (int s = 0; s < 4; ++s) {
         std::vector<std::array<int, 3>> next;
         std::map<std::pair<int, int>, int> mid;
@@ -99,9 +99,9 @@ private slots:
         QCOMPARE(vp->stereo(), algo::StereoOutput::Anaglyph);
 
         // S cycles the outputs and comes back to anaglyph.
-        const algo::StereoOutput expected[] = {algo::StereoOutput::Dubois, algo::StereoOutput::HalfColor,
-                                               algo::StereoOutput::SideBySide, algo::StereoOutput::TopBottom,
-                                               algo::StereoOutput::Off, algo::StereoOutput::Anaglyph};
+        const algo::StereoOutput expected[]
+            = {algo::StereoOutput::Dubois, algo::StereoOutput::HalfColor, algo::StereoOutput::SideBySide,
+                algo::StereoOutput::TopBottom, algo::StereoOutput::Off, algo::StereoOutput::Anaglyph};
         for (algo::StereoOutput output : expected) {
             press(vp, Qt::Key_S);
             QCOMPARE(vp->stereo(), output);
@@ -130,7 +130,7 @@ private slots:
         press(vp, Qt::Key_H);
         QVERIFY(review.isHelpShown());
         test::waitForRender(vp);
-        QImage shot = review.grab().toImage();
+        QImage shot = review.screen()->grabWindow(0).toImage();
         shot.save(QStringLiteral("/tmp/review_help.png"));
         press(vp, Qt::Key_H);
         QVERIFY(!review.isHelpShown());
@@ -159,11 +159,19 @@ private slots:
 
         test::waitForRender(vp);
         QTest::qWait(600); // one status refresh with a measured frame rate
-        shot = review.grab().toImage();
+        // What the screen shows (QWidget::grab() re-renders the GL child without the composition).
+        shot = review.screen()->grabWindow(0).toImage();
         shot.save(QStringLiteral("/tmp/review.png"));
-        vp->renderedImage().save(QStringLiteral("/tmp/review_viewport.png"));
-        review.screen()->grabWindow(0).save(QStringLiteral("/tmp/review_screen.png"));
         QVERIFY(!shot.isNull());
+        // The composition is on screen: red and green disagree along the model's edges.
+        const QImage composed = vp->renderedImage().convertToFormat(QImage::Format_RGB32);
+        int fringes = 0;
+        for (int y = 0; y < composed.height(); y += 4)
+            for (int x = 0; x < composed.width(); x += 4) {
+                const QRgb p = composed.pixel(x, y);
+                fringes += std::abs(qRed(p) - qGreen(p)) > 40 ? 1 : 0;
+            }
+        QVERIFY(fringes > 20);
 
         press(vp, Qt::Key_Escape);
         QVERIFY(QTest::qWaitFor([&] { return !review.isVisible(); }, 2000));

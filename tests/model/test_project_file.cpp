@@ -77,6 +77,23 @@ ProjectData richProject()
     data.look.style = ShadingStyle::Comic;
     data.look.light = {LightType::Point, Eigen::Vector3d(1.5, -2, 3)};
     data.look.showLines = false;
+    data.look.materialStyles[1] = ShadingStyle::Gooch;
+    data.look.toon.thresholds = {0.1f, 0.6f};
+    data.look.toon.intensities = {0.2f, 0.5f, 0.9f};
+    data.look.toonEvaluation = algo::ToonEvaluation::PerFace;
+    data.look.gooch = algo::goochPreset("purple");
+    data.look.gooch.warm = algo::Color(0.9f, 0.5f, 0.2f);
+    data.look.hatch.spacing = 0.0123f;
+    data.look.hatch.angleDegrees = -30.f;
+    data.look.lines.creaseAngleDegrees = 33.f;
+    data.look.lines.borders = false;
+    data.look.lineStyle.jitter = 1.25f;
+    data.look.lineStyle.seed = 77;
+    data.look.stereo.output = algo::StereoOutput::Dubois;
+    data.look.stereo.interocular = 0.07;
+    data.look.stereo.toeIn = true;
+    data.look.stereo.dubois.left(1, 2) = 0.5f;
+    data.shadingOffsets = {0.f, 0.1f, -0.2f, 0.3f, 0.f};
     data.nextId = 3;
     return data;
 }

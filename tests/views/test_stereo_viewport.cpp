@@ -27,7 +27,7 @@ namespace {
 
 /// A UV sphere of radius r at c (closed, consistent outward winding).
 void appendSphere(std::vector<Eigen::Vector3f>& v, std::vector<std::array<int, 3>>& f, const Eigen::Vector3f& c,
-                  float r, int rings = 24, int segments = 48)
+    float r, int rings = 24, int segments = 48)
 {
     const int base = int(v.size());
     const double pi = 3.14159265358979323846;
@@ -36,8 +36,10 @@ void appendSphere(std::vector<Eigen::Vector3f>& v, std::vector<std::array<int, 3
         const double theta = pi * i / rings;
         for (int j = 0; j < segments; ++j) {
             const double phi = 2.0 * pi * j / segments;
-            v.push_back(c + r * Eigen::Vector3f(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
-                                                float(-std::sin(theta) * std::sin(phi))));
+            v.push_back(c
+                + r
+                    * Eigen::Vector3f(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
+                        float(-std::sin(theta) * std::sin(phi))));
         }
     }
     v.push_back(c + Eigen::Vector3f(0, -r, 0));
@@ -141,7 +143,7 @@ private slots:
         // the left) and a small one in front (on the right). The camera looks down -Z from z = 5.
         std::vector<Eigen::Vector3f> v;
         std::vector<std::array<int, 3>> f;
-        appendSphere(v, f, Eigen::Vector3f(0.f, 0.f, -2.f), 0.8f);   // depth 7
+        appendSphere(v, f, Eigen::Vector3f(0.f, 0.f, -2.f), 0.8f); // depth 7
         appendSphere(v, f, Eigen::Vector3f(-0.9f, 0.5f, 0.f), 0.12f); // depth 5 = convergence
         appendSphere(v, f, Eigen::Vector3f(0.7f, -0.5f, 2.f), 0.15f); // depth 3: in front
         m_doc = std::make_unique<Document>();
@@ -186,9 +188,9 @@ private slots:
         QVERIFY2(maxChannelDifference(composed, right, 1) <= 2, "green is the right eye's");
         QVERIFY2(maxChannelDifference(composed, right, 2) <= 2, "blue is the right eye's");
         // The CPU composition of the two eye images gives the same picture.
-        const QImage cpu = celform::views::toSrgb(celform::algo::composeAnaglyph(
-            celform::views::toLinear(left.convertToFormat(QImage::Format_RGBA8888)),
-            celform::views::toLinear(right.convertToFormat(QImage::Format_RGBA8888))));
+        const QImage cpu = celform::views::toSrgb(
+            celform::algo::composeAnaglyph(celform::views::toLinear(left.convertToFormat(QImage::Format_RGBA8888)),
+                celform::views::toLinear(right.convertToFormat(QImage::Format_RGBA8888))));
         for (int c = 0; c < 3; ++c)
             QVERIFY(maxChannelDifference(composed, cpu, c) <= 2);
         m_view->setStereo(StereoOutput::Off);
@@ -211,8 +213,8 @@ private slots:
         const auto nearRed = darkCentroid(image, 0, 15, lowerRight), nearCyan = darkCentroid(image, 1, 15, lowerRight);
         QVERIFY(zeroRed && zeroCyan && nearRed && nearCyan);
         qInfo("convergence sphere: red (%.2f, %.2f) cyan (%.2f, %.2f); near sphere: red (%.2f, %.2f) cyan (%.2f, %.2f)",
-              zeroRed->x(), zeroRed->y(), zeroCyan->x(), zeroCyan->y(), nearRed->x(), nearRed->y(), nearCyan->x(),
-              nearCyan->y());
+            zeroRed->x(), zeroRed->y(), zeroCyan->x(), zeroCyan->y(), nearRed->x(), nearRed->y(), nearCyan->x(),
+            nearCyan->y());
         QVERIFY2(std::abs(zeroRed->x() - zeroCyan->x()) < 1.0, "zero disparity at the convergence distance");
         QVERIFY(std::abs(zeroRed->y() - zeroCyan->y()) < 1.0);
         // algo::stereoPair: x_right - x_left = 2 f b (1/C - 1/D) < 0 in front: crossed, the left
@@ -271,7 +273,7 @@ private slots:
             for (int x = 0; x < w; ++x)
                 offInk += isInk(without.constScanLine(y) + 4 * x) ? 1 : 0;
         qInfo("silhouette ink %d / %d, interior ink %d, ink with lines off %d", silhouetteInk, silhouetteSamples,
-              interiorInk, offInk);
+            interiorInk, offInk);
         QVERIFY(silhouetteInk > silhouetteSamples * 9 / 10);
         QCOMPARE(interiorInk, 0);
         QCOMPARE(offInk, 0);
@@ -334,7 +336,7 @@ private slots:
                 lineTotal += view.lastLineMilliseconds();
             }
             qInfo("armadillo 800x600, lines %s, stereo %d: %.1f ms per frame (lines %.1f ms)", lines ? "on" : "off",
-                  int(output), total / frames, lineTotal / frames);
+                int(output), total / frames, lineTotal / frames);
         };
         measure(false, StereoOutput::Off);
         measure(true, StereoOutput::Off);

@@ -50,7 +50,7 @@ std::uint8_t encode(float linear)
 } // namespace
 
 std::vector<float> viewDepthFromWindowDepth(const std::vector<float>& windowDepth, int width, int height,
-                                            double nearDistance, double farDistance, bool orthographic)
+    double nearDistance, double farDistance, bool orthographic)
 {
     const std::size_t pixels = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
     std::vector<float> out(pixels, std::numeric_limits<float>::infinity());
@@ -86,7 +86,7 @@ void LineOverlay::clear()
 }
 
 void LineOverlay::update(const algo::Positions& shape, const algo::TriMesh& mesh, const algo::LineView& view,
-                         const algo::LineSettings& settings)
+    const algo::LineSettings& settings)
 {
     // Compared by value (a few hundred microseconds at most): a new mesh may reuse the address.
     if (m_faces.rows() != mesh.faces.rows() || m_faces != mesh.faces || m_topology.edges.rows() == 0) {
@@ -94,8 +94,8 @@ void LineOverlay::update(const algo::Positions& shape, const algo::TriMesh& mesh
         m_faces = mesh.faces;
         m_valid = false;
     }
-    const bool sameView = view.eye == m_view.eye && view.direction == m_view.direction
-        && view.orthographic == m_view.orthographic;
+    const bool sameView
+        = view.eye == m_view.eye && view.direction == m_view.direction && view.orthographic == m_view.orthographic;
     const bool sameShape = shape.rows() == m_shape.rows() && shape == m_shape;
     if (m_valid && sameView && sameShape && settings == m_settings)
         return;
@@ -110,7 +110,7 @@ void LineOverlay::update(const algo::Positions& shape, const algo::TriMesh& mesh
 }
 
 QRect LineOverlay::draw(const algo::Positions& shape, const algo::LineStyle& style, const algo::RasterCamera& camera,
-                        const std::vector<float>& depth, std::vector<float>& coverage) const
+    const std::vector<float>& depth, std::vector<float>& coverage) const
 {
     const int w = camera.width, h = camera.height;
     coverage.assign(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)), 0.f);
@@ -143,12 +143,12 @@ QRect LineOverlay::draw(const algo::Positions& shape, const algo::LineStyle& sty
     if (!(x0 <= x1) || !(y0 <= y1))
         return {};
     const QRect box(QPoint(int(std::floor(std::max(x0, 0.f))), int(std::floor(std::max(y0, 0.f)))),
-                    QPoint(int(std::ceil(std::min(x1, float(w - 1)))), int(std::ceil(std::min(y1, float(h - 1))))));
+        QPoint(int(std::ceil(std::min(x1, float(w - 1)))), int(std::ceil(std::min(y1, float(h - 1))))));
     return box.intersected(QRect(0, 0, w, h));
 }
 
 void blendLines(QImage& image, const QPoint& origin, const std::vector<float>& coverage, int coverageWidth,
-                const Eigen::Vector3f& lineColor)
+    const Eigen::Vector3f& lineColor)
 {
     if (image.format() != QImage::Format_RGBA8888)
         image = image.convertToFormat(QImage::Format_RGBA8888);
@@ -173,7 +173,8 @@ void blendLines(QImage& image, const QPoint& origin, const std::vector<float>& c
 
 algo::ImageRGBA toLinear(const QImage& source)
 {
-    const QImage image = source.format() == QImage::Format_RGBA8888 ? source : source.convertToFormat(QImage::Format_RGBA8888);
+    const QImage image
+        = source.format() == QImage::Format_RGBA8888 ? source : source.convertToFormat(QImage::Format_RGBA8888);
     algo::ImageRGBA out(image.width(), image.height());
     const auto& decode = decodeTable();
     for (int y = 0; y < image.height(); ++y) {
@@ -204,15 +205,21 @@ QImage toSrgb(const algo::ImageRGBA& image)
 }
 
 algo::ImageRGBA composeStereo(algo::StereoOutput output, const algo::ImageRGBA& left, const algo::ImageRGBA& right,
-                              const algo::DuboisMatrices& dubois)
+    const algo::DuboisMatrices& dubois)
 {
     switch (output) {
-    case algo::StereoOutput::Anaglyph: return algo::composeAnaglyph(left, right);
-    case algo::StereoOutput::Dubois: return algo::composeDubois(left, right, dubois);
-    case algo::StereoOutput::HalfColor: return algo::composeHalfColor(left, right);
-    case algo::StereoOutput::SideBySide: return algo::composeSideBySide(left, right);
-    case algo::StereoOutput::TopBottom: return algo::composeTopBottom(left, right);
-    case algo::StereoOutput::Off: break;
+    case algo::StereoOutput::Anaglyph:
+        return algo::composeAnaglyph(left, right);
+    case algo::StereoOutput::Dubois:
+        return algo::composeDubois(left, right, dubois);
+    case algo::StereoOutput::HalfColor:
+        return algo::composeHalfColor(left, right);
+    case algo::StereoOutput::SideBySide:
+        return algo::composeSideBySide(left, right);
+    case algo::StereoOutput::TopBottom:
+        return algo::composeTopBottom(left, right);
+    case algo::StereoOutput::Off:
+        break;
     }
     return left;
 }

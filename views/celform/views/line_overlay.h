@@ -26,7 +26,7 @@ struct GlFrame {
 /// GL window depth (in [0, 1], rows bottom-up as glReadPixels gives them) to view-axis distances
 /// (rows top-down), for a VTK camera with the given clipping range. 1.0 (cleared) is +infinity.
 std::vector<float> viewDepthFromWindowDepth(const std::vector<float>& windowDepth, int width, int height,
-                                            double nearDistance, double farDistance, bool orthographic);
+    double nearDistance, double farDistance, bool orthographic);
 
 /// Strokes of the displayed shape, cached: the edge topology once per face set, the feature
 /// edges and chains again only when the shape, the line view or the settings change.
@@ -35,12 +35,12 @@ public:
     /// Extracts the feature strokes of shape seen from view (the centre eye in stereo, paper 3,
     /// section 4.2.2). Cheap when nothing changed since the last call.
     void update(const algo::Positions& shape, const algo::TriMesh& mesh, const algo::LineView& view,
-                const algo::LineSettings& settings);
+        const algo::LineSettings& settings);
     /// The strokes projected with camera and styled (pixels), drawn anti-aliased into coverage
     /// (camera.width x camera.height), hidden where depth (view-axis, top-down) is nearer.
     /// Returns the bounding box of the covered pixels (empty when no line is visible).
     QRect draw(const algo::Positions& shape, const algo::LineStyle& style, const algo::RasterCamera& camera,
-               const std::vector<float>& depth, std::vector<float>& coverage) const;
+        const std::vector<float>& depth, std::vector<float>& coverage) const;
 
     [[nodiscard]] std::size_t strokeCount() const { return m_strokes.size(); }
     /// Drops every cache (a new mesh).
@@ -60,7 +60,7 @@ private:
 /// pixel is coverage pixel origin, in linear light as the offline renderer does:
 /// colour * (1 - a) + line * a.
 void blendLines(QImage& image, const QPoint& origin, const std::vector<float>& coverage, int coverageWidth,
-                const Eigen::Vector3f& lineColor);
+    const Eigen::Vector3f& lineColor);
 
 /// 8-bit sRGB image to linear float and back (table-driven, exact round trip for 8-bit values).
 algo::ImageRGBA toLinear(const QImage& image);
@@ -68,6 +68,6 @@ QImage toSrgb(const algo::ImageRGBA& image);
 
 /// The stereo composition of two eye images (linear light) for an output; Off returns left.
 algo::ImageRGBA composeStereo(algo::StereoOutput output, const algo::ImageRGBA& left, const algo::ImageRGBA& right,
-                              const algo::DuboisMatrices& dubois);
+    const algo::DuboisMatrices& dubois);
 
 } // namespace celform::views

@@ -1,0 +1,209 @@
+// The offline renderer on scenes computed by hand: tone counts and boundaries on a sphere (paper 3,
+// section 3.3), the Gooch formula per pixel (paper 1, section 3.2.4), the shading offset
+// (paper 3, equation 4.3), passes and determinism.
+#include "test_support.h"
+
+#include "celform/algorithms/render.h"
+
+#include <set>
+
+using namespace celform::algo;
+
+namespace {
+
+/// A UV sphere of radius 1 at the origin with outward counter-clockwise faces.
+TriMesh sphere(int stacks = 48, int slices = 96)
+{
+    TriMesh m;
+    m.vertices.resize((stacks + 1) * slices, 3);
+    for (int i = 0; i <= stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const double t = M_PI * i / stacks, p = 2 * M_PI * j / slices;
+            m.vertices.row(i * slices + j) << float(std::sin(t) * std::cos(p)), float(std::cos(t)),
+                float(std::sin(t) * std::sin(p));
+        }
+    std::vector<std::array<int, 3>> f;
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const int a = i * slices + j, b = i * slices + (j + 1) % slices, c = a + slices, d = b + slices;
+            if (i > 0)
+                f.push_back({a, b, c});
+            if (i < stacks - 1)
+                f.push_back({b, d, c});
+        }
+    m.faces.resize(Eigen::Index(f.size()), 3);
+    for (size_t k = 0; k < f.size(); ++k)
+        m.faces.row(Eigen::Index(k)) << f[k][0], f[k][1], f[k][2];
+    return m;
+}
+
+RasterCamera frontCamera(int size = 200)
+{
+    RasterCamera c;
+    c.eye = Eigen::Vector3d(0, 0, 6);
+    c.target = Eigen::Vector3d::Zero();
+    c.orthographic = true;
+    c.orthoHeight = 2.4;
+    c.width = c.height = size;
+    return c;
+}
+
+RenderLook plainLook(Style style)
+{
+    RenderLook look;
+    look.style = style;
+    look.lines = false;
+    look.light = Eigen::Vector3f(0, 0, 1); // from the camera's side: N.L = n.z on the sphere
+    look.defaultColor = Color(0.8f, 0.6f, 0.4f);
+    return look;
+}
+
+} // namespace
+
+class TestRender : public QObject {
+    Q_OBJECT
+private slots:
+    void toonHasExactlyItsTones_data()
+    {
+        QTest::addColumn<int>("tones");
+        QTest::newRow("2 tones") << 2;
+        QTest::newRow("3 tones") << 3;
+        QTest::newRow("5 tones") << 5;
+    }
+    void toonHasExactlyItsTones()
+    {
+        QFETCH(int, tones);
+        const TriMesh mesh = sphere();
+        RenderLook look = plainLook(Style::Toon);
+        look.toon.thresholds.clear();
+        look.toon.intensities.clear();
+        for (int i = 0; i < tones; ++i) {
+            look.toon.intensities.push_back(0.2f + 0.7f * float(i) / float(tones - 1));
+            if (i > 0)
+                look.toon.thresholds.push_back(float(i) / float(tones));
+        }
+        RenderCache cache;
+        RenderPasses out;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, out);
+        std::set<std::array<float, 3>> colours;
+        for (int y = 0; y < out.beauty.height; ++y)
+            for (int x = 0; x < out.beauty.width; ++x)
+                if (out.id[size_t(y * out.beauty.width + x)] >= 0) {
+                    const float* p = out.beauty.at(x, y);
+                    colours.insert({p[0], p[1], p[2]});
+                }
+        // No anti-aliasing inside the model: one colour per tone, no more, no less.
+        QCOMPARE(int(colours.size()), tones);
+    }
+
+    void toneBoundaryWhereLambertCrossesThreshold()
+    {
+        // Default ramp: t = 0.5. Seen from +Z with the light at +Z, N.L = n.z = sqrt(1 - r^2) on the
+        // unit sphere; the boundary is the circle r = sqrt(1 - 0.25) = 0.866.
+        const TriMesh mesh = sphere(96, 192);
+        RenderLook look = plainLook(Style::Toon);
+        RenderCache cache;
+        RenderPasses out;
+        const RasterCamera camera = frontCamera(400);
+        renderFrame(mesh.vertices, mesh, camera, look, cache, out);
+        const int y = 200;
+        double boundary = -1;
+        for (int x = 200; x < 400; ++x) {
+            if (out.tone[size_t(y * 400 + x)] < 0.5f && out.id[size_t(y * 400 + x)] >= 0) {
+                boundary = (x + 0.5 - 200) * camera.orthoHeight / 400;
+                break;
+            }
+        }
+        QVERIFY(boundary > 0);
+        QVERIFY2(std::abs(boundary - std::sqrt(0.75)) < 0.02, qPrintable(QString::number(boundary)));
+    }
+
+    void shadingOffsetMovesTheBoundary()
+    {
+        const TriMesh mesh = sphere();
+        RenderLook look = plainLook(Style::Toon);
+        RenderCache cache;
+        RenderPasses plain, offset;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, plain);
+        const std::vector<float> offsets(size_t(mesh.vertexCount()), 0.3f); // paper 3, eq. 4.3
+        look.shadingOffsets = &offsets;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, offset);
+        auto bright = [](const RenderPasses& p) { return std::count(p.tone.begin(), p.tone.end(), 0.75f); };
+        QVERIFY(bright(offset) > bright(plain));
+    }
+
+    void goochPixelMatchesTheFormula()
+    {
+        // At the sphere's centre n = (0,0,1) = l1: C = ka*Cb + (Cw - Cb*k1)*k2 (the cool term is 0).
+        const TriMesh mesh = sphere();
+        RenderLook look = plainLook(Style::Gooch);
+        look.gooch.ka = 0.9f;
+        look.gooch.k1 = look.gooch.k2 = look.gooch.k3 = look.gooch.k4 = 1.f;
+        look.gooch.warm = Color(0.6f, 0.4f, 0.1f);
+        RenderCache cache;
+        RenderPasses out;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, out);
+        const float* p = out.beauty.at(100, 100);
+        const Color cb = look.defaultColor;
+        const Color expected = (0.9f * cb + (look.gooch.warm - cb)).cwiseMax(0.f).cwiseMin(1.f);
+        for (int c = 0; c < 3; ++c)
+            QVERIFY2(std::abs(p[c] - expected[c]) < 0.01f,
+                qPrintable(QStringLiteral("%1 vs %2").arg(p[c]).arg(expected[c])));
+    }
+
+    void perFaceAndPerVertexDiffer()
+    {
+        const TriMesh mesh = sphere(12, 24);
+        RenderLook look = plainLook(Style::Toon);
+        RenderCache cache;
+        RenderPasses pixel, face, vertex;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, pixel);
+        look.toonEvaluation = ToonEvaluation::PerFace;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, face);
+        look.toonEvaluation = ToonEvaluation::PerVertexLut;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, vertex);
+        QVERIFY(pixel.beauty.pixels != face.beauty.pixels);
+        QVERIFY(pixel.beauty.pixels != vertex.beauty.pixels);
+        // Per vertex interpolates the table values: intermediate intensities appear.
+        std::set<float> intensities(vertex.tone.begin(), vertex.tone.end());
+        QVERIFY(intensities.size() > 3);
+    }
+
+    void linesOutlineTheSphere()
+    {
+        const TriMesh mesh = sphere();
+        RenderLook look = plainLook(Style::Toon);
+        look.lines = true;
+        RenderCache cache;
+        RenderPasses out;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, out);
+        // Lines on the rim (r ~ 1 => ~83 px from the centre), none in the middle.
+        QVERIFY(out.lines[size_t(100 * 200 + 100)] == 0.f);
+        float rim = 0.f;
+        for (int x = 170; x < 200; ++x)
+            rim = std::max(rim, out.lines[size_t(100 * 200 + x)]);
+        QVERIFY(rim > 0.9f);
+    }
+
+    void passesAndDeterminism()
+    {
+        const TriMesh mesh = sphere();
+        RenderLook look = plainLook(Style::Comic);
+        look.lines = true;
+        RenderCache cache;
+        RenderPasses a, b;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, a);
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, b);
+        QVERIFY(a.beauty.pixels == b.beauty.pixels);
+        QCOMPARE(a.tone.size(), size_t(200 * 200));
+        QCOMPARE(a.highlights.size(), size_t(200 * 200));
+        QVERIFY(std::all_of(a.highlights.begin(), a.highlights.end(), [](float v) { return v == 0.f; }));
+        QVERIFY(std::isinf(a.depth[0]));
+        QVERIFY(std::abs(a.depth[size_t(100 * 200 + 100)] - 5.f) < 0.01f); // eye at z=6, sphere front at z=1
+        QVERIFY(a.normal[size_t(100 * 200 + 100)].isApprox(Eigen::Vector3f(0, 0, 1), 0.02f));
+        QCOMPARE(a.id[0], -1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRender)
+#include "test_render.moc"

@@ -1,0 +1,71 @@
+// Offline render speed: the dragon (871k triangles) at 1920x1080, toon shading with lines, the
+// whole frame (normals, G-buffer, line extraction and drawing, shading). Goal: under 0.5 s here.
+#include "celform/algorithms/render.h"
+#include "celform/model/mesh_io.h"
+
+#include <benchmark/benchmark.h>
+
+#include <QDir>
+#include <QFileInfo>
+
+namespace {
+
+using namespace celform;
+
+const algo::TriMesh* dragon()
+{
+    static std::unique_ptr<algo::TriMesh> mesh = [] {
+        const QString path
+            = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/stanford_dragon.ply"));
+        return QFileInfo::exists(path) ? std::make_unique<algo::TriMesh>(model::importMesh(path).mesh) : nullptr;
+    }();
+    return mesh.get();
+}
+
+void renderDragon(benchmark::State& state, bool lines)
+{
+    const algo::TriMesh* mesh = dragon();
+    if (!mesh) {
+        state.SkipWithError("shared test data not found (../shared/data)");
+        return;
+    }
+    algo::RasterCamera camera;
+    const Eigen::Vector3d centre = algo::centroid(mesh->vertices);
+    const double size = algo::boundingBox(mesh->vertices).diagonal().norm();
+    camera.target = centre;
+    camera.eye = centre + 1.9 * size * Eigen::Vector3d(0.3, 0.2, 1.0).normalized();
+    camera.width = 1920;
+    camera.height = 1080;
+    algo::RenderLook look;
+    look.style = algo::Style::Toon;
+    look.lines = lines;
+    algo::RenderCache cache; // topology is built once, as in a sequence
+    algo::RenderPasses out;
+    for (auto _ : state) {
+        algo::renderFrame(mesh->vertices, *mesh, camera, look, cache, out);
+        benchmark::DoNotOptimize(out.beauty.pixels.data());
+    }
+}
+
+void BM_RenderDragon1080pToonLines(benchmark::State& state)
+{
+    renderDragon(state, true);
+}
+void BM_RenderDragon1080pToon(benchmark::State& state)
+{
+    renderDragon(state, false);
+}
+
+} // namespace
+
+BENCHMARK(BM_RenderDragon1080pToonLines)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_RenderDragon1080pToon)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK_MAIN();
