@@ -29,6 +29,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPainter>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
@@ -195,7 +196,8 @@ void MainWindow::createDocks()
 
     m_look = new views::LookPanel(m_document, this);
     makeDock(tr("Look"), QStringLiteral("lookDock"), m_look, Qt::RightDockWidgetArea);
-    tabifyDockWidget(findChild<QDockWidget*>(QStringLiteral("propertiesDock")), findChild<QDockWidget*>(QStringLiteral("lookDock")));
+    tabifyDockWidget(
+        findChild<QDockWidget*>(QStringLiteral("propertiesDock")), findChild<QDockWidget*>(QStringLiteral("lookDock")));
     findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
 
     // Paper 1, figure 4: the key directions on the viewing sphere and the facet of this view.
@@ -710,8 +712,20 @@ bool MainWindow::saveScreenshot(const QString& path)
     timer.start();
     while (m_viewport->renderCount() == 0 && timer.elapsed() < 10000)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    // A second frame once the layout has settled (docks resize the viewport after the first).
+    const int first = m_viewport->renderCount();
+    m_viewport->update();
+    while (m_viewport->renderCount() == first && timer.elapsed() < 10000)
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
     QCoreApplication::processEvents();
-    const QPixmap shot = grab();
+    QPixmap shot = grab();
+    // QWidget::grab() re-renders GL children mono and without their painter overlays: paste
+    // what the viewport really shows (lines, stereo) over its place.
+    {
+        QPainter painter(&shot);
+        const QImage viewport = m_viewport->renderedImage();
+        painter.drawImage(QRect(m_viewport->mapTo(this, QPoint(0, 0)), m_viewport->size()), viewport);
+    }
     if (shot.isNull() || !shot.save(path, "PNG")) {
         qWarning("celform: %s: the screenshot could not be written", qPrintable(path));
         return false;
