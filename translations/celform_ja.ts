@@ -7,6 +7,32 @@
         <source>has no key named “%1”</source>
         <translation>「%1」という名前のキーがありません</translation>
     </message>
+    <message>
+        <source>--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”</source>
+        <translation type="unfinished">--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>a directional light needs a non-zero direction</source>
+        <translation type="unfinished">平行光源にはゼロ以外の方向が必要です</translation>
+    </message>
+    <message>
+        <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
+        <translation type="unfinished">--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectFile</name>
+    <message>
+        <source>the entry “%1” is not a 3 by 3 matrix</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>RenderOutput</name>
+    <message>
+        <source>is not a render pass; use one of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::app::Cli</name>
@@ -269,18 +295,6 @@ usage: %1</source>
         <translation>--unspecified には dummy、cosine、cosine2 のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
-        <source>--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”</source>
-        <translation>--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
-    </message>
-    <message>
-        <source>a directional light needs a non-zero direction</source>
-        <translation>平行光源にはゼロ以外の方向が必要です</translation>
-    </message>
-    <message>
-        <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
-        <translation>--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
-    </message>
-    <message>
         <source>usage:</source>
         <translation>使い方:</translation>
     </message>
@@ -291,6 +305,92 @@ usage: %1</source>
     <message>
         <source>--%1 needs two numbers A,B, not “%2”</source>
         <translation>--%1 には A,B の 2 つの数値が必要です（「%2」ではありません）</translation>
+    </message>
+    <message>
+        <source>--size takes WIDTHxHEIGHT between 1 and 16384, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Renders the project&apos;s look without a display (CPU renderer).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame to render (default 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames to render, A-B inclusive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Image size (default 1280x720).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading style for this render.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw the lines (on) or not (off).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key light for this render.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stereo output.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write one render pass.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output image (default: the project&apos;s name with .png).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give either --view or --eye, --target and --up
+usage: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--eye, --target and --up go together
+usage: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give either --frame or --frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--frames takes A-B with A &lt;= B, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--lines takes on or off, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--pass takes one of %1, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a stereo render writes the beauty pass only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--out must end in .png, .exr, .tif or .jpg, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--eye, --target and --up do not make a camera</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -682,6 +782,93 @@ Recover it now?</source>
     <message>
         <source>Key</source>
         <translation>キー</translation>
+    </message>
+    <message>
+        <source>Look</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show Cartoon &amp;Look</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shade the model with the document&apos;s look as the renderer does (off: neutral clay for modelling); Ctrl+drag the light gizmo to move the key light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stereo &amp;Review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Full-screen stereo review of the look: turntable, keys&apos; cameras, stereo modes (H for help)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::ReviewWindow</name>
+    <message>
+        <source>Stereo Review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Stereo review&lt;/b&gt;&lt;table cellspacing=&apos;4&apos;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;turntable on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left / Right&lt;/b&gt;&lt;/td&gt;&lt;td&gt;previous / next key&apos;s camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;S&lt;/b&gt;&lt;/td&gt;&lt;td&gt;stereo: anaglyph, Dubois, half-colour, side by side, top-bottom, off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;lines on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;view-dependent preview on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;interocular distance -10% / +10%&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt;&lt;/td&gt;&lt;td&gt;this help&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Esc&lt;/b&gt;&lt;/td&gt;&lt;td&gt;close the review&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Anaglyph</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dubois anaglyph</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Half-colour anaglyph</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Side by side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Top-bottom</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mono</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>free camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interocular %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turntable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>H: help</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1261,6 +1448,392 @@ Recover it now?</source>
         <source>the entry “%1” is not finite</source>
         <translation>項目「%1」が有限の値ではありません</translation>
     </message>
+    <message>
+        <source>the entry “%1” holds something that is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a material style names no material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the toon tones are not valid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the shading offsets do not match the vertex count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a shading offset is not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::RenderOutput</name>
+    <message>
+        <source>could not be written (the folder refused the new file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has an unknown image type; use .png, .tif, .jpg or .exr</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>could not be written: %1</source>
+        <translation type="unfinished">書き込めませんでした: %1</translation>
+    </message>
+    <message>
+        <source>all passes together need an .exr file</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::LookPanel</name>
+    <message>
+        <source>Shading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gooch warm/cool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comic hatching</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lambert</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toon: flat tones; Gooch: warm and cool lights; Comic: shadows drawn as strokes; Lambert: plain diffuse shading for modelling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Style:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The style applies to every material, or to one material only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Applies to:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All materials</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Directional</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Directional: the vector points from the model towards the light. Point: the light&apos;s position in model space.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Light:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Light vector (x, y, z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Light &amp;vector:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Background:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour behind the model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toon tones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per pixel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per vertex (32-entry table)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where N·L is evaluated: per pixel gives crisp tone boundaries; per vertex through a 32-entry table interpolates across triangles (the comic renderer&apos;s way); per face shows each triangle&apos;s tone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Evaluation:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of flat tones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tones:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>By material hue (automatic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>White (no warm light)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Purple (stronger cool)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Red (more cool, less warm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The hue-adaptive rules of View-Dependent Geometry, section 3.2.4, as starting points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Preset:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C = ka·Cbase + (l1·n)(Cwarm − Cbase·k1)·k2 + (l2·n)(Ccool − Cbase·k3)·k4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Warm:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warm light colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Cool:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cool light colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;pacing:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distance between strokes, model units</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Angle:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stroke direction, degrees</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>W&amp;idth:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stroke width as a fraction of the spacing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Silhouettes, creases, borders and material boundaries</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Silhouettes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Creases</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Borders (open edges)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Material boundaries</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A crease is drawn where the faces meet at more than this angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Crease &amp;angle:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;olour:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>O&amp;utline width:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Silhouettes and borders, pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Inner width:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Creases and material boundaries, pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Jitter:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hand-drawn jagged offset, pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Width &amp;variation:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Relative change of width along strokes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>O&amp;vershoot:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Extension of stroke ends, pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stereo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Red/cyan anaglyph</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dubois red/cyan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Half-colour anaglyph</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Side by side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Top and bottom</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How the two eyes are combined in the stereo review and stereo renders</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Output:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distance between the eyes, model units; 0 = automatic (a thirtieth of the convergence distance)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Interocular:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distance of the zero-parallax plane from the camera; 0 = automatic (the model&apos;s centre)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Convergence:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Toe-in (instead of off-axis)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotate the eyes towards the convergence point; off-axis (the default) avoids the keystone distortion of toe-in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;wap eyes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brightness of this tone (multiplies the base colour)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>from N·L</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The tone starts where N·L + offset reaches this value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brightest:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Darkest:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tone %1:</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::views::PropertiesPanel</name>
@@ -1680,10 +2253,6 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
         <translation>3D ビューポート</translation>
     </message>
     <message>
-        <source>&lt;p&gt;The 3D view of the model.&lt;/p&gt;&lt;p&gt;Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. F: frame the model. Home: front view.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;モデルの 3D ビューです。&lt;/p&gt;&lt;p&gt;Alt + 左ボタンドラッグまたは中ボタンドラッグ: 回転（オービット）。Alt + 中ボタンドラッグまたは Shift + 中ボタンドラッグ: パン。Alt + 右ボタンドラッグ、Ctrl + 中ボタンドラッグ、マウスホイール: ドリー。F: モデル全体を表示。Home: 正面ビュー。&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
         <translation>先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
     </message>
@@ -1718,6 +2287,10 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
     <message>
         <source>Brush radius %1</source>
         <translation>ブラシ半径 %1</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The 3D view of the model.&lt;/p&gt;&lt;p&gt;Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. F: frame the model. Home: front view.&lt;/p&gt;&lt;p&gt;Ctrl+left drag on the light gizmo (the yellow arrow or sphere): move the key light around the model.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

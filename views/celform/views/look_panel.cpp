@@ -63,14 +63,36 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(paren
     m_style->setToolTip(tr("Toon: flat tones; Gooch: warm and cool lights; Comic: shadows drawn as strokes; "
                            "Lambert: plain diffuse shading for modelling"));
     shadingForm->addRow(tr("&Style:"), m_style);
+    m_material = new QComboBox(shadingBox);
+    m_material->setToolTip(tr("The style applies to every material, or to one material only"));
+    shadingForm->addRow(tr("&Applies to:"), m_material);
     connect(m_style, qOverload<int>(&QComboBox::activated), this, [this](int index) {
         const auto style = model::ShadingStyle(m_style->itemData(index).toInt());
-        edit([style](model::Look& l) {
-            l.style = style;
-            l.materialStyles.clear();
+        const int material = m_material->currentData().toInt();
+        edit([style, material](model::Look& l) {
+            if (material < 0) {
+                l.style = style;
+                l.materialStyles.clear();
+            } else {
+                l.materialStyles[material] = style;
+            }
         });
     });
-    m_refreshers.push_back([this] { m_style->setCurrentIndex(m_style->findData(int(m_document->data().look.style))); });
+    connect(m_material, qOverload<int>(&QComboBox::activated), this, [this](int) { refresh(); });
+    m_refreshers.push_back([this] {
+        // Materials of the base model; a mesh without materials has the one default material.
+        const int previous = m_material->currentData().isValid() ? m_material->currentData().toInt() : -1;
+        m_material->clear();
+        m_material->addItem(tr("All materials"), -1);
+        if (const auto& mesh = m_document->data().baseMesh)
+            for (size_t m = 0; m < mesh->materials.size(); ++m)
+                m_material->addItem(QString::fromStdString(mesh->materials[m].name), int(m));
+        m_material->setCurrentIndex(std::max(0, m_material->findData(previous)));
+        m_material->setEnabled(m_material->count() > 2);
+        const int material = m_material->currentData().toInt();
+        const auto& look = m_document->data().look;
+        m_style->setCurrentIndex(m_style->findData(int(material < 0 ? look.style : look.styleOf(material))));
+    });
 
     auto* lightType = new QComboBox(shadingBox);
     lightType->addItem(tr("Directional"), int(model::LightType::Directional));

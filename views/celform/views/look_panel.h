@@ -41,6 +41,7 @@ private:
     std::vector<std::function<void()>> m_refreshers; ///< each control's update from the look
 
     QComboBox* m_style;
+    QComboBox* m_material; ///< which material the style applies to (-1: all)
     QGroupBox* m_toonBox;
     QFormLayout* m_toneForm;
     QSpinBox* m_toneCount;
