@@ -9,29 +9,29 @@
     </message>
     <message>
         <source>--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”</source>
-        <translation type="unfinished">--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
+        <translation>--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>a directional light needs a non-zero direction</source>
-        <translation type="unfinished">平行光源にはゼロ以外の方向が必要です</translation>
+        <translation>平行光源にはゼロ以外の方向ベクトルが必要です</translation>
     </message>
     <message>
         <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
-        <translation type="unfinished">--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
+        <translation>--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
 </context>
 <context>
     <name>ProjectFile</name>
     <message>
         <source>the entry “%1” is not a 3 by 3 matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>項目「%1」が 3×3 行列ではありません</translation>
     </message>
 </context>
 <context>
     <name>RenderOutput</name>
     <message>
         <source>is not a render pass; use one of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>はレンダーパスではありません。次のいずれかを使用してください: %1</translation>
     </message>
 </context>
 <context>
@@ -308,89 +308,91 @@ usage: %1</source>
     </message>
     <message>
         <source>--size takes WIDTHxHEIGHT between 1 and 16384, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--size には 1～16384 の範囲で WIDTHxHEIGHT を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>Renders the project&apos;s look without a display (CPU renderer).</source>
-        <translation type="unfinished"></translation>
+        <translation>ディスプレイを使わずにプロジェクトのルックをレンダリングします（CPU レンダラー）。</translation>
     </message>
     <message>
         <source>Frame to render (default 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダリングするフレーム（既定値 0）。</translation>
     </message>
     <message>
         <source>Frames to render, A-B inclusive.</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダリングするフレーム範囲（A-B、両端を含む）。</translation>
     </message>
     <message>
         <source>Image size (default 1280x720).</source>
-        <translation type="unfinished"></translation>
+        <translation>画像サイズ（既定値 1280x720）。</translation>
     </message>
     <message>
         <source>Shading style for this render.</source>
-        <translation type="unfinished"></translation>
+        <translation>このレンダリングで使用するシェーディングスタイル。</translation>
     </message>
     <message>
         <source>Draw the lines (on) or not (off).</source>
-        <translation type="unfinished"></translation>
+        <translation>線を描画するかどうか（on: 描画する、off: 描画しない）。</translation>
     </message>
     <message>
         <source>Key light for this render.</source>
-        <translation type="unfinished"></translation>
+        <translation>このレンダリングで使用するキーライト。</translation>
     </message>
     <message>
         <source>Stereo output.</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオ出力。</translation>
     </message>
     <message>
         <source>Write one render pass.</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダーパスを 1 つだけ書き出します。</translation>
     </message>
     <message>
         <source>Output image (default: the project&apos;s name with .png).</source>
-        <translation type="unfinished"></translation>
+        <translation>出力画像（既定値: プロジェクト名に .png を付けたもの）。</translation>
     </message>
     <message>
         <source>give either --view or --eye, --target and --up
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--view か、--eye・--target・--up の組み合わせのどちらか一方だけを指定してください
+使い方: %1</translation>
     </message>
     <message>
         <source>--eye, --target and --up go together
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--eye、--target、--up は 3 つともまとめて指定してください
+使い方: %1</translation>
     </message>
     <message>
         <source>give either --frame or --frames</source>
-        <translation type="unfinished"></translation>
+        <translation>--frame と --frames はどちらか一方だけを指定してください</translation>
     </message>
     <message>
         <source>--frames takes A-B with A &lt;= B, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--frames には A &lt;= B となる A-B を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--lines takes on or off, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--lines には on または off を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--stereo には off、anaglyph、dubois、halfcolor、sbs、tb のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--pass takes one of %1, not “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>--pass には %1 のいずれかを指定してください（「%2」は無効です）</translation>
     </message>
     <message>
         <source>a stereo render writes the beauty pass only</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオレンダリングで書き出せるのは beauty パスのみです</translation>
     </message>
     <message>
         <source>--out must end in .png, .exr, .tif or .jpg, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--out のファイル名は .png、.exr、.tif、.jpg のいずれかで終わる必要があります（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--eye, --target and --up do not make a camera</source>
-        <translation type="unfinished"></translation>
+        <translation>--eye、--target、--up ではカメラを構成できません</translation>
     </message>
 </context>
 <context>
@@ -785,90 +787,90 @@ Recover it now?</source>
     </message>
     <message>
         <source>Look</source>
-        <translation type="unfinished"></translation>
+        <translation>ルック</translation>
     </message>
     <message>
         <source>Show Cartoon &amp;Look</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメ調のルックを表示(&amp;L)</translation>
     </message>
     <message>
         <source>Shade the model with the document&apos;s look as the renderer does (off: neutral clay for modelling); Ctrl+drag the light gizmo to move the key light</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダラーと同じように、プロジェクトのルックでモデルをシェーディングします（オフ: モデリング用のニュートラルなクレイ表示）。ライトのギズモを Ctrl + ドラッグするとキーライトを移動できます</translation>
     </message>
     <message>
         <source>Stereo &amp;Review</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオレビュー(&amp;R)</translation>
     </message>
     <message>
         <source>Full-screen stereo review of the look: turntable, keys&apos; cameras, stereo modes (H for help)</source>
-        <translation type="unfinished"></translation>
+        <translation>ルックをフルスクリーンのステレオ表示でレビューします: ターンテーブル、各キーのカメラ、ステレオモード（H でヘルプ）</translation>
     </message>
 </context>
 <context>
     <name>celform::app::ReviewWindow</name>
     <message>
         <source>Stereo Review</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオレビュー</translation>
     </message>
     <message>
         <source>&lt;b&gt;Stereo review&lt;/b&gt;&lt;table cellspacing=&apos;4&apos;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;turntable on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left / Right&lt;/b&gt;&lt;/td&gt;&lt;td&gt;previous / next key&apos;s camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;S&lt;/b&gt;&lt;/td&gt;&lt;td&gt;stereo: anaglyph, Dubois, half-colour, side by side, top-bottom, off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;lines on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;view-dependent preview on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;interocular distance -10% / +10%&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt;&lt;/td&gt;&lt;td&gt;this help&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Esc&lt;/b&gt;&lt;/td&gt;&lt;td&gt;close the review&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;ステレオレビュー&lt;/b&gt;&lt;table cellspacing=&apos;4&apos;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ターンテーブルのオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;← / →&lt;/b&gt;&lt;/td&gt;&lt;td&gt;前 / 次のキーのカメラ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;S&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ステレオ: アナグリフ、Dubois、ハーフカラー、サイドバイサイド、トップアンドボトム、オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;線のオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;視点依存プレビューのオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;眼間距離 -10% / +10%&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt;&lt;/td&gt;&lt;td&gt;このヘルプ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Esc&lt;/b&gt;&lt;/td&gt;&lt;td&gt;レビューを閉じる&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
     <message>
         <source>Anaglyph</source>
-        <translation type="unfinished"></translation>
+        <translation>アナグリフ</translation>
     </message>
     <message>
         <source>Dubois anaglyph</source>
-        <translation type="unfinished"></translation>
+        <translation>Dubois アナグリフ</translation>
     </message>
     <message>
         <source>Half-colour anaglyph</source>
-        <translation type="unfinished"></translation>
+        <translation>ハーフカラーアナグリフ</translation>
     </message>
     <message>
         <source>Side by side</source>
-        <translation type="unfinished"></translation>
+        <translation>サイドバイサイド</translation>
     </message>
     <message>
         <source>Top-bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>トップアンドボトム</translation>
     </message>
     <message>
         <source>Mono</source>
-        <translation type="unfinished"></translation>
+        <translation>モノ（単眼）</translation>
     </message>
     <message>
         <source>free camera</source>
-        <translation type="unfinished"></translation>
+        <translation>フリーカメラ</translation>
     </message>
     <message>
         <source>Key: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>キー: %1</translation>
     </message>
     <message>
         <source>Interocular %1</source>
-        <translation type="unfinished"></translation>
+        <translation>眼間距離 %1</translation>
     </message>
     <message>
         <source>%1 fps</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 fps</translation>
     </message>
     <message>
         <source>Turntable</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブル</translation>
     </message>
     <message>
         <source>No lines</source>
-        <translation type="unfinished"></translation>
+        <translation>線なし</translation>
     </message>
     <message>
         <source>Preview</source>
-        <translation type="unfinished"></translation>
+        <translation>プレビュー</translation>
     </message>
     <message>
         <source>H: help</source>
-        <translation type="unfinished"></translation>
+        <translation>H: ヘルプ</translation>
     </message>
 </context>
 <context>
@@ -1450,389 +1452,389 @@ Recover it now?</source>
     </message>
     <message>
         <source>the entry “%1” holds something that is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>項目「%1」に数値でない値が含まれています</translation>
     </message>
     <message>
         <source>a material style names no material</source>
-        <translation type="unfinished"></translation>
+        <translation>マテリアル別のスタイルにマテリアルが指定されていません</translation>
     </message>
     <message>
         <source>the toon tones are not valid</source>
-        <translation type="unfinished"></translation>
+        <translation>トゥーンの階調設定が不正です</translation>
     </message>
     <message>
         <source>the shading offsets do not match the vertex count</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットの数が頂点数と一致しません</translation>
     </message>
     <message>
         <source>a shading offset is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>有限でないシェーディングオフセットがあります</translation>
     </message>
 </context>
 <context>
     <name>celform::model::RenderOutput</name>
     <message>
         <source>could not be written (the folder refused the new file)</source>
-        <translation type="unfinished"></translation>
+        <translation>書き込めませんでした（フォルダーに新しいファイルを作成できませんでした）</translation>
     </message>
     <message>
         <source>has an unknown image type; use .png, .tif, .jpg or .exr</source>
-        <translation type="unfinished"></translation>
+        <translation>不明な画像形式です。.png、.tif、.jpg、.exr のいずれかを使用してください</translation>
     </message>
     <message>
         <source>could not be written: %1</source>
-        <translation type="unfinished">書き込めませんでした: %1</translation>
+        <translation>書き込めませんでした: %1</translation>
     </message>
     <message>
         <source>all passes together need an .exr file</source>
-        <translation type="unfinished"></translation>
+        <translation>すべてのパスをまとめて書き出すには .exr ファイルが必要です</translation>
     </message>
 </context>
 <context>
     <name>celform::views::LookPanel</name>
     <message>
         <source>Shading</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディング</translation>
     </message>
     <message>
         <source>Toon</source>
-        <translation type="unfinished"></translation>
+        <translation>トゥーン</translation>
     </message>
     <message>
         <source>Gooch warm/cool</source>
-        <translation type="unfinished"></translation>
+        <translation>Gooch（暖色/寒色）</translation>
     </message>
     <message>
         <source>Comic hatching</source>
-        <translation type="unfinished"></translation>
+        <translation>コミック調ハッチング</translation>
     </message>
     <message>
         <source>Lambert</source>
-        <translation type="unfinished"></translation>
+        <translation>ランバート</translation>
     </message>
     <message>
         <source>Toon: flat tones; Gooch: warm and cool lights; Comic: shadows drawn as strokes; Lambert: plain diffuse shading for modelling</source>
-        <translation type="unfinished"></translation>
+        <translation>トゥーン: フラットな階調。Gooch: 暖色と寒色のライト。コミック: 影をストロークで描画。ランバート: モデリング用のシンプルな拡散シェーディング</translation>
     </message>
     <message>
         <source>&amp;Style:</source>
-        <translation type="unfinished"></translation>
+        <translation>スタイル(&amp;S):</translation>
     </message>
     <message>
         <source>The style applies to every material, or to one material only</source>
-        <translation type="unfinished"></translation>
+        <translation>スタイルをすべてのマテリアルに適用するか、1 つのマテリアルだけに適用するかを選びます</translation>
     </message>
     <message>
         <source>&amp;Applies to:</source>
-        <translation type="unfinished"></translation>
+        <translation>適用先(&amp;A):</translation>
     </message>
     <message>
         <source>All materials</source>
-        <translation type="unfinished"></translation>
+        <translation>すべてのマテリアル</translation>
     </message>
     <message>
         <source>Directional</source>
-        <translation type="unfinished"></translation>
+        <translation>平行光源</translation>
     </message>
     <message>
         <source>Point</source>
-        <translation type="unfinished"></translation>
+        <translation>点光源</translation>
     </message>
     <message>
         <source>Directional: the vector points from the model towards the light. Point: the light&apos;s position in model space.</source>
-        <translation type="unfinished"></translation>
+        <translation>平行光源: ベクトルはモデルからライトに向かう方向です。点光源: ベクトルはモデル空間でのライトの位置です。</translation>
     </message>
     <message>
         <source>&amp;Light:</source>
-        <translation type="unfinished"></translation>
+        <translation>ライト(&amp;L):</translation>
     </message>
     <message>
         <source>Light vector (x, y, z)</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトのベクトル（x, y, z）</translation>
     </message>
     <message>
         <source>Light &amp;vector:</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトのベクトル(&amp;V):</translation>
     </message>
     <message>
         <source>&amp;Background:</source>
-        <translation type="unfinished"></translation>
+        <translation>背景(&amp;B):</translation>
     </message>
     <message>
         <source>Colour behind the model</source>
-        <translation type="unfinished"></translation>
+        <translation>モデルの背後に表示する色</translation>
     </message>
     <message>
         <source>Toon tones</source>
-        <translation type="unfinished"></translation>
+        <translation>トゥーンの階調</translation>
     </message>
     <message>
         <source>Per pixel</source>
-        <translation type="unfinished"></translation>
+        <translation>ピクセル単位</translation>
     </message>
     <message>
         <source>Per vertex (32-entry table)</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点単位（32 エントリのテーブル）</translation>
     </message>
     <message>
         <source>Per face</source>
-        <translation type="unfinished"></translation>
+        <translation>面単位</translation>
     </message>
     <message>
         <source>Where N·L is evaluated: per pixel gives crisp tone boundaries; per vertex through a 32-entry table interpolates across triangles (the comic renderer&apos;s way); per face shows each triangle&apos;s tone</source>
-        <translation type="unfinished"></translation>
+        <translation>N·L を評価する単位です。ピクセル単位では階調の境界がくっきりします。頂点単位では 32 エントリのテーブルを介して三角形内を補間します（コミックレンダラーの方式）。面単位では三角形ごとに 1 つの階調を表示します</translation>
     </message>
     <message>
         <source>&amp;Evaluation:</source>
-        <translation type="unfinished"></translation>
+        <translation>評価単位(&amp;E):</translation>
     </message>
     <message>
         <source>Number of flat tones</source>
-        <translation type="unfinished"></translation>
+        <translation>フラットな階調の数</translation>
     </message>
     <message>
         <source>&amp;Tones:</source>
-        <translation type="unfinished"></translation>
+        <translation>階調数(&amp;T):</translation>
     </message>
     <message>
         <source>By material hue (automatic)</source>
-        <translation type="unfinished"></translation>
+        <translation>マテリアルの色相に合わせる（自動）</translation>
     </message>
     <message>
         <source>Default</source>
-        <translation type="unfinished"></translation>
+        <translation>既定</translation>
     </message>
     <message>
         <source>White (no warm light)</source>
-        <translation type="unfinished"></translation>
+        <translation>白（暖色ライトなし）</translation>
     </message>
     <message>
         <source>Purple (stronger cool)</source>
-        <translation type="unfinished"></translation>
+        <translation>紫（寒色を強める）</translation>
     </message>
     <message>
         <source>Red (more cool, less warm)</source>
-        <translation type="unfinished"></translation>
+        <translation>赤（寒色を強め、暖色を弱める）</translation>
     </message>
     <message>
         <source>The hue-adaptive rules of View-Dependent Geometry, section 3.2.4, as starting points</source>
-        <translation type="unfinished"></translation>
+        <translation>論文「View-Dependent Geometry」3.2.4 節の色相に応じた規則を、調整の出発点として使用します</translation>
     </message>
     <message>
         <source>&amp;Preset:</source>
-        <translation type="unfinished"></translation>
+        <translation>プリセット(&amp;P):</translation>
     </message>
     <message>
         <source>C = ka·Cbase + (l1·n)(Cwarm − Cbase·k1)·k2 + (l2·n)(Ccool − Cbase·k3)·k4</source>
-        <translation type="unfinished"></translation>
+        <translation>C = ka·Cbase + (l1·n)(Cwarm − Cbase·k1)·k2 + (l2·n)(Ccool − Cbase·k3)·k4</translation>
     </message>
     <message>
         <source>&amp;Warm:</source>
-        <translation type="unfinished"></translation>
+        <translation>暖色(&amp;W):</translation>
     </message>
     <message>
         <source>Warm light colour</source>
-        <translation type="unfinished"></translation>
+        <translation>暖色ライトの色</translation>
     </message>
     <message>
         <source>&amp;Cool:</source>
-        <translation type="unfinished"></translation>
+        <translation>寒色(&amp;C):</translation>
     </message>
     <message>
         <source>Cool light colour</source>
-        <translation type="unfinished"></translation>
+        <translation>寒色ライトの色</translation>
     </message>
     <message>
         <source>S&amp;pacing:</source>
-        <translation type="unfinished"></translation>
+        <translation>間隔(&amp;P):</translation>
     </message>
     <message>
         <source>Distance between strokes, model units</source>
-        <translation type="unfinished"></translation>
+        <translation>ストローク同士の間隔（モデル単位）</translation>
     </message>
     <message>
         <source>&amp;Angle:</source>
-        <translation type="unfinished"></translation>
+        <translation>角度(&amp;A):</translation>
     </message>
     <message>
         <source>Stroke direction, degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>ストロークの方向（度）</translation>
     </message>
     <message>
         <source>W&amp;idth:</source>
-        <translation type="unfinished"></translation>
+        <translation>太さ(&amp;I):</translation>
     </message>
     <message>
         <source>Stroke width as a fraction of the spacing</source>
-        <translation type="unfinished"></translation>
+        <translation>ストロークの太さ（間隔に対する比率）</translation>
     </message>
     <message>
         <source>Lines</source>
-        <translation type="unfinished"></translation>
+        <translation>線</translation>
     </message>
     <message>
         <source>Silhouettes, creases, borders and material boundaries</source>
-        <translation type="unfinished"></translation>
+        <translation>シルエット、折り目、境界、マテリアル境界</translation>
     </message>
     <message>
         <source>Silhouettes</source>
-        <translation type="unfinished"></translation>
+        <translation>シルエット</translation>
     </message>
     <message>
         <source>Creases</source>
-        <translation type="unfinished"></translation>
+        <translation>折り目</translation>
     </message>
     <message>
         <source>Borders (open edges)</source>
-        <translation type="unfinished"></translation>
+        <translation>境界（開いたエッジ）</translation>
     </message>
     <message>
         <source>Material boundaries</source>
-        <translation type="unfinished"></translation>
+        <translation>マテリアル境界</translation>
     </message>
     <message>
         <source>A crease is drawn where the faces meet at more than this angle</source>
-        <translation type="unfinished"></translation>
+        <translation>隣り合う面がこの角度を超えて折れている箇所に折り目の線を描画します</translation>
     </message>
     <message>
         <source>Crease &amp;angle:</source>
-        <translation type="unfinished"></translation>
+        <translation>折り目の角度(&amp;A):</translation>
     </message>
     <message>
         <source>C&amp;olour:</source>
-        <translation type="unfinished"></translation>
+        <translation>色(&amp;O):</translation>
     </message>
     <message>
         <source>Line colour</source>
-        <translation type="unfinished"></translation>
+        <translation>線の色</translation>
     </message>
     <message>
         <source>O&amp;utline width:</source>
-        <translation type="unfinished"></translation>
+        <translation>輪郭線の太さ(&amp;U):</translation>
     </message>
     <message>
         <source>Silhouettes and borders, pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>シルエットと境界の線の太さ（ピクセル）</translation>
     </message>
     <message>
         <source>&amp;Inner width:</source>
-        <translation type="unfinished"></translation>
+        <translation>内側の線の太さ(&amp;I):</translation>
     </message>
     <message>
         <source>Creases and material boundaries, pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>折り目とマテリアル境界の線の太さ（ピクセル）</translation>
     </message>
     <message>
         <source>&amp;Jitter:</source>
-        <translation type="unfinished"></translation>
+        <translation>ゆらぎ(&amp;J):</translation>
     </message>
     <message>
         <source>Hand-drawn jagged offset, pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>手描き風のギザギザしたずれ（ピクセル）</translation>
     </message>
     <message>
         <source>Width &amp;variation:</source>
-        <translation type="unfinished"></translation>
+        <translation>太さのばらつき(&amp;V):</translation>
     </message>
     <message>
         <source>Relative change of width along strokes</source>
-        <translation type="unfinished"></translation>
+        <translation>ストロークに沿った太さの相対的な変化</translation>
     </message>
     <message>
         <source>O&amp;vershoot:</source>
-        <translation type="unfinished"></translation>
+        <translation>はみ出し(&amp;V):</translation>
     </message>
     <message>
         <source>Extension of stroke ends, pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>ストロークの端を延ばす量（ピクセル）</translation>
     </message>
     <message>
         <source>Stereo</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオ</translation>
     </message>
     <message>
         <source>Red/cyan anaglyph</source>
-        <translation type="unfinished"></translation>
+        <translation>アナグリフ（赤/シアン）</translation>
     </message>
     <message>
         <source>Dubois red/cyan</source>
-        <translation type="unfinished"></translation>
+        <translation>Dubois（赤/シアン）</translation>
     </message>
     <message>
         <source>Half-colour anaglyph</source>
-        <translation type="unfinished"></translation>
+        <translation>ハーフカラーアナグリフ</translation>
     </message>
     <message>
         <source>Side by side</source>
-        <translation type="unfinished"></translation>
+        <translation>サイドバイサイド</translation>
     </message>
     <message>
         <source>Top and bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>トップアンドボトム</translation>
     </message>
     <message>
         <source>How the two eyes are combined in the stereo review and stereo renders</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオレビューとステレオレンダリングで左右の目の画像を合成する方法</translation>
     </message>
     <message>
         <source>&amp;Output:</source>
-        <translation type="unfinished"></translation>
+        <translation>出力(&amp;O):</translation>
     </message>
     <message>
         <source>Distance between the eyes, model units; 0 = automatic (a thirtieth of the convergence distance)</source>
-        <translation type="unfinished"></translation>
+        <translation>左右の目の間の距離（モデル単位）。0 = 自動（輻輳距離の 1/30）</translation>
     </message>
     <message>
         <source>Automatic</source>
-        <translation type="unfinished"></translation>
+        <translation>自動</translation>
     </message>
     <message>
         <source>&amp;Interocular:</source>
-        <translation type="unfinished"></translation>
+        <translation>眼間距離(&amp;I):</translation>
     </message>
     <message>
         <source>Distance of the zero-parallax plane from the camera; 0 = automatic (the model&apos;s centre)</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラから視差ゼロ面までの距離。0 = 自動（モデルの中心）</translation>
     </message>
     <message>
         <source>&amp;Convergence:</source>
-        <translation type="unfinished"></translation>
+        <translation>輻輳距離(&amp;C):</translation>
     </message>
     <message>
         <source>&amp;Toe-in (instead of off-axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>トーイン（オフアクシスの代わりに使用）(&amp;T)</translation>
     </message>
     <message>
         <source>Rotate the eyes towards the convergence point; off-axis (the default) avoids the keystone distortion of toe-in</source>
-        <translation type="unfinished"></translation>
+        <translation>左右の目を輻輳点に向けて回転させます。オフアクシス（既定）では、トーインで生じる台形歪み（キーストーン歪み）が発生しません</translation>
     </message>
     <message>
         <source>S&amp;wap eyes</source>
-        <translation type="unfinished"></translation>
+        <translation>左右の目を入れ替え(&amp;W)</translation>
     </message>
     <message>
         <source>Brightness of this tone (multiplies the base colour)</source>
-        <translation type="unfinished"></translation>
+        <translation>この階調の明るさ（ベースカラーに乗算されます）</translation>
     </message>
     <message>
         <source>from N·L</source>
-        <translation type="unfinished"></translation>
+        <translation>N·L しきい値</translation>
     </message>
     <message>
         <source>The tone starts where N·L + offset reaches this value</source>
-        <translation type="unfinished"></translation>
+        <translation>N·L + オフセットがこの値に達したところからこの階調になります</translation>
     </message>
     <message>
         <source>Brightest:</source>
-        <translation type="unfinished"></translation>
+        <translation>最も明るい階調:</translation>
     </message>
     <message>
         <source>Darkest:</source>
-        <translation type="unfinished"></translation>
+        <translation>最も暗い階調:</translation>
     </message>
     <message>
         <source>Tone %1:</source>
-        <translation type="unfinished"></translation>
+        <translation>階調 %1:</translation>
     </message>
 </context>
 <context>
@@ -2290,7 +2292,7 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
     </message>
     <message>
         <source>&lt;p&gt;The 3D view of the model.&lt;/p&gt;&lt;p&gt;Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. F: frame the model. Home: front view.&lt;/p&gt;&lt;p&gt;Ctrl+left drag on the light gizmo (the yellow arrow or sphere): move the key light around the model.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;モデルの 3D ビューです。&lt;/p&gt;&lt;p&gt;Alt + 左ボタンドラッグまたは中ボタンドラッグ: 回転（オービット）。Alt + 中ボタンドラッグまたは Shift + 中ボタンドラッグ: パン。Alt + 右ボタンドラッグ、Ctrl + 中ボタンドラッグ、またはマウスホイール: ドリー。F: モデル全体を表示。Home: 正面ビュー。&lt;/p&gt;&lt;p&gt;ライトのギズモ（黄色の矢印または球）上で Ctrl + 左ボタンドラッグ: モデルの周りでキーライトを移動。&lt;/p&gt;</translation>
     </message>
 </context>
 <context>

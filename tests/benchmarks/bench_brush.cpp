@@ -4,6 +4,8 @@
 #include "celform/algorithms/brush.h"
 #include "celform/model/mesh_io.h"
 
+#include "bench_data.h"
+
 #include <benchmark/benchmark.h>
 
 #include <QDir>
@@ -16,17 +18,7 @@ namespace {
 
 using namespace celform;
 
-const algo::TriMesh* dragon()
-{
-    static std::unique_ptr<algo::TriMesh> mesh = [] {
-        const QString path
-            = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/stanford_dragon.ply"));
-        if (!QFileInfo::exists(path))
-            return std::unique_ptr<algo::TriMesh>();
-        return std::make_unique<algo::TriMesh>(model::importMesh(path).mesh);
-    }();
-    return mesh.get();
-}
+using bench::dragon;
 
 /// Radius around `picked` selecting about `target` vertices: the distance of the target-th nearest.
 double radiusFor(const algo::Positions& v, std::uint32_t picked, std::size_t target)

@@ -4,6 +4,8 @@
 #include "celform/algorithms/lines.h"
 #include "celform/model/mesh_io.h"
 
+#include "bench_data.h"
+
 #include <benchmark/benchmark.h>
 
 #include <QDir>
@@ -15,17 +17,7 @@ namespace {
 
 using namespace celform;
 
-const algo::TriMesh* dragon()
-{
-    static std::unique_ptr<algo::TriMesh> mesh = [] {
-        const QString path
-            = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/stanford_dragon.ply"));
-        if (!QFileInfo::exists(path))
-            return std::unique_ptr<algo::TriMesh>();
-        return std::make_unique<algo::TriMesh>(model::importMesh(path).mesh);
-    }();
-    return mesh.get();
-}
+using bench::dragon;
 
 const algo::EdgeTopology& dragonTopology()
 {

@@ -3,6 +3,8 @@
 #include "celform/algorithms/render.h"
 #include "celform/model/mesh_io.h"
 
+#include "bench_data.h"
+
 #include <benchmark/benchmark.h>
 
 #include <QDir>
@@ -12,15 +14,7 @@ namespace {
 
 using namespace celform;
 
-const algo::TriMesh* dragon()
-{
-    static std::unique_ptr<algo::TriMesh> mesh = [] {
-        const QString path
-            = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/stanford_dragon.ply"));
-        return QFileInfo::exists(path) ? std::make_unique<algo::TriMesh>(model::importMesh(path).mesh) : nullptr;
-    }();
-    return mesh.get();
-}
+using bench::dragon;
 
 void renderDragon(benchmark::State& state, bool lines)
 {

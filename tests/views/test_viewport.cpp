@@ -8,6 +8,7 @@
 // tests/CMakeLists.txt adds <caller>/common to the include path, not tests/common: reach it
 // relative to this file until that is fixed.
 #include "test_support.h"
+#include "test_meshes.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -29,46 +30,6 @@ using celform::views::Viewport;
 
 namespace {
 
-/// A unit icosphere, for when ../shared is absent.
-std::shared_ptr<TriMesh> icosphere(int subdivisions)
-{
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    std::vector<Eigen::Vector3d> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-        {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9},
-        {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
-        {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-    for (auto& p : v)
-        p.normalize();
-    for (int s = 0; s < subdivisions; ++s) {
-        std::map<std::pair<int, int>, int> mid;
-        auto midpoint = [&](int a, int b) {
-            const auto key = std::minmax(a, b);
-            auto it = mid.find(key);
-            if (it != mid.end())
-                return it->second;
-            v.push_back((v[size_t(a)] + v[size_t(b)]).normalized());
-            return mid[key] = int(v.size()) - 1;
-        };
-        std::vector<std::array<int, 3>> next;
-        for (const auto& tri : f) {
-            const int a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c = midpoint(tri[2], tri[0]);
-            next.push_back({tri[0], a, c});
-            next.push_back({tri[1], b, a});
-            next.push_back({tri[2], c, b});
-            next.push_back({a, b, c});
-        }
-        f = std::move(next);
-    }
-    auto mesh = std::make_shared<TriMesh>();
-    mesh->vertices.resize(Eigen::Index(v.size()), 3);
-    for (size_t i = 0; i < v.size(); ++i)
-        mesh->vertices.row(Eigen::Index(i)) = v[i].cast<float>().transpose();
-    mesh->faces.resize(Eigen::Index(f.size()), 3);
-    for (size_t i = 0; i < f.size(); ++i)
-        mesh->faces.row(Eigen::Index(i)) << f[i][0], f[i][1], f[i][2];
-    return mesh;
-}
 
 std::shared_ptr<TriMesh> importShared(const QString& relative)
 {
@@ -88,7 +49,7 @@ std::shared_ptr<TriMesh> testMesh()
 {
     if (auto bunny = importShared(QStringLiteral("meshes/npm_bunny.off")))
         return bunny;
-    return icosphere(3);
+    return celform::test::icosphere(3);
 }
 
 /// What the model covers in an image: pixels that differ clearly from the background, which is
@@ -429,7 +390,7 @@ private slots:
     {
         // Replacing the whole document frames the new model.
         ProjectData data;
-        auto sphere = icosphere(2);
+        auto sphere = celform::test::icosphere(2);
         sphere->vertices.array() *= 50.0f;
         data.baseMesh = sphere;
         m_doc->reset(std::move(data));

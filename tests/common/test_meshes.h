@@ -1,0 +1,56 @@
+// Meshes the tests generate when they need a known shape (and when ../shared is absent).
+#pragma once
+
+#include "celform/algorithms/tri_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace celform::test {
+
+/// A unit icosphere with 10 * 4^s + 2 vertices (2562 for s = 4).
+inline std::shared_ptr<algo::TriMesh> icosphere(int subdivisions)
+{
+    const float t = (1.f + std::sqrt(5.f)) / 2.f;
+    std::vector<Eigen::Vector3f> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+        {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9},
+        {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
+        {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (auto& p : v)
+        p.normalize();
+    for (int s = 0; s < subdivisions; ++s) {
+        std::map<std::pair<int, int>, int> middle;
+        auto split = [&](int a, int b) {
+            const auto key = std::minmax(a, b);
+            const auto found = middle.find(key);
+            if (found != middle.end())
+                return found->second;
+            v.push_back((v[std::size_t(a)] + v[std::size_t(b)]).normalized());
+            return middle[key] = int(v.size()) - 1;
+        };
+        std::vector<std::array<int, 3>> finer;
+        for (const auto& tri : f) {
+            const int a = split(tri[0], tri[1]), b = split(tri[1], tri[2]), c = split(tri[2], tri[0]);
+            finer.push_back({tri[0], a, c});
+            finer.push_back({tri[1], b, a});
+            finer.push_back({tri[2], c, b});
+            finer.push_back({a, b, c});
+        }
+        f = std::move(finer);
+    }
+    auto mesh = std::make_shared<algo::TriMesh>();
+    mesh->vertices.resize(Eigen::Index(v.size()), 3);
+    for (std::size_t i = 0; i < v.size(); ++i)
+        mesh->vertices.row(Eigen::Index(i)) = v[i];
+    mesh->faces.resize(Eigen::Index(f.size()), 3);
+    for (std::size_t i = 0; i < f.size(); ++i)
+        mesh->faces.row(Eigen::Index(i)) << f[i][0], f[i][1], f[i][2];
+    return mesh;
+}
+
+} // namespace celform::test
