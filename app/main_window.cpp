@@ -223,6 +223,10 @@ void MainWindow::createDocks()
     QDockWidget* observerDock
         = makeDock(tr("Observer"), QStringLiteral("observerDock"), m_observer, Qt::BottomDockWidgetArea);
     observerDock->hide(); // a second GL view costs frames: shown on demand from the View menu
+    // The panels people edit get most of the right column; the sphere is a glance.
+    resizeDocks({findChild<QDockWidget*>(QStringLiteral("propertiesDock")),
+                    findChild<QDockWidget*>(QStringLiteral("sphereDock"))},
+        {620, 240}, Qt::Vertical);
     m_log = new QPlainTextEdit(this);
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(2000);

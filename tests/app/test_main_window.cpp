@@ -8,10 +8,13 @@
 #include "recovery.h"
 
 #include "celform/model/project_file.h"
+#include "celform/views/look_panel.h"
 #include "celform/views/scene_panel.h"
 #include "celform/views/viewport.h"
 
 #include <QAction>
+#include <QComboBox>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QApplication>
 #include <QMimeData>
@@ -204,6 +207,30 @@ private slots:
         QVERIFY(window.saveAs(saved));
         QVERIFY(!QFileInfo::exists(recovery->ownRecoveryFile()));
         QVERIFY(!window.isWindowModified());
+    }
+
+    void lookPanelEditsAreUndoable()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(test::sampleProject()));
+        auto* dock = window.findChild<QDockWidget*>(QStringLiteral("lookDock"));
+        QVERIFY(dock);
+        dock->raise();
+        auto* panel = window.findChild<views::LookPanel*>();
+        QVERIFY(panel);
+        QComboBox* style = panel->styleBox();
+        const int gooch = style->findData(int(model::ShadingStyle::Gooch));
+        style->setCurrentIndex(gooch);
+        emit style->activated(gooch);
+        QCOMPARE(window.document()->data().look.style, model::ShadingStyle::Gooch);
+        test::waitForRender(window.viewport());
+        test::keepScreenshot(&window, "look-panel");
+        window.action(QStringLiteral("actionUndo"))->trigger();
+        QCOMPARE(window.document()->data().look.style, model::ShadingStyle::Toon);
+        QCOMPARE(style->currentData().toInt(), int(model::ShadingStyle::Toon)); // the panel follows undo
     }
 
     void screenshotOption()

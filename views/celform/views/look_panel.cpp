@@ -28,7 +28,8 @@ QColor toQColor(const Eigen::Vector3f& linear)
 
 Eigen::Vector3f fromQColor(const QColor& c)
 {
-    return {algo::srgbToLinear(float(c.redF())), algo::srgbToLinear(float(c.greenF())), algo::srgbToLinear(float(c.blueF()))};
+    return {algo::srgbToLinear(float(c.redF())), algo::srgbToLinear(float(c.greenF())),
+        algo::srgbToLinear(float(c.blueF()))};
 }
 
 void paintSwatch(QToolButton* button, const Eigen::Vector3f& color)
@@ -40,13 +41,16 @@ void paintSwatch(QToolButton* button, const Eigen::Vector3f& color)
 
 } // namespace
 
-LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(parent), m_document(document)
+LookPanel::LookPanel(model::Document* document, QWidget* parent)
+    : QWidget(parent)
+    , m_document(document)
 {
     auto* outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the panel follows the dock's width
     auto* content = new QWidget(scroll);
     auto* layout = new QVBoxLayout(content);
     scroll->setWidget(content);
@@ -110,23 +114,26 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(paren
                 l.light.vector.normalize();
         });
     });
-    m_refreshers.push_back(
-        [this, lightType] { lightType->setCurrentIndex(lightType->findData(int(m_document->data().look.light.type))); });
+    m_refreshers.push_back([this, lightType] {
+        lightType->setCurrentIndex(lightType->findData(int(m_document->data().look.light.type)));
+    });
     auto* lightRow = new QWidget(shadingBox);
     auto* lightLayout = new QHBoxLayout(lightRow);
     lightLayout->setContentsMargins(0, 0, 0, 0);
     for (int axis = 0; axis < 3; ++axis) {
         QDoubleSpinBox* spin = makeSpin(-1e4, 1e4, 0.05, 3, tr("Light vector (x, y, z)"));
+        spin->setMinimumWidth(40); // three in a row must fit a narrow dock
+        spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         lightLayout->addWidget(spin);
-        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, axis](double v) {
-            edit([axis, v](model::Look& l) { l.light.vector[axis] = v; });
-        });
+        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+            [this, axis](double v) { edit([axis, v](model::Look& l) { l.light.vector[axis] = v; }); });
         m_refreshers.push_back([this, spin, axis] { spin->setValue(m_document->data().look.light.vector[axis]); });
     }
     shadingForm->addRow(tr("Light &vector:"), lightRow);
     shadingForm->addRow(tr("&Background:"),
-                        makeColorButton(tr("Colour behind the model"), [](const model::Look& l) { return l.backgroundColor; },
-                                        [](model::Look& l, const Eigen::Vector3f& c) { l.backgroundColor = c; }));
+        makeColorButton(
+            tr("Colour behind the model"), [](const model::Look& l) { return l.backgroundColor; },
+            [](model::Look& l, const Eigen::Vector3f& c) { l.backgroundColor = c; }));
     layout->addWidget(shadingBox);
 
     // --- toon tones ----------------------------------------------------------------------------
@@ -160,7 +167,8 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(paren
             l.toon.thresholds.clear();
             l.toon.intensities.clear();
             for (int i = 0; i < count; ++i) {
-                l.toon.intensities.push_back(count == 2 ? (i == 0 ? 0.25f : 0.75f) : 0.25f + 0.7f * float(i) / float(count - 1));
+                l.toon.intensities.push_back(
+                    count == 2 ? (i == 0 ? 0.25f : 0.75f) : 0.25f + 0.7f * float(i) / float(count - 1));
                 if (i > 0)
                     l.toon.thresholds.push_back(count == 2 ? 0.5f : -0.2f + float(i) / float(count - 1));
             }
@@ -194,39 +202,46 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(paren
         });
     });
     m_refreshers.push_back([this, preset] {
-        preset->setCurrentIndex(std::max(0, preset->findData(QString::fromStdString(m_document->data().look.gooch.preset))));
+        preset->setCurrentIndex(
+            std::max(0, preset->findData(QString::fromStdString(m_document->data().look.gooch.preset))));
     });
-    const std::pair<const char*, float algo::GoochParams::*> coefficients[] = {
-        {"ka", &algo::GoochParams::ka}, {"k1", &algo::GoochParams::k1}, {"k2", &algo::GoochParams::k2},
-        {"k3", &algo::GoochParams::k3}, {"k4", &algo::GoochParams::k4}};
+    const std::pair<const char*, float algo::GoochParams::*> coefficients[]
+        = {{"ka", &algo::GoochParams::ka}, {"k1", &algo::GoochParams::k1}, {"k2", &algo::GoochParams::k2},
+            {"k3", &algo::GoochParams::k3}, {"k4", &algo::GoochParams::k4}};
     for (const auto& [name, member] : coefficients) {
-        QDoubleSpinBox* spin = makeSpin(-4.0, 4.0, 0.05, 2,
-                                        tr("C = ka·Cbase + (l1·n)(Cwarm − Cbase·k1)·k2 + (l2·n)(Ccool − Cbase·k3)·k4"));
+        QDoubleSpinBox* spin = makeSpin(
+            -4.0, 4.0, 0.05, 2, tr("C = ka·Cbase + (l1·n)(Cwarm − Cbase·k1)·k2 + (l2·n)(Ccool − Cbase·k3)·k4"));
         goochForm->addRow(QString::fromLatin1(name) + QLatin1Char(':'), spin);
         const auto m = member;
         connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-                [this, m](double v) { edit([m, v](model::Look& l) { l.gooch.*m = float(v); }); });
+            [this, m](double v) { edit([m, v](model::Look& l) { l.gooch.*m = float(v); }); });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.gooch.*m); });
     }
-    goochForm->addRow(tr("&Warm:"), makeColorButton(tr("Warm light colour"), [](const model::Look& l) { return l.gooch.warm; },
-                                                   [](model::Look& l, const Eigen::Vector3f& c) { l.gooch.warm = c; }));
-    goochForm->addRow(tr("&Cool:"), makeColorButton(tr("Cool light colour"), [](const model::Look& l) { return l.gooch.cool; },
-                                                   [](model::Look& l, const Eigen::Vector3f& c) { l.gooch.cool = c; }));
+    goochForm->addRow(tr("&Warm:"),
+        makeColorButton(
+            tr("Warm light colour"), [](const model::Look& l) { return l.gooch.warm; },
+            [](model::Look& l, const Eigen::Vector3f& c) { l.gooch.warm = c; }));
+    goochForm->addRow(tr("&Cool:"),
+        makeColorButton(
+            tr("Cool light colour"), [](const model::Look& l) { return l.gooch.cool; },
+            [](model::Look& l, const Eigen::Vector3f& c) { l.gooch.cool = c; }));
     layout->addWidget(m_goochBox);
 
     // --- hatching -----------------------------------------------------------------------------------
     m_hatchBox = new QGroupBox(tr("Comic hatching"), content);
     auto* hatchForm = new QFormLayout(m_hatchBox);
-    const std::tuple<QString, float algo::HatchParams::*, double, double, double, int, QString> hatchControls[] = {
-        {tr("S&pacing:"), &algo::HatchParams::spacing, 1e-5, 1e4, 0.005, 4, tr("Distance between strokes, model units")},
-        {tr("&Angle:"), &algo::HatchParams::angleDegrees, -180, 180, 5, 1, tr("Stroke direction, degrees")},
-        {tr("W&idth:"), &algo::HatchParams::width, 0.05, 0.95, 0.05, 2, tr("Stroke width as a fraction of the spacing")}};
+    const std::tuple<QString, float algo::HatchParams::*, double, double, double, int, QString> hatchControls[]
+        = {{tr("S&pacing:"), &algo::HatchParams::spacing, 1e-5, 1e4, 0.005, 4,
+               tr("Distance between strokes, model units")},
+            {tr("&Angle:"), &algo::HatchParams::angleDegrees, -180, 180, 5, 1, tr("Stroke direction, degrees")},
+            {tr("W&idth:"), &algo::HatchParams::width, 0.05, 0.95, 0.05, 2,
+                tr("Stroke width as a fraction of the spacing")}};
     for (const auto& [label, member, lo, hi, step, decimals, tip] : hatchControls) {
         QDoubleSpinBox* spin = makeSpin(lo, hi, step, decimals, tip);
         hatchForm->addRow(label, spin);
         const auto m = member;
         connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-                [this, m](double v) { edit([m, v](model::Look& l) { l.hatch.*m = float(v); }); });
+            [this, m](double v) { edit([m, v](model::Look& l) { l.hatch.*m = float(v); }); });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.hatch.*m); });
     }
     layout->addWidget(m_hatchBox);
@@ -238,38 +253,42 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(paren
     auto* linesForm = new QFormLayout(linesBox);
     connect(linesBox, &QGroupBox::toggled, this, [this](bool on) { edit([on](model::Look& l) { l.showLines = on; }); });
     m_refreshers.push_back([this, linesBox] { linesBox->setChecked(m_document->data().look.showLines); });
-    const std::pair<QString, bool algo::LineSettings::*> kinds[] = {
-        {tr("Silhouettes"), &algo::LineSettings::silhouettes},
-        {tr("Creases"), &algo::LineSettings::creases},
-        {tr("Borders (open edges)"), &algo::LineSettings::borders},
-        {tr("Material boundaries"), &algo::LineSettings::materialBoundaries}};
+    const std::pair<QString, bool algo::LineSettings::*> kinds[]
+        = {{tr("Silhouettes"), &algo::LineSettings::silhouettes}, {tr("Creases"), &algo::LineSettings::creases},
+            {tr("Borders (open edges)"), &algo::LineSettings::borders},
+            {tr("Material boundaries"), &algo::LineSettings::materialBoundaries}};
     for (const auto& [label, member] : kinds) {
         auto* check = new QCheckBox(label, linesBox);
         linesForm->addRow(check);
         const auto m = member;
-        connect(check, &QCheckBox::toggled, this, [this, m](bool on) { edit([m, on](model::Look& l) { l.lines.*m = on; }); });
+        connect(check, &QCheckBox::toggled, this,
+            [this, m](bool on) { edit([m, on](model::Look& l) { l.lines.*m = on; }); });
         m_refreshers.push_back([this, check, m] { check->setChecked(m_document->data().look.lines.*m); });
     }
-    QDoubleSpinBox* crease = makeSpin(1, 179, 1, 0, tr("A crease is drawn where the faces meet at more than this angle"));
+    QDoubleSpinBox* crease
+        = makeSpin(1, 179, 1, 0, tr("A crease is drawn where the faces meet at more than this angle"));
     crease->setSuffix(QStringLiteral("°"));
     linesForm->addRow(tr("Crease &angle:"), crease);
     connect(crease, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this](double v) { edit([v](model::Look& l) { l.lines.creaseAngleDegrees = float(v); }); });
+        [this](double v) { edit([v](model::Look& l) { l.lines.creaseAngleDegrees = float(v); }); });
     m_refreshers.push_back([this, crease] { crease->setValue(m_document->data().look.lines.creaseAngleDegrees); });
-    linesForm->addRow(tr("C&olour:"), makeColorButton(tr("Line colour"), [](const model::Look& l) { return l.lineStyle.color; },
-                                                      [](model::Look& l, const Eigen::Vector3f& c) { l.lineStyle.color = c; }));
+    linesForm->addRow(tr("C&olour:"),
+        makeColorButton(
+            tr("Line colour"), [](const model::Look& l) { return l.lineStyle.color; },
+            [](model::Look& l, const Eigen::Vector3f& c) { l.lineStyle.color = c; }));
     const std::tuple<QString, float algo::LineStyle::*, double, double, double, QString> styleControls[] = {
         {tr("O&utline width:"), &algo::LineStyle::outlineWidth, 0, 50, 0.25, tr("Silhouettes and borders, pixels")},
         {tr("&Inner width:"), &algo::LineStyle::innerWidth, 0, 50, 0.25, tr("Creases and material boundaries, pixels")},
         {tr("&Jitter:"), &algo::LineStyle::jitter, 0, 20, 0.25, tr("Hand-drawn jagged offset, pixels")},
-        {tr("Width &variation:"), &algo::LineStyle::widthVariation, 0, 1, 0.05, tr("Relative change of width along strokes")},
+        {tr("Width &variation:"), &algo::LineStyle::widthVariation, 0, 1, 0.05,
+            tr("Relative change of width along strokes")},
         {tr("O&vershoot:"), &algo::LineStyle::overshoot, 0, 50, 0.5, tr("Extension of stroke ends, pixels")}};
     for (const auto& [label, member, lo, hi, step, tip] : styleControls) {
         QDoubleSpinBox* spin = makeSpin(lo, hi, step, 2, tip);
         linesForm->addRow(label, spin);
         const auto m = member;
         connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-                [this, m](double v) { edit([m, v](model::Look& l) { l.lineStyle.*m = float(v); }); });
+            [this, m](double v) { edit([m, v](model::Look& l) { l.lineStyle.*m = float(v); }); });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.lineStyle.*m); });
     }
     layout->addWidget(linesBox);
@@ -278,10 +297,10 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(paren
     auto* stereoBox = new QGroupBox(tr("Stereo"), content);
     auto* stereoForm = new QFormLayout(stereoBox);
     auto* output = new QComboBox(stereoBox);
-    const std::pair<QString, algo::StereoOutput> outputs[] = {
-        {tr("Red/cyan anaglyph"), algo::StereoOutput::Anaglyph}, {tr("Dubois red/cyan"), algo::StereoOutput::Dubois},
-        {tr("Half-colour anaglyph"), algo::StereoOutput::HalfColor}, {tr("Side by side"), algo::StereoOutput::SideBySide},
-        {tr("Top and bottom"), algo::StereoOutput::TopBottom}};
+    const std::pair<QString, algo::StereoOutput> outputs[] = {{tr("Red/cyan anaglyph"), algo::StereoOutput::Anaglyph},
+        {tr("Dubois red/cyan"), algo::StereoOutput::Dubois},
+        {tr("Half-colour anaglyph"), algo::StereoOutput::HalfColor},
+        {tr("Side by side"), algo::StereoOutput::SideBySide}, {tr("Top and bottom"), algo::StereoOutput::TopBottom}};
     for (const auto& [label, value] : outputs)
         output->addItem(label, int(value));
     output->setToolTip(tr("How the two eyes are combined in the stereo review and stereo renders"));
@@ -290,21 +309,24 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(paren
         const auto o = algo::StereoOutput(output->itemData(index).toInt());
         edit([o](model::Look& l) { l.stereo.output = o; });
     });
-    m_refreshers.push_back(
-        [this, output] { output->setCurrentIndex(std::max(0, output->findData(int(m_document->data().look.stereo.output)))); });
-    QDoubleSpinBox* interocular = makeSpin(0, 1e4, 0.005, 4, tr("Distance between the eyes, model units; 0 = automatic "
-                                                                   "(a thirtieth of the convergence distance)"));
+    m_refreshers.push_back([this, output] {
+        output->setCurrentIndex(std::max(0, output->findData(int(m_document->data().look.stereo.output))));
+    });
+    QDoubleSpinBox* interocular = makeSpin(0, 1e4, 0.005, 4,
+        tr("Distance between the eyes, model units; 0 = automatic "
+           "(a thirtieth of the convergence distance)"));
     interocular->setSpecialValueText(tr("Automatic"));
     stereoForm->addRow(tr("&Interocular:"), interocular);
     connect(interocular, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this](double v) { edit([v](model::Look& l) { l.stereo.interocular = v; }); });
+        [this](double v) { edit([v](model::Look& l) { l.stereo.interocular = v; }); });
     m_refreshers.push_back([this, interocular] { interocular->setValue(m_document->data().look.stereo.interocular); });
-    QDoubleSpinBox* convergence = makeSpin(0, 1e6, 0.05, 3, tr("Distance of the zero-parallax plane from the camera; "
-                                                                  "0 = automatic (the model's centre)"));
+    QDoubleSpinBox* convergence = makeSpin(0, 1e6, 0.05, 3,
+        tr("Distance of the zero-parallax plane from the camera; "
+           "0 = automatic (the model's centre)"));
     convergence->setSpecialValueText(tr("Automatic"));
     stereoForm->addRow(tr("&Convergence:"), convergence);
     connect(convergence, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this](double v) { edit([v](model::Look& l) { l.stereo.convergence = v; }); });
+        [this](double v) { edit([v](model::Look& l) { l.stereo.convergence = v; }); });
     m_refreshers.push_back([this, convergence] { convergence->setValue(m_document->data().look.stereo.convergence); });
     auto* toeIn = new QCheckBox(tr("&Toe-in (instead of off-axis)"), stereoBox);
     toeIn->setToolTip(tr("Rotate the eyes towards the convergence point; off-axis (the default) avoids the keystone "
@@ -314,7 +336,8 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent) : QWidget(paren
     m_refreshers.push_back([this, toeIn] { toeIn->setChecked(m_document->data().look.stereo.toeIn); });
     auto* swap = new QCheckBox(tr("S&wap eyes"), stereoBox);
     stereoForm->addRow(swap);
-    connect(swap, &QCheckBox::toggled, this, [this](bool on) { edit([on](model::Look& l) { l.stereo.swapEyes = on; }); });
+    connect(
+        swap, &QCheckBox::toggled, this, [this](bool on) { edit([on](model::Look& l) { l.stereo.swapEyes = on; }); });
     m_refreshers.push_back([this, swap] { swap->setChecked(m_document->data().look.stereo.swapEyes); });
     layout->addWidget(stereoBox);
     layout->addStretch(1);
@@ -335,8 +358,9 @@ QDoubleSpinBox* LookPanel::makeSpin(double min, double max, double step, int dec
     return spin;
 }
 
-QToolButton* LookPanel::makeColorButton(const QString& tip, const std::function<Eigen::Vector3f(const model::Look&)>& get,
-                                        const std::function<void(model::Look&, const Eigen::Vector3f&)>& set)
+QToolButton* LookPanel::makeColorButton(const QString& tip,
+    const std::function<Eigen::Vector3f(const model::Look&)>& get,
+    const std::function<void(model::Look&, const Eigen::Vector3f&)>& set)
 {
     auto* button = new QToolButton(this);
     button->setToolTip(tip);
@@ -378,10 +402,11 @@ void LookPanel::rebuildTones()
         intensity->setValue(toon.intensities[std::size_t(i)]);
         h->addWidget(intensity);
         connect(intensity, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-                [this, i](double v) { edit([i, v](model::Look& l) { l.toon.intensities[std::size_t(i)] = float(v); }); });
+            [this, i](double v) { edit([i, v](model::Look& l) { l.toon.intensities[std::size_t(i)] = float(v); }); });
         if (i > 0) {
             h->addWidget(new QLabel(tr("from N·L"), row));
-            QDoubleSpinBox* threshold = makeSpin(-1.5, 1.5, 0.05, 2, tr("The tone starts where N·L + offset reaches this value"));
+            QDoubleSpinBox* threshold
+                = makeSpin(-1.5, 1.5, 0.05, 2, tr("The tone starts where N·L + offset reaches this value"));
             threshold->setValue(toon.thresholds[std::size_t(i - 1)]);
             h->addWidget(threshold);
             connect(threshold, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i](double v) {
@@ -390,7 +415,10 @@ void LookPanel::rebuildTones()
             m_thresholds.push_back(threshold);
         }
         m_intensities.push_back(intensity);
-        m_toneForm->addRow(i == count - 1 ? tr("Brightest:") : i == 0 ? tr("Darkest:") : tr("Tone %1:").arg(i + 1), row);
+        m_toneForm->addRow(i == count - 1 ? tr("Brightest:")
+                : i == 0                  ? tr("Darkest:")
+                                          : tr("Tone %1:").arg(i + 1),
+            row);
     }
 }
 
