@@ -48,9 +48,10 @@ bool vertexTangentFramesFromUvs(const TriMesh& mesh, const Positions& normals, P
 /// Per-vertex frames from a guide direction, smoothed over a face patch (the paper's single
 /// patch; empty patchFaces = all faces). Each vertex starts from the guide projected on its
 /// tangent plane, weighted by the projection's length, and `iterations` rounds of averaging with
-/// its patch neighbours fill in where the guide is nearly normal to the surface (a sphere's
-/// pole). Vertices outside the patch get zero rows. normals: #V by 3 unit. Returns false on
-/// sizes that do not match or a zero guide.
+/// its patch neighbours smooth the field and fill in where the guide is nearly normal to the
+/// surface (an isolated zero such as a sphere's pole, where the projections point radially and cancel, stays a
+/// fallback). Vertices outside the patch get zero rows. normals: #V by 3 unit. Returns false on sizes that do not match
+/// or a zero guide.
 bool guideVertexFrames(const Positions& vertices, const Faces& faces, const Positions& normals,
     const std::vector<std::int32_t>& patchFaces, const Eigen::Vector3f& guide, int iterations, Positions& du,
     Positions& dv);
@@ -62,6 +63,9 @@ enum class HighlightOperationType {
     DirectionalScaling, ///< a = delta in [0, 1]: eq. 4, stretches the area along du
     Split, ///< a = gamma1, b = gamma2 >= 0: cuts the area across du / dv
     Squaring, ///< a = sigma in [0, 1], b = n >= 1 (an integer in the paper)
+    ///< The area becomes a rounded square along du, dv (reading of the printed formula in
+    ///< highlights.cpp); around sigma 0.2 (n = 2) it is squarest, larger sigma or n pull the
+    ///< corners out along the diagonals towards a four-pointed star.
 };
 
 struct HighlightOperation {
@@ -69,10 +73,19 @@ struct HighlightOperation {
     float a = 0.0f;
     float b = 0.0f;
 
-    static HighlightOperation translation(float alpha, float beta) { return {HighlightOperationType::Translation, alpha, beta}; }
+    static HighlightOperation translation(float alpha, float beta)
+    {
+        return {HighlightOperationType::Translation, alpha, beta};
+    }
     static HighlightOperation rotation(float degrees) { return {HighlightOperationType::Rotation, degrees, 0.0f}; }
-    static HighlightOperation directionalScaling(float delta) { return {HighlightOperationType::DirectionalScaling, delta, 0.0f}; }
-    static HighlightOperation split(float gamma1, float gamma2) { return {HighlightOperationType::Split, gamma1, gamma2}; }
+    static HighlightOperation directionalScaling(float delta)
+    {
+        return {HighlightOperationType::DirectionalScaling, delta, 0.0f};
+    }
+    static HighlightOperation split(float gamma1, float gamma2)
+    {
+        return {HighlightOperationType::Split, gamma1, gamma2};
+    }
     static HighlightOperation squaring(float sigma, float n) { return {HighlightOperationType::Squaring, sigma, n}; }
     bool operator==(const HighlightOperation& o) const { return type == o.type && a == o.a && b == o.b; }
 };
@@ -147,9 +160,10 @@ struct HighlightSample {
 Eigen::Vector3f halfwayVector(const Eigen::Vector3f& position, const HighlightLight& light, const Eigen::Vector3f& eye);
 
 /// The highlight vector after the operations (in order), starting from H at a point with this
-/// unit normal and frame. Unit, or zero where an operation cancelled it.
-Eigen::Vector3f applyHighlightOperations(const Eigen::Vector3f& halfway, const Eigen::Vector3f& normal,
-    const HighlightFrame& frame, const std::vector<HighlightOperation>& operations);
+/// frame. Unit, or zero where an operation cancelled it. The normal is not needed: every
+/// operation adds tangent vectors only, so (N, H) changes through the normalisation alone.
+Eigen::Vector3f applyHighlightOperations(
+    const Eigen::Vector3f& halfway, const HighlightFrame& frame, const std::vector<HighlightOperation>& operations);
 
 /// Paper eq. 2: Phi(p, N, H) = (N, H) for the shape's vector field; the point is in the area iff
 /// Phi > 1 - epsilon (eq. 3).
