@@ -244,7 +244,8 @@ model::Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector
     const Eigen::Vector3d centre = algo::centroid(data.baseMesh->vertices);
     // The sphere around the centroid holding every vertex fits the narrower field of view.
     const double radius = std::max(
-        std::sqrt((data.baseMesh->vertices.cast<double>().rowwise() - centre.transpose()).rowwise().squaredNorm().maxCoeff()),
+        std::sqrt(
+            (data.baseMesh->vertices.cast<double>().rowwise() - centre.transpose()).rowwise().squaredNorm().maxCoeff()),
         1e-6);
     const double halfY = camera.fovYDegrees * M_PI / 360.0;
     const double halfMin = std::min(halfY, std::atan(std::tan(halfY) * aspect));
@@ -474,10 +475,9 @@ model::Light parseLight(const QString& value)
 /// Parses a shading style name.
 model::ShadingStyle parseStyle(const QString& text)
 {
-    const std::pair<const char*, model::ShadingStyle> styles[] = {{"toon", model::ShadingStyle::Toon},
-                                                                  {"gooch", model::ShadingStyle::Gooch},
-                                                                  {"comic", model::ShadingStyle::Comic},
-                                                                  {"lambert", model::ShadingStyle::Lambert}};
+    const std::pair<const char*, model::ShadingStyle> styles[]
+        = {{"toon", model::ShadingStyle::Toon}, {"gooch", model::ShadingStyle::Gooch},
+            {"comic", model::ShadingStyle::Comic}, {"lambert", model::ShadingStyle::Lambert}};
     for (const auto& [name, style] : styles)
         if (text == QLatin1String(name))
             return style;
@@ -526,10 +526,10 @@ int commandSet(const QStringList& args)
         else
             throw UsageError{Cli::tr("--unspecified takes dummy, cosine or cosine2, not “%1”").arg(m)};
     }
-    const std::optional<model::Light> newLight =
-        parser.isSet(light) ? std::optional<model::Light>(parseLight(parser.value(light))) : std::nullopt;
-    const std::optional<model::ShadingStyle> newStyle =
-        parser.isSet(style) ? std::optional<model::ShadingStyle>(parseStyle(parser.value(style))) : std::nullopt;
+    const std::optional<model::Light> newLight
+        = parser.isSet(light) ? std::optional<model::Light>(parseLight(parser.value(light))) : std::nullopt;
+    const std::optional<model::ShadingStyle> newStyle
+        = parser.isSet(style) ? std::optional<model::ShadingStyle>(parseStyle(parser.value(style))) : std::nullopt;
 
     auto doc = openProject(path);
     blend = doc->data().blend;
@@ -575,7 +575,8 @@ QString framePath(const QString& pattern, int frame, bool sequence)
     if (!sequence)
         return pattern;
     const QFileInfo info(pattern);
-    return info.dir().filePath(QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(frame, 4, 10, QLatin1Char('0')).arg(info.suffix()));
+    return info.dir().filePath(
+        QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(frame, 4, 10, QLatin1Char('0')).arg(info.suffix()));
 }
 
 int commandRender(const QStringList& args)
@@ -588,19 +589,28 @@ int commandRender(const QStringList& args)
     QCommandLineParser parser;
     parser.setApplicationDescription(Cli::tr("Renders the project's look without a display (CPU renderer)."));
     parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
-    const QCommandLineOption view(QStringLiteral("view"), Cli::tr("View direction from the model's centroid towards the eye."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption view(QStringLiteral("view"),
+        Cli::tr("View direction from the model's centroid towards the eye."), QStringLiteral("X,Y,Z"));
     const QCommandLineOption eye(QStringLiteral("eye"), Cli::tr("Camera position."), QStringLiteral("X,Y,Z"));
-    const QCommandLineOption target(QStringLiteral("target"), Cli::tr("Point the camera looks at."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption target(
+        QStringLiteral("target"), Cli::tr("Point the camera looks at."), QStringLiteral("X,Y,Z"));
     const QCommandLineOption up(QStringLiteral("up"), Cli::tr("Camera up vector."), QStringLiteral("X,Y,Z"));
-    const QCommandLineOption frame(QStringLiteral("frame"), Cli::tr("Frame to render (default 0)."), QStringLiteral("F"));
-    const QCommandLineOption frames(QStringLiteral("frames"), Cli::tr("Frames to render, A-B inclusive."), QStringLiteral("A-B"));
-    const QCommandLineOption size(QStringLiteral("size"), Cli::tr("Image size (default 1280x720)."), QStringLiteral("WxH"));
-    const QCommandLineOption style(QStringLiteral("style"), Cli::tr("Shading style for this render."), QStringLiteral("STYLE"));
-    const QCommandLineOption lines(QStringLiteral("lines"), Cli::tr("Draw the lines (on) or not (off)."), QStringLiteral("on|off"));
-    const QCommandLineOption light(QStringLiteral("light"), Cli::tr("Key light for this render."), QStringLiteral("TYPE:X,Y,Z"));
+    const QCommandLineOption frame(
+        QStringLiteral("frame"), Cli::tr("Frame to render (default 0)."), QStringLiteral("F"));
+    const QCommandLineOption frames(
+        QStringLiteral("frames"), Cli::tr("Frames to render, A-B inclusive."), QStringLiteral("A-B"));
+    const QCommandLineOption size(
+        QStringLiteral("size"), Cli::tr("Image size (default 1280x720)."), QStringLiteral("WxH"));
+    const QCommandLineOption style(
+        QStringLiteral("style"), Cli::tr("Shading style for this render."), QStringLiteral("STYLE"));
+    const QCommandLineOption lines(
+        QStringLiteral("lines"), Cli::tr("Draw the lines (on) or not (off)."), QStringLiteral("on|off"));
+    const QCommandLineOption light(
+        QStringLiteral("light"), Cli::tr("Key light for this render."), QStringLiteral("TYPE:X,Y,Z"));
     const QCommandLineOption stereo(QStringLiteral("stereo"), Cli::tr("Stereo output."), QStringLiteral("MODE"));
     const QCommandLineOption pass(QStringLiteral("pass"), Cli::tr("Write one render pass."), QStringLiteral("NAME"));
-    const QCommandLineOption out(QStringLiteral("out"), Cli::tr("Output image (default: the project's name with .png)."), QStringLiteral("FILE"));
+    const QCommandLineOption out(QStringLiteral("out"),
+        Cli::tr("Output image (default: the project's name with .png)."), QStringLiteral("FILE"));
     parser.addOptions({view, eye, target, up, frame, frames, size, style, lines, light, stereo, pass, out});
     parseOrThrow(parser, args, 1, synopsis);
 
@@ -623,8 +633,8 @@ int commandRender(const QStringList& args)
             throw UsageError{Cli::tr("--frames takes A-B with A <= B, not “%1”").arg(parser.value(frames))};
     }
     const QSize imageSize = parser.isSet(size) ? parseSize(parser.value(size)) : QSize(1280, 720);
-    const std::optional<model::ShadingStyle> styleOverride =
-        parser.isSet(style) ? std::optional<model::ShadingStyle>(parseStyle(parser.value(style))) : std::nullopt;
+    const std::optional<model::ShadingStyle> styleOverride
+        = parser.isSet(style) ? std::optional<model::ShadingStyle>(parseStyle(parser.value(style))) : std::nullopt;
     std::optional<bool> linesOverride;
     if (parser.isSet(lines)) {
         const QString v = parser.value(lines);
@@ -632,15 +642,15 @@ int commandRender(const QStringList& args)
             throw UsageError{Cli::tr("--lines takes on or off, not “%1”").arg(v)};
         linesOverride = v == QLatin1String("on");
     }
-    const std::optional<model::Light> lightOverride =
-        parser.isSet(light) ? std::optional<model::Light>(parseLight(parser.value(light))) : std::nullopt;
+    const std::optional<model::Light> lightOverride
+        = parser.isSet(light) ? std::optional<model::Light>(parseLight(parser.value(light))) : std::nullopt;
     algo::StereoOutput stereoOutput = algo::StereoOutput::Off;
     if (parser.isSet(stereo)) {
         const QString v = parser.value(stereo);
-        const std::pair<const char*, algo::StereoOutput> modes[] = {
-            {"off", algo::StereoOutput::Off},          {"anaglyph", algo::StereoOutput::Anaglyph},
-            {"dubois", algo::StereoOutput::Dubois},    {"halfcolor", algo::StereoOutput::HalfColor},
-            {"sbs", algo::StereoOutput::SideBySide},   {"tb", algo::StereoOutput::TopBottom}};
+        const std::pair<const char*, algo::StereoOutput> modes[]
+            = {{"off", algo::StereoOutput::Off}, {"anaglyph", algo::StereoOutput::Anaglyph},
+                {"dubois", algo::StereoOutput::Dubois}, {"halfcolor", algo::StereoOutput::HalfColor},
+                {"sbs", algo::StereoOutput::SideBySide}, {"tb", algo::StereoOutput::TopBottom}};
         bool found = false;
         for (const auto& [n, m] : modes)
             if (v == QLatin1String(n)) {
@@ -652,15 +662,17 @@ int commandRender(const QStringList& args)
     }
     const QString passName = parser.value(pass);
     if (parser.isSet(pass) && !model::renderPassNames().contains(passName))
-        throw UsageError{Cli::tr("--pass takes one of %1, not “%2”").arg(model::renderPassNames().join(QStringLiteral(", ")), passName)};
+        throw UsageError{Cli::tr("--pass takes one of %1, not “%2”")
+                             .arg(model::renderPassNames().join(QStringLiteral(", ")), passName)};
     if (stereoOutput != algo::StereoOutput::Off && parser.isSet(pass) && passName != QLatin1String("beauty"))
         throw UsageError{Cli::tr("a stereo render writes the beauty pass only")};
     const QString path = parser.positionalArguments().front();
-    const QString outPattern = parser.isSet(out) ? parser.value(out)
-                                                 : QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".png"));
+    const QString outPattern = parser.isSet(out)
+        ? parser.value(out)
+        : QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".png"));
     const QString suffix = QFileInfo(outPattern).suffix().toLower();
     if (!QStringList{QStringLiteral("png"), QStringLiteral("exr"), QStringLiteral("tif"), QStringLiteral("tiff"),
-                     QStringLiteral("jpg"), QStringLiteral("jpeg")}
+            QStringLiteral("jpg"), QStringLiteral("jpeg")}
              .contains(suffix))
         throw UsageError{Cli::tr("--out must end in .png, .exr, .tif or .jpg, not “%1”").arg(outPattern)};
 
@@ -701,15 +713,15 @@ int commandRender(const QStringList& args)
     for (int f = firstFrame; f <= lastFrame; ++f) {
         algo::Positions shape;
         blender.shape(data, direction, f, shape);
-        const algo::RenderPasses passes =
-            model::renderShape(data, look, shape, camera, imageSize.width(), imageSize.height(), stereoOutput, cache);
+        const algo::RenderPasses passes
+            = model::renderShape(data, look, shape, camera, imageSize.width(), imageSize.height(), stereoOutput, cache);
         const QString target = framePath(outPattern, f, sequence);
         if (suffix == QLatin1String("exr") && !parser.isSet(pass) && stereoOutput == algo::StereoOutput::Off)
             model::writePassesExr(passes, target);
         else
             model::writeImage(model::passImage(passes, parser.isSet(pass) ? passName : QStringLiteral("beauty"),
-                                               suffix == QLatin1String("exr")),
-                              target);
+                                  suffix == QLatin1String("exr")),
+                target);
     }
     return kExitOk;
 }
@@ -742,9 +754,9 @@ int runCommandLine(const QStringList& arguments)
             "point:X,Y,Z|directional:X,Y,Z] "
             "[--style toon|gooch|comic|lambert]\n"
             "  celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
-        "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] [--light TYPE:X,Y,Z] "
-        "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] [--pass NAME] [--out FILE.png|.exr|.tif]\n"
-        "  celform --version\n"
+            "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] [--light TYPE:X,Y,Z] "
+            "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] [--pass NAME] [--out FILE.png|.exr|.tif]\n"
+            "  celform --version\n"
             "Exit codes: 0 success, 2 usage error, 3 bad input.");
     try {
         if (first == QLatin1String("--version") || first == QLatin1String("-v")) {

@@ -27,6 +27,9 @@ inline const algo::TriMesh* sharedMesh(const char* relative)
     return slot.get();
 }
 
-inline const algo::TriMesh* dragon() { return sharedMesh("meshes/stanford_dragon.ply"); }
+inline const algo::TriMesh* dragon()
+{
+    return sharedMesh("meshes/stanford_dragon.ply");
+}
 
 } // namespace celform::bench

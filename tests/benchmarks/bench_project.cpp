@@ -22,7 +22,8 @@ using namespace celform;
 const model::ProjectData* dragonProject()
 {
     static std::unique_ptr<model::ProjectData> project = [] {
-        const QString path = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/stanford_dragon.ply"));
+        const QString path
+            = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/stanford_dragon.ply"));
         if (!QFileInfo::exists(path))
             return std::unique_ptr<model::ProjectData>();
         auto data = std::make_unique<model::ProjectData>();
@@ -54,7 +55,10 @@ const model::ProjectData* dragonProject()
     return project.get();
 }
 
-QString benchFile(const QTemporaryDir& dir) { return dir.filePath(QStringLiteral("dragon.celform")); }
+QString benchFile(const QTemporaryDir& dir)
+{
+    return dir.filePath(QStringLiteral("dragon.celform"));
+}
 
 void BM_SaveProject(benchmark::State& state)
 {
@@ -113,5 +117,9 @@ void BM_WriteReadSameBytes(benchmark::State& state)
 
 BENCHMARK(BM_SaveProject)->Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_OpenProject)->Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(5)->ReportAggregatesOnly(true);
-BENCHMARK(BM_WriteReadSameBytes)->Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_WriteReadSameBytes)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
 BENCHMARK_MAIN();

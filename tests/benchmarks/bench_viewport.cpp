@@ -33,7 +33,8 @@ Scene& scene()
         return scene;
     built = true;
     {
-        const QString path = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/cgal_armadillo.off"));
+        const QString path
+            = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/cgal_armadillo.off"));
         if (!QFileInfo::exists(path) || qEnvironmentVariableIsEmpty("DISPLAY"))
             return scene;
         model::ProjectData data;
@@ -87,13 +88,29 @@ void orbitFrames(benchmark::State& state, bool preview)
     state.counters["frames"] = double(s.viewport->renderCount() - before);
 }
 
-void BM_OrbitArmadillo(benchmark::State& state) { orbitFrames(state, false); }
-void BM_OrbitArmadilloPreview(benchmark::State& state) { orbitFrames(state, true); }
+void BM_OrbitArmadillo(benchmark::State& state)
+{
+    orbitFrames(state, false);
+}
+void BM_OrbitArmadilloPreview(benchmark::State& state)
+{
+    orbitFrames(state, true);
+}
 
 } // namespace
 
-BENCHMARK(BM_OrbitArmadillo)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0)->Repetitions(3)->ReportAggregatesOnly(true);
-BENCHMARK(BM_OrbitArmadilloPreview)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_OrbitArmadillo)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_OrbitArmadilloPreview)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
 
 int main(int argc, char** argv)
 {

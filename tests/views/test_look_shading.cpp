@@ -38,7 +38,6 @@ constexpr int kSize = 400;
 constexpr int kBand = 2; // pixels excluded on each side of silhouettes and tone boundaries
 constexpr int kTriadPixels = 92; // the axes triad's corner (bottom left), not the model
 
-
 int encode8(float linear)
 {
     return int(std::lround(celform::algo::linearToSrgb(std::clamp(linear, 0.f, 1.f)) * 255.f));

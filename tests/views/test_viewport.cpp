@@ -30,7 +30,6 @@ using celform::views::Viewport;
 
 namespace {
 
-
 std::shared_ptr<TriMesh> importShared(const QString& relative)
 {
     const QString path = celform::test::sharedDataPath(relative);

@@ -26,10 +26,10 @@ struct EdgeTopology {
 EdgeTopology buildEdgeTopology(const Faces& faces, std::int32_t vertexCount);
 
 enum LineKind : std::uint8_t {
-    kSilhouette = 1,        ///< between a front- and a back-facing triangle
-    kCrease = 2,            ///< dihedral angle above the threshold
-    kBorder = 4,            ///< open edge
-    kMaterialBoundary = 8,  ///< between two materials
+    kSilhouette = 1, ///< between a front- and a back-facing triangle
+    kCrease = 2, ///< dihedral angle above the threshold
+    kBorder = 4, ///< open edge
+    kMaterialBoundary = 8, ///< between two materials
 };
 
 struct LineSettings {
@@ -66,8 +66,8 @@ struct FeatureEdges {
 /// Non-manifold edges are reported as creases when settings.creases is set. out is cleared and
 /// reused; per-face scratch is kept per thread, so steady-state frames do not allocate.
 void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeTopology& topology,
-                         const std::vector<std::int32_t>& faceMaterials, const LineView& view,
-                         const LineSettings& settings, FeatureEdges& out);
+    const std::vector<std::int32_t>& faceMaterials, const LineView& view, const LineSettings& settings,
+    FeatureEdges& out);
 
 /// Feature edges joined into polylines through vertices where exactly two edges of the same
 /// kind class (outline: silhouette or border; inner: crease or material) meet.
@@ -83,11 +83,11 @@ std::vector<Stroke> chainStrokes(const EdgeTopology& topology, const FeatureEdge
 /// vertex indices so it stays coherent from frame to frame.
 struct LineStyle {
     Eigen::Vector3f color{0.06f, 0.05f, 0.05f};
-    float outlineWidth = 3.0f;   ///< silhouettes and borders, pixels
-    float innerWidth = 1.5f;     ///< creases and material boundaries, pixels
-    float jitter = 0.0f;         ///< jagged offset amplitude, pixels
+    float outlineWidth = 3.0f; ///< silhouettes and borders, pixels
+    float innerWidth = 1.5f; ///< creases and material boundaries, pixels
+    float jitter = 0.0f; ///< jagged offset amplitude, pixels
     float widthVariation = 0.0f; ///< relative, 0 = constant width
-    float overshoot = 0.0f;      ///< extension at stroke ends, pixels
+    float overshoot = 0.0f; ///< extension at stroke ends, pixels
     std::uint32_t seed = 1;
     bool operator==(const LineStyle& o) const
     {
@@ -108,17 +108,16 @@ struct StyledStroke {
 /// Projects strokes with project(vertex position) -> (x, y, depth) and applies the style.
 /// Points behind the camera (depth <= 0) split a stroke.
 template <typename Project>
-std::vector<StyledStroke> styleStrokes(const std::vector<Stroke>& strokes, const Positions& shape,
-                                       const LineStyle& style, Project project);
+std::vector<StyledStroke> styleStrokes(
+    const std::vector<Stroke>& strokes, const Positions& shape, const LineStyle& style, Project project);
 
 /// Non-template core of styleStrokes: strokes already projected (xyz = pixel x, pixel y, depth).
-std::vector<StyledStroke> styleProjectedStrokes(const std::vector<Stroke>& strokes,
-                                                const std::vector<Eigen::Vector3f>& projected,
-                                                const LineStyle& style);
+std::vector<StyledStroke> styleProjectedStrokes(
+    const std::vector<Stroke>& strokes, const std::vector<Eigen::Vector3f>& projected, const LineStyle& style);
 
 template <typename Project>
-std::vector<StyledStroke> styleStrokes(const std::vector<Stroke>& strokes, const Positions& shape,
-                                       const LineStyle& style, Project project)
+std::vector<StyledStroke> styleStrokes(
+    const std::vector<Stroke>& strokes, const Positions& shape, const LineStyle& style, Project project)
 {
     std::vector<Eigen::Vector3f> projected(std::size_t(shape.rows()));
     for (Eigen::Index v = 0; v < shape.rows(); ++v)

@@ -12,7 +12,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-float luminance(const Color& c) { return 0.2126f * c.x() + 0.7152f * c.y() + 0.0722f * c.z(); }
+float luminance(const Color& c)
+{
+    return 0.2126f * c.x() + 0.7152f * c.y() + 0.0722f * c.z();
+}
 
 Eigen::Vector3f lightDirection(const RenderLook& look, const Eigen::Vector3f& position)
 {
@@ -23,14 +26,15 @@ Eigen::Vector3f lightDirection(const RenderLook& look, const Eigen::Vector3f& po
 
 float offsetAt(const RenderLook& look, std::int32_t v)
 {
-    return (look.shadingOffsets && std::size_t(v) < look.shadingOffsets->size()) ? (*look.shadingOffsets)[std::size_t(v)]
-                                                                                  : 0.f;
+    return (look.shadingOffsets && std::size_t(v) < look.shadingOffsets->size())
+        ? (*look.shadingOffsets)[std::size_t(v)]
+        : 0.f;
 }
 
 } // namespace
 
 void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera& camera, const RenderLook& look,
-                 RenderCache& cache, RenderPasses& out, const RasterCamera* lineView)
+    RenderCache& cache, RenderPasses& out, const RasterCamera* lineView)
 {
     const int width = camera.width, height = camera.height;
     const auto pixelCount = std::size_t(width) * std::size_t(height);
@@ -56,9 +60,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         FeatureEdges features;
         extractFeatureEdges(shape, faces, cache.topology, mesh.faceMaterials, view, look.lineSettings, features);
         const std::vector<Stroke> strokes = chainStrokes(cache.topology, features);
-        const std::vector<StyledStroke> styled = styleStrokes(strokes, shape, look.lineStyle, [&](const Eigen::Vector3f& p) {
-            return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>());
-        });
+        const std::vector<StyledStroke> styled = styleStrokes(strokes, shape, look.lineStyle,
+            [&](const Eigen::Vector3f& p) { return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>()); });
         drawStrokes(styled, g, out.lines);
     }
 
@@ -71,7 +74,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         for (Eigen::Index v = 0; v < shape.rows(); ++v) {
             const Eigen::Vector3f p = shape.row(v);
             const Eigen::Vector3f n = normals.row(v);
-            vertexIntensity[std::size_t(v)] = lookupIntensity(table, n.dot(lightDirection(look, p)) + offsetAt(look, std::int32_t(v)));
+            vertexIntensity[std::size_t(v)]
+                = lookupIntensity(table, n.dot(lightDirection(look, p)) + offsetAt(look, std::int32_t(v)));
         }
     }
 
@@ -93,10 +97,12 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
             const std::int32_t f = g.faceId[i];
             if (f >= 0) {
                 const int material = mesh.faceMaterials.empty() ? 0 : mesh.faceMaterials[std::size_t(f)];
-                const Color base = std::size_t(material) < look.materialColors.size() ? look.materialColors[std::size_t(material)]
-                                                                                      : look.defaultColor;
-                const Style style = std::size_t(material) < look.materialStyles.size() ? look.materialStyles[std::size_t(material)]
-                                                                                      : look.style;
+                const Color base = std::size_t(material) < look.materialColors.size()
+                    ? look.materialColors[std::size_t(material)]
+                    : look.defaultColor;
+                const Style style = std::size_t(material) < look.materialStyles.size()
+                    ? look.materialStyles[std::size_t(material)]
+                    : look.style;
                 const Eigen::Vector3f position = g.position[i];
                 Eigen::Vector3f n = g.normal[i];
                 // Seen from behind (the inside of an open mesh), a surface is lit from the side
@@ -106,7 +112,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                 const Eigen::Vector3f l = lightDirection(look, position);
                 const Eigen::Vector3f bary = g.barycentric[i];
                 const std::int32_t a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-                const float offset = bary.x() * offsetAt(look, a) + bary.y() * offsetAt(look, b) + bary.z() * offsetAt(look, c);
+                const float offset
+                    = bary.x() * offsetAt(look, a) + bary.y() * offsetAt(look, b) + bary.z() * offsetAt(look, c);
                 const float lambert = n.dot(l) + offset;
                 float intensity = 0.f;
                 switch (style) {
@@ -116,8 +123,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                     break;
                 case Style::Toon:
                     if (look.toonEvaluation == ToonEvaluation::PerVertexLut) {
-                        intensity = bary.x() * vertexIntensity[std::size_t(a)] + bary.y() * vertexIntensity[std::size_t(b)]
-                            + bary.z() * vertexIntensity[std::size_t(c)];
+                        intensity = bary.x() * vertexIntensity[std::size_t(a)]
+                            + bary.y() * vertexIntensity[std::size_t(b)] + bary.z() * vertexIntensity[std::size_t(c)];
                     } else if (look.toonEvaluation == ToonEvaluation::PerFace) {
                         const Eigen::Vector3f pa = shape.row(a), pb = shape.row(b), pc = shape.row(c);
                         Eigen::Vector3f fn = (pb - pa).cross(pc - pa).normalized();
@@ -133,8 +140,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                     break;
                 case Style::Gooch:
                     color = goochShade(base, n, l,
-                                       std::size_t(material) < look.materialGooch.size() ? look.materialGooch[std::size_t(material)]
-                                                                                         : look.gooch);
+                        std::size_t(material) < look.materialGooch.size() ? look.materialGooch[std::size_t(material)]
+                                                                          : look.gooch);
                     intensity = luminance(color);
                     break;
                 case Style::Comic: {
@@ -142,8 +149,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                     const int tone = toonTone(look.toon, lambert);
                     const int toneCount = int(look.toon.intensities.size());
                     const double depth = g.depth[i];
-                    const float footprint = float(camera.orthographic ? camera.orthoHeight / height
-                                                                      : 2.0 * depth * tanHalf / height);
+                    const float footprint
+                        = float(camera.orthographic ? camera.orthoHeight / height : 2.0 * depth * tanHalf / height);
                     const float ink = hatchCoverage(position, n, tone, toneCount, look.hatch, footprint);
                     intensity = look.toon.intensities.back() * (1.f - ink);
                     color = base * look.toon.intensities.back() * (1.f - ink) + lineColor * ink;

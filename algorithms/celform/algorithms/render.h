@@ -37,13 +37,13 @@ struct RenderLook {
 
 /// One frame's passes (Pencil+ render elements, Blender view layers), all width x height.
 struct RenderPasses {
-    ImageRGBA beauty;              ///< the look: shading with lines, background, alpha = coverage of the model
-    std::vector<float> lines;      ///< line coverage in [0, 1]
-    std::vector<float> tone;       ///< shading intensity before colour (toon tone, Lambert or Gooch luminance)
+    ImageRGBA beauty; ///< the look: shading with lines, background, alpha = coverage of the model
+    std::vector<float> lines; ///< line coverage in [0, 1]
+    std::vector<float> tone; ///< shading intensity before colour (toon tone, Lambert or Gooch luminance)
     std::vector<float> highlights; ///< stylized highlights mask (empty until that issue fills it): zeros
-    std::vector<float> depth;      ///< distance along the view axis, +infinity off the model
+    std::vector<float> depth; ///< distance along the view axis, +infinity off the model
     std::vector<Eigen::Vector3f> normal; ///< model-space unit normal, zero off the model
-    std::vector<std::int32_t> id;  ///< face id, -1 off the model
+    std::vector<std::int32_t> id; ///< face id, -1 off the model
 };
 
 /// Topology data derived once per mesh and reused frame after frame (trimesh2-style caching).
@@ -56,6 +56,6 @@ struct RenderCache {
 /// materials. lineView lets stereo pairs take their lines from the centre eye (paper 3, section
 /// 4.2.2); null uses camera itself. Deterministic.
 void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera& camera, const RenderLook& look,
-                 RenderCache& cache, RenderPasses& out, const RasterCamera* lineView = nullptr);
+    RenderCache& cache, RenderPasses& out, const RasterCamera* lineView = nullptr);
 
 } // namespace celform::algo

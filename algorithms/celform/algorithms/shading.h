@@ -16,7 +16,7 @@ using Color = Eigen::Vector3f; ///< linear RGB in [0, 1]
 /// Tones of a toon ramp: a Lambert value s = N.L + offset (paper 3, equation 4.3) at or above
 /// thresholds[i] gives at least tone i + 1; tone intensities multiply the base colour.
 struct ToonRamp {
-    std::vector<float> thresholds{0.5f};     ///< ascending; tones.size() - 1 of them
+    std::vector<float> thresholds{0.5f}; ///< ascending; tones.size() - 1 of them
     std::vector<float> intensities{0.25f, 0.75f}; ///< darkest first (paper 3, section 3.3 defaults)
     [[nodiscard]] bool isValid() const;
     bool operator==(const ToonRamp& o) const { return thresholds == o.thresholds && intensities == o.intensities; }
@@ -24,9 +24,9 @@ struct ToonRamp {
 
 /// How the toon tone is evaluated, so artists can compare them (comic paper, "Shading").
 enum class ToonEvaluation {
-    PerPixel,     ///< N.L per pixel, hard tone boundaries
+    PerPixel, ///< N.L per pixel, hard tone boundaries
     PerVertexLut, ///< the comic paper: N.L per vertex through a 32-entry table, interpolated
-    PerFace,      ///< N.L per triangle (face normal): the comic paper's first, blocky attempt
+    PerFace, ///< N.L per triangle (face normal): the comic paper's first, blocky attempt
 };
 
 /// Index of the tone for a Lambert value (0 = darkest).
@@ -52,8 +52,8 @@ struct GoochParams {
     Color cool{0.1f, 0.25f, 1.0f}; ///< blue
     bool operator==(const GoochParams& o) const
     {
-        return preset == o.preset && ka == o.ka && k1 == o.k1 && k2 == o.k2 && k3 == o.k3 && k4 == o.k4 && warm == o.warm
-            && cool == o.cool;
+        return preset == o.preset && ka == o.ka && k1 == o.k1 && k2 == o.k2 && k3 == o.k3 && k4 == o.k4
+            && warm == o.warm && cool == o.cool;
     }
 };
 
@@ -69,9 +69,9 @@ Color goochShade(const Color& base, const Eigen::Vector3f& n, const Eigen::Vecto
 /// cross-hatching below it. Strokes are parallel stripes in object space (tri-planar, chosen by
 /// the normal's dominant axis), so they stay on the surface while the camera moves.
 struct HatchParams {
-    float spacing = 0.02f;      ///< distance between strokes, model units
+    float spacing = 0.02f; ///< distance between strokes, model units
     float angleDegrees = 45.0f; ///< stroke direction in the projection plane
-    float width = 0.35f;        ///< stroke width as a fraction of the spacing, (0, 1)
+    float width = 0.35f; ///< stroke width as a fraction of the spacing, (0, 1)
     bool operator==(const HatchParams& o) const
     {
         return spacing == o.spacing && angleDegrees == o.angleDegrees && width == o.width;
@@ -82,6 +82,6 @@ struct HatchParams {
 /// the brightest tone gets none, the next single strokes, darker ones cross-hatching.
 /// footprint is the size of a pixel in model units at that point, for anti-aliased stroke edges.
 float hatchCoverage(const Eigen::Vector3f& position, const Eigen::Vector3f& normal, int tone, int toneCount,
-                    const HatchParams& params, float footprint);
+    const HatchParams& params, float footprint);
 
 } // namespace celform::algo

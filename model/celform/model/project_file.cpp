@@ -77,16 +77,14 @@ template <> struct EnumNames<Projection> {
 };
 
 template <> struct EnumNames<algo::ToonEvaluation> {
-    static constexpr std::pair<algo::ToonEvaluation, const char*> list[] = {
-        {algo::ToonEvaluation::PerPixel, "pixel"},
-        {algo::ToonEvaluation::PerVertexLut, "vertex_lut"},
-        {algo::ToonEvaluation::PerFace, "face"}};
+    static constexpr std::pair<algo::ToonEvaluation, const char*> list[] = {{algo::ToonEvaluation::PerPixel, "pixel"},
+        {algo::ToonEvaluation::PerVertexLut, "vertex_lut"}, {algo::ToonEvaluation::PerFace, "face"}};
 };
 template <> struct EnumNames<algo::StereoOutput> {
-    static constexpr std::pair<algo::StereoOutput, const char*> list[] = {{algo::StereoOutput::Off, "off"},
-        {algo::StereoOutput::Anaglyph, "anaglyph"}, {algo::StereoOutput::Dubois, "dubois"},
-        {algo::StereoOutput::HalfColor, "halfcolor"}, {algo::StereoOutput::SideBySide, "sbs"},
-        {algo::StereoOutput::TopBottom, "tb"}};
+    static constexpr std::pair<algo::StereoOutput, const char*> list[]
+        = {{algo::StereoOutput::Off, "off"}, {algo::StereoOutput::Anaglyph, "anaglyph"},
+            {algo::StereoOutput::Dubois, "dubois"}, {algo::StereoOutput::HalfColor, "halfcolor"},
+            {algo::StereoOutput::SideBySide, "sbs"}, {algo::StereoOutput::TopBottom, "tb"}};
 };
 
 template <typename E> QString enumName(E value)
@@ -202,32 +200,33 @@ QJsonObject lookJson(const Look& look)
     const auto& g = look.gooch;
     const auto& l = look.lineStyle;
     const auto& st = look.stereo;
-    return {{"style", enumName(look.style)},
-            {"material_styles", materialStyles},
-            {"light", QJsonObject{{"type", enumName(look.light.type)}, {"vector", vec3(look.light.vector)}}},
-            {"background", vec3f(look.backgroundColor)},
-            {"toon", QJsonObject{{"thresholds", floats(look.toon.thresholds)},
-                                 {"intensities", floats(look.toon.intensities)},
-                                 {"evaluation", enumName(look.toonEvaluation)}}},
-            {"gooch", QJsonObject{{"preset", QString::fromStdString(g.preset)}, {"ka", double(g.ka)}, {"k1", double(g.k1)},
-                                  {"k2", double(g.k2)}, {"k3", double(g.k3)}, {"k4", double(g.k4)},
-                                  {"warm", vec3f(g.warm)}, {"cool", vec3f(g.cool)}}},
-            {"hatch", QJsonObject{{"spacing", double(look.hatch.spacing)},
-                                  {"angle_degrees", double(look.hatch.angleDegrees)},
-                                  {"width", double(look.hatch.width)}}},
-            {"lines", look.showLines},
-            {"line_kinds", QJsonObject{{"silhouettes", look.lines.silhouettes}, {"creases", look.lines.creases},
-                                       {"borders", look.lines.borders},
-                                       {"material_boundaries", look.lines.materialBoundaries},
-                                       {"crease_angle_degrees", double(look.lines.creaseAngleDegrees)}}},
-            {"line_style", QJsonObject{{"color", vec3f(l.color)}, {"outline_width", double(l.outlineWidth)},
-                                       {"inner_width", double(l.innerWidth)}, {"jitter", double(l.jitter)},
-                                       {"width_variation", double(l.widthVariation)},
-                                       {"overshoot", double(l.overshoot)}, {"seed", double(l.seed)}}},
-            {"stereo", QJsonObject{{"output", enumName(st.output)}, {"interocular", st.interocular},
-                                   {"convergence", st.convergence}, {"toe_in", st.toeIn}, {"swap_eyes", st.swapEyes},
-                                   {"dubois_left", matrix3(st.dubois.left)},
-                                   {"dubois_right", matrix3(st.dubois.right)}}}};
+    return {{"style", enumName(look.style)}, {"material_styles", materialStyles},
+        {"light", QJsonObject{{"type", enumName(look.light.type)}, {"vector", vec3(look.light.vector)}}},
+        {"background", vec3f(look.backgroundColor)},
+        {"toon",
+            QJsonObject{{"thresholds", floats(look.toon.thresholds)}, {"intensities", floats(look.toon.intensities)},
+                {"evaluation", enumName(look.toonEvaluation)}}},
+        {"gooch",
+            QJsonObject{{"preset", QString::fromStdString(g.preset)}, {"ka", double(g.ka)}, {"k1", double(g.k1)},
+                {"k2", double(g.k2)}, {"k3", double(g.k3)}, {"k4", double(g.k4)}, {"warm", vec3f(g.warm)},
+                {"cool", vec3f(g.cool)}}},
+        {"hatch",
+            QJsonObject{{"spacing", double(look.hatch.spacing)}, {"angle_degrees", double(look.hatch.angleDegrees)},
+                {"width", double(look.hatch.width)}}},
+        {"lines", look.showLines},
+        {"line_kinds",
+            QJsonObject{{"silhouettes", look.lines.silhouettes}, {"creases", look.lines.creases},
+                {"borders", look.lines.borders}, {"material_boundaries", look.lines.materialBoundaries},
+                {"crease_angle_degrees", double(look.lines.creaseAngleDegrees)}}},
+        {"line_style",
+            QJsonObject{{"color", vec3f(l.color)}, {"outline_width", double(l.outlineWidth)},
+                {"inner_width", double(l.innerWidth)}, {"jitter", double(l.jitter)},
+                {"width_variation", double(l.widthVariation)}, {"overshoot", double(l.overshoot)},
+                {"seed", double(l.seed)}}},
+        {"stereo",
+            QJsonObject{{"output", enumName(st.output)}, {"interocular", st.interocular},
+                {"convergence", st.convergence}, {"toe_in", st.toeIn}, {"swap_eyes", st.swapEyes},
+                {"dubois_left", matrix3(st.dubois.left)}, {"dubois_right", matrix3(st.dubois.right)}}}};
 }
 
 QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
@@ -295,8 +294,9 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
             {"time", enumName(data.blend.time)}});
     root.insert("look", lookJson(data.look));
     if (!data.shadingOffsets.empty()) {
-        root.insert("shading_offsets", QJsonObject{{"count", double(data.shadingOffsets.size())},
-                                                   {"values", chunks.addVector("mesh/shading_offsets", data.shadingOffsets)}});
+        root.insert("shading_offsets",
+            QJsonObject{{"count", double(data.shadingOffsets.size())},
+                {"values", chunks.addVector("mesh/shading_offsets", data.shadingOffsets)}});
     }
     root.insert("next_id", double(data.nextId));
     return root;
@@ -553,7 +553,8 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
             r.readVector(o, "faces", r.count(o, "count"), set.faces);
             for (auto f : set.faces)
                 if (f < 0 || f >= mesh->faces.rows())
-                    r.corrupt(ProjectFile::tr("face set “%1” refers to a face out of range").arg(QString::fromStdString(set.name)));
+                    r.corrupt(ProjectFile::tr("face set “%1” refers to a face out of range")
+                                  .arg(QString::fromStdString(set.name)));
             mesh->faceSets.push_back(std::move(set));
         }
         for (auto f : mesh->faceMaterials)
@@ -686,7 +687,7 @@ ProjectData loadProject(const QString& path)
     if (version > quint32(kProjectFormatVersion))
         throw IoError(path,
             ProjectFile::tr("was written by a newer version of Celform (file format %1; this version reads up "
-               "to %2). Please update Celform to open it.")
+                            "to %2). Please update Celform to open it.")
                 .arg(version)
                 .arg(kProjectFormatVersion));
     if (version == 0)
@@ -714,7 +715,7 @@ ProjectData loadProject(const QString& path)
     if (manifestVersion > kProjectFormatVersion)
         throw IoError(path,
             ProjectFile::tr("was written by a newer version of Celform (file format %1; this version reads up "
-               "to %2). Please update Celform to open it.")
+                            "to %2). Please update Celform to open it.")
                 .arg(manifestVersion)
                 .arg(kProjectFormatVersion));
     const Reader reader(path, bytes, size, root.value("chunks").toObject());

@@ -42,12 +42,12 @@ void commit(const QString& temporary, const QString& path)
 
 /// Writes channels of float data; 8-bit formats get sRGB-encoded colour channels.
 void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
-                   const std::vector<float>& data, bool encodeSrgb)
+    const std::vector<float>& data, bool encodeSrgb)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     const bool isFloat = suffix == QLatin1String("exr");
-    const QStringList known = {QStringLiteral("png"), QStringLiteral("tif"), QStringLiteral("tiff"), QStringLiteral("jpg"),
-                               QStringLiteral("jpeg"), QStringLiteral("exr")};
+    const QStringList known = {QStringLiteral("png"), QStringLiteral("tif"), QStringLiteral("tiff"),
+        QStringLiteral("jpg"), QStringLiteral("jpeg"), QStringLiteral("exr")};
     if (!known.contains(suffix))
         throw IoError(path, RenderOutput::tr("has an unknown image type; use .png, .tif, .jpg or .exr"));
     const int channels = int(names.size());
@@ -62,8 +62,9 @@ void writeChannels(const QString& path, int width, int height, const std::vector
     const QString temporary = temporaryBeside(path);
     auto out = OIIO::ImageOutput::create(QFile::encodeName(temporary).toStdString());
     if (!out || !out->open(QFile::encodeName(temporary).toStdString(), spec))
-        throw IoError(path, RenderOutput::tr("could not be written: %1")
-                                .arg(QString::fromStdString(out ? out->geterror() : OIIO::geterror())));
+        throw IoError(path,
+            RenderOutput::tr("could not be written: %1")
+                .arg(QString::fromStdString(out ? out->geterror() : OIIO::geterror())));
     bool ok = false;
     if (isFloat) {
         ok = out->write_image(OIIO::TypeDesc::FLOAT, data.data());
@@ -94,10 +95,14 @@ algo::RenderLook renderLookFor(const ProjectData& data, const Look& look)
     algo::RenderLook r;
     auto toAlgo = [](ShadingStyle s) {
         switch (s) {
-        case ShadingStyle::Lambert: return algo::Style::Lambert;
-        case ShadingStyle::Gooch: return algo::Style::Gooch;
-        case ShadingStyle::Comic: return algo::Style::Comic;
-        case ShadingStyle::Toon: break;
+        case ShadingStyle::Lambert:
+            return algo::Style::Lambert;
+        case ShadingStyle::Gooch:
+            return algo::Style::Gooch;
+        case ShadingStyle::Comic:
+            return algo::Style::Comic;
+        case ShadingStyle::Toon:
+            break;
         }
         return algo::Style::Toon;
     };
@@ -158,8 +163,7 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 }
 
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape,
-                               const Camera& camera, int width, int height, algo::StereoOutput stereo,
-                               algo::RenderCache& cache)
+    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache)
 {
     const algo::RenderLook renderLook = renderLookFor(data, look);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
@@ -167,18 +171,29 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
     algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);
     if (stereo == algo::StereoOutput::Off)
         return passes;
-    const auto [left, right] =
-        algo::stereoPair(centre, resolvedStereo(look.stereo, camera, algo::centroid(data.baseMesh->vertices)));
+    const auto [left, right]
+        = algo::stereoPair(centre, resolvedStereo(look.stereo, camera, algo::centroid(data.baseMesh->vertices)));
     algo::RenderPasses l, r;
     algo::renderFrame(shape, *data.baseMesh, left, renderLook, cache, l, &centre);
     algo::renderFrame(shape, *data.baseMesh, right, renderLook, cache, r, &centre);
     switch (stereo) {
-    case algo::StereoOutput::Anaglyph: passes.beauty = algo::composeAnaglyph(l.beauty, r.beauty); break;
-    case algo::StereoOutput::Dubois: passes.beauty = algo::composeDubois(l.beauty, r.beauty, look.stereo.dubois); break;
-    case algo::StereoOutput::HalfColor: passes.beauty = algo::composeHalfColor(l.beauty, r.beauty); break;
-    case algo::StereoOutput::SideBySide: passes.beauty = algo::composeSideBySide(l.beauty, r.beauty); break;
-    case algo::StereoOutput::TopBottom: passes.beauty = algo::composeTopBottom(l.beauty, r.beauty); break;
-    case algo::StereoOutput::Off: break;
+    case algo::StereoOutput::Anaglyph:
+        passes.beauty = algo::composeAnaglyph(l.beauty, r.beauty);
+        break;
+    case algo::StereoOutput::Dubois:
+        passes.beauty = algo::composeDubois(l.beauty, r.beauty, look.stereo.dubois);
+        break;
+    case algo::StereoOutput::HalfColor:
+        passes.beauty = algo::composeHalfColor(l.beauty, r.beauty);
+        break;
+    case algo::StereoOutput::SideBySide:
+        passes.beauty = algo::composeSideBySide(l.beauty, r.beauty);
+        break;
+    case algo::StereoOutput::TopBottom:
+        passes.beauty = algo::composeTopBottom(l.beauty, r.beauty);
+        break;
+    case algo::StereoOutput::Off:
+        break;
     }
     return passes;
 }
@@ -186,7 +201,7 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
 QStringList renderPassNames()
 {
     return {QStringLiteral("beauty"), QStringLiteral("lines"), QStringLiteral("tone"), QStringLiteral("highlights"),
-            QStringLiteral("depth"), QStringLiteral("normal"), QStringLiteral("id")};
+        QStringLiteral("depth"), QStringLiteral("normal"), QStringLiteral("id")};
 }
 
 algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile)
@@ -226,7 +241,8 @@ algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass,
         for (int i = 0; i < w * h; ++i) {
             const Eigen::Vector3f n = passes.normal[std::size_t(i)];
             for (int c = 0; c < 3; ++c)
-                image.pixels[std::size_t(i) * 4 + std::size_t(c)] = forFloatFile ? n[c] : (n == Eigen::Vector3f::Zero() ? 0.f : 0.5f * n[c] + 0.5f);
+                image.pixels[std::size_t(i) * 4 + std::size_t(c)]
+                    = forFloatFile ? n[c] : (n == Eigen::Vector3f::Zero() ? 0.f : 0.5f * n[c] + 0.5f);
         }
     } else if (pass == QLatin1String("id")) {
         for (int i = 0; i < w * h; ++i) {
@@ -242,10 +258,12 @@ algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass,
             std::uint32_t hsh = std::uint32_t(id) * 2654435761u;
             hsh ^= hsh >> 15;
             for (int c = 0; c < 3; ++c)
-                image.pixels[std::size_t(i) * 4 + std::size_t(c)] = algo::srgbToLinear(float((hsh >> (8 * c)) & 0xffu) / 255.f);
+                image.pixels[std::size_t(i) * 4 + std::size_t(c)]
+                    = algo::srgbToLinear(float((hsh >> (8 * c)) & 0xffu) / 255.f);
         }
     } else {
-        throw IoError(pass, RenderOutput::tr("is not a render pass; use one of %1").arg(renderPassNames().join(QStringLiteral(", "))));
+        throw IoError(pass,
+            RenderOutput::tr("is not a render pass; use one of %1").arg(renderPassNames().join(QStringLiteral(", "))));
     }
     return image;
 }
@@ -259,7 +277,7 @@ void writePassesExr(const algo::RenderPasses& passes, const QString& path)
 {
     const int w = passes.beauty.width, h = passes.beauty.height;
     const std::vector<std::string> names = {"R", "G", "B", "A", "lines.Y", "tone.Y", "highlights.Y", "depth.Z",
-                                            "normal.X", "normal.Y", "normal.Z", "id.ID"};
+        "normal.X", "normal.Y", "normal.Z", "id.ID"};
     const std::size_t channels = names.size();
     std::vector<float> data(std::size_t(w) * std::size_t(h) * channels);
     for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {

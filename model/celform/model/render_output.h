@@ -26,8 +26,7 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 /// paper 3, section 4.2.2). For stereo only the beauty pass is composed; the other passes are
 /// the centre eye's.
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape,
-                               const Camera& camera, int width, int height, algo::StereoOutput stereo,
-                               algo::RenderCache& cache);
+    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache);
 
 /// The pass names of `celform render --pass`.
 QStringList renderPassNames();

@@ -34,7 +34,7 @@ private:
     void rebuildTones();
     QDoubleSpinBox* makeSpin(double min, double max, double step, int decimals, const QString& tip);
     QToolButton* makeColorButton(const QString& tip, const std::function<Eigen::Vector3f(const model::Look&)>& get,
-                                 const std::function<void(model::Look&, const Eigen::Vector3f&)>& set);
+        const std::function<void(model::Look&, const Eigen::Vector3f&)>& set);
 
     model::Document* m_document;
     bool m_updating = false;

@@ -1285,7 +1285,7 @@ void Viewport::paintGL()
                 gl->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
                 gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
                 gl->glReadPixels(box.x(), centre.height - 1 - box.bottom(), box.width(), box.height(), GL_RGBA,
-                                 GL_UNSIGNED_BYTE, region.bits());
+                    GL_UNSIGNED_BYTE, region.bits());
                 region = region.mirrored();
                 makeOpaque(region);
                 blendLines(region, box.topLeft(), coverage, centre.width, currentLook().lineStyle.color);
@@ -1365,7 +1365,7 @@ algo::RasterCamera Viewport::vtkRasterCamera() const
 }
 
 QRect Viewport::lineCoverage(const algo::RasterCamera& camera, const algo::RasterCamera& lineEye,
-                             const std::vector<float>& depth, std::vector<float>& coverage)
+    const std::vector<float>& depth, std::vector<float>& coverage)
 {
     if (!m_document || !m_document->hasMesh())
         return {};
@@ -1430,7 +1430,8 @@ void Viewport::paintStereo()
     else if (m_eyeOnly == Eye::Right)
         shown = frames[1].color;
     else if (!frames[0].color.isNull() && !frames[1].color.isNull())
-        shown = toSrgb(composeStereo(m_stereo, toLinear(frames[0].color), toLinear(frames[1].color), stereoLook().dubois));
+        shown = toSrgb(
+            composeStereo(m_stereo, toLinear(frames[0].color), toLinear(frames[1].color), stereoLook().dubois));
     if (shown.isNull())
         return;
     // Side by side and top-bottom are squeezed into the widget, as 3D displays expect them.
@@ -1513,8 +1514,8 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     Drag drag = Drag::None;
     // Ctrl+left on the light gizmo's handle grabs the light (elsewhere Ctrl+left is the brush's).
     constexpr double kLightGrabPixels = 14.0;
-    const bool onLight = m_vtk->lightActor->GetVisibility() && button == Qt::LeftButton
-        && (mods & Qt::ControlModifier) && !(mods & Qt::AltModifier)
+    const bool onLight = m_vtk->lightActor->GetVisibility() && button == Qt::LeftButton && (mods & Qt::ControlModifier)
+        && !(mods & Qt::AltModifier)
         && QLineF(projectToWidget(lightGizmoHandle()), event->position()).length() <= kLightGrabPixels;
     if (onLight) {
         drag = Drag::Light;
@@ -1783,10 +1784,9 @@ void Viewport::updateLightGizmo()
     const double length = 0.3 * radius;
     const Eigen::Vector3d start = m_bounds.center() + radius * x;
     vtkNew<vtkTransform> transform;
-    const double matrix[16] = {length * x.x(), length * y.x(), length * z.x(), start.x(),
-                               length * x.y(), length * y.y(), length * z.y(), start.y(),
-                               length * x.z(), length * y.z(), length * z.z(), start.z(),
-                               0.0,            0.0,            0.0,            1.0};
+    const double matrix[16]
+        = {length * x.x(), length * y.x(), length * z.x(), start.x(), length * x.y(), length * y.y(), length * z.y(),
+            start.y(), length * x.z(), length * y.z(), length * z.z(), start.z(), 0.0, 0.0, 0.0, 1.0};
     transform->SetMatrix(matrix);
     vtkNew<vtkArrowSource> arrow;
     arrow->SetTipResolution(20);

@@ -217,7 +217,7 @@ private:
     /// Line coverage of the displayed shape for camera, strokes extracted from lineEye (the
     /// centre eye in stereo), hidden by depth; returns the rect the lines may touch.
     QRect lineCoverage(const algo::RasterCamera& camera, const algo::RasterCamera& lineEye,
-                       const std::vector<float>& depth, std::vector<float>& coverage);
+        const std::vector<float>& depth, std::vector<float>& coverage);
     void paintStereo();
     /// The document's look, or the default one without a document.
     [[nodiscard]] const model::Look& currentLook() const;
