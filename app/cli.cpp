@@ -21,6 +21,7 @@
 #include <QJsonObject>
 #include <QTextStream>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -36,8 +37,9 @@ struct Cli {
     Q_DECLARE_TR_FUNCTIONS(celform::app::Cli)
 };
 
-const QStringList kSubCommands = {QStringLiteral("new"), QStringLiteral("info"), QStringLiteral("key"),
-    QStringLiteral("brush"), QStringLiteral("eval"), QStringLiteral("set"), QStringLiteral("render")};
+const QStringList kSubCommands
+    = {QStringLiteral("new"), QStringLiteral("info"), QStringLiteral("key"), QStringLiteral("brush"),
+        QStringLiteral("eval"), QStringLiteral("set"), QStringLiteral("render"), QStringLiteral("highlight")};
 
 /// Thrown for a usage error; main turns it into exit code 2 with the message and a hint.
 struct UsageError {
@@ -548,6 +550,241 @@ int commandSet(const QStringList& args)
     return kExitOk;
 }
 
+/// Parses "--op TYPE:V[,V]" (translate:A,B rotate:DEG scale:DELTA split:G1,G2 square:SIGMA,N).
+algo::HighlightOperation parseHighlightOperation(const QString& value)
+{
+    const int colon = int(value.indexOf(QLatin1Char(':')));
+    const auto type = colon > 0 ? model::highlightOperationType(value.left(colon)) : std::nullopt;
+    if (!type)
+        throw UsageError{Cli::tr("--op takes translate:A,B, rotate:DEG, scale:DELTA, split:G1,G2 or square:SIGMA,N, "
+                                 "not “%1”")
+                             .arg(value)};
+    algo::HighlightOperation op;
+    op.type = *type;
+    if (model::highlightOperationArity(*type) == 1) {
+        op.a = float(parseNumber(QStringLiteral("op"), value.mid(colon + 1)));
+    } else {
+        const Eigen::Vector2d v = parseNumbers<2>(QStringLiteral("op"), value.mid(colon + 1));
+        op.a = float(v.x());
+        op.b = float(v.y());
+    }
+    algo::HighlightLayer check;
+    check.shape.operations = {op};
+    const QString problem = model::highlightLayerProblem(check);
+    if (!problem.isEmpty())
+        throw UsageError{Cli::tr("--op “%1”: %2").arg(value, problem)};
+    return op;
+}
+
+/// Parses "--combine union:OTHER" or "--combine subtract:OTHER".
+std::pair<algo::HighlightBoolean, QString> parseCombination(const QString& value)
+{
+    const int colon = int(value.indexOf(QLatin1Char(':')));
+    const QString mode = value.left(colon);
+    if (colon < 0 || (mode != QLatin1String("union") && mode != QLatin1String("subtract"))
+        || value.mid(colon + 1).isEmpty())
+        throw UsageError{Cli::tr("--combine takes union:OTHER or subtract:OTHER, not “%1”").arg(value)};
+    return {mode == QLatin1String("union") ? algo::HighlightBoolean::Union : algo::HighlightBoolean::Subtraction,
+        value.mid(colon + 1)};
+}
+
+QJsonArray vec3f(const Eigen::Vector3f& v)
+{
+    return vec3(v.cast<double>());
+}
+
+QJsonObject highlightTrackJson(const model::HighlightTrack& t)
+{
+    QJsonArray combine;
+    for (const auto& [mode, other] : t.combineWith)
+        combine.append(
+            QJsonObject{{"mode", mode == algo::HighlightBoolean::Union ? "union" : "subtract"}, {"layer", other}});
+    QJsonArray keys;
+    for (const algo::HighlightKey& k : t.keys) {
+        QJsonArray operations;
+        for (const algo::HighlightOperation& op : k.layer.shape.operations) {
+            QJsonArray values{double(op.a)};
+            if (model::highlightOperationArity(op.type) == 2)
+                values.append(double(op.b));
+            operations.append(QJsonObject{{"type", model::highlightOperationName(op.type)}, {"values", values}});
+        }
+        keys.append(
+            QJsonObject{{"frame", k.frame}, {"color", vec3f(k.layer.color)}, {"epsilon", double(k.layer.shape.epsilon)},
+                {"off_specular_cut", double(k.layer.offSpecularCut)}, {"operations", operations}});
+    }
+    return {{"name", t.name}, {"patch", t.patch.isEmpty() ? QStringLiteral("all") : t.patch}, {"guide", vec3f(t.guide)},
+        {"visible", t.visible}, {"combine", combine}, {"keys", keys}};
+}
+
+int commandHighlight(const QStringList& args)
+{
+    const QString synopsis = QStringLiteral(
+        "celform highlight P (--list [--json] | --add NAME [--patch FACESET|all] [--epsilon E] [--guide X,Y,Z] "
+        "[--color R,G,B] [--cut C] [--op TYPE:VALUES]... [--combine union|subtract:OTHER]... [--visible on|off] "
+        "[--frame F] [--json])");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(Cli::tr("Adds, keys and lists stylized highlight layers."));
+    parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
+    const QCommandLineOption list(QStringLiteral("list"), Cli::tr("List the highlight layers."));
+    const QCommandLineOption add(
+        QStringLiteral("add"), Cli::tr("Add a layer, or with --frame key an existing one."), QStringLiteral("NAME"));
+    const QCommandLineOption patch(QStringLiteral("patch"),
+        Cli::tr("Face set the highlight may appear on (all: every face)."), QStringLiteral("FACESET"));
+    const QCommandLineOption epsilon(
+        QStringLiteral("epsilon"), Cli::tr("Size of the area, in (0, 1] (default 0.05)."), QStringLiteral("E"));
+    const QCommandLineOption guide(QStringLiteral("guide"),
+        Cli::tr("Direction of the u axis on models without UVs (default 0,1,0)."), QStringLiteral("X,Y,Z"));
+    const QCommandLineOption color(
+        QStringLiteral("color"), Cli::tr("Linear RGB colour in [0, 1] (default 1,1,1)."), QStringLiteral("R,G,B"));
+    const QCommandLineOption cut(QStringLiteral("cut"),
+        Cli::tr("Off-specular cut: no highlight where N.L <= C (default -1: off)."), QStringLiteral("C"));
+    const QCommandLineOption op(QStringLiteral("op"),
+        Cli::tr("Operation, in order (repeatable): translate:A,B rotate:DEG scale:DELTA split:G1,G2 "
+                "square:SIGMA,N."),
+        QStringLiteral("TYPE:VALUES"));
+    const QCommandLineOption combine(QStringLiteral("combine"),
+        Cli::tr("Unite with or subtract another layer's area (repeatable)."), QStringLiteral("MODE:OTHER"));
+    const QCommandLineOption visible(QStringLiteral("visible"),
+        Cli::tr("Draw the layer (on) or use it only in combinations (off)."), QStringLiteral("on|off"));
+    const QCommandLineOption frame(
+        QStringLiteral("frame"), Cli::tr("Frame of the keyframe (default 0)."), QStringLiteral("F"));
+    const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print machine-readable JSON."));
+    parser.addOptions({list, add, patch, epsilon, guide, color, cut, op, combine, visible, frame, json});
+    parseOrThrow(parser, args, 1, synopsis);
+
+    // Every option is checked before the file is touched.
+    const bool editing = parser.isSet(patch) || parser.isSet(epsilon) || parser.isSet(guide) || parser.isSet(color)
+        || parser.isSet(cut) || parser.isSet(op) || parser.isSet(combine) || parser.isSet(visible)
+        || parser.isSet(frame);
+    if (parser.isSet(list) == parser.isSet(add) || (parser.isSet(list) && editing))
+        throw UsageError{Cli::tr("give either --list or --add NAME with its options\nusage: %1").arg(synopsis)};
+    const QString path = parser.positionalArguments().front();
+    if (parser.isSet(list)) {
+        const model::ProjectData data = model::loadProject(path);
+        QJsonArray layers;
+        for (const model::HighlightTrack& t : data.look.highlights)
+            layers.append(highlightTrackJson(t));
+        if (parser.isSet(json)) {
+            printOut(QString::fromUtf8(QJsonDocument(QJsonObject{{"layers", layers}}).toJson(QJsonDocument::Indented)));
+        } else {
+            QString text;
+            for (const model::HighlightTrack& t : data.look.highlights)
+                text += Cli::tr("%1\tpatch %2\t%3 keyframes\n")
+                            .arg(t.name, t.patch.isEmpty() ? QStringLiteral("all") : t.patch)
+                            .arg(t.keys.size());
+            printOut(text);
+        }
+        return kExitOk;
+    }
+
+    const QString name = parser.value(add);
+    if (name.isEmpty())
+        throw UsageError{Cli::tr("--add needs a layer name")};
+    std::optional<float> newEpsilon, newCut;
+    if (parser.isSet(epsilon)) {
+        newEpsilon = float(parseNumber(QStringLiteral("epsilon"), parser.value(epsilon)));
+        if (!(*newEpsilon > 0.f && *newEpsilon <= 1.f))
+            throw UsageError{Cli::tr("--epsilon must lie in (0, 1], not “%1”").arg(parser.value(epsilon))};
+    }
+    if (parser.isSet(cut)) {
+        newCut = float(parseNumber(QStringLiteral("cut"), parser.value(cut)));
+        if (!(*newCut >= -1.f && *newCut <= 1.f))
+            throw UsageError{Cli::tr("--cut must lie in [-1, 1], not “%1”").arg(parser.value(cut))};
+    }
+    std::optional<Eigen::Vector3f> newGuide, newColor;
+    if (parser.isSet(guide)) {
+        newGuide = parseVector(QStringLiteral("guide"), parser.value(guide)).cast<float>();
+        if (newGuide->norm() == 0.f)
+            throw UsageError{Cli::tr("--guide must not be zero")};
+    }
+    if (parser.isSet(color)) {
+        newColor = parseVector(QStringLiteral("color"), parser.value(color)).cast<float>();
+        if (newColor->minCoeff() < 0.f || newColor->maxCoeff() > 1.f)
+            throw UsageError{Cli::tr("--color components must lie in [0, 1], not “%1”").arg(parser.value(color))};
+    }
+    std::vector<algo::HighlightOperation> newOperations;
+    for (const QString& v : parser.values(op))
+        newOperations.push_back(parseHighlightOperation(v));
+    std::vector<std::pair<algo::HighlightBoolean, QString>> newCombinations;
+    for (const QString& v : parser.values(combine)) {
+        newCombinations.push_back(parseCombination(v));
+        if (newCombinations.back().second == name)
+            throw UsageError{Cli::tr("--combine needs another layer than “%1” itself").arg(name)};
+    }
+    std::optional<bool> newVisible;
+    if (parser.isSet(visible)) {
+        const QString v = parser.value(visible);
+        if (v != QLatin1String("on") && v != QLatin1String("off"))
+            throw UsageError{Cli::tr("--visible takes on or off, not “%1”").arg(v)};
+        newVisible = v == QLatin1String("on");
+    }
+    const int f = parser.isSet(frame) ? parseInt(QStringLiteral("frame"), parser.value(frame)) : 0;
+
+    auto doc = openProject(path);
+    if (!doc->hasMesh())
+        throw model::IoError(path, Cli::tr("has no base model"));
+    model::Look look = doc->data().look;
+    auto it = std::find_if(
+        look.highlights.begin(), look.highlights.end(), [&](const model::HighlightTrack& t) { return t.name == name; });
+    if (it != look.highlights.end() && !parser.isSet(frame))
+        throw model::IoError(path,
+            Cli::tr("already has a highlight layer named “%1”; give --frame F to set a keyframe of it").arg(name));
+    if (it == look.highlights.end()) {
+        model::HighlightTrack track;
+        track.name = name;
+        look.highlights.push_back(std::move(track));
+        it = std::prev(look.highlights.end());
+    }
+    model::HighlightTrack& track = *it;
+    // The key starts from the layer as it is at F, then takes the given values.
+    algo::HighlightLayer layer = track.keys.empty() ? algo::HighlightLayer{} : track.layerAt(f);
+    if (newEpsilon)
+        layer.shape.epsilon = *newEpsilon;
+    if (newCut)
+        layer.offSpecularCut = *newCut;
+    if (newColor)
+        layer.color = *newColor;
+    if (parser.isSet(op))
+        layer.shape.operations = newOperations;
+    track.setKey(f, layer);
+    if (parser.isSet(patch))
+        track.patch = parser.value(patch) == QLatin1String("all") ? QString() : parser.value(patch);
+    if (newGuide)
+        track.guide = *newGuide;
+    if (newVisible)
+        track.visible = *newVisible;
+    if (parser.isSet(combine))
+        track.combineWith = newCombinations;
+
+    std::vector<QString> faceSets;
+    for (const auto& set : doc->data().baseMesh->faceSets)
+        faceSets.push_back(QString::fromStdString(set.name));
+    if (!track.patch.isEmpty() && std::find(faceSets.begin(), faceSets.end(), track.patch) == faceSets.end())
+        throw model::IoError(path, Cli::tr("has no face set named “%1”").arg(track.patch));
+    for (const auto& [mode, other] : track.combineWith)
+        if (std::none_of(look.highlights.begin(), look.highlights.end(),
+                [&](const model::HighlightTrack& t) { return t.name == other; }))
+            throw model::IoError(path, Cli::tr("has no highlight layer named “%1”").arg(other));
+    const QString problem = model::highlightTracksProblem(look.highlights, faceSets);
+    if (!problem.isEmpty())
+        throw model::IoError(path, problem);
+    // Keys with different operation types do not interpolate: the earlier one holds.
+    for (std::size_t k = 1; k < track.keys.size(); ++k)
+        if (!algo::sameHighlightStructure(track.keys[k - 1].layer, track.keys[k].layer))
+            printErr(Cli::tr("warning: %1: the keyframes %2 and %3 of “%4” have different operations; the earlier "
+                             "one holds between them")
+                         .arg(path)
+                         .arg(track.keys[k - 1].frame)
+                         .arg(track.keys[k].frame)
+                         .arg(name));
+    const QJsonObject result = highlightTrackJson(track);
+    doc->setLook(look);
+    doc->saveAs(path);
+    if (parser.isSet(json))
+        printOut(QString::fromUtf8(QJsonDocument(result).toJson(QJsonDocument::Indented)));
+    return kExitOk;
+}
+
 /// Parses "WxH" (a usage error when malformed or out of range).
 QSize parseSize(const QString& text)
 {
@@ -713,8 +950,8 @@ int commandRender(const QStringList& args)
     for (int f = firstFrame; f <= lastFrame; ++f) {
         algo::Positions shape;
         blender.shape(data, direction, f, shape);
-        const algo::RenderPasses passes
-            = model::renderShape(data, look, shape, camera, imageSize.width(), imageSize.height(), stereoOutput, cache);
+        const algo::RenderPasses passes = model::renderShape(
+            data, look, shape, f, camera, imageSize.width(), imageSize.height(), stereoOutput, cache);
         const QString target = framePath(outPattern, f, sequence);
         if (suffix == QLatin1String("exr") && !parser.isSet(pass) && stereoOutput == algo::StereoOutput::Off)
             model::writePassesExr(passes, target);
@@ -756,6 +993,10 @@ int runCommandLine(const QStringList& arguments)
             "  celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
             "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] [--light TYPE:X,Y,Z] "
             "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] [--pass NAME] [--out FILE.png|.exr|.tif]\n"
+            "  celform highlight P --list [--json]\n"
+            "  celform highlight P --add NAME [--patch FACESET|all] [--epsilon E] [--guide X,Y,Z] [--color R,G,B] "
+            "[--cut C] [--op translate:A,B|rotate:DEG|scale:DELTA|split:G1,G2|square:SIGMA,N]... "
+            "[--combine union|subtract:OTHER]... [--visible on|off] [--frame F] [--json]\n"
             "  celform --version\n"
             "Exit codes: 0 success, 2 usage error, 3 bad input.");
     try {
@@ -784,6 +1025,8 @@ int runCommandLine(const QStringList& arguments)
             return commandSet(rest);
         if (first == QLatin1String("render"))
             return commandRender(rest);
+        if (first == QLatin1String("highlight"))
+            return commandHighlight(rest);
         printErr(usage);
         return kExitUsage;
     } catch (const UsageError& e) {

@@ -19,6 +19,14 @@
         <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
         <translation>--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
+    <message>
+        <source>--op takes translate:A,B, rotate:DEG, scale:DELTA, split:G1,G2 or square:SIGMA,N, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--op “%1”: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProjectFile</name>
@@ -393,6 +401,112 @@ usage: %1</source>
     <message>
         <source>--eye, --target and --up do not make a camera</source>
         <translation>--eye、--target、--up ではカメラを構成できません</translation>
+    </message>
+    <message>
+        <source>--combine takes union:OTHER or subtract:OTHER, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adds, keys and lists stylized highlight layers.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>List the highlight layers.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a layer, or with --frame key an existing one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Face set the highlight may appear on (all: every face).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Size of the area, in (0, 1] (default 0.05).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Direction of the u axis on models without UVs (default 0,1,0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Linear RGB colour in [0, 1] (default 1,1,1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off-specular cut: no highlight where N.L &lt;= C (default -1: off).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operation, in order (repeatable): translate:A,B rotate:DEG scale:DELTA split:G1,G2 square:SIGMA,N.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unite with or subtract another layer&apos;s area (repeatable).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw the layer (on) or use it only in combinations (off).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame of the keyframe (default 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give either --list or --add NAME with its options
+usage: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1	patch %2	%3 keyframes
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--add needs a layer name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--epsilon must lie in (0, 1], not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--cut must lie in [-1, 1], not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--guide must not be zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--color components must lie in [0, 1], not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--combine needs another layer than “%1” itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--visible takes on or off, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>already has a highlight layer named “%1”; give --frame F to set a keyframe of it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has no face set named “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has no highlight layer named “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning: %1: the keyframes %2 and %3 of “%4” have different operations; the earlier one holds between them</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -989,6 +1103,61 @@ Recover it now?</source>
     </message>
 </context>
 <context>
+    <name>celform::model::Highlights</name>
+    <message>
+        <source>epsilon must lie in (0, 1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>colour components must lie in [0, 1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the off-specular cut must lie in [-1, 1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the parameters of a %1 operation are out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>combinations belong to the track, not to its keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a highlight layer has no name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>two highlight layers are named “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>highlight layer “%1” uses the unknown face set “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>highlight layer “%1” has a zero guide direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>highlight layer “%1” has no keyframe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>highlight layer “%1” has keyframes out of order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>highlight layer “%1”: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>highlight layer “%1” combines with “%2”, which is not another layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>celform::model::ImageIo</name>
     <message>
         <source>not a valid SVG drawing</source>
@@ -1470,6 +1639,22 @@ Recover it now?</source>
         <source>a shading offset is not finite</source>
         <translation>有限でないシェーディングオフセットがあります</translation>
     </message>
+    <message>
+        <source>a highlight layer is not an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the entry “mode” has the unknown value “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the highlight operation “%1” is unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the highlight operation “%1” has %2 values instead of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RenderOutput</name>
@@ -1835,6 +2020,38 @@ Recover it now?</source>
     <message>
         <source>Tone %1:</source>
         <translation>階調 %1:</translation>
+    </message>
+    <message>
+        <source>&amp;Dubois Matrices…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The 3 × 3 matrices mapping each eye&apos;s linear RGB to the anaglyph (Dubois least-squares red/cyan by default); tune them to a display and glasses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dubois Matrices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left eye</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right eye</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B out</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -203,6 +203,64 @@ private slots:
         QVERIFY(a.normal[size_t(100 * 200 + 100)].isApprox(Eigen::Vector3f(0, 0, 1), 0.02f));
         QCOMPARE(a.id[0], -1);
     }
+
+    void highlightsPass()
+    {
+        // Light and eye at +Z: the original highlight (Anjyo & Hiramitsu 2003, eq. 3) is the cap
+        // N.H > 1 - epsilon around the sphere's front; a translation along du moves it towards +du.
+        const TriMesh mesh = sphere();
+        RenderLook look = plainLook(Style::Toon);
+        RenderCache cache;
+        RenderPasses plain;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, plain);
+        QVERIFY(std::all_of(plain.highlights.begin(), plain.highlights.end(), [](float v) { return v == 0.f; }));
+
+        RenderHighlight h;
+        const Positions normals = vertexNormals(mesh.vertices, mesh.faces);
+        QVERIFY(guideVertexFrames(mesh.vertices, mesh.faces, normals, {}, Eigen::Vector3f(1, 0, 0), 3, h.du, h.dv));
+        h.layer.color = Color(1.f, 0.f, 0.f);
+        look.highlights = {h};
+        RenderPasses lit;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, lit);
+        const std::size_t centre = 100 * 200 + 100;
+        QCOMPARE(lit.highlights[centre], 1.f);
+        QCOMPARE(lit.beauty.at(100, 100)[0], 1.f);
+        QCOMPARE(lit.beauty.at(100, 100)[1], 0.f);
+        QCOMPARE(lit.highlights[0], 0.f);
+        QVERIFY(lit.tone == plain.tone);
+        auto centroidX = [](const RenderPasses& p, double& area) {
+            double sum = 0;
+            area = 0;
+            for (int y = 0; y < 200; ++y)
+                for (int x = 0; x < 200; ++x) {
+                    const float c = p.highlights[std::size_t(y * 200 + x)];
+                    area += c;
+                    sum += c * (x + 0.5);
+                }
+            return sum / std::max(area, 1e-9);
+        };
+        double area = 0;
+        QVERIFY(std::abs(centroidX(lit, area) - 100.0) < 1.0);
+        // The cap N.H > 0.95 with V towards the eye at z = 6 (not at infinity): its edge angle by
+        // bisection on the meridian, seen orthographically as a disc of radius sin(angle).
+        auto nDotH = [](double t) {
+            const Eigen::Vector3d p(std::sin(t), 0, std::cos(t));
+            const Eigen::Vector3d h = (Eigen::Vector3d(0, 0, 1) + (Eigen::Vector3d(0, 0, 6) - p).normalized());
+            return p.dot(h.normalized());
+        };
+        double lo = 0, hi = 1.5;
+        for (int i = 0; i < 60; ++i)
+            (nDotH(0.5 * (lo + hi)) > 0.95 ? lo : hi) = 0.5 * (lo + hi);
+        const double radius = std::sin(lo) * 200 / 2.4;
+        const double expected = M_PI * radius * radius;
+        QVERIFY2(std::abs(area - expected) < 0.05 * expected, qPrintable(QString::number(area)));
+
+        look.highlights[0].layer.shape.operations = {HighlightOperation::translation(0.2f, 0.f)};
+        RenderPasses moved;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, moved);
+        double movedArea = 0;
+        QVERIFY(centroidX(moved, movedArea) > 110.0);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestRender)

@@ -10,6 +10,8 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include <cmath>
+
 namespace {
 
 struct Run {
@@ -31,6 +33,34 @@ Run runCelform(const QStringList& args)
         p.kill();
     return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
         QString::fromUtf8(p.readAllStandardError())};
+}
+
+/// Statistics of a highlights-pass PNG: grey (white on black), the lit area and its centroid.
+struct Mask {
+    bool grey = true;
+    int area = 0;
+    double cx = 0, cy = 0;
+};
+
+Mask readMask(const QString& png)
+{
+    const QImage image(png);
+    Mask m;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb p = image.pixel(x, y);
+            m.grey = m.grey && qRed(p) == qGreen(p) && qGreen(p) == qBlue(p);
+            if (qRed(p) > 127) {
+                ++m.area;
+                m.cx += x;
+                m.cy += y;
+            }
+        }
+    if (m.area > 0) {
+        m.cx /= m.area;
+        m.cy /= m.area;
+    }
+    return m;
 }
 
 } // namespace
@@ -295,6 +325,124 @@ private slots:
         QFile fa(a), fb(b);
         QVERIFY(fa.open(QIODevice::ReadOnly) && fb.open(QIODevice::ReadOnly));
         QCOMPARE(fa.readAll(), fb.readAll());
+    }
+
+    void highlightLayers()
+    {
+        const QString bunny = bunnyProject();
+        if (bunny.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString project = m_dir.filePath(QStringLiteral("highlight.celform"));
+        QFile::remove(project);
+        QVERIFY(QFile::copy(bunny, project));
+        auto render = [&](const QString& name, const QStringList& extra = {}) {
+            const QString png = m_dir.filePath(name + QStringLiteral(".png"));
+            const Run r = runCelform(
+                QStringList{"render", project, "--size", "320x240", "--pass", "highlights", "--out", png} + extra);
+            [&] { QVERIFY2(r.exitCode == 0, qPrintable(r.err)); }();
+            return readMask(png);
+        };
+        const Mask none = render(QStringLiteral("hl_none"));
+        QCOMPARE(none.area, 0);
+
+        Run r = runCelform({"highlight", project, "--add", "shine", "--epsilon", "0.06"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = runCelform({"highlight", project, "--list", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        QJsonArray layers = QJsonDocument::fromJson(r.out.toUtf8()).object()["layers"].toArray();
+        QCOMPARE(layers.size(), 1);
+        QCOMPARE(layers[0].toObject()["name"].toString(), QStringLiteral("shine"));
+        QCOMPARE(layers[0].toObject()["patch"].toString(), QStringLiteral("all"));
+        QCOMPARE(layers[0].toObject()["keys"].toArray().size(), 1);
+        QCOMPARE(layers[0].toObject()["keys"].toArray()[0].toObject()["epsilon"].toDouble(), double(0.06f));
+        const Mask base = render(QStringLiteral("hl_base"));
+        QVERIFY(base.grey);
+        QVERIFY2(base.area > 20, qPrintable(QString::number(base.area)));
+
+        // A translation moves the area.
+        r = runCelform({"highlight", project, "--add", "shine", "--frame", "0", "--op", "translate:-0.3,0"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const Mask left = render(QStringLiteral("hl_key0"));
+        QVERIFY(left.area > 0);
+        QVERIFY(std::hypot(left.cx - base.cx, left.cy - base.cy) > 3.0);
+
+        // A second key at 30; frame 15 lies between the two.
+        r = runCelform({"highlight", project, "--add", "shine", "--frame", "30", "--op", "translate:0.3,0"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const Mask right = render(QStringLiteral("hl_key30"), {"--frame", "30"});
+        const Mask middle = render(QStringLiteral("hl_frame15"), {"--frame", "15"});
+        QVERIFY(right.area > 0 && middle.area > 0);
+        const double dx = right.cx - left.cx, dy = right.cy - left.cy, length2 = dx * dx + dy * dy;
+        QVERIFY(length2 > 9.0);
+        const double t = ((middle.cx - left.cx) * dx + (middle.cy - left.cy) * dy) / length2;
+        QVERIFY2(t > 0.05 && t < 0.95, qPrintable(QString::number(t)));
+        // Halfway the translation is (0, 0): the area is back where it was without operations.
+        QVERIFY(std::hypot(middle.cx - base.cx, middle.cy - base.cy) < 1.0);
+
+        r = runCelform({"highlight", project, "--list", "--json"});
+        layers = QJsonDocument::fromJson(r.out.toUtf8()).object()["layers"].toArray();
+        const QJsonArray keys = layers[0].toObject()["keys"].toArray();
+        QCOMPARE(keys.size(), 2);
+        QCOMPARE(keys[1].toObject()["frame"].toDouble(), 30.0);
+        const QJsonObject op = keys[1].toObject()["operations"].toArray()[0].toObject();
+        QCOMPARE(op["type"].toString(), QStringLiteral("translate"));
+        QCOMPARE(op["values"].toArray()[0].toDouble(), double(0.3f));
+        // The epsilon not given at 30 came from the layer at 30.
+        QCOMPARE(keys[1].toObject()["epsilon"].toDouble(), double(0.06f));
+
+        // Subtracting a hidden, smaller layer cuts a hole: less area.
+        r = runCelform({"highlight", project, "--add", "core", "--epsilon", "0.02", "--visible", "off"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(render(QStringLiteral("hl_hidden")).area, left.area); // hidden: drawn only as an operand
+        r = runCelform({"highlight", project, "--add", "shine", "--frame", "0", "--op", "translate:0,0", "--combine",
+            "subtract:core"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const Mask cut = render(QStringLiteral("hl_subtract"));
+        QVERIFY2(
+            cut.area < base.area && cut.area > 0, qPrintable(QStringLiteral("%1 vs %2").arg(cut.area).arg(base.area)));
+    }
+
+    void highlightBadInput_data()
+    {
+        QTest::addColumn<QStringList>("options");
+        QTest::addColumn<int>("exitCode");
+        QTest::newRow("unknown op") << QStringList{"--add", "x", "--op", "wobble:1"} << 2;
+        QTest::newRow("op without values") << QStringList{"--add", "x", "--op", "translate"} << 2;
+        QTest::newRow("op with one value") << QStringList{"--add", "x", "--op", "translate:1"} << 2;
+        QTest::newRow("scale out of range") << QStringList{"--add", "x", "--op", "scale:2"} << 2;
+        QTest::newRow("square n below 1") << QStringList{"--add", "x", "--op", "square:0.2,0.5"} << 2;
+        QTest::newRow("epsilon zero") << QStringList{"--add", "x", "--epsilon", "0"} << 2;
+        QTest::newRow("bad colour") << QStringList{"--add", "x", "--color", "1,2"} << 2;
+        QTest::newRow("zero guide") << QStringList{"--add", "x", "--guide", "0,0,0"} << 2;
+        QTest::newRow("bad combine") << QStringList{"--add", "x", "--combine", "xor:y"} << 2;
+        QTest::newRow("combine itself") << QStringList{"--add", "x", "--combine", "union:x"} << 2;
+        QTest::newRow("list and add") << QStringList{"--list", "--add", "x"} << 2;
+        QTest::newRow("nothing") << QStringList{} << 2;
+        QTest::newRow("unknown face set") << QStringList{"--add", "x", "--patch", "nope"} << 3;
+        QTest::newRow("unknown other") << QStringList{"--add", "x", "--combine", "subtract:ghost"} << 3;
+        QTest::newRow("existing without frame") << QStringList{"--add", "taken"} << 3;
+    }
+    void highlightBadInput()
+    {
+        QFETCH(QStringList, options);
+        QFETCH(int, exitCode);
+        const QString bunny = bunnyProject();
+        if (bunny.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString project = m_dir.filePath(QStringLiteral("highlight_bad.celform"));
+        if (!QFileInfo::exists(project)) {
+            QVERIFY(QFile::copy(bunny, project));
+            QCOMPARE(runCelform({"highlight", project, "--add", "taken"}).exitCode, 0);
+        }
+        QFile file(project);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray before = file.readAll();
+        file.close();
+        const Run r = runCelform(QStringList{"highlight", project} + options);
+        QCOMPARE(r.status, QProcess::NormalExit);
+        QVERIFY2(r.exitCode == exitCode, qPrintable(QStringLiteral("%1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll(), before); // nothing written
     }
 
     void renderPassesStereoAndSequences()

@@ -93,6 +93,30 @@ ProjectData richProject()
     data.look.stereo.interocular = 0.07;
     data.look.stereo.toeIn = true;
     data.look.stereo.dubois.left(1, 2) = 0.5f;
+    // Highlights: a hidden cutter and a layer on the forehead with two keys and every operation.
+    HighlightTrack cutter;
+    cutter.name = QStringLiteral("cutter");
+    cutter.visible = false;
+    cutter.keys = {{0.0, {}}};
+    cutter.keys[0].layer.shape.epsilon = 0.01f;
+    HighlightTrack shine;
+    shine.name = QStringLiteral("shine ✦");
+    shine.patch = QStringLiteral("forehead");
+    shine.guide = Eigen::Vector3f(0.f, 0.3f, -1.f);
+    shine.combineWith = {{algo::HighlightBoolean::Subtraction, QStringLiteral("cutter")},
+        {algo::HighlightBoolean::Union, QStringLiteral("cutter")}};
+    algo::HighlightLayer first;
+    first.color = algo::Color(1.f, 0.9f, 0.7f);
+    first.shape.epsilon = 0.07f;
+    first.offSpecularCut = 0.1f;
+    first.shape.operations = {algo::HighlightOperation::translation(0.2f, -0.1f),
+        algo::HighlightOperation::rotation(30.f), algo::HighlightOperation::directionalScaling(0.5f),
+        algo::HighlightOperation::split(0.4f, 0.f), algo::HighlightOperation::squaring(0.2f, 2.f)};
+    algo::HighlightLayer second = first;
+    second.shape.epsilon = 0.03f;
+    second.shape.operations[0] = algo::HighlightOperation::translation(-0.3f, 0.25f);
+    shine.keys = {{0.0, first}, {30.0, second}};
+    data.look.highlights = {cutter, shine};
     data.shadingOffsets = {0.f, 0.1f, -0.2f, 0.3f, 0.f};
     data.nextId = 3;
     return data;
@@ -130,6 +154,20 @@ private slots:
         const QString again = dir.filePath(QStringLiteral("again.celform"));
         saveProject(loaded, again);
         QCOMPARE(readAll(again), readAll(path));
+    }
+
+    void highlightsAreValidatedOnLoad()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("bad_highlight.celform"));
+        ProjectData data = richProject();
+        data.look.highlights.back().patch = QStringLiteral("no such set");
+        saveProject(data, path);
+        QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
+        data = richProject();
+        data.look.highlights.back().combineWith = {{algo::HighlightBoolean::Union, QStringLiteral("ghost")}};
+        saveProject(data, path);
+        QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
     }
 
     void emptyProjectRoundTrip()

@@ -143,7 +143,7 @@ private:
     {
         const ProjectData& data = m_doc->data();
         celform::algo::RenderCache cache;
-        celform::algo::RenderPasses passes = celform::model::renderShape(data, data.look, data.baseMesh->vertices,
+        celform::algo::RenderPasses passes = celform::model::renderShape(data, data.look, data.baseMesh->vertices, 0,
             m_view->camera(), kSize, kSize, celform::algo::StereoOutput::Off, cache);
         QImage image(kSize, kSize, QImage::Format_RGB32);
         for (int y = 0; y < kSize; ++y)

@@ -31,6 +31,75 @@ float offsetAt(const RenderLook& look, std::int32_t v)
         : 0.f;
 }
 
+/// Position and normal change towards the neighbouring pixel in one direction, for the highlight
+/// mask's box filter: the next pixel if it lies on the same surface (covered, depth within 2%),
+/// else the previous one mirrored, else none.
+void pixelDelta(const GBuffer& g, int x, int y, int dx, int dy, Eigen::Vector3f& dP, Eigen::Vector3f& dN)
+{
+    dP.setZero();
+    dN.setZero();
+    const std::size_t i = std::size_t(y) * std::size_t(g.width) + std::size_t(x);
+    for (const int sign : {1, -1}) {
+        const int nx = x + sign * dx, ny = y + sign * dy;
+        if (nx < 0 || ny < 0 || nx >= g.width || ny >= g.height)
+            continue;
+        const std::size_t j = std::size_t(ny) * std::size_t(g.width) + std::size_t(nx);
+        if (g.faceId[j] < 0 || std::abs(g.depth[j] - g.depth[i]) > 0.02f * std::abs(g.depth[i]))
+            continue;
+        dP = float(sign) * (g.position[j] - g.position[i]);
+        dN = float(sign) * (g.normal[j] - g.normal[i]);
+        return;
+    }
+}
+
+/// Coverage and colour of the look's highlight layers at a covered pixel; n faces the viewer.
+HighlightSample highlightAt(const RenderLook& look, const GBuffer& g, const Faces& faces, int x, int y,
+    const Eigen::Vector3f& n, const Eigen::Vector3f& eye)
+{
+    const std::size_t i = std::size_t(y) * std::size_t(g.width) + std::size_t(x);
+    const std::int32_t f = g.faceId[i];
+    const Eigen::Vector3f bary = g.barycentric[i];
+    const std::int32_t a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
+    HighlightLight light;
+    light.point = look.pointLight;
+    light.vector = look.light;
+    HighlightFootprint footprint;
+    pixelDelta(g, x, y, 1, 0, footprint.dPdx, footprint.dNdx);
+    pixelDelta(g, x, y, 0, 1, footprint.dPdy, footprint.dNdy);
+    // The G-buffer normal was flipped towards the viewer: its neighbours' differences follow.
+    if (n.dot(g.normal[i]) < 0.f) {
+        footprint.dNdx = -footprint.dNdx;
+        footprint.dNdy = -footprint.dNdy;
+    }
+    HighlightSurfacePoint point;
+    point.position = g.position[i];
+    point.normal = n;
+    // Later layers over earlier ones, as evaluateHighlights composites them ("over",
+    // premultiplied), each layer with its own patch and frames.
+    float coverage = 0.f;
+    Color premultiplied = Color::Zero();
+    for (const RenderHighlight& h : look.highlights) {
+        if (!h.faceMask.empty() && (std::size_t(f) >= h.faceMask.size() || !h.faceMask[std::size_t(f)]))
+            continue;
+        const Eigen::Index last = std::max({a, b, c});
+        if (h.du.rows() > last && h.dv.rows() > last) {
+            const Eigen::Vector3f du = bary.x() * h.du.row(a) + bary.y() * h.du.row(b) + bary.z() * h.du.row(c);
+            const Eigen::Vector3f dv = bary.x() * h.dv.row(a) + bary.y() * h.dv.row(b) + bary.z() * h.dv.row(c);
+            point.frame = makeTangentFrame(n, du, dv);
+        } else {
+            point.frame = makeTangentFrame(n, Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY());
+        }
+        const float layerCoverageHere = layerCoverage(point, light, eye, h.layer, &footprint);
+        premultiplied = premultiplied * (1.f - layerCoverageHere) + h.layer.color * layerCoverageHere;
+        coverage = layerCoverageHere + coverage * (1.f - layerCoverageHere);
+    }
+    HighlightSample sample;
+    sample.coverage = coverage;
+    if (coverage > 0.f)
+        sample.color = premultiplied / coverage;
+    return sample;
+}
+
 } // namespace
 
 void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera& camera, const RenderLook& look,
@@ -156,6 +225,11 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                     color = base * look.toon.intensities.back() * (1.f - ink) + lineColor * ink;
                     break;
                 }
+                }
+                if (!look.highlights.empty()) {
+                    const HighlightSample h = highlightAt(look, g, faces, x, y, n, eye.cast<float>());
+                    out.highlights[i] = h.coverage;
+                    color = color * (1.f - h.coverage) + h.color * h.coverage;
                 }
                 out.tone[i] = intensity;
                 out.normal[i] = n;

@@ -2,6 +2,7 @@
 // shading functions per pixel, feature lines on top, and the render passes compositors expect.
 #pragma once
 
+#include "celform/algorithms/highlights.h"
 #include "celform/algorithms/image.h"
 #include "celform/algorithms/lines.h"
 #include "celform/algorithms/raster.h"
@@ -14,6 +15,16 @@
 namespace celform::algo {
 
 enum class Style { Lambert, Toon, Gooch, Comic };
+
+/// One stylized highlight layer resolved for a frame by the caller (model::renderShape): the
+/// layer with its combinations' shapes, where it may appear, and the tangent frames its
+/// operations act along.
+struct RenderHighlight {
+    HighlightLayer layer;
+    std::vector<char> faceMask; ///< per face, non-zero where the layer may appear; empty: all faces
+    Positions du; ///< #V by 3 per-vertex tangent frames (zero rows outside the patch)
+    Positions dv; ///< #V by 3
+};
 
 /// Everything about the look the renderer needs, independent of the document.
 struct RenderLook {
@@ -33,6 +44,9 @@ struct RenderLook {
     LineSettings lineSettings;
     LineStyle lineStyle;
     const std::vector<float>* shadingOffsets = nullptr; ///< per vertex (paper 3, eq. 4.3), may be null
+    /// Stylized highlights (Anjyo & Hiramitsu 2003), later layers painted over earlier ones with the
+    /// light above and the camera's eye, after shading and before lines.
+    std::vector<RenderHighlight> highlights;
 };
 
 /// One frame's passes (Pencil+ render elements, Blender view layers), all width x height.
@@ -40,7 +54,7 @@ struct RenderPasses {
     ImageRGBA beauty; ///< the look: shading with lines, background, alpha = coverage of the model
     std::vector<float> lines; ///< line coverage in [0, 1]
     std::vector<float> tone; ///< shading intensity before colour (toon tone, Lambert or Gooch luminance)
-    std::vector<float> highlights; ///< stylized highlights mask (empty until that issue fills it): zeros
+    std::vector<float> highlights; ///< stylized highlights coverage in [0, 1], zero off the model
     std::vector<float> depth; ///< distance along the view axis, +infinity off the model
     std::vector<Eigen::Vector3f> normal; ///< model-space unit normal, zero off the model
     std::vector<std::int32_t> id; ///< face id, -1 off the model

@@ -1,11 +1,26 @@
 // Look-ups and comparison of the project data.
 #include "celform/model/project_data.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <set>
 
 namespace celform::model {
 namespace {
+
+// Gives lupdate the context "celform::model::Highlights" for the validation messages below.
+struct Highlights {
+    Q_DECLARE_TR_FUNCTIONS(celform::model::Highlights)
+};
+
+bool inRange(float v, float lo, float hi)
+{
+    return std::isfinite(v) && v >= lo && v <= hi;
+}
+
 template <typename Vec> auto* findById(Vec& items, ObjectId id)
 {
     auto it = std::find_if(items.begin(), items.end(), [id](const auto& x) { return x.id == id; });
@@ -131,6 +146,124 @@ bool ProjectData::operator==(const ProjectData& o) const
     const bool meshEqual = (!baseMesh && !o.baseMesh) || (baseMesh && o.baseMesh && *baseMesh == *o.baseMesh);
     return meshEqual && baseMeshName == o.baseMeshName && drawings == o.drawings && keys == o.keys && blend == o.blend
         && look == o.look && nextId == o.nextId;
+}
+
+algo::HighlightLayer HighlightTrack::layerAt(double frame) const
+{
+    return algo::interpolateHighlightKeys(keys, frame).value_or(algo::HighlightLayer{});
+}
+
+void HighlightTrack::setKey(double frame, const algo::HighlightLayer& layer)
+{
+    auto it = std::lower_bound(
+        keys.begin(), keys.end(), frame, [](const algo::HighlightKey& k, double f) { return k.frame < f; });
+    if (it != keys.end() && it->frame == frame)
+        it->layer = layer;
+    else
+        keys.insert(it, algo::HighlightKey{frame, layer});
+}
+
+QString highlightOperationName(algo::HighlightOperationType type)
+{
+    switch (type) {
+    case algo::HighlightOperationType::Translation:
+        return QStringLiteral("translate");
+    case algo::HighlightOperationType::Rotation:
+        return QStringLiteral("rotate");
+    case algo::HighlightOperationType::DirectionalScaling:
+        return QStringLiteral("scale");
+    case algo::HighlightOperationType::Split:
+        return QStringLiteral("split");
+    case algo::HighlightOperationType::Squaring:
+        return QStringLiteral("square");
+    }
+    return {};
+}
+
+std::optional<algo::HighlightOperationType> highlightOperationType(const QString& name)
+{
+    for (auto type : {algo::HighlightOperationType::Translation, algo::HighlightOperationType::Rotation,
+             algo::HighlightOperationType::DirectionalScaling, algo::HighlightOperationType::Split,
+             algo::HighlightOperationType::Squaring})
+        if (highlightOperationName(type) == name)
+            return type;
+    return std::nullopt;
+}
+
+int highlightOperationArity(algo::HighlightOperationType type)
+{
+    return type == algo::HighlightOperationType::Rotation || type == algo::HighlightOperationType::DirectionalScaling
+        ? 1
+        : 2;
+}
+
+QString highlightLayerProblem(const algo::HighlightLayer& layer)
+{
+    if (!inRange(layer.shape.epsilon, 0.f, 1.f) || layer.shape.epsilon == 0.f)
+        return Highlights::tr("epsilon must lie in (0, 1]");
+    for (int c = 0; c < 3; ++c)
+        if (!inRange(layer.color[c], 0.f, 1.f))
+            return Highlights::tr("colour components must lie in [0, 1]");
+    if (!inRange(layer.offSpecularCut, -1.f, 1.f))
+        return Highlights::tr("the off-specular cut must lie in [-1, 1]");
+    for (const algo::HighlightOperation& op : layer.shape.operations) {
+        const float big = std::numeric_limits<float>::max();
+        bool ok = true;
+        switch (op.type) {
+        case algo::HighlightOperationType::Translation:
+            ok = inRange(op.a, -big, big) && inRange(op.b, -big, big);
+            break;
+        case algo::HighlightOperationType::Rotation:
+            ok = inRange(op.a, -big, big) && op.b == 0.f;
+            break;
+        case algo::HighlightOperationType::DirectionalScaling:
+            ok = inRange(op.a, 0.f, 1.f) && op.b == 0.f;
+            break;
+        case algo::HighlightOperationType::Split:
+            ok = inRange(op.a, 0.f, big) && inRange(op.b, 0.f, big);
+            break;
+        case algo::HighlightOperationType::Squaring:
+            ok = inRange(op.a, 0.f, 1.f) && inRange(op.b, 1.f, big);
+            break;
+        }
+        if (!ok)
+            return Highlights::tr("the parameters of a %1 operation are out of range")
+                .arg(highlightOperationName(op.type));
+    }
+    if (!layer.combinations.empty())
+        return Highlights::tr("combinations belong to the track, not to its keys");
+    return {};
+}
+
+QString highlightTracksProblem(const std::vector<HighlightTrack>& tracks, const std::vector<QString>& faceSetNames)
+{
+    std::set<QString> names;
+    for (const HighlightTrack& t : tracks) {
+        if (t.name.isEmpty())
+            return Highlights::tr("a highlight layer has no name");
+        if (!names.insert(t.name).second)
+            return Highlights::tr("two highlight layers are named “%1”").arg(t.name);
+    }
+    for (const HighlightTrack& t : tracks) {
+        if (!t.patch.isEmpty() && std::find(faceSetNames.begin(), faceSetNames.end(), t.patch) == faceSetNames.end())
+            return Highlights::tr("highlight layer “%1” uses the unknown face set “%2”").arg(t.name, t.patch);
+        if (!t.guide.allFinite() || t.guide.norm() == 0.f)
+            return Highlights::tr("highlight layer “%1” has a zero guide direction").arg(t.name);
+        if (t.keys.empty())
+            return Highlights::tr("highlight layer “%1” has no keyframe").arg(t.name);
+        for (std::size_t i = 0; i < t.keys.size(); ++i) {
+            if (!std::isfinite(t.keys[i].frame) || (i > 0 && !(t.keys[i].frame > t.keys[i - 1].frame)))
+                return Highlights::tr("highlight layer “%1” has keyframes out of order").arg(t.name);
+            const QString problem = highlightLayerProblem(t.keys[i].layer);
+            if (!problem.isEmpty())
+                return Highlights::tr("highlight layer “%1”: %2").arg(t.name, problem);
+        }
+        for (const auto& [mode, other] : t.combineWith)
+            if (other == t.name || names.count(other) == 0)
+                return Highlights::tr("highlight layer “%1” combines with “%2”, which is not another layer")
+                    .arg(t.name, other);
+    }
+    return {};
 }
 
 } // namespace celform::model

@@ -2,6 +2,7 @@
 // owns one ProjectData and changes it only through undo commands; file I/O reads and writes it.
 #pragma once
 
+#include "celform/algorithms/highlights.h"
 #include "celform/algorithms/lines.h"
 #include "celform/algorithms/shading.h"
 #include "celform/algorithms/stereo.h"
@@ -13,8 +14,10 @@
 #include <QString>
 
 #include <cstdint>
+#include <algorithm>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace celform::model {
@@ -124,6 +127,52 @@ inline algo::GoochParams autoGooch()
     return g;
 }
 
+/// One stylized highlight layer over time (Anjyo & Hiramitsu 2003, "Making highlight animation").
+/// The keys' layers hold colour, shape and off-specular cut; their names and combinations are
+/// unused: the track's name identifies it, and combineWith names other tracks whose shape at the
+/// same frame is united with or subtracted from this one (resolved when rendering, so editing the
+/// other track changes this one too).
+struct HighlightTrack {
+    QString name; ///< unique among the look's tracks, not empty
+    QString patch; ///< name of a face set of the base model; empty = all faces
+    Eigen::Vector3f guide{0.0f, 1.0f, 0.0f}; ///< stroke direction for tangent frames without UVs
+    bool visible = true; ///< false: drawn only as an operand of other tracks' combinations
+    std::vector<std::pair<algo::HighlightBoolean, QString>> combineWith; ///< left to right
+    std::vector<algo::HighlightKey> keys; ///< at least one, frames strictly increasing
+
+    /// The key layer at a frame (interpolated, held outside the keys), combinations not resolved.
+    [[nodiscard]] algo::HighlightLayer layerAt(double frame) const;
+    /// Sets (replaces or inserts) the key at frame, keeping keys sorted.
+    void setKey(double frame, const algo::HighlightLayer& layer);
+    bool operator==(const HighlightTrack& o) const
+    {
+        return name == o.name && patch == o.patch && guide == o.guide && visible == o.visible
+            && combineWith == o.combineWith && keys.size() == o.keys.size()
+            && std::equal(
+                keys.begin(), keys.end(), o.keys.begin(), [](const algo::HighlightKey& a, const algo::HighlightKey& b) {
+                    return a.frame == b.frame && a.layer == b.layer;
+                });
+    }
+};
+
+/// The first problem of a key's parameters, empty when valid: epsilon in (0, 1], colour
+/// components in [0, 1], off-specular cut in [-1, 1], and each operation's parameters in the
+/// paper's range (scaling delta and squaring sigma in [0, 1], split gammas >= 0, squaring n >= 1).
+[[nodiscard]] QString highlightLayerProblem(const algo::HighlightLayer& layer);
+
+/// The first problem of a look's highlight tracks, empty when valid: names unique and not empty,
+/// at least one key per track with strictly increasing frames, valid keys, a non-zero guide,
+/// combinations naming another existing track. faceSetNames: the base model's face sets
+/// (a patch must name one of them).
+[[nodiscard]] QString highlightTracksProblem(
+    const std::vector<HighlightTrack>& tracks, const std::vector<QString>& faceSetNames);
+
+/// Stable names of the operation types (file format and command line): translate, rotate,
+/// scale, split, square; and the number of parameters each takes.
+[[nodiscard]] QString highlightOperationName(algo::HighlightOperationType type);
+[[nodiscard]] std::optional<algo::HighlightOperationType> highlightOperationType(const QString& name);
+[[nodiscard]] int highlightOperationArity(algo::HighlightOperationType type);
+
 /// The cartoon look (DESIGN.md, "Look"): shading style and parameters, lines, key light, stereo.
 struct Look {
     ShadingStyle style = ShadingStyle::Toon;
@@ -139,6 +188,7 @@ struct Look {
     algo::LineSettings lines;
     algo::LineStyle lineStyle;
     StereoLook stereo;
+    std::vector<HighlightTrack> highlights; ///< drawn in order, later over earlier
 
     [[nodiscard]] ShadingStyle styleOf(int material) const
     {
@@ -150,7 +200,7 @@ struct Look {
         return style == o.style && materialStyles == o.materialStyles && light == o.light
             && backgroundColor == o.backgroundColor && toon == o.toon && toonEvaluation == o.toonEvaluation
             && gooch == o.gooch && hatch == o.hatch && showLines == o.showLines && lines == o.lines
-            && lineStyle == o.lineStyle && stereo == o.stereo;
+            && lineStyle == o.lineStyle && stereo == o.stereo && highlights == o.highlights;
     }
     bool operator!=(const Look& o) const { return !(*this == o); }
 };

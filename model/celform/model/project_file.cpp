@@ -192,6 +192,33 @@ QJsonArray matrix3(const Eigen::Matrix3f& m)
     return rows;
 }
 
+QJsonArray highlightsJson(const std::vector<HighlightTrack>& tracks)
+{
+    QJsonArray out;
+    for (const HighlightTrack& t : tracks) {
+        QJsonArray combine;
+        for (const auto& [mode, other] : t.combineWith)
+            combine.append(
+                QJsonObject{{"mode", mode == algo::HighlightBoolean::Union ? "union" : "subtract"}, {"layer", other}});
+        QJsonArray keys;
+        for (const algo::HighlightKey& k : t.keys) {
+            QJsonArray operations;
+            for (const algo::HighlightOperation& op : k.layer.shape.operations) {
+                QJsonArray values{double(op.a)};
+                if (highlightOperationArity(op.type) == 2)
+                    values.append(double(op.b));
+                operations.append(QJsonObject{{"type", highlightOperationName(op.type)}, {"values", values}});
+            }
+            keys.append(QJsonObject{{"frame", k.frame}, {"color", vec3f(k.layer.color)},
+                {"epsilon", double(k.layer.shape.epsilon)}, {"off_specular_cut", double(k.layer.offSpecularCut)},
+                {"operations", operations}});
+        }
+        out.append(QJsonObject{{"name", t.name}, {"patch", t.patch}, {"guide", vec3f(t.guide)}, {"visible", t.visible},
+            {"combine", combine}, {"keys", keys}});
+    }
+    return out;
+}
+
 QJsonObject lookJson(const Look& look)
 {
     QJsonObject materialStyles;
@@ -226,7 +253,8 @@ QJsonObject lookJson(const Look& look)
         {"stereo",
             QJsonObject{{"output", enumName(st.output)}, {"interocular", st.interocular},
                 {"convergence", st.convergence}, {"toe_in", st.toeIn}, {"swap_eyes", st.swapEyes},
-                {"dubois_left", matrix3(st.dubois.left)}, {"dubois_right", matrix3(st.dubois.right)}}}};
+                {"dubois_left", matrix3(st.dubois.left)}, {"dubois_right", matrix3(st.dubois.right)}}},
+        {"highlights", highlightsJson(look.highlights)}};
 }
 
 QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
@@ -447,6 +475,56 @@ Eigen::Matrix3f readMatrix3(const Reader& r, const QJsonObject& o, const char* n
     return m;
 }
 
+/// Highlight tracks; their references (face sets, other tracks) are checked by the caller.
+std::vector<HighlightTrack> readHighlights(const Reader& r, const QJsonArray& array)
+{
+    std::vector<HighlightTrack> tracks;
+    for (const QJsonValue& tv : array) {
+        if (!tv.isObject())
+            r.corrupt(ProjectFile::tr("a highlight layer is not an object"));
+        const QJsonObject o = tv.toObject();
+        HighlightTrack t;
+        t.name = r.string(o, "name");
+        t.patch = r.string(o, "patch");
+        t.guide = r.vector3(o, "guide").cast<float>();
+        t.visible = r.boolean(o, "visible");
+        for (const QJsonValue& cv : r.array(o, "combine")) {
+            const QJsonObject c = cv.toObject();
+            const QString mode = r.string(c, "mode");
+            if (mode != QLatin1String("union") && mode != QLatin1String("subtract"))
+                r.corrupt(ProjectFile::tr("the entry “mode” has the unknown value “%1”").arg(mode));
+            t.combineWith.emplace_back(
+                mode == QLatin1String("union") ? algo::HighlightBoolean::Union : algo::HighlightBoolean::Subtraction,
+                r.string(c, "layer"));
+        }
+        for (const QJsonValue& kv : r.array(o, "keys")) {
+            const QJsonObject k = kv.toObject();
+            algo::HighlightKey key;
+            key.frame = r.number(k, "frame");
+            key.layer.color = r.vector3(k, "color").cast<float>();
+            key.layer.shape.epsilon = float(r.number(k, "epsilon"));
+            key.layer.offSpecularCut = float(r.number(k, "off_specular_cut"));
+            for (const QJsonValue& ov : r.array(k, "operations")) {
+                const QJsonObject op = ov.toObject();
+                const QString typeName = r.string(op, "type");
+                const auto type = highlightOperationType(typeName);
+                if (!type)
+                    r.corrupt(ProjectFile::tr("the highlight operation “%1” is unknown").arg(typeName));
+                const std::vector<float> values = readFloats(r, op, "values");
+                if (int(values.size()) != highlightOperationArity(*type))
+                    r.corrupt(ProjectFile::tr("the highlight operation “%1” has %2 values instead of %3")
+                                  .arg(typeName)
+                                  .arg(values.size())
+                                  .arg(highlightOperationArity(*type)));
+                key.layer.shape.operations.push_back({*type, values[0], values.size() > 1 ? values[1] : 0.f});
+            }
+            t.keys.push_back(std::move(key));
+        }
+        tracks.push_back(std::move(t));
+    }
+    return tracks;
+}
+
 /// The look; every part but the style, light, background and lines switch is optional, so
 /// projects from before the cartoon look still open with its defaults.
 Look readLook(const Reader& r, const QJsonObject& look)
@@ -521,6 +599,8 @@ Look readLook(const Reader& r, const QJsonObject& look)
         out.stereo.dubois.left = readMatrix3(r, st, "dubois_left");
         out.stereo.dubois.right = readMatrix3(r, st, "dubois_right");
     }
+    if (look.contains("highlights"))
+        out.highlights = readHighlights(r, r.array(look, "highlights"));
     return out;
 }
 
@@ -617,6 +697,13 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     data.blend.time = r.enumValue<TimeInterpolation>(blend, "time");
 
     data.look = readLook(r, r.object(root, "look"));
+    std::vector<QString> faceSetNames;
+    if (data.baseMesh)
+        for (const auto& set : data.baseMesh->faceSets)
+            faceSetNames.push_back(QString::fromStdString(set.name));
+    const QString highlightProblem = highlightTracksProblem(data.look.highlights, faceSetNames);
+    if (!highlightProblem.isEmpty())
+        r.corrupt(highlightProblem);
     if (root.contains("shading_offsets")) {
         const QJsonObject o = r.object(root, "shading_offsets");
         const qint64 n = r.count(o, "count");

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 namespace celform::model {
 namespace {
@@ -137,6 +138,65 @@ algo::RenderLook renderLookFor(const ProjectData& data, const Look& look)
     return r;
 }
 
+/// Rounds of neighbour averaging of a guide's projections: enough to fill the spots where the guide
+/// is nearly normal to the surface without washing out the artist's direction.
+constexpr int kGuideSmoothingRounds = 4;
+
+std::vector<algo::RenderHighlight> renderHighlightsFor(
+    const ProjectData& data, const Look& look, const algo::Positions& shape, int frame)
+{
+    std::vector<algo::RenderHighlight> out;
+    if (look.highlights.empty() || !data.baseMesh)
+        return out;
+    const algo::TriMesh& mesh = *data.baseMesh;
+    const algo::Positions normals = algo::vertexNormals(shape, mesh.faces);
+    // UV frames are shared by every track; a copy of the mesh carries the deformed positions.
+    algo::Positions uvDu, uvDv;
+    bool haveUvFrames = false;
+    if (mesh.hasUvs()) {
+        algo::TriMesh deformed = mesh;
+        deformed.vertices = shape;
+        haveUvFrames = algo::vertexTangentFramesFromUvs(deformed, normals, uvDu, uvDv);
+    }
+    auto shapeOf = [&](const QString& name) -> std::optional<algo::HighlightShape> {
+        for (const HighlightTrack& t : look.highlights)
+            if (t.name == name)
+                return t.layerAt(frame).shape;
+        return std::nullopt;
+    };
+    for (const HighlightTrack& track : look.highlights) {
+        if (!track.visible || track.keys.empty())
+            continue;
+        algo::RenderHighlight h;
+        h.layer = track.layerAt(frame);
+        h.layer.name = track.name.toStdString();
+        h.layer.combinations.clear();
+        for (const auto& [mode, other] : track.combineWith)
+            if (const auto otherShape = shapeOf(other))
+                h.layer.combinations.push_back({mode, *otherShape});
+        std::vector<std::int32_t> patchFaces;
+        if (!track.patch.isEmpty() && track.patch != QLatin1String("all")) {
+            const auto set = std::find_if(mesh.faceSets.begin(), mesh.faceSets.end(),
+                [&](const algo::FaceSet& s) { return QString::fromStdString(s.name) == track.patch; });
+            if (set == mesh.faceSets.end())
+                continue; // validated on load and edit; a stale name draws nothing
+            patchFaces.assign(set->faces.begin(), set->faces.end());
+            h.faceMask.assign(std::size_t(mesh.faces.rows()), 0);
+            for (const auto f : patchFaces)
+                h.faceMask[std::size_t(f)] = 1;
+        }
+        if (haveUvFrames) {
+            h.du = uvDu;
+            h.dv = uvDv;
+        } else if (!algo::guideVertexFrames(
+                       shape, mesh.faces, normals, patchFaces, track.guide, kGuideSmoothingRounds, h.du, h.dv)) {
+            continue;
+        }
+        out.push_back(std::move(h));
+    }
+    return out;
+}
+
 algo::RasterCamera rasterCamera(const Camera& camera, int width, int height)
 {
     algo::RasterCamera r;
@@ -162,10 +222,11 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
     return s;
 }
 
-algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape,
+algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache)
 {
-    const algo::RenderLook renderLook = renderLookFor(data, look);
+    algo::RenderLook renderLook = renderLookFor(data, look);
+    renderLook.highlights = renderHighlightsFor(data, look, shape, frame);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::RenderPasses passes;
     algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);

@@ -15,6 +15,13 @@ namespace celform::model {
 /// look may override the document's (a render with --style or --light).
 algo::RenderLook renderLookFor(const ProjectData& data, const Look& look);
 
+/// The look's visible highlight tracks resolved at a frame for the renderer: keys interpolated,
+/// combinations by name replaced by the other tracks' shapes at the same frame, patch face
+/// masks (all faces for an empty patch), and per-vertex tangent frames of the shape (#V by 3)
+/// from the base model's UVs when it has them, else from each track's guide over its patch.
+std::vector<algo::RenderHighlight> renderHighlightsFor(
+    const ProjectData& data, const Look& look, const algo::Positions& shape, int frame);
+
 /// The raster camera of a document camera for an image size.
 algo::RasterCamera rasterCamera(const Camera& camera, int width, int height);
 
@@ -24,8 +31,8 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 
 /// Renders a frame of the shape, mono or as a stereo composition (lines from the centre eye,
 /// paper 3, section 4.2.2). For stereo only the beauty pass is composed; the other passes are
-/// the centre eye's.
-algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape,
+/// the centre eye's. frame selects the highlight keys.
+algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache);
 
 /// The pass names of `celform render --pass`.

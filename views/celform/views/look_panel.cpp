@@ -5,6 +5,10 @@
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QGridLayout>
+#include <QPushButton>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -339,6 +343,11 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     connect(
         swap, &QCheckBox::toggled, this, [this](bool on) { edit([on](model::Look& l) { l.stereo.swapEyes = on; }); });
     m_refreshers.push_back([this, swap] { swap->setChecked(m_document->data().look.stereo.swapEyes); });
+    auto* dubois = new QPushButton(tr("&Dubois Matrices…"), stereoBox);
+    dubois->setToolTip(tr("The 3 × 3 matrices mapping each eye's linear RGB to the anaglyph (Dubois "
+                          "least-squares red/cyan by default); tune them to a display and glasses"));
+    stereoForm->addRow(dubois);
+    connect(dubois, &QPushButton::clicked, this, &LookPanel::editDuboisMatrices);
     layout->addWidget(stereoBox);
     layout->addStretch(1);
 
@@ -383,6 +392,57 @@ void LookPanel::edit(const std::function<void(model::Look&)>& change)
     if (!look.toon.isValid())
         return; // never push a look the renderer cannot use
     m_document->setLook(look);
+}
+
+void LookPanel::editDuboisMatrices()
+{
+    QDialog dialog(this);
+    dialog.setWindowTitle(tr("Dubois Matrices"));
+    auto* layout = new QVBoxLayout(&dialog);
+    const algo::DuboisMatrices current = m_document->data().look.stereo.dubois;
+    QDoubleSpinBox* cells[2][3][3];
+    const QString titles[2] = {tr("Left eye"), tr("Right eye")};
+    const Eigen::Matrix3f* matrices[2] = {&current.left, &current.right};
+    for (int eye = 0; eye < 2; ++eye) {
+        auto* box = new QGroupBox(titles[eye], &dialog);
+        auto* grid = new QGridLayout(box);
+        const QString channels[3] = {tr("R out"), tr("G out"), tr("B out")};
+        for (int r = 0; r < 3; ++r) {
+            grid->addWidget(new QLabel(channels[r], box), r, 0);
+            for (int c = 0; c < 3; ++c) {
+                auto* spin = new QDoubleSpinBox(box);
+                spin->setRange(-4.0, 4.0);
+                spin->setDecimals(3);
+                spin->setSingleStep(0.01);
+                spin->setValue((*matrices[eye])(r, c));
+                grid->addWidget(spin, r, c + 1);
+                cells[eye][r][c] = spin;
+            }
+        }
+        layout->addWidget(box);
+    }
+    auto* buttons = new QDialogButtonBox(
+        QDialogButtonBox::Ok | QDialogButtonBox::Cancel | QDialogButtonBox::RestoreDefaults, &dialog);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, &dialog, [&cells] {
+        const algo::DuboisMatrices defaults = algo::DuboisMatrices::redCyan();
+        const Eigen::Matrix3f* m[2] = {&defaults.left, &defaults.right};
+        for (int eye = 0; eye < 2; ++eye)
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                    cells[eye][r][c]->setValue((*m[eye])(r, c));
+    });
+    layout->addWidget(buttons);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    edit([&cells](model::Look& l) {
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                l.stereo.dubois.left(r, c) = float(cells[0][r][c]->value());
+                l.stereo.dubois.right(r, c) = float(cells[1][r][c]->value());
+            }
+    });
 }
 
 void LookPanel::rebuildTones()

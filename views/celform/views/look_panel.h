@@ -32,6 +32,7 @@ private:
     void edit(const std::function<void(model::Look&)>& change);
     void refresh();
     void rebuildTones();
+    void editDuboisMatrices();
     QDoubleSpinBox* makeSpin(double min, double max, double step, int decimals, const QString& tip);
     QToolButton* makeColorButton(const QString& tip, const std::function<Eigen::Vector3f(const model::Look&)>& get,
         const std::function<void(model::Look&, const Eigen::Vector3f&)>& set);
