@@ -21,11 +21,11 @@
     </message>
     <message>
         <source>--op takes translate:A,B, rotate:DEG, scale:DELTA, split:G1,G2 or square:SIGMA,N, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--op には translate:A,B、rotate:DEG、scale:DELTA、split:G1,G2、square:SIGMA,N のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--op “%1”: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>--op「%1」: %2</translation>
     </message>
 </context>
 <context>
@@ -404,109 +404,111 @@ usage: %1</source>
     </message>
     <message>
         <source>--combine takes union:OTHER or subtract:OTHER, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--combine には union:OTHER または subtract:OTHER を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>Adds, keys and lists stylized highlight layers.</source>
-        <translation type="unfinished"></translation>
+        <translation>スタイライズドハイライトのレイヤーを追加し、キーフレームを設定し、一覧を表示します。</translation>
     </message>
     <message>
         <source>List the highlight layers.</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤーの一覧を表示します。</translation>
     </message>
     <message>
         <source>Add a layer, or with --frame key an existing one.</source>
-        <translation type="unfinished"></translation>
+        <translation>レイヤーを追加します。--frame を指定した場合は既存のレイヤーにキーフレームを設定します。</translation>
     </message>
     <message>
         <source>Face set the highlight may appear on (all: every face).</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトを表示できるフェースセット（all: すべての面）。</translation>
     </message>
     <message>
         <source>Size of the area, in (0, 1] (default 0.05).</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライト領域のサイズ。(0, 1] の範囲で指定（既定値 0.05）。</translation>
     </message>
     <message>
         <source>Direction of the u axis on models without UVs (default 0,1,0).</source>
-        <translation type="unfinished"></translation>
+        <translation>UV のないモデルでの u 軸の方向（既定値 0,1,0）。</translation>
     </message>
     <message>
         <source>Linear RGB colour in [0, 1] (default 1,1,1).</source>
-        <translation type="unfinished"></translation>
+        <translation>リニア RGB の色。各成分は [0, 1] の範囲で指定（既定値 1,1,1）。</translation>
     </message>
     <message>
         <source>Off-specular cut: no highlight where N.L &lt;= C (default -1: off).</source>
-        <translation type="unfinished"></translation>
+        <translation>オフスペキュラーカット: N.L &lt;= C の部分にはハイライトを表示しません（既定値 -1: オフ）。</translation>
     </message>
     <message>
         <source>Operation, in order (repeatable): translate:A,B rotate:DEG scale:DELTA split:G1,G2 square:SIGMA,N.</source>
-        <translation type="unfinished"></translation>
+        <translation>操作（指定した順に適用、複数指定可）: translate:A,B rotate:DEG scale:DELTA split:G1,G2 square:SIGMA,N。</translation>
     </message>
     <message>
         <source>Unite with or subtract another layer&apos;s area (repeatable).</source>
-        <translation type="unfinished"></translation>
+        <translation>別のレイヤーの領域との和または差をとります（複数指定可）。</translation>
     </message>
     <message>
         <source>Draw the layer (on) or use it only in combinations (off).</source>
-        <translation type="unfinished"></translation>
+        <translation>レイヤーを描画するかどうか（on: 描画する、off: 組み合わせにのみ使用する）。</translation>
     </message>
     <message>
         <source>Frame of the keyframe (default 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>キーフレームのフレーム（既定値 0）。</translation>
     </message>
     <message>
         <source>give either --list or --add NAME with its options
 usage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--list か、--add NAME とそのオプションのどちらか一方を指定してください
+使い方: %1</translation>
     </message>
     <message>
         <source>%1	patch %2	%3 keyframes
 </source>
-        <translation type="unfinished"></translation>
+        <translation>%1	パッチ %2	キーフレーム %3 個
+</translation>
     </message>
     <message>
         <source>--add needs a layer name</source>
-        <translation type="unfinished"></translation>
+        <translation>--add にはレイヤー名を指定してください</translation>
     </message>
     <message>
         <source>--epsilon must lie in (0, 1], not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--epsilon には (0, 1] の範囲の値を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--cut must lie in [-1, 1], not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--cut には [-1, 1] の範囲の値を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--guide must not be zero</source>
-        <translation type="unfinished"></translation>
+        <translation>--guide にゼロベクトルは指定できません</translation>
     </message>
     <message>
         <source>--color components must lie in [0, 1], not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--color の各成分には [0, 1] の範囲の値を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--combine needs another layer than “%1” itself</source>
-        <translation type="unfinished"></translation>
+        <translation>--combine には「%1」自身以外のレイヤーを指定してください</translation>
     </message>
     <message>
         <source>--visible takes on or off, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--visible には on または off を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>already has a highlight layer named “%1”; give --frame F to set a keyframe of it</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」という名前のハイライトレイヤーがすでにあります。このレイヤーにキーフレームを設定するには --frame F を指定してください</translation>
     </message>
     <message>
         <source>has no face set named “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」という名前のフェースセットがありません</translation>
     </message>
     <message>
         <source>has no highlight layer named “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」という名前のハイライトレイヤーがありません</translation>
     </message>
     <message>
         <source>warning: %1: the keyframes %2 and %3 of “%4” have different operations; the earlier one holds between them</source>
-        <translation type="unfinished"></translation>
+        <translation>警告: %1: 「%4」のキーフレーム %2 と %3 で操作が異なります。この 2 つの間では前のキーフレームが保持されます</translation>
     </message>
 </context>
 <context>
@@ -1106,55 +1108,55 @@ Recover it now?</source>
     <name>celform::model::Highlights</name>
     <message>
         <source>epsilon must lie in (0, 1]</source>
-        <translation type="unfinished"></translation>
+        <translation>epsilon は (0, 1] の範囲内である必要があります</translation>
     </message>
     <message>
         <source>colour components must lie in [0, 1]</source>
-        <translation type="unfinished"></translation>
+        <translation>色の各成分は [0, 1] の範囲内である必要があります</translation>
     </message>
     <message>
         <source>the off-specular cut must lie in [-1, 1]</source>
-        <translation type="unfinished"></translation>
+        <translation>オフスペキュラーカットは [-1, 1] の範囲内である必要があります</translation>
     </message>
     <message>
         <source>the parameters of a %1 operation are out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 操作のパラメーターが範囲外です</translation>
     </message>
     <message>
         <source>combinations belong to the track, not to its keys</source>
-        <translation type="unfinished"></translation>
+        <translation>組み合わせはキーフレームごとではなく、トラックに対して設定する必要があります</translation>
     </message>
     <message>
         <source>a highlight layer has no name</source>
-        <translation type="unfinished"></translation>
+        <translation>名前のないハイライトレイヤーがあります</translation>
     </message>
     <message>
         <source>two highlight layers are named “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」という名前のハイライトレイヤーが 2 つあります</translation>
     </message>
     <message>
         <source>highlight layer “%1” uses the unknown face set “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」が不明なフェースセット「%2」を使用しています</translation>
     </message>
     <message>
         <source>highlight layer “%1” has a zero guide direction</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」のガイド方向がゼロベクトルです</translation>
     </message>
     <message>
         <source>highlight layer “%1” has no keyframe</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」にキーフレームがありません</translation>
     </message>
     <message>
         <source>highlight layer “%1” has keyframes out of order</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」のキーフレームの順序が正しくありません</translation>
     </message>
     <message>
         <source>highlight layer “%1”: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」: %2</translation>
     </message>
     <message>
         <source>highlight layer “%1” combines with “%2”, which is not another layer</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」の組み合わせ先「%2」は、他のレイヤーではありません</translation>
     </message>
 </context>
 <context>
@@ -1541,7 +1543,7 @@ Recover it now?</source>
     </message>
     <message>
         <source>face set “%1” refers to a face out of range</source>
-        <translation>面セット「%1」が範囲外の面を参照しています</translation>
+        <translation>フェースセット「%1」が範囲外の面を参照しています</translation>
     </message>
     <message>
         <source>a face material index is out of range</source>
@@ -1641,19 +1643,19 @@ Recover it now?</source>
     </message>
     <message>
         <source>a highlight layer is not an object</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤーがオブジェクト形式ではありません</translation>
     </message>
     <message>
         <source>the entry “mode” has the unknown value “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>項目「mode」の値「%1」は不明です</translation>
     </message>
     <message>
         <source>the highlight operation “%1” is unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>不明なハイライト操作「%1」です</translation>
     </message>
     <message>
         <source>the highlight operation “%1” has %2 values instead of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライト操作「%1」の値の数が %3 個ではなく %2 個です</translation>
     </message>
 </context>
 <context>
@@ -2023,35 +2025,35 @@ Recover it now?</source>
     </message>
     <message>
         <source>&amp;Dubois Matrices…</source>
-        <translation type="unfinished"></translation>
+        <translation>Dubois 行列(&amp;D)…</translation>
     </message>
     <message>
         <source>The 3 × 3 matrices mapping each eye&apos;s linear RGB to the anaglyph (Dubois least-squares red/cyan by default); tune them to a display and glasses</source>
-        <translation type="unfinished"></translation>
+        <translation>左右それぞれの目のリニア RGB をアナグリフに変換する 3 × 3 行列（既定値は Dubois の最小二乗法による赤/シアン用）。使用するディスプレイとメガネに合わせて調整してください</translation>
     </message>
     <message>
         <source>Dubois Matrices</source>
-        <translation type="unfinished"></translation>
+        <translation>Dubois 行列</translation>
     </message>
     <message>
         <source>Left eye</source>
-        <translation type="unfinished"></translation>
+        <translation>左目</translation>
     </message>
     <message>
         <source>Right eye</source>
-        <translation type="unfinished"></translation>
+        <translation>右目</translation>
     </message>
     <message>
         <source>R out</source>
-        <translation type="unfinished"></translation>
+        <translation>出力 R</translation>
     </message>
     <message>
         <source>G out</source>
-        <translation type="unfinished"></translation>
+        <translation>出力 G</translation>
     </message>
     <message>
         <source>B out</source>
-        <translation type="unfinished"></translation>
+        <translation>出力 B</translation>
     </message>
 </context>
 <context>
