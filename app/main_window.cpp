@@ -8,6 +8,7 @@
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
 #include "celform/model/project_file.h"
+#include "celform/views/highlight_panel.h"
 #include "celform/views/look_panel.h"
 #include "celform/views/properties_panel.h"
 #include "celform/views/scene_panel.h"
@@ -198,6 +199,12 @@ void MainWindow::createDocks()
     makeDock(tr("Look"), QStringLiteral("lookDock"), m_look, Qt::RightDockWidgetArea);
     tabifyDockWidget(
         findChild<QDockWidget*>(QStringLiteral("propertiesDock")), findChild<QDockWidget*>(QStringLiteral("lookDock")));
+    // Stylized highlights and their keys (Anjyo & Hiramitsu 2003), tabbed with the Look.
+    auto* highlights = new views::HighlightPanel(m_document, this);
+    highlights->setViewport(m_viewport);
+    makeDock(tr("Highlights"), QStringLiteral("highlightsDock"), highlights, Qt::RightDockWidgetArea);
+    tabifyDockWidget(
+        findChild<QDockWidget*>(QStringLiteral("lookDock")), findChild<QDockWidget*>(QStringLiteral("highlightsDock")));
     findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
 
     // Paper 1, figure 4: the key directions on the viewing sphere and the facet of this view.

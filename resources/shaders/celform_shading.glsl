@@ -107,3 +107,168 @@ float cfHatchCoverage(vec3 position, vec3 normal, int tone, int toneCount, float
     float second = cfStripeCoverage(u, v, angle + 1.57079633, cfHatchSpacing, width, fp);
     return first + second * (1.0 - first);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Stylized highlights (Anjyo & Hiramitsu 2003): mirror of algorithms/celform/algorithms/
+// highlights.cpp (makeTangentFrame, halfwayVector, applyHighlightOperations, highlightFunction,
+// layerCoverage) and of render.cpp's highlightAt. Change both together.
+//
+// Up to 4 layers (the visible tracks resolved at the viewport's frame by renderHighlightsFor),
+// each with its own shape and up to 2 combinations whose operand shapes are stored beside it:
+// shape index layer * 3 + 0 is the layer's own, layer * 3 + 1 + k the k-th combination's.
+// Each shape has up to 8 operations at shape * 8 + i: type (HighlightOperationType order:
+// 0 translation, 1 rotation, 2 directional scaling, 3 split, 4 squaring) and the two floats a, b.
+uniform int cfHlLayerCount;
+uniform vec3 cfHlColor[4];
+uniform float cfHlCut[4];      // offSpecularCut; -1 = off
+uniform int cfHlCombCount[4];  // <= 2
+uniform int cfHlCombMode[8];   // layer * 2 + k: 0 union, 1 subtraction (HighlightBoolean)
+uniform float cfHlEpsilon[12];
+uniform int cfHlOpCount[12];
+uniform int cfHlOpType[96];
+uniform float cfHlOpA[96];
+uniform float cfHlOpB[96];
+
+// safeNormalized: zero for squared lengths at or below kTiny.
+vec3 cfSafeNormalized(vec3 v)
+{
+    float n2 = dot(v, v);
+    return n2 > 1e-12 ? v / sqrt(n2) : vec3(0.0);
+}
+
+// paperSign: sgn[0] = 1.
+float cfPaperSign(float x)
+{
+    return x >= 0.0 ? 1.0 : -1.0;
+}
+
+vec3 cfLeastAlignedAxis(vec3 n)
+{
+    vec3 a = abs(n);
+    if (a.x <= a.y && a.x <= a.z)
+        return vec3(1.0, 0.0, 0.0);
+    return a.y <= a.z ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0);
+}
+
+vec3 cfTowardsLight(vec3 position, vec3 light, bool pointLight)
+{
+    return cfSafeNormalized(pointLight ? light - position : light);
+}
+
+// makeTangentFrame: du projected on the tangent plane (else from dv, else the least aligned
+// axis), dv = n x du turned to dv's side.
+void cfMakeTangentFrame(vec3 normal, vec3 du, vec3 dv, out vec3 frameU, out vec3 frameV)
+{
+    vec3 n = cfSafeNormalized(normal);
+    vec3 u = du - dot(du, n) * n;
+    if (dot(u, u) <= 1e-12) {
+        vec3 w = dv - dot(dv, n) * n;
+        u = dot(w, w) > 1e-12 ? cross(w, n) : vec3(0.0);
+    }
+    if (dot(u, u) <= 1e-12) {
+        vec3 axis = cfLeastAlignedAxis(n);
+        u = axis - dot(axis, n) * n;
+    }
+    u = normalize(u);
+    vec3 c = cross(n, u);
+    frameU = u;
+    frameV = dot(c, dv) < 0.0 ? -c : c;
+}
+
+// halfwayVector: H = (L + V) / |L + V|.
+vec3 cfHalfwayVector(vec3 position, vec3 light, bool pointLight, vec3 eye)
+{
+    vec3 l = cfTowardsLight(position, light, pointLight);
+    vec3 v = cfSafeNormalized(eye - position);
+    return cfSafeNormalized(l + v);
+}
+
+// applyHighlightOperations for shape `shape`.
+vec3 cfApplyHighlightOperations(vec3 halfway, vec3 frameU, vec3 frameV, int shape)
+{
+    vec3 h = halfway;
+    vec3 du = frameU;
+    vec3 dv = frameV;
+    for (int i = 0; i < 8; ++i) {
+        if (i >= cfHlOpCount[shape])
+            break;
+        int k = shape * 8 + i;
+        int type = cfHlOpType[k];
+        float a = cfHlOpA[k];
+        float b = cfHlOpB[k];
+        if (type == 0) {
+            // Translation.
+            h = cfSafeNormalized(h + a * du + b * dv);
+        } else if (type == 1) {
+            // Rotation of the frame of later operations.
+            float c = cos(a * 0.0174532925);
+            float s = sin(a * 0.0174532925);
+            vec3 u = c * du + s * dv;
+            dv = c * dv - s * du;
+            du = u;
+        } else if (type == 2) {
+            // Directional scaling (eq. 4).
+            h = cfSafeNormalized(h - a * dot(h, du) * du);
+        } else if (type == 3) {
+            // Split.
+            h = cfSafeNormalized(h - a * cfPaperSign(dot(h, du)) * du - b * cfPaperSign(dot(h, dv)) * dv);
+        } else {
+            // Squaring.
+            float hu = dot(h, du);
+            float hv = dot(h, dv);
+            float t2 = hu * hu + hv * hv;
+            float sin2 = t2 > 1e-12 ? 2.0 * abs(hu * hv) / t2 : 0.0;
+            float sqrnorm = pow(sin2, max(b, 1.0));
+            h = cfSafeNormalized(h - a * sqrnorm * (hu * du + hv * dv));
+        }
+    }
+    return h;
+}
+
+// highlightFunction (eq. 2): Phi = (N, H').
+float cfHighlightFunction(vec3 halfway, vec3 normal, vec3 frameU, vec3 frameV, int shape)
+{
+    return dot(normal, cfApplyHighlightOperations(halfway, frameU, frameV, shape));
+}
+
+// edgeCoverage: "value > threshold" box-filtered over the value's change across the pixel
+// (width = fwidth(value), the CPU's |value_x - value| + |value_y - value|); a step at width 0.
+float cfEdgeCoverage(float value, float width, float threshold)
+{
+    float margin = value - threshold;
+    if (!(width > 0.0))
+        return margin > 0.0 ? 1.0 : 0.0;
+    return clamp(margin / width + 0.5, 0.0, 1.0);
+}
+
+// shapeCoverage (eq. 3: threshold 1 - epsilon). Called in uniform control flow (fwidth).
+float cfShapeCoverage(int shape, vec3 halfway, vec3 normal, vec3 frameU, vec3 frameV)
+{
+    float threshold = 1.0 - cfHlEpsilon[shape];
+    float phi = cfHighlightFunction(halfway, normal, frameU, frameV, shape);
+    return cfEdgeCoverage(phi, fwidth(phi), threshold);
+}
+
+// layerCoverage: the layer's shape, its combinations (union max, subtraction min(a, 1 - b)),
+// then the off-specular cut on (N, L).
+float cfLayerCoverage(int layer, vec3 position, vec3 normal, vec3 du, vec3 dv, vec3 light, bool pointLight, vec3 eye)
+{
+    // makeSample
+    vec3 n = cfSafeNormalized(normal);
+    vec3 frameU;
+    vec3 frameV;
+    cfMakeTangentFrame(n, du, dv, frameU, frameV);
+    vec3 halfway = cfHalfwayVector(position, light, pointLight, eye);
+    float lambert = dot(n, cfTowardsLight(position, light, pointLight));
+
+    float coverage = cfShapeCoverage(layer * 3, halfway, n, frameU, frameV);
+    for (int k = 0; k < 2; ++k) {
+        if (k >= cfHlCombCount[layer])
+            break;
+        float other = cfShapeCoverage(layer * 3 + 1 + k, halfway, n, frameU, frameV);
+        coverage = cfHlCombMode[layer * 2 + k] == 0 ? max(coverage, other) : min(coverage, 1.0 - other);
+    }
+    if (cfHlCut[layer] > -1.0)
+        coverage = min(coverage, cfEdgeCoverage(lambert, fwidth(lambert), cfHlCut[layer]));
+    return coverage;
+}

@@ -139,12 +139,12 @@ private:
     std::array<int, 3> background() const { return encode8(m_doc->data().look.backgroundColor); }
 
     /// The offline renderer's picture of the same scene, as the 8-bit file would hold it.
-    QImage cpuImage(celform::algo::RenderPasses* passesOut = nullptr) const
+    QImage cpuImage(celform::algo::RenderPasses* passesOut = nullptr, int frameNumber = 0) const
     {
         const ProjectData& data = m_doc->data();
         celform::algo::RenderCache cache;
-        celform::algo::RenderPasses passes = celform::model::renderShape(data, data.look, data.baseMesh->vertices, 0,
-            m_view->camera(), kSize, kSize, celform::algo::StereoOutput::Off, cache);
+        celform::algo::RenderPasses passes = celform::model::renderShape(data, data.look, data.baseMesh->vertices,
+            frameNumber, m_view->camera(), kSize, kSize, celform::algo::StereoOutput::Off, cache);
         QImage image(kSize, kSize, QImage::Format_RGB32);
         for (int y = 0; y < kSize; ++y)
             for (int x = 0; x < kSize; ++x) {
@@ -433,6 +433,118 @@ private slots:
         for (double s : sum)
             QVERIFY2(s / compared < 2.0, "mean difference per channel must stay under 2/255");
         QVERIFY2(agreement > 0.99, qPrintable(QStringLiteral("covered pixels agree on %1").arg(agreement)));
+    }
+
+    void highlightsMatchTheRenderer_data()
+    {
+        QTest::addColumn<bool>("combined");
+        QTest::newRow("one layer") << false;
+        QTest::newRow("subtraction and off-specular cut") << true;
+    }
+
+    void highlightsMatchTheRenderer()
+    {
+        QFETCH(bool, combined);
+        // One layer, light and eye on the same axis: the area sits around the sphere's centre
+        // and the translation moves it along du (the guide, +Y) by frame.
+        using celform::algo::HighlightOperation;
+        const Eigen::Vector3f yellow(1.0f, 0.85f, 0.1f);
+        celform::model::HighlightTrack track;
+        track.name = QStringLiteral("spec");
+        celform::algo::HighlightLayer layer;
+        layer.color = yellow;
+        layer.shape.epsilon = 0.05f;
+        layer.shape.operations = {HighlightOperation::translation(0.3f, 0.f), HighlightOperation::squaring(0.5f, 2.f)};
+        track.keys.push_back({0.0, layer});
+        if (combined)
+            layer.offSpecularCut = 0.97f;
+        layer.shape.operations[0].a = -0.3f;
+        track.keys.push_back({10.0, layer});
+        ProjectData data = m_doc->data();
+        data.shadingOffsets.clear();
+        data.look = baseLook();
+        data.look.light.vector = Eigen::Vector3d(0.0, 0.0, 1.0);
+        if (combined) {
+            // A hidden operand: a hole at the unmoved centre subtracted from the layer.
+            celform::model::HighlightTrack hole;
+            hole.name = QStringLiteral("hole");
+            hole.visible = false;
+            celform::algo::HighlightLayer holeLayer;
+            holeLayer.shape.epsilon = 0.01f;
+            hole.keys.push_back({0.0, holeLayer});
+            track.combineWith.push_back({celform::algo::HighlightBoolean::Subtraction, hole.name});
+            data.look.highlights.push_back(hole);
+        }
+        data.look.highlights.push_back(track);
+        m_doc->reset(std::move(data));
+        m_view->setCamera(m_camera);
+        QSignalSpy frames(m_view.get(), &Viewport::frameChanged);
+        QCOMPARE(m_view->frame(), 0);
+
+        const auto hl8 = encode8(yellow);
+        double centroidY[2] = {0, 0};
+        for (const int frameNumber : {0, 10}) {
+            m_view->setFrame(frameNumber);
+            QCOMPARE(m_view->frame(), frameNumber);
+            const QImage gpu = frame();
+            celform::algo::RenderPasses passes;
+            const QImage cpu = cpuImage(&passes, frameNumber);
+            const QString tag = combined ? QStringLiteral("combined_") : QString();
+            gpu.save(QStringLiteral("/tmp/look_highlight_%1f%2_viewport.png").arg(tag).arg(frameNumber));
+            cpu.save(QStringLiteral("/tmp/look_highlight_%1f%2_cpu.png").arg(tag).arg(frameNumber));
+            long gpuBright = 0, cpuBright = 0, bothBright = 0, compared = 0;
+            double sum[3] = {0, 0, 0};
+            double gx = 0, gy = 0, cx = 0, cy = 0;
+            for (int y = kBand; y < kSize - kBand; ++y)
+                for (int x = kBand; x < kSize - kBand; ++x) {
+                    if (inTriad(x, y))
+                        continue;
+                    // Away from the silhouette.
+                    bool inside = true;
+                    for (int dy = -kBand; dy <= kBand && inside; ++dy)
+                        for (int dx = -kBand; dx <= kBand && inside; ++dx)
+                            inside = passes.id[std::size_t((y + dy) * kSize + x + dx)] >= 0;
+                    if (!inside)
+                        continue;
+                    const auto g = rgbAt(gpu, x, y);
+                    const auto c = rgbAt(cpu, x, y);
+                    const bool gb = channelDistance(g, hl8) <= 24;
+                    const bool cb = channelDistance(c, hl8) <= 24;
+                    gpuBright += gb ? 1 : 0;
+                    cpuBright += cb ? 1 : 0;
+                    bothBright += (gb && cb) ? 1 : 0;
+                    if (gb) {
+                        gx += x;
+                        gy += y;
+                    }
+                    if (cb) {
+                        cx += x;
+                        cy += y;
+                    }
+                    for (int k = 0; k < 3; ++k)
+                        sum[k] += std::abs(g[std::size_t(k)] - c[std::size_t(k)]);
+                    ++compared;
+                }
+            QVERIFY(compared > 10000);
+            QVERIFY2(cpuBright > 500, qPrintable(QStringLiteral("%1 highlight pixels").arg(cpuBright)));
+            QVERIFY(gpuBright > 0);
+            const double overlap = double(bothBright) / double(std::max(gpuBright, cpuBright));
+            const double shift = std::hypot(gx / gpuBright - cx / cpuBright, gy / gpuBright - cy / cpuBright);
+            centroidY[frameNumber == 0 ? 0 : 1] = cy / cpuBright;
+            qInfo("%s, frame %d: %ld pixels compared, mean |diff| per channel %.3f %.3f %.3f (of 255); "
+                  "highlight pixels viewport %ld, renderer %ld, overlap %.4f, centroid shift %.3f px",
+                QTest::currentDataTag(), frameNumber, compared, sum[0] / compared, sum[1] / compared, sum[2] / compared,
+                gpuBright, cpuBright, overlap, shift);
+            for (double v : sum)
+                QVERIFY2(v / compared < 3.0, "mean difference per channel must stay under 3/255");
+            QVERIFY2(overlap > 0.97, "the highlight must cover the same pixels");
+            QVERIFY2(shift < 1.0, "the highlight must sit at the same place");
+        }
+        // The keys moved the area along du = +Y (up on screen, smaller y) at frame 0.
+        QVERIFY(centroidY[1] - centroidY[0] > 10.0);
+        QCOMPARE(frames.count(), 1);
+        QCOMPARE(frames.front().front().toInt(), 10);
+        m_view->setFrame(0);
     }
 
     void lightGizmoDragMovesTheLight()

@@ -41,6 +41,16 @@ constexpr const char* kOffsetArray = "cfShadingOffset";
 constexpr const char* kLutArray = "cfLutIntensity";
 constexpr const char* kBaseArray = "cfBaseColor";
 constexpr const char* kStyleArray = "cfStyle";
+// Highlights: per layer the vertex's du and the handedness of its frame (dv = w * N x du, as
+// makeTangentFrame builds it), and per layer 1 where the vertex belongs to the layer's patch.
+constexpr int kMaxHighlightLayers = 4;
+constexpr int kMaxHighlightCombinations = 2;
+constexpr int kMaxHighlightOperations = 8;
+constexpr const char* kHighlightDuArrays[kMaxHighlightLayers]
+    = {"cfHighlightDu0", "cfHighlightDu1", "cfHighlightDu2", "cfHighlightDu3"};
+constexpr const char* kHighlightDuAttributes[kMaxHighlightLayers]
+    = {"cfHlDuAttr0", "cfHlDuAttr1", "cfHlDuAttr2", "cfHlDuAttr3"};
+constexpr const char* kHighlightMaskArray = "cfHighlightMask";
 
 // Vertex shader: model-space position and normal, and the per-vertex look attributes, passed on.
 const char* const kVertexDec = R"glsl(//VTK::Normal::Dec
@@ -49,12 +59,26 @@ in float cfOffsetAttr;
 in float cfLutAttr;
 in vec3 cfBaseAttr;
 in float cfStyleAttr;
+in vec4 cfHlDuAttr0;
+in vec4 cfHlDuAttr1;
+in vec4 cfHlDuAttr2;
+in vec4 cfHlDuAttr3;
+in vec4 cfHlMaskAttr;
 out vec3 cfPositionMC;
 out vec3 cfNormalMC;
 out float cfOffset;
 out float cfLutIntensity;
 out vec3 cfBase;
 out float cfStyle;
+out vec3 cfHlDu0;
+out vec3 cfHlDu1;
+out vec3 cfHlDu2;
+out vec3 cfHlDu3;
+out vec3 cfHlDv0;
+out vec3 cfHlDv1;
+out vec3 cfHlDv2;
+out vec3 cfHlDv3;
+out vec4 cfHlMask;
 )glsl";
 
 const char* const kVertexImpl = R"glsl(//VTK::Normal::Impl
@@ -64,6 +88,20 @@ const char* const kVertexImpl = R"glsl(//VTK::Normal::Impl
   cfLutIntensity = cfLutAttr;
   cfBase = cfBaseAttr;
   cfStyle = cfStyleAttr;
+  // The vertex frames of renderHighlightsFor: dv = w * (N x du), w = +-1 (0 outside a patch).
+  {
+    float cfNl = length(cfNormalAttr);
+    vec3 cfNv = cfNl > 0.0 ? cfNormalAttr / cfNl : vec3(0.0);
+    cfHlDu0 = cfHlDuAttr0.xyz;
+    cfHlDu1 = cfHlDuAttr1.xyz;
+    cfHlDu2 = cfHlDuAttr2.xyz;
+    cfHlDu3 = cfHlDuAttr3.xyz;
+    cfHlDv0 = cfHlDuAttr0.w * cross(cfNv, cfHlDuAttr0.xyz);
+    cfHlDv1 = cfHlDuAttr1.w * cross(cfNv, cfHlDuAttr1.xyz);
+    cfHlDv2 = cfHlDuAttr2.w * cross(cfNv, cfHlDuAttr2.xyz);
+    cfHlDv3 = cfHlDuAttr3.w * cross(cfNv, cfHlDuAttr3.xyz);
+    cfHlMask = cfHlMaskAttr;
+  }
 )glsl";
 
 // Fragment shader declarations after the shared functions: the light, the camera and the style.
@@ -74,6 +112,15 @@ in float cfOffset;
 in float cfLutIntensity;
 in vec3 cfBase;
 in float cfStyle;
+in vec3 cfHlDu0;
+in vec3 cfHlDu1;
+in vec3 cfHlDu2;
+in vec3 cfHlDu3;
+in vec3 cfHlDv0;
+in vec3 cfHlDv1;
+in vec3 cfHlDv2;
+in vec3 cfHlDv3;
+in vec4 cfHlMask;
 uniform vec3 cfLightVector;  // towards the light (directional) or its position (point), model space
 uniform int cfPointLight;
 uniform int cfEvaluation;    // 0 PerPixel, 1 PerVertexLut, 2 PerFace (algo::ToonEvaluation)
@@ -107,6 +154,20 @@ int cfToneIndex(float lambert)
 float cfEncode(float l)
 {
   return l > 0.0031308 ? 1.055 * pow(l, 1.0 / 2.4) - 0.055 : 12.92 * l;
+}
+
+// render.cpp's highlightAt, one layer: "over" with premultiplied colour, nothing outside the
+// layer's patch (all three vertices in it). The coverage is evaluated everywhere so that its
+// derivatives stay in uniform control flow.
+void cfHighlightOver(int layer, vec3 du, vec3 dv, float mask, vec3 p, vec3 n, inout float coverage,
+    inout vec3 premultiplied)
+{
+  if (layer >= cfHlLayerCount)
+    return;
+  float c = cfLayerCoverage(layer, p, n, du, dv, cfLightVector, cfPointLight != 0, cfEye);
+  c = mask > 0.999 ? c : 0.0;
+  premultiplied = premultiplied * (1.0 - c) + cfHlColor[layer] * c;
+  coverage = c + coverage * (1.0 - c);
 }
 )glsl";
 
@@ -151,6 +212,17 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
       float cfInk = cfHatchCoverage(cfP, cfN, cfTone, cfToneCount, cfFootprint);
       cfColor = cfBase * cfIntensities[max(0, cfToneCount - 1)] * (1.0 - cfInk) + cfLineColor * cfInk;
     }
+    // Highlights after shading, before lines: mix(shaded, layer colour, coverage).
+    if (cfHlLayerCount > 0) {
+      float cfHlCoverage = 0.0;
+      vec3 cfHlPremultiplied = vec3(0.0);
+      cfHighlightOver(0, cfHlDu0, cfHlDv0, cfHlMask.x, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
+      cfHighlightOver(1, cfHlDu1, cfHlDv1, cfHlMask.y, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
+      cfHighlightOver(2, cfHlDu2, cfHlDv2, cfHlMask.z, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
+      cfHighlightOver(3, cfHlDu3, cfHlDv3, cfHlMask.w, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
+      vec3 cfHlColorHere = cfHlCoverage > 0.0 ? cfHlPremultiplied / cfHlCoverage : vec3(0.0);
+      cfColor = cfColor * (1.0 - cfHlCoverage) + cfHlColorHere * cfHlCoverage;
+    }
     cfColor = clamp(cfColor, 0.0, 1.0);
     gl_FragData[0] = vec4(cfEncode(cfColor.r), cfEncode(cfColor.g), cfEncode(cfColor.b), 1.0);
   }
@@ -192,7 +264,50 @@ struct Uniforms {
     int pointLight = 0;
     int evaluation = 0;
     std::array<float, 3> lineColor{};
+    // Highlights (see celform_shading.glsl for the layout).
+    int hlLayerCount = 0;
+    std::array<float, 3 * kMaxHighlightLayers> hlColor{};
+    std::array<float, kMaxHighlightLayers> hlCut{};
+    std::array<int, kMaxHighlightLayers> hlCombCount{};
+    std::array<int, kMaxHighlightLayers * kMaxHighlightCombinations> hlCombMode{};
+    std::array<float, kMaxHighlightLayers*(1 + kMaxHighlightCombinations)> hlEpsilon{};
+    std::array<int, kMaxHighlightLayers*(1 + kMaxHighlightCombinations)> hlOpCount{};
+    std::array<int, kMaxHighlightLayers*(1 + kMaxHighlightCombinations) * kMaxHighlightOperations> hlOpType{};
+    std::array<float, kMaxHighlightLayers*(1 + kMaxHighlightCombinations) * kMaxHighlightOperations> hlOpA{};
+    std::array<float, kMaxHighlightLayers*(1 + kMaxHighlightCombinations) * kMaxHighlightOperations> hlOpB{};
 };
+
+/// Operation type as the shader numbers it (HighlightOperationType order).
+int operationIndex(algo::HighlightOperationType type)
+{
+    switch (type) {
+    case algo::HighlightOperationType::Translation:
+        return 0;
+    case algo::HighlightOperationType::Rotation:
+        return 1;
+    case algo::HighlightOperationType::DirectionalScaling:
+        return 2;
+    case algo::HighlightOperationType::Split:
+        return 3;
+    case algo::HighlightOperationType::Squaring:
+        return 4;
+    }
+    return 0;
+}
+
+/// One shape into the uniform tables at slot `shape`.
+void storeShape(Uniforms& u, int shape, const algo::HighlightShape& s)
+{
+    u.hlEpsilon[std::size_t(shape)] = s.epsilon;
+    const int count = int(std::min<std::size_t>(s.operations.size(), kMaxHighlightOperations));
+    u.hlOpCount[std::size_t(shape)] = count;
+    for (int i = 0; i < count; ++i) {
+        const auto k = std::size_t(shape * kMaxHighlightOperations + i);
+        u.hlOpType[k] = operationIndex(s.operations[std::size_t(i)].type);
+        u.hlOpA[k] = s.operations[std::size_t(i)].a;
+        u.hlOpB[k] = s.operations[std::size_t(i)].b;
+    }
+}
 
 } // namespace
 
@@ -206,6 +321,10 @@ struct LookShading::Impl {
     vtkSmartPointer<vtkFloatArray> lut = namedArray(kLutArray, 1);
     vtkSmartPointer<vtkFloatArray> base = namedArray(kBaseArray, 3);
     vtkSmartPointer<vtkFloatArray> style = namedArray(kStyleArray, 1);
+    std::array<vtkSmartPointer<vtkFloatArray>, kMaxHighlightLayers> highlightDu{namedArray(kHighlightDuArrays[0], 4),
+        namedArray(kHighlightDuArrays[1], 4), namedArray(kHighlightDuArrays[2], 4),
+        namedArray(kHighlightDuArrays[3], 4)};
+    vtkSmartPointer<vtkFloatArray> highlightMask = namedArray(kHighlightMaskArray, 4);
     Uniforms uniforms;
     bool active = false;
     // Clay settings restored when the look is turned off.
@@ -243,6 +362,16 @@ void LookShading::Impl::setUniforms(vtkShaderProgram* program) const
     program->SetUniformi("cfPointLight", u.pointLight);
     program->SetUniformi("cfEvaluation", u.evaluation);
     program->SetUniform3f("cfLineColor", u.lineColor.data());
+    program->SetUniformi("cfHlLayerCount", u.hlLayerCount);
+    program->SetUniform3fv("cfHlColor", kMaxHighlightLayers, u.hlColor.data());
+    program->SetUniform1fv("cfHlCut", kMaxHighlightLayers, u.hlCut.data());
+    program->SetUniform1iv("cfHlCombCount", kMaxHighlightLayers, u.hlCombCount.data());
+    program->SetUniform1iv("cfHlCombMode", int(u.hlCombMode.size()), u.hlCombMode.data());
+    program->SetUniform1fv("cfHlEpsilon", int(u.hlEpsilon.size()), u.hlEpsilon.data());
+    program->SetUniform1iv("cfHlOpCount", int(u.hlOpCount.size()), u.hlOpCount.data());
+    program->SetUniform1iv("cfHlOpType", int(u.hlOpType.size()), u.hlOpType.data());
+    program->SetUniform1fv("cfHlOpA", int(u.hlOpA.size()), u.hlOpA.data());
+    program->SetUniform1fv("cfHlOpB", int(u.hlOpB.size()), u.hlOpB.data());
 
     // The camera as it is for this very draw (stereo eyes move it between draws).
     vtkCamera* camera = renderer ? renderer->GetActiveCamera() : nullptr;
@@ -270,7 +399,8 @@ void LookShading::Impl::attachArrays()
 {
     // rebuildMesh() re-initialises the polydata, dropping its arrays: put ours back.
     vtkPointData* pd = mesh->GetPointData();
-    for (vtkFloatArray* a : {offsets.Get(), lut.Get(), base.Get(), style.Get()})
+    for (vtkFloatArray* a : {offsets.Get(), lut.Get(), base.Get(), style.Get(), highlightDu[0].Get(),
+             highlightDu[1].Get(), highlightDu[2].Get(), highlightDu[3].Get(), highlightMask.Get()})
         if (pd->GetArray(a->GetName()) != a)
             pd->AddArray(a);
 }
@@ -331,6 +461,9 @@ void LookShading::setActive(bool active)
     m->mapper->MapDataArrayToVertexAttribute("cfLutAttr", kLutArray, points, -1);
     m->mapper->MapDataArrayToVertexAttribute("cfBaseAttr", kBaseArray, points, -1);
     m->mapper->MapDataArrayToVertexAttribute("cfStyleAttr", kStyleArray, points, -1);
+    for (int layer = 0; layer < kMaxHighlightLayers; ++layer)
+        m->mapper->MapDataArrayToVertexAttribute(kHighlightDuAttributes[layer], kHighlightDuArrays[layer], points, -1);
+    m->mapper->MapDataArrayToVertexAttribute("cfHlMaskAttr", kHighlightMaskArray, points, -1);
     if (shaders) {
         shaders->ClearAllShaderReplacements();
         shaders->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
@@ -342,7 +475,7 @@ void LookShading::setActive(bool active)
     m->mapper->Modified();
 }
 
-void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals)
+void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame)
 {
     // The renderer's own resolution of the look (styles, colours and Gooch presets per material),
     // so the two paths cannot disagree on what the document means.
@@ -428,10 +561,80 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
             lut[v] = algo::lookupIntensity(u.lut, n.dot(l) + offset[v]);
         }
     }
+    updateHighlights(data, shape, normals, frame, count);
     for (vtkFloatArray* a : {m->base.Get(), m->style.Get(), m->offsets.Get(), m->lut.Get()})
         a->Modified();
     m->attachArrays();
     m->mesh->Modified();
+}
+
+void LookShading::updateHighlights(
+    const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame, Eigen::Index count)
+{
+    // The offline renderer's resolution of the tracks at the frame (keys, combinations, patches,
+    // per-vertex frames), so both paths draw the same layers.
+    const std::vector<algo::RenderHighlight> layers = model::renderHighlightsFor(data, data.look, shape, frame);
+    Uniforms& u = m->uniforms;
+    u.hlLayerCount = int(std::min<std::size_t>(layers.size(), kMaxHighlightLayers));
+    u.hlColor.fill(0.f);
+    u.hlCut.fill(-1.f);
+    u.hlCombCount.fill(0);
+    u.hlCombMode.fill(0);
+    u.hlEpsilon.fill(0.f);
+    u.hlOpCount.fill(0);
+    u.hlOpType.fill(0);
+    u.hlOpA.fill(0.f);
+    u.hlOpB.fill(0.f);
+    for (auto& a : m->highlightDu) {
+        a->SetNumberOfTuples(count);
+        a->FillValue(0.f);
+    }
+    m->highlightMask->SetNumberOfTuples(count);
+    m->highlightMask->FillValue(0.f);
+    const algo::Faces& faces = data.baseMesh->faces;
+    float* mask = m->highlightMask->GetPointer(0);
+    for (int layer = 0; layer < u.hlLayerCount; ++layer) {
+        const algo::RenderHighlight& h = layers[std::size_t(layer)];
+        const auto l = std::size_t(layer);
+        u.hlColor[3 * l + 0] = h.layer.color.x();
+        u.hlColor[3 * l + 1] = h.layer.color.y();
+        u.hlColor[3 * l + 2] = h.layer.color.z();
+        u.hlCut[l] = h.layer.offSpecularCut;
+        storeShape(u, layer * (1 + kMaxHighlightCombinations), h.layer.shape);
+        const int combinations = int(std::min<std::size_t>(h.layer.combinations.size(), kMaxHighlightCombinations));
+        u.hlCombCount[l] = combinations;
+        for (int k = 0; k < combinations; ++k) {
+            const algo::HighlightCombination& c = h.layer.combinations[std::size_t(k)];
+            u.hlCombMode[l * kMaxHighlightCombinations + std::size_t(k)]
+                = c.mode == algo::HighlightBoolean::Union ? 0 : 1;
+            storeShape(u, layer * (1 + kMaxHighlightCombinations) + 1 + k, c.shape);
+        }
+        // du and the handedness w of each vertex frame: dv = w * (N x du).
+        float* du = m->highlightDu[l]->GetPointer(0);
+        const bool haveFrames = h.du.rows() == count && h.dv.rows() == count;
+        for (Eigen::Index v = 0; haveFrames && v < count; ++v) {
+            const Eigen::Vector3f d = h.du.row(v);
+            const Eigen::Vector3f e = h.dv.row(v);
+            Eigen::Vector3f n(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+            const float nl = n.norm();
+            n = nl > 0.f ? Eigen::Vector3f(n / nl) : Eigen::Vector3f::Zero();
+            const float handedness = n.cross(d).dot(e);
+            du[4 * v + 0] = d.x();
+            du[4 * v + 1] = d.y();
+            du[4 * v + 2] = d.z();
+            du[4 * v + 3] = handedness > 0.f ? 1.f : (handedness < 0.f ? -1.f : 0.f);
+        }
+        // The patch per vertex: 1 on every vertex of a patch face (all faces for no mask).
+        for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+            if (!h.faceMask.empty() && (std::size_t(f) >= h.faceMask.size() || !h.faceMask[std::size_t(f)]))
+                continue;
+            for (int k = 0; k < 3; ++k)
+                mask[4 * std::size_t(faces(f, k)) + l] = 1.f;
+        }
+    }
+    for (auto& a : m->highlightDu)
+        a->Modified();
+    m->highlightMask->Modified();
 }
 
 } // namespace celform::views

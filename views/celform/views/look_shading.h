@@ -24,7 +24,10 @@ namespace celform::views {
 ///
 /// Per-vertex attributes (point arrays added to the polydata): the shading offset O_v (paper 3,
 /// equation 4.3), the PerVertexLut intensity (lookupIntensity of N.L + O_v, computed here on the
-/// CPU exactly as render.cpp does), the base colour and the style of the vertex's material.
+/// CPU exactly as render.cpp does), the base colour and the style of the vertex's material, and
+/// for up to 4 highlight layers (model::renderHighlightsFor at the frame) the vertex's du with the
+/// handedness of its frame (dv = w N x du) and whether the vertex lies in the layer's patch (a
+/// fragment is in the patch when all three corners are).
 /// Look uniforms are set from a cached copy each time VTK binds the program (UpdateShaderEvent),
 /// so a Look change costs no shader rebuild; only setActive() rebuilds the shaders.
 class LookShading {
@@ -36,13 +39,18 @@ public:
 
     /// Refreshes the per-vertex arrays and the uniforms for the document and the displayed shape
     /// (#V by 3, with its vertex normals, row-major #V by 3 floats).
-    void update(const model::ProjectData& data, const algo::Positions& shape, const float* normals);
+    /// frame selects the highlight tracks' keys (model::renderHighlightsFor at that frame).
+    void update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame = 0);
     /// On: the look's shader; off: VTK's own lighting (the viewport's clay look) as configured
     /// before. Rebuilds the shaders only when the state changes.
     void setActive(bool active);
     [[nodiscard]] bool isActive() const;
 
 private:
+    /// Highlight uniforms and per-vertex frames and patch masks, as renderFrame resolves them.
+    void updateHighlights(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame,
+        Eigen::Index count);
+
     struct Impl;
     std::unique_ptr<Impl> m;
 };

@@ -1740,7 +1740,17 @@ void Viewport::updateLookShading()
     if (!v.look || !m_document || !m_document->hasMesh() || !v.normals || m_shape.rows() == 0
         || v.normals->GetNumberOfTuples() != vtkIdType(m_shape.rows()))
         return;
-    v.look->update(m_document->data(), m_shape, v.normals->GetPointer(0));
+    v.look->update(m_document->data(), m_shape, v.normals->GetPointer(0), m_frame);
+}
+
+void Viewport::setFrame(int frame)
+{
+    if (frame == m_frame)
+        return;
+    m_frame = frame;
+    updateLookShading();
+    update();
+    emit frameChanged(frame);
 }
 
 double Viewport::lightGizmoRadius() const

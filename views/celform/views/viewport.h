@@ -84,6 +84,9 @@ public:
     /// Ctrl+left drag on it moves the light around the model.
     void setLightGizmoVisible(bool on);
     [[nodiscard]] bool isLightGizmoVisible() const { return m_lightGizmoVisible; }
+    /// The frame the highlight tracks are drawn at (their keys interpolated there); 0 by default.
+    void setFrame(int frame);
+    [[nodiscard]] int frame() const { return m_frame; }
     /// Where the gizmo's handle is drawn (model space): the arrow tip or the point light.
     [[nodiscard]] Eigen::Vector3d lightGizmoHandle() const;
 
@@ -168,6 +171,8 @@ signals:
     /// A message for the status bar (brush refused, nothing picked, ...).
     void message(const QString& text);
     void matchedPointsChanged();
+    /// The highlight frame changed (setFrame).
+    void frameChanged(int frame);
 
 protected:
     void showEvent(QShowEvent* event) override;
@@ -264,6 +269,7 @@ private:
     double m_strokeUnitsPerPixel = 0.0;
     bool m_shadingEnabled = true;
     bool m_lightGizmoVisible = true;
+    int m_frame = 0;
     QColor m_clayTop{200, 201, 204};
     QColor m_clayBottom{150, 151, 155};
 

@@ -1,0 +1,883 @@
+// Highlight layers bound to the document's look: refresh() keeps every control in step with the
+// look after undo, redo or a change from the command line, and with the panel's current frame.
+#include "celform/views/highlight_panel.h"
+
+#include "celform/views/viewport.h"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+namespace celform::views {
+namespace {
+
+QColor toQColor(const Eigen::Vector3f& linear)
+{
+    // Swatches show what the renderer writes: linear colour encoded as sRGB.
+    auto encode = [](float v) { return int(std::lround(255.f * algo::linearToSrgb(std::clamp(v, 0.f, 1.f)))); };
+    return QColor(encode(linear.x()), encode(linear.y()), encode(linear.z()));
+}
+
+Eigen::Vector3f fromQColor(const QColor& c)
+{
+    return {algo::srgbToLinear(float(c.redF())), algo::srgbToLinear(float(c.greenF())),
+        algo::srgbToLinear(float(c.blueF()))};
+}
+
+/// Range, step, decimals and the paper's names of an operation's two parameters.
+struct ParameterSpec {
+    double min, max, step;
+    int decimals;
+    const char* name;
+    const char* tip;
+};
+
+std::pair<ParameterSpec, ParameterSpec> operationSpecs(algo::HighlightOperationType type)
+{
+    using T = algo::HighlightOperationType;
+    switch (type) {
+    case T::Translation:
+        return {{-2, 2, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "α"),
+                    QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "alpha: moves the highlight along du")},
+            {-2, 2, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "β"),
+                QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "beta: moves the highlight along dv")}};
+    case T::Rotation:
+        return {{-360, 360, 5, 1, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "angle"),
+                    QT_TRANSLATE_NOOP("celform::views::HighlightPanel",
+                        "Angle in degrees, du turning towards dv: turns the frame of later operations")},
+            {0, 0, 0, 0, nullptr, nullptr}};
+    case T::DirectionalScaling:
+        return {
+            {0, 1, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "δ"),
+                QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "delta in [0, 1]: stretches the area along du")},
+            {0, 0, 0, 0, nullptr, nullptr}};
+    case T::Split:
+        return {{0, 5, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "γ1"),
+                    QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "gamma1 >= 0: cuts the area across du")},
+            {0, 5, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "γ2"),
+                QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "gamma2 >= 0: cuts the area across dv")}};
+    case T::Squaring:
+        return {{0, 1, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "σ"),
+                    QT_TRANSLATE_NOOP("celform::views::HighlightPanel",
+                        "sigma in [0, 1]: squareness of the area (about 0.2 is squarest)")},
+            {1, 16, 1, 0, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "n"),
+                QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "n >= 1: exponent of the squaring")}};
+    }
+    return {};
+}
+
+algo::HighlightOperation defaultOperation(algo::HighlightOperationType type)
+{
+    using T = algo::HighlightOperationType;
+    switch (type) {
+    case T::Translation:
+        return algo::HighlightOperation::translation(0.f, 0.f);
+    case T::Rotation:
+        return algo::HighlightOperation::rotation(0.f);
+    case T::DirectionalScaling:
+        return algo::HighlightOperation::directionalScaling(0.f);
+    case T::Split:
+        return algo::HighlightOperation::split(0.f, 0.f);
+    case T::Squaring:
+        return algo::HighlightOperation::squaring(0.2f, 2.f);
+    }
+    return {};
+}
+
+QString operationTitle(algo::HighlightOperationType type)
+{
+    using T = algo::HighlightOperationType;
+    switch (type) {
+    case T::Translation:
+        return HighlightPanel::tr("Translate");
+    case T::Rotation:
+        return HighlightPanel::tr("Rotate");
+    case T::DirectionalScaling:
+        return HighlightPanel::tr("Scale");
+    case T::Split:
+        return HighlightPanel::tr("Split");
+    case T::Squaring:
+        return HighlightPanel::tr("Square");
+    }
+    return {};
+}
+
+} // namespace
+
+// --- timeline ------------------------------------------------------------------------------------
+
+HighlightTimeline::HighlightTimeline(QWidget* parent)
+    : QWidget(parent)
+{
+    setToolTip(tr("Frames of the animation: diamonds are the selected layer's keys; click or drag to move the "
+                  "current frame"));
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    setFixedHeight(40);
+}
+
+void HighlightTimeline::setFrameCount(int last)
+{
+    m_last = std::max(1, last);
+    update();
+}
+
+void HighlightTimeline::setKeys(std::vector<double> frames)
+{
+    m_keys = std::move(frames);
+    update();
+}
+
+void HighlightTimeline::setFrame(int frame)
+{
+    m_frame = frame;
+    update();
+}
+
+int HighlightTimeline::xForFrame(int frame) const
+{
+    const double margin = 8.0;
+    return int(std::lround(margin + (width() - 2.0 * margin) * double(frame) / double(m_last)));
+}
+
+int HighlightTimeline::frameAt(double x) const
+{
+    const double margin = 8.0;
+    const double t = (x - margin) / std::max(1.0, width() - 2.0 * margin);
+    return std::clamp(int(std::lround(t * m_last)), 0, m_last);
+}
+
+void HighlightTimeline::paintEvent(QPaintEvent*)
+{
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QPalette& pal = palette();
+    p.fillRect(rect(), pal.color(QPalette::Base));
+    const int axisY = height() - 12;
+    p.setPen(pal.color(QPalette::Mid));
+    p.drawLine(xForFrame(0), axisY, xForFrame(m_last), axisY);
+    // Ticks: every frame when there is room, else every 6th; labels every 12th (half a second).
+    const double perFrame = (width() - 16.0) / double(m_last);
+    const int tickStep = perFrame >= 4.0 ? 1 : 6;
+    QFont font = p.font();
+    font.setPointSizeF(std::max(6.0, font.pointSizeF() * 0.75));
+    p.setFont(font);
+    for (int f = 0; f <= m_last; f += tickStep) {
+        const int x = xForFrame(f);
+        const bool major = f % 12 == 0;
+        p.setPen(pal.color(major ? QPalette::Text : QPalette::Mid));
+        p.drawLine(x, axisY, x, axisY - (major ? 6 : 3));
+        if (major && perFrame * 12 >= 18)
+            p.drawText(QRect(x - 15, axisY + 1, 30, 11), Qt::AlignCenter, QString::number(f));
+    }
+    // Key marks.
+    p.setPen(QPen(pal.color(QPalette::Text), 1));
+    for (double k : m_keys) {
+        const double x = 8.0 + (width() - 16.0) * k / double(m_last);
+        QPainterPath diamond;
+        diamond.moveTo(x, 6);
+        diamond.lineTo(x + 5, 12);
+        diamond.lineTo(x, 18);
+        diamond.lineTo(x - 5, 12);
+        diamond.closeSubpath();
+        p.fillPath(diamond, QColor(240, 190, 40));
+        p.drawPath(diamond);
+    }
+    // Current-frame cursor.
+    const int cx = xForFrame(m_frame);
+    p.setPen(QPen(QColor(220, 50, 40), 2));
+    p.drawLine(cx, 2, cx, axisY);
+    p.fillRect(QRect(cx - 4, 0, 9, 4), QColor(220, 50, 40));
+}
+
+void HighlightTimeline::mousePressEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::LeftButton)
+        emit frameScrubbed(frameAt(event->position().x()));
+}
+
+void HighlightTimeline::mouseMoveEvent(QMouseEvent* event)
+{
+    if (event->buttons() & Qt::LeftButton) {
+        const int f = frameAt(event->position().x());
+        if (f != m_frame)
+            emit frameScrubbed(f);
+    }
+}
+
+// --- panel ---------------------------------------------------------------------------------------
+
+HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
+    : QWidget(parent)
+    , m_document(document)
+{
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* content = new QWidget(scroll);
+    auto* layout = new QVBoxLayout(content);
+    scroll->setWidget(content);
+    outer->addWidget(scroll);
+
+    // --- layers ----------------------------------------------------------------------------------
+    auto* layersBox = new QGroupBox(tr("Layers"), content);
+    auto* layersLayout = new QVBoxLayout(layersBox);
+    m_layers = new QListWidget(layersBox);
+    m_layers->setObjectName(QStringLiteral("highlightLayers"));
+    m_layers->setToolTip(tr("Highlight layers, later ones drawn over earlier ones. Double-click to rename; "
+                            "unchecked layers are drawn only as operands of other layers' combinations"));
+    m_layers->setMaximumHeight(110);
+    layersLayout->addWidget(m_layers);
+    auto* layerButtons = new QHBoxLayout;
+    m_addLayer = new QPushButton(tr("&Add"), layersBox);
+    m_addLayer->setObjectName(QStringLiteral("addHighlightLayer"));
+    m_addLayer->setToolTip(tr("Add a highlight layer with a key at the current frame"));
+    m_removeLayer = new QPushButton(tr("&Remove"), layersBox);
+    m_removeLayer->setObjectName(QStringLiteral("removeHighlightLayer"));
+    m_removeLayer->setToolTip(tr("Remove the selected layer and its use in other layers' combinations"));
+    layerButtons->addWidget(m_addLayer);
+    layerButtons->addWidget(m_removeLayer);
+    layerButtons->addStretch();
+    layersLayout->addLayout(layerButtons);
+    layout->addWidget(layersBox);
+    connect(m_layers, &QListWidget::currentRowChanged, this, [this](int) {
+        if (!m_updating)
+            refresh();
+    });
+    connect(m_layers, &QListWidget::itemChanged, this, [this](QListWidgetItem* item) {
+        if (m_updating)
+            return;
+        const int row = m_layers->row(item);
+        const auto& tracks = m_document->data().look.highlights;
+        if (row < 0 || row >= int(tracks.size()))
+            return;
+        const QString oldName = tracks[std::size_t(row)].name;
+        const QString newName = item->text().trimmed();
+        const bool visible = item->checkState() == Qt::Checked;
+        if (newName != oldName) {
+            edit(tr("Rename Highlight Layer"), [&](model::Look& l) {
+                l.highlights[std::size_t(row)].name = newName;
+                for (auto& t : l.highlights)
+                    for (auto& c : t.combineWith)
+                        if (c.second == oldName)
+                            c.second = newName;
+            });
+        } else if (visible != tracks[std::size_t(row)].visible) {
+            edit(visible ? tr("Show Highlight Layer") : tr("Hide Highlight Layer"),
+                [&](model::Look& l) { l.highlights[std::size_t(row)].visible = visible; });
+        }
+        refresh(); // a refused name goes back to the stored one
+    });
+    connect(m_addLayer, &QPushButton::clicked, this, [this] {
+        const auto& tracks = m_document->data().look.highlights;
+        QString name;
+        for (int n = int(tracks.size()) + 1;; ++n) {
+            name = tr("Highlight %1").arg(n);
+            if (std::none_of(
+                    tracks.begin(), tracks.end(), [&](const model::HighlightTrack& t) { return t.name == name; }))
+                break;
+        }
+        const int index = int(tracks.size());
+        const int frame = m_frame;
+        edit(tr("Add Highlight Layer"), [&](model::Look& l) {
+            model::HighlightTrack track;
+            track.name = name;
+            track.setKey(frame, algo::HighlightLayer{});
+            l.highlights.push_back(std::move(track));
+        });
+        selectLayer(index);
+    });
+    connect(m_removeLayer, &QPushButton::clicked, this, [this] {
+        const int row = selectedLayer();
+        if (row < 0)
+            return;
+        edit(tr("Remove Highlight Layer"), [row](model::Look& l) {
+            const QString name = l.highlights[std::size_t(row)].name;
+            l.highlights.erase(l.highlights.begin() + row);
+            for (auto& t : l.highlights)
+                t.combineWith.erase(std::remove_if(t.combineWith.begin(), t.combineWith.end(),
+                                        [&](const auto& c) { return c.second == name; }),
+                    t.combineWith.end());
+        });
+    });
+
+    // --- timeline --------------------------------------------------------------------------------
+    auto* timeBox = new QGroupBox(tr("Keys"), content);
+    auto* timeLayout = new QVBoxLayout(timeBox);
+    m_timeline = new HighlightTimeline(timeBox);
+    m_timeline->setObjectName(QStringLiteral("highlightTimeline"));
+    timeLayout->addWidget(m_timeline);
+    auto* frameRow = new QHBoxLayout;
+    m_previousKey = new QToolButton(timeBox);
+    m_previousKey->setArrowType(Qt::LeftArrow);
+    m_previousKey->setToolTip(tr("Go to the previous key of the layer"));
+    m_frameSpin = new QSpinBox(timeBox);
+    m_frameSpin->setObjectName(QStringLiteral("highlightFrame"));
+    m_frameSpin->setRange(0, 48);
+    m_frameSpin->setToolTip(tr("Current frame: parameters show the layer at this frame, and edits key it here"));
+    m_nextKey = new QToolButton(timeBox);
+    m_nextKey->setArrowType(Qt::RightArrow);
+    m_nextKey->setToolTip(tr("Go to the next key of the layer"));
+    m_lastFrame = new QSpinBox(timeBox);
+    m_lastFrame->setObjectName(QStringLiteral("highlightLastFrame"));
+    m_lastFrame->setRange(1, 100000);
+    m_lastFrame->setValue(48);
+    m_lastFrame->setPrefix(tr("of "));
+    m_lastFrame->setToolTip(tr("Last frame shown on the timeline"));
+    frameRow->addWidget(new QLabel(tr("Frame:"), timeBox));
+    frameRow->addWidget(m_previousKey);
+    frameRow->addWidget(m_frameSpin);
+    frameRow->addWidget(m_nextKey);
+    frameRow->addWidget(m_lastFrame);
+    frameRow->addStretch();
+    timeLayout->addLayout(frameRow);
+    auto* keyRow = new QHBoxLayout;
+    m_key = new QPushButton(tr("&Key"), timeBox);
+    m_key->setObjectName(QStringLiteral("highlightKey"));
+    m_key->setToolTip(tr("Set a key of all the layer's parameters at the current frame"));
+    m_deleteKey = new QPushButton(tr("&Delete Key"), timeBox);
+    m_deleteKey->setObjectName(QStringLiteral("highlightDeleteKey"));
+    m_deleteKey->setToolTip(tr("Remove the layer's key at the current frame (a layer keeps at least one key)"));
+    keyRow->addWidget(m_key);
+    keyRow->addWidget(m_deleteKey);
+    keyRow->addStretch();
+    timeLayout->addLayout(keyRow);
+    layout->addWidget(timeBox);
+    connect(m_timeline, &HighlightTimeline::frameScrubbed, this, &HighlightPanel::setCurrentFrame);
+    connect(m_frameSpin, qOverload<int>(&QSpinBox::valueChanged), this, [this](int f) {
+        if (!m_updating)
+            setCurrentFrame(f);
+    });
+    connect(m_lastFrame, qOverload<int>(&QSpinBox::valueChanged), this, [this](int last) {
+        m_timeline->setFrameCount(last);
+        {
+            const QSignalBlocker block(m_frameSpin);
+            m_frameSpin->setMaximum(last);
+        }
+        if (m_frame > last)
+            setCurrentFrame(last);
+    });
+    connect(m_previousKey, &QToolButton::clicked, this, [this] { jumpToKey(-1); });
+    connect(m_nextKey, &QToolButton::clicked, this, [this] { jumpToKey(1); });
+    connect(m_key, &QPushButton::clicked, this, [this] {
+        const int frame = m_frame;
+        editTrack(tr("Key Highlight"), [frame](model::HighlightTrack& t) { t.setKey(frame, t.layerAt(frame)); });
+    });
+    connect(m_deleteKey, &QPushButton::clicked, this, [this] {
+        const double frame = m_frame;
+        editTrack(tr("Delete Highlight Key"), [frame](model::HighlightTrack& t) {
+            if (t.keys.size() < 2)
+                return;
+            t.keys.erase(std::remove_if(t.keys.begin(), t.keys.end(),
+                             [frame](const algo::HighlightKey& k) { return k.frame == frame; }),
+                t.keys.end());
+        });
+    });
+
+    // --- parameters ------------------------------------------------------------------------------
+    m_parameters = new QGroupBox(tr("Parameters at this frame"), content);
+    auto* form = new QFormLayout(m_parameters);
+    m_color = new QToolButton(m_parameters);
+    m_color->setIconSize(QSize(28, 16));
+    m_color->setToolTip(tr("Colour of the highlight (keyed)"));
+    form->addRow(tr("&Colour:"), m_color);
+    connect(m_color, &QToolButton::clicked, this, [this] {
+        const model::HighlightTrack* t = track();
+        if (!t)
+            return;
+        const QColor chosen = QColorDialog::getColor(toQColor(t->layerAt(m_frame).color), this, tr("Highlight Colour"));
+        if (chosen.isValid())
+            editKey(tr("Change Highlight Colour"), [&](algo::HighlightLayer& l) { l.color = fromQColor(chosen); });
+    });
+    m_epsilon = makeSpin(0.001, 1.0, 0.01, 3, tr("epsilon: size of the area where (N, H) > 1 - epsilon (keyed)"));
+    m_epsilon->setObjectName(QStringLiteral("highlightEpsilon"));
+    form->addRow(tr("&Epsilon:"), m_epsilon);
+    connect(m_epsilon, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editKey(
+            tr("Change Highlight Size"), [v](algo::HighlightLayer& l) { l.shape.epsilon = float(v); },
+            QStringLiteral("epsilon"));
+    });
+    m_cut = makeSpin(-1.0, 1.0, 0.05, 3,
+        tr("Off-specular cut: no highlight where N·L is at most this value; -1 turns it off (keyed)"));
+    form->addRow(tr("Off-specular c&ut:"), m_cut);
+    connect(m_cut, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editKey(
+            tr("Change Off-Specular Cut"), [v](algo::HighlightLayer& l) { l.offSpecularCut = float(v); },
+            QStringLiteral("cut"));
+    });
+    m_patch = new QComboBox(m_parameters);
+    m_patch->setToolTip(tr("Face set the highlight may appear on (not keyed)"));
+    form->addRow(tr("&Patch:"), m_patch);
+    connect(m_patch, qOverload<int>(&QComboBox::activated), this, [this](int index) {
+        const QString patch = m_patch->itemData(index).toString();
+        editTrack(tr("Change Highlight Patch"), [&](model::HighlightTrack& t) { t.patch = patch; });
+    });
+    auto* guideRow = new QWidget(m_parameters);
+    auto* guideLayout = new QHBoxLayout(guideRow);
+    guideLayout->setContentsMargins(0, 0, 0, 0);
+    for (int axis = 0; axis < 3; ++axis) {
+        m_guide[axis] = makeSpin(-1e3, 1e3, 0.1, 3,
+            tr("Guide direction (x, y, z): the u axis of the highlight on models without UVs (not keyed)"));
+        m_guide[axis]->setMinimumWidth(40);
+        m_guide[axis]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        guideLayout->addWidget(m_guide[axis]);
+        connect(m_guide[axis], qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, axis](double v) {
+            editTrack(
+                tr("Change Highlight Guide"), [axis, v](model::HighlightTrack& t) { t.guide[axis] = float(v); },
+                QStringLiteral("guide%1").arg(axis));
+        });
+    }
+    form->addRow(tr("&Guide:"), guideRow);
+    layout->addWidget(m_parameters);
+
+    // --- operations ------------------------------------------------------------------------------
+    m_operationsBox = new QGroupBox(tr("Operations (in order)"), content);
+    auto* opsLayout = new QVBoxLayout(m_operationsBox);
+    m_operationRows = new QVBoxLayout;
+    opsLayout->addLayout(m_operationRows);
+    m_addOperation = new QToolButton(m_operationsBox);
+    m_addOperation->setText(tr("Add Operation"));
+    m_addOperation->setToolTip(tr("Append an operation on the highlight's vector field to every key of the layer"));
+    m_addOperation->setPopupMode(QToolButton::InstantPopup);
+    auto* opMenu = new QMenu(m_addOperation);
+    using T = algo::HighlightOperationType;
+    for (T type : {T::Translation, T::Rotation, T::DirectionalScaling, T::Split, T::Squaring}) {
+        QAction* a = opMenu->addAction(operationTitle(type));
+        connect(a, &QAction::triggered, this, [this, type] {
+            editOperations(tr("Add Highlight Operation"),
+                [type](std::vector<algo::HighlightOperation>& ops) { ops.push_back(defaultOperation(type)); });
+        });
+    }
+    m_addOperation->setMenu(opMenu);
+    opsLayout->addWidget(m_addOperation, 0, Qt::AlignLeft);
+    layout->addWidget(m_operationsBox);
+
+    // --- combinations ----------------------------------------------------------------------------
+    m_combinationsBox = new QGroupBox(tr("Combinations"), content);
+    auto* combLayout = new QVBoxLayout(m_combinationsBox);
+    m_combinationRows = new QVBoxLayout;
+    combLayout->addLayout(m_combinationRows);
+    m_addCombination = new QPushButton(tr("Add Combination"), m_combinationsBox);
+    m_addCombination->setObjectName(QStringLiteral("addHighlightCombination"));
+    m_addCombination->setToolTip(tr("Unite this layer's area with, or subtract from it, another layer's area at the "
+                                    "same frame"));
+    combLayout->addWidget(m_addCombination, 0, Qt::AlignLeft);
+    connect(m_addCombination, &QPushButton::clicked, this, [this] {
+        const int row = selectedLayer();
+        const auto& tracks = m_document->data().look.highlights;
+        for (int i = 0; i < int(tracks.size()); ++i)
+            if (i != row) {
+                const QString other = tracks[std::size_t(i)].name;
+                editTrack(tr("Add Highlight Combination"), [&](model::HighlightTrack& t) {
+                    t.combineWith.emplace_back(algo::HighlightBoolean::Union, other);
+                });
+                return;
+            }
+    });
+    layout->addWidget(m_combinationsBox);
+    layout->addStretch();
+
+    connect(m_document, &model::Document::lookChanged, this, &HighlightPanel::refresh);
+    connect(m_document, &model::Document::documentReset, this, &HighlightPanel::refresh);
+    connect(m_document, &model::Document::meshChanged, this, &HighlightPanel::refresh);
+    refresh();
+}
+
+QDoubleSpinBox* HighlightPanel::makeSpin(double min, double max, double step, int decimals, const QString& tip)
+{
+    auto* spin = new QDoubleSpinBox(this);
+    spin->setRange(min, max);
+    spin->setSingleStep(step);
+    spin->setDecimals(decimals);
+    spin->setToolTip(tip);
+    spin->setKeyboardTracking(false); // typing "0.35" is one edit, not four
+    return spin;
+}
+
+void HighlightPanel::setCurrentFrame(int frame)
+{
+    frame = std::clamp(frame, 0, m_lastFrame->value());
+    if (frame == m_frame)
+        return;
+    m_frame = frame;
+    refresh();
+    emit frameChanged(frame);
+    if (m_viewport)
+        m_viewport->setFrame(frame);
+}
+
+int HighlightPanel::selectedLayer() const
+{
+    const int row = m_layers->currentRow();
+    return row >= 0 && row < int(m_document->data().look.highlights.size()) ? row : -1;
+}
+
+void HighlightPanel::selectLayer(int index)
+{
+    m_layers->setCurrentRow(index);
+    refresh();
+}
+
+const model::HighlightTrack* HighlightPanel::track() const
+{
+    const int row = selectedLayer();
+    return row < 0 ? nullptr : &m_document->data().look.highlights[std::size_t(row)];
+}
+
+std::vector<QString> HighlightPanel::faceSetNames() const
+{
+    std::vector<QString> names;
+    if (const auto& mesh = m_document->data().baseMesh)
+        for (const auto& set : mesh->faceSets)
+            names.push_back(QString::fromStdString(set.name));
+    return names;
+}
+
+void HighlightPanel::edit(
+    const QString& undoText, const std::function<void(model::Look&)>& change, const QString& mergeKey)
+{
+    if (m_updating)
+        return;
+    model::Look look = m_document->data().look;
+    change(look);
+    if (look == m_document->data().look)
+        return;
+    if (!model::highlightTracksProblem(look.highlights, faceSetNames()).isEmpty()) {
+        refresh(); // never push tracks the renderer refuses; the controls go back to the look
+        return;
+    }
+    QUndoStack* undo = m_document->undoStack();
+    // Document::setLook merges every consecutive look change; each edit here is its own undo step
+    // (a macro, which nothing merges into) except a run of the same control on the same key, whose
+    // step is replaced by one from the run's start to its latest value.
+    const bool continuing = !mergeKey.isEmpty() && mergeKey == m_lastMergeKey && undo->index() == m_lastUndoIndex
+        && undo->count() == m_lastUndoIndex && m_lastUndoIndex > 0;
+    if (continuing) {
+        m_updating = true; // the undone look passes through the controls without editing
+        undo->undo();
+        m_updating = false;
+    }
+    if (look != m_document->data().look) {
+        undo->beginMacro(undoText);
+        m_document->setLook(look);
+        undo->endMacro();
+    }
+    m_lastMergeKey = mergeKey;
+    m_lastUndoIndex = undo->index();
+}
+
+void HighlightPanel::editTrack(
+    const QString& undoText, const std::function<void(model::HighlightTrack&)>& change, const QString& mergeKey)
+{
+    const int row = selectedLayer();
+    if (row < 0)
+        return;
+    edit(
+        undoText, [&](model::Look& l) { change(l.highlights[std::size_t(row)]); },
+        mergeKey.isEmpty() ? QString() : QStringLiteral("%1/%2").arg(row).arg(mergeKey));
+}
+
+void HighlightPanel::editKey(
+    const QString& undoText, const std::function<void(algo::HighlightLayer&)>& change, const QString& mergeKey)
+{
+    const int frame = m_frame;
+    editTrack(
+        undoText,
+        [&](model::HighlightTrack& t) {
+            algo::HighlightLayer layer = t.layerAt(frame);
+            change(layer);
+            t.setKey(frame, layer);
+        },
+        mergeKey.isEmpty() ? QString() : QStringLiteral("%1@%2").arg(mergeKey).arg(frame));
+}
+
+void HighlightPanel::editOperations(
+    const QString& undoText, const std::function<void(std::vector<algo::HighlightOperation>&)>& change)
+{
+    // Structure changes go to every key so that the keys keep interpolating.
+    editTrack(undoText, [&](model::HighlightTrack& t) {
+        for (auto& k : t.keys)
+            change(k.layer.shape.operations);
+    });
+}
+
+void HighlightPanel::jumpToKey(int direction)
+{
+    const model::HighlightTrack* t = track();
+    if (!t)
+        return;
+    std::optional<int> target;
+    for (const auto& k : t->keys) {
+        const int f = int(std::lround(k.frame));
+        if (direction < 0 && f < m_frame)
+            target = f;
+        if (direction > 0 && f > m_frame && !target)
+            target = f;
+    }
+    if (target) {
+        if (*target > m_lastFrame->value())
+            m_lastFrame->setValue(*target);
+        setCurrentFrame(*target);
+    }
+}
+
+void HighlightPanel::rebuildOperations(const algo::HighlightLayer& layer)
+{
+    std::vector<algo::HighlightOperationType> types;
+    for (const auto& op : layer.shape.operations)
+        types.push_back(op.type);
+    if (types != m_operationTypes) {
+        while (QLayoutItem* item = m_operationRows->takeAt(0)) {
+            if (QWidget* w = item->widget()) {
+                w->hide();
+                w->deleteLater(); // one of its spin boxes may be emitting now
+            }
+            delete item;
+        }
+        m_operationSpins.clear();
+        m_operationTypes = types;
+        const int count = int(types.size());
+        for (int i = 0; i < count; ++i) {
+            auto* row = new QWidget(m_operationsBox);
+            auto* h = new QHBoxLayout(row);
+            h->setContentsMargins(0, 0, 0, 0);
+            auto* title = new QLabel(operationTitle(types[std::size_t(i)]), row);
+            title->setMinimumWidth(56);
+            h->addWidget(title);
+            const auto specs = operationSpecs(types[std::size_t(i)]);
+            QDoubleSpinBox* spins[2] = {nullptr, nullptr};
+            const ParameterSpec* s[2] = {&specs.first, &specs.second};
+            for (int p = 0; p < 2; ++p) {
+                if (!s[p]->name)
+                    continue;
+                h->addWidget(new QLabel(tr(s[p]->name), row));
+                spins[p] = makeSpin(s[p]->min, s[p]->max, s[p]->step, s[p]->decimals, tr(s[p]->tip) + tr(" (keyed)"));
+                spins[p]->setParent(row);
+                spins[p]->setObjectName(QStringLiteral("highlightOperation%1%2").arg(i).arg(p == 0 ? 'a' : 'b'));
+                spins[p]->setMinimumWidth(40);
+                spins[p]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+                h->addWidget(spins[p], 1);
+                connect(spins[p], qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i, p](double v) {
+                    editKey(
+                        tr("Change Highlight Operation"),
+                        [i, p, v](algo::HighlightLayer& l) {
+                            if (i < int(l.shape.operations.size()))
+                                (p == 0 ? l.shape.operations[std::size_t(i)].a : l.shape.operations[std::size_t(i)].b)
+                                    = float(v);
+                        },
+                        QStringLiteral("op%1.%2").arg(i).arg(p));
+                });
+            }
+            if (!spins[1])
+                h->addStretch(1);
+            auto addButton = [&](Qt::ArrowType arrow, const QString& text, const QString& tip, bool enabled) {
+                auto* b = new QToolButton(row);
+                if (arrow != Qt::NoArrow)
+                    b->setArrowType(arrow);
+                else
+                    b->setText(text);
+                b->setToolTip(tip);
+                b->setEnabled(enabled);
+                h->addWidget(b);
+                return b;
+            };
+            connect(addButton(Qt::UpArrow, {}, tr("Move the operation earlier"), i > 0), &QToolButton::clicked, this,
+                [this, i] {
+                    editOperations(tr("Move Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
+                        if (i > 0 && i < int(ops.size()))
+                            std::swap(ops[std::size_t(i - 1)], ops[std::size_t(i)]);
+                    });
+                });
+            connect(addButton(Qt::DownArrow, {}, tr("Move the operation later"), i + 1 < count), &QToolButton::clicked,
+                this, [this, i] {
+                    editOperations(tr("Move Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
+                        if (i + 1 < int(ops.size()))
+                            std::swap(ops[std::size_t(i)], ops[std::size_t(i + 1)]);
+                    });
+                });
+            connect(addButton(Qt::NoArrow, tr("✕"), tr("Remove the operation from every key"), true),
+                &QToolButton::clicked, this, [this, i] {
+                    editOperations(tr("Remove Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
+                        if (i < int(ops.size()))
+                            ops.erase(ops.begin() + i);
+                    });
+                });
+            m_operationRows->addWidget(row);
+            row->show(); // the layout would show it only once the event loop runs
+            m_operationSpins.emplace_back(spins[0], spins[1]);
+        }
+    }
+    for (std::size_t i = 0; i < m_operationSpins.size(); ++i) {
+        const auto& op = layer.shape.operations[i];
+        if (QDoubleSpinBox* a = m_operationSpins[i].first) {
+            const QSignalBlocker block(a);
+            a->setValue(op.a);
+        }
+        if (QDoubleSpinBox* b = m_operationSpins[i].second) {
+            const QSignalBlocker block(b);
+            b->setValue(op.b);
+        }
+    }
+}
+
+void HighlightPanel::rebuildCombinations(const model::HighlightTrack& t)
+{
+    while (QLayoutItem* item = m_combinationRows->takeAt(0)) {
+        if (QWidget* w = item->widget()) {
+            w->hide();
+            w->deleteLater(); // one of its combo boxes may be emitting now
+        }
+        delete item;
+    }
+    const auto& tracks = m_document->data().look.highlights;
+    for (int i = 0; i < int(t.combineWith.size()); ++i) {
+        const auto& [mode, other] = t.combineWith[std::size_t(i)];
+        auto* row = new QWidget(m_combinationsBox);
+        auto* h = new QHBoxLayout(row);
+        h->setContentsMargins(0, 0, 0, 0);
+        auto* modeBox = new QComboBox(row);
+        modeBox->addItem(tr("Union with"), int(algo::HighlightBoolean::Union));
+        modeBox->addItem(tr("Subtract"), int(algo::HighlightBoolean::Subtraction));
+        modeBox->setCurrentIndex(modeBox->findData(int(mode)));
+        modeBox->setToolTip(tr("Union adds the other layer's area; Subtract cuts it out of this layer's area"));
+        auto* otherBox = new QComboBox(row);
+        for (const auto& other2 : tracks)
+            if (other2.name != t.name)
+                otherBox->addItem(other2.name, other2.name);
+        otherBox->setCurrentIndex(otherBox->findData(other));
+        otherBox->setToolTip(tr("The other layer, at the same frame"));
+        auto* remove = new QToolButton(row);
+        remove->setText(tr("✕"));
+        remove->setToolTip(tr("Remove this combination"));
+        h->addWidget(modeBox);
+        h->addWidget(otherBox, 1);
+        h->addWidget(remove);
+        connect(modeBox, qOverload<int>(&QComboBox::activated), this, [this, i, modeBox](int index) {
+            const auto m = algo::HighlightBoolean(modeBox->itemData(index).toInt());
+            editTrack(tr("Change Highlight Combination"), [i, m](model::HighlightTrack& tr2) {
+                if (i < int(tr2.combineWith.size()))
+                    tr2.combineWith[std::size_t(i)].first = m;
+            });
+        });
+        connect(otherBox, qOverload<int>(&QComboBox::activated), this, [this, i, otherBox](int index) {
+            const QString name = otherBox->itemData(index).toString();
+            editTrack(tr("Change Highlight Combination"), [i, name](model::HighlightTrack& tr2) {
+                if (i < int(tr2.combineWith.size()))
+                    tr2.combineWith[std::size_t(i)].second = name;
+            });
+        });
+        connect(remove, &QToolButton::clicked, this, [this, i] {
+            editTrack(tr("Remove Highlight Combination"), [i](model::HighlightTrack& tr2) {
+                if (i < int(tr2.combineWith.size()))
+                    tr2.combineWith.erase(tr2.combineWith.begin() + i);
+            });
+        });
+        m_combinationRows->addWidget(row);
+        row->show(); // the layout would show it only once the event loop runs
+    }
+}
+
+void HighlightPanel::refresh()
+{
+    m_updating = true;
+    const auto& tracks = m_document->data().look.highlights;
+    {
+        const QSignalBlocker block(m_layers);
+        int row = m_layers->currentRow();
+        while (m_layers->count() > int(tracks.size()))
+            delete m_layers->takeItem(m_layers->count() - 1);
+        while (m_layers->count() < int(tracks.size())) {
+            auto* item = new QListWidgetItem(m_layers);
+            item->setFlags(item->flags() | Qt::ItemIsEditable | Qt::ItemIsUserCheckable);
+            item->setToolTip(tr("Checked: drawn; unchecked: used only in other layers' combinations"));
+        }
+        for (int i = 0; i < int(tracks.size()); ++i) {
+            QListWidgetItem* item = m_layers->item(i);
+            item->setText(tracks[std::size_t(i)].name);
+            item->setCheckState(tracks[std::size_t(i)].visible ? Qt::Checked : Qt::Unchecked);
+        }
+        if (row < 0 || row >= int(tracks.size()))
+            row = tracks.empty() ? -1 : 0;
+        m_layers->setCurrentRow(row);
+    }
+    {
+        const QSignalBlocker block(m_frameSpin);
+        m_frameSpin->setValue(m_frame);
+    }
+    m_timeline->setFrame(m_frame);
+
+    const model::HighlightTrack* t = track();
+    m_removeLayer->setEnabled(t != nullptr);
+    m_parameters->setEnabled(t != nullptr);
+    m_operationsBox->setEnabled(t != nullptr);
+    m_combinationsBox->setEnabled(t != nullptr);
+    m_key->setEnabled(t != nullptr);
+    const bool keyHere = t && std::any_of(t->keys.begin(), t->keys.end(), [this](const algo::HighlightKey& k) {
+        return k.frame == double(m_frame);
+    });
+    m_deleteKey->setEnabled(keyHere && t->keys.size() > 1);
+    m_previousKey->setEnabled(t && !t->keys.empty() && t->keys.front().frame < m_frame);
+    m_nextKey->setEnabled(t && !t->keys.empty() && t->keys.back().frame > m_frame);
+    m_addCombination->setEnabled(t && tracks.size() > 1);
+
+    std::vector<double> keyFrames;
+    const algo::HighlightLayer layer = t ? t->layerAt(m_frame) : algo::HighlightLayer{};
+    if (t)
+        for (const auto& k : t->keys)
+            keyFrames.push_back(k.frame);
+    m_timeline->setKeys(keyFrames);
+
+    QPixmap swatch(28, 16);
+    swatch.fill(toQColor(layer.color));
+    m_color->setIcon(QIcon(swatch));
+    for (auto [spin, value] :
+        {std::pair{m_epsilon, double(layer.shape.epsilon)}, std::pair{m_cut, double(layer.offSpecularCut)}}) {
+        const QSignalBlocker block(spin);
+        spin->setValue(value);
+    }
+    const Eigen::Vector3f guide = t ? t->guide : Eigen::Vector3f(0.f, 1.f, 0.f);
+    for (int axis = 0; axis < 3; ++axis) {
+        const QSignalBlocker block(m_guide[axis]);
+        m_guide[axis]->setValue(guide[axis]);
+    }
+    {
+        const QSignalBlocker block(m_patch);
+        m_patch->clear();
+        m_patch->addItem(tr("All faces"), QString());
+        for (const QString& name : faceSetNames())
+            m_patch->addItem(name, name);
+        const QString patch = t ? t->patch : QString();
+        if (m_patch->findData(patch) < 0)
+            m_patch->addItem(patch, patch);
+        m_patch->setCurrentIndex(m_patch->findData(patch));
+    }
+    rebuildOperations(layer);
+    rebuildCombinations(t ? *t : model::HighlightTrack{});
+    m_updating = false;
+}
+
+} // namespace celform::views
