@@ -921,6 +921,10 @@ Recover it now?</source>
         <source>Full-screen stereo review of the look: turntable, keys&apos; cameras, stereo modes (H for help)</source>
         <translation>ルックをフルスクリーンのステレオ表示でレビューします: ターンテーブル、各キーのカメラ、ステレオモード（H でヘルプ）</translation>
     </message>
+    <message>
+        <source>Highlights</source>
+        <translation>ハイライト</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ReviewWindow</name>
@@ -1675,6 +1679,368 @@ Recover it now?</source>
     <message>
         <source>all passes together need an .exr file</source>
         <translation>すべてのパスをまとめて書き出すには .exr ファイルが必要です</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::HighlightPanel</name>
+    <message>
+        <source>α</source>
+        <translation>α</translation>
+    </message>
+    <message>
+        <source>alpha: moves the highlight along du</source>
+        <translation>alpha: ハイライトを du 方向に移動します</translation>
+    </message>
+    <message>
+        <source>β</source>
+        <translation>β</translation>
+    </message>
+    <message>
+        <source>beta: moves the highlight along dv</source>
+        <translation>beta: ハイライトを dv 方向に移動します</translation>
+    </message>
+    <message>
+        <source>angle</source>
+        <translation>角度</translation>
+    </message>
+    <message>
+        <source>Angle in degrees, du turning towards dv: turns the frame of later operations</source>
+        <translation>角度（度、du から dv へ向かう回転が正）: 以降の操作の座標系を回転します</translation>
+    </message>
+    <message>
+        <source>δ</source>
+        <translation>δ</translation>
+    </message>
+    <message>
+        <source>delta in [0, 1]: stretches the area along du</source>
+        <translation>delta（[0, 1]）: 領域を du 方向に引き伸ばします</translation>
+    </message>
+    <message>
+        <source>γ1</source>
+        <translation>γ1</translation>
+    </message>
+    <message>
+        <source>gamma1 &gt;= 0: cuts the area across du</source>
+        <translation>gamma1（&gt;= 0）: du と交差する切れ目で領域を分割します</translation>
+    </message>
+    <message>
+        <source>γ2</source>
+        <translation>γ2</translation>
+    </message>
+    <message>
+        <source>gamma2 &gt;= 0: cuts the area across dv</source>
+        <translation>gamma2（&gt;= 0）: dv と交差する切れ目で領域を分割します</translation>
+    </message>
+    <message>
+        <source>σ</source>
+        <translation>σ</translation>
+    </message>
+    <message>
+        <source>sigma in [0, 1]: squareness of the area (about 0.2 is squarest)</source>
+        <translation>sigma（[0, 1]）: 領域の四角さ（0.2 前後で最も四角くなります）</translation>
+    </message>
+    <message>
+        <source>n</source>
+        <translation>n</translation>
+    </message>
+    <message>
+        <source>n &gt;= 1: exponent of the squaring</source>
+        <translation>n（&gt;= 1）: 四角化の指数</translation>
+    </message>
+    <message>
+        <source>Translate</source>
+        <translation>移動</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>回転</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>方向スケール</translation>
+    </message>
+    <message>
+        <source>Split</source>
+        <translation>分割</translation>
+    </message>
+    <message>
+        <source>Square</source>
+        <translation>四角化</translation>
+    </message>
+    <message>
+        <source>Layers</source>
+        <translation>レイヤー</translation>
+    </message>
+    <message>
+        <source>Highlight layers, later ones drawn over earlier ones. Double-click to rename; unchecked layers are drawn only as operands of other layers&apos; combinations</source>
+        <translation>ハイライトレイヤーです。後のレイヤーほど手前に描画されます。ダブルクリックで名前を変更できます。チェックを外したレイヤーは、他のレイヤーの組み合わせの対象としてのみ描画されます</translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation>追加(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Add a highlight layer with a key at the current frame</source>
+        <translation>現在のフレームにキーフレームを持つハイライトレイヤーを追加します</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>削除(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Remove the selected layer and its use in other layers&apos; combinations</source>
+        <translation>選択したレイヤーを削除し、他のレイヤーの組み合わせからも取り除きます</translation>
+    </message>
+    <message>
+        <source>Rename Highlight Layer</source>
+        <translation>ハイライトレイヤーの名前を変更</translation>
+    </message>
+    <message>
+        <source>Show Highlight Layer</source>
+        <translation>ハイライトレイヤーを表示</translation>
+    </message>
+    <message>
+        <source>Hide Highlight Layer</source>
+        <translation>ハイライトレイヤーを非表示</translation>
+    </message>
+    <message>
+        <source>Highlight %1</source>
+        <translation>ハイライト %1</translation>
+    </message>
+    <message>
+        <source>Add Highlight Layer</source>
+        <translation>ハイライトレイヤーを追加</translation>
+    </message>
+    <message>
+        <source>Remove Highlight Layer</source>
+        <translation>ハイライトレイヤーを削除</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>キーフレーム</translation>
+    </message>
+    <message>
+        <source>Go to the previous key of the layer</source>
+        <translation>レイヤーの前のキーフレームへ移動します</translation>
+    </message>
+    <message>
+        <source>Current frame: parameters show the layer at this frame, and edits key it here</source>
+        <translation>現在のフレーム: パラメーターにはこのフレームでのレイヤーの値が表示され、編集するとこのフレームにキーフレームが設定されます</translation>
+    </message>
+    <message>
+        <source>Go to the next key of the layer</source>
+        <translation>レイヤーの次のキーフレームへ移動します</translation>
+    </message>
+    <message>
+        <source>of </source>
+        <translation>/ </translation>
+    </message>
+    <message>
+        <source>Last frame shown on the timeline</source>
+        <translation>タイムラインに表示する最後のフレーム</translation>
+    </message>
+    <message>
+        <source>Frame:</source>
+        <translation>フレーム:</translation>
+    </message>
+    <message>
+        <source>&amp;Key</source>
+        <translation>キーを設定(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Set a key of all the layer&apos;s parameters at the current frame</source>
+        <translation>レイヤーのすべてのパラメーターについて、現在のフレームにキーフレームを設定します</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Key</source>
+        <translation>キーを削除(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Remove the layer&apos;s key at the current frame (a layer keeps at least one key)</source>
+        <translation>現在のフレームにあるレイヤーのキーフレームを削除します（レイヤーには少なくとも 1 つのキーフレームが残ります）</translation>
+    </message>
+    <message>
+        <source>Key Highlight</source>
+        <translation>ハイライトのキーフレームを設定</translation>
+    </message>
+    <message>
+        <source>Delete Highlight Key</source>
+        <translation>ハイライトのキーフレームを削除</translation>
+    </message>
+    <message>
+        <source>Parameters at this frame</source>
+        <translation>このフレームのパラメーター</translation>
+    </message>
+    <message>
+        <source>Colour of the highlight (keyed)</source>
+        <translation>ハイライトの色（キーフレーム対象）</translation>
+    </message>
+    <message>
+        <source>&amp;Colour:</source>
+        <translation>色(&amp;C):</translation>
+    </message>
+    <message>
+        <source>Highlight Colour</source>
+        <translation>ハイライトの色</translation>
+    </message>
+    <message>
+        <source>Change Highlight Colour</source>
+        <translation>ハイライトの色を変更</translation>
+    </message>
+    <message>
+        <source>epsilon: size of the area where (N, H) &gt; 1 - epsilon (keyed)</source>
+        <translation>epsilon: (N, H) &gt; 1 - epsilon となる領域のサイズ（キーフレーム対象）</translation>
+    </message>
+    <message>
+        <source>&amp;Epsilon:</source>
+        <translation>イプシロン(&amp;E):</translation>
+    </message>
+    <message>
+        <source>Change Highlight Size</source>
+        <translation>ハイライトのサイズを変更</translation>
+    </message>
+    <message>
+        <source>Off-specular cut: no highlight where N·L is at most this value; -1 turns it off (keyed)</source>
+        <translation>オフスペキュラーカット: N·L がこの値以下の部分にはハイライトを表示しません。-1 でオフになります（キーフレーム対象）</translation>
+    </message>
+    <message>
+        <source>Off-specular c&amp;ut:</source>
+        <translation>オフスペキュラーカット(&amp;U):</translation>
+    </message>
+    <message>
+        <source>Change Off-Specular Cut</source>
+        <translation>オフスペキュラーカットを変更</translation>
+    </message>
+    <message>
+        <source>Face set the highlight may appear on (not keyed)</source>
+        <translation>ハイライトを表示できるフェースセット（キーフレーム対象外）</translation>
+    </message>
+    <message>
+        <source>&amp;Patch:</source>
+        <translation>パッチ(&amp;P):</translation>
+    </message>
+    <message>
+        <source>Change Highlight Patch</source>
+        <translation>ハイライトのパッチを変更</translation>
+    </message>
+    <message>
+        <source>Guide direction (x, y, z): the u axis of the highlight on models without UVs (not keyed)</source>
+        <translation>ガイド方向（x, y, z）: UV のないモデルでのハイライトの u 軸（キーフレーム対象外）</translation>
+    </message>
+    <message>
+        <source>Change Highlight Guide</source>
+        <translation>ハイライトのガイド方向を変更</translation>
+    </message>
+    <message>
+        <source>&amp;Guide:</source>
+        <translation>ガイド方向(&amp;G):</translation>
+    </message>
+    <message>
+        <source>Operations (in order)</source>
+        <translation>操作（適用順）</translation>
+    </message>
+    <message>
+        <source>Add Operation</source>
+        <translation>操作を追加</translation>
+    </message>
+    <message>
+        <source>Append an operation on the highlight&apos;s vector field to every key of the layer</source>
+        <translation>ハイライトのベクトル場に対する操作を、レイヤーのすべてのキーフレームの末尾に追加します</translation>
+    </message>
+    <message>
+        <source>Add Highlight Operation</source>
+        <translation>ハイライト操作を追加</translation>
+    </message>
+    <message>
+        <source>Combinations</source>
+        <translation>組み合わせ</translation>
+    </message>
+    <message>
+        <source>Add Combination</source>
+        <translation>組み合わせを追加</translation>
+    </message>
+    <message>
+        <source>Unite this layer&apos;s area with, or subtract from it, another layer&apos;s area at the same frame</source>
+        <translation>同じフレームでの別のレイヤーの領域を、このレイヤーの領域に加えるか、このレイヤーの領域から差し引きます</translation>
+    </message>
+    <message>
+        <source>Add Highlight Combination</source>
+        <translation>ハイライトの組み合わせを追加</translation>
+    </message>
+    <message>
+        <source> (keyed)</source>
+        <translation>（キーフレーム対象）</translation>
+    </message>
+    <message>
+        <source>Change Highlight Operation</source>
+        <translation>ハイライト操作を変更</translation>
+    </message>
+    <message>
+        <source>Move the operation earlier</source>
+        <translation>操作を前に移動します</translation>
+    </message>
+    <message>
+        <source>Move Highlight Operation</source>
+        <translation>ハイライト操作を移動</translation>
+    </message>
+    <message>
+        <source>Move the operation later</source>
+        <translation>操作を後ろに移動します</translation>
+    </message>
+    <message>
+        <source>✕</source>
+        <translation>✕</translation>
+    </message>
+    <message>
+        <source>Remove the operation from every key</source>
+        <translation>すべてのキーフレームからこの操作を削除します</translation>
+    </message>
+    <message>
+        <source>Remove Highlight Operation</source>
+        <translation>ハイライト操作を削除</translation>
+    </message>
+    <message>
+        <source>Union with</source>
+        <translation>和をとる</translation>
+    </message>
+    <message>
+        <source>Subtract</source>
+        <translation>差し引く</translation>
+    </message>
+    <message>
+        <source>Union adds the other layer&apos;s area; Subtract cuts it out of this layer&apos;s area</source>
+        <translation>「和をとる」では別のレイヤーの領域を加え、「差し引く」ではこのレイヤーの領域から別のレイヤーの領域を切り取ります</translation>
+    </message>
+    <message>
+        <source>The other layer, at the same frame</source>
+        <translation>組み合わせる別のレイヤー（同じフレームでの状態を使用）</translation>
+    </message>
+    <message>
+        <source>Remove this combination</source>
+        <translation>この組み合わせを削除します</translation>
+    </message>
+    <message>
+        <source>Change Highlight Combination</source>
+        <translation>ハイライトの組み合わせを変更</translation>
+    </message>
+    <message>
+        <source>Remove Highlight Combination</source>
+        <translation>ハイライトの組み合わせを削除</translation>
+    </message>
+    <message>
+        <source>Checked: drawn; unchecked: used only in other layers&apos; combinations</source>
+        <translation>オン: 描画します。オフ: 他のレイヤーの組み合わせにのみ使用します</translation>
+    </message>
+    <message>
+        <source>All faces</source>
+        <translation>すべての面</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::HighlightTimeline</name>
+    <message>
+        <source>Frames of the animation: diamonds are the selected layer&apos;s keys; click or drag to move the current frame</source>
+        <translation>アニメーションのフレームです。ひし形は選択したレイヤーのキーフレームを示します。クリックまたはドラッグで現在のフレームを移動します</translation>
     </message>
 </context>
 <context>
