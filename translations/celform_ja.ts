@@ -2035,6 +2035,26 @@ Recover it now?</source>
         <source>All faces</source>
         <translation>すべての面</translation>
     </message>
+    <message>
+        <source>Edit in &amp;Viewport</source>
+        <translation>ビューポートで編集(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Drag on the model to move the highlight; Shift+drag rotates it, Ctrl+drag scales it (keyed at the current frame)</source>
+        <translation>モデル上をドラッグしてハイライトを移動します。Shift+ドラッグで回転、Ctrl+ドラッグで拡大縮小します（現在のフレームにキーフレームを設定）</translation>
+    </message>
+    <message>
+        <source>Rotate Highlight</source>
+        <translation>ハイライトを回転</translation>
+    </message>
+    <message>
+        <source>Scale Highlight</source>
+        <translation>ハイライトを拡大縮小</translation>
+    </message>
+    <message>
+        <source>Move Highlight</source>
+        <translation>ハイライトを移動</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::HighlightTimeline</name>

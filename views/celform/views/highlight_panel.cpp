@@ -4,6 +4,8 @@
 
 #include "celform/views/viewport.h"
 
+#include "celform/algorithms/tri_mesh.h"
+
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
@@ -452,6 +454,16 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         });
     }
     form->addRow(tr("&Guide:"), guideRow);
+    m_editInViewport = new QPushButton(tr("Edit in &Viewport"), m_parameters);
+    m_editInViewport->setObjectName(QStringLiteral("highlightEditInViewport"));
+    m_editInViewport->setCheckable(true);
+    m_editInViewport->setToolTip(tr("Drag on the model to move the highlight; Shift+drag rotates it, Ctrl+drag "
+                                    "scales it (keyed at the current frame)"));
+    form->addRow(m_editInViewport);
+    connect(m_editInViewport, &QPushButton::toggled, this, [this](bool on) {
+        if (m_viewport && (on || m_viewport->tool() == Viewport::Tool::Highlight))
+            m_viewport->setTool(on ? Viewport::Tool::Highlight : Viewport::Tool::Navigate);
+    });
     layout->addWidget(m_parameters);
 
     // --- operations ------------------------------------------------------------------------------
@@ -516,6 +528,110 @@ QDoubleSpinBox* HighlightPanel::makeSpin(double min, double max, double step, in
     spin->setToolTip(tip);
     spin->setKeyboardTracking(false); // typing "0.35" is one edit, not four
     return spin;
+}
+
+void HighlightPanel::setViewport(Viewport* viewport)
+{
+    if (m_viewport)
+        disconnect(m_viewport, nullptr, this, nullptr);
+    m_viewport = viewport;
+    m_editInViewport->setChecked(false);
+    refresh(); // enables "Edit in Viewport"
+    if (!viewport)
+        return;
+    connect(viewport, &Viewport::toolChanged, this, [this](Viewport::Tool tool) {
+        const QSignalBlocker block(m_editInViewport);
+        m_editInViewport->setChecked(tool == Viewport::Tool::Highlight);
+    });
+    connect(viewport, &Viewport::highlightDragStarted, this, &HighlightPanel::beginViewportDrag);
+    connect(viewport, &Viewport::highlightDragged, this, &HighlightPanel::viewportDrag);
+    connect(viewport, &Viewport::highlightDragFinished, this, [this] { m_lastMergeKey.clear(); });
+}
+
+void HighlightPanel::beginViewportDrag(const QPointF& position)
+{
+    ++m_dragCount;
+    m_lastMergeKey.clear();
+    // Fallback without a picked point: screen axes, a fixed rate.
+    m_dragDu = QPointF(1.0, 0.0);
+    m_dragDv = QPointF(0.0, -1.0);
+    m_dragUnitsPerPixel = 0.005;
+    const model::HighlightTrack* t = track();
+    const auto& mesh = m_document->data().baseMesh;
+    if (!t || !m_viewport || !mesh)
+        return;
+    const std::int64_t vertex = m_viewport->pickVertex(position);
+    const algo::Positions& shape = m_viewport->displayedShape();
+    if (vertex < 0 || vertex >= shape.rows() || shape.rows() != mesh->vertices.rows())
+        return;
+    const Eigen::Vector3f p = shape.row(vertex).transpose();
+    const algo::Positions normals = algo::vertexNormals(shape, mesh->faces);
+    const algo::HighlightFrame frame = algo::guideTangentFrame(normals.row(vertex).transpose(), t->guide);
+    const double perPixel = m_viewport->worldUnitsPerPixel(p.cast<double>());
+    const QPointF origin = m_viewport->projectToWidget(p.cast<double>());
+    auto screenDirection = [&](const Eigen::Vector3f& d) {
+        const QPointF s = m_viewport->projectToWidget((p + d * float(perPixel * 10.0)).cast<double>()) - origin;
+        const double length = std::hypot(s.x(), s.y());
+        return length > 1e-6 ? s / length : QPointF();
+    };
+    m_dragDu = screenDirection(frame.du);
+    m_dragDv = screenDirection(frame.dv);
+    // H + alpha du tilts H by atan(alpha): on a surface of curvature radius r the highlight moves
+    // about r * alpha; the distance to the model's centre stands in for r.
+    const Eigen::Vector3f centre
+        = 0.5f * (mesh->vertices.colwise().minCoeff() + mesh->vertices.colwise().maxCoeff()).transpose();
+    const double radius = std::max(double((p - centre).norm()), 1e-9);
+    m_dragUnitsPerPixel = perPixel / radius;
+}
+
+void HighlightPanel::viewportDrag(const QPointF& delta, Qt::KeyboardModifiers modifiers)
+{
+    using T = algo::HighlightOperationType;
+    const bool rotate = modifiers & Qt::ShiftModifier, scale = modifiers & Qt::ControlModifier;
+    const T type = rotate ? T::Rotation : scale ? T::DirectionalScaling : T::Translation;
+    const int frame = m_frame;
+    const double a = delta.x() * m_dragDu.x() + delta.y() * m_dragDu.y();
+    const double b = delta.x() * m_dragDv.x() + delta.y() * m_dragDv.y();
+    const double perPixel = m_dragUnitsPerPixel;
+    editTrack(
+        rotate      ? tr("Rotate Highlight")
+            : scale ? tr("Scale Highlight")
+                    : tr("Move Highlight"),
+        [&](model::HighlightTrack& t) {
+            auto first = [type](const std::vector<algo::HighlightOperation>& ops) {
+                return std::find_if(ops.begin(), ops.end(), [type](const auto& op) { return op.type == type; })
+                    - ops.begin();
+            };
+            // Add the operation to every key (structure changes keep the keys interpolating):
+            // translation and rotation at the front, scaling at the end (after any rotation).
+            for (auto& k : t.keys) {
+                auto& ops = k.layer.shape.operations;
+                if (first(ops) == std::ptrdiff_t(ops.size()))
+                    ops.insert(type == T::DirectionalScaling ? ops.end() : ops.begin(), defaultOperation(type));
+            }
+            algo::HighlightLayer layer = t.layerAt(frame);
+            auto& ops = layer.shape.operations;
+            const auto index = std::size_t(first(ops));
+            if (index == ops.size())
+                ops.insert(type == T::DirectionalScaling ? ops.end() : ops.begin(), defaultOperation(type));
+            algo::HighlightOperation& op = ops[index];
+            if (rotate) {
+                op.a = float(std::clamp(op.a + delta.x() * 0.5, -360.0, 360.0));
+            } else if (scale) {
+                op.a = float(std::clamp(op.a + delta.x() * 0.005, 0.0, 1.0));
+            } else {
+                // Rotations before the translation turn its frame: undo them on the drag.
+                double degrees = 0.0;
+                for (std::size_t i = 0; i < index; ++i)
+                    if (ops[i].type == T::Rotation)
+                        degrees += ops[i].a;
+                const double c = std::cos(degrees * 0.017453292519943295), s = std::sin(degrees * 0.017453292519943295);
+                op.a += float((c * a + s * b) * perPixel);
+                op.b += float((-s * a + c * b) * perPixel);
+            }
+            t.setKey(frame, layer);
+        },
+        QStringLiteral("viewportDrag%1@%2").arg(m_dragCount).arg(frame));
 }
 
 void HighlightPanel::setCurrentFrame(int frame)
@@ -836,6 +952,7 @@ void HighlightPanel::refresh()
     m_operationsBox->setEnabled(t != nullptr);
     m_combinationsBox->setEnabled(t != nullptr);
     m_key->setEnabled(t != nullptr);
+    m_editInViewport->setEnabled(t != nullptr && m_viewport != nullptr);
     const bool keyHere = t && std::any_of(t->keys.begin(), t->keys.end(), [this](const algo::HighlightKey& k) {
         return k.frame == double(m_frame);
     });

@@ -63,7 +63,8 @@ public:
     explicit HighlightPanel(model::Document* document, QWidget* parent = nullptr);
 
     /// The viewport that follows the current frame (may be null).
-    void setViewport(Viewport* viewport) { m_viewport = viewport; }
+    /// The viewport also receives drags on the model in its Highlight tool ("Edit in Viewport").
+    void setViewport(Viewport* viewport);
     [[nodiscard]] int currentFrame() const { return m_frame; }
     void setCurrentFrame(int frame);
     /// Index of the selected layer in Look::highlights, -1 when none.
@@ -94,6 +95,10 @@ private:
     void rebuildOperations(const algo::HighlightLayer& layer);
     void rebuildCombinations(const model::HighlightTrack& t);
     void jumpToKey(int direction);
+    /// Viewport drags (Tool::Highlight): plain translates the highlight along the tangent frame at
+    /// the picked point as seen on screen, Shift rotates, Ctrl scales; one undo step per drag.
+    void beginViewportDrag(const QPointF& position);
+    void viewportDrag(const QPointF& delta, Qt::KeyboardModifiers modifiers);
 
     model::Document* m_document;
     Viewport* m_viewport = nullptr;
@@ -101,6 +106,10 @@ private:
     int m_frame = 0;
     QString m_lastMergeKey;
     int m_lastUndoIndex = -1;
+    int m_dragCount = 0;
+    QPointF m_dragDu, m_dragDv; ///< screen directions (unit) of du, dv at the picked point
+    double m_dragUnitsPerPixel = 0.005; ///< translation parameter per pixel of drag
+    QPushButton* m_editInViewport;
 
     QListWidget* m_layers;
     QPushButton* m_addLayer;

@@ -917,7 +917,7 @@ void Viewport::setTool(Tool tool)
         m_mirrorSelection = {};
         updateSelectionColors();
     }
-    setCursor(tool == Tool::Brush ? Qt::CrossCursor : Qt::ArrowCursor);
+    setCursor(tool == Tool::Brush || tool == Tool::Highlight ? Qt::CrossCursor : Qt::ArrowCursor);
     emit toolChanged(tool);
 }
 
@@ -1561,6 +1561,9 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     } else if (button == Qt::LeftButton && m_tool == Tool::Brush) {
         drag = Drag::Brush;
         beginBrush(event->position(), mods);
+    } else if (button == Qt::LeftButton && m_tool == Tool::Highlight) {
+        drag = Drag::Highlight;
+        emit highlightDragStarted(event->position());
     }
     if (drag == Drag::None) {
         QOpenGLWidget::mousePressEvent(event);
@@ -1586,6 +1589,7 @@ void Viewport::mousePressEvent(QMouseEvent* event)
         setCursor(Qt::ClosedHandCursor);
         break;
     case Drag::Brush:
+    case Drag::Highlight:
     case Drag::None:
         break;
     }
@@ -1602,6 +1606,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         // The release went elsewhere (a popup, a window manager grab): end the drag here.
         if (m_drag == Drag::Brush)
             endBrush();
+        if (m_drag == Drag::Highlight)
+            emit highlightDragFinished();
         m_drag = Drag::None;
         m_dragButton = Qt::NoButton;
         unsetCursor();
@@ -1631,6 +1637,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
     case Drag::Light:
         dragLight(event->position());
         break;
+    case Drag::Highlight:
+        emit highlightDragged(delta, event->modifiers());
+        break;
     case Drag::None:
         break;
     }
@@ -1642,6 +1651,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event)
     if (m_drag != Drag::None && event->button() == m_dragButton) {
         if (m_drag == Drag::Brush)
             endBrush();
+        if (m_drag == Drag::Highlight)
+            emit highlightDragFinished();
         m_drag = Drag::None;
         m_dragButton = Qt::NoButton;
         unsetCursor();

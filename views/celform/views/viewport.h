@@ -122,6 +122,7 @@ public:
         Navigate, ///< mouse only navigates
         Align, ///< navigation edits the overlay drawing's camera (one undo step per gesture)
         Brush, ///< left drag deforms the displayed key (paper 1, section 3.1.2)
+        Highlight, ///< left drag is forwarded as highlightDrag* signals (the Highlights dock edits)
     };
     enum class BrushMode { Move, Smooth };
     void setTool(Tool tool);
@@ -173,6 +174,11 @@ signals:
     void matchedPointsChanged();
     /// The highlight frame changed (setFrame).
     void frameChanged(int frame);
+    /// Left drag in Tool::Highlight: start (widget position), each move (delta in logical
+    /// pixels, modifiers held), end.
+    void highlightDragStarted(const QPointF& position);
+    void highlightDragged(const QPointF& delta, Qt::KeyboardModifiers modifiers);
+    void highlightDragFinished();
 
 protected:
     void showEvent(QShowEvent* event) override;
@@ -187,7 +193,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan, Dolly, Roll, Brush, Light };
+    enum class Drag { None, Orbit, Pan, Dolly, Roll, Brush, Light, Highlight };
 
     void releaseGraphics();
     void rebuildMesh();

@@ -1,0 +1,115 @@
+// Direct manipulation of a highlight layer in the viewport (Highlights dock, "Edit in Viewport"):
+// a drag on an icosphere keys a translation at the current frame in the drag's direction, as one
+// undo step.
+#include "celform/model/document.h"
+#include "celform/views/highlight_panel.h"
+#include "celform/views/viewport.h"
+
+#include "test_meshes.h"
+
+#include <QApplication>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QUndoStack>
+#include <QtTest/QtTest>
+
+#include <memory>
+
+using celform::algo::HighlightOperationType;
+using celform::model::Document;
+using celform::views::HighlightPanel;
+using celform::views::Viewport;
+
+class TestHighlightDrag : public QObject {
+    Q_OBJECT
+
+    void drag(Viewport* view, QPoint from, QPoint to, Qt::KeyboardModifiers mods = Qt::NoModifier)
+    {
+        QMouseEvent press(
+            QEvent::MouseButtonPress, from, view->mapToGlobal(from), Qt::LeftButton, Qt::LeftButton, mods);
+        QApplication::sendEvent(view, &press);
+        for (int i = 1; i <= 10; ++i) {
+            const QPoint p = from + (to - from) * i / 10;
+            QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton, mods);
+            QApplication::sendEvent(view, &move);
+        }
+        QMouseEvent release(QEvent::MouseButtonRelease, to, view->mapToGlobal(to), Qt::LeftButton, Qt::NoButton, mods);
+        QApplication::sendEvent(view, &release);
+    }
+
+private slots:
+    void dragTranslatesTheSelectedLayer()
+    {
+        Document doc;
+        celform::model::ProjectData data;
+        data.baseMesh = celform::test::icosphere(4);
+        celform::model::HighlightTrack track;
+        track.name = QStringLiteral("spot");
+        track.setKey(0, celform::algo::HighlightLayer{});
+        track.setKey(10, celform::algo::HighlightLayer{});
+        data.look.highlights.push_back(track);
+        doc.reset(std::move(data));
+
+        Viewport view(&doc);
+        view.setLightGizmoVisible(false);
+        view.resize(400, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QTRY_VERIFY(view.renderCount() > 0);
+        celform::model::Camera camera;
+        camera.eye = Eigen::Vector3d(0.0, 0.0, 5.5);
+        camera.target = Eigen::Vector3d::Zero();
+        camera.up = Eigen::Vector3d::UnitY();
+        camera.fovYDegrees = 30.0;
+        view.setCamera(camera);
+        const int drawn = view.renderCount();
+        view.update();
+        QTRY_VERIFY(view.renderCount() > drawn);
+
+        HighlightPanel panel(&doc);
+        panel.setViewport(&view);
+        panel.selectLayer(0);
+        panel.setCurrentFrame(10);
+        auto* edit = panel.findChild<QPushButton*>(QStringLiteral("highlightEditInViewport"));
+        QVERIFY(edit && edit->isEnabled());
+        edit->click();
+        QCOMPARE(view.tool(), Viewport::Tool::Highlight);
+
+        const auto before = doc.data().look;
+        const int steps = doc.undoStack()->index();
+        // At the front of the sphere the guide (y) gives du = up on screen, dv = n x du = left.
+        const QPoint centre = view.projectToWidget(Eigen::Vector3d(0.0, 0.0, 1.0)).toPoint();
+        drag(&view, centre, centre + QPoint(40, -30));
+        const auto& t = doc.data().look.highlights.front();
+        QCOMPARE(t.keys.size(), std::size_t(2));
+        for (const auto& k : t.keys) // the operation was added to every key
+            QVERIFY(!k.layer.shape.operations.empty()
+                && k.layer.shape.operations.front().type == HighlightOperationType::Translation);
+        const auto op = t.layerAt(10).shape.operations.front();
+        QVERIFY2(op.a > 0.05f && op.b < -0.05f, qPrintable(QStringLiteral("alpha %1 beta %2").arg(op.a).arg(op.b)));
+        QCOMPARE(t.layerAt(0).shape.operations.front().a, 0.0f); // only the current frame's key moved
+        QCOMPARE(doc.undoStack()->index(), steps + 1); // one drag, one undo step
+
+        // Shift+drag rotates, as another step.
+        drag(&view, centre, centre + QPoint(30, 0), Qt::ShiftModifier);
+        QCOMPARE(doc.undoStack()->index(), steps + 2);
+        QVERIFY(doc.data().look.highlights.front().layerAt(10).shape.operations.size() == 2);
+
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QVERIFY(doc.data().look == before);
+
+        edit->click();
+        QCOMPARE(view.tool(), Viewport::Tool::Navigate);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(Viewport::defaultFormat());
+    QApplication app(argc, argv);
+    TestHighlightDrag test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_highlight_drag.moc"
