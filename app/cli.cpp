@@ -257,6 +257,47 @@ model::Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector
     return camera;
 }
 
+/// The camera options of `key add` and `render`: --view, or --eye, --target and --up together.
+struct CameraOptions {
+    const QCommandLineOption view{QStringLiteral("view"),
+        Cli::tr("View direction from the model's centroid towards the eye."), QStringLiteral("X,Y,Z")};
+    const QCommandLineOption eye{QStringLiteral("eye"), Cli::tr("Camera position."), QStringLiteral("X,Y,Z")};
+    const QCommandLineOption target{
+        QStringLiteral("target"), Cli::tr("Point the camera looks at."), QStringLiteral("X,Y,Z")};
+    const QCommandLineOption up{QStringLiteral("up"), Cli::tr("Camera up vector."), QStringLiteral("X,Y,Z")};
+
+    [[nodiscard]] QList<QCommandLineOption> all() const { return {view, eye, target, up}; }
+    [[nodiscard]] bool byView(const QCommandLineParser& p) const { return p.isSet(view); }
+    [[nodiscard]] bool byCamera(const QCommandLineParser& p) const
+    {
+        return p.isSet(eye) || p.isSet(target) || p.isSet(up);
+    }
+    [[nodiscard]] bool cameraComplete(const QCommandLineParser& p) const
+    {
+        return p.isSet(eye) && p.isSet(target) && p.isSet(up);
+    }
+    /// The camera of --eye, --target and --up; a usage error when they make none.
+    [[nodiscard]] model::Camera explicitCamera(const QCommandLineParser& p) const
+    {
+        model::Camera camera;
+        camera.eye = parseVector(QStringLiteral("eye"), p.value(eye));
+        camera.target = parseVector(QStringLiteral("target"), p.value(target));
+        camera.up = parseVector(QStringLiteral("up"), p.value(up));
+        if (!camera.isValid())
+            throw UsageError{Cli::tr("--eye, --target and --up do not make a camera (eye equals target, or up is "
+                                     "parallel to the view)")};
+        return camera;
+    }
+    /// The --view direction, or fallback when absent; a usage error when zero.
+    [[nodiscard]] Eigen::Vector3d viewDirection(const QCommandLineParser& p, const Eigen::Vector3d& fallback) const
+    {
+        const Eigen::Vector3d v = p.isSet(view) ? parseVector(QStringLiteral("view"), p.value(view)) : fallback;
+        if (v.norm() == 0.0)
+            throw UsageError{Cli::tr("--view must not be zero")};
+        return v;
+    }
+};
+
 int commandKey(const QStringList& args)
 {
     const QString synopsis = QStringLiteral(
@@ -270,18 +311,14 @@ int commandKey(const QStringList& args)
     const QCommandLineOption mesh(QStringLiteral("mesh"),
         Cli::tr("Key deformation: a mesh with the base model's vertex count and order."), QStringLiteral("KEY.obj"));
     const QCommandLineOption fromBase(QStringLiteral("from-base"), Cli::tr("Start as a copy of the base model."));
-    const QCommandLineOption view(QStringLiteral("view"),
-        Cli::tr("View direction from the model's centroid towards the eye."), QStringLiteral("X,Y,Z"));
-    const QCommandLineOption eye(QStringLiteral("eye"), Cli::tr("Camera position."), QStringLiteral("X,Y,Z"));
-    const QCommandLineOption target(
-        QStringLiteral("target"), Cli::tr("Point the camera looks at."), QStringLiteral("X,Y,Z"));
-    const QCommandLineOption up(QStringLiteral("up"), Cli::tr("Camera up vector."), QStringLiteral("X,Y,Z"));
+    const CameraOptions cameraOptions;
     const QCommandLineOption frame(
         QStringLiteral("frame"), Cli::tr("Frame of the deformation (default 0)."), QStringLiteral("F"));
     const QCommandLineOption drawing(QStringLiteral("drawing"),
         Cli::tr("Reference drawing to embed and link, aligned with the key's camera."), QStringLiteral("IMAGE"));
     const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print the new key as JSON."));
-    parser.addOptions({name, mesh, fromBase, view, eye, target, up, frame, drawing, json});
+    parser.addOptions({name, mesh, fromBase, frame, drawing, json});
+    parser.addOptions(cameraOptions.all());
     parseOrThrow(parser, args, 2, synopsis);
     if (parser.positionalArguments().front() != QLatin1String("add"))
         throw UsageError{
@@ -289,9 +326,9 @@ int commandKey(const QStringList& args)
     if (!parser.isSet(name) || parser.isSet(mesh) == parser.isSet(fromBase))
         throw UsageError{
             Cli::tr("--name and exactly one of --mesh or --from-base are required\nusage: %1").arg(synopsis)};
-    const bool byView = parser.isSet(view);
-    const bool byCamera = parser.isSet(eye) || parser.isSet(target) || parser.isSet(up);
-    if (byView == byCamera || (byCamera && !(parser.isSet(eye) && parser.isSet(target) && parser.isSet(up))))
+    const bool byView = cameraOptions.byView(parser);
+    const bool byCamera = cameraOptions.byCamera(parser);
+    if (byView == byCamera || (byCamera && !cameraOptions.cameraComplete(parser)))
         throw UsageError{Cli::tr("give either --view or all of --eye, --target and --up\nusage: %1").arg(synopsis)};
     const int f = parser.isSet(frame) ? parseInt(QStringLiteral("frame"), parser.value(frame)) : 0;
 
@@ -299,20 +336,9 @@ int commandKey(const QStringList& args)
     auto doc = openProject(path);
     if (!doc->hasMesh())
         throw model::IoError(path, Cli::tr("has no base model"));
-    model::Camera camera;
-    if (byView) {
-        const Eigen::Vector3d v = parseVector(QStringLiteral("view"), parser.value(view));
-        if (v.norm() == 0.0)
-            throw UsageError{Cli::tr("--view must not be zero")};
-        camera = cameraFromView(doc->data(), v);
-    } else {
-        camera.eye = parseVector(QStringLiteral("eye"), parser.value(eye));
-        camera.target = parseVector(QStringLiteral("target"), parser.value(target));
-        camera.up = parseVector(QStringLiteral("up"), parser.value(up));
-        if (!camera.isValid())
-            throw UsageError{Cli::tr("--eye, --target and --up do not make a camera (eye equals target, or up is "
-                                     "parallel to the view)")};
-    }
+    const model::Camera camera = byView
+        ? cameraFromView(doc->data(), cameraOptions.viewDirection(parser, Eigen::Vector3d::Zero()))
+        : cameraOptions.explicitCamera(parser);
     std::vector<model::ObjectId> drawingIds;
     if (parser.isSet(drawing)) {
         const model::ObjectId d = doc->importDrawing(parser.value(drawing));
@@ -588,32 +614,13 @@ std::pair<algo::HighlightBoolean, QString> parseCombination(const QString& value
         value.mid(colon + 1)};
 }
 
-QJsonArray vec3f(const Eigen::Vector3f& v)
+/// The project file's form of a track, with "all" spelled out for a track on every face.
+QJsonObject listedTrackJson(const model::HighlightTrack& t)
 {
-    return vec3(v.cast<double>());
-}
-
-QJsonObject highlightTrackJson(const model::HighlightTrack& t)
-{
-    QJsonArray combine;
-    for (const auto& [mode, other] : t.combineWith)
-        combine.append(
-            QJsonObject{{"mode", mode == algo::HighlightBoolean::Union ? "union" : "subtract"}, {"layer", other}});
-    QJsonArray keys;
-    for (const algo::HighlightKey& k : t.keys) {
-        QJsonArray operations;
-        for (const algo::HighlightOperation& op : k.layer.shape.operations) {
-            QJsonArray values{double(op.a)};
-            if (model::highlightOperationArity(op.type) == 2)
-                values.append(double(op.b));
-            operations.append(QJsonObject{{"type", model::highlightOperationName(op.type)}, {"values", values}});
-        }
-        keys.append(
-            QJsonObject{{"frame", k.frame}, {"color", vec3f(k.layer.color)}, {"epsilon", double(k.layer.shape.epsilon)},
-                {"off_specular_cut", double(k.layer.offSpecularCut)}, {"operations", operations}});
-    }
-    return {{"name", t.name}, {"patch", t.patch.isEmpty() ? QStringLiteral("all") : t.patch}, {"guide", vec3f(t.guide)},
-        {"visible", t.visible}, {"combine", combine}, {"keys", keys}};
+    QJsonObject o = model::highlightTrackJson(t);
+    if (t.patch.isEmpty())
+        o.insert("patch", QStringLiteral("all"));
+    return o;
 }
 
 int commandHighlight(const QStringList& args)
@@ -663,7 +670,7 @@ int commandHighlight(const QStringList& args)
         const model::ProjectData data = model::loadProject(path);
         QJsonArray layers;
         for (const model::HighlightTrack& t : data.look.highlights)
-            layers.append(highlightTrackJson(t));
+            layers.append(listedTrackJson(t));
         if (parser.isSet(json)) {
             printOut(QString::fromUtf8(QJsonDocument(QJsonObject{{"layers", layers}}).toJson(QJsonDocument::Indented)));
         } else {
@@ -777,7 +784,7 @@ int commandHighlight(const QStringList& args)
                          .arg(track.keys[k - 1].frame)
                          .arg(track.keys[k].frame)
                          .arg(name));
-    const QJsonObject result = highlightTrackJson(track);
+    const QJsonObject result = listedTrackJson(track);
     doc->setLook(look);
     doc->saveAs(path);
     if (parser.isSet(json))
@@ -826,12 +833,7 @@ int commandRender(const QStringList& args)
     QCommandLineParser parser;
     parser.setApplicationDescription(Cli::tr("Renders the project's look without a display (CPU renderer)."));
     parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
-    const QCommandLineOption view(QStringLiteral("view"),
-        Cli::tr("View direction from the model's centroid towards the eye."), QStringLiteral("X,Y,Z"));
-    const QCommandLineOption eye(QStringLiteral("eye"), Cli::tr("Camera position."), QStringLiteral("X,Y,Z"));
-    const QCommandLineOption target(
-        QStringLiteral("target"), Cli::tr("Point the camera looks at."), QStringLiteral("X,Y,Z"));
-    const QCommandLineOption up(QStringLiteral("up"), Cli::tr("Camera up vector."), QStringLiteral("X,Y,Z"));
+    const CameraOptions cameraOptions;
     const QCommandLineOption frame(
         QStringLiteral("frame"), Cli::tr("Frame to render (default 0)."), QStringLiteral("F"));
     const QCommandLineOption frames(
@@ -848,14 +850,15 @@ int commandRender(const QStringList& args)
     const QCommandLineOption pass(QStringLiteral("pass"), Cli::tr("Write one render pass."), QStringLiteral("NAME"));
     const QCommandLineOption out(QStringLiteral("out"),
         Cli::tr("Output image (default: the project's name with .png)."), QStringLiteral("FILE"));
-    parser.addOptions({view, eye, target, up, frame, frames, size, style, lines, light, stereo, pass, out});
+    parser.addOptions({frame, frames, size, style, lines, light, stereo, pass, out});
+    parser.addOptions(cameraOptions.all());
     parseOrThrow(parser, args, 1, synopsis);
 
     // Every option is checked before any work: a usage error renders nothing.
-    const bool byCamera = parser.isSet(eye) || parser.isSet(target) || parser.isSet(up);
-    if (parser.isSet(view) && byCamera)
+    const bool byCamera = cameraOptions.byCamera(parser);
+    if (cameraOptions.byView(parser) && byCamera)
         throw UsageError{Cli::tr("give either --view or --eye, --target and --up\nusage: %1").arg(synopsis)};
-    if (byCamera && !(parser.isSet(eye) && parser.isSet(target) && parser.isSet(up)))
+    if (byCamera && !cameraOptions.cameraComplete(parser))
         throw UsageError{Cli::tr("--eye, --target and --up go together\nusage: %1").arg(synopsis)};
     if (parser.isSet(frame) && parser.isSet(frames))
         throw UsageError{Cli::tr("give either --frame or --frames")};
@@ -925,20 +928,10 @@ int commandRender(const QStringList& args)
         look.showLines = *linesOverride;
     if (lightOverride)
         look.light = *lightOverride;
-    model::Camera camera;
-    if (byCamera) {
-        camera.eye = parseVector(QStringLiteral("eye"), parser.value(eye));
-        camera.target = parseVector(QStringLiteral("target"), parser.value(target));
-        camera.up = parseVector(QStringLiteral("up"), parser.value(up));
-        if (!camera.isValid())
-            throw UsageError{Cli::tr("--eye, --target and --up do not make a camera")};
-    } else {
-        const Eigen::Vector3d v = parser.isSet(view) ? parseVector(QStringLiteral("view"), parser.value(view))
-                                                     : Eigen::Vector3d(0.35, 0.25, 1.0);
-        if (v.norm() == 0.0)
-            throw UsageError{Cli::tr("--view must not be zero")};
-        camera = cameraFromView(data, v, double(imageSize.width()) / imageSize.height());
-    }
+    const model::Camera camera = byCamera
+        ? cameraOptions.explicitCamera(parser)
+        : cameraFromView(data, cameraOptions.viewDirection(parser, Eigen::Vector3d(0.35, 0.25, 1.0)),
+            double(imageSize.width()) / imageSize.height());
 
     model::BlendEvaluator blender;
     QString error;

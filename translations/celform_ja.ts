@@ -27,6 +27,14 @@
         <source>--op “%1”: %2</source>
         <translation>--op「%1」: %2</translation>
     </message>
+    <message>
+        <source>--eye, --target and --up do not make a camera (eye equals target, or up is parallel to the view)</source>
+        <translation type="unfinished">--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
+    </message>
+    <message>
+        <source>--view must not be zero</source>
+        <translation type="unfinished">--view にゼロベクトルは指定できません</translation>
+    </message>
 </context>
 <context>
     <name>ProjectFile</name>
@@ -187,14 +195,6 @@ usage: %1</source>
     <message>
         <source>has no base model</source>
         <translation>ベースモデルがありません</translation>
-    </message>
-    <message>
-        <source>--view must not be zero</source>
-        <translation>--view にゼロベクトルは指定できません</translation>
-    </message>
-    <message>
-        <source>--eye, --target and --up do not make a camera (eye equals target, or up is parallel to the view)</source>
-        <translation>--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
     </message>
     <message>
         <source>has %1 vertices, but the base model has %2: a key deformation needs the base model&apos;s vertex count and order</source>
@@ -397,10 +397,6 @@ usage: %1</source>
     <message>
         <source>--out must end in .png, .exr, .tif or .jpg, not “%1”</source>
         <translation>--out のファイル名は .png、.exr、.tif、.jpg のいずれかで終わる必要があります（「%1」は無効です）</translation>
-    </message>
-    <message>
-        <source>--eye, --target and --up do not make a camera</source>
-        <translation>--eye、--target、--up ではカメラを構成できません</translation>
     </message>
     <message>
         <source>--combine takes union:OTHER or subtract:OTHER, not “%1”</source>

@@ -195,27 +195,8 @@ QJsonArray matrix3(const Eigen::Matrix3f& m)
 QJsonArray highlightsJson(const std::vector<HighlightTrack>& tracks)
 {
     QJsonArray out;
-    for (const HighlightTrack& t : tracks) {
-        QJsonArray combine;
-        for (const auto& [mode, other] : t.combineWith)
-            combine.append(
-                QJsonObject{{"mode", mode == algo::HighlightBoolean::Union ? "union" : "subtract"}, {"layer", other}});
-        QJsonArray keys;
-        for (const algo::HighlightKey& k : t.keys) {
-            QJsonArray operations;
-            for (const algo::HighlightOperation& op : k.layer.shape.operations) {
-                QJsonArray values{double(op.a)};
-                if (highlightOperationArity(op.type) == 2)
-                    values.append(double(op.b));
-                operations.append(QJsonObject{{"type", highlightOperationName(op.type)}, {"values", values}});
-            }
-            keys.append(QJsonObject{{"frame", k.frame}, {"color", vec3f(k.layer.color)},
-                {"epsilon", double(k.layer.shape.epsilon)}, {"off_specular_cut", double(k.layer.offSpecularCut)},
-                {"operations", operations}});
-        }
-        out.append(QJsonObject{{"name", t.name}, {"patch", t.patch}, {"guide", vec3f(t.guide)}, {"visible", t.visible},
-            {"combine", combine}, {"keys", keys}});
-    }
+    for (const HighlightTrack& t : tracks)
+        out.append(highlightTrackJson(t));
     return out;
 }
 
@@ -726,6 +707,29 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
 }
 
 } // namespace
+
+QJsonObject highlightTrackJson(const HighlightTrack& t)
+{
+    QJsonArray combine;
+    for (const auto& [mode, other] : t.combineWith)
+        combine.append(
+            QJsonObject{{"mode", mode == algo::HighlightBoolean::Union ? "union" : "subtract"}, {"layer", other}});
+    QJsonArray keys;
+    for (const algo::HighlightKey& k : t.keys) {
+        QJsonArray operations;
+        for (const algo::HighlightOperation& op : k.layer.shape.operations) {
+            QJsonArray values{double(op.a)};
+            if (highlightOperationArity(op.type) == 2)
+                values.append(double(op.b));
+            operations.append(QJsonObject{{"type", highlightOperationName(op.type)}, {"values", values}});
+        }
+        keys.append(
+            QJsonObject{{"frame", k.frame}, {"color", vec3f(k.layer.color)}, {"epsilon", double(k.layer.shape.epsilon)},
+                {"off_specular_cut", double(k.layer.offSpecularCut)}, {"operations", operations}});
+    }
+    return {{"name", t.name}, {"patch", t.patch}, {"guide", vec3f(t.guide)}, {"visible", t.visible},
+        {"combine", combine}, {"keys", keys}};
+}
 
 void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
 {

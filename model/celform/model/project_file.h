@@ -4,12 +4,17 @@
 
 #include "celform/model/project_data.h"
 
+#include <QJsonObject>
 #include <QString>
 
 namespace celform::model {
 
 /// The format version this build writes; it reads this and every older one.
 constexpr int kProjectFormatVersion = 1;
+
+/// A highlight track as the project file stores it (docs/file-format.md); `celform highlight
+/// --list --json` prints the same form.
+QJsonObject highlightTrackJson(const HighlightTrack& track);
 
 /// Writes the project atomically (QSaveFile). When the file exists, its previous version is kept
 /// as PATH.bak. Throws IoError; on error the file on disk is unchanged.

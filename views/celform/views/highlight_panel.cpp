@@ -2,6 +2,8 @@
 // look after undo, redo or a change from the command line, and with the panel's current frame.
 #include "celform/views/highlight_panel.h"
 
+#include "celform/views/color_swatch.h"
+
 #include "celform/views/viewport.h"
 
 #include "celform/algorithms/tri_mesh.h"
@@ -34,19 +36,6 @@
 
 namespace celform::views {
 namespace {
-
-QColor toQColor(const Eigen::Vector3f& linear)
-{
-    // Swatches show what the renderer writes: linear colour encoded as sRGB.
-    auto encode = [](float v) { return int(std::lround(255.f * algo::linearToSrgb(std::clamp(v, 0.f, 1.f)))); };
-    return QColor(encode(linear.x()), encode(linear.y()), encode(linear.z()));
-}
-
-Eigen::Vector3f fromQColor(const QColor& c)
-{
-    return {algo::srgbToLinear(float(c.redF())), algo::srgbToLinear(float(c.greenF())),
-        algo::srgbToLinear(float(c.blueF()))};
-}
 
 /// Range, step, decimals and the paper's names of an operation's two parameters.
 struct ParameterSpec {

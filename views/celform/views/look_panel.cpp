@@ -2,6 +2,8 @@
 // look after undo, redo or a change from the command line or the viewport.
 #include "celform/views/look_panel.h"
 
+#include "celform/views/color_swatch.h"
+
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
@@ -22,19 +24,6 @@
 
 namespace celform::views {
 namespace {
-
-QColor toQColor(const Eigen::Vector3f& linear)
-{
-    // Swatches show what the renderer writes: linear colour encoded as sRGB.
-    auto encode = [](float v) { return int(std::lround(255.f * algo::linearToSrgb(std::clamp(v, 0.f, 1.f)))); };
-    return QColor(encode(linear.x()), encode(linear.y()), encode(linear.z()));
-}
-
-Eigen::Vector3f fromQColor(const QColor& c)
-{
-    return {algo::srgbToLinear(float(c.redF())), algo::srgbToLinear(float(c.greenF())),
-        algo::srgbToLinear(float(c.blueF()))};
-}
 
 void paintSwatch(QToolButton* button, const Eigen::Vector3f& color)
 {
