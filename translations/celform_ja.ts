@@ -29,11 +29,11 @@
     </message>
     <message>
         <source>--eye, --target and --up do not make a camera (eye equals target, or up is parallel to the view)</source>
-        <translation type="unfinished">--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
+        <translation>--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
     </message>
     <message>
         <source>--view must not be zero</source>
-        <translation type="unfinished">--view にゼロベクトルは指定できません</translation>
+        <translation>--view にゼロベクトルは指定できません</translation>
     </message>
 </context>
 <context>
