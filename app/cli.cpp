@@ -27,6 +27,7 @@
 #include <memory>
 #include <optional>
 #include <exception>
+#include <iterator>
 #include <new>
 
 namespace celform::app {
@@ -37,9 +38,9 @@ struct Cli {
     Q_DECLARE_TR_FUNCTIONS(celform::app::Cli)
 };
 
-const QStringList kSubCommands
-    = {QStringLiteral("new"), QStringLiteral("info"), QStringLiteral("key"), QStringLiteral("brush"),
-        QStringLiteral("eval"), QStringLiteral("set"), QStringLiteral("render"), QStringLiteral("highlight")};
+const QStringList kSubCommands = {QStringLiteral("new"), QStringLiteral("info"), QStringLiteral("key"),
+    QStringLiteral("brush"), QStringLiteral("eval"), QStringLiteral("set"), QStringLiteral("render"),
+    QStringLiteral("highlight"), QStringLiteral("patch")};
 
 /// Thrown for a usage error; main turns it into exit code 2 with the message and a hint.
 struct UsageError {
@@ -129,7 +130,7 @@ int commandInfo(const QStringList& args)
                 {"triangle_count", double(mesh.faceCount())},
                 {"bounding_box", QJsonObject{{"min", vec3(box.min())}, {"max", vec3(box.max())}}},
                 {"centroid", vec3(algo::centroid(mesh.vertices))}, {"has_uvs", mesh.hasUvs()},
-                {"materials", double(mesh.materials.size())}, {"face_sets", double(mesh.faceSets.size())}});
+                {"materials", double(mesh.materials.size())}, {"face_sets", double(data.faceSets.size())}});
     } else {
         root.insert("base_mesh", QJsonValue::Null);
     }
@@ -196,6 +197,7 @@ template <int N> Eigen::Matrix<double, N, 1> parseNumbers(const QString& option,
         v[i] = parts[i].trimmed().toDouble(&ok);
     if (!ok || !v.allFinite())
         throw UsageError{N == 3 ? Cli::tr("--%1 needs three numbers X,Y,Z, not “%2”").arg(option, text)
+                : N == 4        ? Cli::tr("--%1 needs four numbers X,Y,Z,R, not “%2”").arg(option, text)
                                 : Cli::tr("--%1 needs two numbers A,B, not “%2”").arg(option, text)};
     return v;
 }
@@ -763,9 +765,7 @@ int commandHighlight(const QStringList& args)
     if (parser.isSet(combine))
         track.combineWith = newCombinations;
 
-    std::vector<QString> faceSets;
-    for (const auto& set : doc->data().baseMesh->faceSets)
-        faceSets.push_back(QString::fromStdString(set.name));
+    const std::vector<QString> faceSets = doc->data().faceSetNames();
     if (!track.patch.isEmpty() && std::find(faceSets.begin(), faceSets.end(), track.patch) == faceSets.end())
         throw model::IoError(path, Cli::tr("has no face set named “%1”").arg(track.patch));
     for (const auto& [mode, other] : track.combineWith)
@@ -789,6 +789,141 @@ int commandHighlight(const QStringList& args)
     doc->saveAs(path);
     if (parser.isSet(json))
         printOut(QString::fromUtf8(QJsonDocument(result).toJson(QJsonDocument::Indented)));
+    return kExitOk;
+}
+
+/// Face indices from "A-B,C,...", each below faceCount (a usage error otherwise).
+std::vector<std::int32_t> parseFaceList(const QString& text, Eigen::Index faceCount, const QString& path)
+{
+    std::vector<std::int32_t> faces;
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QStringList ends = part.trimmed().split(QLatin1Char('-'));
+        bool okA = false, okB = true;
+        const qlonglong a = ends[0].toLongLong(&okA);
+        const qlonglong b = ends.size() == 2 ? ends[1].toLongLong(&okB) : a;
+        if (ends.size() > 2 || !okA || !okB || a < 0 || b < a)
+            throw UsageError{Cli::tr("--faces takes indices and ranges like 0-99,120, not “%1”").arg(text)};
+        if (b >= faceCount)
+            throw model::IoError(path, Cli::tr("has %1 faces; face %2 does not exist").arg(faceCount).arg(b));
+        for (qlonglong f = a; f <= b; ++f)
+            faces.push_back(std::int32_t(f));
+    }
+    return faces;
+}
+
+int commandPatch(const QStringList& args)
+{
+    const QString synopsis = QStringLiteral(
+        "celform patch P (--list [--json] | --add NAME [--sphere X,Y,Z,R]... [--faces A-B,C]... [--material M]... "
+        "[--json] | --subtract NAME [the same selections] | --remove NAME)");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        Cli::tr("Makes, lists and removes patches: named face sets that highlight layers are limited to."));
+    parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
+    const QCommandLineOption list(QStringLiteral("list"), Cli::tr("List the patches."));
+    const QCommandLineOption add(QStringLiteral("add"),
+        Cli::tr("Add the selected faces to a patch (made when missing)."), QStringLiteral("NAME"));
+    const QCommandLineOption subtract(
+        QStringLiteral("subtract"), Cli::tr("Take the selected faces out of a patch."), QStringLiteral("NAME"));
+    const QCommandLineOption remove(QStringLiteral("remove"),
+        Cli::tr("Delete a patch; its highlight layers go back to all faces."), QStringLiteral("NAME"));
+    const QCommandLineOption sphere(QStringLiteral("sphere"),
+        Cli::tr("Select the faces with a corner inside a sphere (repeatable)."), QStringLiteral("X,Y,Z,R"));
+    const QCommandLineOption facesOption(
+        QStringLiteral("faces"), Cli::tr("Select faces by index (repeatable)."), QStringLiteral("A-B,C"));
+    const QCommandLineOption material(
+        QStringLiteral("material"), Cli::tr("Select a material's faces (repeatable)."), QStringLiteral("M"));
+    const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print machine-readable JSON."));
+    parser.addOptions({list, add, subtract, remove, sphere, facesOption, material, json});
+    parseOrThrow(parser, args, 1, synopsis);
+    const int actions
+        = int(parser.isSet(list)) + int(parser.isSet(add)) + int(parser.isSet(subtract)) + int(parser.isSet(remove));
+    const bool selecting = parser.isSet(sphere) || parser.isSet(facesOption) || parser.isSet(material);
+    if (actions != 1 || ((parser.isSet(list) || parser.isSet(remove)) && selecting)
+        || ((parser.isSet(add) || parser.isSet(subtract)) && !selecting))
+        throw UsageError{Cli::tr("give one of --list, --add NAME or --subtract NAME with a selection, or --remove "
+                                 "NAME\nusage: %1")
+                             .arg(synopsis)};
+    const QString path = parser.positionalArguments().front();
+    std::vector<Eigen::Vector4d> spheres;
+    for (const QString& text : parser.values(sphere)) {
+        spheres.push_back(parseNumbers<4>(QStringLiteral("sphere"), text));
+        if (!(spheres.back()[3] > 0.0))
+            throw UsageError{Cli::tr("--sphere needs a positive radius, not “%1”").arg(text)};
+    }
+    auto patchJson = [](const algo::FaceSet& set) {
+        return QJsonObject{{"name", QString::fromStdString(set.name)}, {"face_count", double(set.faces.size())}};
+    };
+    if (parser.isSet(list)) {
+        const model::ProjectData data = model::loadProject(path);
+        QJsonArray patches;
+        QString text;
+        for (const auto& set : data.faceSets) {
+            patches.append(patchJson(set));
+            text += Cli::tr("%1\t%2 faces\n").arg(QString::fromStdString(set.name)).arg(set.faces.size());
+        }
+        printOut(parser.isSet(json)
+                ? QString::fromUtf8(QJsonDocument(QJsonObject{{"patches", patches}}).toJson(QJsonDocument::Indented))
+                : text);
+        return kExitOk;
+    }
+    auto doc = openProject(path);
+    if (!doc->hasMesh())
+        throw model::IoError(path, Cli::tr("has no base model"));
+    const model::ProjectData& data = doc->data();
+    if (parser.isSet(remove)) {
+        const QString name = parser.value(remove);
+        if (!data.faceSet(name))
+            throw model::IoError(path, Cli::tr("has no patch named “%1”").arg(name));
+        doc->removeFaceSet(name);
+        doc->saveAs(path);
+        return kExitOk;
+    }
+    const algo::TriMesh& mesh = *data.baseMesh;
+    std::vector<std::int32_t> selected;
+    for (const QString& text : parser.values(facesOption)) {
+        const auto faces = parseFaceList(text, mesh.faceCount(), path);
+        selected.insert(selected.end(), faces.begin(), faces.end());
+    }
+    for (const QString& name : parser.values(material)) {
+        const auto it = std::find_if(mesh.materials.begin(), mesh.materials.end(),
+            [&](const algo::Material& m) { return QString::fromStdString(m.name) == name; });
+        if (it == mesh.materials.end())
+            throw model::IoError(path, Cli::tr("has no material named “%1”").arg(name));
+        const auto index = std::int32_t(it - mesh.materials.begin());
+        for (Eigen::Index f = 0; f < mesh.faceCount(); ++f)
+            if ((mesh.faceMaterials.empty() ? 0 : mesh.faceMaterials[std::size_t(f)]) == index)
+                selected.push_back(std::int32_t(f));
+    }
+    for (const Eigen::Vector4d& s : spheres) {
+        const Eigen::Vector3f centre = s.head<3>().cast<float>();
+        const float r2 = float(s[3] * s[3]);
+        for (Eigen::Index f = 0; f < mesh.faceCount(); ++f)
+            for (int k = 0; k < 3; ++k)
+                if ((mesh.vertices.row(mesh.faces(f, k)).transpose() - centre).squaredNorm() <= r2) {
+                    selected.push_back(std::int32_t(f));
+                    break;
+                }
+    }
+    std::sort(selected.begin(), selected.end());
+    selected.erase(std::unique(selected.begin(), selected.end()), selected.end());
+    const QString name = parser.isSet(add) ? parser.value(add) : parser.value(subtract);
+    if (name.trimmed().isEmpty())
+        throw UsageError{Cli::tr("a patch needs a name")};
+    const algo::FaceSet* existing = data.faceSet(name);
+    if (parser.isSet(subtract) && !existing)
+        throw model::IoError(path, Cli::tr("has no patch named “%1”").arg(name));
+    const std::vector<std::int32_t> before = existing ? existing->faces : std::vector<std::int32_t>{};
+    std::vector<std::int32_t> after;
+    if (parser.isSet(add))
+        std::set_union(before.begin(), before.end(), selected.begin(), selected.end(), std::back_inserter(after));
+    else
+        std::set_difference(before.begin(), before.end(), selected.begin(), selected.end(), std::back_inserter(after));
+    doc->setFaceSet(name, after, Cli::tr("Edit Patch “%1”").arg(name));
+    doc->saveAs(path);
+    if (parser.isSet(json))
+        printOut(
+            QString::fromUtf8(QJsonDocument(patchJson(*doc->data().faceSet(name))).toJson(QJsonDocument::Indented)));
     return kExitOk;
 }
 
@@ -990,6 +1125,10 @@ int runCommandLine(const QStringList& arguments)
             "  celform highlight P --add NAME [--patch FACESET|all] [--epsilon E] [--guide X,Y,Z] [--color R,G,B] "
             "[--cut C] [--op translate:A,B|rotate:DEG|scale:DELTA|split:G1,G2|square:SIGMA,N]... "
             "[--combine union|subtract:OTHER]... [--visible on|off] [--frame F] [--json]\n"
+            "  celform patch P --list [--json]\n"
+            "  celform patch P (--add NAME | --subtract NAME) [--sphere X,Y,Z,R]... [--faces A-B,C]... "
+            "[--material M]... [--json]\n"
+            "  celform patch P --remove NAME\n"
             "  celform --version\n"
             "Exit codes: 0 success, 2 usage error, 3 bad input.");
     try {
@@ -1020,6 +1159,8 @@ int runCommandLine(const QStringList& arguments)
             return commandRender(rest);
         if (first == QLatin1String("highlight"))
             return commandHighlight(rest);
+        if (first == QLatin1String("patch"))
+            return commandPatch(rest);
         printErr(usage);
         return kExitUsage;
     } catch (const UsageError& e) {

@@ -5,6 +5,8 @@
 #include "celform/model/mesh_io.h"
 #include "celform/views/viewport.h"
 
+#include "bench_gui.h"
+
 #include <benchmark/benchmark.h>
 
 #include <QApplication>
@@ -114,13 +116,5 @@ BENCHMARK(BM_OrbitArmadilloPreview)
 
 int main(int argc, char** argv)
 {
-    QSurfaceFormat::setDefaultFormat(views::Viewport::defaultFormat());
-    // Without a display there is nothing to measure; the benchmarks then skip themselves.
-    std::unique_ptr<QApplication> app;
-    if (!qEnvironmentVariableIsEmpty("DISPLAY"))
-        app = std::make_unique<QApplication>(argc, argv);
-    benchmark::Initialize(&argc, argv);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return celform::bench::runViewportBenchmarks(argc, argv);
 }

@@ -42,11 +42,11 @@ ProjectData richProject()
     mesh->uvFaces = mesh->faces;
     mesh->materials = {{"skin", {0.9f, 0.7f, 0.6f}}, {"hair", {0.1f, 0.1f, 0.2f}}};
     mesh->faceMaterials = {0, 0, 1, 1};
-    mesh->faceSets = {{"forehead", {0, 1}}};
 
     ProjectData data;
     data.baseMesh = mesh;
     data.baseMeshName = QStringLiteral("pyramid.obj");
+    data.faceSets = {{"forehead", {0, 1}}};
     Drawing d;
     d.id = 1;
     d.name = QStringLiteral("side view");

@@ -34,7 +34,6 @@ std::shared_ptr<TriMesh> octahedron()
     mesh->vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
     mesh->faces.resize(8, 3);
     mesh->faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
-    mesh->faceSets.push_back({"upper", {0, 1, 2, 3}});
     return mesh;
 }
 
@@ -76,7 +75,9 @@ private slots:
     {
         QVERIFY(m_dir.isValid());
         m_doc = std::make_unique<Document>();
-        m_doc->reset(celform::model::newProject(octahedron(), QStringLiteral("octahedron.obj")));
+        auto data = celform::model::newProject(octahedron(), QStringLiteral("octahedron.obj"));
+        data.faceSets.push_back({"upper", {0, 1, 2, 3}});
+        m_doc->reset(std::move(data));
         m_panel = std::make_unique<HighlightPanel>(m_doc.get());
         m_panel->resize(360, 760);
         m_panel->show();

@@ -9,8 +9,7 @@ bool TriMesh::operator==(const TriMesh& o) const
 {
     return vertices.rows() == o.vertices.rows() && vertices == o.vertices && faces.rows() == o.faces.rows()
         && faces == o.faces && uvs.rows() == o.uvs.rows() && uvs == o.uvs && uvFaces.rows() == o.uvFaces.rows()
-        && uvFaces == o.uvFaces && faceMaterials == o.faceMaterials && materials == o.materials
-        && faceSets == o.faceSets;
+        && uvFaces == o.uvFaces && faceMaterials == o.faceMaterials && materials == o.materials;
 }
 
 Eigen::Vector3d centroid(const Positions& vertices)

@@ -24,7 +24,7 @@ struct Material {
     bool operator==(const Material& o) const { return name == o.name && baseColor == o.baseColor; }
 };
 
-/// A named set of faces (a highlight patch, a selection).
+/// A named set of faces (a highlight patch, a selection); faces ascending, no repeats.
 struct FaceSet {
     std::string name;
     std::vector<std::int32_t> faces;
@@ -41,7 +41,6 @@ struct TriMesh {
     /// Per-face material index into materials; empty means every face uses material 0.
     std::vector<std::int32_t> faceMaterials;
     std::vector<Material> materials;
-    std::vector<FaceSet> faceSets;
 
     [[nodiscard]] Eigen::Index vertexCount() const { return vertices.rows(); }
     [[nodiscard]] Eigen::Index faceCount() const { return faces.rows(); }

@@ -7,6 +7,7 @@
 #include "celform/model/mesh_io.h"
 #include "celform/model/project_file.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QCoreApplication>
@@ -85,6 +86,9 @@ void Document::notifyChanged(Part part)
     case Part::Look:
         emit lookChanged();
         break;
+    case Part::FaceSets:
+        emit faceSetsChanged();
+        break;
     }
 }
 
@@ -148,6 +152,16 @@ void Document::setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QStr
         this, {}, [](ProjectData& d) { return &d.baseMesh; }, std::move(mesh), Part::Mesh, -1, 0, cmd);
     new AssignCommand<QString>(
         this, {}, [](ProjectData& d) { return &d.baseMeshName; }, meshName, Part::Mesh, -1, 0, cmd);
+    if (!m_data.faceSets.empty() && m_data.baseMesh && m_data.baseMesh->faceCount() != mesh->faceCount()) {
+        // Face indices mean nothing on other faces: the patches go, their layers cover all faces.
+        Look look = m_data.look;
+        for (auto& track : look.highlights)
+            track.patch.clear();
+        new AssignCommand<std::vector<algo::FaceSet>>(
+            this, {}, [](ProjectData& d) { return &d.faceSets; }, {}, Part::FaceSets, -1, 0, cmd);
+        new AssignCommand<Look>(
+            this, {}, [](ProjectData& d) { return &d.look; }, look, Part::Look, -1, 0, cmd);
+    }
     m_undo->push(cmd);
 }
 
@@ -558,6 +572,91 @@ void Document::setLook(const Look& look)
         return;
     m_undo->push(new AssignCommand<Look>(
         this, tr("Change Look"), [](ProjectData& d) { return &d.look; }, look, Part::Look, kLookId));
+}
+
+void Document::setFaceSet(const QString& name, std::vector<std::int32_t> faces, const QString& undoText, int strokeId)
+{
+    if (!m_data.baseMesh)
+        throw EditRefused(tr("There is no base model to make a patch on."));
+    if (name.trimmed().isEmpty())
+        throw EditRefused(tr("A patch needs a name."));
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    if (!faces.empty() && (faces.front() < 0 || faces.back() >= m_data.baseMesh->faceCount()))
+        throw EditRefused(tr("Patch “%1” names a face the base model does not have.").arg(name));
+    std::vector<algo::FaceSet> sets = m_data.faceSets;
+    const std::string wanted = name.toStdString();
+    auto it = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
+    if (it == sets.end()) {
+        sets.push_back({wanted, std::move(faces)});
+    } else {
+        if (it->faces == faces && strokeId == 0)
+            return;
+        it->faces = std::move(faces);
+    }
+    m_undo->push(new AssignCommand<std::vector<algo::FaceSet>>(
+        this, undoText, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), Part::FaceSets,
+        strokeId != 0 ? kFaceSetsId : -1, ObjectId(strokeId)));
+}
+
+void Document::removeFaceSet(const QString& name)
+{
+    const std::string wanted = name.toStdString();
+    std::vector<algo::FaceSet> sets = m_data.faceSets;
+    const auto it = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
+    if (it == sets.end())
+        return;
+    sets.erase(it);
+    auto* cmd = new QUndoCommand(tr("Delete Patch “%1”").arg(name));
+    Look look = m_data.look;
+    bool lookChanges = false;
+    for (auto& track : look.highlights)
+        if (track.patch == name) {
+            track.patch.clear();
+            lookChanges = true;
+        }
+    if (lookChanges)
+        new AssignCommand<Look>(
+            this, {}, [](ProjectData& d) { return &d.look; }, look, Part::Look, -1, 0, cmd);
+    new AssignCommand<std::vector<algo::FaceSet>>(
+        this, {}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), Part::FaceSets, -1, 0, cmd);
+    m_undo->push(cmd);
+}
+
+void Document::renameFaceSet(const QString& name, const QString& newName)
+{
+    const QString trimmed = newName.trimmed();
+    if (trimmed == name)
+        return;
+    if (trimmed.isEmpty())
+        throw EditRefused(tr("A patch needs a name."));
+    if (m_data.faceSet(trimmed))
+        throw EditRefused(tr("There is already a patch named “%1”.").arg(trimmed));
+    std::vector<algo::FaceSet> sets = m_data.faceSets;
+    const std::string wanted = name.toStdString();
+    const auto it = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
+    if (it == sets.end())
+        return;
+    it->name = trimmed.toStdString();
+    auto* cmd = new QUndoCommand(tr("Rename Patch “%1”").arg(name));
+    new AssignCommand<std::vector<algo::FaceSet>>(
+        this, {}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), Part::FaceSets, -1, 0, cmd);
+    Look look = m_data.look;
+    bool lookChanges = false;
+    for (auto& track : look.highlights)
+        if (track.patch == name) {
+            track.patch = trimmed;
+            lookChanges = true;
+        }
+    if (lookChanges)
+        new AssignCommand<Look>(
+            this, {}, [](ProjectData& d) { return &d.look; }, look, Part::Look, -1, 0, cmd);
+    m_undo->push(cmd);
+}
+
+QString Document::uniqueFaceSetName(const QString& wanted) const
+{
+    return uniqueName(wanted, [this](const QString& n) { return m_data.faceSet(n) != nullptr; });
 }
 
 QString Document::uniqueDrawingName(const QString& wanted) const

@@ -89,6 +89,19 @@ public:
     void renameKey(ObjectId id, const QString& name);
     void setKeyEnabled(ObjectId id, bool enabled);
 
+    // --- face sets: the highlight patches (paper 2, "Highlight operations": each operation acts on
+    // one patch) ---------------------------------------------------------------------------
+    /// Creates or replaces a face set; faces are sorted and repeats dropped. Steps with the same
+    /// non-zero strokeId merge into one undo step (one paint drag = one undo). Throws
+    /// EditRefused without a base model, for an empty name or a face out of range.
+    void setFaceSet(const QString& name, std::vector<std::int32_t> faces, const QString& undoText, int strokeId = 0);
+    /// Removes a face set; highlight layers on it go back to all faces in the same undo step.
+    void removeFaceSet(const QString& name);
+    /// Renames a face set and the highlight layers' references to it (one undo step). Throws
+    /// EditRefused for an empty name or one already taken.
+    void renameFaceSet(const QString& name, const QString& newName);
+    [[nodiscard]] QString uniqueFaceSetName(const QString& wanted) const;
+
     void setBlendSettings(const BlendSettings& settings);
     void setLook(const Look& look);
 
@@ -99,7 +112,7 @@ public:
     /// Low-level access for undo commands only.
     ProjectData& mutableData() { return m_data; }
 
-    enum class Part { Mesh, Drawings, Keys, Blend, Look };
+    enum class Part { Mesh, Drawings, Keys, Blend, Look, FaceSets };
     /// Called by commands after they changed a part.
     void notifyChanged(Part part);
 
@@ -109,6 +122,8 @@ signals:
     void keysChanged();
     void blendChanged();
     void lookChanged();
+    /// Face sets were added, changed, renamed or removed.
+    void faceSetsChanged();
     /// The whole document was replaced (open, new).
     void documentReset();
     void filePathChanged(const QString& path);

@@ -12,7 +12,7 @@
 namespace celform::model {
 
 /// Merge ids of commands that a single gesture repeats (slider drags).
-enum CommandId { kDrawingOpacityId = 1001, kBlendId = 1002, kLookId = 1003, kKeyOffsetsId = 1004 };
+enum CommandId { kDrawingOpacityId = 1001, kBlendId = 1002, kLookId = 1003, kKeyOffsetsId = 1004, kFaceSetsId = 1005 };
 
 /// Sets one value found by a locator (by id) from `before` to `after`. With a merge id, repeated
 /// pushes for the same target fold into one undo step keeping the first "before".

@@ -144,8 +144,26 @@ ProjectData newProject(std::shared_ptr<const algo::TriMesh> mesh, const QString&
 bool ProjectData::operator==(const ProjectData& o) const
 {
     const bool meshEqual = (!baseMesh && !o.baseMesh) || (baseMesh && o.baseMesh && *baseMesh == *o.baseMesh);
-    return meshEqual && baseMeshName == o.baseMeshName && drawings == o.drawings && keys == o.keys && blend == o.blend
-        && look == o.look && nextId == o.nextId;
+    return meshEqual && baseMeshName == o.baseMeshName && faceSets == o.faceSets && drawings == o.drawings
+        && keys == o.keys && blend == o.blend && look == o.look && shadingOffsets == o.shadingOffsets
+        && nextId == o.nextId;
+}
+
+const algo::FaceSet* ProjectData::faceSet(const QString& name) const
+{
+    const std::string wanted = name.toStdString();
+    const auto it
+        = std::find_if(faceSets.begin(), faceSets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
+    return it == faceSets.end() ? nullptr : &*it;
+}
+
+std::vector<QString> ProjectData::faceSetNames() const
+{
+    std::vector<QString> names;
+    names.reserve(faceSets.size());
+    for (const auto& set : faceSets)
+        names.push_back(QString::fromStdString(set.name));
+    return names;
 }
 
 algo::HighlightLayer HighlightTrack::layerAt(double frame) const

@@ -208,6 +208,9 @@ struct Look {
 struct ProjectData {
     std::shared_ptr<const algo::TriMesh> baseMesh; ///< shared, immutable: edits replace it whole
     QString baseMeshName; ///< file name the base model came from
+    /// Named face sets of the base model: the highlight patches (paper 2 works patch by patch).
+    /// Faces ascending without repeats, each below the base model's face count; names unique.
+    std::vector<algo::FaceSet> faceSets;
     std::vector<Drawing> drawings;
     std::vector<KeyViewpoint> keys;
     BlendSettings blend;
@@ -223,6 +226,8 @@ struct ProjectData {
     [[nodiscard]] KeyViewpoint* key(ObjectId id);
     [[nodiscard]] const KeyViewpoint* keyByName(const QString& name) const;
     [[nodiscard]] const Drawing* drawingByName(const QString& name) const;
+    [[nodiscard]] const algo::FaceSet* faceSet(const QString& name) const;
+    [[nodiscard]] std::vector<QString> faceSetNames() const;
 
     /// Key offsets at a frame: the frame's own, else the nearest earlier frame's, else the
     /// first frame's (static models use frame 0), else none.

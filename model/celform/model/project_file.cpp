@@ -261,8 +261,8 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
                 QJsonObject{{"name", QString::fromStdString(mat.name)}, {"base_color", vec3f(mat.baseColor)}});
         m.insert("materials", materials);
         QJsonArray sets;
-        for (std::size_t i = 0; i < mesh->faceSets.size(); ++i) {
-            const auto& set = mesh->faceSets[i];
+        for (std::size_t i = 0; i < data.faceSets.size(); ++i) {
+            const auto& set = data.faceSets[i];
             sets.append(QJsonObject{{"name", QString::fromStdString(set.name)}, {"count", double(set.faces.size())},
                 {"faces", chunks.addVector(QStringLiteral("mesh/face_sets/%1").arg(i), set.faces)}});
         }
@@ -611,12 +611,15 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
             const QJsonObject o = v.toObject();
             algo::FaceSet set;
             set.name = r.string(o, "name").toStdString();
+            if (set.name.empty() || data.faceSet(QString::fromStdString(set.name)))
+                r.corrupt(ProjectFile::tr("a face set name is empty or used twice"));
             r.readVector(o, "faces", r.count(o, "count"), set.faces);
-            for (auto f : set.faces)
-                if (f < 0 || f >= mesh->faces.rows())
-                    r.corrupt(ProjectFile::tr("face set “%1” refers to a face out of range")
+            for (std::size_t k = 0; k < set.faces.size(); ++k)
+                if (set.faces[k] < 0 || set.faces[k] >= mesh->faces.rows()
+                    || (k > 0 && set.faces[k] <= set.faces[k - 1]))
+                    r.corrupt(ProjectFile::tr("face set “%1” refers to a face out of range or out of order")
                                   .arg(QString::fromStdString(set.name)));
-            mesh->faceSets.push_back(std::move(set));
+            data.faceSets.push_back(std::move(set));
         }
         for (auto f : mesh->faceMaterials)
             if (f < 0 || (f > 0 && std::size_t(f) >= mesh->materials.size()))
@@ -678,11 +681,7 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     data.blend.time = r.enumValue<TimeInterpolation>(blend, "time");
 
     data.look = readLook(r, r.object(root, "look"));
-    std::vector<QString> faceSetNames;
-    if (data.baseMesh)
-        for (const auto& set : data.baseMesh->faceSets)
-            faceSetNames.push_back(QString::fromStdString(set.name));
-    const QString highlightProblem = highlightTracksProblem(data.look.highlights, faceSetNames);
+    const QString highlightProblem = highlightTracksProblem(data.look.highlights, data.faceSetNames());
     if (!highlightProblem.isEmpty())
         r.corrupt(highlightProblem);
     if (root.contains("shading_offsets")) {

@@ -176,9 +176,8 @@ std::vector<algo::RenderHighlight> renderHighlightsFor(
                 h.layer.combinations.push_back({mode, *otherShape});
         std::vector<std::int32_t> patchFaces;
         if (!track.patch.isEmpty() && track.patch != QLatin1String("all")) {
-            const auto set = std::find_if(mesh.faceSets.begin(), mesh.faceSets.end(),
-                [&](const algo::FaceSet& s) { return QString::fromStdString(s.name) == track.patch; });
-            if (set == mesh.faceSets.end())
+            const algo::FaceSet* set = data.faceSet(track.patch);
+            if (!set)
                 continue; // validated on load and edit; a stale name draws nothing
             patchFaces.assign(set->faces.begin(), set->faces.end());
             h.faceMask.assign(std::size_t(mesh.faces.rows()), 0);

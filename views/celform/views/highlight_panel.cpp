@@ -7,6 +7,8 @@
 #include "celform/views/viewport.h"
 
 #include "celform/algorithms/tri_mesh.h"
+#include "celform/model/io_error.h"
+#include "celform/model/render_output.h"
 
 #include <QCheckBox>
 #include <QColorDialog>
@@ -15,9 +17,12 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
+#include <QMessageBox>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -420,12 +425,75 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
             tr("Change Off-Specular Cut"), [v](algo::HighlightLayer& l) { l.offSpecularCut = float(v); },
             QStringLiteral("cut"));
     });
-    m_patch = new QComboBox(m_parameters);
+    // The patch: the paper shapes each highlight on one (u, v) patch; here a face set painted
+    // on the model (the Patch tool of the viewport), or all faces.
+    auto* patchRow = new QWidget(m_parameters);
+    auto* patchLayout = new QHBoxLayout(patchRow);
+    patchLayout->setContentsMargins(0, 0, 0, 0);
+    m_patch = new QComboBox(patchRow);
+    m_patch->setObjectName(QStringLiteral("highlightPatch"));
     m_patch->setToolTip(tr("Face set the highlight may appear on (not keyed)"));
-    form->addRow(tr("&Patch:"), m_patch);
+    m_patch->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    patchLayout->addWidget(m_patch, 1);
+    m_paintPatch = new QToolButton(patchRow);
+    m_paintPatch->setObjectName(QStringLiteral("highlightPaintPatch"));
+    m_paintPatch->setText(tr("Paint"));
+    m_paintPatch->setCheckable(true);
+    m_paintPatch->setToolTip(tr("Paint the layer's patch on the model: drag adds faces, Ctrl+drag removes them, "
+                                "[ and ] change the radius. A layer on all faces gets a new patch first."));
+    patchLayout->addWidget(m_paintPatch);
+    auto* patchMenuButton = new QToolButton(patchRow);
+    patchMenuButton->setObjectName(QStringLiteral("highlightPatchMenu"));
+    patchMenuButton->setText(tr("…"));
+    patchMenuButton->setToolTip(tr("New, rename or delete patches"));
+    patchMenuButton->setPopupMode(QToolButton::InstantPopup);
+    auto* patchMenu = new QMenu(patchMenuButton);
+    m_newPatch = patchMenu->addAction(tr("&New Patch"), this, [this] { newPatchForLayer(); });
+    m_renamePatch = patchMenu->addAction(tr("&Rename Patch…"), this, [this] {
+        const model::HighlightTrack* t = track();
+        if (!t || t->patch.isEmpty())
+            return;
+        bool ok = false;
+        const QString name
+            = QInputDialog::getText(this, tr("Rename Patch"), tr("Patch name:"), QLineEdit::Normal, t->patch, &ok);
+        if (!ok)
+            return;
+        try {
+            m_document->renameFaceSet(t->patch, name);
+        } catch (const model::EditRefused& e) {
+            QMessageBox::warning(this, tr("Rename Patch"), e.message());
+        }
+    });
+    m_deletePatch = patchMenu->addAction(tr("&Delete Patch"), this, [this] {
+        if (const model::HighlightTrack* t = track(); t && !t->patch.isEmpty())
+            m_document->removeFaceSet(t->patch);
+    });
+    patchMenuButton->setMenu(patchMenu);
+    patchLayout->addWidget(patchMenuButton);
+    form->addRow(tr("&Patch:"), patchRow);
     connect(m_patch, qOverload<int>(&QComboBox::activated), this, [this](int index) {
         const QString patch = m_patch->itemData(index).toString();
         editTrack(tr("Change Highlight Patch"), [&](model::HighlightTrack& t) { t.patch = patch; });
+    });
+    connect(m_paintPatch, &QToolButton::toggled, this, [this](bool on) {
+        if (!m_viewport)
+            return;
+        if (!on) {
+            if (m_viewport->tool() == Viewport::Tool::Patch)
+                m_viewport->setTool(Viewport::Tool::Navigate);
+            return;
+        }
+        const model::HighlightTrack* t = track();
+        if (t && t->patch.isEmpty())
+            newPatchForLayer();
+        t = track();
+        if (!t || t->patch.isEmpty()) {
+            const QSignalBlocker block(m_paintPatch);
+            m_paintPatch->setChecked(false);
+            return;
+        }
+        m_viewport->setPatchTarget(t->patch);
+        m_viewport->setTool(Viewport::Tool::Patch);
     });
     auto* guideRow = new QWidget(m_parameters);
     auto* guideLayout = new QHBoxLayout(guideRow);
@@ -505,7 +573,25 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     connect(m_document, &model::Document::lookChanged, this, &HighlightPanel::refresh);
     connect(m_document, &model::Document::documentReset, this, &HighlightPanel::refresh);
     connect(m_document, &model::Document::meshChanged, this, &HighlightPanel::refresh);
+    connect(m_document, &model::Document::faceSetsChanged, this, &HighlightPanel::refresh);
     refresh();
+}
+
+void HighlightPanel::newPatchForLayer()
+{
+    const model::HighlightTrack* t = track();
+    if (!t || !m_document->hasMesh())
+        return;
+    const QString name = m_document->uniqueFaceSetName(tr("%1 patch").arg(t->name));
+    QUndoStack* undo = m_document->undoStack();
+    undo->beginMacro(tr("New Patch “%1”").arg(name));
+    m_document->setFaceSet(name, {}, tr("New Patch “%1”").arg(name));
+    m_lastMergeKey.clear();
+    editTrack(tr("Change Highlight Patch"), [&](model::HighlightTrack& track) { track.patch = name; });
+    undo->endMacro();
+    m_lastMergeKey.clear();
+    if (m_viewport && m_viewport->tool() == Viewport::Tool::Patch)
+        m_viewport->setPatchTarget(name);
 }
 
 QDoubleSpinBox* HighlightPanel::makeSpin(double min, double max, double step, int decimals, const QString& tip)
@@ -525,12 +611,15 @@ void HighlightPanel::setViewport(Viewport* viewport)
         disconnect(m_viewport, nullptr, this, nullptr);
     m_viewport = viewport;
     m_editInViewport->setChecked(false);
+    m_paintPatch->setChecked(false);
     refresh(); // enables "Edit in Viewport"
     if (!viewport)
         return;
     connect(viewport, &Viewport::toolChanged, this, [this](Viewport::Tool tool) {
         const QSignalBlocker block(m_editInViewport);
         m_editInViewport->setChecked(tool == Viewport::Tool::Highlight);
+        const QSignalBlocker blockPaint(m_paintPatch);
+        m_paintPatch->setChecked(tool == Viewport::Tool::Patch);
     });
     connect(viewport, &Viewport::highlightDragStarted, this, &HighlightPanel::beginViewportDrag);
     connect(viewport, &Viewport::highlightDragged, this, &HighlightPanel::viewportDrag);
@@ -554,8 +643,22 @@ void HighlightPanel::beginViewportDrag(const QPointF& position)
     if (vertex < 0 || vertex >= shape.rows() || shape.rows() != mesh->vertices.rows())
         return;
     const Eigen::Vector3f p = shape.row(vertex).transpose();
-    const algo::Positions normals = algo::vertexNormals(shape, mesh->faces);
-    const algo::HighlightFrame frame = algo::guideTangentFrame(normals.row(vertex).transpose(), t->guide);
+    // The frame the renderer uses at that vertex (UVs where the model has them, else the guide
+    // smoothed over the patch); a hidden layer or a vertex off its patch falls back to the guide.
+    algo::HighlightFrame frame;
+    bool found = false;
+    for (const auto& h : model::renderHighlightsFor(m_document->data(), m_document->data().look, shape, m_frame))
+        if (QString::fromStdString(h.layer.name) == t->name && h.du.rows() == shape.rows()
+            && h.du.row(vertex).squaredNorm() > 0.5f) {
+            frame.du = h.du.row(vertex).transpose();
+            frame.dv = h.dv.row(vertex).transpose();
+            found = true;
+            break;
+        }
+    if (!found) {
+        const algo::Positions normals = algo::vertexNormals(shape, mesh->faces);
+        frame = algo::guideTangentFrame(normals.row(vertex).transpose(), t->guide);
+    }
     const double perPixel = m_viewport->worldUnitsPerPixel(p.cast<double>());
     const QPointF origin = m_viewport->projectToWidget(p.cast<double>());
     auto screenDirection = [&](const Eigen::Vector3f& d) {
@@ -655,11 +758,7 @@ const model::HighlightTrack* HighlightPanel::track() const
 
 std::vector<QString> HighlightPanel::faceSetNames() const
 {
-    std::vector<QString> names;
-    if (const auto& mesh = m_document->data().baseMesh)
-        for (const auto& set : mesh->faceSets)
-            names.push_back(QString::fromStdString(set.name));
-    return names;
+    return m_document->data().faceSetNames();
 }
 
 void HighlightPanel::edit(
@@ -942,6 +1041,17 @@ void HighlightPanel::refresh()
     m_combinationsBox->setEnabled(t != nullptr);
     m_key->setEnabled(t != nullptr);
     m_editInViewport->setEnabled(t != nullptr && m_viewport != nullptr);
+    m_paintPatch->setEnabled(t != nullptr && m_viewport != nullptr && m_document->hasMesh());
+    m_newPatch->setEnabled(t != nullptr && m_document->hasMesh());
+    m_renamePatch->setEnabled(t != nullptr && !t->patch.isEmpty());
+    m_deletePatch->setEnabled(t != nullptr && !t->patch.isEmpty());
+    if (m_viewport) {
+        // Painting follows the selected layer's patch; a layer on all faces ends painting.
+        if (m_viewport->tool() == Viewport::Tool::Patch && (!t || t->patch.isEmpty()))
+            m_viewport->setTool(Viewport::Tool::Navigate);
+        else if (t)
+            m_viewport->setPatchTarget(t->patch);
+    }
     const bool keyHere = t && std::any_of(t->keys.begin(), t->keys.end(), [this](const algo::HighlightKey& k) {
         return k.frame == double(m_frame);
     });

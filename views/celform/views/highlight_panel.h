@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+class QAction;
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
@@ -95,6 +96,8 @@ private:
     void rebuildOperations(const algo::HighlightLayer& layer);
     void rebuildCombinations(const model::HighlightTrack& t);
     void jumpToKey(int direction);
+    /// Makes an empty face set named after the selected layer and puts the layer on it (one undo step).
+    void newPatchForLayer();
     /// Viewport drags (Tool::Highlight): plain translates the highlight along the tangent frame at
     /// the picked point as seen on screen, Shift rotates, Ctrl scales; one undo step per drag.
     void beginViewportDrag(const QPointF& position);
@@ -126,6 +129,10 @@ private:
     QDoubleSpinBox* m_epsilon;
     QDoubleSpinBox* m_cut;
     QComboBox* m_patch;
+    QToolButton* m_paintPatch;
+    QAction* m_newPatch;
+    QAction* m_renamePatch;
+    QAction* m_deletePatch;
     QDoubleSpinBox* m_guide[3];
     QGroupBox* m_operationsBox;
     QVBoxLayout* m_operationRows;

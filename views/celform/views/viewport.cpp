@@ -4,6 +4,7 @@
 
 #include "celform/algorithms/camera_solve.h"
 #include "celform/model/document.h"
+#include "celform/model/io_error.h"
 #include "celform/model/render_output.h"
 #include "celform/views/line_overlay.h"
 #include "celform/views/look_shading.h"
@@ -47,6 +48,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -170,6 +172,10 @@ struct Viewport::Vtk {
     vtkNew<vtkPolyData> grid;
     vtkNew<vtkPolyDataMapper> gridMapper;
     vtkNew<vtkActor> gridActor;
+    // The patch being painted: its faces over the model, lifted a little along the normals.
+    vtkNew<vtkPolyData> patch;
+    vtkNew<vtkPolyDataMapper> patchMapper;
+    vtkNew<vtkActor> patchActor;
     vtkNew<vtkCallbackCommand> makeCurrent;
     // The reference drawing, in a renderer of its own with a parallel camera fitted to the
     // image height: under the model (layer 0) or over it (layer 2).
@@ -280,6 +286,17 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     v.lightActor->VisibilityOff();
     v.renderer->AddActor(v.lightActor);
 
+    v.patchMapper->SetInputData(v.patch);
+    v.patchMapper->ScalarVisibilityOff();
+    v.patchActor->SetMapper(v.patchMapper);
+    v.patchActor->GetProperty()->SetColor(1.0, 0.45, 0.08);
+    v.patchActor->GetProperty()->SetOpacity(0.45);
+    v.patchActor->GetProperty()->SetAmbient(0.5);
+    v.patchActor->GetProperty()->SetDiffuse(0.5);
+    v.patchActor->PickableOff();
+    v.patchActor->VisibilityOff();
+    v.renderer->AddActor(v.patchActor);
+
     v.gridMapper->SetInputData(v.grid);
     v.gridActor->SetMapper(v.gridMapper);
     v.gridActor->GetProperty()->LightingOff();
@@ -328,6 +345,11 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
                 updateShape();
         });
         connect(m_document, &model::Document::drawingsChanged, this, &Viewport::updateOverlay);
+        connect(m_document, &model::Document::faceSetsChanged, this, [this] {
+            updateLookShading();
+            updatePatchOverlay();
+            update();
+        });
         connect(m_document, &model::Document::lookChanged, this, [this] {
             updateLookShading();
             updateLightGizmo();
@@ -785,6 +807,7 @@ void Viewport::updateShape()
     v.mesh->Modified();
     updateLookShading();
     updateSelectionColors();
+    updatePatchOverlay();
     update();
 }
 
@@ -917,7 +940,12 @@ void Viewport::setTool(Tool tool)
         m_mirrorSelection = {};
         updateSelectionColors();
     }
-    setCursor(tool == Tool::Brush || tool == Tool::Highlight ? Qt::CrossCursor : Qt::ArrowCursor);
+    updatePatchOverlay();
+    if (tool == Tool::Patch)
+        emit message(tr("Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.")
+                         .arg(m_patchTarget));
+    setCursor(
+        tool == Tool::Brush || tool == Tool::Highlight || tool == Tool::Patch ? Qt::CrossCursor : Qt::ArrowCursor);
     emit toolChanged(tool);
 }
 
@@ -1103,6 +1131,128 @@ void Viewport::brushMove(const QPointF& delta, Qt::KeyboardModifiers modifiers)
 void Viewport::endBrush()
 {
     m_strokeId = 0;
+}
+
+// --- patch painting (the highlight patches of paper 2) ----------------------------------------
+
+void Viewport::setPatchTarget(const QString& name)
+{
+    if (name == m_patchTarget)
+        return;
+    m_patchTarget = name;
+    updatePatchOverlay();
+}
+
+std::vector<std::int32_t> Viewport::facesUnderBrush(const QPointF& position)
+{
+    Vtk& v = *m_vtk;
+    if (!m_initialized || !m_document || !m_document->hasMesh() || m_shape.rows() == 0 || !v.meshActor->GetVisibility())
+        return {};
+    const algo::TriMesh& mesh = *m_document->data().baseMesh;
+    const qreal dpr = devicePixelRatioF();
+    makeCurrent();
+    v.renderer->ResetCameraClippingRange();
+    const int hit = v.picker->Pick(position.x() * dpr, (height() - position.y()) * dpr, 0.0, v.renderer);
+    doneCurrent();
+    const vtkIdType cell = v.picker->GetCellId();
+    if (!hit || cell < 0 || cell >= vtkIdType(mesh.faceCount()))
+        return {};
+    if (m_vertexFacesMesh != &mesh) {
+        // Faces around each vertex, counted then filled (CSR): one pass each over the faces.
+        const auto nv = std::size_t(mesh.vertexCount());
+        m_vertexFaceStart.assign(nv + 1, 0);
+        for (Eigen::Index f = 0; f < mesh.faceCount(); ++f)
+            for (int k = 0; k < 3; ++k)
+                ++m_vertexFaceStart[std::size_t(mesh.faces(f, k)) + 1];
+        for (std::size_t i = 0; i < nv; ++i)
+            m_vertexFaceStart[i + 1] += m_vertexFaceStart[i];
+        m_vertexFaces.resize(std::size_t(m_vertexFaceStart[nv]));
+        std::vector<std::int32_t> fill(m_vertexFaceStart.begin(), m_vertexFaceStart.end() - 1);
+        for (Eigen::Index f = 0; f < mesh.faceCount(); ++f)
+            for (int k = 0; k < 3; ++k)
+                m_vertexFaces[std::size_t(fill[std::size_t(mesh.faces(f, k))]++)] = std::int32_t(f);
+        m_vertexFacesMesh = &mesh;
+    }
+    if (m_patchGrid.empty() || m_strokeId == 0)
+        m_patchGrid = algo::VertexGrid(m_shape);
+    std::vector<std::uint32_t> near;
+    std::vector<float> distances;
+    m_patchGrid.radiusQuery(toEigen(v.picker->GetPickPosition()), m_brushRadius, near, distances);
+    std::vector<std::int32_t> faces{std::int32_t(cell)};
+    for (const auto vertex : near)
+        for (auto i = m_vertexFaceStart[vertex]; i < m_vertexFaceStart[vertex + 1]; ++i)
+            faces.push_back(m_vertexFaces[std::size_t(i)]);
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    return faces;
+}
+
+void Viewport::paintPatch(const QPointF& position, Qt::KeyboardModifiers modifiers)
+{
+    if (!m_document || !m_document->hasMesh())
+        return;
+    if (m_patchTarget.trimmed().isEmpty()) {
+        emit message(tr("Choose or create a patch in the Highlights dock first."));
+        return;
+    }
+    const std::vector<std::int32_t> dab = facesUnderBrush(position);
+    if (dab.empty())
+        return;
+    const algo::FaceSet* set = m_document->data().faceSet(m_patchTarget);
+    const std::vector<std::int32_t> before = set ? set->faces : std::vector<std::int32_t>{};
+    std::vector<std::int32_t> after;
+    after.reserve(before.size() + dab.size());
+    if (modifiers & Qt::ControlModifier)
+        std::set_difference(before.begin(), before.end(), dab.begin(), dab.end(), std::back_inserter(after));
+    else
+        std::set_union(before.begin(), before.end(), dab.begin(), dab.end(), std::back_inserter(after));
+    if (set && after == before)
+        return;
+    try {
+        m_document->setFaceSet(m_patchTarget, std::move(after), tr("Paint Patch “%1”").arg(m_patchTarget), m_strokeId);
+    } catch (const model::EditRefused& e) {
+        emit message(e.message());
+    }
+}
+
+void Viewport::updatePatchOverlay()
+{
+    Vtk& v = *m_vtk;
+    const algo::FaceSet* set = (m_tool == Tool::Patch && m_document && m_document->hasMesh())
+        ? m_document->data().faceSet(m_patchTarget)
+        : nullptr;
+    if (!set || set->faces.empty() || m_shape.rows() != m_document->data().baseMesh->vertexCount()) {
+        if (v.patchActor->GetVisibility()) {
+            v.patchActor->VisibilityOff();
+            update();
+        }
+        return;
+    }
+    // Lifted by a thousandth of the model's size along the normals: no depth fighting with the
+    // model under it, and too little to see.
+    const algo::Faces& faces = m_document->data().baseMesh->faces;
+    const algo::Positions normals = algo::vertexNormals(m_shape, faces);
+    const float lift = float(1e-3 * m_bounds.diagonal().norm());
+    vtkNew<vtkFloatArray> positions;
+    positions->SetNumberOfComponents(3);
+    positions->SetNumberOfTuples(m_shape.rows());
+    float* p = positions->GetPointer(0);
+    for (Eigen::Index i = 0; i < m_shape.rows(); ++i)
+        for (int k = 0; k < 3; ++k)
+            p[3 * i + k] = m_shape(i, k) + lift * normals(i, k);
+    vtkNew<vtkPoints> points;
+    points->SetData(positions);
+    vtkNew<vtkCellArray> triangles;
+    triangles->AllocateExact(vtkIdType(set->faces.size()), 3 * vtkIdType(set->faces.size()));
+    for (const auto f : set->faces) {
+        const vtkIdType ids[3] = {faces(f, 0), faces(f, 1), faces(f, 2)};
+        triangles->InsertNextCell(3, ids);
+    }
+    v.patch->Initialize();
+    v.patch->SetPoints(points);
+    v.patch->SetPolys(triangles);
+    v.patchActor->VisibilityOn();
+    update();
 }
 
 // --- semi-automatic alignment ----------------------------------------------------------------
@@ -1564,6 +1714,11 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     } else if (button == Qt::LeftButton && m_tool == Tool::Highlight) {
         drag = Drag::Highlight;
         emit highlightDragStarted(event->position());
+    } else if (button == Qt::LeftButton && m_tool == Tool::Patch) {
+        drag = Drag::Patch;
+        m_strokeId = m_document ? m_document->newStrokeId() : 0;
+        m_patchGrid = {};
+        paintPatch(event->position(), mods);
     }
     if (drag == Drag::None) {
         QOpenGLWidget::mousePressEvent(event);
@@ -1590,6 +1745,7 @@ void Viewport::mousePressEvent(QMouseEvent* event)
         break;
     case Drag::Brush:
     case Drag::Highlight:
+    case Drag::Patch:
     case Drag::None:
         break;
     }
@@ -1608,6 +1764,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
             endBrush();
         if (m_drag == Drag::Highlight)
             emit highlightDragFinished();
+        if (m_drag == Drag::Patch)
+            m_strokeId = 0;
         m_drag = Drag::None;
         m_dragButton = Qt::NoButton;
         unsetCursor();
@@ -1640,6 +1798,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
     case Drag::Highlight:
         emit highlightDragged(delta, event->modifiers());
         break;
+    case Drag::Patch:
+        paintPatch(event->position(), event->modifiers());
+        break;
     case Drag::None:
         break;
     }
@@ -1653,6 +1814,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event)
             endBrush();
         if (m_drag == Drag::Highlight)
             emit highlightDragFinished();
+        if (m_drag == Drag::Patch)
+            m_strokeId = 0;
         m_drag = Drag::None;
         m_dragButton = Qt::NoButton;
         unsetCursor();

@@ -123,6 +123,7 @@ public:
         Align, ///< navigation edits the overlay drawing's camera (one undo step per gesture)
         Brush, ///< left drag deforms the displayed key (paper 1, section 3.1.2)
         Highlight, ///< left drag is forwarded as highlightDrag* signals (the Highlights dock edits)
+        Patch, ///< left drag paints faces into the patch target (Ctrl+drag removes them)
     };
     enum class BrushMode { Move, Smooth };
     void setTool(Tool tool);
@@ -133,6 +134,13 @@ public:
     [[nodiscard]] BrushMode brushMode() const { return m_brushMode; }
     void setBrushMirrorX(bool on) { m_brushMirror = on; }
     [[nodiscard]] bool brushMirrorX() const { return m_brushMirror; }
+    /// The face set (highlight patch) Tool::Patch paints into; created by the first stroke when
+    /// missing. Its faces are tinted while the tool is on.
+    void setPatchTarget(const QString& name);
+    [[nodiscard]] QString patchTarget() const { return m_patchTarget; }
+    /// Faces a paint dab at a widget position would touch: the face under it and every face with
+    /// a corner within the brush radius of the picked point. Empty when nothing is picked.
+    [[nodiscard]] std::vector<std::int32_t> facesUnderBrush(const QPointF& position);
     // --- semi-automatic alignment: model points matched to drawing points --------------------
     /// While aligning, a click on the model adds a model point and Shift+click adds a drawing
     /// point; the i-th of each form a pair.
@@ -193,7 +201,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    enum class Drag { None, Orbit, Pan, Dolly, Roll, Brush, Light, Highlight };
+    enum class Drag { None, Orbit, Pan, Dolly, Roll, Brush, Light, Highlight, Patch };
 
     void releaseGraphics();
     void rebuildMesh();
@@ -208,6 +216,10 @@ private:
     void beginBrush(const QPointF& position, Qt::KeyboardModifiers modifiers);
     void brushMove(const QPointF& delta, Qt::KeyboardModifiers modifiers);
     void endBrush();
+    /// One paint dab of Tool::Patch at a widget position (Ctrl removes); a drag is one undo step.
+    void paintPatch(const QPointF& position, Qt::KeyboardModifiers modifiers);
+    /// Tints the patch target's faces while Tool::Patch is on (hidden otherwise).
+    void updatePatchOverlay();
     void rebuildGrid();
     void updateTriadViewport();
     void syncTriadCamera();
@@ -268,6 +280,11 @@ private:
     std::vector<std::int32_t> m_mirror; ///< mirror map of the base, built on demand
     algo::BrushSelection m_mirrorSelection;
     int m_strokeId = 0;
+    QString m_patchTarget;
+    /// Faces around each vertex (CSR over the base model), built on the first paint dab.
+    std::vector<std::int32_t> m_vertexFaceStart, m_vertexFaces;
+    const void* m_vertexFacesMesh = nullptr; ///< the base model m_vertexFaces was built for
+    algo::VertexGrid m_patchGrid; ///< over the displayed shape, for one paint stroke
     bool m_matching = false;
     std::vector<Eigen::Vector3d> m_modelPoints;
     std::vector<Eigen::Vector2d> m_drawingPoints;
