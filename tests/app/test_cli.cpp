@@ -445,6 +445,70 @@ private slots:
         QCOMPARE(file.readAll(), before); // nothing written
     }
 
+    void patches()
+    {
+        const QString bunny = bunnyProject();
+        if (bunny.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString project = m_dir.filePath(QStringLiteral("patch.celform"));
+        QFile::remove(project);
+        QVERIFY(QFile::copy(bunny, project));
+        // A big sphere around everything selects every face; a face range a few.
+        Run r = runCelform({"patch", project, "--add", "all of it", "--sphere", "0,0,0,1000", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = runCelform({"info", project, "--json"});
+        const int faces
+            = QJsonDocument::fromJson(r.out.toUtf8()).object()["base_mesh"].toObject()["triangle_count"].toInt();
+        r = runCelform({"patch", project, "--list", "--json"});
+        QJsonArray patches = QJsonDocument::fromJson(r.out.toUtf8()).object()["patches"].toArray();
+        QCOMPARE(patches.size(), 1);
+        QCOMPARE(patches[0].toObject()["face_count"].toInt(), faces);
+        r = runCelform({"patch", project, "--add", "few", "--faces", "0-9,20", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["face_count"].toInt(), 11);
+        r = runCelform({"patch", project, "--subtract", "few", "--faces", "5-9", "--json"});
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["face_count"].toInt(), 6);
+
+        // A highlight on a patch appears only there: the tiny patch shows (almost) nothing.
+        r = runCelform({"highlight", project, "--add", "shine", "--epsilon", "0.06", "--patch", "all of it"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        auto render = [&](const QString& name) {
+            const QString png = m_dir.filePath(name + QStringLiteral(".png"));
+            const Run run = runCelform({"render", project, "--size", "320x240", "--pass", "highlights", "--out", png});
+            [&] { QVERIFY2(run.exitCode == 0, qPrintable(run.err)); }();
+            return readMask(png);
+        };
+        const Mask everywhere = render(QStringLiteral("patch_all"));
+        QVERIFY(everywhere.area > 20);
+        r = runCelform({"highlight", project, "--add", "shine", "--frame", "0", "--patch", "few"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(render(QStringLiteral("patch_few")).area < everywhere.area);
+
+        // Removing the patch puts its layer back on all faces.
+        r = runCelform({"patch", project, "--remove", "few"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = runCelform({"highlight", project, "--list", "--json"});
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["layers"].toArray()[0].toObject()["patch"].toString(),
+            QStringLiteral("all"));
+        QCOMPARE(render(QStringLiteral("patch_removed")).area, everywhere.area);
+
+        // Bad input: usage errors (2) and bad references (3) leave the file as it was.
+        QFile file(project);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray before = file.readAll();
+        file.close();
+        const QList<QPair<QStringList, int>> bad = {{{"--add", "x"}, 2}, {{"--add", "x", "--sphere", "1,2,3"}, 2},
+            {{"--add", "x", "--sphere", "0,0,0,-1"}, 2}, {{"--add", "x", "--faces", "9-3"}, 2},
+            {{"--add", "x", "--faces", "0-99999999"}, 3}, {{"--add", "x", "--material", "nope"}, 3},
+            {{"--remove", "ghost"}, 3}, {{"--subtract", "ghost", "--faces", "1"}, 3}, {{"--list", "--remove", "x"}, 2}};
+        for (const auto& [options, code] : bad) {
+            const Run run = runCelform(QStringList{"patch", project} + options);
+            QVERIFY2(run.exitCode == code, qPrintable(options.join(' ') + QStringLiteral(": ") + run.err));
+        }
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll(), before);
+    }
+
     void renderPassesStereoAndSequences()
     {
         const QString project = bunnyProject();

@@ -217,6 +217,67 @@ private slots:
         QVERIFY(m_doc.data() == before);
     }
 
+    void faceSetsAreUndoable()
+    {
+        QSignalSpy changed(&m_doc, &Document::faceSetsChanged);
+        ProjectData after = applyUndoRedo([&] {
+            m_doc.setFaceSet(QStringLiteral("p"), {3, 1, 1}, QStringLiteral("t"));
+        });
+        QCOMPARE(after.faceSets.size(), std::size_t(1));
+        QCOMPARE(after.faceSets[0].faces, (std::vector<std::int32_t>{1, 3})); // sorted, repeats dropped
+        QVERIFY(changed.count() >= 3);
+        // A paint drag: several steps with one stroke id are one undo step.
+        const int count = m_doc.undoStack()->count();
+        const int stroke = m_doc.newStrokeId();
+        m_doc.setFaceSet(QStringLiteral("p"), {0, 1, 3}, QStringLiteral("paint"), stroke);
+        m_doc.setFaceSet(QStringLiteral("p"), {0, 1, 2, 3}, QStringLiteral("paint"), stroke);
+        QCOMPARE(m_doc.undoStack()->count(), count + 1);
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces.size(), std::size_t(4));
+        m_doc.undoStack()->undo();
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{1, 3}));
+        // Bad input is refused with the data unchanged.
+        const ProjectData before = m_doc.data();
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setFaceSet(QStringLiteral("p"), {4}, QStringLiteral("t")));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setFaceSet(QStringLiteral(" "), {0}, QStringLiteral("t")));
+        QVERIFY(m_doc.data() == before);
+    }
+
+    void renameAndRemoveFaceSetFollowLayers()
+    {
+        m_doc.setFaceSet(QStringLiteral("ear"), {0, 1}, QStringLiteral("t"));
+        Look look = m_doc.data().look;
+        HighlightTrack track;
+        track.name = QStringLiteral("shine");
+        track.patch = QStringLiteral("ear");
+        track.setKey(0, algo::HighlightLayer{});
+        look.highlights.push_back(track);
+        m_doc.setLook(look);
+
+        ProjectData after
+            = applyUndoRedo([&] { m_doc.renameFaceSet(QStringLiteral("ear"), QStringLiteral("left ear")); });
+        QVERIFY(after.faceSet(QStringLiteral("left ear")) && !after.faceSet(QStringLiteral("ear")));
+        QCOMPARE(after.look.highlights[0].patch, QStringLiteral("left ear"));
+        m_doc.setFaceSet(QStringLiteral("other"), {2}, QStringLiteral("t"));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.renameFaceSet(QStringLiteral("left ear"), QStringLiteral("other")));
+
+        after = applyUndoRedo([&] { m_doc.removeFaceSet(QStringLiteral("left ear")); });
+        QVERIFY(!after.faceSet(QStringLiteral("left ear")));
+        QVERIFY(after.look.highlights[0].patch.isEmpty()); // back to all faces
+        QCOMPARE(m_doc.uniqueFaceSetName(QStringLiteral("other")), QStringLiteral("other 2"));
+    }
+
+    void replacingTheMeshDropsPatchesOfOtherFaces()
+    {
+        m_doc.setFaceSet(QStringLiteral("p"), {0}, QStringLiteral("t"));
+        // Same face count: the patches stay.
+        m_doc.setBaseMesh(tetrahedron(2.f), QStringLiteral("big.off"));
+        QVERIFY(m_doc.data().faceSet(QStringLiteral("p")));
+        auto pyramid = std::make_shared<algo::TriMesh>(*tetrahedron());
+        pyramid->faces.conservativeResize(3, 3);
+        const ProjectData after = applyUndoRedo([&] { m_doc.setBaseMesh(pyramid, QStringLiteral("three.off")); });
+        QVERIFY(after.faceSets.empty());
+    }
+
     void cleanStateFollowsUndo()
     {
         QSignalSpy clean(m_doc.undoStack(), &QUndoStack::cleanChanged);

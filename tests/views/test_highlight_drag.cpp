@@ -1,6 +1,6 @@
 // Direct manipulation of a highlight layer in the viewport (Highlights dock, "Edit in Viewport"):
 // a drag on an icosphere keys a translation at the current frame in the drag's direction, as one
-// undo step.
+// undo step; painting a layer's patch with the Patch tool.
 #include "celform/model/document.h"
 #include "celform/views/highlight_panel.h"
 #include "celform/views/viewport.h"
@@ -10,6 +10,7 @@
 #include <QApplication>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QtTest/QtTest>
 
@@ -100,6 +101,79 @@ private slots:
         QVERIFY(doc.data().look == before);
 
         edit->click();
+        QCOMPARE(view.tool(), Viewport::Tool::Navigate);
+    }
+
+    void paintPatchFromTheDock()
+    {
+        Document doc;
+        celform::model::ProjectData data;
+        data.baseMesh = celform::test::icosphere(4);
+        celform::model::HighlightTrack track;
+        track.name = QStringLiteral("spot");
+        track.setKey(0, celform::algo::HighlightLayer{});
+        data.look.highlights.push_back(track);
+        doc.reset(std::move(data));
+
+        Viewport view(&doc);
+        view.setLightGizmoVisible(false);
+        view.resize(400, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QTRY_VERIFY(view.renderCount() > 0);
+        celform::model::Camera camera;
+        camera.eye = Eigen::Vector3d(0.0, 0.0, 5.5);
+        camera.target = Eigen::Vector3d::Zero();
+        camera.up = Eigen::Vector3d::UnitY();
+        camera.fovYDegrees = 30.0;
+        view.setCamera(camera);
+        view.setBrushRadius(0.15);
+
+        HighlightPanel panel(&doc);
+        panel.setViewport(&view);
+        panel.selectLayer(0);
+        auto* paint = panel.findChild<QToolButton*>(QStringLiteral("highlightPaintPatch"));
+        QVERIFY(paint && paint->isEnabled());
+        const int steps = doc.undoStack()->index();
+        paint->click();
+        // A layer on all faces gets a patch of its own first (one undo step), then painting starts.
+        QCOMPARE(view.tool(), Viewport::Tool::Patch);
+        QCOMPARE(doc.undoStack()->index(), steps + 1);
+        const QString patch = doc.data().look.highlights.front().patch;
+        QCOMPARE(patch, QStringLiteral("spot patch"));
+        QCOMPARE(view.patchTarget(), patch);
+        QVERIFY(doc.data().faceSet(patch) && doc.data().faceSet(patch)->faces.empty());
+
+        // One drag across the front: faces under the brush, all on the visible side, one step.
+        const QPoint left = view.projectToWidget(Eigen::Vector3d(-0.5, 0.0, 0.85)).toPoint();
+        const QPoint right = view.projectToWidget(Eigen::Vector3d(0.5, 0.0, 0.85)).toPoint();
+        drag(&view, left, right);
+        QCOMPARE(doc.undoStack()->index(), steps + 2);
+        const auto painted = doc.data().faceSet(patch)->faces;
+        QVERIFY2(painted.size() > 20, qPrintable(QString::number(painted.size())));
+        const auto& mesh = *doc.data().baseMesh;
+        for (const auto f : painted) {
+            const Eigen::Vector3f c = (mesh.vertices.row(mesh.faces(f, 0)) + mesh.vertices.row(mesh.faces(f, 1))
+                                          + mesh.vertices.row(mesh.faces(f, 2)))
+                                          .transpose()
+                / 3.f;
+            QVERIFY(c.z() > 0.5f && std::abs(c.y()) < 0.35f);
+        }
+        // The patch is tinted while painting.
+        const QImage shot = view.renderedImage();
+        const QColor tint = shot.pixelColor(view.projectToWidget(Eigen::Vector3d(0.0, 0.0, 1.0)).toPoint());
+        QVERIFY2(tint.red() > tint.blue() + 40, qPrintable(tint.name()));
+
+        // Ctrl+drag over the middle removes faces, as another step; undo gives the drag back.
+        const QPoint top = view.projectToWidget(Eigen::Vector3d(0.0, 0.3, 0.95)).toPoint();
+        const QPoint bottom = view.projectToWidget(Eigen::Vector3d(0.0, -0.3, 0.95)).toPoint();
+        drag(&view, top, bottom, Qt::ControlModifier);
+        QCOMPARE(doc.undoStack()->index(), steps + 3);
+        QVERIFY(doc.data().faceSet(patch)->faces.size() < painted.size());
+        doc.undoStack()->undo();
+        QCOMPARE(doc.data().faceSet(patch)->faces, painted);
+
+        paint->click();
         QCOMPARE(view.tool(), Viewport::Tool::Navigate);
     }
 };

@@ -56,6 +56,17 @@ bool guideVertexFrames(const Positions& vertices, const Faces& faces, const Posi
     const std::vector<std::int32_t>& patchFaces, const Eigen::Vector3f& guide, int iterations, Positions& du,
     Positions& dv);
 
+/// Smoothed unit vertex normals over a face patch (empty patchFaces = all faces), standing in for
+/// the paper's smooth surface: its highlights live on a smooth (u, v) coordinated patch, where
+/// (N, H) > 1 - epsilon is a clean area that the operations reshape; on a polygon model with noisy
+/// vertex normals the same threshold gives blotchy, polygonal pieces on nearly flat parts. Each
+/// vertex starts from its normal made unit, and `iterations` rounds (0: the normals as they are)
+/// average it with its neighbours along the patch's edges, with the uniform weights of
+/// guideVertexFrames, and make it unit again. Vertices outside the patch get zero rows.
+/// normals: #V by 3. Returns false on sizes that do not match or faces out of range.
+bool smoothPatchNormals(const Positions& vertices, const Faces& faces, const Positions& normals,
+    const std::vector<std::int32_t>& patchFaces, int iterations, Positions& smoothed);
+
 /// The paper's basic operations on a highlight vector H, applied in list order.
 enum class HighlightOperationType {
     Translation, ///< a = alpha, b = beta: H + alpha du + beta dv

@@ -147,12 +147,14 @@ void Document::setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QStr
                "a replacement base model needs the same vertex count and order")
                 .arg(mesh->vertexCount())
                 .arg(needed));
+    const bool dropFaceSets
+        = !m_data.faceSets.empty() && m_data.baseMesh && m_data.baseMesh->faceCount() != mesh->faceCount();
     auto* cmd = new QUndoCommand(tr("Replace Base Model"));
     new AssignCommand<MeshPtr>(
         this, {}, [](ProjectData& d) { return &d.baseMesh; }, std::move(mesh), Part::Mesh, -1, 0, cmd);
     new AssignCommand<QString>(
         this, {}, [](ProjectData& d) { return &d.baseMeshName; }, meshName, Part::Mesh, -1, 0, cmd);
-    if (!m_data.faceSets.empty() && m_data.baseMesh && m_data.baseMesh->faceCount() != mesh->faceCount()) {
+    if (dropFaceSets) {
         // Face indices mean nothing on other faces: the patches go, their layers cover all faces.
         Look look = m_data.look;
         for (auto& track : look.highlights)
