@@ -629,8 +629,8 @@ int commandHighlight(const QStringList& args)
 {
     const QString synopsis = QStringLiteral(
         "celform highlight P (--list [--json] | --add NAME [--patch FACESET|all] [--epsilon E] [--guide X,Y,Z] "
-        "[--color R,G,B] [--cut C] [--op TYPE:VALUES]... [--combine union|subtract:OTHER]... [--visible on|off] "
-        "[--frame F] [--json])");
+        "[--color R,G,B] [--cut C] [--op TYPE:VALUES]... [--combine union|subtract:OTHER]... [--smooth N] "
+        "[--visible on|off] [--frame F] [--json])");
     QCommandLineParser parser;
     parser.setApplicationDescription(Cli::tr("Adds, keys and lists stylized highlight layers."));
     parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
@@ -653,18 +653,21 @@ int commandHighlight(const QStringList& args)
         QStringLiteral("TYPE:VALUES"));
     const QCommandLineOption combine(QStringLiteral("combine"),
         Cli::tr("Unite with or subtract another layer's area (repeatable)."), QStringLiteral("MODE:OTHER"));
+    const QCommandLineOption smooth(QStringLiteral("smooth"),
+        Cli::tr("Rounds of normal smoothing over the patch for this layer (default 0: the surface's normals)."),
+        QStringLiteral("N"));
     const QCommandLineOption visible(QStringLiteral("visible"),
         Cli::tr("Draw the layer (on) or use it only in combinations (off)."), QStringLiteral("on|off"));
     const QCommandLineOption frame(
         QStringLiteral("frame"), Cli::tr("Frame of the keyframe (default 0)."), QStringLiteral("F"));
     const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print machine-readable JSON."));
-    parser.addOptions({list, add, patch, epsilon, guide, color, cut, op, combine, visible, frame, json});
+    parser.addOptions({list, add, patch, epsilon, guide, color, cut, op, combine, smooth, visible, frame, json});
     parseOrThrow(parser, args, 1, synopsis);
 
     // Every option is checked before the file is touched.
     const bool editing = parser.isSet(patch) || parser.isSet(epsilon) || parser.isSet(guide) || parser.isSet(color)
-        || parser.isSet(cut) || parser.isSet(op) || parser.isSet(combine) || parser.isSet(visible)
-        || parser.isSet(frame);
+        || parser.isSet(cut) || parser.isSet(op) || parser.isSet(combine) || parser.isSet(smooth)
+        || parser.isSet(visible) || parser.isSet(frame);
     if (parser.isSet(list) == parser.isSet(add) || (parser.isSet(list) && editing))
         throw UsageError{Cli::tr("give either --list or --add NAME with its options\nusage: %1").arg(synopsis)};
     const QString path = parser.positionalArguments().front();
@@ -720,6 +723,14 @@ int commandHighlight(const QStringList& args)
         if (newCombinations.back().second == name)
             throw UsageError{Cli::tr("--combine needs another layer than “%1” itself").arg(name)};
     }
+    std::optional<int> newSmoothing;
+    if (parser.isSet(smooth)) {
+        newSmoothing = parseInt(QStringLiteral("smooth"), parser.value(smooth));
+        if (*newSmoothing < 0 || *newSmoothing > model::kMaxHighlightSmoothing)
+            throw UsageError{Cli::tr("--smooth must lie in [0, %1], not “%2”")
+                                 .arg(model::kMaxHighlightSmoothing)
+                                 .arg(parser.value(smooth))};
+    }
     std::optional<bool> newVisible;
     if (parser.isSet(visible)) {
         const QString v = parser.value(visible);
@@ -762,6 +773,8 @@ int commandHighlight(const QStringList& args)
         track.guide = *newGuide;
     if (newVisible)
         track.visible = *newVisible;
+    if (newSmoothing)
+        track.smoothing = *newSmoothing;
     if (parser.isSet(combine))
         track.combineWith = newCombinations;
 
@@ -1124,7 +1137,7 @@ int runCommandLine(const QStringList& arguments)
             "  celform highlight P --list [--json]\n"
             "  celform highlight P --add NAME [--patch FACESET|all] [--epsilon E] [--guide X,Y,Z] [--color R,G,B] "
             "[--cut C] [--op translate:A,B|rotate:DEG|scale:DELTA|split:G1,G2|square:SIGMA,N]... "
-            "[--combine union|subtract:OTHER]... [--visible on|off] [--frame F] [--json]\n"
+            "[--combine union|subtract:OTHER]... [--smooth N] [--visible on|off] [--frame F] [--json]\n"
             "  celform patch P --list [--json]\n"
             "  celform patch P (--add NAME | --subtract NAME) [--sphere X,Y,Z,R]... [--faces A-B,C]... "
             "[--material M]... [--json]\n"

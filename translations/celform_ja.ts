@@ -506,6 +506,90 @@ usage: %1</source>
         <source>warning: %1: the keyframes %2 and %3 of “%4” have different operations; the earlier one holds between them</source>
         <translation>警告: %1: 「%4」のキーフレーム %2 と %3 で操作が異なります。この 2 つの間では前のキーフレームが保持されます</translation>
     </message>
+    <message>
+        <source>--%1 needs four numbers X,Y,Z,R, not “%2”</source>
+        <translation>--%1 には 4 つの数 X,Y,Z,R が必要です（「%2」ではなく）</translation>
+    </message>
+    <message>
+        <source>Rounds of normal smoothing over the patch for this layer (default 0: the surface&apos;s normals).</source>
+        <translation>このレイヤーのパッチ上で法線を平滑化する回数（既定 0: 面の法線のまま）。</translation>
+    </message>
+    <message>
+        <source>--smooth must lie in [0, %1], not “%2”</source>
+        <translation>--smooth は [0, %1] の範囲で指定してください（「%2」ではなく）</translation>
+    </message>
+    <message>
+        <source>--faces takes indices and ranges like 0-99,120, not “%1”</source>
+        <translation>--faces には 0-99,120 のような番号と範囲を指定します（「%1」ではなく）</translation>
+    </message>
+    <message>
+        <source>has %1 faces; face %2 does not exist</source>
+        <translation>の面は %1 個です。面 %2 はありません</translation>
+    </message>
+    <message>
+        <source>Makes, lists and removes patches: named face sets that highlight layers are limited to.</source>
+        <translation>パッチ（ハイライトレイヤーの表示範囲となる名前付きの面の集合）を作成・一覧・削除します。</translation>
+    </message>
+    <message>
+        <source>List the patches.</source>
+        <translation>パッチを一覧表示します。</translation>
+    </message>
+    <message>
+        <source>Add the selected faces to a patch (made when missing).</source>
+        <translation>選んだ面をパッチに加えます（なければ作成）。</translation>
+    </message>
+    <message>
+        <source>Take the selected faces out of a patch.</source>
+        <translation>選んだ面をパッチから外します。</translation>
+    </message>
+    <message>
+        <source>Delete a patch; its highlight layers go back to all faces.</source>
+        <translation>パッチを削除します。そのハイライトレイヤーは全面に戻ります。</translation>
+    </message>
+    <message>
+        <source>Select the faces with a corner inside a sphere (repeatable).</source>
+        <translation>頂点のひとつが球の内側にある面を選びます（繰り返し可）。</translation>
+    </message>
+    <message>
+        <source>Select faces by index (repeatable).</source>
+        <translation>番号で面を選びます（繰り返し可）。</translation>
+    </message>
+    <message>
+        <source>Select a material&apos;s faces (repeatable).</source>
+        <translation>マテリアルの面を選びます（繰り返し可）。</translation>
+    </message>
+    <message>
+        <source>give one of --list, --add NAME or --subtract NAME with a selection, or --remove NAME
+usage: %1</source>
+        <translation>--list、選択付きの --add NAME か --subtract NAME、または --remove NAME のいずれかを指定してください
+使い方: %1</translation>
+    </message>
+    <message>
+        <source>--sphere needs a positive radius, not “%1”</source>
+        <translation>--sphere には正の半径が必要です（「%1」ではなく）</translation>
+    </message>
+    <message>
+        <source>%1	%2 faces
+</source>
+        <translation>%1	%2 面
+</translation>
+    </message>
+    <message>
+        <source>has no patch named “%1”</source>
+        <translation>に「%1」という名前のパッチはありません</translation>
+    </message>
+    <message>
+        <source>has no material named “%1”</source>
+        <translation>に「%1」という名前のマテリアルはありません</translation>
+    </message>
+    <message>
+        <source>a patch needs a name</source>
+        <translation>パッチには名前が必要です</translation>
+    </message>
+    <message>
+        <source>Edit Patch “%1”</source>
+        <translation>パッチ「%1」を編集</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::MainWindow</name>
@@ -1103,6 +1187,30 @@ Recover it now?</source>
         <source>Import Deformation into “%1”</source>
         <translation>「%1」に変形をインポート</translation>
     </message>
+    <message>
+        <source>There is no base model to make a patch on.</source>
+        <translation>パッチを作るベースモデルがありません。</translation>
+    </message>
+    <message>
+        <source>A patch needs a name.</source>
+        <translation>パッチには名前が必要です。</translation>
+    </message>
+    <message>
+        <source>Patch “%1” names a face the base model does not have.</source>
+        <translation>パッチ「%1」がベースモデルにない面を指しています。</translation>
+    </message>
+    <message>
+        <source>Delete Patch “%1”</source>
+        <translation>パッチ「%1」を削除</translation>
+    </message>
+    <message>
+        <source>There is already a patch named “%1”.</source>
+        <translation>「%1」という名前のパッチはすでにあります。</translation>
+    </message>
+    <message>
+        <source>Rename Patch “%1”</source>
+        <translation>パッチ「%1」の名前を変更</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::Highlights</name>
@@ -1157,6 +1265,10 @@ Recover it now?</source>
     <message>
         <source>highlight layer “%1” combines with “%2”, which is not another layer</source>
         <translation>ハイライトレイヤー「%1」の組み合わせ先「%2」は、他のレイヤーではありません</translation>
+    </message>
+    <message>
+        <source>highlight layer “%1” has normal smoothing outside [0, %2]</source>
+        <translation>ハイライトレイヤー「%1」の法線平滑化が [0, %2] の範囲外です</translation>
     </message>
 </context>
 <context>
@@ -1542,10 +1654,6 @@ Recover it now?</source>
         <translation>テクスチャ座標のインデックスが範囲外です</translation>
     </message>
     <message>
-        <source>face set “%1” refers to a face out of range</source>
-        <translation>フェースセット「%1」が範囲外の面を参照しています</translation>
-    </message>
-    <message>
         <source>a face material index is out of range</source>
         <translation>面のマテリアルインデックスが範囲外です</translation>
     </message>
@@ -1656,6 +1764,14 @@ Recover it now?</source>
     <message>
         <source>the highlight operation “%1” has %2 values instead of %3</source>
         <translation>ハイライト操作「%1」の値の数が %3 個ではなく %2 個です</translation>
+    </message>
+    <message>
+        <source>a face set name is empty or used twice</source>
+        <translation>面の集合の名前が空か重複しています</translation>
+    </message>
+    <message>
+        <source>face set “%1” refers to a face out of range or out of order</source>
+        <translation>面の集合「%1」に範囲外または順序の乱れた面があります</translation>
     </message>
 </context>
 <context>
@@ -2050,6 +2166,114 @@ Recover it now?</source>
     <message>
         <source>Move Highlight</source>
         <translation>ハイライトを移動</translation>
+    </message>
+    <message>
+        <source>&amp;Preset</source>
+        <translation>プリセット(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Add a shaped highlight to start from, on the selected layer&apos;s patch</source>
+        <translation>選択中のレイヤーのパッチ上に、出発点となる形のハイライトを追加します</translation>
+    </message>
+    <message>
+        <source>&amp;Window</source>
+        <translation>窓(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Rotation, directional scaling and split on a nearly flat part: the car window of the paper&apos;s Figure 5</source>
+        <translation>ほぼ平らな部分での回転・方向スケーリング・分割: 論文の図 5 の車の窓</translation>
+    </message>
+    <message>
+        <source>&amp;Crescent</source>
+        <translation>三日月(&amp;C)</translation>
+    </message>
+    <message>
+        <source>A highlight minus a hidden, shifted copy of itself: the crescent of the paper&apos;s Figure 6</source>
+        <translation>ハイライトから、非表示でずらした自身の複製を引いたもの: 論文の図 6 の三日月</translation>
+    </message>
+    <message>
+        <source>Paint</source>
+        <translation>ペイント</translation>
+    </message>
+    <message>
+        <source>Paint the layer&apos;s patch on the model: drag adds faces, Ctrl+drag removes them, [ and ] change the radius. A layer on all faces gets a new patch first.</source>
+        <translation>レイヤーのパッチをモデル上に描きます: ドラッグで面を追加、Ctrl+ドラッグで除去、[ と ] で半径を変更。全面のレイヤーにはまず新しいパッチを作ります。</translation>
+    </message>
+    <message>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <source>New, rename or delete patches</source>
+        <translation>パッチの新規作成・名前変更・削除</translation>
+    </message>
+    <message>
+        <source>&amp;New Patch</source>
+        <translation>新しいパッチ(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Rename Patch…</source>
+        <translation>パッチの名前を変更(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Rename Patch</source>
+        <translation>パッチの名前を変更</translation>
+    </message>
+    <message>
+        <source>Patch name:</source>
+        <translation>パッチ名:</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Patch</source>
+        <translation>パッチを削除(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>オフ</translation>
+    </message>
+    <message>
+        <source>Rounds of normal smoothing over the patch: the highlight sees a smooth surface, as on the paper&apos;s spline patches, and coarse meshes give clean shapes. Paint thin parts (an ear) one side at a time: smoothing mixes the normals of both sides (not keyed)</source>
+        <translation>パッチ上で法線を平滑化する回数: 論文のスプラインパッチのようにハイライトが滑らかな面を見るので、粗いメッシュでもきれいな形になります。薄い部分（耳など）は片面ずつ描いてください。平滑化は両面の法線を混ぜます（キーなし）</translation>
+    </message>
+    <message>
+        <source>&amp;Smooth normals:</source>
+        <translation>法線の平滑化(&amp;S):</translation>
+    </message>
+    <message>
+        <source>Change Highlight Smoothing</source>
+        <translation>ハイライトの平滑化を変更</translation>
+    </message>
+    <message>
+        <source>The viewport draws the first %1 visible layers and, of each, %2 operations and %3 combinations; the rest shows in renders (celform render).</source>
+        <translation>ビューポートが描くのは表示中の最初の %1 レイヤーと、それぞれの %2 個の操作・%3 個の組み合わせまでです。残りはレンダー（celform render）に表示されます。</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>窓</translation>
+    </message>
+    <message>
+        <source>Add Window Highlight</source>
+        <translation>窓のハイライトを追加</translation>
+    </message>
+    <message>
+        <source>Crescent cut</source>
+        <translation>三日月の切り抜き</translation>
+    </message>
+    <message>
+        <source>Crescent</source>
+        <translation>三日月</translation>
+    </message>
+    <message>
+        <source>Add Crescent Highlight</source>
+        <translation>三日月のハイライトを追加</translation>
+    </message>
+    <message>
+        <source>%1 patch</source>
+        <translation>%1 のパッチ</translation>
+    </message>
+    <message>
+        <source>New Patch “%1”</source>
+        <translation>新しいパッチ「%1」</translation>
     </message>
 </context>
 <context>
@@ -2894,6 +3118,18 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
     <message>
         <source>&lt;p&gt;The 3D view of the model.&lt;/p&gt;&lt;p&gt;Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. F: frame the model. Home: front view.&lt;/p&gt;&lt;p&gt;Ctrl+left drag on the light gizmo (the yellow arrow or sphere): move the key light around the model.&lt;/p&gt;</source>
         <translation>&lt;p&gt;モデルの 3D ビューです。&lt;/p&gt;&lt;p&gt;Alt + 左ボタンドラッグまたは中ボタンドラッグ: 回転（オービット）。Alt + 中ボタンドラッグまたは Shift + 中ボタンドラッグ: パン。Alt + 右ボタンドラッグ、Ctrl + 中ボタンドラッグ、またはマウスホイール: ドリー。F: モデル全体を表示。Home: 正面ビュー。&lt;/p&gt;&lt;p&gt;ライトのギズモ（黄色の矢印または球）上で Ctrl + 左ボタンドラッグ: モデルの周りでキーライトを移動。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.</source>
+        <translation>パッチ「%1」を描きます: ドラッグで面を追加、Ctrl+ドラッグで除去、[ と ] で半径を変更します。</translation>
+    </message>
+    <message>
+        <source>Choose or create a patch in the Highlights dock first.</source>
+        <translation>まずハイライトドックでパッチを選ぶか作成してください。</translation>
+    </message>
+    <message>
+        <source>Paint Patch “%1”</source>
+        <translation>パッチ「%1」をペイント</translation>
     </message>
 </context>
 <context>

@@ -114,7 +114,8 @@ float cfHatchCoverage(vec3 position, vec3 normal, int tone, int toneCount, float
 // layerCoverage) and of render.cpp's highlightAt. Change both together.
 //
 // Up to 4 layers (the visible tracks resolved at the viewport's frame by renderHighlightsFor),
-// each with its own shape and up to 2 combinations whose operand shapes are stored beside it:
+// each with its own normal (cfHighlightNormal), its own shape and up to 2 combinations whose
+// operand shapes are stored beside it:
 // shape index layer * 3 + 0 is the layer's own, layer * 3 + 1 + k the k-th combination's.
 // Each shape has up to 8 operations at shape * 8 + i: type (HighlightOperationType order:
 // 0 translation, 1 rotation, 2 directional scaling, 3 split, 4 squaring) and the two floats a, b.
@@ -247,6 +248,17 @@ float cfShapeCoverage(int shape, vec3 halfway, vec3 normal, vec3 frameU, vec3 fr
     float threshold = 1.0 - cfHlEpsilon[shape];
     float phi = cfHighlightFunction(halfway, normal, frameU, frameV, shape);
     return cfEdgeCoverage(phi, fwidth(phi), threshold);
+}
+
+// render.cpp's highlightAt: a layer's normal at the fragment, its interpolated smoothed normal
+// (zero where it has none) made unit and turned to n's side (n faces the viewer); n where the
+// corners' normals cancel or are zero.
+vec3 cfHighlightNormal(vec3 layerNormal, vec3 n)
+{
+    vec3 m = cfSafeNormalized(layerNormal);
+    if (!(dot(m, m) > 0.0))
+        return n;
+    return dot(m, n) < 0.0 ? -m : m;
 }
 
 // layerCoverage: the layer's shape, its combinations (union max, subtraction min(a, 1 - b)),

@@ -4,6 +4,7 @@
 #include "test_support.h"
 
 #include "celform/algorithms/highlights.h"
+#include "celform/algorithms/render.h"
 
 #include <array>
 #include <cmath>
@@ -15,6 +16,20 @@ using Eigen::Vector3f;
 Q_DECLARE_METATYPE(celform::algo::HighlightOperation)
 
 namespace {
+
+/// Two triangles per cell of a k by k vertex grid numbered row by row.
+Faces gridFaces(int k)
+{
+    Faces faces(2 * (k - 1) * (k - 1), 3);
+    int f = 0;
+    for (int j = 0; j + 1 < k; ++j)
+        for (int i = 0; i + 1 < k; ++i) {
+            const int a = j * k + i;
+            faces.row(f++) << a, a + 1, a + k + 1;
+            faces.row(f++) << a, a + k + 1, a + k;
+        }
+    return faces;
+}
 
 enum class Scene { Sphere, Plane };
 
@@ -176,6 +191,43 @@ HighlightLayer layerOf(std::vector<HighlightOperation> ops, float epsilon = 0.05
 Mask sample(Scene scene, std::vector<HighlightOperation> ops, float epsilon = 0.05f)
 {
     return sampleLayers(scene, {layerOf(std::move(ops), epsilon)});
+}
+
+/// The plane z = 0 over [-1, 1]^2 as a k x k grid of vertices, each lifted by a deterministic
+/// pseudo-random height in [-amplitude, amplitude] (the noise of a scanned or sculpted model).
+TriMesh bumpyPlane(int k, float amplitude)
+{
+    TriMesh mesh;
+    mesh.vertices.resize(k * k, 3);
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+            const double hash = std::sin(double(i) * 12.9898 + double(j) * 78.233) * 43758.5453;
+            const float noise = float(2.0 * (hash - std::floor(hash)) - 1.0);
+            mesh.vertices.row(j * k + i) << -1.0f + 2.0f * float(i) / float(k - 1),
+                -1.0f + 2.0f * float(j) / float(k - 1), amplitude * noise;
+        }
+    mesh.faces = gridFaces(k);
+    return mesh;
+}
+
+/// The highlights pass of renderFrame as a mask (n x n pixels).
+Mask highlightsPassMask(const RenderPasses& passes, int n)
+{
+    Mask m;
+    m.n = n;
+    m.values = passes.highlights;
+    return m;
+}
+
+/// Edges between pixels in and out of the area (4-neighbourhood; the image border counts as out).
+int perimeter(const Mask& m)
+{
+    int edges = 0;
+    for (int j = 0; j < m.n; ++j)
+        for (int i = 0; i < m.n; ++i)
+            if (m.in(i, j))
+                edges += int(!m.in(i + 1, j)) + int(!m.in(i - 1, j)) + int(!m.in(i, j + 1)) + int(!m.in(i, j - 1));
+    return edges;
 }
 
 QByteArray describe(const Eigen::Vector2d& v)
@@ -529,14 +581,7 @@ private slots:
                 mesh.vertices.row(j * k + i) << float(i), float(j), 0.0f;
                 mesh.uvs.row(j * k + i) << -0.1f * float(i), 0.1f * float(j);
             }
-        mesh.faces.resize(2 * (k - 1) * (k - 1), 3);
-        int f = 0;
-        for (int j = 0; j + 1 < k; ++j)
-            for (int i = 0; i + 1 < k; ++i) {
-                const int a = j * k + i;
-                mesh.faces.row(f++) << a, a + 1, a + k + 1;
-                mesh.faces.row(f++) << a, a + k + 1, a + k;
-            }
+        mesh.faces = gridFaces(k);
         mesh.uvFaces = mesh.faces;
         Positions du, dv;
         QVERIFY(faceTangentFrames(mesh, du, dv));
@@ -568,6 +613,118 @@ private slots:
             }
         }
         QVERIFY(!guideVertexFrames(mesh.vertices, mesh.faces, normals, patch, Vector3f::Zero(), 3, du, dv));
+    }
+
+    void smoothPatchNormalsByHand()
+    {
+        // A tent of two faces on the ridge 0-1 (the patch) and a third face outside it; positions
+        // only give the vertex count, the normals are chosen (n2 not unit on purpose).
+        Positions vertices = Positions::Zero(5, 3);
+        Faces faces(3, 3);
+        faces << 0, 1, 2, 1, 0, 3, 1, 3, 4;
+        const Vector3f n0(0.6f, 0.0f, 0.8f), n1 = Vector3f::UnitZ(), n3 = Vector3f(1.0f, 0.0f, 1.0f).normalized();
+        const Vector3f n2 = Vector3f(-1.0f, 0.0f, 1.0f).normalized(), n4 = Vector3f::UnitY();
+        Positions normals(5, 3);
+        normals << n0.transpose(), n1.transpose(), 2.0f * n2.transpose(), n3.transpose(), n4.transpose();
+        const std::vector<std::int32_t> patch{0, 1};
+        auto near = [](const Positions& p, int row, const Vector3f& expected) {
+            return (p.row(row).transpose() - expected).norm() < 1e-6f;
+        };
+
+        // No rounds: the unit normals in the patch, zero outside.
+        Positions smoothed;
+        QVERIFY(smoothPatchNormals(vertices, faces, normals, patch, 0, smoothed));
+        QCOMPARE(smoothed.rows(), Eigen::Index(5));
+        QVERIFY(near(smoothed, 0, n0) && near(smoothed, 1, n1) && near(smoothed, 2, n2) && near(smoothed, 3, n3));
+        QCOMPARE(smoothed.row(4).norm(), 0.0f);
+
+        // One round: each vertex with its ring along the patch's edges, uniform weights, made
+        // unit. The ridge 0-1 lies in both faces, so 0 and 1 see each other twice; 2 and 3 see
+        // the ridge's ends once; the edge 1-3 of the outside face brings nothing from vertex 4.
+        //   0: n0 + n1 + n2 + n1 + n3 = (0.6, 0, 2.8 + sqrt 2)
+        //   1: n1 + n0 + n2 + n0 + n3 = (1.2, 0, 2.6 + sqrt 2)
+        //   2: n2 + n1 + n0 = (0.6 - 1 / sqrt 2, 0, 1.8 + 1 / sqrt 2)
+        //   3: n3 + n0 + n1 = (0.6 + 1 / sqrt 2, 0, 1.8 + 1 / sqrt 2)
+        const float r = std::sqrt(0.5f);
+        QVERIFY(smoothPatchNormals(vertices, faces, normals, patch, 1, smoothed));
+        QVERIFY(near(smoothed, 0, Vector3f(0.6f, 0.0f, 2.8f + 2.0f * r).normalized()));
+        QVERIFY(near(smoothed, 1, Vector3f(1.2f, 0.0f, 2.6f + 2.0f * r).normalized()));
+        QVERIFY(near(smoothed, 2, Vector3f(0.6f - r, 0.0f, 1.8f + r).normalized()));
+        QVERIFY(near(smoothed, 3, Vector3f(0.6f + r, 0.0f, 1.8f + r).normalized()));
+        QCOMPARE(smoothed.row(4).norm(), 0.0f);
+        // Unit rows, and more rounds pull the patch's normals together.
+        for (int row = 0; row < 4; ++row)
+            QVERIFY(std::abs(smoothed.row(row).norm() - 1.0f) < 1e-6f);
+        Positions more;
+        QVERIFY(smoothPatchNormals(vertices, faces, normals, patch, 20, more));
+        QVERIFY(more.row(2).dot(more.row(3)) > smoothed.row(2).dot(smoothed.row(3)));
+        QVERIFY(more.row(2).dot(more.row(3)) > 0.999f);
+
+        // An empty patch is every face: vertex 4 takes part and joins vertex 1's ring.
+        QVERIFY(smoothPatchNormals(vertices, faces, normals, {}, 1, smoothed));
+        QVERIFY(smoothed.row(4).norm() > 0.99f);
+        QVERIFY(smoothed.row(1).y() > 0.0f);
+
+        // Sizes that do not match, faces or vertices out of range.
+        QVERIFY(!smoothPatchNormals(vertices, faces, normals.topRows(4), patch, 1, smoothed));
+        QVERIFY(!smoothPatchNormals(vertices, faces, normals, {0, 3}, 1, smoothed));
+        QVERIFY(!smoothPatchNormals(vertices, faces, normals, {-1}, 1, smoothed));
+        Faces outOfRange = faces;
+        outOfRange(1, 2) = 5;
+        QVERIFY(!smoothPatchNormals(vertices, outOfRange, normals, {}, 1, smoothed));
+    }
+
+    void smoothedNormalsGiveOneCleanArea()
+    {
+        // A nearly flat, noisy surface (the elephant's ear in small) under a point light beside
+        // the eye: with the surface's vertex normals (N, H) > 1 - epsilon breaks into blotches;
+        // the smoothed normals stand in for the paper's smooth patch and give one round area.
+        const TriMesh mesh = bumpyPlane(41, 0.006f);
+        const Positions normals = vertexNormals(mesh.vertices, mesh.faces);
+        RasterCamera camera;
+        camera.eye = Eigen::Vector3d(0, 0, 3);
+        camera.fovYDegrees = 40.0;
+        const int size = 200;
+        camera.width = camera.height = size;
+        RenderLook look;
+        look.lines = false;
+        look.pointLight = true;
+        look.light = Eigen::Vector3f(0.0f, 0.0f, 3.0f);
+        RenderHighlight h;
+        h.layer.shape.epsilon = 0.02f;
+        QVERIFY(guideVertexFrames(mesh.vertices, mesh.faces, normals, {}, Vector3f::UnitX(), 4, h.du, h.dv));
+        RenderCache cache;
+        look.highlights = {h};
+        RenderPasses rough;
+        renderFrame(mesh.vertices, mesh, camera, look, cache, rough);
+
+        QVERIFY(smoothPatchNormals(mesh.vertices, mesh.faces, normals, {}, 30, h.normals));
+        QVERIFY(guideVertexFrames(mesh.vertices, mesh.faces, h.normals, {}, Vector3f::UnitX(), 4, h.du, h.dv));
+        look.highlights = {h};
+        RenderPasses smooth;
+        renderFrame(mesh.vertices, mesh, camera, look, cache, smooth);
+        QVERIFY(rough.tone == smooth.tone); // the shading keeps the surface's normals
+
+        const Mask a = highlightsPassMask(rough, size);
+        const Mask b = highlightsPassMask(smooth, size);
+        // Compactness 4 pi area / perimeter^2 (pi^2 / 16 for a digital disc measured this way).
+        auto compactness = [](const Mask& m) {
+            const double p = double(perimeter(m));
+            return p > 0.0 ? 4.0 * M_PI * double(m.area()) / (p * p) : 0.0;
+        };
+        const QByteArray summary = "rough: " + QByteArray::number(a.components()) + " pieces, area "
+            + QByteArray::number(a.area()) + ", compactness " + QByteArray::number(compactness(a))
+            + "; smoothed: " + QByteArray::number(b.components()) + " pieces, area " + QByteArray::number(b.area())
+            + ", compactness " + QByteArray::number(compactness(b));
+        qInfo("%s", summary.constData());
+        QVERIFY2(a.components() > 1, summary.constData());
+        QVERIFY2(b.components() == 1, summary.constData());
+        QVERIFY2(compactness(b) > 2.0 * compactness(a), summary.constData());
+        QVERIFY2(compactness(b) > 0.5, summary.constData());
+        // Round about the point under the light and eye (the image centre; mask units of half
+        // the image).
+        QVERIFY2(b.centroid().norm() < 0.05, describe(b.centroid()).constData());
+        QVERIFY2(b.area() > 200, summary.constData());
     }
 };
 

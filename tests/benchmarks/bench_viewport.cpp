@@ -26,14 +26,15 @@ struct Scene {
     bool ok = false;
 };
 
+bool g_sceneBuilt = false;
+
 /// The armadillo with four keys around it, each moving a tenth of the vertices.
 Scene& scene()
 {
     static Scene scene;
-    static bool built = false;
-    if (built)
+    if (g_sceneBuilt)
         return scene;
-    built = true;
+    g_sceneBuilt = true;
     {
         const QString path
             = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/cgal_armadillo.off"));
@@ -116,5 +117,9 @@ BENCHMARK(BM_OrbitArmadilloPreview)
 
 int main(int argc, char** argv)
 {
-    return celform::bench::runViewportBenchmarks(argc, argv);
+    // The viewport's GL context must go before the QApplication.
+    return celform::bench::runViewportBenchmarks(argc, argv, [] {
+        if (g_sceneBuilt)
+            scene().viewport.reset();
+    });
 }

@@ -9,8 +9,13 @@
 
 #include <QBuffer>
 #include <QCryptographicHash>
+#include <QJsonArray>
+#include <QJsonDocument>
 #include <QTemporaryDir>
 #include <QtEndian>
+
+#include <cstring>
+#include <functional>
 
 using namespace celform;
 using namespace celform::model;
@@ -103,6 +108,7 @@ ProjectData richProject()
     shine.name = QStringLiteral("shine ✦");
     shine.patch = QStringLiteral("forehead");
     shine.guide = Eigen::Vector3f(0.f, 0.3f, -1.f);
+    shine.smoothing = 12;
     shine.combineWith = {{algo::HighlightBoolean::Subtraction, QStringLiteral("cutter")},
         {algo::HighlightBoolean::Union, QStringLiteral("cutter")}};
     algo::HighlightLayer first;
@@ -133,6 +139,54 @@ void writeAll(const QString& path, const QByteArray& bytes)
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
     QCOMPARE(f.write(bytes), bytes.size());
+}
+
+/// zlib's CRC-32 (reflected polynomial 0xEDB88320), bit by bit.
+quint32 crc32(const QByteArray& bytes)
+{
+    quint32 crc = 0xffffffffu;
+    for (const char c : bytes) {
+        crc ^= quint32(quint8(c));
+        for (int k = 0; k < 8; ++k)
+            crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+/// Rewrites a project file's JSON manifest in place, with a valid trailer (docs/file-format.md):
+/// what a file written by another version, or edited by hand, would hold.
+void editManifest(const QString& path, const std::function<void(QJsonObject&)>& edit)
+{
+    QByteArray bytes = readAll(path);
+    QVERIFY(bytes.size() > 48);
+    const char* trailer = bytes.constData() + bytes.size() - 32;
+    const auto offset = qsizetype(qFromLittleEndian<quint64>(trailer));
+    const auto size = qsizetype(qFromLittleEndian<quint64>(trailer + 8));
+    QJsonObject manifest = QJsonDocument::fromJson(bytes.mid(offset, size)).object();
+    QVERIFY(!manifest.isEmpty());
+    edit(manifest);
+    const QByteArray json = QJsonDocument(manifest).toJson(QJsonDocument::Indented);
+    QByteArray end(32, '\0');
+    qToLittleEndian<quint64>(quint64(offset), end.data());
+    qToLittleEndian<quint64>(quint64(json.size()), end.data() + 8);
+    qToLittleEndian<quint32>(crc32(json), end.data() + 16);
+    std::memcpy(end.data() + 24, trailer + 24, 8);
+    writeAll(path, bytes.left(offset) + json + end);
+}
+
+/// Sets (or with an undefined value removes) an entry of the last highlight track in the manifest.
+void setLastTrackEntry(QJsonObject& manifest, const QString& name, const QJsonValue& value)
+{
+    QJsonObject look = manifest.value("look").toObject();
+    QJsonArray tracks = look.value("highlights").toArray();
+    QJsonObject track = tracks.last().toObject();
+    if (value.isUndefined())
+        track.remove(name);
+    else
+        track.insert(name, value);
+    tracks.replace(tracks.size() - 1, track);
+    look.insert("highlights", tracks);
+    manifest.insert("look", look);
 }
 
 } // namespace
@@ -166,6 +220,52 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
         data = richProject();
         data.look.highlights.back().combineWith = {{algo::HighlightBoolean::Union, QStringLiteral("ghost")}};
+        saveProject(data, path);
+        QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
+    }
+
+    void normalSmoothingIsStoredAndChecked()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("smooth.celform"));
+        const ProjectData original = richProject();
+        QCOMPARE(highlightTrackJson(original.look.highlights.back()).value("normal_smoothing").toInt(-1), 12);
+        saveProject(original, path);
+        QCOMPARE(loadProject(path).look.highlights.back().smoothing, 12);
+        QCOMPARE(loadProject(path).look.highlights.front().smoothing, 0);
+
+        // The validation the editor and the command line share.
+        std::vector<HighlightTrack> tracks = original.look.highlights;
+        const std::vector<QString> sets = original.faceSetNames();
+        QVERIFY(highlightTracksProblem(tracks, sets).isEmpty());
+        tracks.back().smoothing = kMaxHighlightSmoothing;
+        QVERIFY(highlightTracksProblem(tracks, sets).isEmpty());
+        for (const int bad : {-1, kMaxHighlightSmoothing + 1}) {
+            tracks.back().smoothing = bad;
+            QVERIFY2(highlightTracksProblem(tracks, sets).contains(QStringLiteral("smoothing")),
+                qPrintable(highlightTracksProblem(tracks, sets)));
+        }
+
+        // Files from before the entry read as no smoothing.
+        editManifest(path,
+            [](QJsonObject& m) { setLastTrackEntry(m, QStringLiteral("normal_smoothing"), QJsonValue::Undefined); });
+        QCOMPARE(loadProject(path).look.highlights.back().smoothing, 0);
+        editManifest(path, [](QJsonObject& m) { setLastTrackEntry(m, QStringLiteral("normal_smoothing"), 1000); });
+        QCOMPARE(loadProject(path).look.highlights.back().smoothing, 1000);
+
+        // Out of range, fractional or not a number: damaged.
+        for (const QJsonValue& bad : {QJsonValue(-1), QJsonValue(1001), QJsonValue(2.5), QJsonValue("3")}) {
+            editManifest(path, [&](QJsonObject& m) { setLastTrackEntry(m, QStringLiteral("normal_smoothing"), bad); });
+            try {
+                loadProject(path);
+                QFAIL("a bad normal smoothing was accepted");
+            } catch (const IoError& e) {
+                QVERIFY2(e.message().contains(QStringLiteral("damaged")), qPrintable(e.message()));
+            }
+        }
+        // A track saved with a bad value is refused on load too.
+        ProjectData data = richProject();
+        data.look.highlights.back().smoothing = -3;
         saveProject(data, path);
         QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
     }

@@ -109,6 +109,7 @@ class TestLookShading : public QObject {
 private:
     std::unique_ptr<Document> m_doc;
     std::unique_ptr<Viewport> m_view;
+    std::shared_ptr<const TriMesh> m_sphere; ///< the model every test starts from
     Camera m_camera;
 
     QImage frame()
@@ -188,9 +189,9 @@ private slots:
         m_view->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
         QTRY_VERIFY(m_view->renderCount() > 0);
-        const auto sphere = celform::test::icosphere(4);
-        QCOMPARE(sphere->vertexCount(), Eigen::Index(2562));
-        useMesh(sphere, sphereCamera());
+        m_sphere = celform::test::icosphere(4);
+        QCOMPARE(m_sphere->vertexCount(), Eigen::Index(2562));
+        useMesh(m_sphere, sphereCamera());
         QCOMPARE(m_view->renderedImage().size(), QSize(kSize, kSize));
     }
 
@@ -202,8 +203,8 @@ private slots:
 
     void init()
     {
-        if (m_doc->data().baseMesh->vertexCount() != 2562)
-            useMesh(celform::test::icosphere(4), sphereCamera());
+        if (m_doc->data().baseMesh != m_sphere)
+            useMesh(m_sphere, sphereCamera());
         m_view->setShadingEnabled(true);
         m_view->setLightGizmoVisible(false);
         setLook(baseLook());
@@ -438,15 +439,20 @@ private slots:
     void highlightsMatchTheRenderer_data()
     {
         QTest::addColumn<bool>("combined");
-        QTest::newRow("one layer") << false;
-        QTest::newRow("subtraction and off-specular cut") << true;
+        QTest::addColumn<int>("smoothing");
+        QTest::newRow("one layer") << false << 0;
+        QTest::newRow("subtraction and off-specular cut") << true << 0;
+        QTest::newRow("smoothed normals on a bumpy sphere") << false << 10;
     }
 
     void highlightsMatchTheRenderer()
     {
         QFETCH(bool, combined);
+        QFETCH(int, smoothing);
         // One layer, light and eye on the same axis: the area sits around the sphere's centre
-        // and the translation moves it along du (the guide, +Y) by frame.
+        // and the translation moves it along du (the guide, +Y) by frame. With smoothing, the
+        // sphere's vertices are moved in and out a little (noisy normals, as on a scanned model)
+        // and the layer is evaluated with smoothed normals: both paths must use those.
         using celform::algo::HighlightOperation;
         const Eigen::Vector3f yellow(1.0f, 0.85f, 0.1f);
         celform::model::HighlightTrack track;
@@ -460,7 +466,17 @@ private slots:
             layer.offSpecularCut = 0.97f;
         layer.shape.operations[0].a = -0.3f;
         track.keys.push_back({10.0, layer});
+        track.smoothing = smoothing;
         ProjectData data = m_doc->data();
+        if (smoothing > 0) {
+            auto bumpy = std::make_shared<TriMesh>(*m_sphere);
+            for (Eigen::Index v = 0; v < bumpy->vertexCount(); ++v) {
+                const double hash = std::sin(double(v) * 12.9898) * 43758.5453;
+                const float noise = float(2.0 * (hash - std::floor(hash)) - 1.0);
+                bumpy->vertices.row(v) *= 1.f + 0.012f * noise;
+            }
+            data.baseMesh = std::move(bumpy);
+        }
         data.shadingOffsets.clear();
         data.look = baseLook();
         data.look.light.vector = Eigen::Vector3d(0.0, 0.0, 1.0);
@@ -489,7 +505,9 @@ private slots:
             const QImage gpu = frame();
             celform::algo::RenderPasses passes;
             const QImage cpu = cpuImage(&passes, frameNumber);
-            const QString tag = combined ? QStringLiteral("combined_") : QString();
+            const QString tag = combined ? QStringLiteral("combined_")
+                : smoothing > 0          ? QStringLiteral("smoothed_")
+                                         : QString();
             gpu.save(QStringLiteral("/tmp/look_highlight_%1f%2_viewport.png").arg(tag).arg(frameNumber));
             cpu.save(QStringLiteral("/tmp/look_highlight_%1f%2_cpu.png").arg(tag).arg(frameNumber));
             long gpuBright = 0, cpuBright = 0, bothBright = 0, compared = 0;

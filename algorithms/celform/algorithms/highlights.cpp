@@ -215,66 +215,122 @@ bool vertexTangentFramesFromUvs(const TriMesh& mesh, const Positions& normals, P
     return true;
 }
 
-bool guideVertexFrames(const Positions& vertices, const Faces& faces, const Positions& normals,
-    const std::vector<std::int32_t>& patchFaces, const Vector3f& guide, int iterations, Positions& du, Positions& dv)
+namespace {
+
+/// A face patch as a graph: the vertices of its faces and their neighbours along its edges.
+struct PatchGraph {
+    std::vector<std::vector<std::int32_t>> neighbours; ///< per vertex, empty outside the patch
+    std::vector<char> inPatch; ///< per vertex
+};
+
+/// The graph of patchFaces (all faces when empty); false for a face or vertex out of range.
+bool buildPatchGraph(
+    const Faces& faces, Eigen::Index vertexCount, const std::vector<std::int32_t>& patchFaces, PatchGraph& graph)
 {
-    const Eigen::Index nv = vertices.rows();
-    if (normals.rows() != nv || !(guide.squaredNorm() > kTiny))
-        return false;
     std::vector<std::int32_t> patch = patchFaces;
     if (patch.empty()) {
         patch.resize(static_cast<size_t>(faces.rows()));
         for (size_t f = 0; f < patch.size(); ++f)
             patch[f] = static_cast<std::int32_t>(f);
     }
-    // Neighbours along the patch's edges (each edge seen from both faces: duplicates only add
-    // weight to interior edges, which is harmless for a smoothing step).
-    std::vector<std::vector<std::int32_t>> neighbours(static_cast<size_t>(nv));
-    std::vector<char> inPatch(static_cast<size_t>(nv), 0);
+    // Each edge seen from both faces: duplicates only add weight to interior edges, which is
+    // harmless for a smoothing step.
+    graph.neighbours.assign(static_cast<size_t>(vertexCount), {});
+    graph.inPatch.assign(static_cast<size_t>(vertexCount), 0);
     for (const std::int32_t f : patch) {
         if (f < 0 || f >= faces.rows())
             return false;
         for (int c = 0; c < 3; ++c) {
             const std::int32_t a = faces(f, c);
             const std::int32_t b = faces(f, (c + 1) % 3);
-            if (a < 0 || a >= nv || b < 0 || b >= nv)
+            if (a < 0 || a >= vertexCount || b < 0 || b >= vertexCount)
                 return false;
-            inPatch[static_cast<size_t>(a)] = 1;
-            neighbours[static_cast<size_t>(a)].push_back(b);
-            neighbours[static_cast<size_t>(b)].push_back(a);
+            graph.inPatch[static_cast<size_t>(a)] = 1;
+            graph.neighbours[static_cast<size_t>(a)].push_back(b);
+            graph.neighbours[static_cast<size_t>(b)].push_back(a);
         }
     }
+    return true;
+}
+
+/// Uniform mean of row i of d and its neighbours' rows.
+Vector3f ringMean(const Positions& d, Eigen::Index i, const std::vector<std::int32_t>& ring)
+{
+    Vector3f sum = d.row(i).transpose();
+    for (const std::int32_t j : ring)
+        sum += d.row(j).transpose();
+    return sum / static_cast<float>(ring.size() + 1);
+}
+
+/// `iterations` rounds of moving each patch vertex's row to the mean of its ring (itself and its
+/// patch neighbours); settle(i, mean) adjusts the mean in place and returns false to keep the
+/// old row.
+template <typename Settle> void smoothOverPatch(Positions& d, const PatchGraph& graph, int iterations, Settle settle)
+{
+    for (int it = 0; it < iterations; ++it) {
+        Positions next = d;
+        for (Eigen::Index i = 0; i < d.rows(); ++i) {
+            const auto& ring = graph.neighbours[static_cast<size_t>(i)];
+            if (ring.empty())
+                continue;
+            Vector3f mean = ringMean(d, i, ring);
+            if (settle(i, mean))
+                next.row(i) = mean.transpose();
+        }
+        d.swap(next);
+    }
+}
+
+} // namespace
+
+bool guideVertexFrames(const Positions& vertices, const Faces& faces, const Positions& normals,
+    const std::vector<std::int32_t>& patchFaces, const Vector3f& guide, int iterations, Positions& du, Positions& dv)
+{
+    const Eigen::Index nv = vertices.rows();
+    PatchGraph graph;
+    if (normals.rows() != nv || !(guide.squaredNorm() > kTiny) || !buildPatchGraph(faces, nv, patchFaces, graph))
+        return false;
     const Vector3f g = guide.normalized();
     // Unnormalised projections: their length (sin of the angle to the normal) is the weight.
     Positions d = Positions::Zero(nv, 3);
     for (Eigen::Index i = 0; i < nv; ++i)
-        if (inPatch[static_cast<size_t>(i)]) {
+        if (graph.inPatch[static_cast<size_t>(i)]) {
             const Vector3f n = normals.row(i).transpose();
             d.row(i) = (g - g.dot(n) * n).transpose();
         }
-    for (int it = 0; it < iterations; ++it) {
-        Positions next = d;
-        for (Eigen::Index i = 0; i < nv; ++i) {
-            const auto& ring = neighbours[static_cast<size_t>(i)];
-            if (ring.empty())
-                continue;
-            Vector3f sum = d.row(i).transpose();
-            for (const std::int32_t j : ring)
-                sum += d.row(j).transpose();
-            sum /= static_cast<float>(ring.size() + 1);
-            const Vector3f n = normals.row(i).transpose();
-            next.row(i) = (sum - sum.dot(n) * n).transpose();
-        }
-        d.swap(next);
-    }
+    smoothOverPatch(d, graph, iterations, [&](Eigen::Index i, Vector3f& mean) {
+        const Vector3f n = normals.row(i).transpose();
+        mean -= mean.dot(n) * n;
+        return true;
+    });
     du = Positions::Zero(nv, 3);
     dv = Positions::Zero(nv, 3);
     for (Eigen::Index i = 0; i < nv; ++i)
-        if (inPatch[static_cast<size_t>(i)]) {
+        if (graph.inPatch[static_cast<size_t>(i)]) {
             const HighlightFrame frame = guideTangentFrame(normals.row(i).transpose(), d.row(i).transpose());
             du.row(i) = frame.du.transpose();
             dv.row(i) = frame.dv.transpose();
         }
+    return true;
+}
+
+bool smoothPatchNormals(const Positions& vertices, const Faces& faces, const Positions& normals,
+    const std::vector<std::int32_t>& patchFaces, int iterations, Positions& smoothed)
+{
+    const Eigen::Index nv = vertices.rows();
+    PatchGraph graph;
+    if (normals.rows() != nv || !buildPatchGraph(faces, nv, patchFaces, graph))
+        return false;
+    Positions d = Positions::Zero(nv, 3);
+    for (Eigen::Index i = 0; i < nv; ++i)
+        if (graph.inPatch[static_cast<size_t>(i)])
+            d.row(i) = safeNormalized(normals.row(i).transpose()).transpose();
+    smoothOverPatch(d, graph, iterations, [](Eigen::Index, Vector3f& mean) {
+        // Where the neighbourhood's normals cancel (a fold), the vertex keeps its own.
+        mean = safeNormalized(mean);
+        return mean.squaredNorm() > 0.0f;
+    });
+    smoothed.swap(d);
     return true;
 }
 

@@ -73,21 +73,32 @@ HighlightSample highlightAt(const RenderLook& look, const GBuffer& g, const Face
     }
     HighlightSurfacePoint point;
     point.position = g.position[i];
-    point.normal = n;
     // Later layers over earlier ones, as evaluateHighlights composites them ("over",
-    // premultiplied), each layer with its own patch and frames.
+    // premultiplied), each layer with its own patch, frames and normals.
     float coverage = 0.f;
     Color premultiplied = Color::Zero();
     for (const RenderHighlight& h : look.highlights) {
         if (!h.faceMask.empty() && (std::size_t(f) >= h.faceMask.size() || !h.faceMask[std::size_t(f)]))
             continue;
         const Eigen::Index last = std::max({a, b, c});
+        // The layer's smoothed normal, on the viewer's side as n is; n itself where the corners'
+        // normals cancel or the layer has none.
+        point.normal = n;
+        if (h.normals.rows() > last) {
+            const Eigen::Vector3f s
+                = bary.x() * h.normals.row(a) + bary.y() * h.normals.row(b) + bary.z() * h.normals.row(c);
+            const float s2 = s.squaredNorm();
+            if (s2 > 1e-12f) {
+                const Eigen::Vector3f m = s / std::sqrt(s2);
+                point.normal = m.dot(n) < 0.f ? Eigen::Vector3f(-m) : m;
+            }
+        }
         if (h.du.rows() > last && h.dv.rows() > last) {
             const Eigen::Vector3f du = bary.x() * h.du.row(a) + bary.y() * h.du.row(b) + bary.z() * h.du.row(c);
             const Eigen::Vector3f dv = bary.x() * h.dv.row(a) + bary.y() * h.dv.row(b) + bary.z() * h.dv.row(c);
-            point.frame = makeTangentFrame(n, du, dv);
+            point.frame = makeTangentFrame(point.normal, du, dv);
         } else {
-            point.frame = makeTangentFrame(n, Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY());
+            point.frame = makeTangentFrame(point.normal, Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY());
         }
         const float layerCoverageHere = layerCoverage(point, light, eye, h.layer, &footprint);
         premultiplied = premultiplied * (1.f - layerCoverageHere) + h.layer.color * layerCoverageHere;

@@ -17,13 +17,15 @@ namespace celform::algo {
 enum class Style { Lambert, Toon, Gooch, Comic };
 
 /// One stylized highlight layer resolved for a frame by the caller (model::renderShape): the
-/// layer with its combinations' shapes, where it may appear, and the tangent frames its
-/// operations act along.
+/// layer with its combinations' shapes, where it may appear, the tangent frames its operations
+/// act along, and optionally the smoothed normals it is evaluated with (smoothPatchNormals).
 struct RenderHighlight {
     HighlightLayer layer;
     std::vector<char> faceMask; ///< per face, non-zero where the layer may appear; empty: all faces
     Positions du; ///< #V by 3 per-vertex tangent frames (zero rows outside the patch)
     Positions dv; ///< #V by 3
+    /// #V by 3 smoothed unit normals of the layer, zero rows outside its patch; empty: the surface's
+    Positions normals;
 };
 
 /// Everything about the look the renderer needs, independent of the document.

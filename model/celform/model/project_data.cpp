@@ -267,6 +267,10 @@ QString highlightTracksProblem(const std::vector<HighlightTrack>& tracks, const 
             return Highlights::tr("highlight layer “%1” uses the unknown face set “%2”").arg(t.name, t.patch);
         if (!t.guide.allFinite() || t.guide.norm() == 0.f)
             return Highlights::tr("highlight layer “%1” has a zero guide direction").arg(t.name);
+        if (t.smoothing < 0 || t.smoothing > kMaxHighlightSmoothing)
+            return Highlights::tr("highlight layer “%1” has normal smoothing outside [0, %2]")
+                .arg(t.name)
+                .arg(kMaxHighlightSmoothing);
         if (t.keys.empty())
             return Highlights::tr("highlight layer “%1” has no keyframe").arg(t.name);
         for (std::size_t i = 0; i < t.keys.size(); ++i) {

@@ -127,6 +127,9 @@ inline algo::GoochParams autoGooch()
     return g;
 }
 
+/// The most rounds of normal smoothing a highlight track may ask for.
+constexpr int kMaxHighlightSmoothing = 1000;
+
 /// One stylized highlight layer over time (Anjyo & Hiramitsu 2003, "Making highlight animation").
 /// The keys' layers hold colour, shape and off-specular cut; their names and combinations are
 /// unused: the track's name identifies it, and combineWith names other tracks whose shape at the
@@ -137,6 +140,9 @@ struct HighlightTrack {
     QString patch; ///< name of a face set of the base model; empty = all faces
     Eigen::Vector3f guide{0.0f, 1.0f, 0.0f}; ///< stroke direction for tangent frames without UVs
     bool visible = true; ///< false: drawn only as an operand of other tracks' combinations
+    /// Rounds of normal smoothing over the patch (algo::smoothPatchNormals), in
+    /// [0, kMaxHighlightSmoothing]; 0 = the surface's normals. Not keyed.
+    int smoothing = 0;
     std::vector<std::pair<algo::HighlightBoolean, QString>> combineWith; ///< left to right
     std::vector<algo::HighlightKey> keys; ///< at least one, frames strictly increasing
 
@@ -147,7 +153,7 @@ struct HighlightTrack {
     bool operator==(const HighlightTrack& o) const
     {
         return name == o.name && patch == o.patch && guide == o.guide && visible == o.visible
-            && combineWith == o.combineWith && keys.size() == o.keys.size()
+            && smoothing == o.smoothing && combineWith == o.combineWith && keys.size() == o.keys.size()
             && std::equal(
                 keys.begin(), keys.end(), o.keys.begin(), [](const algo::HighlightKey& a, const algo::HighlightKey& b) {
                     return a.frame == b.frame && a.layer == b.layer;
@@ -162,8 +168,8 @@ struct HighlightTrack {
 
 /// The first problem of a look's highlight tracks, empty when valid: names unique and not empty,
 /// at least one key per track with strictly increasing frames, valid keys, a non-zero guide,
-/// combinations naming another existing track. faceSetNames: the base model's face sets
-/// (a patch must name one of them).
+/// smoothing in [0, kMaxHighlightSmoothing], combinations naming another existing track.
+/// faceSetNames: the base model's face sets (a patch must name one of them).
 [[nodiscard]] QString highlightTracksProblem(
     const std::vector<HighlightTrack>& tracks, const std::vector<QString>& faceSetNames);
 

@@ -469,6 +469,13 @@ std::vector<HighlightTrack> readHighlights(const Reader& r, const QJsonArray& ar
         t.patch = r.string(o, "patch");
         t.guide = r.vector3(o, "guide").cast<float>();
         t.visible = r.boolean(o, "visible");
+        // Optional: files from before normal smoothing have none.
+        if (o.contains(QLatin1String("normal_smoothing"))) {
+            const qint64 rounds = r.count(o, "normal_smoothing");
+            if (rounds > kMaxHighlightSmoothing)
+                r.corrupt(ProjectFile::tr("the count “%1” is out of range").arg(QLatin1String("normal_smoothing")));
+            t.smoothing = int(rounds);
+        }
         for (const QJsonValue& cv : r.array(o, "combine")) {
             const QJsonObject c = cv.toObject();
             const QString mode = r.string(c, "mode");
@@ -727,7 +734,7 @@ QJsonObject highlightTrackJson(const HighlightTrack& t)
                 {"off_specular_cut", double(k.layer.offSpecularCut)}, {"operations", operations}});
     }
     return {{"name", t.name}, {"patch", t.patch}, {"guide", vec3f(t.guide)}, {"visible", t.visible},
-        {"combine", combine}, {"keys", keys}};
+        {"normal_smoothing", t.smoothing}, {"combine", combine}, {"keys", keys}};
 }
 
 void saveProject(const ProjectData& data, const QString& path, bool keepBackup)

@@ -184,11 +184,17 @@ std::vector<algo::RenderHighlight> renderHighlightsFor(
             for (const auto f : patchFaces)
                 h.faceMask[std::size_t(f)] = 1;
         }
+        // Smoothed normals stand in for the paper's smooth patch; the guide's frames follow them
+        // (UV frames stay: every pixel orthonormalises its frame against its normal anyway).
+        if (track.smoothing > 0
+            && !algo::smoothPatchNormals(shape, mesh.faces, normals, patchFaces, track.smoothing, h.normals))
+            continue;
+        const algo::Positions& layerNormals = h.normals.rows() > 0 ? h.normals : normals;
         if (haveUvFrames) {
             h.du = uvDu;
             h.dv = uvDv;
         } else if (!algo::guideVertexFrames(
-                       shape, mesh.faces, normals, patchFaces, track.guide, kGuideSmoothingRounds, h.du, h.dv)) {
+                       shape, mesh.faces, layerNormals, patchFaces, track.guide, kGuideSmoothingRounds, h.du, h.dv)) {
             continue;
         }
         out.push_back(std::move(h));

@@ -17,8 +17,10 @@ algo::RenderLook renderLookFor(const ProjectData& data, const Look& look);
 
 /// The look's visible highlight tracks resolved at a frame for the renderer: keys interpolated,
 /// combinations by name replaced by the other tracks' shapes at the same frame, patch face
-/// masks (all faces for an empty patch), and per-vertex tangent frames of the shape (#V by 3)
-/// from the base model's UVs when it has them, else from each track's guide over its patch.
+/// masks (all faces for an empty patch), each track's smoothed normals over its patch when it asks
+/// for smoothing, and per-vertex tangent frames of the shape (#V by 3) from the base model's UVs
+/// when it has them, else from each track's guide over its patch (against the smoothed normals
+/// where there are some).
 std::vector<algo::RenderHighlight> renderHighlightsFor(
     const ProjectData& data, const Look& look, const algo::Positions& shape, int frame);
 

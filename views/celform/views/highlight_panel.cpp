@@ -3,6 +3,7 @@
 #include "celform/views/highlight_panel.h"
 
 #include "celform/views/color_swatch.h"
+#include "celform/views/look_shading.h"
 
 #include "celform/views/viewport.h"
 
@@ -255,7 +256,13 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     m_removeLayer = new QPushButton(tr("&Remove"), layersBox);
     m_removeLayer->setObjectName(QStringLiteral("removeHighlightLayer"));
     m_removeLayer->setToolTip(tr("Remove the selected layer and its use in other layers' combinations"));
+    m_addPreset = new QToolButton(layersBox);
+    m_addPreset->setObjectName(QStringLiteral("addHighlightPreset"));
+    m_addPreset->setText(tr("&Preset"));
+    m_addPreset->setToolTip(tr("Add a shaped highlight to start from, on the selected layer's patch"));
+    m_addPreset->setPopupMode(QToolButton::InstantPopup);
     layerButtons->addWidget(m_addLayer);
+    layerButtons->addWidget(m_addPreset);
     layerButtons->addWidget(m_removeLayer);
     layerButtons->addStretch();
     layersLayout->addLayout(layerButtons);
@@ -307,6 +314,15 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         });
         selectLayer(index);
     });
+    // Presets: the paper's two worked examples as starting points (Figures 5 and 6).
+    auto* presetMenu = new QMenu(m_addPreset);
+    presetMenu->addAction(tr("&Window"), this, [this] { addPreset(Preset::Window); })
+        ->setToolTip(tr("Rotation, directional scaling and split on a nearly flat part: the car window of the "
+                        "paper's Figure 5"));
+    presetMenu->addAction(tr("&Crescent"), this, [this] { addPreset(Preset::Crescent); })
+        ->setToolTip(tr("A highlight minus a hidden, shifted copy of itself: the crescent of the paper's Figure 6"));
+    presetMenu->setToolTipsVisible(true);
+    m_addPreset->setMenu(presetMenu);
     connect(m_removeLayer, &QPushButton::clicked, this, [this] {
         const int row = selectedLayer();
         if (row < 0)
@@ -511,6 +527,20 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         });
     }
     form->addRow(tr("&Guide:"), guideRow);
+    m_smoothing = new QSpinBox(m_parameters);
+    m_smoothing->setObjectName(QStringLiteral("highlightSmoothing"));
+    m_smoothing->setRange(0, model::kMaxHighlightSmoothing);
+    m_smoothing->setKeyboardTracking(false);
+    m_smoothing->setSpecialValueText(tr("Off"));
+    m_smoothing->setToolTip(tr("Rounds of normal smoothing over the patch: the highlight sees a smooth surface, as on "
+                               "the paper's spline patches, and coarse meshes give clean shapes. Paint thin parts "
+                               "(an ear) one side at a time: smoothing mixes the normals of both sides (not keyed)"));
+    form->addRow(tr("&Smooth normals:"), m_smoothing);
+    connect(m_smoothing, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
+        editTrack(
+            tr("Change Highlight Smoothing"), [v](model::HighlightTrack& t) { t.smoothing = v; },
+            QStringLiteral("smoothing"));
+    });
     m_editInViewport = new QPushButton(tr("Edit in &Viewport"), m_parameters);
     m_editInViewport->setObjectName(QStringLiteral("highlightEditInViewport"));
     m_editInViewport->setCheckable(true);
@@ -568,6 +598,17 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
             }
     });
     layout->addWidget(m_combinationsBox);
+    m_viewportLimit = new QLabel(content);
+    m_viewportLimit->setObjectName(QStringLiteral("highlightViewportLimit"));
+    m_viewportLimit->setWordWrap(true);
+    m_viewportLimit->setText(tr("The viewport draws the first %1 visible layers and, of each, %2 operations and %3 "
+                                "combinations; the rest shows in renders (celform render).")
+                                 .arg(kViewportHighlightLayers)
+                                 .arg(kViewportHighlightOperations)
+                                 .arg(kViewportHighlightCombinations));
+    m_viewportLimit->setStyleSheet(QStringLiteral("color: #a05000;"));
+    m_viewportLimit->hide();
+    layout->addWidget(m_viewportLimit);
     layout->addStretch();
 
     connect(m_document, &model::Document::lookChanged, this, &HighlightPanel::refresh);
@@ -575,6 +616,70 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     connect(m_document, &model::Document::meshChanged, this, &HighlightPanel::refresh);
     connect(m_document, &model::Document::faceSetsChanged, this, &HighlightPanel::refresh);
     refresh();
+}
+
+void HighlightPanel::addPreset(Preset preset)
+{
+    const auto& tracks = m_document->data().look.highlights;
+    std::vector<QString> taken;
+    for (const auto& t : tracks)
+        taken.push_back(t.name);
+    auto unique = [&](const QString& base) {
+        QString name = base;
+        for (int n = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++n)
+            name = QStringLiteral("%1 %2").arg(base).arg(n);
+        taken.push_back(name);
+        return name;
+    };
+    // The new layers sit on the selected layer's patch, with its guide and smoothing. The values
+    // were tuned on the sample elephant seen from the front (resources/samples/
+    // elephant-highlights.celform): its ear is nearly flat like the paper's car window, where the
+    // plain highlight covers everything (Figure 5a); smoothed normals give clean outlines.
+    const model::HighlightTrack* selected = track();
+    model::HighlightTrack base;
+    base.smoothing = 8;
+    if (selected) {
+        base.patch = selected->patch;
+        base.guide = selected->guide;
+        if (selected->smoothing > 0)
+            base.smoothing = selected->smoothing;
+    }
+    using Op = algo::HighlightOperation;
+    std::vector<model::HighlightTrack> added;
+    QString undoText;
+    if (preset == Preset::Window) {
+        // Paper, Figure 5b: rotation, directional scaling and split turn the window-filling
+        // highlight into a long streak and a short one.
+        model::HighlightTrack window = base;
+        window.name = unique(tr("Window"));
+        algo::HighlightLayer layer;
+        layer.shape.epsilon = 0.03f;
+        layer.shape.operations = {Op::rotation(30.f), Op::directionalScaling(0.6f), Op::split(0.25f, 0.f)};
+        window.setKey(m_frame, layer);
+        added.push_back(std::move(window));
+        undoText = tr("Add Window Highlight");
+    } else {
+        // Paper, Figure 6: G minus H, H the same area moved along du and dv.
+        model::HighlightTrack cut = base;
+        cut.name = unique(tr("Crescent cut"));
+        cut.visible = false;
+        algo::HighlightLayer cutLayer;
+        cutLayer.shape.epsilon = 0.04f;
+        cutLayer.shape.operations = {Op::translation(0.1f, 0.1f)};
+        cut.setKey(m_frame, cutLayer);
+        model::HighlightTrack crescent = base;
+        crescent.name = unique(tr("Crescent"));
+        algo::HighlightLayer layer;
+        layer.shape.epsilon = 0.04f;
+        crescent.setKey(m_frame, layer);
+        crescent.combineWith.emplace_back(algo::HighlightBoolean::Subtraction, cut.name);
+        added.push_back(std::move(cut));
+        added.push_back(std::move(crescent));
+        undoText = tr("Add Crescent Highlight");
+    }
+    const int index = int(tracks.size() + added.size()) - 1;
+    edit(undoText, [&](model::Look& l) { l.highlights.insert(l.highlights.end(), added.begin(), added.end()); });
+    selectLayer(index);
 }
 
 void HighlightPanel::newPatchForLayer()
@@ -1081,6 +1186,10 @@ void HighlightPanel::refresh()
         m_guide[axis]->setValue(guide[axis]);
     }
     {
+        const QSignalBlocker block(m_smoothing);
+        m_smoothing->setValue(t ? t->smoothing : 0);
+    }
+    {
         const QSignalBlocker block(m_patch);
         m_patch->clear();
         m_patch->addItem(tr("All faces"), QString());
@@ -1093,6 +1202,16 @@ void HighlightPanel::refresh()
     }
     rebuildOperations(layer);
     rebuildCombinations(t ? *t : model::HighlightTrack{});
+    const int visibleLayers = int(
+        std::count_if(tracks.begin(), tracks.end(), [](const model::HighlightTrack& track) { return track.visible; }));
+    const bool beyond = visibleLayers > kViewportHighlightLayers
+        || std::any_of(tracks.begin(), tracks.end(), [](const model::HighlightTrack& track) {
+               return int(track.combineWith.size()) > kViewportHighlightCombinations
+                   || std::any_of(track.keys.begin(), track.keys.end(), [](const algo::HighlightKey& k) {
+                          return int(k.layer.shape.operations.size()) > kViewportHighlightOperations;
+                      });
+           });
+    m_viewportLimit->setVisible(beyond);
     m_updating = false;
 }
 

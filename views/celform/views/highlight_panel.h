@@ -17,6 +17,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
+class QLabel;
 class QListWidget;
 class QPushButton;
 class QSpinBox;
@@ -96,6 +97,9 @@ private:
     void rebuildOperations(const algo::HighlightLayer& layer);
     void rebuildCombinations(const model::HighlightTrack& t);
     void jumpToKey(int direction);
+    enum class Preset { Window, Crescent };
+    /// Adds the layers of a preset after the others (one undo step) and selects the visible one.
+    void addPreset(Preset preset);
     /// Makes an empty face set named after the selected layer and puts the layer on it (one undo step).
     void newPatchForLayer();
     /// Viewport drags (Tool::Highlight): plain translates the highlight along the tangent frame at
@@ -116,6 +120,7 @@ private:
 
     QListWidget* m_layers;
     QPushButton* m_addLayer;
+    QToolButton* m_addPreset;
     QPushButton* m_removeLayer;
     HighlightTimeline* m_timeline;
     QSpinBox* m_frameSpin;
@@ -134,6 +139,7 @@ private:
     QAction* m_renamePatch;
     QAction* m_deletePatch;
     QDoubleSpinBox* m_guide[3];
+    QSpinBox* m_smoothing;
     QGroupBox* m_operationsBox;
     QVBoxLayout* m_operationRows;
     QToolButton* m_addOperation;
@@ -142,6 +148,7 @@ private:
     QGroupBox* m_combinationsBox;
     QVBoxLayout* m_combinationRows;
     QPushButton* m_addCombination;
+    QLabel* m_viewportLimit;
 };
 
 } // namespace celform::views

@@ -42,17 +42,23 @@ constexpr const char* kLutArray = "cfLutIntensity";
 constexpr const char* kBaseArray = "cfBaseColor";
 constexpr const char* kStyleArray = "cfStyle";
 // Highlights: per layer the vertex's du and the handedness of its frame (dv = w * N x du, as
-// makeTangentFrame builds it), and per layer 1 where the vertex belongs to the layer's patch.
-constexpr int kMaxHighlightLayers = 4;
-constexpr int kMaxHighlightCombinations = 2;
-constexpr int kMaxHighlightOperations = 8;
+// makeTangentFrame builds it, N the layer's normal), and per layer the layer's smoothed normal
+// (zero: the surface's) with, in w, 1 where the vertex belongs to the layer's patch. The patch
+// rides along with the normal to keep the vertex attributes within GL 3.2's 16.
+constexpr int kMaxHighlightLayers = kViewportHighlightLayers;
+constexpr int kMaxHighlightCombinations = kViewportHighlightCombinations;
+constexpr int kMaxHighlightOperations = kViewportHighlightOperations;
 constexpr const char* kHighlightDuArrays[kMaxHighlightLayers]
     = {"cfHighlightDu0", "cfHighlightDu1", "cfHighlightDu2", "cfHighlightDu3"};
 constexpr const char* kHighlightDuAttributes[kMaxHighlightLayers]
     = {"cfHlDuAttr0", "cfHlDuAttr1", "cfHlDuAttr2", "cfHlDuAttr3"};
-constexpr const char* kHighlightMaskArray = "cfHighlightMask";
+constexpr const char* kHighlightNormalArrays[kMaxHighlightLayers]
+    = {"cfHighlightN0", "cfHighlightN1", "cfHighlightN2", "cfHighlightN3"};
+constexpr const char* kHighlightNormalAttributes[kMaxHighlightLayers]
+    = {"cfHlNAttr0", "cfHlNAttr1", "cfHlNAttr2", "cfHlNAttr3"};
 
 // Vertex shader: model-space position and normal, and the per-vertex look attributes, passed on.
+// Varyings: 52 components with the 4 layers (GL 3.2 guarantees 60).
 const char* const kVertexDec = R"glsl(//VTK::Normal::Dec
 in vec3 cfNormalAttr;
 in float cfOffsetAttr;
@@ -63,7 +69,10 @@ in vec4 cfHlDuAttr0;
 in vec4 cfHlDuAttr1;
 in vec4 cfHlDuAttr2;
 in vec4 cfHlDuAttr3;
-in vec4 cfHlMaskAttr;
+in vec4 cfHlNAttr0;
+in vec4 cfHlNAttr1;
+in vec4 cfHlNAttr2;
+in vec4 cfHlNAttr3;
 out vec3 cfPositionMC;
 out vec3 cfNormalMC;
 out float cfOffset;
@@ -78,7 +87,19 @@ out vec3 cfHlDv0;
 out vec3 cfHlDv1;
 out vec3 cfHlDv2;
 out vec3 cfHlDv3;
+out vec3 cfHlN0;
+out vec3 cfHlN1;
+out vec3 cfHlN2;
+out vec3 cfHlN3;
 out vec4 cfHlMask;
+
+// The normal a layer's vertex frame was built against: the layer's smoothed normal, else the
+// surface's (unit or zero).
+vec3 cfFrameNormal(vec3 layerNormal, vec3 surfaceNormal)
+{
+  float l = length(layerNormal);
+  return l > 0.0 ? layerNormal / l : surfaceNormal;
+}
 )glsl";
 
 const char* const kVertexImpl = R"glsl(//VTK::Normal::Impl
@@ -88,7 +109,8 @@ const char* const kVertexImpl = R"glsl(//VTK::Normal::Impl
   cfLutIntensity = cfLutAttr;
   cfBase = cfBaseAttr;
   cfStyle = cfStyleAttr;
-  // The vertex frames of renderHighlightsFor: dv = w * (N x du), w = +-1 (0 outside a patch).
+  // The vertex frames of renderHighlightsFor: dv = w * (N x du), w = +-1 (0 outside a patch),
+  // N the layer's smoothed normal where it has one.
   {
     float cfNl = length(cfNormalAttr);
     vec3 cfNv = cfNl > 0.0 ? cfNormalAttr / cfNl : vec3(0.0);
@@ -96,11 +118,15 @@ const char* const kVertexImpl = R"glsl(//VTK::Normal::Impl
     cfHlDu1 = cfHlDuAttr1.xyz;
     cfHlDu2 = cfHlDuAttr2.xyz;
     cfHlDu3 = cfHlDuAttr3.xyz;
-    cfHlDv0 = cfHlDuAttr0.w * cross(cfNv, cfHlDuAttr0.xyz);
-    cfHlDv1 = cfHlDuAttr1.w * cross(cfNv, cfHlDuAttr1.xyz);
-    cfHlDv2 = cfHlDuAttr2.w * cross(cfNv, cfHlDuAttr2.xyz);
-    cfHlDv3 = cfHlDuAttr3.w * cross(cfNv, cfHlDuAttr3.xyz);
-    cfHlMask = cfHlMaskAttr;
+    cfHlDv0 = cfHlDuAttr0.w * cross(cfFrameNormal(cfHlNAttr0.xyz, cfNv), cfHlDuAttr0.xyz);
+    cfHlDv1 = cfHlDuAttr1.w * cross(cfFrameNormal(cfHlNAttr1.xyz, cfNv), cfHlDuAttr1.xyz);
+    cfHlDv2 = cfHlDuAttr2.w * cross(cfFrameNormal(cfHlNAttr2.xyz, cfNv), cfHlDuAttr2.xyz);
+    cfHlDv3 = cfHlDuAttr3.w * cross(cfFrameNormal(cfHlNAttr3.xyz, cfNv), cfHlDuAttr3.xyz);
+    cfHlN0 = cfHlNAttr0.xyz;
+    cfHlN1 = cfHlNAttr1.xyz;
+    cfHlN2 = cfHlNAttr2.xyz;
+    cfHlN3 = cfHlNAttr3.xyz;
+    cfHlMask = vec4(cfHlNAttr0.w, cfHlNAttr1.w, cfHlNAttr2.w, cfHlNAttr3.w);
   }
 )glsl";
 
@@ -120,6 +146,10 @@ in vec3 cfHlDv0;
 in vec3 cfHlDv1;
 in vec3 cfHlDv2;
 in vec3 cfHlDv3;
+in vec3 cfHlN0;
+in vec3 cfHlN1;
+in vec3 cfHlN2;
+in vec3 cfHlN3;
 in vec4 cfHlMask;
 uniform vec3 cfLightVector;  // towards the light (directional) or its position (point), model space
 uniform int cfPointLight;
@@ -157,14 +187,16 @@ float cfEncode(float l)
 }
 
 // render.cpp's highlightAt, one layer: "over" with premultiplied colour, nothing outside the
-// layer's patch (all three vertices in it). The coverage is evaluated everywhere so that its
-// derivatives stay in uniform control flow.
-void cfHighlightOver(int layer, vec3 du, vec3 dv, float mask, vec3 p, vec3 n, inout float coverage,
-    inout vec3 premultiplied)
+// layer's patch (all three vertices in it), evaluated with the layer's normal (its interpolated
+// smoothed normal, else n). The coverage is evaluated everywhere so that its derivatives stay in
+// uniform control flow.
+void cfHighlightOver(int layer, vec3 du, vec3 dv, vec3 layerNormal, float mask, vec3 p, vec3 n,
+    inout float coverage, inout vec3 premultiplied)
 {
   if (layer >= cfHlLayerCount)
     return;
-  float c = cfLayerCoverage(layer, p, n, du, dv, cfLightVector, cfPointLight != 0, cfEye);
+  vec3 ln = cfHighlightNormal(layerNormal, n);
+  float c = cfLayerCoverage(layer, p, ln, du, dv, cfLightVector, cfPointLight != 0, cfEye);
   c = mask > 0.999 ? c : 0.0;
   premultiplied = premultiplied * (1.0 - c) + cfHlColor[layer] * c;
   coverage = c + coverage * (1.0 - c);
@@ -216,10 +248,10 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
     if (cfHlLayerCount > 0) {
       float cfHlCoverage = 0.0;
       vec3 cfHlPremultiplied = vec3(0.0);
-      cfHighlightOver(0, cfHlDu0, cfHlDv0, cfHlMask.x, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
-      cfHighlightOver(1, cfHlDu1, cfHlDv1, cfHlMask.y, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
-      cfHighlightOver(2, cfHlDu2, cfHlDv2, cfHlMask.z, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
-      cfHighlightOver(3, cfHlDu3, cfHlDv3, cfHlMask.w, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
+      cfHighlightOver(0, cfHlDu0, cfHlDv0, cfHlN0, cfHlMask.x, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
+      cfHighlightOver(1, cfHlDu1, cfHlDv1, cfHlN1, cfHlMask.y, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
+      cfHighlightOver(2, cfHlDu2, cfHlDv2, cfHlN2, cfHlMask.z, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
+      cfHighlightOver(3, cfHlDu3, cfHlDv3, cfHlN3, cfHlMask.w, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
       vec3 cfHlColorHere = cfHlCoverage > 0.0 ? cfHlPremultiplied / cfHlCoverage : vec3(0.0);
       cfColor = cfColor * (1.0 - cfHlCoverage) + cfHlColorHere * cfHlCoverage;
     }
@@ -324,7 +356,9 @@ struct LookShading::Impl {
     std::array<vtkSmartPointer<vtkFloatArray>, kMaxHighlightLayers> highlightDu{namedArray(kHighlightDuArrays[0], 4),
         namedArray(kHighlightDuArrays[1], 4), namedArray(kHighlightDuArrays[2], 4),
         namedArray(kHighlightDuArrays[3], 4)};
-    vtkSmartPointer<vtkFloatArray> highlightMask = namedArray(kHighlightMaskArray, 4);
+    std::array<vtkSmartPointer<vtkFloatArray>, kMaxHighlightLayers> highlightNormal{
+        namedArray(kHighlightNormalArrays[0], 4), namedArray(kHighlightNormalArrays[1], 4),
+        namedArray(kHighlightNormalArrays[2], 4), namedArray(kHighlightNormalArrays[3], 4)};
     Uniforms uniforms;
     bool active = false;
     // Clay settings restored when the look is turned off.
@@ -400,7 +434,8 @@ void LookShading::Impl::attachArrays()
     // rebuildMesh() re-initialises the polydata, dropping its arrays: put ours back.
     vtkPointData* pd = mesh->GetPointData();
     for (vtkFloatArray* a : {offsets.Get(), lut.Get(), base.Get(), style.Get(), highlightDu[0].Get(),
-             highlightDu[1].Get(), highlightDu[2].Get(), highlightDu[3].Get(), highlightMask.Get()})
+             highlightDu[1].Get(), highlightDu[2].Get(), highlightDu[3].Get(), highlightNormal[0].Get(),
+             highlightNormal[1].Get(), highlightNormal[2].Get(), highlightNormal[3].Get()})
         if (pd->GetArray(a->GetName()) != a)
             pd->AddArray(a);
 }
@@ -461,9 +496,11 @@ void LookShading::setActive(bool active)
     m->mapper->MapDataArrayToVertexAttribute("cfLutAttr", kLutArray, points, -1);
     m->mapper->MapDataArrayToVertexAttribute("cfBaseAttr", kBaseArray, points, -1);
     m->mapper->MapDataArrayToVertexAttribute("cfStyleAttr", kStyleArray, points, -1);
-    for (int layer = 0; layer < kMaxHighlightLayers; ++layer)
+    for (int layer = 0; layer < kMaxHighlightLayers; ++layer) {
         m->mapper->MapDataArrayToVertexAttribute(kHighlightDuAttributes[layer], kHighlightDuArrays[layer], points, -1);
-    m->mapper->MapDataArrayToVertexAttribute("cfHlMaskAttr", kHighlightMaskArray, points, -1);
+        m->mapper->MapDataArrayToVertexAttribute(
+            kHighlightNormalAttributes[layer], kHighlightNormalArrays[layer], points, -1);
+    }
     if (shaders) {
         shaders->ClearAllShaderReplacements();
         shaders->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
@@ -589,10 +626,11 @@ void LookShading::updateHighlights(
         a->SetNumberOfTuples(count);
         a->FillValue(0.f);
     }
-    m->highlightMask->SetNumberOfTuples(count);
-    m->highlightMask->FillValue(0.f);
+    for (auto& a : m->highlightNormal) {
+        a->SetNumberOfTuples(count);
+        a->FillValue(0.f);
+    }
     const algo::Faces& faces = data.baseMesh->faces;
-    float* mask = m->highlightMask->GetPointer(0);
     for (int layer = 0; layer < u.hlLayerCount; ++layer) {
         const algo::RenderHighlight& h = layers[std::size_t(layer)];
         const auto l = std::size_t(layer);
@@ -609,13 +647,29 @@ void LookShading::updateHighlights(
                 = c.mode == algo::HighlightBoolean::Union ? 0 : 1;
             storeShape(u, layer * (1 + kMaxHighlightCombinations) + 1 + k, c.shape);
         }
-        // du and the handedness w of each vertex frame: dv = w * (N x du).
+        // The layer's smoothed normals (zero: the surface's), and the patch per vertex in w: 1 on
+        // every vertex of a patch face (all faces for no mask).
+        float* layerNormal = m->highlightNormal[l]->GetPointer(0);
+        const bool haveNormals = h.normals.rows() == count;
+        for (Eigen::Index v = 0; haveNormals && v < count; ++v)
+            for (int k = 0; k < 3; ++k)
+                layerNormal[4 * v + k] = h.normals(v, k);
+        for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+            if (!h.faceMask.empty() && (std::size_t(f) >= h.faceMask.size() || !h.faceMask[std::size_t(f)]))
+                continue;
+            for (int k = 0; k < 3; ++k)
+                layerNormal[4 * std::size_t(faces(f, k)) + 3] = 1.f;
+        }
+        // du and the handedness w of each vertex frame: dv = w * (N x du), N the normal the
+        // vertex shader builds dv with (cfFrameNormal: the layer's, else the surface's).
         float* du = m->highlightDu[l]->GetPointer(0);
         const bool haveFrames = h.du.rows() == count && h.dv.rows() == count;
         for (Eigen::Index v = 0; haveFrames && v < count; ++v) {
             const Eigen::Vector3f d = h.du.row(v);
             const Eigen::Vector3f e = h.dv.row(v);
-            Eigen::Vector3f n(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+            Eigen::Vector3f n(layerNormal[4 * v], layerNormal[4 * v + 1], layerNormal[4 * v + 2]);
+            if (!(n.squaredNorm() > 0.f))
+                n = Eigen::Vector3f(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
             const float nl = n.norm();
             n = nl > 0.f ? Eigen::Vector3f(n / nl) : Eigen::Vector3f::Zero();
             const float handedness = n.cross(d).dot(e);
@@ -624,17 +678,11 @@ void LookShading::updateHighlights(
             du[4 * v + 2] = d.z();
             du[4 * v + 3] = handedness > 0.f ? 1.f : (handedness < 0.f ? -1.f : 0.f);
         }
-        // The patch per vertex: 1 on every vertex of a patch face (all faces for no mask).
-        for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-            if (!h.faceMask.empty() && (std::size_t(f) >= h.faceMask.size() || !h.faceMask[std::size_t(f)]))
-                continue;
-            for (int k = 0; k < 3; ++k)
-                mask[4 * std::size_t(faces(f, k)) + l] = 1.f;
-        }
     }
     for (auto& a : m->highlightDu)
         a->Modified();
-    m->highlightMask->Modified();
+    for (auto& a : m->highlightNormal)
+        a->Modified();
 }
 
 } // namespace celform::views

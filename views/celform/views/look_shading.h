@@ -14,6 +14,13 @@ class vtkRenderer;
 
 namespace celform::views {
 
+/// What the viewport's shader draws of the highlight tracks: the first visible layers, and of each
+/// the first operations and combinations (uniform arrays of fixed size). `celform render` draws
+/// them all; the Highlights dock says when a look goes beyond these.
+inline constexpr int kViewportHighlightLayers = 4;
+inline constexpr int kViewportHighlightOperations = 8;
+inline constexpr int kViewportHighlightCombinations = 2;
+
 /// Configures one actor (its mapper must be a vtkOpenGLPolyDataMapper) for a model::Look.
 ///
 /// Spaces: everything is shaded in model space, as the offline renderer does. The vertex shader
@@ -26,8 +33,9 @@ namespace celform::views {
 /// equation 4.3), the PerVertexLut intensity (lookupIntensity of N.L + O_v, computed here on the
 /// CPU exactly as render.cpp does), the base colour and the style of the vertex's material, and
 /// for up to 4 highlight layers (model::renderHighlightsFor at the frame) the vertex's du with the
-/// handedness of its frame (dv = w N x du) and whether the vertex lies in the layer's patch (a
-/// fragment is in the patch when all three corners are).
+/// handedness of its frame (dv = w N x du), the layer's smoothed normal (zero: the surface's,
+/// which is then N) and whether the vertex lies in the layer's patch (a fragment is in the patch
+/// when all three corners are).
 /// Look uniforms are set from a cached copy each time VTK binds the program (UpdateShaderEvent),
 /// so a Look change costs no shader rebuild; only setActive() rebuilds the shaders.
 class LookShading {
@@ -47,7 +55,8 @@ public:
     [[nodiscard]] bool isActive() const;
 
 private:
-    /// Highlight uniforms and per-vertex frames and patch masks, as renderFrame resolves them.
+    /// Highlight uniforms and per-vertex frames, normals and patch masks, as renderFrame resolves
+    /// them.
     void updateHighlights(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame,
         Eigen::Index count);
 
