@@ -58,40 +58,21 @@ constexpr const char* kHighlightNormalAttributes[kMaxHighlightLayers]
     = {"cfHlNAttr0", "cfHlNAttr1", "cfHlNAttr2", "cfHlNAttr3"};
 
 // Vertex shader: model-space position and normal, and the per-vertex look attributes, passed on.
-// Varyings: 52 components with the 4 layers (GL 3.2 guarantees 60).
+// The highlight layers' attributes and varyings are added per layer in use (layerDeclarations):
+// with none, the shader carries none of them (software GL interpolates every varying of every
+// fragment). With 4 layers: 48 varying components (GL 3.2 guarantees 60), 13 attributes (16).
 const char* const kVertexDec = R"glsl(//VTK::Normal::Dec
 in vec3 cfNormalAttr;
 in float cfOffsetAttr;
 in float cfLutAttr;
 in vec3 cfBaseAttr;
 in float cfStyleAttr;
-in vec4 cfHlDuAttr0;
-in vec4 cfHlDuAttr1;
-in vec4 cfHlDuAttr2;
-in vec4 cfHlDuAttr3;
-in vec4 cfHlNAttr0;
-in vec4 cfHlNAttr1;
-in vec4 cfHlNAttr2;
-in vec4 cfHlNAttr3;
 out vec3 cfPositionMC;
 out vec3 cfNormalMC;
 out float cfOffset;
 out float cfLutIntensity;
 out vec3 cfBase;
 out float cfStyle;
-out vec3 cfHlDu0;
-out vec3 cfHlDu1;
-out vec3 cfHlDu2;
-out vec3 cfHlDu3;
-out vec3 cfHlDv0;
-out vec3 cfHlDv1;
-out vec3 cfHlDv2;
-out vec3 cfHlDv3;
-out vec3 cfHlN0;
-out vec3 cfHlN1;
-out vec3 cfHlN2;
-out vec3 cfHlN3;
-out vec4 cfHlMask;
 
 // The normal a layer's vertex frame was built against: the layer's smoothed normal, else the
 // surface's (unit or zero).
@@ -109,25 +90,8 @@ const char* const kVertexImpl = R"glsl(//VTK::Normal::Impl
   cfLutIntensity = cfLutAttr;
   cfBase = cfBaseAttr;
   cfStyle = cfStyleAttr;
-  // The vertex frames of renderHighlightsFor: dv = w * (N x du), w = +-1 (0 outside a patch),
-  // N the layer's smoothed normal where it has one.
-  {
-    float cfNl = length(cfNormalAttr);
-    vec3 cfNv = cfNl > 0.0 ? cfNormalAttr / cfNl : vec3(0.0);
-    cfHlDu0 = cfHlDuAttr0.xyz;
-    cfHlDu1 = cfHlDuAttr1.xyz;
-    cfHlDu2 = cfHlDuAttr2.xyz;
-    cfHlDu3 = cfHlDuAttr3.xyz;
-    cfHlDv0 = cfHlDuAttr0.w * cross(cfFrameNormal(cfHlNAttr0.xyz, cfNv), cfHlDuAttr0.xyz);
-    cfHlDv1 = cfHlDuAttr1.w * cross(cfFrameNormal(cfHlNAttr1.xyz, cfNv), cfHlDuAttr1.xyz);
-    cfHlDv2 = cfHlDuAttr2.w * cross(cfFrameNormal(cfHlNAttr2.xyz, cfNv), cfHlDuAttr2.xyz);
-    cfHlDv3 = cfHlDuAttr3.w * cross(cfFrameNormal(cfHlNAttr3.xyz, cfNv), cfHlDuAttr3.xyz);
-    cfHlN0 = cfHlNAttr0.xyz;
-    cfHlN1 = cfHlNAttr1.xyz;
-    cfHlN2 = cfHlNAttr2.xyz;
-    cfHlN3 = cfHlNAttr3.xyz;
-    cfHlMask = vec4(cfHlNAttr0.w, cfHlNAttr1.w, cfHlNAttr2.w, cfHlNAttr3.w);
-  }
+  float cfNl = length(cfNormalAttr);
+  vec3 cfNv = cfNl > 0.0 ? cfNormalAttr / cfNl : vec3(0.0);
 )glsl";
 
 // Fragment shader declarations after the shared functions: the light, the camera and the style.
@@ -138,19 +102,6 @@ in float cfOffset;
 in float cfLutIntensity;
 in vec3 cfBase;
 in float cfStyle;
-in vec3 cfHlDu0;
-in vec3 cfHlDu1;
-in vec3 cfHlDu2;
-in vec3 cfHlDu3;
-in vec3 cfHlDv0;
-in vec3 cfHlDv1;
-in vec3 cfHlDv2;
-in vec3 cfHlDv3;
-in vec3 cfHlN0;
-in vec3 cfHlN1;
-in vec3 cfHlN2;
-in vec3 cfHlN3;
-in vec4 cfHlMask;
 uniform vec3 cfLightVector;  // towards the light (directional) or its position (point), model space
 uniform int cfPointLight;
 uniform int cfEvaluation;    // 0 PerPixel, 1 PerVertexLut, 2 PerFace (algo::ToonEvaluation)
@@ -244,21 +195,47 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
       float cfInk = cfHatchCoverage(cfP, cfN, cfTone, cfToneCount, cfFootprint);
       cfColor = cfBase * cfIntensities[max(0, cfToneCount - 1)] * (1.0 - cfInk) + cfLineColor * cfInk;
     }
-    // Highlights after shading, before lines: mix(shaded, layer colour, coverage).
-    if (cfHlLayerCount > 0) {
-      float cfHlCoverage = 0.0;
-      vec3 cfHlPremultiplied = vec3(0.0);
-      cfHighlightOver(0, cfHlDu0, cfHlDv0, cfHlN0, cfHlMask.x, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
-      cfHighlightOver(1, cfHlDu1, cfHlDv1, cfHlN1, cfHlMask.y, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
-      cfHighlightOver(2, cfHlDu2, cfHlDv2, cfHlN2, cfHlMask.z, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
-      cfHighlightOver(3, cfHlDu3, cfHlDv3, cfHlN3, cfHlMask.w, cfP, cfN, cfHlCoverage, cfHlPremultiplied);
-      vec3 cfHlColorHere = cfHlCoverage > 0.0 ? cfHlPremultiplied / cfHlCoverage : vec3(0.0);
-      cfColor = cfColor * (1.0 - cfHlCoverage) + cfHlColorHere * cfHlCoverage;
-    }
+    //CF::Highlights::Impl
     cfColor = clamp(cfColor, 0.0, 1.0);
     gl_FragData[0] = vec4(cfEncode(cfColor.r), cfEncode(cfColor.g), cfEncode(cfColor.b), 1.0);
   }
 )glsl";
+
+/// The per-layer parts of the shaders for `layers` highlight layers in use (0 to 4): the vertex
+/// attributes and varyings, the frames (dv = w * (N x du), N the layer's smoothed normal where
+/// it has one, else the surface's, as renderHighlightsFor builds them), the patch flag (a fragment
+/// is in the patch when all three corners are), and each layer's "over" in the fragment shader.
+struct HighlightShaderParts {
+    std::string vertexDec, vertexImpl, fragmentDec, fragmentImpl;
+};
+
+HighlightShaderParts highlightShaderParts(int layers)
+{
+    HighlightShaderParts parts;
+    std::string over;
+    for (int i = 0; i < layers; ++i) {
+        const std::string n = std::to_string(i);
+        parts.vertexDec += "in vec4 cfHlDuAttr" + n + ";\nin vec4 cfHlNAttr" + n + ";\nout vec3 cfHlDu" + n
+            + ";\nout vec3 cfHlDv" + n + ";\nout vec3 cfHlN" + n + ";\nout float cfHlMask" + n + ";\n";
+        parts.vertexImpl += "  cfHlDu" + n + " = cfHlDuAttr" + n + ".xyz;\n  cfHlDv" + n + " = cfHlDuAttr" + n
+            + ".w * cross(cfFrameNormal(cfHlNAttr" + n + ".xyz, cfNv), cfHlDuAttr" + n + ".xyz);\n  cfHlN" + n
+            + " = cfHlNAttr" + n + ".xyz;\n  cfHlMask" + n + " = cfHlNAttr" + n + ".w;\n";
+        parts.fragmentDec += "in vec3 cfHlDu" + n + ";\nin vec3 cfHlDv" + n + ";\nin vec3 cfHlN" + n
+            + ";\nin float cfHlMask" + n + ";\n";
+        over += "      cfHighlightOver(" + n + ", cfHlDu" + n + ", cfHlDv" + n + ", cfHlN" + n + ", cfHlMask" + n
+            + ", cfP, cfN, cfHlCoverage, cfHlPremultiplied);\n";
+    }
+    if (layers > 0)
+        parts.fragmentImpl = "    // Highlights after shading, before lines: mix(shaded, layer colour, coverage).\n"
+                             "    {\n"
+                             "      float cfHlCoverage = 0.0;\n"
+                             "      vec3 cfHlPremultiplied = vec3(0.0);\n"
+            + over
+            + "      vec3 cfHlColorHere = cfHlCoverage > 0.0 ? cfHlPremultiplied / cfHlCoverage : vec3(0.0);\n"
+              "      cfColor = cfColor * (1.0 - cfHlCoverage) + cfHlColorHere * cfHlCoverage;\n"
+              "    }\n";
+    return parts;
+}
 
 int styleIndex(algo::Style style)
 {
@@ -361,6 +338,7 @@ struct LookShading::Impl {
         namedArray(kHighlightNormalArrays[2], 4), namedArray(kHighlightNormalArrays[3], 4)};
     Uniforms uniforms;
     bool active = false;
+    int compiledLayers = -1; ///< highlight layers the installed shaders carry; -1: none installed
     // Clay settings restored when the look is turned off.
     bool clayLighting = true;
     double claySpecular = 0.0;
@@ -370,6 +348,8 @@ struct LookShading::Impl {
 
     void setUniforms(vtkShaderProgram* program) const;
     void attachArrays();
+    /// Maps the per-vertex arrays and installs the shaders for `layers` highlight layers.
+    void installShaders(int layers);
 };
 
 void LookShading::Impl::setUniforms(vtkShaderProgram* program) const
@@ -433,11 +413,48 @@ void LookShading::Impl::attachArrays()
 {
     // rebuildMesh() re-initialises the polydata, dropping its arrays: put ours back.
     vtkPointData* pd = mesh->GetPointData();
-    for (vtkFloatArray* a : {offsets.Get(), lut.Get(), base.Get(), style.Get(), highlightDu[0].Get(),
-             highlightDu[1].Get(), highlightDu[2].Get(), highlightDu[3].Get(), highlightNormal[0].Get(),
-             highlightNormal[1].Get(), highlightNormal[2].Get(), highlightNormal[3].Get()})
+    for (vtkFloatArray* a : {offsets.Get(), lut.Get(), base.Get(), style.Get()})
         if (pd->GetArray(a->GetName()) != a)
             pd->AddArray(a);
+    // The highlight arrays of the layers in use; the others are stale and leave the mesh.
+    for (int layer = 0; layer < kMaxHighlightLayers; ++layer)
+        for (vtkFloatArray* a : {highlightDu[std::size_t(layer)].Get(), highlightNormal[std::size_t(layer)].Get()}) {
+            if (layer >= uniforms.hlLayerCount)
+                pd->RemoveArray(a->GetName());
+            else if (pd->GetArray(a->GetName()) != a)
+                pd->AddArray(a);
+        }
+}
+
+void LookShading::Impl::installShaders(int layers)
+{
+    const int points = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    mapper->RemoveAllVertexAttributeMappings();
+    mapper->MapDataArrayToVertexAttribute("cfNormalAttr", "Normals", points, -1);
+    mapper->MapDataArrayToVertexAttribute("cfOffsetAttr", kOffsetArray, points, -1);
+    mapper->MapDataArrayToVertexAttribute("cfLutAttr", kLutArray, points, -1);
+    mapper->MapDataArrayToVertexAttribute("cfBaseAttr", kBaseArray, points, -1);
+    mapper->MapDataArrayToVertexAttribute("cfStyleAttr", kStyleArray, points, -1);
+    for (int layer = 0; layer < layers; ++layer) {
+        mapper->MapDataArrayToVertexAttribute(kHighlightDuAttributes[layer], kHighlightDuArrays[layer], points, -1);
+        mapper->MapDataArrayToVertexAttribute(
+            kHighlightNormalAttributes[layer], kHighlightNormalArrays[layer], points, -1);
+    }
+    if (auto* shaders = vtkOpenGLShaderProperty::SafeDownCast(actor->GetShaderProperty())) {
+        const HighlightShaderParts parts = highlightShaderParts(layers);
+        shaders->ClearAllShaderReplacements();
+        shaders->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec + parts.vertexDec, false);
+        shaders->AddVertexShaderReplacement("//VTK::Normal::Impl", true, kVertexImpl + parts.vertexImpl, false);
+        const std::string declarations
+            = std::string("//VTK::Light::Dec\n") + kCelformShadingGlsl + kFragmentDec + parts.fragmentDec;
+        shaders->AddFragmentShaderReplacement("//VTK::Light::Dec", true, declarations, false);
+        std::string impl = kFragmentImpl;
+        const std::string marker = "    //CF::Highlights::Impl\n";
+        impl.replace(impl.find(marker), marker.size(), parts.fragmentImpl);
+        shaders->AddFragmentShaderReplacement("//VTK::Light::Impl", true, impl, false);
+    }
+    compiledLayers = layers;
+    mapper->Modified();
 }
 
 LookShading::LookShading(vtkActor* actor, vtkPolyData* mesh, vtkRenderer* renderer)
@@ -480,6 +497,7 @@ void LookShading::setActive(bool active)
         if (shaders)
             shaders->ClearAllShaderReplacements();
         m->mapper->RemoveAllVertexAttributeMappings();
+        m->compiledLayers = -1;
         property->SetLighting(m->clayLighting);
         property->SetSpecular(m->claySpecular);
         m->mapper->Modified();
@@ -490,26 +508,7 @@ void LookShading::setActive(bool active)
     // VTK's lights play no part: the shader computes the whole colour from the look.
     property->LightingOff();
     property->SetSpecular(0.0);
-    const int points = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-    m->mapper->MapDataArrayToVertexAttribute("cfNormalAttr", "Normals", points, -1);
-    m->mapper->MapDataArrayToVertexAttribute("cfOffsetAttr", kOffsetArray, points, -1);
-    m->mapper->MapDataArrayToVertexAttribute("cfLutAttr", kLutArray, points, -1);
-    m->mapper->MapDataArrayToVertexAttribute("cfBaseAttr", kBaseArray, points, -1);
-    m->mapper->MapDataArrayToVertexAttribute("cfStyleAttr", kStyleArray, points, -1);
-    for (int layer = 0; layer < kMaxHighlightLayers; ++layer) {
-        m->mapper->MapDataArrayToVertexAttribute(kHighlightDuAttributes[layer], kHighlightDuArrays[layer], points, -1);
-        m->mapper->MapDataArrayToVertexAttribute(
-            kHighlightNormalAttributes[layer], kHighlightNormalArrays[layer], points, -1);
-    }
-    if (shaders) {
-        shaders->ClearAllShaderReplacements();
-        shaders->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec, false);
-        shaders->AddVertexShaderReplacement("//VTK::Normal::Impl", true, kVertexImpl, false);
-        const std::string declarations = std::string("//VTK::Light::Dec\n") + kCelformShadingGlsl + kFragmentDec;
-        shaders->AddFragmentShaderReplacement("//VTK::Light::Dec", true, declarations, false);
-        shaders->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kFragmentImpl, false);
-    }
-    m->mapper->Modified();
+    m->installShaders(m->uniforms.hlLayerCount);
 }
 
 void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame)
@@ -602,6 +601,9 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
     for (vtkFloatArray* a : {m->base.Get(), m->style.Get(), m->offsets.Get(), m->lut.Get()})
         a->Modified();
     m->attachArrays();
+    // Shaders carry only the layers in use: a change of their count rebuilds them (rare).
+    if (m->active && m->compiledLayers != m->uniforms.hlLayerCount)
+        m->installShaders(m->uniforms.hlLayerCount);
     m->mesh->Modified();
 }
 
@@ -622,14 +624,13 @@ void LookShading::updateHighlights(
     u.hlOpType.fill(0);
     u.hlOpA.fill(0.f);
     u.hlOpB.fill(0.f);
-    for (auto& a : m->highlightDu) {
-        a->SetNumberOfTuples(count);
-        a->FillValue(0.f);
-    }
-    for (auto& a : m->highlightNormal) {
-        a->SetNumberOfTuples(count);
-        a->FillValue(0.f);
-    }
+    // Only the layers in use have arrays (the shaders carry no others).
+    for (int layer = 0; layer < u.hlLayerCount; ++layer)
+        for (auto* a : {m->highlightDu[std::size_t(layer)].Get(), m->highlightNormal[std::size_t(layer)].Get()}) {
+            a->SetNumberOfTuples(count);
+            a->FillValue(0.f);
+            a->Modified();
+        }
     const algo::Faces& faces = data.baseMesh->faces;
     for (int layer = 0; layer < u.hlLayerCount; ++layer) {
         const algo::RenderHighlight& h = layers[std::size_t(layer)];
@@ -679,10 +680,6 @@ void LookShading::updateHighlights(
             du[4 * v + 3] = handedness > 0.f ? 1.f : (handedness < 0.f ? -1.f : 0.f);
         }
     }
-    for (auto& a : m->highlightDu)
-        a->Modified();
-    for (auto& a : m->highlightNormal)
-        a->Modified();
 }
 
 } // namespace celform::views
