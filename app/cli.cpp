@@ -630,7 +630,7 @@ int commandHighlight(const QStringList& args)
     const QString synopsis = QStringLiteral(
         "celform highlight P (--list [--json] | --add NAME [--patch FACESET|all] [--epsilon E] [--guide X,Y,Z] "
         "[--color R,G,B] [--cut C] [--op TYPE:VALUES]... [--combine union|subtract:OTHER]... [--smooth N] "
-        "[--visible on|off] [--frame F] [--json])");
+        "[--visible on|off] [--frame F] [--json] | --remove NAME | --rename NAME --to NEW)");
     QCommandLineParser parser;
     parser.setApplicationDescription(Cli::tr("Adds, keys and lists stylized highlight layers."));
     parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
@@ -661,16 +661,57 @@ int commandHighlight(const QStringList& args)
     const QCommandLineOption frame(
         QStringLiteral("frame"), Cli::tr("Frame of the keyframe (default 0)."), QStringLiteral("F"));
     const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Print machine-readable JSON."));
-    parser.addOptions({list, add, patch, epsilon, guide, color, cut, op, combine, smooth, visible, frame, json});
+    const QCommandLineOption remove(QStringLiteral("remove"),
+        Cli::tr("Remove a layer and its use in other layers' combinations."), QStringLiteral("NAME"));
+    const QCommandLineOption rename(
+        QStringLiteral("rename"), Cli::tr("Rename a layer (with --to)."), QStringLiteral("NAME"));
+    const QCommandLineOption to(QStringLiteral("to"), Cli::tr("The new name of --rename."), QStringLiteral("NEW"));
+    parser.addOptions(
+        {list, add, patch, epsilon, guide, color, cut, op, combine, smooth, visible, frame, json, remove, rename, to});
     parseOrThrow(parser, args, 1, synopsis);
 
     // Every option is checked before the file is touched.
     const bool editing = parser.isSet(patch) || parser.isSet(epsilon) || parser.isSet(guide) || parser.isSet(color)
         || parser.isSet(cut) || parser.isSet(op) || parser.isSet(combine) || parser.isSet(smooth)
         || parser.isSet(visible) || parser.isSet(frame);
-    if (parser.isSet(list) == parser.isSet(add) || (parser.isSet(list) && editing))
-        throw UsageError{Cli::tr("give either --list or --add NAME with its options\nusage: %1").arg(synopsis)};
+    const int actions
+        = int(parser.isSet(list)) + int(parser.isSet(add)) + int(parser.isSet(remove)) + int(parser.isSet(rename));
+    if (actions != 1 || (!parser.isSet(add) && editing) || parser.isSet(rename) != parser.isSet(to))
+        throw UsageError{Cli::tr(
+            "give one of --list, --add NAME with its options, --remove NAME or --rename NAME --to NEW\nusage: %1")
+                             .arg(synopsis)};
     const QString path = parser.positionalArguments().front();
+    if (parser.isSet(remove) || parser.isSet(rename)) {
+        // The same edits as the Highlights dock's Remove and rename: combinations follow.
+        auto doc = openProject(path);
+        model::Look look = doc->data().look;
+        const QString name = parser.value(parser.isSet(remove) ? remove : rename);
+        const auto it = std::find_if(look.highlights.begin(), look.highlights.end(),
+            [&](const model::HighlightTrack& t) { return t.name == name; });
+        if (it == look.highlights.end())
+            throw model::IoError(path, Cli::tr("has no highlight layer named “%1”").arg(name));
+        if (parser.isSet(remove)) {
+            look.highlights.erase(it);
+            for (auto& t : look.highlights)
+                t.combineWith.erase(std::remove_if(t.combineWith.begin(), t.combineWith.end(),
+                                        [&](const auto& c) { return c.second == name; }),
+                    t.combineWith.end());
+        } else {
+            const QString newName = parser.value(to).trimmed();
+            if (newName.isEmpty()
+                || std::any_of(look.highlights.begin(), look.highlights.end(),
+                    [&](const model::HighlightTrack& t) { return t.name == newName; }))
+                throw UsageError{Cli::tr("--to needs a new name no other layer has, not “%1”").arg(parser.value(to))};
+            it->name = newName;
+            for (auto& t : look.highlights)
+                for (auto& c : t.combineWith)
+                    if (c.second == name)
+                        c.second = newName;
+        }
+        doc->setLook(look);
+        doc->saveAs(path);
+        return kExitOk;
+    }
     if (parser.isSet(list)) {
         const model::ProjectData data = model::loadProject(path);
         QJsonArray layers;
@@ -1138,6 +1179,7 @@ int runCommandLine(const QStringList& arguments)
             "  celform highlight P --add NAME [--patch FACESET|all] [--epsilon E] [--guide X,Y,Z] [--color R,G,B] "
             "[--cut C] [--op translate:A,B|rotate:DEG|scale:DELTA|split:G1,G2|square:SIGMA,N]... "
             "[--combine union|subtract:OTHER]... [--smooth N] [--visible on|off] [--frame F] [--json]\n"
+            "  celform highlight P (--remove NAME | --rename NAME --to NEW)\n"
             "  celform patch P --list [--json]\n"
             "  celform patch P (--add NAME | --subtract NAME) [--sphere X,Y,Z,R]... [--faces A-B,C]... "
             "[--material M]... [--json]\n"

@@ -451,12 +451,6 @@ usage: %1</source>
         <translation>キーフレームのフレーム（既定値 0）。</translation>
     </message>
     <message>
-        <source>give either --list or --add NAME with its options
-usage: %1</source>
-        <translation>--list か、--add NAME とそのオプションのどちらか一方を指定してください
-使い方: %1</translation>
-    </message>
-    <message>
         <source>%1	patch %2	%3 keyframes
 </source>
         <translation>%1	パッチ %2	キーフレーム %3 個
@@ -589,6 +583,28 @@ usage: %1</source>
     <message>
         <source>Edit Patch “%1”</source>
         <translation>パッチ「%1」を編集</translation>
+    </message>
+    <message>
+        <source>Remove a layer and its use in other layers&apos; combinations.</source>
+        <translation>レイヤーと、他のレイヤーの組み合わせでのその使用を削除します。</translation>
+    </message>
+    <message>
+        <source>Rename a layer (with --to).</source>
+        <translation>レイヤーの名前を変更します（--to と一緒に）。</translation>
+    </message>
+    <message>
+        <source>The new name of --rename.</source>
+        <translation>--rename の新しい名前。</translation>
+    </message>
+    <message>
+        <source>give one of --list, --add NAME with its options, --remove NAME or --rename NAME --to NEW
+usage: %1</source>
+        <translation>--list、オプション付きの --add NAME、--remove NAME、--rename NAME --to NEW のいずれかを指定してください
+使い方: %1</translation>
+    </message>
+    <message>
+        <source>--to needs a new name no other layer has, not “%1”</source>
+        <translation>--to には他のレイヤーにない新しい名前が必要です（「%1」ではなく）</translation>
     </message>
 </context>
 <context>

@@ -400,6 +400,23 @@ private slots:
         const Mask cut = render(QStringLiteral("hl_subtract"));
         QVERIFY2(
             cut.area < base.area && cut.area > 0, qPrintable(QStringLiteral("%1 vs %2").arg(cut.area).arg(base.area)));
+
+        // Renaming the operand keeps the combination; removing it drops the combination too.
+        r = runCelform({"highlight", project, "--rename", "core", "--to", "hole"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(runCelform({"highlight", project, "--rename", "hole", "--to", "shine"}).exitCode, 2); // taken
+        r = runCelform({"highlight", project, "--list", "--json"});
+        layers = QJsonDocument::fromJson(r.out.toUtf8()).object()["layers"].toArray();
+        QCOMPARE(layers[0].toObject()["combine"].toArray()[0].toObject()["layer"].toString(), QStringLiteral("hole"));
+        QCOMPARE(render(QStringLiteral("hl_renamed")).area, cut.area);
+        r = runCelform({"highlight", project, "--remove", "hole"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(runCelform({"highlight", project, "--remove", "hole"}).exitCode, 3); // gone
+        r = runCelform({"highlight", project, "--list", "--json"});
+        layers = QJsonDocument::fromJson(r.out.toUtf8()).object()["layers"].toArray();
+        QCOMPARE(layers.size(), 1);
+        QVERIFY(layers[0].toObject()["combine"].toArray().isEmpty());
+        QCOMPARE(render(QStringLiteral("hl_removed")).area, base.area); // the key at 0 translates by (0, 0) now
     }
 
     void highlightBadInput_data()
@@ -418,6 +435,9 @@ private slots:
         QTest::newRow("combine itself") << QStringList{"--add", "x", "--combine", "union:x"} << 2;
         QTest::newRow("list and add") << QStringList{"--list", "--add", "x"} << 2;
         QTest::newRow("nothing") << QStringList{} << 2;
+        QTest::newRow("remove and add") << QStringList{"--remove", "taken", "--add", "x"} << 2;
+        QTest::newRow("rename without --to") << QStringList{"--rename", "taken"} << 2;
+        QTest::newRow("remove with options") << QStringList{"--remove", "taken", "--epsilon", "0.1"} << 2;
         QTest::newRow("unknown face set") << QStringList{"--add", "x", "--patch", "nope"} << 3;
         QTest::newRow("unknown other") << QStringList{"--add", "x", "--combine", "subtract:ghost"} << 3;
         QTest::newRow("existing without frame") << QStringList{"--add", "taken"} << 3;
