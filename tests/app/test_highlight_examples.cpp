@@ -14,6 +14,7 @@
 #include "celform/views/viewport.h"
 
 #include <QApplication>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QMenu>
 #include <QProcess>
@@ -80,6 +81,12 @@ private slots:
         views::Viewport* vp = window.viewport();
         auto* panel = window.findChild<views::HighlightPanel*>();
         QVERIFY(panel);
+        // Bring the Highlights tab forward, as an artist would.
+        for (QWidget* w = panel; w; w = w->parentWidget())
+            if (auto* dock = qobject_cast<QDockWidget*>(w)) {
+                dock->raise();
+                break;
+            }
         waitForRender(vp);
 
         // 1. The Window preset, then its patch painted on the ear with one dab of the brush.
