@@ -1178,10 +1178,24 @@ std::vector<std::int32_t> Viewport::facesUnderBrush(const QPointF& position)
     std::vector<std::uint32_t> near;
     std::vector<float> distances;
     m_patchGrid.radiusQuery(toEigen(v.picker->GetPickPosition()), m_brushRadius, near, distances);
+    // Only faces turned towards the camera, as the brush of a paint program works on what is
+    // seen: painting one side of a thin part (an ear) leaves the other side alone.
+    vtkCamera* cam = v.renderer->GetActiveCamera();
+    const Eigen::Vector3f eye = toEigen(cam->GetPosition()).cast<float>();
+    const Eigen::Vector3f forward = (toEigen(cam->GetFocalPoint()) - toEigen(cam->GetPosition())).cast<float>();
+    const bool parallel = cam->GetParallelProjection() != 0;
+    auto facesCamera = [&](std::int32_t f) {
+        const Eigen::Vector3f a = m_shape.row(mesh.faces(f, 0)), b = m_shape.row(mesh.faces(f, 1)),
+                              c = m_shape.row(mesh.faces(f, 2));
+        const Eigen::Vector3f normal = (b - a).cross(c - a);
+        const Eigen::Vector3f towardsEye = parallel ? Eigen::Vector3f(-forward) : Eigen::Vector3f(eye - a);
+        return normal.dot(towardsEye) > 0.f;
+    };
     std::vector<std::int32_t> faces{std::int32_t(cell)};
     for (const auto vertex : near)
         for (auto i = m_vertexFaceStart[vertex]; i < m_vertexFaceStart[vertex + 1]; ++i)
-            faces.push_back(m_vertexFaces[std::size_t(i)]);
+            if (const std::int32_t f = m_vertexFaces[std::size_t(i)]; facesCamera(f))
+                faces.push_back(f);
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     return faces;

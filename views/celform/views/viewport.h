@@ -138,8 +138,9 @@ public:
     /// missing. Its faces are tinted while the tool is on.
     void setPatchTarget(const QString& name);
     [[nodiscard]] QString patchTarget() const { return m_patchTarget; }
-    /// Faces a paint dab at a widget position would touch: the face under it and every face with
-    /// a corner within the brush radius of the picked point. Empty when nothing is picked.
+    /// Faces a paint dab at a widget position would touch: the face under it and every face
+    /// turned towards the camera with a corner within the brush radius of the picked point.
+    /// Empty when nothing is picked.
     [[nodiscard]] std::vector<std::int32_t> facesUnderBrush(const QPointF& position);
     // --- semi-automatic alignment: model points matched to drawing points --------------------
     /// While aligning, a click on the model adds a model point and Shift+click adds a drawing
