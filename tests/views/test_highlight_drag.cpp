@@ -38,20 +38,18 @@ class TestHighlightDrag : public QObject {
         QApplication::sendEvent(view, &release);
     }
 
-private slots:
-    void dragTranslatesTheSelectedLayer()
+    /// A unit icosphere with one highlight layer "spot" keyed at the given frames, shown in the
+    /// viewport from +Z (5.5 units away, 30 degree field of view) and drawn once.
+    void showSphereWithLayer(Document& doc, Viewport& view, const std::vector<double>& keyFrames)
     {
-        Document doc;
         celform::model::ProjectData data;
         data.baseMesh = celform::test::icosphere(4);
         celform::model::HighlightTrack track;
         track.name = QStringLiteral("spot");
-        track.setKey(0, celform::algo::HighlightLayer{});
-        track.setKey(10, celform::algo::HighlightLayer{});
+        for (const double frame : keyFrames)
+            track.setKey(frame, celform::algo::HighlightLayer{});
         data.look.highlights.push_back(track);
         doc.reset(std::move(data));
-
-        Viewport view(&doc);
         view.setLightGizmoVisible(false);
         view.resize(400, 400);
         view.show();
@@ -66,6 +64,16 @@ private slots:
         const int drawn = view.renderCount();
         view.update();
         QTRY_VERIFY(view.renderCount() > drawn);
+    }
+
+private slots:
+    void dragTranslatesTheSelectedLayer()
+    {
+        Document doc;
+        Viewport view(&doc);
+        showSphereWithLayer(doc, view, {0.0, 10.0});
+        if (QTest::currentTestFailed())
+            return;
 
         HighlightPanel panel(&doc);
         panel.setViewport(&view);
@@ -107,26 +115,10 @@ private slots:
     void paintPatchFromTheDock()
     {
         Document doc;
-        celform::model::ProjectData data;
-        data.baseMesh = celform::test::icosphere(4);
-        celform::model::HighlightTrack track;
-        track.name = QStringLiteral("spot");
-        track.setKey(0, celform::algo::HighlightLayer{});
-        data.look.highlights.push_back(track);
-        doc.reset(std::move(data));
-
         Viewport view(&doc);
-        view.setLightGizmoVisible(false);
-        view.resize(400, 400);
-        view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&view));
-        QTRY_VERIFY(view.renderCount() > 0);
-        celform::model::Camera camera;
-        camera.eye = Eigen::Vector3d(0.0, 0.0, 5.5);
-        camera.target = Eigen::Vector3d::Zero();
-        camera.up = Eigen::Vector3d::UnitY();
-        camera.fovYDegrees = 30.0;
-        view.setCamera(camera);
+        showSphereWithLayer(doc, view, {0.0});
+        if (QTest::currentTestFailed())
+            return;
         view.setBrushRadius(0.15);
 
         HighlightPanel panel(&doc);
