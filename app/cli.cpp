@@ -159,6 +159,8 @@ int commandInfo(const QStringList& args)
     const char* unspecified[] = {"dummy", "cosine", "cosine2"};
     root.insert("blend",
         QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", unspecified[int(data.blend.unspecified)]}});
+    if (data.look.renderCamera)
+        root.insert("render_camera", cameraJson(*data.look.renderCamera));
 
     if (parser.isSet(json)) {
         printOut(QString::fromUtf8(QJsonDocument(root).toJson(QJsonDocument::Indented)));
@@ -518,7 +520,8 @@ int commandSet(const QStringList& args)
 {
     const QString synopsis
         = QStringLiteral("celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] "
-                         "[--light point:X,Y,Z|directional:X,Y,Z] [--style toon|gooch|comic|lambert]");
+                         "[--light point:X,Y,Z|directional:X,Y,Z] [--style toon|gooch|comic|lambert] "
+                         "[--render-view X,Y,Z|none]");
     QCommandLineParser parser;
     parser.setApplicationDescription(Cli::tr("Changes project settings."));
     parser.addPositionalArgument(QStringLiteral("P"), Cli::tr("Project file (.celform)."));
@@ -529,9 +532,13 @@ int commandSet(const QStringList& args)
     const QCommandLineOption light(QStringLiteral("light"),
         Cli::tr("Key light: a point position or a direction towards the light."), QStringLiteral("TYPE:X,Y,Z"));
     const QCommandLineOption style(QStringLiteral("style"), Cli::tr("Shading style."), QStringLiteral("STYLE"));
-    parser.addOptions({sharpness, unspecified, light, style});
+    const QCommandLineOption renderView(QStringLiteral("render-view"),
+        Cli::tr("The render camera: looking at the model's centroid from this direction, framed; none removes it."),
+        QStringLiteral("X,Y,Z|none"));
+    parser.addOptions({sharpness, unspecified, light, style, renderView});
     parseOrThrow(parser, args, 1, synopsis);
-    if (!parser.isSet(sharpness) && !parser.isSet(unspecified) && !parser.isSet(light) && !parser.isSet(style))
+    if (!parser.isSet(sharpness) && !parser.isSet(unspecified) && !parser.isSet(light) && !parser.isSet(style)
+        && !parser.isSet(renderView))
         throw UsageError{Cli::tr("nothing to set\nusage: %1").arg(synopsis)};
 
     model::BlendSettings blend;
@@ -560,6 +567,14 @@ int commandSet(const QStringList& args)
         = parser.isSet(light) ? std::optional<model::Light>(parseLight(parser.value(light))) : std::nullopt;
     const std::optional<model::ShadingStyle> newStyle
         = parser.isSet(style) ? std::optional<model::ShadingStyle>(parseStyle(parser.value(style))) : std::nullopt;
+    std::optional<Eigen::Vector3d> newRenderView; // zero: remove the render camera
+    if (parser.isSet(renderView)) {
+        const QString v = parser.value(renderView);
+        newRenderView
+            = v == QLatin1String("none") ? Eigen::Vector3d::Zero() : parseVector(QStringLiteral("render-view"), v);
+        if (v != QLatin1String("none") && newRenderView->norm() == 0.0)
+            throw UsageError{Cli::tr("--render-view must not be zero")};
+    }
 
     auto doc = openProject(path);
     blend = doc->data().blend;
@@ -573,6 +588,14 @@ int commandSet(const QStringList& args)
         look.light = *newLight;
     if (newStyle)
         look.style = *newStyle;
+    if (newRenderView) {
+        if (newRenderView->norm() == 0.0)
+            look.renderCamera.reset();
+        else if (!doc->hasMesh())
+            throw model::IoError(path, Cli::tr("has no base model to frame a render camera on"));
+        else // framed for the widest 16:9 shot; narrower ones fit too with the vertical fit
+            look.renderCamera = cameraFromView(doc->data(), *newRenderView, 16.0 / 9.0);
+    }
     doc->setLook(look);
     doc->saveAs(path);
     return kExitOk;
@@ -1117,8 +1140,10 @@ int commandRender(const QStringList& args)
         look.showLines = *linesOverride;
     if (lightOverride)
         look.light = *lightOverride;
-    const model::Camera camera = byCamera
-        ? cameraOptions.explicitCamera(parser)
+    // Without camera options: the project's render camera, else a framed view from (0.35, 0.25, 1).
+    const model::Camera camera = byCamera ? cameraOptions.explicitCamera(parser)
+        : (!cameraOptions.byView(parser) && look.renderCamera)
+        ? *look.renderCamera
         : cameraFromView(data, cameraOptions.viewDirection(parser, Eigen::Vector3d(0.35, 0.25, 1.0)),
             double(imageSize.width()) / imageSize.height());
 
@@ -1171,7 +1196,7 @@ int runCommandLine(const QStringList& arguments)
             "  celform eval P --view X,Y,Z [--frame F] [--out MESH] [--json]\n"
             "  celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--light "
             "point:X,Y,Z|directional:X,Y,Z] "
-            "[--style toon|gooch|comic|lambert]\n"
+            "[--style toon|gooch|comic|lambert] [--render-view X,Y,Z|none]\n"
             "  celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
             "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] [--light TYPE:X,Y,Z] "
             "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] [--pass NAME] [--out FILE.png|.exr|.tif]\n"

@@ -309,6 +309,26 @@ void MainWindow::createActions()
         [this](bool on) { m_viewport->setShadingEnabled(on); });
     look->setCheckable(true);
     look->setChecked(true);
+    // The render camera (DESIGN.md, "Look"): what `celform render` looks through by default.
+    make(QStringLiteral("actionSetRenderCamera"), tr("Set &Render Camera from View"),
+        QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_0),
+        tr("Make the current view the project's render camera: celform render looks through it unless given a "
+           "camera"),
+        [this] {
+            if (!m_document->hasMesh())
+                return;
+            model::Look look = m_document->data().look;
+            look.renderCamera = m_viewport->camera();
+            m_document->setLook(look);
+            statusBar()->showMessage(tr("The render camera is the current view."), 4000);
+        });
+    make(QStringLiteral("actionViewRenderCamera"), tr("View Through Render &Camera"),
+        QKeySequence(Qt::CTRL | Qt::Key_0), tr("Look through the project's render camera"), [this] {
+            if (const auto& camera = m_document->data().look.renderCamera)
+                m_viewport->setCamera(*camera);
+            else
+                statusBar()->showMessage(tr("No render camera yet: set one from a view first (Ctrl+Alt+0)."), 4000);
+        });
     make(QStringLiteral("actionStereoReview"), tr("Stereo &Review"), QKeySequence(Qt::Key_F11),
         tr("Full-screen stereo review of the look: turntable, keys' cameras, stereo modes (H for help)"), [this] {
             auto* review = new ReviewWindow(m_document, m_viewport->camera(), this);
@@ -376,6 +396,8 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(action(QStringLiteral("actionFrameAll")));
     m_viewMenu->addAction(action(QStringLiteral("actionOrthographic")));
     m_viewMenu->addAction(action(QStringLiteral("actionPreview")));
+    m_viewMenu->addAction(action(QStringLiteral("actionSetRenderCamera")));
+    m_viewMenu->addAction(action(QStringLiteral("actionViewRenderCamera")));
     m_viewMenu->addAction(action(QStringLiteral("actionStereoReview")));
     m_viewMenu->addAction(action(QStringLiteral("actionShowLook")));
     m_viewMenu->addAction(action(QStringLiteral("actionNavigate")));

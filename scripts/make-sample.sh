@@ -14,8 +14,8 @@ rm -f resources/samples/elephant.celform.bak
 echo "wrote resources/samples/elephant.celform"
 
 # The highlight sample: the paper's two worked examples (Anjyo & Hiramitsu 2003, Figures 5 and 6)
-# on the same elephant, keyed over 30 frames, tuned for the editor's front view (Home; render it
-# with --view 0,0,1). The ear, nearly flat like a car window, carries the window streaks
+# on the same elephant, keyed over 30 frames, tuned for the front view, which is the project's
+# render camera (the editor opens looking through it, and `celform render` uses it). The ear, nearly flat like a car window, carries the window streaks
 # (rotation, directional scaling, split); the body carries a crescent (a layer minus a hidden,
 # shifted copy).
 hl=resources/samples/elephant-highlights.celform
@@ -31,5 +31,6 @@ cp resources/samples/elephant.celform "$hl"
 "$celform" highlight "$hl" --add "crescent cut" --frame 29 --op translate:0.14,0.04
 "$celform" highlight "$hl" --add crescent --patch body --smooth 6 --epsilon 0.04 \
   --combine "subtract:crescent cut" --frame 0
+"$celform" set "$hl" --render-view 0,0,1
 rm -f "$hl.bak"
 echo "wrote $hl"

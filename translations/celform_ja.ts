@@ -606,6 +606,18 @@ usage: %1</source>
         <source>--to needs a new name no other layer has, not “%1”</source>
         <translation>--to には他のレイヤーにない新しい名前が必要です（「%1」ではなく）</translation>
     </message>
+    <message>
+        <source>The render camera: looking at the model&apos;s centroid from this direction, framed; none removes it.</source>
+        <translation>レンダーカメラ: この方向からモデルの重心を見て、全体が収まる位置に置きます。none で削除します。</translation>
+    </message>
+    <message>
+        <source>--render-view must not be zero</source>
+        <translation>--render-view にゼロは指定できません</translation>
+    </message>
+    <message>
+        <source>has no base model to frame a render camera on</source>
+        <translation>にレンダーカメラを合わせるベースモデルがありません</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::MainWindow</name>
@@ -1020,6 +1032,30 @@ Recover it now?</source>
     <message>
         <source>Highlights</source>
         <translation>ハイライト</translation>
+    </message>
+    <message>
+        <source>Set &amp;Render Camera from View</source>
+        <translation>現在の視点をレンダーカメラに設定(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Make the current view the project&apos;s render camera: celform render looks through it unless given a camera</source>
+        <translation>現在の視点をプロジェクトのレンダーカメラにします: celform render はカメラの指定がなければこのカメラで描きます</translation>
+    </message>
+    <message>
+        <source>The render camera is the current view.</source>
+        <translation>レンダーカメラを現在の視点にしました。</translation>
+    </message>
+    <message>
+        <source>View Through Render &amp;Camera</source>
+        <translation>レンダーカメラから見る(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Look through the project&apos;s render camera</source>
+        <translation>プロジェクトのレンダーカメラから見ます</translation>
+    </message>
+    <message>
+        <source>No render camera yet: set one from a view first (Ctrl+Alt+0).</source>
+        <translation>レンダーカメラがまだありません。まず視点から設定してください（Ctrl+Alt+0）。</translation>
     </message>
 </context>
 <context>
@@ -1788,6 +1824,10 @@ Recover it now?</source>
     <message>
         <source>face set “%1” refers to a face out of range or out of order</source>
         <translation>面の集合「%1」に範囲外または順序の乱れた面があります</translation>
+    </message>
+    <message>
+        <source>the render camera is not a camera (eye at the target, or up along the view)</source>
+        <translation>レンダーカメラがカメラになっていません（視点が注視点と同じか、上方向が視線と平行）</translation>
     </message>
 </context>
 <context>

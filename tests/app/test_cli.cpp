@@ -264,6 +264,32 @@ private slots:
         QCOMPARE(blend["unspecified"].toString(), QStringLiteral("cosine"));
         QCOMPARE(runCelform({"set", p, "--unspecified", "sideways"}).exitCode, 2);
         QCOMPARE(runCelform({"set", p}).exitCode, 2);
+        QCOMPARE(runCelform({"set", p, "--render-view", "0,0,0"}).exitCode, 2);
+
+        // The render camera: render without a camera looks through it, exactly as through the
+        // same camera given by hand; "none" removes it.
+        QCOMPARE(runCelform({"set", p, "--render-view", "1,0.5,2"}).exitCode, 0);
+        r = runCelform({"info", p, "--json"});
+        const QJsonObject shot = QJsonDocument::fromJson(r.out.toUtf8()).object()["render_camera"].toObject();
+        QVERIFY(!shot.isEmpty());
+        auto triple = [&](const char* key) {
+            const QJsonArray a = shot[QLatin1String(key)].toArray();
+            return QStringLiteral("%1,%2,%3")
+                .arg(a[0].toDouble(), 0, 'g', 17)
+                .arg(a[1].toDouble(), 0, 'g', 17)
+                .arg(a[2].toDouble(), 0, 'g', 17);
+        };
+        const QString byDefault = m_dir.filePath(QStringLiteral("shot_default.png"));
+        const QString byHand = m_dir.filePath(QStringLiteral("shot_by_hand.png"));
+        QCOMPARE(runCelform({"render", p, "--size", "160x90", "--out", byDefault}).exitCode, 0);
+        QCOMPARE(runCelform({"render", p, "--size", "160x90", "--eye", triple("eye"), "--target", triple("target"),
+                                "--up", triple("up"), "--out", byHand})
+                     .exitCode,
+            0);
+        QCOMPARE(QImage(byDefault), QImage(byHand));
+        QCOMPARE(runCelform({"set", p, "--render-view", "none"}).exitCode, 0);
+        r = runCelform({"info", p, "--json"});
+        QVERIFY(!QJsonDocument::fromJson(r.out.toUtf8()).object().contains("render_camera"));
         QCOMPARE(
             runCelform({"brush", p, "--key", "nobody", "--vertex", "1", "--radius", "0.1", "--push", "0.1"}).exitCode,
             3);

@@ -233,6 +233,28 @@ private slots:
         QCOMPARE(style->currentData().toInt(), int(model::ShadingStyle::Toon)); // the panel follows undo
     }
 
+    void renderCameraFromTheView()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.resize(1000, 700);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(test::sampleProject()));
+        views::Viewport* vp = window.viewport();
+        QVERIFY(!window.document()->data().look.renderCamera);
+        window.action(QStringLiteral("actionSetRenderCamera"))->trigger();
+        const model::Camera shot = vp->camera();
+        QVERIFY(window.document()->data().look.renderCamera == shot);
+        // Somewhere else, then back through the render camera.
+        model::Camera elsewhere = shot;
+        elsewhere.eye = shot.target + (shot.eye - shot.target).norm() * Eigen::Vector3d(1, 0, 0);
+        vp->setCamera(elsewhere);
+        window.action(QStringLiteral("actionViewRenderCamera"))->trigger();
+        QVERIFY((vp->camera().eye - shot.eye).norm() < 1e-9 && (vp->camera().target - shot.target).norm() < 1e-9);
+        window.action(QStringLiteral("actionUndo"))->trigger();
+        QVERIFY(!window.document()->data().look.renderCamera);
+    }
+
     void screenshotOption()
     {
         QTemporaryDir dir;

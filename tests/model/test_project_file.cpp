@@ -83,6 +83,11 @@ ProjectData richProject()
     data.look.light = {LightType::Point, Eigen::Vector3d(1.5, -2, 3)};
     data.look.showLines = false;
     data.look.materialStyles[1] = ShadingStyle::Gooch;
+    Camera shot;
+    shot.eye = Eigen::Vector3d(3, 1.5, 4.25);
+    shot.target = Eigen::Vector3d(0.5, 0.5, 0.125);
+    shot.fovYDegrees = 27.5;
+    data.look.renderCamera = shot;
     data.look.toon.thresholds = {0.1f, 0.6f};
     data.look.toon.intensities = {0.2f, 0.5f, 0.9f};
     data.look.toonEvaluation = algo::ToonEvaluation::PerFace;

@@ -195,6 +195,9 @@ struct Look {
     algo::LineStyle lineStyle;
     StereoLook stereo;
     std::vector<HighlightTrack> highlights; ///< drawn in order, later over earlier
+    /// The shot's camera: `celform render` looks through it unless told otherwise; none means a
+    /// framed default view. Set from the editor's view (View menu) or `celform set --render-view`.
+    std::optional<Camera> renderCamera;
 
     [[nodiscard]] ShadingStyle styleOf(int material) const
     {
@@ -206,7 +209,8 @@ struct Look {
         return style == o.style && materialStyles == o.materialStyles && light == o.light
             && backgroundColor == o.backgroundColor && toon == o.toon && toonEvaluation == o.toonEvaluation
             && gooch == o.gooch && hatch == o.hatch && showLines == o.showLines && lines == o.lines
-            && lineStyle == o.lineStyle && stereo == o.stereo && highlights == o.highlights;
+            && lineStyle == o.lineStyle && stereo == o.stereo && highlights == o.highlights
+            && renderCamera == o.renderCamera;
     }
     bool operator!=(const Look& o) const { return !(*this == o); }
 };

@@ -208,7 +208,7 @@ QJsonObject lookJson(const Look& look)
     const auto& g = look.gooch;
     const auto& l = look.lineStyle;
     const auto& st = look.stereo;
-    return {{"style", enumName(look.style)}, {"material_styles", materialStyles},
+    QJsonObject out{{"style", enumName(look.style)}, {"material_styles", materialStyles},
         {"light", QJsonObject{{"type", enumName(look.light.type)}, {"vector", vec3(look.light.vector)}}},
         {"background", vec3f(look.backgroundColor)},
         {"toon",
@@ -236,6 +236,9 @@ QJsonObject lookJson(const Look& look)
                 {"convergence", st.convergence}, {"toe_in", st.toeIn}, {"swap_eyes", st.swapEyes},
                 {"dubois_left", matrix3(st.dubois.left)}, {"dubois_right", matrix3(st.dubois.right)}}},
         {"highlights", highlightsJson(look.highlights)}};
+    if (look.renderCamera)
+        out.insert("render_camera", cameraJson(*look.renderCamera));
+    return out;
 }
 
 QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
@@ -589,6 +592,11 @@ Look readLook(const Reader& r, const QJsonObject& look)
     }
     if (look.contains("highlights"))
         out.highlights = readHighlights(r, r.array(look, "highlights"));
+    if (look.contains("render_camera")) {
+        out.renderCamera = r.camera(r.object(look, "render_camera"));
+        if (!out.renderCamera->isValid())
+            r.corrupt(ProjectFile::tr("the render camera is not a camera (eye at the target, or up along the view)"));
+    }
     return out;
 }
 

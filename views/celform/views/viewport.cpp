@@ -331,6 +331,9 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
             rebuildMesh();
             updateOverlay();
             resetView();
+            // A project with a render camera opens looking through it, as a shot would.
+            if (const auto& shot = m_document->data().look.renderCamera)
+                setCamera(*shot);
         });
         connect(m_document, &model::Document::keysChanged, this, [this] {
             if (m_displayedKey && !m_document->data().key(m_displayedKey)) {
