@@ -10,6 +10,7 @@
 #include "celform/algorithms/tri_mesh.h"
 
 #include <functional>
+#include <cstdint>
 #include <vector>
 
 namespace celform::algo {
@@ -63,9 +64,18 @@ struct RenderPasses {
 };
 
 /// Topology data derived once per mesh and reused frame after frame (trimesh2-style caching).
+/// A highlight layer's per-vertex geometry (smoothed normals, tangent frames), which depends on
+/// the shape, the patch, the guide and the smoothing but not on the layer's keyed parameters:
+/// kept across parameter edits and frames of a still shape (model::renderHighlightsFor).
+struct HighlightGeometry {
+    std::uint64_t key = 0; ///< hash of everything the geometry depends on
+    Positions normals, du, dv;
+};
+
 struct RenderCache {
     const Faces* faces = nullptr;
     EdgeTopology topology;
+    std::vector<HighlightGeometry> highlights; ///< most recently used last, a few entries
 };
 
 /// Renders shape (the view-dependent blend for this camera, #V by 3) with mesh's faces and

@@ -142,8 +142,24 @@ algo::RenderLook renderLookFor(const ProjectData& data, const Look& look)
 /// is nearly normal to the surface without washing out the artist's direction.
 constexpr int kGuideSmoothingRounds = 4;
 
+namespace {
+
+/// 64-bit FNV-1a over raw bytes, chained through seed.
+std::uint64_t hashBytes(const void* bytes, std::size_t size, std::uint64_t seed = 14695981039346656037ull)
+{
+    const auto* p = static_cast<const unsigned char*>(bytes);
+    std::uint64_t h = seed;
+    for (std::size_t i = 0; i < size; ++i)
+        h = (h ^ p[i]) * 1099511628211ull;
+    return h;
+}
+
+constexpr std::size_t kHighlightGeometryEntries = 8;
+
+} // namespace
+
 std::vector<algo::RenderHighlight> renderHighlightsFor(
-    const ProjectData& data, const Look& look, const algo::Positions& shape, int frame)
+    const ProjectData& data, const Look& look, const algo::Positions& shape, int frame, algo::RenderCache* cache)
 {
     std::vector<algo::RenderHighlight> out;
     if (look.highlights.empty() || !data.baseMesh)
@@ -158,6 +174,7 @@ std::vector<algo::RenderHighlight> renderHighlightsFor(
         deformed.vertices = shape;
         haveUvFrames = algo::vertexTangentFramesFromUvs(deformed, normals, uvDu, uvDv);
     }
+    std::uint64_t shapeKey = 0; // hashed on first use
     auto shapeOf = [&](const QString& name) -> std::optional<algo::HighlightShape> {
         for (const HighlightTrack& t : look.highlights)
             if (t.name == name)
@@ -184,6 +201,28 @@ std::vector<algo::RenderHighlight> renderHighlightsFor(
             for (const auto f : patchFaces)
                 h.faceMask[std::size_t(f)] = 1;
         }
+        // The geometry depends on the shape, the faces, the patch, the guide and the smoothing.
+        std::uint64_t key = 0;
+        if (cache) {
+            if (shapeKey == 0)
+                shapeKey = hashBytes(shape.data(), sizeof(float) * std::size_t(shape.size()),
+                    hashBytes(mesh.faces.data(), sizeof(std::int32_t) * std::size_t(mesh.faces.size())));
+            key = hashBytes(patchFaces.data(), sizeof(std::int32_t) * patchFaces.size(), shapeKey);
+            key = hashBytes(track.guide.data(), sizeof(float) * 3, key);
+            key = hashBytes(&track.smoothing, sizeof(track.smoothing), key);
+            key = hashBytes(&haveUvFrames, sizeof(haveUvFrames), key);
+            auto& entries = cache->highlights;
+            const auto hit = std::find_if(
+                entries.begin(), entries.end(), [key](const algo::HighlightGeometry& g) { return g.key == key; });
+            if (hit != entries.end()) {
+                h.normals = hit->normals;
+                h.du = hit->du;
+                h.dv = hit->dv;
+                std::rotate(hit, hit + 1, entries.end()); // most recently used last
+                out.push_back(std::move(h));
+                continue;
+            }
+        }
         // Smoothed normals stand in for the paper's smooth patch; the guide's frames follow them
         // (UV frames stay: every pixel orthonormalises its frame against its normal anyway).
         if (track.smoothing > 0
@@ -196,6 +235,12 @@ std::vector<algo::RenderHighlight> renderHighlightsFor(
         } else if (!algo::guideVertexFrames(
                        shape, mesh.faces, layerNormals, patchFaces, track.guide, kGuideSmoothingRounds, h.du, h.dv)) {
             continue;
+        }
+        if (cache) {
+            auto& entries = cache->highlights;
+            if (entries.size() >= kHighlightGeometryEntries)
+                entries.erase(entries.begin());
+            entries.push_back({key, h.normals, h.du, h.dv});
         }
         out.push_back(std::move(h));
     }
@@ -231,7 +276,7 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache)
 {
     algo::RenderLook renderLook = renderLookFor(data, look);
-    renderLook.highlights = renderHighlightsFor(data, look, shape, frame);
+    renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::RenderPasses passes;
     algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);

@@ -20,9 +20,10 @@ algo::RenderLook renderLookFor(const ProjectData& data, const Look& look);
 /// masks (all faces for an empty patch), each track's smoothed normals over its patch when it asks
 /// for smoothing, and per-vertex tangent frames of the shape (#V by 3) from the base model's UVs
 /// when it has them, else from each track's guide over its patch (against the smoothed normals
-/// where there are some).
-std::vector<algo::RenderHighlight> renderHighlightsFor(
-    const ProjectData& data, const Look& look, const algo::Positions& shape, int frame);
+/// where there are some). With a cache, the per-vertex geometry of a track whose shape, patch,
+/// guide and smoothing are unchanged is reused (parameter edits, scrubbing a still shape).
+std::vector<algo::RenderHighlight> renderHighlightsFor(const ProjectData& data, const Look& look,
+    const algo::Positions& shape, int frame, algo::RenderCache* cache = nullptr);
 
 /// The raster camera of a document camera for an image size.
 algo::RasterCamera rasterCamera(const Camera& camera, int width, int height);

@@ -339,6 +339,7 @@ struct LookShading::Impl {
     Uniforms uniforms;
     bool active = false;
     int compiledLayers = -1; ///< highlight layers the installed shaders carry; -1: none installed
+    algo::RenderCache highlightCache; ///< the layers' geometry across parameter edits and frames
     // Clay settings restored when the look is turned off.
     bool clayLighting = true;
     double claySpecular = 0.0;
@@ -612,7 +613,8 @@ void LookShading::updateHighlights(
 {
     // The offline renderer's resolution of the tracks at the frame (keys, combinations, patches,
     // per-vertex frames), so both paths draw the same layers.
-    const std::vector<algo::RenderHighlight> layers = model::renderHighlightsFor(data, data.look, shape, frame);
+    const std::vector<algo::RenderHighlight> layers
+        = model::renderHighlightsFor(data, data.look, shape, frame, &m->highlightCache);
     Uniforms& u = m->uniforms;
     u.hlLayerCount = int(std::min<std::size_t>(layers.size(), kMaxHighlightLayers));
     u.hlColor.fill(0.f);
