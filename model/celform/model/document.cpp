@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -57,6 +58,20 @@ QString uniqueName(const QString& wanted, const std::function<bool(const QString
         if (!taken(candidate))
             return candidate;
     }
+}
+
+/// The look with its highlight layers on patch `from` (on any patch when from is empty) moved to
+/// patch `to` (empty: all faces); nothing when no layer is on it.
+std::optional<Look> lookWithLayersMoved(const Look& look, const QString& from, const QString& to)
+{
+    Look moved = look;
+    bool changed = false;
+    for (auto& track : moved.highlights)
+        if (!track.patch.isEmpty() && (from.isEmpty() || track.patch == from)) {
+            track.patch = to;
+            changed = true;
+        }
+    return changed ? std::optional<Look>(std::move(moved)) : std::nullopt;
 }
 
 } // namespace
@@ -156,13 +171,11 @@ void Document::setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QStr
         this, {}, [](ProjectData& d) { return &d.baseMeshName; }, meshName, Part::Mesh, -1, 0, cmd);
     if (dropFaceSets) {
         // Face indices mean nothing on other faces: the patches go, their layers cover all faces.
-        Look look = m_data.look;
-        for (auto& track : look.highlights)
-            track.patch.clear();
         new AssignCommand<std::vector<algo::FaceSet>>(
             this, {}, [](ProjectData& d) { return &d.faceSets; }, {}, Part::FaceSets, -1, 0, cmd);
-        new AssignCommand<Look>(
-            this, {}, [](ProjectData& d) { return &d.look; }, look, Part::Look, -1, 0, cmd);
+        if (auto look = lookWithLayersMoved(m_data.look, {}, {}))
+            new AssignCommand<Look>(
+                this, {}, [](ProjectData& d) { return &d.look; }, std::move(*look), Part::Look, -1, 0, cmd);
     }
     m_undo->push(cmd);
 }
@@ -610,16 +623,9 @@ void Document::removeFaceSet(const QString& name)
         return;
     sets.erase(it);
     auto* cmd = new QUndoCommand(tr("Delete Patch “%1”").arg(name));
-    Look look = m_data.look;
-    bool lookChanges = false;
-    for (auto& track : look.highlights)
-        if (track.patch == name) {
-            track.patch.clear();
-            lookChanges = true;
-        }
-    if (lookChanges)
+    if (auto look = lookWithLayersMoved(m_data.look, name, {}))
         new AssignCommand<Look>(
-            this, {}, [](ProjectData& d) { return &d.look; }, look, Part::Look, -1, 0, cmd);
+            this, {}, [](ProjectData& d) { return &d.look; }, std::move(*look), Part::Look, -1, 0, cmd);
     new AssignCommand<std::vector<algo::FaceSet>>(
         this, {}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), Part::FaceSets, -1, 0, cmd);
     m_undo->push(cmd);
@@ -643,16 +649,9 @@ void Document::renameFaceSet(const QString& name, const QString& newName)
     auto* cmd = new QUndoCommand(tr("Rename Patch “%1”").arg(name));
     new AssignCommand<std::vector<algo::FaceSet>>(
         this, {}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), Part::FaceSets, -1, 0, cmd);
-    Look look = m_data.look;
-    bool lookChanges = false;
-    for (auto& track : look.highlights)
-        if (track.patch == name) {
-            track.patch = trimmed;
-            lookChanges = true;
-        }
-    if (lookChanges)
+    if (auto look = lookWithLayersMoved(m_data.look, name, trimmed))
         new AssignCommand<Look>(
-            this, {}, [](ProjectData& d) { return &d.look; }, look, Part::Look, -1, 0, cmd);
+            this, {}, [](ProjectData& d) { return &d.look; }, std::move(*look), Part::Look, -1, 0, cmd);
     m_undo->push(cmd);
 }
 

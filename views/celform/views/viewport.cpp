@@ -1160,7 +1160,7 @@ std::vector<std::int32_t> Viewport::facesUnderBrush(const QPointF& position)
     const vtkIdType cell = v.picker->GetCellId();
     if (!hit || cell < 0 || cell >= vtkIdType(mesh.faceCount()))
         return {};
-    if (m_vertexFacesMesh != &mesh) {
+    if (m_vertexFacesMesh.lock() != m_document->data().baseMesh) {
         // Faces around each vertex, counted then filled (CSR): one pass each over the faces.
         const auto nv = std::size_t(mesh.vertexCount());
         m_vertexFaceStart.assign(nv + 1, 0);
@@ -1174,7 +1174,7 @@ std::vector<std::int32_t> Viewport::facesUnderBrush(const QPointF& position)
         for (Eigen::Index f = 0; f < mesh.faceCount(); ++f)
             for (int k = 0; k < 3; ++k)
                 m_vertexFaces[std::size_t(fill[std::size_t(mesh.faces(f, k))]++)] = std::int32_t(f);
-        m_vertexFacesMesh = &mesh;
+        m_vertexFacesMesh = m_document->data().baseMesh;
     }
     if (m_patchGrid.empty() || m_strokeId == 0)
         m_patchGrid = algo::VertexGrid(m_shape);

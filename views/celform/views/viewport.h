@@ -284,7 +284,7 @@ private:
     QString m_patchTarget;
     /// Faces around each vertex (CSR over the base model), built on the first paint dab.
     std::vector<std::int32_t> m_vertexFaceStart, m_vertexFaces;
-    const void* m_vertexFacesMesh = nullptr; ///< the base model m_vertexFaces was built for
+    std::weak_ptr<const algo::TriMesh> m_vertexFacesMesh; ///< the base model m_vertexFaces was built for
     algo::VertexGrid m_patchGrid; ///< over the displayed shape, for one paint stroke
     bool m_matching = false;
     std::vector<Eigen::Vector3d> m_modelPoints;
