@@ -158,7 +158,8 @@ int commandInfo(const QStringList& args)
     root.insert("key_viewpoints", keys);
     const char* unspecified[] = {"dummy", "cosine", "cosine2"};
     root.insert("blend",
-        QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", unspecified[int(data.blend.unspecified)]}});
+        QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", unspecified[int(data.blend.unspecified)]},
+            {"time", data.blend.time == model::TimeInterpolation::PeriodicSpline ? "periodic" : "natural"}});
     if (data.look.renderCamera)
         root.insert("render_camera", cameraJson(*data.look.renderCamera));
 
@@ -519,7 +520,7 @@ model::ShadingStyle parseStyle(const QString& text)
 int commandSet(const QStringList& args)
 {
     const QString synopsis
-        = QStringLiteral("celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] "
+        = QStringLiteral("celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--time natural|periodic] "
                          "[--light point:X,Y,Z|directional:X,Y,Z] [--style toon|gooch|comic|lambert] "
                          "[--render-view X,Y,Z|none]");
     QCommandLineParser parser;
@@ -532,13 +533,17 @@ int commandSet(const QStringList& args)
     const QCommandLineOption light(QStringLiteral("light"),
         Cli::tr("Key light: a point position or a direction towards the light."), QStringLiteral("TYPE:X,Y,Z"));
     const QCommandLineOption style(QStringLiteral("style"), Cli::tr("Shading style."), QStringLiteral("STYLE"));
+    const QCommandLineOption time(QStringLiteral("time"),
+        Cli::tr("Interpolation of key deformations over frames: natural (cubic spline, held outside the keyed "
+                "frames) or periodic (a looping cycle)."),
+        QStringLiteral("natural|periodic"));
     const QCommandLineOption renderView(QStringLiteral("render-view"),
         Cli::tr("The render camera: looking at the model's centroid from this direction, framed; none removes it."),
         QStringLiteral("X,Y,Z|none"));
-    parser.addOptions({sharpness, unspecified, light, style, renderView});
+    parser.addOptions({sharpness, unspecified, time, light, style, renderView});
     parseOrThrow(parser, args, 1, synopsis);
-    if (!parser.isSet(sharpness) && !parser.isSet(unspecified) && !parser.isSet(light) && !parser.isSet(style)
-        && !parser.isSet(renderView))
+    if (!parser.isSet(sharpness) && !parser.isSet(unspecified) && !parser.isSet(time) && !parser.isSet(light)
+        && !parser.isSet(style) && !parser.isSet(renderView))
         throw UsageError{Cli::tr("nothing to set\nusage: %1").arg(synopsis)};
 
     model::BlendSettings blend;
@@ -563,6 +568,16 @@ int commandSet(const QStringList& args)
         else
             throw UsageError{Cli::tr("--unspecified takes dummy, cosine or cosine2, not “%1”").arg(m)};
     }
+    std::optional<model::TimeInterpolation> newTime;
+    if (parser.isSet(time)) {
+        const QString t = parser.value(time);
+        if (t == QLatin1String("natural"))
+            newTime = model::TimeInterpolation::NaturalSpline;
+        else if (t == QLatin1String("periodic"))
+            newTime = model::TimeInterpolation::PeriodicSpline;
+        else
+            throw UsageError{Cli::tr("--time takes natural or periodic, not “%1”").arg(t)};
+    }
     const std::optional<model::Light> newLight
         = parser.isSet(light) ? std::optional<model::Light>(parseLight(parser.value(light))) : std::nullopt;
     const std::optional<model::ShadingStyle> newStyle
@@ -582,6 +597,8 @@ int commandSet(const QStringList& args)
         blend.sharpness = *alpha;
     if (mode)
         blend.unspecified = *mode;
+    if (newTime)
+        blend.time = *newTime;
     doc->setBlendSettings(blend);
     look = doc->data().look;
     if (newLight)
@@ -1194,7 +1211,7 @@ int runCommandLine(const QStringList& arguments)
             "--up X,Y,Z) [--frame F] [--drawing IMAGE] [--json]\n"
             "  celform brush P --key N --vertex I --radius R (--drag DX,DY | --push DZ) [--frame F] [--json]\n"
             "  celform eval P --view X,Y,Z [--frame F] [--out MESH] [--json]\n"
-            "  celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--light "
+            "  celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--time natural|periodic] [--light "
             "point:X,Y,Z|directional:X,Y,Z] "
             "[--style toon|gooch|comic|lambert] [--render-view X,Y,Z|none]\n"
             "  celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "

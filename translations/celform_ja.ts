@@ -618,6 +618,14 @@ usage: %1</source>
         <source>has no base model to frame a render camera on</source>
         <translation>にレンダーカメラを合わせるベースモデルがありません</translation>
     </message>
+    <message>
+        <source>Interpolation of key deformations over frames: natural (cubic spline, held outside the keyed frames) or periodic (a looping cycle).</source>
+        <translation>キー変形のフレーム間の補間: natural（3 次スプライン、キーのあるフレームの外側では保持）または periodic（ループするサイクル）。</translation>
+    </message>
+    <message>
+        <source>--time takes natural or periodic, not “%1”</source>
+        <translation>--time には natural か periodic を指定してください（「%1」ではなく）</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::MainWindow</name>
@@ -2999,6 +3007,22 @@ Size %4 × %5 × %6</source>
     <message>
         <source>(none)</source>
         <translation>（なし）</translation>
+    </message>
+    <message>
+        <source>Natural spline</source>
+        <translation>自然スプライン</translation>
+    </message>
+    <message>
+        <source>Looping cycle</source>
+        <translation>ループサイクル</translation>
+    </message>
+    <message>
+        <source>How a key&apos;s deformations at several frames are interpolated between them: a natural cubic spline held before the first and after the last, or a periodic one for looping cycles, whose last keyed frame repeats the first</source>
+        <translation>複数フレームにあるキー変形の間の補間方法: 最初より前と最後より後は保持する自然 3 次スプライン、または最後のキーフレームが最初を繰り返すループ用の周期スプライン</translation>
+    </message>
+    <message>
+        <source>&amp;Time:</source>
+        <translation>時間(&amp;T):</translation>
     </message>
 </context>
 <context>

@@ -137,6 +137,63 @@ private slots:
         }
     }
 
+    // Paper 1, section 4.2: offsets over time by cubic splines, as weights of the keyed frames.
+    void splineWeightsByHand()
+    {
+        auto near = [](const std::vector<double>& got, const std::vector<double>& want) {
+            if (got.size() != want.size())
+                return false;
+            for (std::size_t i = 0; i < got.size(); ++i)
+                if (std::abs(got[i] - want[i]) > 1e-12)
+                    return false;
+            return true;
+        };
+        // Two knots: the natural spline is the straight line.
+        QVERIFY(near(splineWeights({0, 10}, 2.5, false), {0.75, 0.25}));
+        // Three knots one apart: M1 = 1.5 (y0 - 2 y1 + y2), M0 = M2 = 0, so at t = 0.5
+        // S = 0.5 y0 + 0.5 y1 + (0.5^3 - 0.5) / 6 * M1 = 0.40625 y0 + 0.6875 y1 - 0.09375 y2.
+        QVERIFY(near(splineWeights({0, 1, 2}, 0.5, false), {0.40625, 0.6875, -0.09375}));
+        // Exactly at a knot: that knot alone; outside the range: the end held.
+        QVERIFY(near(splineWeights({0, 4, 7, 12}, 7, false), {0, 0, 1, 0}));
+        QVERIFY(near(splineWeights({0, 4, 7, 12}, -3, false), {1, 0, 0, 0}));
+        QVERIFY(near(splineWeights({0, 4, 7, 12}, 40, false), {0, 0, 0, 1}));
+        QVERIFY(near(splineWeights({5}, 1, false), {1}));
+        QVERIFY(splineWeights({}, 1, false).empty());
+        // Constants and straight lines come out unchanged (natural splines reproduce them).
+        const std::vector<double> knots{0, 3, 4, 9, 10};
+        for (double t : {0.5, 3.3, 6.0, 9.9}) {
+            const auto w = splineWeights(knots, t, false);
+            double sum = 0, line = 0;
+            for (std::size_t i = 0; i < w.size(); ++i) {
+                sum += w[i];
+                line += w[i] * (2.0 * knots[i] - 1.0);
+            }
+            QVERIFY(std::abs(sum - 1.0) < 1e-12);
+            QVERIFY(std::abs(line - (2.0 * t - 1.0)) < 1e-12);
+        }
+    }
+
+    void periodicSplineWeights()
+    {
+        // A cycle of three keys at 0, 1, 2, closed by the key at 3 (the first again).
+        const std::vector<double> knots{0, 1, 2, 3};
+        const auto w = splineWeights(knots, 0.5, true);
+        QCOMPARE(w.size(), std::size_t(4));
+        QCOMPARE(w[3], 0.0);
+        QVERIFY(std::abs(w[0] + w[1] + w[2] - 1.0) < 1e-12);
+        QVERIFY(std::abs(w[0] - w[1]) < 1e-12); // halfway between 0 and 1, by symmetry
+        // Wrapping: a frame and the same frame one cycle later or earlier agree.
+        for (double t : {3.5, -2.5, 6.5}) {
+            const auto wt = splineWeights(knots, t, true);
+            for (std::size_t i = 0; i < 4; ++i)
+                QVERIFY(std::abs(wt[i] - w[i]) < 1e-12);
+        }
+        // The closing key stands for the first.
+        QCOMPARE(splineWeights(knots, 3, true), (std::vector<double>{1, 0, 0, 0}));
+        // Too few keys for a cycle: the first holds.
+        QCOMPARE(splineWeights({0, 8}, 3, true), (std::vector<double>{1, 0}));
+    }
+
     void emptyBase()
     {
         Positions base(0, 3);

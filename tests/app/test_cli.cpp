@@ -265,6 +265,12 @@ private slots:
         QCOMPARE(runCelform({"set", p, "--unspecified", "sideways"}).exitCode, 2);
         QCOMPARE(runCelform({"set", p}).exitCode, 2);
         QCOMPARE(runCelform({"set", p, "--render-view", "0,0,0"}).exitCode, 2);
+        QCOMPARE(runCelform({"set", p, "--time", "sideways"}).exitCode, 2);
+        QCOMPARE(runCelform({"set", p, "--time", "periodic"}).exitCode, 0);
+        r = runCelform({"info", p, "--json"});
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["blend"].toObject()["time"].toString(),
+            QStringLiteral("periodic"));
+        QCOMPARE(runCelform({"set", p, "--time", "natural"}).exitCode, 0);
 
         // The render camera: render without a camera looks through it, exactly as through the
         // same camera given by hand; "none" removes it.

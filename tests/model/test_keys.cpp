@@ -64,6 +64,33 @@ private slots:
         QCOMPARE(m_doc.data().key(k2)->offsetsByFrame.count(0), std::size_t(1));
     }
 
+    // DESIGN.md, "Time" (paper 1, section 4.2): offsets keyed at some frames are interpolated per
+    // vertex, held outside the keyed range; a vertex missing at a keyed frame is zero there.
+    void offsetsOverTime()
+    {
+        KeyViewpoint key;
+        key.offsetsByFrame[0] = SparseOffsets{{1, 2}, {Eigen::Vector3f(1, 0, 0), Eigen::Vector3f(0, 4, 0)}};
+        key.offsetsByFrame[10] = SparseOffsets{{1, 3}, {Eigen::Vector3f(3, 0, 0), Eigen::Vector3f(0, 0, 2)}};
+        const auto natural = TimeInterpolation::NaturalSpline;
+        // Two keyed frames: the natural spline is linear between them.
+        const auto mid = ProjectData::offsetsAt(key, 5, natural);
+        QVERIFY(!mid.stored);
+        QCOMPARE(mid.get()->indices, (std::vector<std::uint32_t>{1, 2, 3}));
+        QVERIFY(mid.get()->deltas[0].isApprox(Eigen::Vector3f(2, 0, 0)));
+        QVERIFY(mid.get()->deltas[1].isApprox(Eigen::Vector3f(0, 2, 0)));
+        QVERIFY(mid.get()->deltas[2].isApprox(Eigen::Vector3f(0, 0, 1)));
+        // At and outside the keyed frames: the stored offsets themselves.
+        QCOMPARE(ProjectData::offsetsAt(key, 10, natural).stored, &key.offsetsByFrame[10]);
+        QCOMPARE(ProjectData::offsetsAt(key, 25, natural).stored, &key.offsetsByFrame[10]);
+        QCOMPARE(ProjectData::offsetsAt(key, -4, natural).stored, &key.offsetsByFrame[0]);
+        // keyShape follows the project's setting.
+        m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}), {}, key.offsetsByFrame[0], 0);
+        ObjectId id = m_doc.data().keys.back().id;
+        m_doc.setKeyOffsets(id, 10, key.offsetsByFrame[10], QStringLiteral("key 10"));
+        const algo::Positions shape = m_doc.data().keyShape(*m_doc.data().key(id), 5);
+        QVERIFY(shape.row(1).isApprox(m_doc.data().baseMesh->vertices.row(1) + Eigen::RowVector3f(2, 0, 0)));
+    }
+
     void duplicateDirectionIsRefused()
     {
         m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));

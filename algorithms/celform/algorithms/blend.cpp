@@ -2,8 +2,11 @@
 // everything is one pass over cache-sized blocks of vertices: each array is streamed once.
 #include "celform/algorithms/blend.h"
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <cstring>
 
 namespace celform::algo {
@@ -148,6 +151,71 @@ void blendShape(const Positions& base, const std::vector<WeightedOffsets>& keys,
     for (std::size_t k = 0; k < sparse.size(); ++k)
         assert(cursor[k] == sparse[k]->offsets.count); // every index < #V
 #endif
+}
+
+} // namespace celform::algo
+
+namespace celform::algo {
+
+std::vector<double> splineWeights(const std::vector<double>& knots, double t, bool periodic)
+{
+    const auto n = Eigen::Index(knots.size());
+    std::vector<double> w(knots.size(), 0.0);
+    if (n == 0)
+        return w;
+    if (n == 1 || (periodic && n < 3)) {
+        w[0] = 1.0;
+        return w;
+    }
+    if (periodic) {
+        const double period = knots.back() - knots.front();
+        t = knots.front() + std::fmod(t - knots.front(), period);
+        if (t < knots.front())
+            t += period;
+    } else if (t <= knots.front() || t >= knots.back()) {
+        w[t <= knots.front() ? 0 : std::size_t(n - 1)] = 1.0;
+        return w;
+    }
+    // The interval [knots[k], knots[k + 1]) holding t; exactly at a knot, that knot alone.
+    const auto upper = std::upper_bound(knots.begin(), knots.end(), t);
+    const auto k = Eigen::Index(std::max<std::ptrdiff_t>(upper - knots.begin() - 1, 0));
+    const auto wrapped = [&](Eigen::Index i) { return periodic && i == n - 1 ? Eigen::Index(0) : i; };
+    if (t == knots[std::size_t(k)]) {
+        w[std::size_t(wrapped(k))] = 1.0;
+        return w;
+    }
+    // Second derivatives M = R y (Press et al., "Numerical Recipes", 3.3): for each inner knot i
+    // h[i-1] M[i-1] + 2 (h[i-1] + h[i]) M[i] + h[i] M[i+1] = 6 ((y[i+1] - y[i]) / h[i] - (y[i] - y[i-1]) / h[i-1]).
+    // Natural ends: M = 0 at both. Periodic: the equations run round the cycle of m = n - 1 knots.
+    const Eigen::Index m = periodic ? n - 1 : n;
+    std::vector<double> h(std::size_t(n - 1));
+    for (Eigen::Index i = 0; i + 1 < n; ++i)
+        h[std::size_t(i)] = knots[std::size_t(i + 1)] - knots[std::size_t(i)];
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, m), d = Eigen::MatrixXd::Zero(m, m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+        if (!periodic && (i == 0 || i == n - 1)) {
+            a(i, i) = 1.0;
+            continue;
+        }
+        const Eigen::Index prev = (i + m - 1) % m, next = (i + 1) % m;
+        const double hp = h[std::size_t(periodic ? (i + m - 1) % m : i - 1)], hn = h[std::size_t(i)];
+        a(i, prev) += hp;
+        a(i, i) += 2.0 * (hp + hn);
+        a(i, next) += hn;
+        d(i, next) += 6.0 / hn;
+        d(i, i) -= 6.0 / hn + 6.0 / hp;
+        d(i, prev) += 6.0 / hp;
+    }
+    const Eigen::MatrixXd r = a.partialPivLu().solve(d); // M = r * y
+    const double hk = h[std::size_t(k)];
+    const double a0 = (knots[std::size_t(k + 1)] - t) / hk, b0 = 1.0 - a0;
+    const double c0 = (a0 * a0 * a0 - a0) * hk * hk / 6.0, c1 = (b0 * b0 * b0 - b0) * hk * hk / 6.0;
+    const Eigen::Index k0 = wrapped(k), k1 = wrapped(k + 1);
+    w[std::size_t(k0)] += a0;
+    w[std::size_t(k1)] += b0;
+    for (Eigen::Index j = 0; j < m; ++j)
+        w[std::size_t(j)] += c0 * r(k0, j) + c1 * r(k1, j);
+    return w;
 }
 
 } // namespace celform::algo

@@ -1,6 +1,8 @@
 // Look-ups and comparison of the project data.
 #include "celform/model/project_data.h"
 
+#include "celform/algorithms/blend.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -107,23 +109,59 @@ SparseOffsets SparseOffsets::difference(const algo::Positions& shape, const algo
     return result;
 }
 
-const SparseOffsets* ProjectData::offsetsAt(const KeyViewpoint& key, int frame)
+ProjectData::FrameOffsets ProjectData::offsetsAt(const KeyViewpoint& key, int frame, TimeInterpolation time)
 {
+    FrameOffsets result;
     if (key.offsetsByFrame.empty())
-        return nullptr;
-    auto it = key.offsetsByFrame.upper_bound(frame);
-    if (it == key.offsetsByFrame.begin())
-        return &it->second;
-    return &std::prev(it)->second;
+        return result;
+    if (key.offsetsByFrame.size() == 1) {
+        result.stored = &key.offsetsByFrame.begin()->second;
+        return result;
+    }
+    std::vector<double> knots;
+    std::vector<const SparseOffsets*> values;
+    for (const auto& [f, offsets] : key.offsetsByFrame) {
+        knots.push_back(double(f));
+        values.push_back(&offsets);
+    }
+    const std::vector<double> weights
+        = algo::splineWeights(knots, double(frame), time == TimeInterpolation::PeriodicSpline);
+    const auto single = std::find(weights.begin(), weights.end(), 1.0);
+    if (single != weights.end()
+        && std::count_if(weights.begin(), weights.end(), [](double w) { return w != 0.0; }) == 1) {
+        result.stored = values[std::size_t(single - weights.begin())];
+        return result;
+    }
+    // Sum of weighted sparse offsets: every (vertex, weighted delta), sorted, then merged.
+    std::vector<std::pair<std::uint32_t, Eigen::Vector3f>> terms;
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        if (weights[k] == 0.0)
+            continue;
+        const auto w = float(weights[k]);
+        for (std::size_t i = 0; i < values[k]->indices.size(); ++i)
+            terms.emplace_back(values[k]->indices[i], w * values[k]->deltas[i]);
+    }
+    std::stable_sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    SparseOffsets& out = result.interpolated;
+    for (const auto& [index, delta] : terms) {
+        if (!out.indices.empty() && out.indices.back() == index) {
+            out.deltas.back() += delta;
+        } else {
+            out.indices.push_back(index);
+            out.deltas.push_back(delta);
+        }
+    }
+    return result;
 }
 
 algo::Positions ProjectData::keyShape(const KeyViewpoint& key, int frame) const
 {
     Q_ASSERT(baseMesh);
     algo::Positions shape = baseMesh->vertices;
-    if (const SparseOffsets* offsets = offsetsAt(key, frame))
-        for (std::size_t i = 0; i < offsets->indices.size(); ++i)
-            shape.row(offsets->indices[i]) += offsets->deltas[i].transpose();
+    const FrameOffsets offsets = offsetsAt(key, frame, blend.time);
+    if (const SparseOffsets* o = offsets.get())
+        for (std::size_t i = 0; i < o->indices.size(); ++i)
+            shape.row(o->indices[i]) += o->deltas[i].transpose();
     return shape;
 }
 

@@ -239,10 +239,18 @@ struct ProjectData {
     [[nodiscard]] const algo::FaceSet* faceSet(const QString& name) const;
     [[nodiscard]] std::vector<QString> faceSetNames() const;
 
-    /// Key offsets at a frame: the frame's own, else the nearest earlier frame's, else the
-    /// first frame's (static models use frame 0), else none.
-    [[nodiscard]] static const SparseOffsets* offsetsAt(const KeyViewpoint& key, int frame);
-    /// Base model plus a key's offsets at a frame (#V by 3). Needs a base mesh.
+    /// A key's offsets at a frame (paper 1, section 4.2; DESIGN.md, "Time"): a keyed frame's own
+    /// offsets; between and around keyed frames, every vertex's offset interpolated over the keyed
+    /// frames by algo::splineWeights (natural cubic, held outside the keyed range, or periodic for
+    /// looping cycles), a vertex missing from a keyed frame counting as zero there.
+    struct FrameOffsets {
+        const SparseOffsets* stored = nullptr; ///< a keyed frame's own offsets (not copied)
+        SparseOffsets interpolated; ///< otherwise
+        [[nodiscard]] const SparseOffsets* get() const { return stored ? stored : &interpolated; }
+    };
+    [[nodiscard]] static FrameOffsets offsetsAt(const KeyViewpoint& key, int frame, TimeInterpolation time);
+    /// Base model plus a key's offsets at a frame (#V by 3), with the project's time
+    /// interpolation. Needs a base mesh.
     [[nodiscard]] algo::Positions keyShape(const KeyViewpoint& key, int frame) const;
 
     /// Equal stored data, mesh compared by value (used by tests and the save/load round trip).

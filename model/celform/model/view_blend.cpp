@@ -68,9 +68,15 @@ void BlendEvaluator::shape(
     Q_ASSERT(data.baseMesh);
     const BlendResult blend = weights(data, viewDirection);
     std::vector<algo::WeightedOffsets> parts;
+    // Each key's offsets at the frame (stored, or interpolated over time and held here).
+    std::vector<ProjectData::FrameOffsets> atFrame;
+    atFrame.reserve(blend.shares.size());
     for (const KeyShare& share : blend.shares) {
         const KeyViewpoint* key = data.key(share.key);
-        const SparseOffsets* offsets = key ? ProjectData::offsetsAt(*key, frame) : nullptr;
+        if (!key)
+            continue;
+        atFrame.push_back(ProjectData::offsetsAt(*key, frame, data.blend.time));
+        const SparseOffsets* offsets = atFrame.back().get();
         if (!offsets || offsets->indices.empty())
             continue;
         algo::OffsetsView view;

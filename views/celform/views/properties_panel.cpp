@@ -156,6 +156,14 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_unspecified->setToolTip(tr("How views far from every key are shaped: dummy keys return to the base model "
                                  "along the main axes; cosine modes fade each key out with the angle."));
     blendForm->addRow(tr("&Unspecified regions:"), m_unspecified);
+    m_time = new QComboBox(blendBox);
+    m_time->setObjectName(QStringLiteral("blendTime"));
+    m_time->addItem(tr("Natural spline"), int(model::TimeInterpolation::NaturalSpline));
+    m_time->addItem(tr("Looping cycle"), int(model::TimeInterpolation::PeriodicSpline));
+    m_time->setToolTip(tr("How a key's deformations at several frames are interpolated between them: a natural "
+                          "cubic spline held before the first and after the last, or a periodic one for looping "
+                          "cycles, whose last keyed frame repeats the first"));
+    blendForm->addRow(tr("&Time:"), m_time);
     m_preview = new QPushButton(tr("&Preview View-Dependent Shape"), blendBox);
     m_preview->setCheckable(true);
     m_preview->setToolTip(tr("Show the blend of the keys for the viewport's camera, updated while you orbit (P)"));
@@ -295,6 +303,13 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
             return;
         auto blend = m_document->data().blend;
         blend.unspecified = model::UnspecifiedMode(m_unspecified->itemData(index).toInt());
+        m_document->setBlendSettings(blend);
+    });
+    connect(m_time, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        if (m_updating)
+            return;
+        auto blend = m_document->data().blend;
+        blend.time = model::TimeInterpolation(m_time->itemData(index).toInt());
         m_document->setBlendSettings(blend);
     });
     connect(m_preview, &QPushButton::toggled, this, [this](bool on) {
@@ -492,6 +507,7 @@ void PropertiesPanel::refreshBlend()
     const auto& blend = m_document->data().blend;
     m_sharpness->setValue(blend.sharpness);
     m_unspecified->setCurrentIndex(m_unspecified->findData(int(blend.unspecified)));
+    m_time->setCurrentIndex(m_time->findData(int(blend.time)));
     m_updating = false;
 }
 

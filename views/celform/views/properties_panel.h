@@ -89,6 +89,7 @@ private:
 
     QDoubleSpinBox* m_sharpness;
     QComboBox* m_unspecified;
+    QComboBox* m_time;
     QPushButton* m_preview;
 };
 
