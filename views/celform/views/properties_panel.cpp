@@ -2,6 +2,8 @@
 // with the document and the viewport.
 #include "celform/views/properties_panel.h"
 
+#include <functional>
+
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
@@ -291,26 +293,15 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         if (m_viewport)
             m_viewport->setBrushMirrorX(on);
     });
-    connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double value) {
-        if (m_updating)
-            return;
-        auto blend = m_document->data().blend;
-        blend.sharpness = value;
-        m_document->setBlendSettings(blend);
-    });
+    connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+        [this](double value) { editBlend([value](model::BlendSettings& b) { b.sharpness = value; }); });
     connect(m_unspecified, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
-        if (m_updating)
-            return;
-        auto blend = m_document->data().blend;
-        blend.unspecified = model::UnspecifiedMode(m_unspecified->itemData(index).toInt());
-        m_document->setBlendSettings(blend);
+        const auto mode = model::UnspecifiedMode(m_unspecified->itemData(index).toInt());
+        editBlend([mode](model::BlendSettings& b) { b.unspecified = mode; });
     });
     connect(m_time, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
-        if (m_updating)
-            return;
-        auto blend = m_document->data().blend;
-        blend.time = model::TimeInterpolation(m_time->itemData(index).toInt());
-        m_document->setBlendSettings(blend);
+        const auto time = model::TimeInterpolation(m_time->itemData(index).toInt());
+        editBlend([time](model::BlendSettings& b) { b.time = time; });
     });
     connect(m_preview, &QPushButton::toggled, this, [this](bool on) {
         if (m_updating || !m_viewport)
@@ -499,6 +490,15 @@ void PropertiesPanel::refresh()
     m_form->setRowVisible(m_name, isDrawing || isKey);
     m_updating = false;
     refreshTools();
+}
+
+void PropertiesPanel::editBlend(const std::function<void(model::BlendSettings&)>& change)
+{
+    if (m_updating)
+        return;
+    auto blend = m_document->data().blend;
+    change(blend);
+    m_document->setBlendSettings(blend);
 }
 
 void PropertiesPanel::refreshBlend()

@@ -9,6 +9,8 @@
 #include <QPointer>
 #include <QWidget>
 
+#include <functional>
+
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
@@ -50,6 +52,8 @@ signals:
 private:
     void refresh();
     void refreshBlend();
+    /// One blend settings edit from a control (not while the panel itself updates them).
+    void editBlend(const std::function<void(model::BlendSettings&)>& change);
     void refreshTools();
     void refreshMatching();
     void importDeformation();
