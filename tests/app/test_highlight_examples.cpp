@@ -6,6 +6,7 @@
 // `celform render`.
 #include "test_support.h"
 #include "ui_test_support.h"
+#include "window_test_support.h"
 
 #include "main_window.h"
 
@@ -27,7 +28,6 @@ using namespace celform;
 
 using test::drag;
 using test::keepScreenshot;
-using test::sampleProject;
 using test::waitForRender;
 
 namespace {
@@ -73,10 +73,7 @@ private slots:
     void windowAndCrescentOnTheSample()
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);
-        window.resize(1400, 900);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(test::showSample(window));
         model::Document* doc = window.document();
         views::Viewport* vp = window.viewport();
         auto* panel = window.findChild<views::HighlightPanel*>();

@@ -3,6 +3,7 @@
 // and the --screenshot option.
 #include "test_support.h"
 #include "ui_test_support.h"
+#include "window_test_support.h"
 
 #include "main_window.h"
 #include "recovery.h"
@@ -66,10 +67,7 @@ private slots:
     void opensSampleAndOrbits()
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);
-        window.resize(1200, 800);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(test::sampleProject()));
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
         QVERIFY(window.document()->hasMesh());
         QVERIFY(!window.document()->data().drawings.empty());
         QVERIFY(window.windowTitle().startsWith(QStringLiteral("elephant.celform")));
@@ -212,10 +210,7 @@ private slots:
     void lookPanelEditsAreUndoable()
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);
-        window.resize(1400, 900);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(test::sampleProject()));
+        QVERIFY(test::showSample(window));
         auto* dock = window.findChild<QDockWidget*>(QStringLiteral("lookDock"));
         QVERIFY(dock);
         dock->raise();
@@ -236,10 +231,7 @@ private slots:
     void renderCameraFromTheView()
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);
-        window.resize(1000, 700);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(test::sampleProject()));
+        QVERIFY(test::showSample(window, QSize(1000, 700)));
         views::Viewport* vp = window.viewport();
         QVERIFY(!window.document()->data().look.renderCamera);
         window.action(QStringLiteral("actionSetRenderCamera"))->trigger();

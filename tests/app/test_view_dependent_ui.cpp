@@ -3,6 +3,7 @@
 // redo, then preview the blend (paper 1, section 3).
 #include "test_support.h"
 #include "ui_test_support.h"
+#include "window_test_support.h"
 
 #include "main_window.h"
 
@@ -22,7 +23,6 @@ using namespace celform;
 
 using test::drag;
 using test::keepScreenshot;
-using test::sampleProject;
 using test::waitForRender;
 
 class TestViewDependentUi : public QObject {
@@ -34,10 +34,7 @@ private slots:
     void alignKeyBrushUndoPreview()
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);
-        window.resize(1400, 900);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(test::showSample(window));
         model::Document* doc = window.document();
         views::Viewport* vp = window.viewport();
         views::PropertiesPanel* props = window.propertiesPanel();
@@ -129,10 +126,7 @@ private slots:
         // the camera is solved. Here the drawing points come from a known camera, which the
         // solve must find again.
         app::MainWindow window(app::MainWindow::Mode::Batch);
-        window.resize(1400, 900);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openFile(sampleProject()));
+        QVERIFY(test::showSample(window));
         model::Document* doc = window.document();
         views::Viewport* vp = window.viewport();
         views::PropertiesPanel* props = window.propertiesPanel();

@@ -2,6 +2,8 @@
 // look after undo, redo or a change from the command line, and with the panel's current frame.
 #include "celform/views/highlight_panel.h"
 
+#include "celform/views/scrolling_panel.h"
+
 #include "celform/views/color_swatch.h"
 #include "celform/views/look_shading.h"
 
@@ -229,16 +231,8 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     : QWidget(parent)
     , m_document(document)
 {
-    auto* outer = new QVBoxLayout(this);
-    outer->setContentsMargins(0, 0, 0, 0);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    auto* content = new QWidget(scroll);
-    auto* layout = new QVBoxLayout(content);
-    scroll->setWidget(content);
-    outer->addWidget(scroll);
+    QVBoxLayout* layout = scrollingPanelLayout(this);
+    QWidget* content = layout->parentWidget();
 
     // --- layers ----------------------------------------------------------------------------------
     auto* layersBox = new QGroupBox(tr("Layers"), content);

@@ -2,6 +2,8 @@
 // look after undo, redo or a change from the command line or the viewport.
 #include "celform/views/look_panel.h"
 
+#include "celform/views/scrolling_panel.h"
+
 #include "celform/views/color_swatch.h"
 
 #include <QCheckBox>
@@ -38,16 +40,8 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     : QWidget(parent)
     , m_document(document)
 {
-    auto* outer = new QVBoxLayout(this);
-    outer->setContentsMargins(0, 0, 0, 0);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the panel follows the dock's width
-    auto* content = new QWidget(scroll);
-    auto* layout = new QVBoxLayout(content);
-    scroll->setWidget(content);
-    outer->addWidget(scroll);
+    QVBoxLayout* layout = scrollingPanelLayout(this);
+    QWidget* content = layout->parentWidget();
 
     // --- shading -------------------------------------------------------------------------------
     auto* shadingBox = new QGroupBox(tr("Shading"), content);

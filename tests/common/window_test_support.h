@@ -1,0 +1,19 @@
+// Helper of the editor-window tests (tests/app): the main window shown with the bundled sample.
+#pragma once
+
+#include "ui_test_support.h"
+
+#include "main_window.h"
+
+namespace celform::test {
+
+/// Resizes and shows a window, waits until it is on screen and opens the bundled sample in it;
+/// false when either fails (use as QVERIFY(showSample(window))).
+inline bool showSample(app::MainWindow& window, const QSize& size = QSize(1400, 900))
+{
+    window.resize(size);
+    window.show();
+    return QTest::qWaitForWindowExposed(&window) && window.openFile(sampleProject());
+}
+
+} // namespace celform::test
