@@ -11,7 +11,7 @@ packages=(
   libvtk9-dev libcgal-dev libeigen3-dev
   libopenimageio-dev openimageio-tools
   libassimp-dev libtinyobjloader-dev zlib1g-dev
-  libbenchmark-dev
+  libbenchmark-dev glslang-tools
   xvfb xauth libgl1-mesa-dri
 )
 
