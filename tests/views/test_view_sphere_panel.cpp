@@ -10,6 +10,7 @@
 #include <QToolTip>
 #include <QtTest/QtTest>
 
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -222,12 +223,25 @@ private slots:
         const Eigen::Vector3d away = Eigen::Vector3d(0.1, -0.3, -1.0).normalized();
         m_panel->setViewDirection(away);
         const auto blend = m_doc->blender().weights(m_doc->data(), away);
-        if (blend.raw.facet >= 0)
-            QSKIP("the keys' hull covers this direction in Cosine mode");
+        // Every key has z >= 0 and side and left are opposite, so the origin lies on the keys'
+        // hull, not inside it: only directions in the keys' cone are covered, and away (z < 0)
+        // is not. Its nearest covered direction is the side key (+X), so the blend is side alone,
+        // faded by c = away . side (about 0.095), the rest going to the base model.
+        QCOMPARE(blend.raw.facet, -1);
+        const double c = away.dot(Eigen::Vector3d::UnitX());
+        QVERIFY2(std::abs(blend.raw.falloff - c) < 1e-9, qPrintable(QString::number(blend.raw.falloff)));
+        QCOMPARE(int(blend.shares.size()), 1);
+        QCOMPARE(blend.shares.front().key, m_ids[QStringLiteral("side")]);
+        QVERIFY2(
+            std::abs(blend.shares.front().weight - c) < 1e-9, qPrintable(QString::number(blend.shares.front().weight)));
+        QVERIFY2(std::abs(blend.baseShare - (1.0 - c)) < 1e-9, qPrintable(QString::number(blend.baseShare)));
+
         const QImage image = m_panel->grab().toImage().convertToFormat(QImage::Format_RGB32);
         image.save(QStringLiteral("/tmp/view_sphere_panel_falloff.png"));
         QVERIFY(countPixels(image, isOrange) > 20);
-        QVERIFY(m_panel->readout().contains(QStringLiteral("base ")));
+        const QString readout = m_panel->readout();
+        QVERIFY2(readout.startsWith(QStringLiteral("side ") + weightText(c)), qPrintable(readout));
+        QVERIFY2(readout.endsWith(QStringLiteral("base ") + weightText(1.0 - c)), qPrintable(readout));
     }
 
     void doubleClickOnKeyEmitsItsId()
