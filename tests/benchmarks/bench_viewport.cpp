@@ -1,10 +1,16 @@
-// Interactive speed of the viewport: orbiting the armadillo (52k triangles) with and without the
-// view-dependent preview (paper 1, section 3.2), frames per second as a rate counter. Needs an X
-// server: run under xvfb-run (Mesa llvmpipe there, so the figures are a software-GL floor).
+// Interactive speed of the viewport. Needs an X server: run under xvfb-run (Mesa llvmpipe there,
+// so the figures are a software-GL floor).
+// - orbiting the armadillo (52k triangles) with and without the view-dependent preview (paper 1,
+//   section 3.2), frames per second as a rate counter;
+// - a large mesh: the dragon (871k triangles) in a 400x300 viewport, as test_viewport shows it:
+//   a document reset to it (the viewport rebuilds its polydata and frames it), the same until the
+//   first frame is drawn, and a mesh edit alone (meshChanged: the polydata is rebuilt). The aim
+//   for the mesh edit is well under 200 ms.
 #include "celform/model/document.h"
 #include "celform/model/mesh_io.h"
 #include "celform/views/viewport.h"
 
+#include "bench_data.h"
 #include "bench_gui.h"
 
 #include <benchmark/benchmark.h>
@@ -91,6 +97,110 @@ void orbitFrames(benchmark::State& state, bool preview)
     state.counters["frames"] = double(s.viewport->renderCount() - before);
 }
 
+struct DragonScene {
+    model::Document document;
+    std::unique_ptr<views::Viewport> viewport;
+    std::shared_ptr<algo::TriMesh> dragon;
+    /// What the document shows between timed resets, so that each reset really changes the mesh.
+    std::shared_ptr<algo::TriMesh> small;
+    bool ok = false;
+};
+
+bool g_dragonBuilt = false;
+
+/// Waits until the viewport has drawn a frame after the one counted in before.
+bool waitForFrame(views::Viewport& viewport, int before)
+{
+    viewport.update();
+    for (int i = 0; i < 1000 && viewport.renderCount() == before; ++i)
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    return viewport.renderCount() > before;
+}
+
+DragonScene& dragonScene()
+{
+    static DragonScene scene;
+    if (g_dragonBuilt)
+        return scene;
+    g_dragonBuilt = true;
+    const algo::TriMesh* dragon = bench::dragon();
+    if (!dragon || qEnvironmentVariableIsEmpty("DISPLAY"))
+        return scene;
+    scene.dragon = std::make_shared<algo::TriMesh>(*dragon);
+    // A tetrahedron: what the document holds between timed resets.
+    scene.small = std::make_shared<algo::TriMesh>();
+    scene.small->vertices.resize(4, 3);
+    scene.small->vertices << 0, 0, 0, 0.1f, 0, 0, 0, 0.1f, 0, 0, 0, 0.1f;
+    scene.small->faces.resize(4, 3);
+    scene.small->faces << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
+    model::ProjectData data;
+    data.baseMesh = scene.small;
+    scene.document.reset(std::move(data));
+    scene.viewport = std::make_unique<views::Viewport>(&scene.document);
+    scene.viewport->resize(400, 300);
+    scene.viewport->show();
+    scene.ok = waitForFrame(*scene.viewport, 0);
+    return scene;
+}
+
+void resetTo(DragonScene& s, const std::shared_ptr<algo::TriMesh>& mesh)
+{
+    model::ProjectData data;
+    data.baseMesh = mesh;
+    s.document.reset(std::move(data)); // the viewport rebuilds on documentReset
+}
+
+/// A document reset to the dragon, from the small mesh (reset outside the timing); with
+/// toFirstFrame, until the viewport has drawn the dragon.
+void dragonReset(benchmark::State& state, bool toFirstFrame)
+{
+    DragonScene& s = dragonScene();
+    if (!s.ok) {
+        state.SkipWithError("needs ../shared/data and an X server (run under xvfb-run)");
+        return;
+    }
+    for (auto _ : state) {
+        state.PauseTiming();
+        resetTo(s, s.small);
+        waitForFrame(*s.viewport, s.viewport->renderCount());
+        const int before = s.viewport->renderCount();
+        state.ResumeTiming();
+        resetTo(s, s.dragon);
+        if (toFirstFrame && !waitForFrame(*s.viewport, before)) {
+            state.SkipWithError("the viewport did not draw");
+            return;
+        }
+    }
+}
+
+void BM_DragonReset(benchmark::State& state)
+{
+    dragonReset(state, false);
+}
+
+void BM_DragonResetToFirstFrame(benchmark::State& state)
+{
+    dragonReset(state, true);
+}
+
+/// A mesh edit alone on the dragon: the viewport rebuilds the polydata (drawing not included).
+void BM_DragonMeshRebuild(benchmark::State& state)
+{
+    DragonScene& s = dragonScene();
+    if (!s.ok) {
+        state.SkipWithError("needs ../shared/data and an X server (run under xvfb-run)");
+        return;
+    }
+    if (s.document.data().baseMesh != s.dragon) {
+        resetTo(s, s.dragon);
+        waitForFrame(*s.viewport, s.viewport->renderCount());
+    }
+    for (auto _ : state)
+        emit s.document.meshChanged();
+    // The frame each edit asked for, outside the timing.
+    waitForFrame(*s.viewport, s.viewport->renderCount());
+}
+
 void BM_OrbitArmadillo(benchmark::State& state)
 {
     orbitFrames(state, false);
@@ -115,11 +225,17 @@ BENCHMARK(BM_OrbitArmadilloPreview)
     ->Repetitions(3)
     ->ReportAggregatesOnly(true);
 
+BENCHMARK(BM_DragonReset)->Apply([](auto* b) { celform::bench::interactiveBenchmark(b); });
+BENCHMARK(BM_DragonResetToFirstFrame)->Apply([](auto* b) { celform::bench::interactiveBenchmark(b); });
+BENCHMARK(BM_DragonMeshRebuild)->Apply([](auto* b) { celform::bench::interactiveBenchmark(b); });
+
 int main(int argc, char** argv)
 {
     // The viewport's GL context must go before the QApplication.
     return celform::bench::runViewportBenchmarks(argc, argv, [] {
         if (g_sceneBuilt)
             scene().viewport.reset();
+        if (g_dragonBuilt)
+            dragonScene().viewport.reset();
     });
 }

@@ -11,7 +11,6 @@
 #include "test_meshes.h"
 
 #include <QApplication>
-#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QtTest/QtTest>
 
@@ -404,29 +403,21 @@ private slots:
         m_doc->reset(std::move(back));
     }
 
-    void largeMeshBuildTime()
+    void largeMeshRebuilds()
     {
-        // The shared dragon, 871k triangles: building its polydata must stay interactive.
+        // The shared dragon, 871k triangles: a document reset and a mesh edit both rebuild its
+        // polydata, and the model is drawn framed. How long that takes is measured by
+        // tests/benchmarks/bench_viewport (BM_DragonReset, BM_DragonResetToFirstFrame,
+        // BM_DragonMeshRebuild), not asserted here.
         CELFORM_REQUIRE_SHARED(path, QStringLiteral("meshes/stanford_dragon.ply"));
         auto dragon = importShared(QStringLiteral("meshes/stanford_dragon.ply"));
         QVERIFY(dragon && dragon->faceCount() == 871414);
         ProjectData data;
         data.baseMesh = dragon;
-        QElapsedTimer timer;
-        timer.start();
         m_doc->reset(std::move(data)); // the viewport rebuilds on documentReset
-        const qint64 resetMs = timer.elapsed();
-        frame();
-        const qint64 firstFrameMs = timer.elapsed();
+        checkModelVisible(frame(), 0.15);
         // A mesh edit alone: only the polydata is rebuilt.
-        timer.restart();
         emit m_doc->meshChanged();
-        const qint64 buildMs = timer.elapsed();
-        qInfo("dragon (871,414 triangles): polydata rebuild %lld ms, document reset + rebuild %lld ms, "
-              "first frame %lld ms after reset",
-            buildMs, resetMs, firstFrameMs);
-        // The target is well under 200 ms; the bound leaves room for a loaded test machine.
-        QVERIFY2(buildMs < 600, qPrintable(QString::number(buildMs)));
         const QImage image = frame();
         checkModelVisible(image, 0.15);
         image.save(QStringLiteral("/tmp/viewport_dragon.png"));
