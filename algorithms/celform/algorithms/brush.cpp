@@ -382,65 +382,131 @@ void assertOrthonormal(const ImageFrame& frame)
         && std::abs(frame.up.dot(frame.forward)) < 1e-6);
 }
 
-/// Displacements from an in-plane map of (right, up) offsets relative to the picked vertex.
+/// Displacements (into out, #selection by 3) from an in-plane map of (right, up) offsets relative
+/// to the picked vertex.
 template <typename InPlane>
-Positions inPlaneEdit(const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, InPlane&& map)
+void inPlaneEdit(
+    const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, InPlane&& map, Positions& out)
 {
     assertOrthonormal(frame);
     assert(Eigen::Index(selection.picked) < shape.rows());
     const Eigen::Vector3d pivot = shape.row(selection.picked).transpose().cast<double>();
-    Positions delta(Eigen::Index(selection.indices.size()), 3);
+    out.resize(Eigen::Index(selection.indices.size()), 3);
     for (std::size_t k = 0; k < selection.indices.size(); ++k) {
         const Eigen::Vector3d q = shape.row(selection.indices[k]).transpose().cast<double>() - pivot;
         const Eigen::Vector2d ab(q.dot(frame.right), q.dot(frame.up));
         const Eigen::Vector2d moved = map(ab, double(selection.weights[k]));
         // Only right and up components change: the forward (depth) component is kept.
         const Eigen::Vector3d d = (moved.x() - ab.x()) * frame.right + (moved.y() - ab.y()) * frame.up;
-        delta.row(Eigen::Index(k)) = d.transpose().cast<float>();
+        out.row(Eigen::Index(k)) = d.transpose().cast<float>();
     }
-    return delta;
+}
+
+/// Each selected vertex moved by its falloff weight times move.
+void weightedMove(const BrushSelection& selection, const Eigen::Vector3d& move, Positions& out)
+{
+    out.resize(Eigen::Index(selection.indices.size()), 3);
+    for (std::size_t k = 0; k < selection.indices.size(); ++k)
+        out.row(Eigen::Index(k)) = (double(selection.weights[k]) * move).transpose().cast<float>();
 }
 
 } // namespace
 
-Positions brushDrag(const BrushSelection& selection, const ImageFrame& frame, double dx, double dy)
+void brushDrag(const BrushSelection& selection, const ImageFrame& frame, double dx, double dy, Positions& out)
 {
     assertOrthonormal(frame);
     // Paper 1, section 3.1.2: every selected vertex follows the drag scaled by its falloff, in the
     // image plane, so the Z distance from the camera stays unchanged.
-    const Eigen::RowVector3d move = (dx * frame.right + dy * frame.up).transpose();
-    Positions delta(Eigen::Index(selection.indices.size()), 3);
-    for (std::size_t k = 0; k < selection.indices.size(); ++k)
-        delta.row(Eigen::Index(k)) = (double(selection.weights[k]) * move).cast<float>();
-    return delta;
+    weightedMove(selection, dx * frame.right + dy * frame.up, out);
+}
+
+Positions brushDrag(const BrushSelection& selection, const ImageFrame& frame, double dx, double dy)
+{
+    Positions out;
+    brushDrag(selection, frame, dx, dy, out);
+    return out;
+}
+
+void brushPush(const BrushSelection& selection, const ImageFrame& frame, double dz, Positions& out)
+{
+    assertOrthonormal(frame);
+    // Paper 1, section 3.1.2: push and pull along the view direction, same falloff.
+    weightedMove(selection, dz * frame.forward, out);
 }
 
 Positions brushPush(const BrushSelection& selection, const ImageFrame& frame, double dz)
 {
-    assertOrthonormal(frame);
-    // Paper 1, section 3.1.2: push and pull along the view direction, same falloff.
-    const Eigen::RowVector3d move = (dz * frame.forward).transpose();
-    Positions delta(Eigen::Index(selection.indices.size()), 3);
-    for (std::size_t k = 0; k < selection.indices.size(); ++k)
-        delta.row(Eigen::Index(k)) = (double(selection.weights[k]) * move).cast<float>();
-    return delta;
+    Positions out;
+    brushPush(selection, frame, dz, out);
+    return out;
+}
+
+void brushRotate(
+    const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, double angle, Positions& out)
+{
+    // Paper 1, section 3.1.2 (suggested rotations): in screen coordinates (a, b) = (right, up) a
+    // positive angle turns right toward up.
+    inPlaneEdit(
+        selection, shape, frame,
+        [angle](const Eigen::Vector2d& ab, double w) {
+            const double c = std::cos(angle * w), s = std::sin(angle * w);
+            return Eigen::Vector2d(c * ab.x() - s * ab.y(), s * ab.x() + c * ab.y());
+        },
+        out);
 }
 
 Positions brushRotate(const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, double angle)
 {
-    // Paper 1, section 3.1.2 (suggested rotations): in screen coordinates (a, b) = (right, up) a
-    // positive angle turns right toward up.
-    return inPlaneEdit(selection, shape, frame, [angle](const Eigen::Vector2d& ab, double w) {
-        const double c = std::cos(angle * w), s = std::sin(angle * w);
-        return Eigen::Vector2d(c * ab.x() - s * ab.y(), s * ab.x() + c * ab.y());
-    });
+    Positions out;
+    brushRotate(selection, shape, frame, angle, out);
+    return out;
+}
+
+void brushScale(
+    const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, double factor, Positions& out)
+{
+    // Paper 1, section 3.1.2 (suggested scalings), blended by the falloff weight.
+    inPlaneEdit(
+        selection, shape, frame,
+        [factor](const Eigen::Vector2d& ab, double w) { return Eigen::Vector2d((1.0 + (factor - 1.0) * w) * ab); },
+        out);
 }
 
 Positions brushScale(const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, double factor)
 {
-    // Paper 1, section 3.1.2 (suggested scalings), blended by the falloff weight.
-    return inPlaneEdit(selection, shape, frame,
-        [factor](const Eigen::Vector2d& ab, double w) { return Eigen::Vector2d((1.0 + (factor - 1.0) * w) * ab); });
+    Positions out;
+    brushScale(selection, shape, frame, factor, out);
+    return out;
+}
+
+void brushSmooth(const BrushSelection& selection, const Positions& shape, const Faces& faces, const VertexFaces& around,
+    double strength, Positions& out, std::vector<std::int32_t>& scratch)
+{
+    assert(around.start.size() == std::size_t(shape.rows()) + 1);
+    out.resize(Eigen::Index(selection.indices.size()), 3);
+    for (std::size_t k = 0; k < selection.indices.size(); ++k) {
+        const std::uint32_t v = selection.indices[k];
+        // The one ring from the faces around v: the two other corners of each face, distinct.
+        scratch.clear();
+        for (auto i = around.start[v]; i < around.start[v + 1]; ++i) {
+            const std::int32_t f = around.faces[std::size_t(i)];
+            for (int c = 0; c < 3; ++c)
+                if (faces(f, c) != std::int32_t(v))
+                    scratch.push_back(faces(f, c));
+        }
+        std::sort(scratch.begin(), scratch.end());
+        scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+        if (scratch.empty()) {
+            out.row(Eigen::Index(k)).setZero();
+            continue;
+        }
+        Eigen::Vector3d average = Eigen::Vector3d::Zero();
+        for (const std::int32_t n : scratch)
+            average += shape.row(n).transpose().cast<double>();
+        average /= double(scratch.size());
+        const Eigen::Vector3d p = shape.row(v).transpose().cast<double>();
+        out.row(Eigen::Index(k)) = (strength * double(selection.weights[k]) * (average - p)).transpose().cast<float>();
+    }
 }
 
 Positions brushSmooth(const BrushSelection& selection, const Positions& shape, const Faces& faces, double strength)

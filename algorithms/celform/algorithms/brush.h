@@ -3,6 +3,7 @@
 // (1 - d/r)^2, keeping camera-space depth.
 #pragma once
 
+#include "celform/algorithms/mesh_topology.h"
 #include "celform/algorithms/tri_mesh.h"
 
 #include <cstdint>
@@ -65,21 +66,33 @@ struct ImageFrame {
 /// right and up at the picked vertex: parallel to the image plane, so camera-space depth is kept
 /// for perspective and orthographic cameras alike.
 Positions brushDrag(const BrushSelection& selection, const ImageFrame& frame, double dx, double dy);
+/// The same into out (resized; no allocation when it already has the selection's size).
+void brushDrag(const BrushSelection& selection, const ImageFrame& frame, double dx, double dy, Positions& out);
 /// Displacement for a push of dz world units along forward (positive = away from the camera).
 Positions brushPush(const BrushSelection& selection, const ImageFrame& frame, double dz);
+void brushPush(const BrushSelection& selection, const ImageFrame& frame, double dz, Positions& out);
 /// Rotation by angle (radians, counter-clockwise on screen) about the axis through the picked
 /// vertex along forward, scaled per vertex by its falloff weight (angle * weight). Sign: a positive
 /// angle turns right toward up, so a vertex at pivot + right goes to pivot + up after +90 degrees
 /// with weight 1; for a right-handed frame (forward = up x right) that is a right-hand rotation
 /// about -forward (toward the viewer). Depth is kept.
 Positions brushRotate(const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, double angle);
+void brushRotate(
+    const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, double angle, Positions& out);
 /// Scaling by factor in the image plane about the picked vertex (depth kept), per-vertex
 /// factor 1 + (factor - 1) * weight.
 Positions brushScale(const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, double factor);
+void brushScale(
+    const BrushSelection& selection, const Positions& shape, const ImageFrame& frame, double factor, Positions& out);
 /// Laplacian smoothing step toward the one-ring average (distinct neighbours from faces),
 /// strength in [0, 1] times the weight. Builds the adjacency of the selected vertices only, in
 /// one pass over the faces without allocating per-mesh tables. Vertices without faces stay put.
 Positions brushSmooth(const BrushSelection& selection, const Positions& shape, const Faces& faces, double strength);
+/// The same with the mesh's faces-around-vertex table (TriMesh::vertexFaces()): O(selection)
+/// instead of a pass over every face, the stroke's steps after the first allocate nothing.
+/// scratch is working memory kept by the caller.
+void brushSmooth(const BrushSelection& selection, const Positions& shape, const Faces& faces, const VertexFaces& around,
+    double strength, Positions& out, std::vector<std::int32_t>& scratch);
 
 /// For X-mirror editing: for each vertex the index of its mirror across x = 0 in the base shape
 /// (nearest vertex to (-x, y, z) within tolerance, world units), or -1. A vertex on the plane maps

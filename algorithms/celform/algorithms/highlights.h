@@ -194,6 +194,7 @@ HighlightSample evaluateHighlights(const HighlightSurfacePoint& point, const Hig
 struct HighlightKey {
     double frame = 0.0;
     HighlightLayer layer;
+    bool operator==(const HighlightKey& o) const { return frame == o.frame && layer == o.layer; }
 };
 
 /// True iff a and b have the same operation types and combination modes in the same order, so

@@ -3,27 +3,13 @@
 // frame, chained into strokes, then styled with the comic paper's hand-drawn look.
 #pragma once
 
+#include "celform/algorithms/mesh_topology.h"
 #include "celform/algorithms/tri_mesh.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace celform::algo {
-
-/// Edge adjacency of a triangle mesh: each undirected edge once, with up to two faces. Built by
-/// sorting edge keys (not the comic paper's quadratic temp list); edges with more than two faces
-/// keep their first two and are flagged.
-struct EdgeTopology {
-    /// #E by 2 vertex indices, v0 < v1.
-    Eigen::Matrix<std::int32_t, Eigen::Dynamic, 2, Eigen::RowMajor> edges;
-    /// #E by 2 face indices; second is -1 on a border (open) edge.
-    Eigen::Matrix<std::int32_t, Eigen::Dynamic, 2, Eigen::RowMajor> faces;
-    std::vector<std::uint8_t> nonManifold; ///< 1 where the edge has more than two faces
-    std::int64_t borderEdges = 0;
-    std::int64_t nonManifoldEdges = 0;
-};
-
-EdgeTopology buildEdgeTopology(const Faces& faces, std::int32_t vertexCount);
 
 enum LineKind : std::uint8_t {
     kSilhouette = 1, ///< between a front- and a back-facing triangle

@@ -1,7 +1,11 @@
 // Basic measures of a triangle mesh.
 #include "celform/algorithms/tri_mesh.h"
 
+#include "celform/algorithms/brush.h"
+
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 namespace celform::algo {
 
@@ -47,6 +51,127 @@ Positions vertexNormals(const Positions& vertices, const Faces& faces)
             normals.row(i) << 0.f, 0.f, 1.f;
     }
     return normals;
+}
+
+// --- derived data ----------------------------------------------------------------------------
+
+struct TriMesh::Derived {
+    std::once_flag topologyOnce, vertexFacesOnce, normalsOnce, centreOnce, mirrorOnce;
+    EdgeTopology topology;
+    VertexFaces vertexFaces;
+    Positions normals;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    std::vector<std::int32_t> mirror;
+};
+
+TriMesh::TriMesh()
+    : m_derived(std::make_unique<Derived>())
+{ }
+
+TriMesh::~TriMesh() = default;
+
+TriMesh::TriMesh(const TriMesh& o)
+    : vertices(o.vertices)
+    , faces(o.faces)
+    , uvs(o.uvs)
+    , uvFaces(o.uvFaces)
+    , faceMaterials(o.faceMaterials)
+    , materials(o.materials)
+    , m_derived(std::make_unique<Derived>())
+{ }
+
+TriMesh::TriMesh(TriMesh&& o) noexcept
+    : vertices(std::move(o.vertices))
+    , faces(std::move(o.faces))
+    , uvs(std::move(o.uvs))
+    , uvFaces(std::move(o.uvFaces))
+    , faceMaterials(std::move(o.faceMaterials))
+    , materials(std::move(o.materials))
+    , m_derived(std::make_unique<Derived>())
+{
+    o.clearDerived();
+}
+
+TriMesh& TriMesh::operator=(const TriMesh& o)
+{
+    if (this != &o) {
+        vertices = o.vertices;
+        faces = o.faces;
+        uvs = o.uvs;
+        uvFaces = o.uvFaces;
+        faceMaterials = o.faceMaterials;
+        materials = o.materials;
+        clearDerived();
+    }
+    return *this;
+}
+
+TriMesh& TriMesh::operator=(TriMesh&& o) noexcept
+{
+    if (this != &o) {
+        vertices = std::move(o.vertices);
+        faces = std::move(o.faces);
+        uvs = std::move(o.uvs);
+        uvFaces = std::move(o.uvFaces);
+        faceMaterials = std::move(o.faceMaterials);
+        materials = std::move(o.materials);
+        clearDerived();
+        o.clearDerived();
+    }
+    return *this;
+}
+
+void TriMesh::clearDerived()
+{
+    m_derived = std::make_unique<Derived>();
+}
+
+const EdgeTopology& TriMesh::edgeTopology() const
+{
+    std::call_once(m_derived->topologyOnce,
+        [this] { m_derived->topology = buildEdgeTopology(faces, std::int32_t(vertices.rows())); });
+    return m_derived->topology;
+}
+
+const VertexFaces& TriMesh::vertexFaces() const
+{
+    std::call_once(m_derived->vertexFacesOnce,
+        [this] { m_derived->vertexFaces = buildVertexFaces(faces, std::int32_t(vertices.rows())); });
+    return m_derived->vertexFaces;
+}
+
+const Positions& TriMesh::normals() const
+{
+    std::call_once(m_derived->normalsOnce, [this] { m_derived->normals = vertexNormals(vertices, faces); });
+    return m_derived->normals;
+}
+
+const Eigen::Vector3d& TriMesh::centre() const
+{
+    std::call_once(m_derived->centreOnce, [this] { m_derived->centre = centroid(vertices); });
+    return m_derived->centre;
+}
+
+const std::vector<std::int32_t>& TriMesh::xMirror() const
+{
+    std::call_once(m_derived->mirrorOnce, [this] {
+        const double diagonal = boundingBox(vertices).diagonal().norm();
+        m_derived->mirror = mirrorMap(vertices, 1e-4 * (std::isfinite(diagonal) ? diagonal : 0.0));
+    });
+    return m_derived->mirror;
+}
+
+// --- shapes ----------------------------------------------------------------------------------
+
+std::uint64_t newShapeGeneration()
+{
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+}
+
+void Shape::touch()
+{
+    generation = newShapeGeneration();
 }
 
 } // namespace celform::algo

@@ -2,21 +2,18 @@
 // so a whole array can be handed to VTK or written to a file without reshuffling.
 #pragma once
 
+#include "celform/algorithms/mesh_topology.h"
+#include "celform/algorithms/mesh_types.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace celform::algo {
-
-/// #V by 3 vertex positions (x, y, z), float as in every mesh file format.
-using Positions = Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor>;
-/// #F by 3 vertex indices of counter-clockwise triangles.
-using Faces = Eigen::Matrix<std::int32_t, Eigen::Dynamic, 3, Eigen::RowMajor>;
-/// #T by 2 texture coordinates.
-using TexCoords = Eigen::Matrix<float, Eigen::Dynamic, 2, Eigen::RowMajor>;
 
 struct Material {
     std::string name;
@@ -32,6 +29,14 @@ struct FaceSet {
 };
 
 struct TriMesh {
+    TriMesh();
+    ~TriMesh();
+    /// Copies and moves carry the data, never the derived tables (a copy is usually edited).
+    TriMesh(const TriMesh& other);
+    TriMesh(TriMesh&& other) noexcept;
+    TriMesh& operator=(const TriMesh& other);
+    TriMesh& operator=(TriMesh&& other) noexcept;
+
     Positions vertices;
     Faces faces;
     /// Optional texture coordinates with their own per-corner indices (#F by 3 into uvs), as in
@@ -46,7 +51,43 @@ struct TriMesh {
     [[nodiscard]] Eigen::Index faceCount() const { return faces.rows(); }
     [[nodiscard]] bool hasUvs() const { return uvs.rows() > 0 && uvFaces.rows() == faces.rows(); }
     bool operator==(const TriMesh& o) const;
+
+    // --- derived data, computed on first use and kept with the mesh (trimesh2's need_* style) ---
+    // A mesh shared as std::shared_ptr<const TriMesh> never changes, so each table is built at
+    // most once per mesh, whoever asks first; safe to ask from several threads. Code that edits a
+    // mesh's arrays after asking must call clearDerived().
+
+    /// Edge adjacency (lines, silhouettes).
+    [[nodiscard]] const EdgeTopology& edgeTopology() const;
+    /// Faces around each vertex (patch painting, brushes, partial normal updates).
+    [[nodiscard]] const VertexFaces& vertexFaces() const;
+    /// Area-weighted vertex normals of `vertices` (algo::vertexNormals).
+    [[nodiscard]] const Positions& normals() const;
+    /// Mean of the vertex positions (algo::centroid).
+    [[nodiscard]] const Eigen::Vector3d& centre() const;
+    /// For X-mirror editing: each vertex's mirror across x = 0 (algo::mirrorMap with a tolerance
+    /// of 1e-4 of the bounding-box diagonal), -1 where there is none.
+    [[nodiscard]] const std::vector<std::int32_t>& xMirror() const;
+    void clearDerived();
+
+private:
+    struct Derived;
+    std::unique_ptr<Derived> m_derived;
 };
+
+/// Vertex positions of one topology at one moment (a key's shape, a blend) with a generation
+/// number that changes whenever the positions do: caches of derived data (lines, highlight
+/// frames) compare generations instead of hashing or copying the positions.
+struct Shape {
+    Positions positions;
+    std::uint64_t generation = 0; ///< 0: never filled
+
+    /// Call after changing positions.
+    void touch();
+};
+
+/// A generation number not handed out before in this process (never 0).
+std::uint64_t newShapeGeneration();
 
 /// Mean of the vertex positions: the origin of view directions (DESIGN.md conventions).
 Eigen::Vector3d centroid(const Positions& vertices);

@@ -1,4 +1,6 @@
-// Document edits: each builds an undo command and pushes it; the command does the change.
+// Document core: files, the playhead, gestures, change notification, and the edits of the base
+// model, drawings and key viewpoints. The look, highlights and key offsets have files of their own
+// (document_look.cpp, document_highlights.cpp, document_offsets.cpp).
 #include "celform/model/document.h"
 
 #include "celform/model/document_commands.h"
@@ -30,24 +32,6 @@ std::int64_t maxOffsetIndex(const ProjectData& data)
     return m;
 }
 
-/// A command that records the id counter, so undoing an addition leaves the data as it was.
-class NextIdCommand : public QUndoCommand {
-public:
-    NextIdCommand(Document* doc, ObjectId after, QUndoCommand* parent)
-        : QUndoCommand(parent)
-        , m_doc(doc)
-        , m_before(doc->data().nextId)
-        , m_after(after)
-    { }
-    void redo() override { m_doc->mutableData().nextId = m_after; }
-    void undo() override { m_doc->mutableData().nextId = m_before; }
-
-private:
-    Document* m_doc;
-    ObjectId m_before;
-    ObjectId m_after;
-};
-
 QString uniqueName(const QString& wanted, const std::function<bool(const QString&)>& taken)
 {
     const QString base = wanted.trimmed().isEmpty() ? Document::tr("Untitled") : wanted.trimmed();
@@ -60,18 +44,34 @@ QString uniqueName(const QString& wanted, const std::function<bool(const QString
     }
 }
 
-/// The look with its highlight layers on patch `from` (on any patch when from is empty) moved to
-/// patch `to` (empty: all faces); nothing when no layer is on it.
-std::optional<Look> lookWithLayersMoved(const Look& look, const QString& from, const QString& to)
+QString idTarget(ObjectId id)
 {
-    Look moved = look;
-    bool changed = false;
-    for (auto& track : moved.highlights)
-        if (!track.patch.isEmpty() && (from.isEmpty() || track.patch == from)) {
-            track.patch = to;
-            changed = true;
-        }
-    return changed ? std::optional<Look>(std::move(moved)) : std::nullopt;
+    return QString::number(id);
+}
+
+ChangeSet structural(Part part, ObjectId id = 0)
+{
+    ChangeSet c = ChangeSet::of(part, id);
+    c.structure = true;
+    return c;
+}
+
+/// Locates a drawing's member by id.
+template <typename T> std::function<T*(ProjectData&)> drawingField(ObjectId id, T Drawing::*member)
+{
+    return [id, member](ProjectData& d) -> T* {
+        Drawing* x = d.drawing(id);
+        return x ? &(x->*member) : nullptr;
+    };
+}
+
+/// Locates a key's member by id.
+template <typename T> std::function<T*(ProjectData&)> keyField(ObjectId id, T KeyViewpoint::*member)
+{
+    return [id, member](ProjectData& d) -> T* {
+        KeyViewpoint* x = d.key(id);
+        return x ? &(x->*member) : nullptr;
+    };
 }
 
 } // namespace
@@ -79,46 +79,67 @@ std::optional<Look> lookWithLayersMoved(const Look& look, const QString& from, c
 Document::Document(QObject* parent)
     : QObject(parent)
     , m_undo(new QUndoStack(this))
-{ }
+{
+    // Anything that changes the stack's top ends the brush stroke's in-place updates.
+    connect(m_undo, &QUndoStack::indexChanged, this, [this] {
+        if (m_openOffsets && (m_undo->count() == 0 || m_undo->command(m_undo->index() - 1) != m_openOffsets))
+            m_openOffsets = nullptr;
+    });
+}
 
 Document::~Document() = default;
 
-void Document::notifyChanged(Part part)
+// --- change notification ------------------------------------------------------------------------
+
+Document::Batch::Batch(Document* doc)
+    : m_doc(doc)
 {
-    switch (part) {
-    case Part::Mesh:
-        emit meshChanged();
-        break;
-    case Part::Drawings:
-        emit drawingsChanged();
-        break;
-    case Part::Keys:
-        emit keysChanged();
-        break;
-    case Part::Blend:
-        emit blendChanged();
-        break;
-    case Part::Look:
-        emit lookChanged();
-        break;
-    case Part::FaceSets:
-        emit faceSetsChanged();
-        break;
+    ++m_doc->m_batchDepth;
+}
+
+Document::Batch::~Batch()
+{
+    if (--m_doc->m_batchDepth > 0 || m_doc->m_pending.empty())
+        return;
+    // Listeners may push edits of their own: hand them a settled set and start a fresh one.
+    ChangeSet change;
+    std::swap(change, m_doc->m_pending);
+    emit m_doc->changed(change);
+    change.clear();
+    if (m_doc->m_pending.empty())
+        std::swap(change, m_doc->m_pending); // keep the vectors' memory for the next step
+}
+
+void Document::noteChange(const ChangeSet& change)
+{
+    m_pending.merge(change);
+    if (m_batchDepth == 0) {
+        const Batch flush(this);
     }
+}
+
+void Document::push(QUndoCommand* command)
+{
+    m_undo->push(command);
 }
 
 // --- files ------------------------------------------------------------------------------------
 
 void Document::reset(ProjectData data, const QString& filePath)
 {
+    m_openOffsets = nullptr;
     m_data = std::move(data);
     m_undo->clear();
     m_undo->setClean();
+    m_gesture = 0;
     if (m_filePath != filePath) {
         m_filePath = filePath;
         emit filePathChanged(m_filePath);
     }
-    emit documentReset();
+    ChangeSet change;
+    change.reset = true;
+    change.structure = true;
+    noteChange(change);
 }
 
 void Document::open(const QString& path)
@@ -150,7 +171,31 @@ QStringList Document::newFromMesh(const QString& meshPath)
     return imported.warnings;
 }
 
-// --- edits ------------------------------------------------------------------------------------
+// --- playhead and gestures ---------------------------------------------------------------------------
+
+void Document::setCurrentFrame(int frame)
+{
+    if (frame == m_data.currentFrame)
+        return;
+    m_data.currentFrame = frame;
+    ChangeSet change = ChangeSet::of(Part::Playhead);
+    change.frames.push_back(frame);
+    noteChange(change);
+}
+
+int Document::beginGesture()
+{
+    m_gesture = ++m_lastGesture;
+    return m_gesture;
+}
+
+void Document::endGesture()
+{
+    m_gesture = 0;
+    m_openOffsets = nullptr;
+}
+
+// --- base model --------------------------------------------------------------------------------
 
 void Document::setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QString& meshName)
 {
@@ -164,20 +209,31 @@ void Document::setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QStr
                 .arg(needed));
     const bool dropFaceSets
         = !m_data.faceSets.empty() && m_data.baseMesh && m_data.baseMesh->faceCount() != mesh->faceCount();
-    auto* cmd = new QUndoCommand(tr("Replace Base Model"));
-    new AssignCommand<MeshPtr>(
-        this, {}, [](ProjectData& d) { return &d.baseMesh; }, std::move(mesh), Part::Mesh, -1, 0, cmd);
-    new AssignCommand<QString>(
-        this, {}, [](ProjectData& d) { return &d.baseMeshName; }, meshName, Part::Mesh, -1, 0, cmd);
+    auto* cmd = new CompositeCommand(this, tr("Replace Base Model"));
+    const ChangeSet meshChange = structural(Part::Mesh);
+    new PropertyCommand<MeshPtr>(
+        this, {}, Property::BaseMesh, {}, [](ProjectData& d) { return &d.baseMesh; }, std::move(mesh), meshChange, 0,
+        cmd);
+    new PropertyCommand<QString>(
+        this, {}, Property::BaseMesh, {}, [](ProjectData& d) { return &d.baseMeshName; }, meshName, meshChange, 0, cmd);
     if (dropFaceSets) {
         // Face indices mean nothing on other faces: the patches go, their layers cover all faces.
-        new AssignCommand<std::vector<algo::FaceSet>>(
-            this, {}, [](ProjectData& d) { return &d.faceSets; }, {}, Part::FaceSets, -1, 0, cmd);
-        if (auto look = lookWithLayersMoved(m_data.look, {}, {}))
-            new AssignCommand<Look>(
-                this, {}, [](ProjectData& d) { return &d.look; }, std::move(*look), Part::Look, -1, 0, cmd);
+        new PropertyCommand<std::vector<algo::FaceSet>>(
+            this, {}, Property::FaceSets, {}, [](ProjectData& d) { return &d.faceSets; }, {},
+            structural(Part::FaceSets), 0, cmd);
+        for (const HighlightTrack& track : m_data.look.highlights)
+            if (!track.patch.isEmpty()) {
+                const ObjectId id = track.id;
+                new PropertyCommand<QString>(
+                    this, {}, Property::HighlightPatch, idTarget(id),
+                    [id](ProjectData& d) {
+                        HighlightTrack* t = d.highlight(id);
+                        return t ? &t->patch : nullptr;
+                    },
+                    QString(), ChangeSet::of(Part::Highlights, id), 0, cmd);
+            }
     }
-    m_undo->push(cmd);
+    push(cmd);
 }
 
 QStringList Document::importBaseMesh(const QString& path)
@@ -187,17 +243,19 @@ QStringList Document::importBaseMesh(const QString& path)
     return imported.warnings;
 }
 
+// --- drawings ------------------------------------------------------------------------------------
+
 ObjectId Document::addDrawing(Drawing drawing)
 {
     drawing.id = m_data.nextId;
     drawing.name = uniqueDrawingName(drawing.name);
     const ObjectId id = drawing.id;
-    auto* cmd = new QUndoCommand(tr("Add Drawing “%1”").arg(drawing.name));
+    auto* cmd = new CompositeCommand(this, tr("Add Drawing “%1”").arg(drawing.name));
     new NextIdCommand(this, id + 1, cmd);
     new InsertRemoveCommand<Drawing>(
         this, {}, [](ProjectData& d) -> std::vector<Drawing>& { return d.drawings; }, std::move(drawing),
         m_data.drawings.size(), false, Part::Drawings, cmd);
-    m_undo->push(cmd);
+    push(cmd);
     return id;
 }
 
@@ -211,7 +269,7 @@ void Document::removeDrawing(ObjectId id)
     const Drawing* drawing = m_data.drawing(id);
     if (!drawing)
         return;
-    auto* cmd = new QUndoCommand(tr("Remove Drawing “%1”").arg(drawing->name));
+    auto* cmd = new CompositeCommand(this, tr("Remove Drawing “%1”").arg(drawing->name));
     // Unlink the drawing from keys first, so undo relinks them after the drawing is back.
     for (const auto& key : m_data.keys) {
         std::vector<ObjectId> ids = key.drawingIds;
@@ -219,20 +277,14 @@ void Document::removeDrawing(ObjectId id)
         if (newEnd == ids.end())
             continue;
         ids.erase(newEnd, ids.end());
-        const ObjectId keyId = key.id;
-        new AssignCommand<std::vector<ObjectId>>(
-            this, {},
-            [keyId](ProjectData& d) {
-                auto* k = d.key(keyId);
-                return k ? &k->drawingIds : nullptr;
-            },
-            std::move(ids), Part::Keys, -1, 0, cmd);
+        new PropertyCommand<std::vector<ObjectId>>(this, {}, Property::KeyDrawings, idTarget(key.id),
+            keyField(key.id, &KeyViewpoint::drawingIds), std::move(ids), structural(Part::Keys, key.id), 0, cmd);
     }
     const auto index = std::size_t(drawing - m_data.drawings.data());
     new InsertRemoveCommand<Drawing>(
         this, {}, [](ProjectData& d) -> std::vector<Drawing>& { return d.drawings; }, *drawing, index, true,
         Part::Drawings, cmd);
-    m_undo->push(cmd);
+    push(cmd);
 }
 
 void Document::renameDrawing(ObjectId id, const QString& name)
@@ -241,28 +293,18 @@ void Document::renameDrawing(ObjectId id, const QString& name)
     if (!drawing || drawing->name == name.trimmed() || name.trimmed().isEmpty())
         return;
     const QString unique = uniqueDrawingName(name);
-    m_undo->push(new AssignCommand<QString>(
-        this, tr("Rename Drawing to “%1”").arg(unique),
-        [id](ProjectData& d) {
-            auto* x = d.drawing(id);
-            return x ? &x->name : nullptr;
-        },
-        unique, Part::Drawings));
+    push(new PropertyCommand<QString>(this, tr("Rename Drawing to “%1”").arg(unique), Property::DrawingName,
+        idTarget(id), drawingField(id, &Drawing::name), unique, structural(Part::Drawings, id), 0));
 }
 
 void Document::setDrawingOpacity(ObjectId id, double opacity)
 {
     const Drawing* drawing = m_data.drawing(id);
     opacity = std::clamp(opacity, 0.0, 1.0);
-    if (!drawing || drawing->opacity == opacity)
+    if (!drawing || drawing->opacity == opacity || !std::isfinite(opacity))
         return;
-    m_undo->push(new AssignCommand<double>(
-        this, tr("Set Drawing Opacity"),
-        [id](ProjectData& d) {
-            auto* x = d.drawing(id);
-            return x ? &x->opacity : nullptr;
-        },
-        opacity, Part::Drawings, kDrawingOpacityId, id));
+    push(new PropertyCommand<double>(this, tr("Set Drawing Opacity"), Property::DrawingOpacity, idTarget(id),
+        drawingField(id, &Drawing::opacity), opacity, ChangeSet::of(Part::Drawings, id), m_gesture));
 }
 
 void Document::setDrawingCamera(ObjectId id, const Camera& camera)
@@ -270,23 +312,16 @@ void Document::setDrawingCamera(ObjectId id, const Camera& camera)
     const Drawing* drawing = m_data.drawing(id);
     if (!drawing || !camera.isValid() || (drawing->aligned && drawing->camera == camera))
         return;
-    auto* cmd = new QUndoCommand(tr("Align Drawing “%1”").arg(drawing->name));
-    new AssignCommand<Camera>(
-        this, {},
-        [id](ProjectData& d) {
-            auto* x = d.drawing(id);
-            return x ? &x->camera : nullptr;
-        },
-        camera, Part::Drawings, -1, 0, cmd);
-    new AssignCommand<bool>(
-        this, {},
-        [id](ProjectData& d) {
-            auto* x = d.drawing(id);
-            return x ? &x->aligned : nullptr;
-        },
-        true, Part::Drawings, -1, 0, cmd);
-    m_undo->push(cmd);
+    auto* cmd = new CompositeCommand(this, tr("Align Drawing “%1”").arg(drawing->name));
+    const ChangeSet change = ChangeSet::of(Part::Drawings, id);
+    new PropertyCommand<Camera>(
+        this, {}, Property::DrawingCamera, idTarget(id), drawingField(id, &Drawing::camera), camera, change, 0, cmd);
+    new PropertyCommand<bool>(
+        this, {}, Property::DrawingCamera, idTarget(id), drawingField(id, &Drawing::aligned), true, change, 0, cmd);
+    push(cmd);
 }
+
+// --- key viewpoints ---------------------------------------------------------------------------------
 
 void Document::refuseDuplicateDirection(const Eigen::Vector3d& direction, ObjectId ignoredKey) const
 {
@@ -309,12 +344,12 @@ ObjectId Document::addKey(KeyViewpoint key)
     key.id = m_data.nextId;
     key.name = uniqueKeyName(key.name);
     const ObjectId id = key.id;
-    auto* cmd = new QUndoCommand(tr("Add Key “%1”").arg(key.name));
+    auto* cmd = new CompositeCommand(this, tr("Add Key “%1”").arg(key.name));
     new NextIdCommand(this, id + 1, cmd);
     new InsertRemoveCommand<KeyViewpoint>(
         this, {}, [](ProjectData& d) -> std::vector<KeyViewpoint>& { return d.keys; }, std::move(key),
         m_data.keys.size(), false, Part::Keys, cmd);
-    m_undo->push(cmd);
+    push(cmd);
     return id;
 }
 
@@ -356,22 +391,13 @@ void Document::setKeyCamera(ObjectId id, const Camera& camera)
     if (direction.norm() == 0.0)
         throw EditRefused(tr("The key's camera sits at the centre of the model; move it away first."));
     refuseDuplicateDirection(direction, id);
-    auto* cmd = new QUndoCommand(tr("Re-align Key “%1”").arg(key->name));
-    new AssignCommand<Camera>(
-        this, {},
-        [id](ProjectData& d) {
-            auto* k = d.key(id);
-            return k ? &k->camera : nullptr;
-        },
-        camera, Part::Keys, -1, 0, cmd);
-    new AssignCommand<Eigen::Vector3d>(
-        this, {},
-        [id](ProjectData& d) {
-            auto* k = d.key(id);
-            return k ? &k->direction : nullptr;
-        },
-        direction, Part::Keys, -1, 0, cmd);
-    m_undo->push(cmd);
+    auto* cmd = new CompositeCommand(this, tr("Re-align Key “%1”").arg(key->name));
+    const ChangeSet change = ChangeSet::of(Part::Keys, id);
+    new PropertyCommand<Camera>(
+        this, {}, Property::KeyCamera, idTarget(id), keyField(id, &KeyViewpoint::camera), camera, change, 0, cmd);
+    new PropertyCommand<Eigen::Vector3d>(
+        this, {}, Property::KeyCamera, idTarget(id), keyField(id, &KeyViewpoint::direction), direction, change, 0, cmd);
+    push(cmd);
 }
 
 void Document::linkKeyDrawing(ObjectId keyId, ObjectId drawingId)
@@ -384,153 +410,10 @@ void Document::linkKeyDrawing(ObjectId keyId, ObjectId drawingId)
         ids.push_back(drawingId);
     if (ids == key->drawingIds)
         return;
-    m_undo->push(new AssignCommand<std::vector<ObjectId>>(
-        this, ids.empty() ? tr("Unlink Key “%1”").arg(key->name) : tr("Link Key “%1” to a Drawing").arg(key->name),
-        [keyId](ProjectData& d) {
-            auto* k = d.key(keyId);
-            return k ? &k->drawingIds : nullptr;
-        },
-        ids, Part::Keys));
-}
-
-void Document::setKeyOffsets(ObjectId id, int frame, SparseOffsets offsets, const QString& undoText)
-{
-    const KeyViewpoint* key = m_data.key(id);
-    if (!key)
-        return;
-    // Express the replacement as a sparse change of the union of old and new vertices.
-    const SparseOffsets* old = nullptr;
-    if (auto it = key->offsetsByFrame.find(frame); it != key->offsetsByFrame.end())
-        old = &it->second;
-    KeyOffsetsCommand::Change change;
-    std::size_t i = 0, j = 0;
-    const std::size_t n = old ? old->indices.size() : 0;
-    while (i < n || j < offsets.indices.size()) {
-        const bool takeOld = j == offsets.indices.size() || (i < n && old->indices[i] <= offsets.indices[j]);
-        const bool takeNew = i == n || (j < offsets.indices.size() && offsets.indices[j] <= old->indices[i]);
-        change.indices.push_back(takeOld ? old->indices[i] : offsets.indices[j]);
-        change.before.push_back(takeOld ? old->deltas[i] : Eigen::Vector3f::Zero());
-        change.beforePresent.push_back(takeOld);
-        change.after.push_back(takeNew ? offsets.deltas[j] : Eigen::Vector3f::Zero());
-        change.afterPresent.push_back(takeNew);
-        i += takeOld;
-        j += takeNew;
-    }
-    m_undo->push(new KeyOffsetsCommand(this, undoText, id, frame, std::move(change), 0));
-}
-
-QStringList Document::importKeyDeformation(ObjectId id, const QString& meshPath, int frame)
-{
-    const KeyViewpoint* key = m_data.key(id);
-    if (!key || !m_data.baseMesh)
-        return {};
-    MeshImport imported = importMesh(meshPath);
-    const auto& base = *m_data.baseMesh;
-    if (imported.mesh.vertexCount() != base.vertexCount())
-        throw IoError(meshPath,
-            tr("has %1 vertices, but the base model has %2: a key deformation needs the base "
-               "model's vertex count and order")
-                .arg(imported.mesh.vertexCount())
-                .arg(base.vertexCount()));
-    QStringList warnings;
-    if (imported.mesh.faces.rows() != base.faces.rows() || imported.mesh.faces != base.faces)
-        warnings << tr("its triangles differ from the base model's; only the vertex positions are used");
-    setKeyOffsets(id, frame, SparseOffsets::difference(imported.mesh.vertices, base.vertices),
-        tr("Import Deformation into “%1”").arg(key->name));
-    return warnings;
-}
-
-void Document::displaceKeyVertices(ObjectId id, int frame, const std::vector<std::uint32_t>& indices,
-    const algo::Positions& displacements, int strokeId, const QString& undoText)
-{
-    const KeyViewpoint* key = m_data.key(id);
-    if (!key || indices.empty() || !m_data.baseMesh)
-        return;
-    Q_ASSERT(displacements.rows() == Eigen::Index(indices.size()));
-    const auto nv = std::uint32_t(m_data.baseMesh->vertexCount());
-    const SparseOffsets* current = nullptr;
-    if (auto it = key->offsetsByFrame.find(frame); it != key->offsetsByFrame.end())
-        current = &it->second;
-    KeyOffsetsCommand::Change change;
-    change.indices.reserve(indices.size());
-    for (std::size_t k = 0; k < indices.size(); ++k) {
-        const std::uint32_t v = indices[k];
-        if (v >= nv || (k > 0 && v <= indices[k - 1]) || !displacements.row(Eigen::Index(k)).allFinite())
-            continue; // out of range, out of order or NaN: never written into the document
-        const Eigen::Vector3f before = current ? current->at(v) : Eigen::Vector3f::Zero();
-        bool present = false;
-        if (current) {
-            const auto it = std::lower_bound(current->indices.begin(), current->indices.end(), v);
-            present = it != current->indices.end() && *it == v;
-        }
-        change.indices.push_back(v);
-        change.before.push_back(before);
-        change.beforePresent.push_back(present);
-        change.after.push_back(before + displacements.row(Eigen::Index(k)).transpose());
-        change.afterPresent.push_back(1);
-    }
-    if (change.indices.empty())
-        return;
-    m_undo->push(new KeyOffsetsCommand(this, undoText, id, frame, std::move(change), strokeId));
-}
-
-BlendEvaluator& Document::blender()
-{
-    m_blender.update(m_data);
-    return m_blender;
-}
-
-// --- KeyOffsetsCommand ------------------------------------------------------------------------
-
-KeyOffsetsCommand::KeyOffsetsCommand(
-    Document* doc, const QString& text, ObjectId key, int frame, Change change, int strokeId)
-    : QUndoCommand(text)
-    , m_doc(doc)
-    , m_key(key)
-    , m_frame(frame)
-    , m_change(std::move(change))
-    , m_strokeId(strokeId)
-{
-    const KeyViewpoint* k = doc->data().key(key);
-    m_frameExisted = k && k->offsetsByFrame.count(frame) > 0;
-}
-
-void KeyOffsetsCommand::apply(bool forward)
-{
-    KeyViewpoint* key = m_doc->mutableData().key(m_key);
-    if (!key)
-        return;
-    SparseOffsets& offsets = key->offsetsByFrame[m_frame];
-    offsets.assign(m_change.indices, forward ? m_change.after : m_change.before,
-        forward ? m_change.afterPresent : m_change.beforePresent);
-    if (!forward && !m_frameExisted && offsets.indices.empty())
-        key->offsetsByFrame.erase(m_frame); // undo leaves the key exactly as it was
-    m_doc->notifyChanged(Document::Part::Keys);
-}
-
-bool KeyOffsetsCommand::mergeWith(const QUndoCommand* other)
-{
-    const auto* o = dynamic_cast<const KeyOffsetsCommand*>(other);
-    if (!o || o->m_strokeId != m_strokeId || o->m_key != m_key || o->m_frame != m_frame)
-        return false;
-    // Union of two ascending index lists: keep our "before", take their "after".
-    Change merged;
-    const Change& a = m_change;
-    const Change& b = o->m_change;
-    std::size_t i = 0, j = 0;
-    while (i < a.indices.size() || j < b.indices.size()) {
-        const bool fromA = j == b.indices.size() || (i < a.indices.size() && a.indices[i] <= b.indices[j]);
-        const bool fromB = i == a.indices.size() || (j < b.indices.size() && b.indices[j] <= a.indices[i]);
-        merged.indices.push_back(fromA ? a.indices[i] : b.indices[j]);
-        merged.before.push_back(fromA ? a.before[i] : b.before[j]);
-        merged.beforePresent.push_back(fromA ? a.beforePresent[i] : b.beforePresent[j]);
-        merged.after.push_back(fromB ? b.after[j] : a.after[i]);
-        merged.afterPresent.push_back(fromB ? b.afterPresent[j] : a.afterPresent[i]);
-        i += fromA;
-        j += fromB;
-    }
-    m_change = std::move(merged);
-    return true;
+    push(new PropertyCommand<std::vector<ObjectId>>(this,
+        ids.empty() ? tr("Unlink Key “%1”").arg(key->name) : tr("Link Key “%1” to a Drawing").arg(key->name),
+        Property::KeyDrawings, idTarget(keyId), keyField(keyId, &KeyViewpoint::drawingIds), ids,
+        structural(Part::Keys, keyId), 0));
 }
 
 void Document::removeKey(ObjectId id)
@@ -539,7 +422,7 @@ void Document::removeKey(ObjectId id)
     if (!key)
         return;
     const auto index = std::size_t(key - m_data.keys.data());
-    m_undo->push(new InsertRemoveCommand<KeyViewpoint>(
+    push(new InsertRemoveCommand<KeyViewpoint>(
         this, tr("Remove Key “%1”").arg(key->name), [](ProjectData& d) -> std::vector<KeyViewpoint>& { return d.keys; },
         *key, index, true, Part::Keys));
 }
@@ -550,13 +433,8 @@ void Document::renameKey(ObjectId id, const QString& name)
     if (!key || key->name == name.trimmed() || name.trimmed().isEmpty())
         return;
     const QString unique = uniqueKeyName(name);
-    m_undo->push(new AssignCommand<QString>(
-        this, tr("Rename Key to “%1”").arg(unique),
-        [id](ProjectData& d) {
-            auto* x = d.key(id);
-            return x ? &x->name : nullptr;
-        },
-        unique, Part::Keys));
+    push(new PropertyCommand<QString>(this, tr("Rename Key to “%1”").arg(unique), Property::KeyName, idTarget(id),
+        keyField(id, &KeyViewpoint::name), unique, structural(Part::Keys, id), 0));
 }
 
 void Document::setKeyEnabled(ObjectId id, bool enabled)
@@ -564,100 +442,15 @@ void Document::setKeyEnabled(ObjectId id, bool enabled)
     const KeyViewpoint* key = m_data.key(id);
     if (!key || key->enabled == enabled)
         return;
-    m_undo->push(new AssignCommand<bool>(
-        this, enabled ? tr("Enable Key “%1”").arg(key->name) : tr("Disable Key “%1”").arg(key->name),
-        [id](ProjectData& d) {
-            auto* x = d.key(id);
-            return x ? &x->enabled : nullptr;
-        },
-        enabled, Part::Keys));
+    push(new PropertyCommand<bool>(this,
+        enabled ? tr("Enable Key “%1”").arg(key->name) : tr("Disable Key “%1”").arg(key->name), Property::KeyEnabled,
+        idTarget(id), keyField(id, &KeyViewpoint::enabled), enabled, structural(Part::Keys, id), 0));
 }
 
-void Document::setBlendSettings(const BlendSettings& settings)
+BlendEvaluator& Document::blender()
 {
-    if (settings == m_data.blend)
-        return;
-    m_undo->push(new AssignCommand<BlendSettings>(
-        this, tr("Change Blend Settings"), [](ProjectData& d) { return &d.blend; }, settings, Part::Blend, kBlendId));
-}
-
-void Document::setLook(const Look& look)
-{
-    if (look == m_data.look)
-        return;
-    m_undo->push(new AssignCommand<Look>(
-        this, tr("Change Look"), [](ProjectData& d) { return &d.look; }, look, Part::Look, kLookId));
-}
-
-void Document::setFaceSet(const QString& name, std::vector<std::int32_t> faces, const QString& undoText, int strokeId)
-{
-    if (!m_data.baseMesh)
-        throw EditRefused(tr("There is no base model to make a patch on."));
-    if (name.trimmed().isEmpty())
-        throw EditRefused(tr("A patch needs a name."));
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    if (!faces.empty() && (faces.front() < 0 || faces.back() >= m_data.baseMesh->faceCount()))
-        throw EditRefused(tr("Patch “%1” names a face the base model does not have.").arg(name));
-    std::vector<algo::FaceSet> sets = m_data.faceSets;
-    const std::string wanted = name.toStdString();
-    auto it = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
-    if (it == sets.end()) {
-        sets.push_back({wanted, std::move(faces)});
-    } else {
-        if (it->faces == faces && strokeId == 0)
-            return;
-        it->faces = std::move(faces);
-    }
-    m_undo->push(new AssignCommand<std::vector<algo::FaceSet>>(
-        this, undoText, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), Part::FaceSets,
-        strokeId != 0 ? kFaceSetsId : -1, ObjectId(strokeId)));
-}
-
-void Document::removeFaceSet(const QString& name)
-{
-    const std::string wanted = name.toStdString();
-    std::vector<algo::FaceSet> sets = m_data.faceSets;
-    const auto it = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
-    if (it == sets.end())
-        return;
-    sets.erase(it);
-    auto* cmd = new QUndoCommand(tr("Delete Patch “%1”").arg(name));
-    if (auto look = lookWithLayersMoved(m_data.look, name, {}))
-        new AssignCommand<Look>(
-            this, {}, [](ProjectData& d) { return &d.look; }, std::move(*look), Part::Look, -1, 0, cmd);
-    new AssignCommand<std::vector<algo::FaceSet>>(
-        this, {}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), Part::FaceSets, -1, 0, cmd);
-    m_undo->push(cmd);
-}
-
-void Document::renameFaceSet(const QString& name, const QString& newName)
-{
-    const QString trimmed = newName.trimmed();
-    if (trimmed == name)
-        return;
-    if (trimmed.isEmpty())
-        throw EditRefused(tr("A patch needs a name."));
-    if (m_data.faceSet(trimmed))
-        throw EditRefused(tr("There is already a patch named “%1”.").arg(trimmed));
-    std::vector<algo::FaceSet> sets = m_data.faceSets;
-    const std::string wanted = name.toStdString();
-    const auto it = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
-    if (it == sets.end())
-        return;
-    it->name = trimmed.toStdString();
-    auto* cmd = new QUndoCommand(tr("Rename Patch “%1”").arg(name));
-    new AssignCommand<std::vector<algo::FaceSet>>(
-        this, {}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), Part::FaceSets, -1, 0, cmd);
-    if (auto look = lookWithLayersMoved(m_data.look, name, trimmed))
-        new AssignCommand<Look>(
-            this, {}, [](ProjectData& d) { return &d.look; }, std::move(*look), Part::Look, -1, 0, cmd);
-    m_undo->push(cmd);
-}
-
-QString Document::uniqueFaceSetName(const QString& wanted) const
-{
-    return uniqueName(wanted, [this](const QString& n) { return m_data.faceSet(n) != nullptr; });
+    m_blender.update(m_data);
+    return m_blender;
 }
 
 QString Document::uniqueDrawingName(const QString& wanted) const
@@ -668,6 +461,16 @@ QString Document::uniqueDrawingName(const QString& wanted) const
 QString Document::uniqueKeyName(const QString& wanted) const
 {
     return uniqueName(wanted, [this](const QString& n) { return m_data.keyByName(n) != nullptr; });
+}
+
+QString Document::uniqueFaceSetName(const QString& wanted) const
+{
+    return uniqueName(wanted, [this](const QString& n) { return m_data.faceSet(n) != nullptr; });
+}
+
+QString Document::uniqueHighlightName(const QString& wanted) const
+{
+    return uniqueName(wanted, [this](const QString& n) { return m_data.highlightByName(n) != nullptr; });
 }
 
 } // namespace celform::model

@@ -1,7 +1,11 @@
-// The Celform document: the project data, the undo stack, and the edit methods that views and
-// the command line call. Every edit is a QUndoCommand; nothing changes the data behind its back.
+// The Celform document: the project data, the undo stack, the playhead, and the edit operations
+// that panels, viewport tools and the command line all call (DESIGN.md, "The document"). Every
+// edit is a QUndoCommand; nothing changes the data behind its back. One changed(ChangeSet) signal
+// says what each push, undo or redo touched.
 #pragma once
 
+#include "celform/model/brush_stroke.h"
+#include "celform/model/change_set.h"
 #include "celform/model/project_data.h"
 #include "celform/model/view_blend.h"
 
@@ -10,8 +14,11 @@
 #include <QUndoStack>
 
 #include <memory>
+#include <optional>
 
 namespace celform::model {
+
+class KeyOffsetsCommand;
 
 class Document : public QObject {
     Q_OBJECT
@@ -40,22 +47,36 @@ public:
     /// Replaces everything, clears undo history; for open and tests.
     void reset(ProjectData data, const QString& filePath = {});
 
-    // --- edits (each pushes one undo command) --------------------------------------------------
+    // --- the playhead (DESIGN.md: not undoable, saved with the project) ---------------------
+    [[nodiscard]] int currentFrame() const { return m_data.currentFrame; }
+    /// Moves the playhead; every view follows it. Does not mark the document modified.
+    void setCurrentFrame(int frame);
+
+    // --- gestures: one drag, slider press-to-release or run of key repeats is one undo step ----
+    /// Opens a gesture: until endGesture(), edits of the same property on the same target merge
+    /// into one undo step. Edits outside a gesture are one step each. Returns the gesture's id.
+    int beginGesture();
+    void endGesture();
+    [[nodiscard]] int currentGesture() const { return m_gesture; }
+
+    // --- base model --------------------------------------------------------------------------
     /// Replaces the base model. Keys whose offsets do not fit the new vertex count are refused:
     /// throws IoError naming meshName in that case, and the document is unchanged.
     void setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QString& meshName);
     /// Imports a mesh file as the base model; returns the import warnings. Throws IoError.
     QStringList importBaseMesh(const QString& path);
 
+    // --- drawings ----------------------------------------------------------------------------
     ObjectId addDrawing(Drawing drawing);
     /// Imports an image file as a drawing; returns its id. Throws IoError.
     ObjectId importDrawing(const QString& path);
     void removeDrawing(ObjectId id);
     void renameDrawing(ObjectId id, const QString& name);
-    /// Mergeable: a slider drag is one undo step.
     void setDrawingOpacity(ObjectId id, double opacity);
+    /// Stores the camera aligned to a drawing (and marks it aligned).
     void setDrawingCamera(ObjectId id, const Camera& camera);
 
+    // --- key viewpoints ------------------------------------------------------------------------
     /// Adds a key as given. Throws EditRefused when its direction is within
     /// algo::ViewSphere::kDuplicateAngleDegrees of another key's.
     ObjectId addKey(KeyViewpoint key);
@@ -70,72 +91,150 @@ public:
     void setKeyCamera(ObjectId id, const Camera& camera);
     /// Links a key to one drawing (0 unlinks every drawing).
     void linkKeyDrawing(ObjectId keyId, ObjectId drawingId);
+    void removeKey(ObjectId id);
+    void renameKey(ObjectId id, const QString& name);
+    void setKeyEnabled(ObjectId id, bool enabled);
     /// Replaces a key's offsets at a frame (one undo step).
     void setKeyOffsets(ObjectId id, int frame, SparseOffsets offsets, const QString& undoText);
     /// Reads a mesh with the base model's vertex count and order and makes its difference from
     /// the base the key's deformation at frame. Throws IoError (unreadable, vertex count
     /// mismatch). Returns import warnings.
     QStringList importKeyDeformation(ObjectId id, const QString& meshPath, int frame = 0);
-    /// Adds displacements (#indices by 3) to a key's vertices at a frame: one brush step. Steps
-    /// with the same non-zero strokeId merge into one undo step (one drag = one undo).
+    /// Adds displacements (#indices by 3, indices ascending) to a key's offsets at a frame. At a
+    /// frame without stored offsets the stored offsets start from the interpolated ones there
+    /// (what the artist sees), so the edit adds to them. Steps in one gesture on the same key and
+    /// frame are one undo step.
     void displaceKeyVertices(ObjectId id, int frame, const std::vector<std::uint32_t>& indices,
-        const algo::Positions& displacements, int strokeId, const QString& undoText);
-    /// A fresh id for displaceKeyVertices strokes.
-    int newStrokeId() { return ++m_lastStrokeId; }
+        const algo::Positions& displacements, const QString& undoText);
+
+    // --- the falloff brush (paper 1, section 3.1.2): the editor's tool and `celform brush` -----
+    /// Starts a stroke on key `id` at `frame`: selects the vertices of the key's shape there
+    /// within radius of vertex picked, and with mirrorX their mirror images across x = 0, and
+    /// opens a gesture. The camera gives the image plane. Throws EditRefused (no such key or
+    /// vertex, no base model).
+    BrushStroke beginBrushStroke(
+        ObjectId id, int frame, std::uint32_t picked, double radius, const Camera& camera, bool mirrorX = false);
+    /// One step of the stroke: displaces the selection (see BrushStep) and stores it; all steps of
+    /// a stroke are one undo step. After the first step nothing is allocated.
+    void applyBrushStroke(BrushStroke& stroke, const BrushStep& step);
+    /// Ends the stroke's gesture.
+    void endBrushStroke(BrushStroke& stroke);
 
     /// The view-dependent blend of the current keys, up to date.
     BlendEvaluator& blender();
-    void removeKey(ObjectId id);
-    void renameKey(ObjectId id, const QString& name);
-    void setKeyEnabled(ObjectId id, bool enabled);
 
-    // --- face sets: the highlight patches (paper 2, "Highlight operations": each operation acts on
-    // one patch) ---------------------------------------------------------------------------
-    /// Creates or replaces a face set; faces are sorted and repeats dropped. Steps with the same
-    /// non-zero strokeId merge into one undo step (one paint drag = one undo). Throws
-    /// EditRefused without a base model, for an empty name or a face out of range.
-    void setFaceSet(const QString& name, std::vector<std::int32_t> faces, const QString& undoText, int strokeId = 0);
+    // --- blend settings (paper 1, sections 3.2-3.3 and 4.2) -----------------------------------
+    void setSharpness(double alpha);
+    void setUnspecifiedMode(UnspecifiedMode mode);
+    void setTimeInterpolation(TimeInterpolation time);
+
+    // --- the look, property by property ---------------------------------------------------------
+    /// The style of every material (material < 0: clears per-material styles) or of one.
+    void setShadingStyle(ShadingStyle style, int material = -1);
+    /// The key light; a change of vector is "Move Light", of type "Change Light Type".
+    void setLight(const Light& light);
+    void setBackgroundColor(const Eigen::Vector3f& color);
+    /// Refused (no change) when the ramp is not valid.
+    void setToonRamp(const algo::ToonRamp& ramp);
+    void setToonEvaluation(algo::ToonEvaluation evaluation);
+    void setGooch(const algo::GoochParams& gooch);
+    void setHatch(const algo::HatchParams& hatch);
+    void setShowLines(bool show);
+    void setLineSettings(const algo::LineSettings& settings);
+    void setLineStyle(const algo::LineStyle& style);
+    void setStereo(const StereoLook& stereo);
+    /// The shot's camera (none: a framed default view). Refuses an invalid camera.
+    void setRenderCamera(const std::optional<Camera>& camera);
+    /// Replaces the whole look but its highlight layers in one step ("Apply Look", presets);
+    /// never merges.
+    void setLook(const Look& look);
+
+    // --- stylized highlights (Anjyo & Hiramitsu 2003), by layer id ----------------------------
+    /// Adds layers in one undo step (undoText), after the others; gives each a new id. Names must
+    /// be unique and the tracks valid (highlightTracksProblem), else EditRefused and no change.
+    std::vector<ObjectId> addHighlightLayers(std::vector<HighlightTrack> tracks, const QString& undoText);
+    /// Adds one layer named name (made unique) with a plain key at frame. Returns its id.
+    ObjectId addHighlightLayer(const QString& name, int frame);
+    /// Removes a layer and its use in other layers' combinations (one undo step).
+    void removeHighlightLayer(ObjectId id);
+    /// Renames a layer, other layers' combinations following. Throws EditRefused for an empty or
+    /// taken name.
+    void renameHighlightLayer(ObjectId id, const QString& name);
+    /// Sets (replaces or inserts) the key at frame. The undo text names what changed (size,
+    /// colour, cut, operations). Throws EditRefused for parameters out of the paper's range.
+    void setHighlightKey(ObjectId id, double frame, const algo::HighlightLayer& layer);
+    /// Replaces all keys at once (structure edits of the operations, which every key follows).
+    void setHighlightKeys(ObjectId id, std::vector<algo::HighlightKey> keys, const QString& undoText);
+    /// Removes the key at frame; a layer keeps at least one key (no change then).
+    void removeHighlightKey(ObjectId id, double frame);
+    void setHighlightPatch(ObjectId id, const QString& patch);
+    void setHighlightGuide(ObjectId id, const Eigen::Vector3f& guide);
+    void setHighlightSmoothing(ObjectId id, int rounds);
+    void setHighlightVisible(ObjectId id, bool visible);
+    void setHighlightCombinations(ObjectId id, std::vector<std::pair<algo::HighlightBoolean, QString>> combinations);
+    [[nodiscard]] QString uniqueHighlightName(const QString& wanted) const;
+
+    // --- face sets: the highlight patches (paper 2, "Highlight operations") --------------------
+    /// Creates or replaces a face set; faces are sorted and repeats dropped. Steps in one gesture
+    /// are one undo step (one paint drag). Throws EditRefused without a base model, for an
+    /// empty name or a face out of range.
+    void setFaceSet(const QString& name, std::vector<std::int32_t> faces, const QString& undoText);
+    /// Adds faces to (subtract: takes them from) a face set, creating it when missing.
+    void paintFaceSet(const QString& name, const std::vector<std::int32_t>& faces, bool subtract);
     /// Removes a face set; highlight layers on it go back to all faces in the same undo step.
     void removeFaceSet(const QString& name);
     /// Renames a face set and the highlight layers' references to it (one undo step). Throws
     /// EditRefused for an empty name or one already taken.
     void renameFaceSet(const QString& name, const QString& newName);
+    /// A new empty face set for a layer, and the layer moved onto it (one undo step).
+    QString newFaceSetForLayer(ObjectId layer, const QString& wanted);
     [[nodiscard]] QString uniqueFaceSetName(const QString& wanted) const;
-
-    void setBlendSettings(const BlendSettings& settings);
-    void setLook(const Look& look);
 
     /// Makes a name unique among drawings or keys by appending " 2", " 3", ...
     [[nodiscard]] QString uniqueDrawingName(const QString& wanted) const;
     [[nodiscard]] QString uniqueKeyName(const QString& wanted) const;
 
-    /// Low-level access for undo commands only.
+    // --- for the undo commands only ---------------------------------------------------------------
     ProjectData& mutableData() { return m_data; }
+    /// Records what a command changed; emitted once when the outermost command finishes.
+    void noteChange(const ChangeSet& change);
+    /// Commands running inside one Batch emit one changed() at the end.
+    class Batch {
+    public:
+        explicit Batch(Document* doc);
+        ~Batch();
+        Batch(const Batch&) = delete;
+        Batch& operator=(const Batch&) = delete;
 
-    enum class Part { Mesh, Drawings, Keys, Blend, Look, FaceSets };
-    /// Called by commands after they changed a part.
-    void notifyChanged(Part part);
+    private:
+        Document* m_doc;
+    };
 
 signals:
-    void meshChanged();
-    void drawingsChanged();
-    void keysChanged();
-    void blendChanged();
-    void lookChanged();
-    /// Face sets were added, changed, renamed or removed.
-    void faceSetsChanged();
-    /// The whole document was replaced (open, new).
-    void documentReset();
+    /// What one push, undo, redo, reset or playhead move changed. Delivered synchronously; the
+    /// set is valid only during the call.
+    void changed(const celform::model::ChangeSet& change);
     void filePathChanged(const QString& path);
 
 private:
+    friend class KeyOffsetsCommand;
     void refuseDuplicateDirection(const Eigen::Vector3d& direction, ObjectId ignoredKey) const;
+    /// Pushes a command, or when the open brush-stroke command is on top, lets it absorb the step.
+    void push(QUndoCommand* command);
+    [[nodiscard]] const HighlightTrack& highlightOrThrow(ObjectId id) const;
+    /// Checks the tracks as they would be after an edit; throws EditRefused with the problem.
+    void refuseInvalidTracks(const std::vector<HighlightTrack>& tracks) const;
 
     ProjectData m_data;
     QUndoStack* m_undo;
     BlendEvaluator m_blender;
-    int m_lastStrokeId = 0;
     QString m_filePath;
+    int m_gesture = 0;
+    int m_lastGesture = 0;
+    int m_batchDepth = 0;
+    ChangeSet m_pending;
+    /// The brush-stroke command on top of the stack while its gesture is open (see push()).
+    KeyOffsetsCommand* m_openOffsets = nullptr;
 };
 
 } // namespace celform::model

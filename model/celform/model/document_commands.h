@@ -1,5 +1,7 @@
 // The undo commands behind every Document edit. They hold ids and before/after values, never
-// pointers into the data, so an undo after other edits still finds its target.
+// pointers into the data, so an undo after other edits still finds its target. A command merges
+// only with the next command of the same property on the same target in the same gesture
+// (DESIGN.md, "The document"; Qt's undo framework and Krita do the same).
 #pragma once
 
 #include "celform/model/document.h"
@@ -11,68 +13,136 @@
 
 namespace celform::model {
 
-/// Merge ids of commands that a single gesture repeats (slider drags).
-enum CommandId { kDrawingOpacityId = 1001, kBlendId = 1002, kLookId = 1003, kKeyOffsetsId = 1004, kFaceSetsId = 1005 };
+/// The properties a PropertyCommand can set; with the target they decide what merges.
+enum class Property {
+    BaseMesh,
+    DrawingName,
+    DrawingOpacity,
+    DrawingCamera,
+    KeyName,
+    KeyEnabled,
+    KeyCamera,
+    KeyDrawings,
+    Sharpness,
+    UnspecifiedMode,
+    TimeInterpolation,
+    ShadingStyle,
+    MaterialStyles,
+    Light,
+    Background,
+    ToonRamp,
+    ToonEvaluation,
+    Gooch,
+    Hatch,
+    ShowLines,
+    LineSettings,
+    LineStyle,
+    Stereo,
+    RenderCamera,
+    WholeLook,
+    HighlightName,
+    HighlightKeys,
+    HighlightPatch,
+    HighlightGuide,
+    HighlightSmoothing,
+    HighlightVisible,
+    HighlightCombinations,
+    FaceSets,
+};
 
-/// Sets one value found by a locator (by id) from `before` to `after`. With a merge id, repeated
-/// pushes for the same target fold into one undo step keeping the first "before".
-template <typename T> class AssignCommand : public QUndoCommand {
+/// QUndoCommand::id() of the commands that may merge (within a gesture).
+enum CommandId { kPropertyMergeId = 1001, kKeyOffsetsMergeId = 1002 };
+
+/// Base of every document command: its redo and undo run inside one Document::Batch, so the
+/// document emits one changed() for the command and all its children.
+class DocumentCommand : public QUndoCommand {
+public:
+    DocumentCommand(Document* doc, const QString& text, QUndoCommand* parent = nullptr)
+        : QUndoCommand(text, parent)
+        , m_doc(doc)
+    { }
+    void redo() final
+    {
+        const Document::Batch batch(m_doc);
+        QUndoCommand::redo(); // children first, in order
+        apply(true);
+    }
+    void undo() final
+    {
+        const Document::Batch batch(m_doc);
+        apply(false);
+        QUndoCommand::undo(); // children in reverse order
+    }
+
+protected:
+    /// Does (forward) or undoes this command's own change and reports it with noteChange().
+    virtual void apply(bool /*forward*/) { }
+    Document* m_doc;
+};
+
+/// A step made of child commands only.
+using CompositeCommand = DocumentCommand;
+
+/// Sets one value found by a locator (by id) from `before` to `after`.
+template <typename T> class PropertyCommand : public DocumentCommand {
 public:
     using Locator = std::function<T*(ProjectData&)>;
 
-    AssignCommand(Document* doc, const QString& text, Locator locate, T after, Document::Part part, int mergeId = -1,
-        ObjectId mergeTarget = 0, QUndoCommand* parent = nullptr)
-        : QUndoCommand(text, parent)
-        , m_doc(doc)
+    PropertyCommand(Document* doc, const QString& text, Property property, QString target, Locator locate, T after,
+        ChangeSet change, int gesture, QUndoCommand* parent = nullptr)
+        : DocumentCommand(doc, text, parent)
+        , m_property(property)
+        , m_target(std::move(target))
         , m_locate(std::move(locate))
         , m_after(std::move(after))
-        , m_part(part)
-        , m_mergeId(mergeId)
-        , m_target(mergeTarget)
+        , m_change(std::move(change))
+        , m_gesture(gesture)
     {
         if (T* v = m_locate(m_doc->mutableData()))
             m_before = *v;
     }
 
-    void redo() override { assign(m_after); }
-    void undo() override { assign(m_before); }
-    int id() const override { return m_mergeId; }
+    int id() const override { return m_gesture != 0 ? kPropertyMergeId : -1; }
     bool mergeWith(const QUndoCommand* other) override
     {
-        auto* o = dynamic_cast<const AssignCommand*>(other);
-        if (!o || o->m_target != m_target)
+        const auto* o = dynamic_cast<const PropertyCommand*>(other);
+        if (!o || o->m_property != m_property || o->m_target != m_target || o->m_gesture != m_gesture)
             return false;
         m_after = o->m_after;
+        m_change.merge(o->m_change);
+        // A gesture that ends where it began leaves no step behind (Qt drops obsolete commands).
+        setObsolete(m_before == m_after);
         return true;
     }
 
-private:
-    void assign(const T& value)
+protected:
+    void apply(bool forward) override
     {
         if (T* v = m_locate(m_doc->mutableData())) {
-            *v = value;
-            m_doc->notifyChanged(m_part);
+            *v = forward ? m_after : m_before;
+            m_doc->noteChange(m_change);
         }
     }
 
-    Document* m_doc;
+private:
+    Property m_property;
+    QString m_target;
     Locator m_locate;
     T m_before{};
     T m_after;
-    Document::Part m_part;
-    int m_mergeId;
-    ObjectId m_target;
+    ChangeSet m_change;
+    int m_gesture;
 };
 
-/// Inserts an item (drawing or key) at an index, or removes it when constructed with remove=true.
-template <typename Item> class InsertRemoveCommand : public QUndoCommand {
+/// Inserts an item (drawing, key, highlight layer) at an index, or removes it when constructed
+/// with remove=true.
+template <typename Item> class InsertRemoveCommand : public DocumentCommand {
 public:
     using Container = std::function<std::vector<Item>&(ProjectData&)>;
 
     InsertRemoveCommand(Document* doc, const QString& text, Container container, Item item, std::size_t index,
-        bool remove, Document::Part part, QUndoCommand* parent = nullptr)
-        : QUndoCommand(text, parent)
-        , m_doc(doc)
+        bool remove, Part part, QUndoCommand* parent = nullptr)
+        : DocumentCommand(doc, text, parent)
         , m_container(std::move(container))
         , m_item(std::move(item))
         , m_index(index)
@@ -80,15 +150,21 @@ public:
         , m_part(part)
     { }
 
-    void redo() override { m_remove ? take() : put(); }
-    void undo() override { m_remove ? put() : take(); }
+protected:
+    void apply(bool forward) override { forward != m_remove ? put() : take(); }
 
 private:
+    void note()
+    {
+        ChangeSet change = ChangeSet::of(m_part, m_item.id);
+        change.structure = true;
+        m_doc->noteChange(change);
+    }
     void put()
     {
         auto& items = m_container(m_doc->mutableData());
         items.insert(items.begin() + std::ptrdiff_t(std::min(m_index, items.size())), m_item);
-        m_doc->notifyChanged(m_part);
+        note();
     }
     void take()
     {
@@ -98,24 +174,40 @@ private:
                 m_item = items[i]; // keep the latest state for a later re-insert
                 m_index = i;
                 items.erase(items.begin() + std::ptrdiff_t(i));
-                m_doc->notifyChanged(m_part);
+                note();
                 return;
             }
         }
     }
 
-    Document* m_doc;
     Container m_container;
     Item m_item;
     std::size_t m_index;
     bool m_remove;
-    Document::Part m_part;
+    Part m_part;
+};
+
+/// Records the id counter, so undoing an addition leaves the data as it was.
+class NextIdCommand : public DocumentCommand {
+public:
+    NextIdCommand(Document* doc, ObjectId after, QUndoCommand* parent)
+        : DocumentCommand(doc, {}, parent)
+        , m_before(doc->data().nextId)
+        , m_after(after)
+    { }
+
+protected:
+    void apply(bool forward) override { m_doc->mutableData().nextId = forward ? m_after : m_before; }
+
+private:
+    ObjectId m_before;
+    ObjectId m_after;
 };
 
 /// Changes some of a key's offsets at one frame, storing before and after values of just those
-/// vertices (sparse). Steps of one brush stroke merge: the union of the vertices, the first
-/// "before" and the last "after" of each.
-class KeyOffsetsCommand : public QUndoCommand {
+/// vertices (sparse). Steps of one gesture on the same key and frame merge: the union of the
+/// vertices, the first "before" and the last "after" of each.
+class KeyOffsetsCommand : public DocumentCommand {
 public:
     struct Change {
         std::vector<std::uint32_t> indices; ///< ascending
@@ -123,22 +215,31 @@ public:
         std::vector<char> beforePresent, afterPresent;
     };
 
-    KeyOffsetsCommand(Document* doc, const QString& text, ObjectId key, int frame, Change change, int strokeId);
+    KeyOffsetsCommand(Document* doc, const QString& text, ObjectId key, int frame, Change change, int gesture);
 
-    void redo() override { apply(true); }
-    void undo() override { apply(false); }
-    int id() const override { return m_strokeId != 0 ? kKeyOffsetsId : -1; }
+    int id() const override { return m_gesture != 0 ? kKeyOffsetsMergeId : -1; }
     bool mergeWith(const QUndoCommand* other) override;
 
-private:
-    void apply(bool forward);
+    [[nodiscard]] ObjectId key() const { return m_key; }
+    [[nodiscard]] int frame() const { return m_frame; }
+    [[nodiscard]] int gesture() const { return m_gesture; }
+    /// A brush step on the vertices this command already holds (indices ascending, a subset of
+    /// the command's): adds the displacements to their "after" values and applies them in place,
+    /// without a new command or any allocation. False (nothing done) when an index is not held.
+    bool absorb(const std::vector<std::uint32_t>& indices, const algo::Positions& displacements);
 
-    Document* m_doc;
+protected:
+    void apply(bool forward) override;
+
+private:
+    void note(bool frameAddedOrRemoved);
+
     ObjectId m_key;
     int m_frame;
     Change m_change;
-    int m_strokeId;
+    int m_gesture;
     bool m_frameExisted; ///< whether the key had offsets at m_frame before the first step
+    ChangeSet m_note; ///< reused for every notification
 };
 
 } // namespace celform::model

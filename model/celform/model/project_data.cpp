@@ -59,6 +59,18 @@ const Drawing* ProjectData::drawingByName(const QString& name) const
 {
     return findByName(drawings, name);
 }
+const HighlightTrack* ProjectData::highlight(ObjectId id) const
+{
+    return findById(look.highlights, id);
+}
+HighlightTrack* ProjectData::highlight(ObjectId id)
+{
+    return findById(look.highlights, id);
+}
+const HighlightTrack* ProjectData::highlightByName(const QString& name) const
+{
+    return findByName(look.highlights, name);
+}
 
 Eigen::Vector3f SparseOffsets::at(std::uint32_t index) const
 {
@@ -71,6 +83,19 @@ Eigen::Vector3f SparseOffsets::at(std::uint32_t index) const
 void SparseOffsets::assign(const std::vector<std::uint32_t>& changed, const std::vector<Eigen::Vector3f>& values,
     const std::vector<char>& present)
 {
+    // Only values of vertices already stored (a brush stroke's later steps): write them in place,
+    // O(m log n) and no allocation.
+    const bool inPlace = std::all_of(present.begin(), present.end(), [](char p) { return p != 0; })
+        && std::all_of(changed.begin(), changed.end(),
+            [this](std::uint32_t v) { return std::binary_search(indices.begin(), indices.end(), v); });
+    if (inPlace) {
+        auto from = indices.begin();
+        for (std::size_t j = 0; j < changed.size(); ++j) {
+            from = std::lower_bound(from, indices.end(), changed[j]);
+            deltas[std::size_t(from - indices.begin())] = values[j];
+        }
+        return;
+    }
     // One merge pass of two ascending lists: O(n + m), no per-vertex insertion into the middle.
     std::vector<std::uint32_t> mergedIndices;
     std::vector<Eigen::Vector3f> mergedDeltas;
@@ -165,6 +190,38 @@ algo::Positions ProjectData::keyShape(const KeyViewpoint& key, int frame) const
     return shape;
 }
 
+std::vector<double> ProjectData::keyFrameWeights(const KeyViewpoint& key, int frame) const
+{
+    if (key.offsetsByFrame.size() == 1)
+        return {1.0};
+    std::vector<double> knots;
+    knots.reserve(key.offsetsByFrame.size());
+    for (const auto& entry : key.offsetsByFrame)
+        knots.push_back(double(entry.first));
+    if (knots.empty())
+        return {};
+    return algo::splineWeights(knots, double(frame), blend.time == TimeInterpolation::PeriodicSpline);
+}
+
+void ProjectData::updateKeyShape(
+    const KeyViewpoint& key, int frame, const std::vector<std::uint32_t>& vertices, algo::Positions& shape) const
+{
+    Q_ASSERT(baseMesh && shape.rows() == baseMesh->vertices.rows());
+    const std::vector<double> weights = keyFrameWeights(key, frame);
+    for (const std::uint32_t v : vertices) {
+        // Summed as offsetsAt() sums (keyed frames in order, weight times offset), then added to
+        // the base as keyShape() adds it: the same floats as a full recomputation.
+        Eigen::Vector3f offset = Eigen::Vector3f::Zero();
+        std::size_t k = 0;
+        for (const auto& entry : key.offsetsByFrame) {
+            const double w = weights[k++];
+            if (w != 0.0)
+                offset += float(w) * entry.second.at(v);
+        }
+        shape.row(v) = baseMesh->vertices.row(v) + offset.transpose();
+    }
+}
+
 ProjectData newProject(std::shared_ptr<const algo::TriMesh> mesh, const QString& meshName)
 {
     ProjectData data;
@@ -184,7 +241,7 @@ bool ProjectData::operator==(const ProjectData& o) const
     const bool meshEqual = (!baseMesh && !o.baseMesh) || (baseMesh && o.baseMesh && *baseMesh == *o.baseMesh);
     return meshEqual && baseMeshName == o.baseMeshName && faceSets == o.faceSets && drawings == o.drawings
         && keys == o.keys && blend == o.blend && look == o.look && shadingOffsets == o.shadingOffsets
-        && nextId == o.nextId;
+        && nextId == o.nextId && currentFrame == o.currentFrame;
 }
 
 const algo::FaceSet* ProjectData::faceSet(const QString& name) const

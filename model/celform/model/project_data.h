@@ -8,6 +8,7 @@
 #include "celform/algorithms/stereo.h"
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/camera.h"
+#include "celform/model/object_id.h"
 
 #include <QByteArray>
 #include <QImage>
@@ -21,8 +22,6 @@
 #include <vector>
 
 namespace celform::model {
-
-using ObjectId = std::uint64_t; ///< stable id of a drawing or key, never reused in a project
 
 /// Sparse per-vertex offsets from the base model (paper 1, section 3.1.2: deformations touch
 /// few vertices). indices are strictly increasing.
@@ -127,6 +126,10 @@ inline algo::GoochParams autoGooch()
     return g;
 }
 
+/// The largest frame number (either sign) a project, the playhead and the command line accept:
+/// about 3.8 days at 24 frames per second, far from integer overflow in frame arithmetic.
+constexpr int kMaxFrame = 8'000'000;
+
 /// The most rounds of normal smoothing a highlight track may ask for.
 constexpr int kMaxHighlightSmoothing = 1000;
 
@@ -136,6 +139,7 @@ constexpr int kMaxHighlightSmoothing = 1000;
 /// same frame is united with or subtracted from this one (resolved when rendering, so editing the
 /// other track changes this one too).
 struct HighlightTrack {
+    ObjectId id = 0; ///< stable id, given by the document (0 until added)
     QString name; ///< unique among the look's tracks, not empty
     QString patch; ///< name of a face set of the base model; empty = all faces
     Eigen::Vector3f guide{0.0f, 1.0f, 0.0f}; ///< stroke direction for tangent frames without UVs
@@ -152,12 +156,8 @@ struct HighlightTrack {
     void setKey(double frame, const algo::HighlightLayer& layer);
     bool operator==(const HighlightTrack& o) const
     {
-        return name == o.name && patch == o.patch && guide == o.guide && visible == o.visible
-            && smoothing == o.smoothing && combineWith == o.combineWith && keys.size() == o.keys.size()
-            && std::equal(
-                keys.begin(), keys.end(), o.keys.begin(), [](const algo::HighlightKey& a, const algo::HighlightKey& b) {
-                    return a.frame == b.frame && a.layer == b.layer;
-                });
+        return id == o.id && name == o.name && patch == o.patch && guide == o.guide && visible == o.visible
+            && smoothing == o.smoothing && combineWith == o.combineWith && keys == o.keys;
     }
 };
 
@@ -229,6 +229,9 @@ struct ProjectData {
     /// empty means all zero.
     std::vector<float> shadingOffsets;
     ObjectId nextId = 1;
+    /// The playhead (DESIGN.md, "The document"): the frame every view shows. Saved with the
+    /// project, not undoable.
+    int currentFrame = 0;
 
     [[nodiscard]] const Drawing* drawing(ObjectId id) const;
     [[nodiscard]] Drawing* drawing(ObjectId id);
@@ -236,6 +239,9 @@ struct ProjectData {
     [[nodiscard]] KeyViewpoint* key(ObjectId id);
     [[nodiscard]] const KeyViewpoint* keyByName(const QString& name) const;
     [[nodiscard]] const Drawing* drawingByName(const QString& name) const;
+    [[nodiscard]] const HighlightTrack* highlight(ObjectId id) const;
+    [[nodiscard]] HighlightTrack* highlight(ObjectId id);
+    [[nodiscard]] const HighlightTrack* highlightByName(const QString& name) const;
     [[nodiscard]] const algo::FaceSet* faceSet(const QString& name) const;
     [[nodiscard]] std::vector<QString> faceSetNames() const;
 
@@ -252,6 +258,13 @@ struct ProjectData {
     /// Base model plus a key's offsets at a frame (#V by 3), with the project's time
     /// interpolation. Needs a base mesh.
     [[nodiscard]] algo::Positions keyShape(const KeyViewpoint& key, int frame) const;
+    /// Recomputes only the given rows (ascending) of a key's shape at a frame, as keyShape()
+    /// computes them: after a change of those vertices' offsets, O(k log n) instead of O(#V).
+    void updateKeyShape(
+        const KeyViewpoint& key, int frame, const std::vector<std::uint32_t>& vertices, algo::Positions& shape) const;
+    /// The weights of a key's keyed frames at a frame (paper 1, section 4.2), in keyed-frame
+    /// order: the interpolated offset of a vertex is the weighted sum of its keyed offsets.
+    [[nodiscard]] std::vector<double> keyFrameWeights(const KeyViewpoint& key, int frame) const;
 
     /// Equal stored data, mesh compared by value (used by tests and the save/load round trip).
     bool operator==(const ProjectData& o) const;

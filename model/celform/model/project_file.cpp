@@ -18,8 +18,10 @@
 
 #include <zlib.h>
 
+#include <cmath>
 #include <cstring>
 #include <limits>
+#include <set>
 
 #include <unistd.h>
 
@@ -311,6 +313,7 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
                 {"values", chunks.addVector("mesh/shading_offsets", data.shadingOffsets)}});
     }
     root.insert("next_id", double(data.nextId));
+    root.insert("current_frame", data.currentFrame);
     return root;
 }
 
@@ -468,6 +471,9 @@ std::vector<HighlightTrack> readHighlights(const Reader& r, const QJsonArray& ar
             r.corrupt(ProjectFile::tr("a highlight layer is not an object"));
         const QJsonObject o = tv.toObject();
         HighlightTrack t;
+        // Optional: files from before highlight ids have none (given after next_id is read).
+        if (o.contains(QLatin1String("id")))
+            t.id = ObjectId(r.count(o, "id"));
         t.name = r.string(o, "name");
         t.patch = r.string(o, "patch");
         t.guide = r.vector3(o, "guide").cast<float>();
@@ -717,6 +723,22 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     for (const auto& k : data.keys)
         if (k.id >= data.nextId)
             r.corrupt(ProjectFile::tr("an object id is not below next_id"));
+    std::set<ObjectId> highlightIds;
+    for (auto& h : data.look.highlights) {
+        if (h.id == 0)
+            h.id = data.nextId++;
+        else if (h.id >= data.nextId)
+            r.corrupt(ProjectFile::tr("an object id is not below next_id"));
+        if (!highlightIds.insert(h.id).second)
+            r.corrupt(ProjectFile::tr("two highlight layers have the same id"));
+    }
+    // Optional: files from before the playhead have none.
+    if (root.contains(QLatin1String("current_frame"))) {
+        const double frame = r.number(root, "current_frame");
+        if (frame != std::floor(frame) || std::abs(frame) > double(kMaxFrame))
+            r.corrupt(ProjectFile::tr("the current frame is not a frame number"));
+        data.currentFrame = int(frame);
+    }
     return data;
 }
 
@@ -741,8 +763,8 @@ QJsonObject highlightTrackJson(const HighlightTrack& t)
             QJsonObject{{"frame", k.frame}, {"color", vec3f(k.layer.color)}, {"epsilon", double(k.layer.shape.epsilon)},
                 {"off_specular_cut", double(k.layer.offSpecularCut)}, {"operations", operations}});
     }
-    return {{"name", t.name}, {"patch", t.patch}, {"guide", vec3f(t.guide)}, {"visible", t.visible},
-        {"normal_smoothing", t.smoothing}, {"combine", combine}, {"keys", keys}};
+    return {{"id", double(t.id)}, {"name", t.name}, {"patch", t.patch}, {"guide", vec3f(t.guide)},
+        {"visible", t.visible}, {"normal_smoothing", t.smoothing}, {"combine", combine}, {"keys", keys}};
 }
 
 void saveProject(const ProjectData& data, const QString& path, bool keepBackup)

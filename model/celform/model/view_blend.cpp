@@ -91,18 +91,13 @@ void BlendEvaluator::shape(
 
 Eigen::Vector3d BlendEvaluator::viewDirection(const ProjectData& data, const Eigen::Vector3d& eye)
 {
-    if (data.baseMesh != m_centroidMesh) {
-        m_centroidMesh = data.baseMesh;
-        m_centroid = data.baseMesh ? algo::centroid(data.baseMesh->vertices) : Eigen::Vector3d::Zero();
-    }
-    const Eigen::Vector3d d = eye - m_centroid;
-    const double n = d.norm();
-    return n > 0 && std::isfinite(n) ? Eigen::Vector3d(d / n) : Eigen::Vector3d::Zero();
+    return viewDirectionFromEye(data, eye);
 }
 
 Eigen::Vector3d viewDirectionFromEye(const ProjectData& data, const Eigen::Vector3d& eye)
 {
-    const Eigen::Vector3d centre = data.baseMesh ? algo::centroid(data.baseMesh->vertices) : Eigen::Vector3d::Zero();
+    // The centroid is computed once per base model and kept with it.
+    const Eigen::Vector3d centre = data.baseMesh ? data.baseMesh->centre() : Eigen::Vector3d::Zero();
     const Eigen::Vector3d d = eye - centre;
     const double n = d.norm();
     return n > 0 && std::isfinite(n) ? Eigen::Vector3d(d / n) : Eigen::Vector3d::Zero();

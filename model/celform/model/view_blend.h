@@ -37,8 +37,8 @@ public:
     /// The blended shape (#V by 3) for a view direction at a frame. Call update() first.
     void shape(const ProjectData& data, const Eigen::Vector3d& viewDirection, int frame, algo::Positions& out) const;
 
-    /// View direction for an eye point with the centroid cached per base mesh.
-    [[nodiscard]] Eigen::Vector3d viewDirection(const ProjectData& data, const Eigen::Vector3d& eye);
+    /// View direction for an eye point (viewDirectionFromEye).
+    [[nodiscard]] static Eigen::Vector3d viewDirection(const ProjectData& data, const Eigen::Vector3d& eye);
 
     /// The sphere for display; null when there is none.
     [[nodiscard]] const algo::ViewSphere* sphere() const { return m_sphere ? &*m_sphere : nullptr; }
@@ -51,8 +51,6 @@ private:
     std::vector<Eigen::Vector3d> m_directions;
     UnspecifiedMode m_mode = UnspecifiedMode::Dummy;
     bool m_built = false;
-    std::shared_ptr<const algo::TriMesh> m_centroidMesh;
-    Eigen::Vector3d m_centroid = Eigen::Vector3d::Zero();
 };
 
 /// Direction from the centroid of the base model towards an eye point (unit; zero when the eye
