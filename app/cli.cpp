@@ -414,19 +414,17 @@ int commandBrush(const QStringList& args)
             Cli::tr("has no vertex %1 (the base model has %2 vertices)")
                 .arg(picked)
                 .arg(doc->data().baseMesh->vertexCount()));
-    const algo::Positions shape = doc->data().keyShape(k, f);
-    const algo::VertexGrid grid(shape);
-    const algo::BrushSelection selection = algo::selectForBrush(shape, grid, std::uint32_t(picked), r);
-    algo::ImageFrame imageFrame{k.camera.right(), k.camera.trueUp(), k.camera.forward()};
-    algo::Positions moves;
+    const QString keyName = k.name;
+    model::BrushStroke stroke = doc->beginBrushStroke(k.id, f, std::uint32_t(picked), r, k.camera);
     if (parser.isSet(drag)) {
         const Eigen::Vector2d d = parseNumbers<2>(QStringLiteral("drag"), parser.value(drag));
-        moves = algo::brushDrag(selection, imageFrame, d.x(), d.y());
+        doc->applyBrushStroke(stroke, {model::BrushMotion::Drag, d.x(), d.y()});
     } else {
-        moves = algo::brushPush(selection, imageFrame, parseNumber(QStringLiteral("push"), parser.value(push)));
+        doc->applyBrushStroke(
+            stroke, {model::BrushMotion::Push, parseNumber(QStringLiteral("push"), parser.value(push)), 0.0});
     }
-    const QString keyName = k.name;
-    doc->displaceKeyVertices(k.id, f, selection.indices, moves, 0, Cli::tr("Brush “%1”").arg(keyName));
+    doc->endBrushStroke(stroke);
+    const auto& selection = stroke.selection;
     doc->saveAs(path);
     if (parser.isSet(json))
         printOut(QString::fromUtf8(QJsonDocument(
@@ -592,14 +590,12 @@ int commandSet(const QStringList& args)
     }
 
     auto doc = openProject(path);
-    blend = doc->data().blend;
     if (alpha)
-        blend.sharpness = *alpha;
+        doc->setSharpness(*alpha);
     if (mode)
-        blend.unspecified = *mode;
+        doc->setUnspecifiedMode(*mode);
     if (newTime)
-        blend.time = *newTime;
-    doc->setBlendSettings(blend);
+        doc->setTimeInterpolation(*newTime);
     look = doc->data().look;
     if (newLight)
         look.light = *newLight;

@@ -129,11 +129,15 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
 
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_document, &model::Document::filePathChanged, this, &MainWindow::updateTitle);
-    connect(m_document, &model::Document::documentReset, this, &MainWindow::updateTitle);
-    connect(m_document, &model::Document::meshChanged, this, &MainWindow::updateStatistics);
-    connect(m_document, &model::Document::drawingsChanged, this, &MainWindow::updateStatistics);
-    connect(m_document, &model::Document::keysChanged, this, &MainWindow::updateStatistics);
-    connect(m_document, &model::Document::documentReset, this, &MainWindow::updateStatistics);
+    connect(m_document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
+        using model::Part;
+        if (change.reset)
+            updateTitle();
+        // The status bar counts vertices, drawings and keys: only structure changes them.
+        if (change.reset || change.has(Part::Mesh)
+            || ((change.has(Part::Drawings) || change.has(Part::Keys)) && change.structure))
+            updateStatistics();
+    });
 
     const QString recoveryDir
         = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/recovery");
@@ -212,8 +216,10 @@ void MainWindow::createDocks()
     makeDock(tr("Viewing Sphere"), QStringLiteral("sphereDock"), m_sphere, Qt::RightDockWidgetArea);
     auto followCamera = [this] { m_sphere->setViewDirection(m_viewport->viewDirection()); };
     connect(m_viewport, &views::Viewport::cameraChanged, this, followCamera);
-    connect(m_document, &model::Document::documentReset, this, followCamera);
-    connect(m_document, &model::Document::keysChanged, this, followCamera);
+    connect(m_document, &model::Document::changed, this, [followCamera](const model::ChangeSet& change) {
+        if (change.reset || (change.has(model::Part::Keys) && !change.offsetsOnly))
+            followCamera();
+    });
     connect(m_sphere, &views::ViewSpherePanel::keyActivated, this, [this](model::ObjectId key) {
         m_scene->select({views::ScenePanel::ItemKind::Key, key});
         if (const auto* k = m_document->data().key(key))
@@ -317,9 +323,7 @@ void MainWindow::createActions()
         [this] {
             if (!m_document->hasMesh())
                 return;
-            model::Look look = m_document->data().look;
-            look.renderCamera = m_viewport->camera();
-            m_document->setLook(look);
+            m_document->setRenderCamera(m_viewport->camera());
             statusBar()->showMessage(tr("The render camera is the current view."), 4000);
         });
     make(QStringLiteral("actionViewRenderCamera"), tr("View Through Render &Camera"),

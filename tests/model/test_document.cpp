@@ -86,7 +86,7 @@ private slots:
 
     void addDrawing()
     {
-        QSignalSpy spy(&m_doc, &Document::drawingsChanged);
+        QSignalSpy spy(&m_doc, &Document::changed);
         ObjectId id = 0;
         const ProjectData after = applyUndoRedo([&] { id = m_doc.addDrawing(smallDrawing(QStringLiteral("side"))); });
         QCOMPARE(after.drawings.size(), std::size_t(1));
@@ -130,8 +130,10 @@ private slots:
         const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
         const double start = m_doc.data().drawing(d)->opacity;
         const int count = m_doc.undoStack()->count();
+        m_doc.beginGesture(); // a slider's press
         for (int i = 1; i <= 10; ++i)
             m_doc.setDrawingOpacity(d, i / 10.0);
+        m_doc.endGesture(); // its release
         QCOMPARE(m_doc.undoStack()->count(), count + 1);
         QCOMPARE(m_doc.data().drawing(d)->opacity, 1.0);
         m_doc.undoStack()->undo();
@@ -185,7 +187,8 @@ private slots:
         BlendSettings blend;
         blend.sharpness = 2.5;
         blend.unspecified = UnspecifiedMode::Cosine2;
-        ProjectData after = applyUndoRedo([&] { m_doc.setBlendSettings(blend); });
+        applyUndoRedo([&] { m_doc.setSharpness(2.5); });
+        ProjectData after = applyUndoRedo([&] { m_doc.setUnspecifiedMode(UnspecifiedMode::Cosine2); });
         QVERIFY(after.blend == blend);
         Look look;
         look.style = ShadingStyle::Gooch;
@@ -219,7 +222,7 @@ private slots:
 
     void faceSetsAreUndoable()
     {
-        QSignalSpy changed(&m_doc, &Document::faceSetsChanged);
+        QSignalSpy changed(&m_doc, &Document::changed);
         ProjectData after = applyUndoRedo([&] {
             m_doc.setFaceSet(QStringLiteral("p"), {3, 1, 1}, QStringLiteral("t"));
         });
@@ -228,9 +231,10 @@ private slots:
         QVERIFY(changed.count() >= 3);
         // A paint drag: several steps with one stroke id are one undo step.
         const int count = m_doc.undoStack()->count();
-        const int stroke = m_doc.newStrokeId();
-        m_doc.setFaceSet(QStringLiteral("p"), {0, 1, 3}, QStringLiteral("paint"), stroke);
-        m_doc.setFaceSet(QStringLiteral("p"), {0, 1, 2, 3}, QStringLiteral("paint"), stroke);
+        m_doc.beginGesture();
+        m_doc.setFaceSet(QStringLiteral("p"), {0, 1, 3}, QStringLiteral("paint"));
+        m_doc.setFaceSet(QStringLiteral("p"), {0, 1, 2, 3}, QStringLiteral("paint"));
+        m_doc.endGesture();
         QCOMPARE(m_doc.undoStack()->count(), count + 1);
         QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces.size(), std::size_t(4));
         m_doc.undoStack()->undo();
@@ -245,13 +249,11 @@ private slots:
     void renameAndRemoveFaceSetFollowLayers()
     {
         m_doc.setFaceSet(QStringLiteral("ear"), {0, 1}, QStringLiteral("t"));
-        Look look = m_doc.data().look;
         HighlightTrack track;
         track.name = QStringLiteral("shine");
         track.patch = QStringLiteral("ear");
         track.setKey(0, algo::HighlightLayer{});
-        look.highlights.push_back(track);
-        m_doc.setLook(look);
+        m_doc.addHighlightLayers({track}, QStringLiteral("Add"));
 
         ProjectData after
             = applyUndoRedo([&] { m_doc.renameFaceSet(QStringLiteral("ear"), QStringLiteral("left ear")); });

@@ -120,12 +120,13 @@ private slots:
         const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         const ProjectData before = m_doc.data();
         const int count = m_doc.undoStack()->count();
-        const int stroke = m_doc.newStrokeId();
+        m_doc.beginGesture();
         for (int step = 0; step < 5; ++step) {
             algo::Positions move(2, 3);
             move << 0.1f, 0, 0, 0, 0.05f, 0;
-            m_doc.displaceKeyVertices(key, 0, {2, 4}, move, stroke, QStringLiteral("Brush"));
+            m_doc.displaceKeyVertices(key, 0, {2, 4}, move, QStringLiteral("Brush"));
         }
+        m_doc.endGesture();
         QCOMPARE(m_doc.undoStack()->count(), count + 1);
         const algo::Positions shape = m_doc.data().keyShape(*m_doc.data().key(key), 0);
         QVERIFY(shape.row(2).isApprox(Eigen::RowVector3f(0.5f, 1, 0)));
@@ -139,7 +140,9 @@ private slots:
         // A new stroke is a new undo step.
         algo::Positions move(1, 3);
         move << 0, 0, 0.2f;
-        m_doc.displaceKeyVertices(key, 0, {4}, move, m_doc.newStrokeId(), QStringLiteral("Brush"));
+        m_doc.beginGesture();
+        m_doc.displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"));
+        m_doc.endGesture();
         QCOMPARE(m_doc.undoStack()->count(), count + 2);
     }
 
@@ -153,7 +156,7 @@ private slots:
         const auto selection = algo::selectForBrush(shape, grid, 4, 1.5); // picks (0,0,1)
         const algo::ImageFrame frame{k.camera.right(), k.camera.trueUp(), k.camera.forward()};
         m_doc.displaceKeyVertices(
-            key, 0, selection.indices, algo::brushDrag(selection, frame, 0.3, 0.0), 0, QStringLiteral("Brush"));
+            key, 0, selection.indices, algo::brushDrag(selection, frame, 0.3, 0.0), QStringLiteral("Brush"));
         const algo::Positions moved = m_doc.data().keyShape(*m_doc.data().key(key), 0);
         // The picked vertex follows exactly; depth (z for this camera) is kept everywhere.
         QVERIFY(moved.row(4).isApprox(Eigen::RowVector3f(0.3f, 0, 1)));
@@ -242,7 +245,7 @@ private slots:
         const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         algo::Positions move(1, 3);
         move << 0.25f, 0, 0;
-        m_doc.displaceKeyVertices(key, 0, {4}, move, 0, QStringLiteral("Brush"));
+        m_doc.displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"));
         const QString path = dir.filePath(QStringLiteral("keys.celform"));
         m_doc.saveAs(path);
         Document other;

@@ -392,7 +392,7 @@ private slots:
         saveProject(richProject(), good);
         Document doc;
         doc.open(good);
-        doc.setBlendSettings(BlendSettings{3.0, UnspecifiedMode::Dummy, TimeInterpolation::NaturalSpline});
+        doc.setSharpness(3.0);
         const ProjectData before = doc.data();
         const int undoCount = doc.undoStack()->count();
 

@@ -3,6 +3,7 @@
 // layer removal; after each step the document's Look::highlights and its save/load round trip.
 #include "celform/model/document.h"
 #include "celform/model/project_file.h"
+#include "celform/views/frame_timeline.h"
 #include "celform/views/highlight_panel.h"
 
 #include <QApplication>
@@ -22,8 +23,8 @@
 using celform::algo::TriMesh;
 using celform::model::Document;
 using celform::model::Look;
+using celform::views::FrameTimeline;
 using celform::views::HighlightPanel;
-using celform::views::HighlightTimeline;
 
 namespace {
 
@@ -64,6 +65,19 @@ class TestHighlightPanel : public QObject {
         QVERIFY(loaded == m_doc->data().look);
     }
 
+    /// Holds a key on a control: one press, repeats as the keyboard sends them, one release.
+    static void holdKey(QWidget* w, Qt::Key key, int repeats)
+    {
+        QKeyEvent press(QEvent::KeyPress, key, Qt::NoModifier);
+        QApplication::sendEvent(w, &press);
+        for (int i = 0; i < repeats; ++i) {
+            QKeyEvent repeat(QEvent::KeyPress, key, Qt::NoModifier, QString(), true);
+            QApplication::sendEvent(w, &repeat);
+        }
+        QKeyEvent release(QEvent::KeyRelease, key, Qt::NoModifier);
+        QApplication::sendEvent(w, &release);
+    }
+
     void setEpsilon(double value)
     {
         auto* spin = child<QDoubleSpinBox>("highlightEpsilon");
@@ -94,7 +108,7 @@ private slots:
     {
         const auto& tracks = m_doc->data().look.highlights;
         QVERIFY(tracks.empty());
-        QSignalSpy frames(m_panel.get(), &HighlightPanel::frameChanged);
+        QSignalSpy changes(m_doc.get(), &Document::changed);
 
         // Add a layer: one key at frame 0 with the default layer.
         QTest::mouseClick(child<QPushButton>("addHighlightLayer"), Qt::LeftButton);
@@ -114,17 +128,24 @@ private slots:
         QCOMPARE(m_doc->undoStack()->index(), afterAdd + 1); // its own undo step
         checkRoundTrip();
 
-        // A drag of the same spin box on the same key is one undo step.
-        setEpsilon(0.11);
-        setEpsilon(0.1);
-        QCOMPARE(m_doc->undoStack()->index(), afterAdd + 1);
+        // Holding the spin box's Up key (a press and its repeats) is one undo step of its own.
+        holdKey(child<QDoubleSpinBox>("highlightEpsilon"), Qt::Key_Up, 2);
+        QCOMPARE(m_doc->undoStack()->index(), afterAdd + 2);
+        QVERIFY(tracks[0].keys[0].layer.shape.epsilon > 0.125f); // three steps or more (Qt may accelerate)
+        m_doc->undoStack()->undo(); // the whole hold at once
         QCOMPARE(tracks[0].keys[0].layer.shape.epsilon, 0.1f);
+        QCOMPARE(m_doc->undoStack()->index(), afterAdd + 1);
+        // Each step of the hold was one change notification.
+        changes.clear();
+        setEpsilon(0.1); // no change: no step, no notification
+        QCOMPARE(changes.count(), 0);
 
         // Frame 30 through the frame spin box, then a second epsilon: a second key.
         child<QSpinBox>("highlightFrame")->setValue(30);
         QCOMPARE(m_panel->currentFrame(), 30);
-        QCOMPARE(frames.count(), 1);
-        QCOMPARE(frames.last().at(0).toInt(), 30);
+        QCOMPARE(m_doc->currentFrame(), 30); // the document's playhead
+        QCOMPARE(changes.count(), 1);
+        QVERIFY(changes.last().at(0).value<celform::model::ChangeSet>().onlyPlayhead());
         QCOMPARE(child<QDoubleSpinBox>("highlightEpsilon")->value(), 0.1); // held after the last key
         setEpsilon(0.3);
         QCOMPARE(tracks[0].keys.size(), std::size_t(2));
@@ -136,7 +157,7 @@ private slots:
         checkRoundTrip();
 
         // Frame 15 by clicking the timeline: the panel shows the mean of the two keys.
-        HighlightTimeline* timeline = m_panel->timeline();
+        FrameTimeline* timeline = m_panel->timeline();
         QTest::mouseClick(timeline, Qt::LeftButton, {}, QPoint(timeline->xForFrame(15), timeline->height() / 2));
         QCOMPARE(m_panel->currentFrame(), 15);
         QCOMPARE(child<QSpinBox>("highlightFrame")->value(), 15);

@@ -216,9 +216,7 @@ private slots:
     void outsideTheKeysShowsFalloff()
     {
         makeDocument(true);
-        auto settings = m_doc->data().blend;
-        settings.unspecified = UnspecifiedMode::Cosine;
-        m_doc->setBlendSettings(settings);
+        m_doc->setUnspecifiedMode(UnspecifiedMode::Cosine);
         showPanel();
         const Eigen::Vector3d away = Eigen::Vector3d(0.1, -0.3, -1.0).normalized();
         m_panel->setViewDirection(away);

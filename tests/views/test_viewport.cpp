@@ -414,10 +414,12 @@ private slots:
         QVERIFY(dragon && dragon->faceCount() == 871414);
         ProjectData data;
         data.baseMesh = dragon;
-        m_doc->reset(std::move(data)); // the viewport rebuilds on documentReset
+        m_doc->reset(std::move(data)); // the viewport rebuilds on a reset
         checkModelVisible(frame(), 0.15);
         // A mesh edit alone: only the polydata is rebuilt.
-        emit m_doc->meshChanged();
+        celform::model::ChangeSet meshChange = celform::model::ChangeSet::of(celform::model::Part::Mesh);
+        meshChange.structure = true;
+        emit m_doc->changed(meshChange);
         const QImage image = frame();
         checkModelVisible(image, 0.15);
         image.save(QStringLiteral("/tmp/viewport_dragon.png"));

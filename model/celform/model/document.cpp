@@ -129,6 +129,10 @@ void Document::reset(ProjectData data, const QString& filePath)
 {
     m_openOffsets = nullptr;
     m_data = std::move(data);
+    // Layers from files of before highlight ids, or made by hand, get theirs now.
+    for (HighlightTrack& track : m_data.look.highlights)
+        if (track.id == 0)
+            track.id = m_data.nextId++;
     m_undo->clear();
     m_undo->setClean();
     m_gesture = 0;

@@ -167,6 +167,13 @@ public:
     void setHighlightKeys(ObjectId id, std::vector<algo::HighlightKey> keys, const QString& undoText);
     /// Removes the key at frame; a layer keeps at least one key (no change then).
     void removeHighlightKey(ObjectId id, double frame);
+    /// Direct manipulation of a highlight at frame: Translation moves it by (a, b) along the
+    /// layer's du and dv as they are before its operations (rotations earlier in the list turn
+    /// the frame; they are undone here), Rotation turns it by a degrees, DirectionalScaling adds a
+    /// to delta (clamped to [0, 1]). A layer without an operation of that type gets one in every
+    /// key first (translation and rotation at the front, scaling at the end), so its keys keep
+    /// interpolating. Steps in one gesture are one undo step.
+    void nudgeHighlight(ObjectId id, double frame, algo::HighlightOperationType type, double a, double b = 0.0);
     void setHighlightPatch(ObjectId id, const QString& patch);
     void setHighlightGuide(ObjectId id, const Eigen::Vector3f& guide);
     void setHighlightSmoothing(ObjectId id, int rounds);

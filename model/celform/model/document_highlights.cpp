@@ -7,6 +7,7 @@
 #include "celform/model/io_error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 namespace celform::model {
@@ -196,6 +197,57 @@ void Document::removeHighlightKey(ObjectId id, double frame)
     if (keys.size() == track.keys.size())
         return;
     setHighlightKeys(id, std::move(keys), tr("Delete Highlight Key"));
+}
+
+void Document::nudgeHighlight(ObjectId id, double frame, algo::HighlightOperationType type, double a, double b)
+{
+    using T = algo::HighlightOperationType;
+    const HighlightTrack& track = highlightOrThrow(id);
+    if (type != T::Translation && type != T::Rotation && type != T::DirectionalScaling)
+        return;
+    auto firstOf = [type](const std::vector<algo::HighlightOperation>& ops) {
+        return std::size_t(
+            std::find_if(ops.begin(), ops.end(), [type](const auto& op) { return op.type == type; }) - ops.begin());
+    };
+    auto neutral = [type] {
+        return type == T::Translation ? algo::HighlightOperation::translation(0.f, 0.f)
+            : type == T::Rotation     ? algo::HighlightOperation::rotation(0.f)
+                                      : algo::HighlightOperation::directionalScaling(0.f);
+    };
+    HighlightTrack edited = track;
+    for (auto& k : edited.keys) {
+        auto& ops = k.layer.shape.operations;
+        if (firstOf(ops) == ops.size())
+            ops.insert(type == T::DirectionalScaling ? ops.end() : ops.begin(), neutral());
+    }
+    algo::HighlightLayer layer = edited.layerAt(frame);
+    auto& ops = layer.shape.operations;
+    const std::size_t index = firstOf(ops);
+    if (index == ops.size())
+        return; // cannot happen: every key has one now
+    algo::HighlightOperation& op = ops[index];
+    if (type == T::Rotation) {
+        op.a = float(std::clamp(op.a + a, -360.0, 360.0));
+    } else if (type == T::DirectionalScaling) {
+        op.a = float(std::clamp(op.a + a, 0.0, 1.0));
+    } else {
+        // Paper 2, "translation": H + alpha du + beta dv in the frame the earlier rotations left.
+        double degrees = 0.0;
+        for (std::size_t i = 0; i < index; ++i)
+            if (ops[i].type == T::Rotation)
+                degrees += ops[i].a;
+        const double radians = degrees * 3.14159265358979323846 / 180.0;
+        const double c = std::cos(radians), s = std::sin(radians);
+        op.a += float(c * a + s * b);
+        op.b += float(-s * a + c * b);
+    }
+    if (!std::isfinite(op.a) || !std::isfinite(op.b))
+        return;
+    edited.setKey(frame, layer);
+    setHighlightKeys(id, std::move(edited.keys),
+        type == T::Rotation                 ? tr("Rotate Highlight")
+            : type == T::DirectionalScaling ? tr("Scale Highlight")
+                                            : tr("Move Highlight"));
 }
 
 void Document::setHighlightPatch(ObjectId id, const QString& patch)

@@ -471,7 +471,7 @@ std::vector<HighlightTrack> readHighlights(const Reader& r, const QJsonArray& ar
             r.corrupt(ProjectFile::tr("a highlight layer is not an object"));
         const QJsonObject o = tv.toObject();
         HighlightTrack t;
-        // Optional: files from before highlight ids have none (given after next_id is read).
+        // Optional: files from before highlight ids have none (Document::reset gives them).
         if (o.contains(QLatin1String("id")))
             t.id = ObjectId(r.count(o, "id"));
         t.name = r.string(o, "name");
@@ -724,10 +724,10 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         if (k.id >= data.nextId)
             r.corrupt(ProjectFile::tr("an object id is not below next_id"));
     std::set<ObjectId> highlightIds;
-    for (auto& h : data.look.highlights) {
+    for (const auto& h : data.look.highlights) {
         if (h.id == 0)
-            h.id = data.nextId++;
-        else if (h.id >= data.nextId)
+            continue; // a file from before highlight ids: the document gives them
+        if (h.id >= data.nextId)
             r.corrupt(ProjectFile::tr("an object id is not below next_id"));
         if (!highlightIds.insert(h.id).second)
             r.corrupt(ProjectFile::tr("two highlight layers have the same id"));

@@ -1,19 +1,19 @@
-// Highlight layers bound to the document's look: refresh() keeps every control in step with the
-// look after undo, redo or a change from the command line, and with the panel's current frame.
+// Highlight layers bound to the document: refresh() keeps every control in step with the layers
+// after undo, redo, a change from the command line or the viewport, and with the playhead. Edits
+// are document operations on the selected layer's id.
 #include "celform/views/highlight_panel.h"
 
-#include "celform/views/scrolling_panel.h"
-
 #include "celform/views/color_swatch.h"
+#include "celform/views/frame_timeline.h"
+#include "celform/views/gesture_tracker.h"
+#include "celform/views/highlight_combinations.h"
+#include "celform/views/highlight_operations.h"
 #include "celform/views/look_shading.h"
-
+#include "celform/views/scrolling_panel.h"
 #include "celform/views/viewport.h"
 
-#include "celform/algorithms/tri_mesh.h"
 #include "celform/model/io_error.h"
-#include "celform/model/render_output.h"
 
-#include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -26,206 +26,22 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QMessageBox>
-#include <QMouseEvent>
-#include <QPainter>
-#include <QPainterPath>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QToolButton>
-#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <utility>
 
 namespace celform::views {
 namespace {
 
-/// Range, step, decimals and the paper's names of an operation's two parameters.
-struct ParameterSpec {
-    double min, max, step;
-    int decimals;
-    const char* name;
-    const char* tip;
-};
-
-std::pair<ParameterSpec, ParameterSpec> operationSpecs(algo::HighlightOperationType type)
-{
-    using T = algo::HighlightOperationType;
-    switch (type) {
-    case T::Translation:
-        return {{-2, 2, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "α"),
-                    QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "alpha: moves the highlight along du")},
-            {-2, 2, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "β"),
-                QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "beta: moves the highlight along dv")}};
-    case T::Rotation:
-        return {{-360, 360, 5, 1, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "angle"),
-                    QT_TRANSLATE_NOOP("celform::views::HighlightPanel",
-                        "Angle in degrees, du turning towards dv: turns the frame of later operations")},
-            {0, 0, 0, 0, nullptr, nullptr}};
-    case T::DirectionalScaling:
-        return {
-            {0, 1, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "δ"),
-                QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "delta in [0, 1]: stretches the area along du")},
-            {0, 0, 0, 0, nullptr, nullptr}};
-    case T::Split:
-        return {{0, 5, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "γ1"),
-                    QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "gamma1 >= 0: cuts the area across du")},
-            {0, 5, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "γ2"),
-                QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "gamma2 >= 0: cuts the area across dv")}};
-    case T::Squaring:
-        return {{0, 1, 0.05, 3, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "σ"),
-                    QT_TRANSLATE_NOOP("celform::views::HighlightPanel",
-                        "sigma in [0, 1]: squareness of the area (about 0.2 is squarest)")},
-            {1, 16, 1, 0, QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "n"),
-                QT_TRANSLATE_NOOP("celform::views::HighlightPanel", "n >= 1: exponent of the squaring")}};
-    }
-    return {};
-}
-
-algo::HighlightOperation defaultOperation(algo::HighlightOperationType type)
-{
-    using T = algo::HighlightOperationType;
-    switch (type) {
-    case T::Translation:
-        return algo::HighlightOperation::translation(0.f, 0.f);
-    case T::Rotation:
-        return algo::HighlightOperation::rotation(0.f);
-    case T::DirectionalScaling:
-        return algo::HighlightOperation::directionalScaling(0.f);
-    case T::Split:
-        return algo::HighlightOperation::split(0.f, 0.f);
-    case T::Squaring:
-        return algo::HighlightOperation::squaring(0.2f, 2.f);
-    }
-    return {};
-}
-
-QString operationTitle(algo::HighlightOperationType type)
-{
-    using T = algo::HighlightOperationType;
-    switch (type) {
-    case T::Translation:
-        return HighlightPanel::tr("Translate");
-    case T::Rotation:
-        return HighlightPanel::tr("Rotate");
-    case T::DirectionalScaling:
-        return HighlightPanel::tr("Scale");
-    case T::Split:
-        return HighlightPanel::tr("Split");
-    case T::Squaring:
-        return HighlightPanel::tr("Square");
-    }
-    return {};
-}
+constexpr int kLayerIdRole = Qt::UserRole + 1;
 
 } // namespace
-
-// --- timeline ------------------------------------------------------------------------------------
-
-HighlightTimeline::HighlightTimeline(QWidget* parent)
-    : QWidget(parent)
-{
-    setToolTip(tr("Frames of the animation: diamonds are the selected layer's keys; click or drag to move the "
-                  "current frame"));
-    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    setFixedHeight(40);
-}
-
-void HighlightTimeline::setFrameCount(int last)
-{
-    m_last = std::max(1, last);
-    update();
-}
-
-void HighlightTimeline::setKeys(std::vector<double> frames)
-{
-    m_keys = std::move(frames);
-    update();
-}
-
-void HighlightTimeline::setFrame(int frame)
-{
-    m_frame = frame;
-    update();
-}
-
-int HighlightTimeline::xForFrame(int frame) const
-{
-    const double margin = 8.0;
-    return int(std::lround(margin + (width() - 2.0 * margin) * double(frame) / double(m_last)));
-}
-
-int HighlightTimeline::frameAt(double x) const
-{
-    const double margin = 8.0;
-    const double t = (x - margin) / std::max(1.0, width() - 2.0 * margin);
-    return std::clamp(int(std::lround(t * m_last)), 0, m_last);
-}
-
-void HighlightTimeline::paintEvent(QPaintEvent*)
-{
-    QPainter p(this);
-    p.setRenderHint(QPainter::Antialiasing);
-    const QPalette& pal = palette();
-    p.fillRect(rect(), pal.color(QPalette::Base));
-    const int axisY = height() - 12;
-    p.setPen(pal.color(QPalette::Mid));
-    p.drawLine(xForFrame(0), axisY, xForFrame(m_last), axisY);
-    // Ticks: every frame when there is room, else every 6th; labels every 12th (half a second).
-    const double perFrame = (width() - 16.0) / double(m_last);
-    const int tickStep = perFrame >= 4.0 ? 1 : 6;
-    QFont font = p.font();
-    font.setPointSizeF(std::max(6.0, font.pointSizeF() * 0.75));
-    p.setFont(font);
-    for (int f = 0; f <= m_last; f += tickStep) {
-        const int x = xForFrame(f);
-        const bool major = f % 12 == 0;
-        p.setPen(pal.color(major ? QPalette::Text : QPalette::Mid));
-        p.drawLine(x, axisY, x, axisY - (major ? 6 : 3));
-        if (major && perFrame * 12 >= 18)
-            p.drawText(QRect(x - 15, axisY + 1, 30, 11), Qt::AlignCenter, QString::number(f));
-    }
-    // Key marks.
-    p.setPen(QPen(pal.color(QPalette::Text), 1));
-    for (double k : m_keys) {
-        const double x = 8.0 + (width() - 16.0) * k / double(m_last);
-        QPainterPath diamond;
-        diamond.moveTo(x, 6);
-        diamond.lineTo(x + 5, 12);
-        diamond.lineTo(x, 18);
-        diamond.lineTo(x - 5, 12);
-        diamond.closeSubpath();
-        p.fillPath(diamond, QColor(240, 190, 40));
-        p.drawPath(diamond);
-    }
-    // Current-frame cursor.
-    const int cx = xForFrame(m_frame);
-    p.setPen(QPen(QColor(220, 50, 40), 2));
-    p.drawLine(cx, 2, cx, axisY);
-    p.fillRect(QRect(cx - 4, 0, 9, 4), QColor(220, 50, 40));
-}
-
-void HighlightTimeline::mousePressEvent(QMouseEvent* event)
-{
-    if (event->button() == Qt::LeftButton)
-        emit frameScrubbed(frameAt(event->position().x()));
-}
-
-void HighlightTimeline::mouseMoveEvent(QMouseEvent* event)
-{
-    if (event->buttons() & Qt::LeftButton) {
-        const int f = frameAt(event->position().x());
-        if (f != m_frame)
-            emit frameScrubbed(f);
-    }
-}
-
-// --- panel ---------------------------------------------------------------------------------------
 
 HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     : QWidget(parent)
@@ -268,25 +84,16 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     connect(m_layers, &QListWidget::itemChanged, this, [this](QListWidgetItem* item) {
         if (m_updating)
             return;
-        const int row = m_layers->row(item);
-        const auto& tracks = m_document->data().look.highlights;
-        if (row < 0 || row >= int(tracks.size()))
+        const auto id = model::ObjectId(item->data(kLayerIdRole).toULongLong());
+        const model::HighlightTrack* t = m_document->data().highlight(id);
+        if (!t)
             return;
-        const QString oldName = tracks[std::size_t(row)].name;
-        const QString newName = item->text().trimmed();
+        const QString name = item->text().trimmed();
         const bool visible = item->checkState() == Qt::Checked;
-        if (newName != oldName) {
-            edit(tr("Rename Highlight Layer"), [&](model::Look& l) {
-                l.highlights[std::size_t(row)].name = newName;
-                for (auto& t : l.highlights)
-                    for (auto& c : t.combineWith)
-                        if (c.second == oldName)
-                            c.second = newName;
-            });
-        } else if (visible != tracks[std::size_t(row)].visible) {
-            edit(visible ? tr("Show Highlight Layer") : tr("Hide Highlight Layer"),
-                [&](model::Look& l) { l.highlights[std::size_t(row)].visible = visible; });
-        }
+        if (name != t->name)
+            run([&] { m_document->renameHighlightLayer(id, name); });
+        else if (visible != t->visible)
+            m_document->setHighlightVisible(id, visible);
         refresh(); // a refused name goes back to the stored one
     });
     connect(m_addLayer, &QPushButton::clicked, this, [this] {
@@ -294,19 +101,11 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         QString name;
         for (int n = int(tracks.size()) + 1;; ++n) {
             name = tr("Highlight %1").arg(n);
-            if (std::none_of(
-                    tracks.begin(), tracks.end(), [&](const model::HighlightTrack& t) { return t.name == name; }))
+            if (!m_document->data().highlightByName(name))
                 break;
         }
-        const int index = int(tracks.size());
-        const int frame = m_frame;
-        edit(tr("Add Highlight Layer"), [&](model::Look& l) {
-            model::HighlightTrack track;
-            track.name = name;
-            track.setKey(frame, algo::HighlightLayer{});
-            l.highlights.push_back(std::move(track));
-        });
-        selectLayer(index);
+        m_document->addHighlightLayer(name, m_document->currentFrame());
+        selectLayer(int(m_document->data().look.highlights.size()) - 1);
     });
     // Presets: the paper's two worked examples as starting points (Figures 5 and 6).
     auto* presetMenu = new QMenu(m_addPreset);
@@ -318,23 +117,14 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     presetMenu->setToolTipsVisible(true);
     m_addPreset->setMenu(presetMenu);
     connect(m_removeLayer, &QPushButton::clicked, this, [this] {
-        const int row = selectedLayer();
-        if (row < 0)
-            return;
-        edit(tr("Remove Highlight Layer"), [row](model::Look& l) {
-            const QString name = l.highlights[std::size_t(row)].name;
-            l.highlights.erase(l.highlights.begin() + row);
-            for (auto& t : l.highlights)
-                t.combineWith.erase(std::remove_if(t.combineWith.begin(), t.combineWith.end(),
-                                        [&](const auto& c) { return c.second == name; }),
-                    t.combineWith.end());
-        });
+        if (const model::ObjectId id = selectedLayerId())
+            m_document->removeHighlightLayer(id);
     });
 
     // --- timeline --------------------------------------------------------------------------------
     auto* timeBox = new QGroupBox(tr("Keys"), content);
     auto* timeLayout = new QVBoxLayout(timeBox);
-    m_timeline = new HighlightTimeline(timeBox);
+    m_timeline = new FrameTimeline(m_document, timeBox);
     m_timeline->setObjectName(QStringLiteral("highlightTimeline"));
     timeLayout->addWidget(m_timeline);
     auto* frameRow = new QHBoxLayout;
@@ -373,35 +163,28 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     keyRow->addStretch();
     timeLayout->addLayout(keyRow);
     layout->addWidget(timeBox);
-    connect(m_timeline, &HighlightTimeline::frameScrubbed, this, &HighlightPanel::setCurrentFrame);
     connect(m_frameSpin, qOverload<int>(&QSpinBox::valueChanged), this, [this](int f) {
         if (!m_updating)
             setCurrentFrame(f);
     });
     connect(m_lastFrame, qOverload<int>(&QSpinBox::valueChanged), this, [this](int last) {
-        m_timeline->setFrameCount(last);
+        m_timeline->setLastFrame(last);
         {
             const QSignalBlocker block(m_frameSpin);
             m_frameSpin->setMaximum(last);
         }
-        if (m_frame > last)
+        if (currentFrame() > last)
             setCurrentFrame(last);
     });
     connect(m_previousKey, &QToolButton::clicked, this, [this] { jumpToKey(-1); });
     connect(m_nextKey, &QToolButton::clicked, this, [this] { jumpToKey(1); });
     connect(m_key, &QPushButton::clicked, this, [this] {
-        const int frame = m_frame;
-        editTrack(tr("Key Highlight"), [frame](model::HighlightTrack& t) { t.setKey(frame, t.layerAt(frame)); });
+        if (const model::HighlightTrack* t = track())
+            run([&] { m_document->setHighlightKey(t->id, currentFrame(), t->layerAt(currentFrame())); });
     });
     connect(m_deleteKey, &QPushButton::clicked, this, [this] {
-        const double frame = m_frame;
-        editTrack(tr("Delete Highlight Key"), [frame](model::HighlightTrack& t) {
-            if (t.keys.size() < 2)
-                return;
-            t.keys.erase(std::remove_if(t.keys.begin(), t.keys.end(),
-                             [frame](const algo::HighlightKey& k) { return k.frame == frame; }),
-                t.keys.end());
-        });
+        if (const model::ObjectId id = selectedLayerId())
+            m_document->removeHighlightKey(id, currentFrame());
     });
 
     // --- parameters ------------------------------------------------------------------------------
@@ -415,26 +198,21 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         const model::HighlightTrack* t = track();
         if (!t)
             return;
-        const QColor chosen = QColorDialog::getColor(toQColor(t->layerAt(m_frame).color), this, tr("Highlight Colour"));
+        const QColor chosen
+            = QColorDialog::getColor(toQColor(t->layerAt(currentFrame()).color), this, tr("Highlight Colour"));
         if (chosen.isValid())
-            editKey(tr("Change Highlight Colour"), [&](algo::HighlightLayer& l) { l.color = fromQColor(chosen); });
+            editKey([&](algo::HighlightLayer& l) { l.color = fromQColor(chosen); });
     });
     m_epsilon = makeSpin(0.001, 1.0, 0.01, 3, tr("epsilon: size of the area where (N, H) > 1 - epsilon (keyed)"));
     m_epsilon->setObjectName(QStringLiteral("highlightEpsilon"));
     form->addRow(tr("&Epsilon:"), m_epsilon);
-    connect(m_epsilon, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        editKey(
-            tr("Change Highlight Size"), [v](algo::HighlightLayer& l) { l.shape.epsilon = float(v); },
-            QStringLiteral("epsilon"));
-    });
+    connect(m_epsilon, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+        [this](double v) { editKey([v](algo::HighlightLayer& l) { l.shape.epsilon = float(v); }); });
     m_cut = makeSpin(-1.0, 1.0, 0.05, 3,
         tr("Off-specular cut: no highlight where N·L is at most this value; -1 turns it off (keyed)"));
     form->addRow(tr("Off-specular c&ut:"), m_cut);
-    connect(m_cut, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        editKey(
-            tr("Change Off-Specular Cut"), [v](algo::HighlightLayer& l) { l.offSpecularCut = float(v); },
-            QStringLiteral("cut"));
-    });
+    connect(m_cut, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+        [this](double v) { editKey([v](algo::HighlightLayer& l) { l.offSpecularCut = float(v); }); });
     // The patch: the paper shapes each highlight on one (u, v) patch; here a face set painted
     // on the model (the Patch tool of the viewport), or all faces.
     auto* patchRow = new QWidget(m_parameters);
@@ -482,8 +260,8 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     patchLayout->addWidget(patchMenuButton);
     form->addRow(tr("&Patch:"), patchRow);
     connect(m_patch, qOverload<int>(&QComboBox::activated), this, [this](int index) {
-        const QString patch = m_patch->itemData(index).toString();
-        editTrack(tr("Change Highlight Patch"), [&](model::HighlightTrack& t) { t.patch = patch; });
+        if (const model::ObjectId id = selectedLayerId())
+            run([&] { m_document->setHighlightPatch(id, m_patch->itemData(index).toString()); });
     });
     connect(m_paintPatch, &QToolButton::toggled, this, [this](bool on) {
         if (!m_viewport)
@@ -515,9 +293,11 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         m_guide[axis]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         guideLayout->addWidget(m_guide[axis]);
         connect(m_guide[axis], qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, axis](double v) {
-            editTrack(
-                tr("Change Highlight Guide"), [axis, v](model::HighlightTrack& t) { t.guide[axis] = float(v); },
-                QStringLiteral("guide%1").arg(axis));
+            if (const model::HighlightTrack* t = track()) {
+                Eigen::Vector3f guide = t->guide;
+                guide[axis] = float(v);
+                run([&] { m_document->setHighlightGuide(t->id, guide); });
+            }
         });
     }
     form->addRow(tr("&Guide:"), guideRow);
@@ -529,11 +309,11 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     m_smoothing->setToolTip(tr("Rounds of normal smoothing over the patch: the highlight sees a smooth surface, as on "
                                "the paper's spline patches, and coarse meshes give clean shapes. Paint thin parts "
                                "(an ear) one side at a time: smoothing mixes the normals of both sides (not keyed)"));
+    GestureTracker::track(m_smoothing, m_document);
     form->addRow(tr("&Smooth normals:"), m_smoothing);
     connect(m_smoothing, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
-        editTrack(
-            tr("Change Highlight Smoothing"), [v](model::HighlightTrack& t) { t.smoothing = v; },
-            QStringLiteral("smoothing"));
+        if (const model::ObjectId id = selectedLayerId(); id && !m_updating)
+            run([&] { m_document->setHighlightSmoothing(id, v); });
     });
     m_editInViewport = new QPushButton(tr("Edit in &Viewport"), m_parameters);
     m_editInViewport->setObjectName(QStringLiteral("highlightEditInViewport"));
@@ -542,56 +322,18 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
                                     "scales it (keyed at the current frame)"));
     form->addRow(m_editInViewport);
     connect(m_editInViewport, &QPushButton::toggled, this, [this](bool on) {
-        if (m_viewport && (on || m_viewport->tool() == Viewport::Tool::Highlight))
+        if (!m_viewport)
+            return;
+        m_viewport->setHighlightTarget(selectedLayerId());
+        if (on || m_viewport->tool() == Viewport::Tool::Highlight)
             m_viewport->setTool(on ? Viewport::Tool::Highlight : Viewport::Tool::Navigate);
     });
     layout->addWidget(m_parameters);
 
-    // --- operations ------------------------------------------------------------------------------
-    m_operationsBox = new QGroupBox(tr("Operations (in order)"), content);
-    auto* opsLayout = new QVBoxLayout(m_operationsBox);
-    m_operationRows = new QVBoxLayout;
-    opsLayout->addLayout(m_operationRows);
-    m_addOperation = new QToolButton(m_operationsBox);
-    m_addOperation->setText(tr("Add Operation"));
-    m_addOperation->setToolTip(tr("Append an operation on the highlight's vector field to every key of the layer"));
-    m_addOperation->setPopupMode(QToolButton::InstantPopup);
-    auto* opMenu = new QMenu(m_addOperation);
-    using T = algo::HighlightOperationType;
-    for (T type : {T::Translation, T::Rotation, T::DirectionalScaling, T::Split, T::Squaring}) {
-        QAction* a = opMenu->addAction(operationTitle(type));
-        connect(a, &QAction::triggered, this, [this, type] {
-            editOperations(tr("Add Highlight Operation"),
-                [type](std::vector<algo::HighlightOperation>& ops) { ops.push_back(defaultOperation(type)); });
-        });
-    }
-    m_addOperation->setMenu(opMenu);
-    opsLayout->addWidget(m_addOperation, 0, Qt::AlignLeft);
-    layout->addWidget(m_operationsBox);
-
-    // --- combinations ----------------------------------------------------------------------------
-    m_combinationsBox = new QGroupBox(tr("Combinations"), content);
-    auto* combLayout = new QVBoxLayout(m_combinationsBox);
-    m_combinationRows = new QVBoxLayout;
-    combLayout->addLayout(m_combinationRows);
-    m_addCombination = new QPushButton(tr("Add Combination"), m_combinationsBox);
-    m_addCombination->setObjectName(QStringLiteral("addHighlightCombination"));
-    m_addCombination->setToolTip(tr("Unite this layer's area with, or subtract from it, another layer's area at the "
-                                    "same frame"));
-    combLayout->addWidget(m_addCombination, 0, Qt::AlignLeft);
-    connect(m_addCombination, &QPushButton::clicked, this, [this] {
-        const int row = selectedLayer();
-        const auto& tracks = m_document->data().look.highlights;
-        for (int i = 0; i < int(tracks.size()); ++i)
-            if (i != row) {
-                const QString other = tracks[std::size_t(i)].name;
-                editTrack(tr("Add Highlight Combination"), [&](model::HighlightTrack& t) {
-                    t.combineWith.emplace_back(algo::HighlightBoolean::Union, other);
-                });
-                return;
-            }
-    });
-    layout->addWidget(m_combinationsBox);
+    m_operations = new HighlightOperationsBox(m_document, content);
+    layout->addWidget(m_operations);
+    m_combinations = new HighlightCombinationsBox(m_document, content);
+    layout->addWidget(m_combinations);
     m_viewportLimit = new QLabel(content);
     m_viewportLimit->setObjectName(QStringLiteral("highlightViewportLimit"));
     m_viewportLimit->setWordWrap(true);
@@ -605,18 +347,44 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     layout->addWidget(m_viewportLimit);
     layout->addStretch();
 
-    connect(m_document, &model::Document::lookChanged, this, &HighlightPanel::refresh);
-    connect(m_document, &model::Document::documentReset, this, &HighlightPanel::refresh);
-    connect(m_document, &model::Document::meshChanged, this, &HighlightPanel::refresh);
-    connect(m_document, &model::Document::faceSetsChanged, this, &HighlightPanel::refresh);
+    connect(m_document, &model::Document::changed, this, &HighlightPanel::documentChanged);
     refresh();
+}
+
+void HighlightPanel::documentChanged(const model::ChangeSet& change)
+{
+    using model::Part;
+    if (change.reset || change.has(Part::Highlights) || change.has(Part::FaceSets) || change.has(Part::Mesh)
+        || change.has(Part::Playhead))
+        refresh();
+}
+
+void HighlightPanel::run(const std::function<void()>& operation)
+{
+    if (m_updating)
+        return;
+    try {
+        operation();
+    } catch (const model::EditRefused&) {
+        refresh(); // never stored: the controls go back to the layer
+    }
+}
+
+void HighlightPanel::editKey(const std::function<void(algo::HighlightLayer&)>& change)
+{
+    const model::HighlightTrack* t = track();
+    if (!t || m_updating)
+        return;
+    const int frame = currentFrame();
+    algo::HighlightLayer layer = t->layerAt(frame);
+    change(layer);
+    run([&] { m_document->setHighlightKey(t->id, frame, layer); });
 }
 
 void HighlightPanel::addPreset(Preset preset)
 {
-    const auto& tracks = m_document->data().look.highlights;
     std::vector<QString> taken;
-    for (const auto& t : tracks)
+    for (const auto& t : m_document->data().look.highlights)
         taken.push_back(t.name);
     auto unique = [&](const QString& base) {
         QString name = base;
@@ -638,6 +406,7 @@ void HighlightPanel::addPreset(Preset preset)
         if (selected->smoothing > 0)
             base.smoothing = selected->smoothing;
     }
+    const int frame = currentFrame();
     using Op = algo::HighlightOperation;
     std::vector<model::HighlightTrack> added;
     QString undoText;
@@ -649,7 +418,7 @@ void HighlightPanel::addPreset(Preset preset)
         algo::HighlightLayer layer;
         layer.shape.epsilon = 0.03f;
         layer.shape.operations = {Op::rotation(30.f), Op::directionalScaling(0.6f), Op::split(0.25f, 0.f)};
-        window.setKey(m_frame, layer);
+        window.setKey(frame, layer);
         added.push_back(std::move(window));
         undoText = tr("Add Window Highlight");
     } else {
@@ -660,19 +429,19 @@ void HighlightPanel::addPreset(Preset preset)
         algo::HighlightLayer cutLayer;
         cutLayer.shape.epsilon = 0.04f;
         cutLayer.shape.operations = {Op::translation(0.1f, 0.1f)};
-        cut.setKey(m_frame, cutLayer);
+        cut.setKey(frame, cutLayer);
         model::HighlightTrack crescent = base;
         crescent.name = unique(tr("Crescent"));
         algo::HighlightLayer layer;
         layer.shape.epsilon = 0.04f;
-        crescent.setKey(m_frame, layer);
+        crescent.setKey(frame, layer);
         crescent.combineWith.emplace_back(algo::HighlightBoolean::Subtraction, cut.name);
         added.push_back(std::move(cut));
         added.push_back(std::move(crescent));
         undoText = tr("Add Crescent Highlight");
     }
-    const int index = int(tracks.size() + added.size()) - 1;
-    edit(undoText, [&](model::Look& l) { l.highlights.insert(l.highlights.end(), added.begin(), added.end()); });
+    const int index = int(m_document->data().look.highlights.size() + added.size()) - 1;
+    run([&] { m_document->addHighlightLayers(std::move(added), undoText); });
     selectLayer(index);
 }
 
@@ -681,15 +450,10 @@ void HighlightPanel::newPatchForLayer()
     const model::HighlightTrack* t = track();
     if (!t || !m_document->hasMesh())
         return;
-    const QString name = m_document->uniqueFaceSetName(tr("%1 patch").arg(t->name));
-    QUndoStack* undo = m_document->undoStack();
-    undo->beginMacro(tr("New Patch “%1”").arg(name));
-    m_document->setFaceSet(name, {}, tr("New Patch “%1”").arg(name));
-    m_lastMergeKey.clear();
-    editTrack(tr("Change Highlight Patch"), [&](model::HighlightTrack& track) { track.patch = name; });
-    undo->endMacro();
-    m_lastMergeKey.clear();
-    if (m_viewport && m_viewport->tool() == Viewport::Tool::Patch)
+    const model::ObjectId id = t->id;
+    QString name;
+    run([&] { name = m_document->newFaceSetForLayer(id, tr("%1 patch").arg(t->name)); });
+    if (m_viewport && m_viewport->tool() == Viewport::Tool::Patch && !name.isEmpty())
         m_viewport->setPatchTarget(name);
 }
 
@@ -701,6 +465,7 @@ QDoubleSpinBox* HighlightPanel::makeSpin(double min, double max, double step, in
     spin->setDecimals(decimals);
     spin->setToolTip(tip);
     spin->setKeyboardTracking(false); // typing "0.35" is one edit, not four
+    GestureTracker::track(spin, m_document); // holding an arrow or a key is one undo step
     return spin;
 }
 
@@ -720,127 +485,44 @@ void HighlightPanel::setViewport(Viewport* viewport)
         const QSignalBlocker blockPaint(m_paintPatch);
         m_paintPatch->setChecked(tool == Viewport::Tool::Patch);
     });
-    connect(viewport, &Viewport::highlightDragStarted, this, &HighlightPanel::beginViewportDrag);
-    connect(viewport, &Viewport::highlightDragged, this, &HighlightPanel::viewportDrag);
-    connect(viewport, &Viewport::highlightDragFinished, this, [this] { m_lastMergeKey.clear(); });
-}
-
-void HighlightPanel::beginViewportDrag(const QPointF& position)
-{
-    ++m_dragCount;
-    m_lastMergeKey.clear();
-    // Fallback without a picked point: screen axes, a fixed rate.
-    m_dragDu = QPointF(1.0, 0.0);
-    m_dragDv = QPointF(0.0, -1.0);
-    m_dragUnitsPerPixel = 0.005;
-    const model::HighlightTrack* t = track();
-    const auto& mesh = m_document->data().baseMesh;
-    if (!t || !m_viewport || !mesh)
-        return;
-    const std::int64_t vertex = m_viewport->pickVertex(position);
-    const algo::Positions& shape = m_viewport->displayedShape();
-    if (vertex < 0 || vertex >= shape.rows() || shape.rows() != mesh->vertices.rows())
-        return;
-    const Eigen::Vector3f p = shape.row(vertex).transpose();
-    // The frame the renderer uses at that vertex (UVs where the model has them, else the guide
-    // smoothed over the patch); a hidden layer or a vertex off its patch falls back to the guide.
-    algo::HighlightFrame frame;
-    bool found = false;
-    for (const auto& h : model::renderHighlightsFor(m_document->data(), m_document->data().look, shape, m_frame))
-        if (QString::fromStdString(h.layer.name) == t->name && h.du.rows() == shape.rows()
-            && h.du.row(vertex).squaredNorm() > 0.5f) {
-            frame.du = h.du.row(vertex).transpose();
-            frame.dv = h.dv.row(vertex).transpose();
-            found = true;
-            break;
-        }
-    if (!found) {
-        const algo::Positions normals = algo::vertexNormals(shape, mesh->faces);
-        frame = algo::guideTangentFrame(normals.row(vertex).transpose(), t->guide);
-    }
-    const double perPixel = m_viewport->worldUnitsPerPixel(p.cast<double>());
-    const QPointF origin = m_viewport->projectToWidget(p.cast<double>());
-    auto screenDirection = [&](const Eigen::Vector3f& d) {
-        const QPointF s = m_viewport->projectToWidget((p + d * float(perPixel * 10.0)).cast<double>()) - origin;
-        const double length = std::hypot(s.x(), s.y());
-        return length > 1e-6 ? s / length : QPointF();
-    };
-    m_dragDu = screenDirection(frame.du);
-    m_dragDv = screenDirection(frame.dv);
-    // H + alpha du tilts H by atan(alpha): on a surface of curvature radius r the highlight moves
-    // about r * alpha; the distance to the model's centre stands in for r.
-    const Eigen::Vector3f centre
-        = 0.5f * (mesh->vertices.colwise().minCoeff() + mesh->vertices.colwise().maxCoeff()).transpose();
-    const double radius = std::max(double((p - centre).norm()), 1e-9);
-    m_dragUnitsPerPixel = perPixel / radius;
-}
-
-void HighlightPanel::viewportDrag(const QPointF& delta, Qt::KeyboardModifiers modifiers)
-{
-    using T = algo::HighlightOperationType;
-    const bool rotate = modifiers & Qt::ShiftModifier, scale = modifiers & Qt::ControlModifier;
-    const T type = rotate ? T::Rotation : scale ? T::DirectionalScaling : T::Translation;
-    const int frame = m_frame;
-    const double a = delta.x() * m_dragDu.x() + delta.y() * m_dragDu.y();
-    const double b = delta.x() * m_dragDv.x() + delta.y() * m_dragDv.y();
-    const double perPixel = m_dragUnitsPerPixel;
-    editTrack(
-        rotate      ? tr("Rotate Highlight")
-            : scale ? tr("Scale Highlight")
-                    : tr("Move Highlight"),
-        [&](model::HighlightTrack& t) {
-            auto first = [type](const std::vector<algo::HighlightOperation>& ops) {
-                return std::find_if(ops.begin(), ops.end(), [type](const auto& op) { return op.type == type; })
-                    - ops.begin();
-            };
-            // Add the operation to every key (structure changes keep the keys interpolating):
-            // translation and rotation at the front, scaling at the end (after any rotation).
-            for (auto& k : t.keys) {
-                auto& ops = k.layer.shape.operations;
-                if (first(ops) == std::ptrdiff_t(ops.size()))
-                    ops.insert(type == T::DirectionalScaling ? ops.end() : ops.begin(), defaultOperation(type));
-            }
-            algo::HighlightLayer layer = t.layerAt(frame);
-            auto& ops = layer.shape.operations;
-            const auto index = std::size_t(first(ops));
-            if (index == ops.size())
-                ops.insert(type == T::DirectionalScaling ? ops.end() : ops.begin(), defaultOperation(type));
-            algo::HighlightOperation& op = ops[index];
-            if (rotate) {
-                op.a = float(std::clamp(op.a + delta.x() * 0.5, -360.0, 360.0));
-            } else if (scale) {
-                op.a = float(std::clamp(op.a + delta.x() * 0.005, 0.0, 1.0));
-            } else {
-                // Rotations before the translation turn its frame: undo them on the drag.
-                double degrees = 0.0;
-                for (std::size_t i = 0; i < index; ++i)
-                    if (ops[i].type == T::Rotation)
-                        degrees += ops[i].a;
-                const double c = std::cos(degrees * 0.017453292519943295), s = std::sin(degrees * 0.017453292519943295);
-                op.a += float((c * a + s * b) * perPixel);
-                op.b += float((-s * a + c * b) * perPixel);
-            }
-            t.setKey(frame, layer);
-        },
-        QStringLiteral("viewportDrag%1@%2").arg(m_dragCount).arg(frame));
 }
 
 void HighlightPanel::setCurrentFrame(int frame)
 {
-    frame = std::clamp(frame, 0, m_lastFrame->value());
-    if (frame == m_frame)
+    m_document->setCurrentFrame(std::clamp(frame, 0, m_lastFrame->value()));
+}
+
+void HighlightPanel::jumpToKey(int direction)
+{
+    const model::HighlightTrack* t = track();
+    if (!t)
         return;
-    m_frame = frame;
-    refresh();
-    emit frameChanged(frame);
-    if (m_viewport)
-        m_viewport->setFrame(frame);
+    const int now = currentFrame();
+    std::optional<int> target;
+    for (const auto& k : t->keys) {
+        const int f = int(std::lround(k.frame));
+        if (direction < 0 && f < now)
+            target = f;
+        if (direction > 0 && f > now && !target)
+            target = f;
+    }
+    if (target) {
+        if (*target > m_lastFrame->value())
+            m_lastFrame->setValue(*target);
+        setCurrentFrame(*target);
+    }
 }
 
 int HighlightPanel::selectedLayer() const
 {
     const int row = m_layers->currentRow();
     return row >= 0 && row < int(m_document->data().look.highlights.size()) ? row : -1;
+}
+
+model::ObjectId HighlightPanel::selectedLayerId() const
+{
+    const int row = selectedLayer();
+    return row < 0 ? 0 : m_document->data().look.highlights[std::size_t(row)].id;
 }
 
 void HighlightPanel::selectLayer(int index)
@@ -855,261 +537,16 @@ const model::HighlightTrack* HighlightPanel::track() const
     return row < 0 ? nullptr : &m_document->data().look.highlights[std::size_t(row)];
 }
 
-std::vector<QString> HighlightPanel::faceSetNames() const
-{
-    return m_document->data().faceSetNames();
-}
-
-void HighlightPanel::edit(
-    const QString& undoText, const std::function<void(model::Look&)>& change, const QString& mergeKey)
-{
-    if (m_updating)
-        return;
-    model::Look look = m_document->data().look;
-    change(look);
-    if (look == m_document->data().look)
-        return;
-    if (!model::highlightTracksProblem(look.highlights, faceSetNames()).isEmpty()) {
-        refresh(); // never push tracks the renderer refuses; the controls go back to the look
-        return;
-    }
-    QUndoStack* undo = m_document->undoStack();
-    // Document::setLook merges every consecutive look change; each edit here is its own undo step
-    // (a macro, which nothing merges into) except a run of the same control on the same key, whose
-    // step is replaced by one from the run's start to its latest value.
-    const bool continuing = !mergeKey.isEmpty() && mergeKey == m_lastMergeKey && undo->index() == m_lastUndoIndex
-        && undo->count() == m_lastUndoIndex && m_lastUndoIndex > 0;
-    if (continuing) {
-        m_updating = true; // the undone look passes through the controls without editing
-        undo->undo();
-        m_updating = false;
-    }
-    if (look != m_document->data().look) {
-        undo->beginMacro(undoText);
-        m_document->setLook(look);
-        undo->endMacro();
-    }
-    m_lastMergeKey = mergeKey;
-    m_lastUndoIndex = undo->index();
-}
-
-void HighlightPanel::editTrack(
-    const QString& undoText, const std::function<void(model::HighlightTrack&)>& change, const QString& mergeKey)
-{
-    const int row = selectedLayer();
-    if (row < 0)
-        return;
-    edit(
-        undoText, [&](model::Look& l) { change(l.highlights[std::size_t(row)]); },
-        mergeKey.isEmpty() ? QString() : QStringLiteral("%1/%2").arg(row).arg(mergeKey));
-}
-
-void HighlightPanel::editKey(
-    const QString& undoText, const std::function<void(algo::HighlightLayer&)>& change, const QString& mergeKey)
-{
-    const int frame = m_frame;
-    editTrack(
-        undoText,
-        [&](model::HighlightTrack& t) {
-            algo::HighlightLayer layer = t.layerAt(frame);
-            change(layer);
-            t.setKey(frame, layer);
-        },
-        mergeKey.isEmpty() ? QString() : QStringLiteral("%1@%2").arg(mergeKey).arg(frame));
-}
-
-void HighlightPanel::editOperations(
-    const QString& undoText, const std::function<void(std::vector<algo::HighlightOperation>&)>& change)
-{
-    // Structure changes go to every key so that the keys keep interpolating.
-    editTrack(undoText, [&](model::HighlightTrack& t) {
-        for (auto& k : t.keys)
-            change(k.layer.shape.operations);
-    });
-}
-
-void HighlightPanel::jumpToKey(int direction)
-{
-    const model::HighlightTrack* t = track();
-    if (!t)
-        return;
-    std::optional<int> target;
-    for (const auto& k : t->keys) {
-        const int f = int(std::lround(k.frame));
-        if (direction < 0 && f < m_frame)
-            target = f;
-        if (direction > 0 && f > m_frame && !target)
-            target = f;
-    }
-    if (target) {
-        if (*target > m_lastFrame->value())
-            m_lastFrame->setValue(*target);
-        setCurrentFrame(*target);
-    }
-}
-
-void HighlightPanel::rebuildOperations(const algo::HighlightLayer& layer)
-{
-    std::vector<algo::HighlightOperationType> types;
-    for (const auto& op : layer.shape.operations)
-        types.push_back(op.type);
-    if (types != m_operationTypes) {
-        while (QLayoutItem* item = m_operationRows->takeAt(0)) {
-            if (QWidget* w = item->widget()) {
-                w->hide();
-                w->deleteLater(); // one of its spin boxes may be emitting now
-            }
-            delete item;
-        }
-        m_operationSpins.clear();
-        m_operationTypes = types;
-        const int count = int(types.size());
-        for (int i = 0; i < count; ++i) {
-            auto* row = new QWidget(m_operationsBox);
-            auto* h = new QHBoxLayout(row);
-            h->setContentsMargins(0, 0, 0, 0);
-            auto* title = new QLabel(operationTitle(types[std::size_t(i)]), row);
-            title->setMinimumWidth(56);
-            h->addWidget(title);
-            const auto specs = operationSpecs(types[std::size_t(i)]);
-            QDoubleSpinBox* spins[2] = {nullptr, nullptr};
-            const ParameterSpec* s[2] = {&specs.first, &specs.second};
-            for (int p = 0; p < 2; ++p) {
-                if (!s[p]->name)
-                    continue;
-                h->addWidget(new QLabel(tr(s[p]->name), row));
-                spins[p] = makeSpin(s[p]->min, s[p]->max, s[p]->step, s[p]->decimals, tr(s[p]->tip) + tr(" (keyed)"));
-                spins[p]->setParent(row);
-                spins[p]->setObjectName(QStringLiteral("highlightOperation%1%2").arg(i).arg(p == 0 ? 'a' : 'b'));
-                spins[p]->setMinimumWidth(40);
-                spins[p]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-                h->addWidget(spins[p], 1);
-                connect(spins[p], qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i, p](double v) {
-                    editKey(
-                        tr("Change Highlight Operation"),
-                        [i, p, v](algo::HighlightLayer& l) {
-                            if (i < int(l.shape.operations.size()))
-                                (p == 0 ? l.shape.operations[std::size_t(i)].a : l.shape.operations[std::size_t(i)].b)
-                                    = float(v);
-                        },
-                        QStringLiteral("op%1.%2").arg(i).arg(p));
-                });
-            }
-            if (!spins[1])
-                h->addStretch(1);
-            auto addButton = [&](Qt::ArrowType arrow, const QString& text, const QString& tip, bool enabled) {
-                auto* b = new QToolButton(row);
-                if (arrow != Qt::NoArrow)
-                    b->setArrowType(arrow);
-                else
-                    b->setText(text);
-                b->setToolTip(tip);
-                b->setEnabled(enabled);
-                h->addWidget(b);
-                return b;
-            };
-            connect(addButton(Qt::UpArrow, {}, tr("Move the operation earlier"), i > 0), &QToolButton::clicked, this,
-                [this, i] {
-                    editOperations(tr("Move Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
-                        if (i > 0 && i < int(ops.size()))
-                            std::swap(ops[std::size_t(i - 1)], ops[std::size_t(i)]);
-                    });
-                });
-            connect(addButton(Qt::DownArrow, {}, tr("Move the operation later"), i + 1 < count), &QToolButton::clicked,
-                this, [this, i] {
-                    editOperations(tr("Move Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
-                        if (i + 1 < int(ops.size()))
-                            std::swap(ops[std::size_t(i)], ops[std::size_t(i + 1)]);
-                    });
-                });
-            connect(addButton(Qt::NoArrow, tr("✕"), tr("Remove the operation from every key"), true),
-                &QToolButton::clicked, this, [this, i] {
-                    editOperations(tr("Remove Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
-                        if (i < int(ops.size()))
-                            ops.erase(ops.begin() + i);
-                    });
-                });
-            m_operationRows->addWidget(row);
-            row->show(); // the layout would show it only once the event loop runs
-            m_operationSpins.emplace_back(spins[0], spins[1]);
-        }
-    }
-    for (std::size_t i = 0; i < m_operationSpins.size(); ++i) {
-        const auto& op = layer.shape.operations[i];
-        if (QDoubleSpinBox* a = m_operationSpins[i].first) {
-            const QSignalBlocker block(a);
-            a->setValue(op.a);
-        }
-        if (QDoubleSpinBox* b = m_operationSpins[i].second) {
-            const QSignalBlocker block(b);
-            b->setValue(op.b);
-        }
-    }
-}
-
-void HighlightPanel::rebuildCombinations(const model::HighlightTrack& t)
-{
-    while (QLayoutItem* item = m_combinationRows->takeAt(0)) {
-        if (QWidget* w = item->widget()) {
-            w->hide();
-            w->deleteLater(); // one of its combo boxes may be emitting now
-        }
-        delete item;
-    }
-    const auto& tracks = m_document->data().look.highlights;
-    for (int i = 0; i < int(t.combineWith.size()); ++i) {
-        const auto& [mode, other] = t.combineWith[std::size_t(i)];
-        auto* row = new QWidget(m_combinationsBox);
-        auto* h = new QHBoxLayout(row);
-        h->setContentsMargins(0, 0, 0, 0);
-        auto* modeBox = new QComboBox(row);
-        modeBox->addItem(tr("Union with"), int(algo::HighlightBoolean::Union));
-        modeBox->addItem(tr("Subtract"), int(algo::HighlightBoolean::Subtraction));
-        modeBox->setCurrentIndex(modeBox->findData(int(mode)));
-        modeBox->setToolTip(tr("Union adds the other layer's area; Subtract cuts it out of this layer's area"));
-        auto* otherBox = new QComboBox(row);
-        for (const auto& other2 : tracks)
-            if (other2.name != t.name)
-                otherBox->addItem(other2.name, other2.name);
-        otherBox->setCurrentIndex(otherBox->findData(other));
-        otherBox->setToolTip(tr("The other layer, at the same frame"));
-        auto* remove = new QToolButton(row);
-        remove->setText(tr("✕"));
-        remove->setToolTip(tr("Remove this combination"));
-        h->addWidget(modeBox);
-        h->addWidget(otherBox, 1);
-        h->addWidget(remove);
-        connect(modeBox, qOverload<int>(&QComboBox::activated), this, [this, i, modeBox](int index) {
-            const auto m = algo::HighlightBoolean(modeBox->itemData(index).toInt());
-            editTrack(tr("Change Highlight Combination"), [i, m](model::HighlightTrack& tr2) {
-                if (i < int(tr2.combineWith.size()))
-                    tr2.combineWith[std::size_t(i)].first = m;
-            });
-        });
-        connect(otherBox, qOverload<int>(&QComboBox::activated), this, [this, i, otherBox](int index) {
-            const QString name = otherBox->itemData(index).toString();
-            editTrack(tr("Change Highlight Combination"), [i, name](model::HighlightTrack& tr2) {
-                if (i < int(tr2.combineWith.size()))
-                    tr2.combineWith[std::size_t(i)].second = name;
-            });
-        });
-        connect(remove, &QToolButton::clicked, this, [this, i] {
-            editTrack(tr("Remove Highlight Combination"), [i](model::HighlightTrack& tr2) {
-                if (i < int(tr2.combineWith.size()))
-                    tr2.combineWith.erase(tr2.combineWith.begin() + i);
-            });
-        });
-        m_combinationRows->addWidget(row);
-        row->show(); // the layout would show it only once the event loop runs
-    }
-}
-
 void HighlightPanel::refresh()
 {
     m_updating = true;
     const auto& tracks = m_document->data().look.highlights;
+    const int frame = currentFrame();
     {
+        // The selection follows the layer's id through insertions and removals.
         const QSignalBlocker block(m_layers);
+        const QListWidgetItem* current = m_layers->currentItem();
+        const auto selectedId = current ? model::ObjectId(current->data(kLayerIdRole).toULongLong()) : 0;
         int row = m_layers->currentRow();
         while (m_layers->count() > int(tracks.size()))
             delete m_layers->takeItem(m_layers->count() - 1);
@@ -1121,7 +558,10 @@ void HighlightPanel::refresh()
         for (int i = 0; i < int(tracks.size()); ++i) {
             QListWidgetItem* item = m_layers->item(i);
             item->setText(tracks[std::size_t(i)].name);
+            item->setData(kLayerIdRole, QVariant::fromValue<qulonglong>(tracks[std::size_t(i)].id));
             item->setCheckState(tracks[std::size_t(i)].visible ? Qt::Checked : Qt::Unchecked);
+            if (tracks[std::size_t(i)].id == selectedId)
+                row = i;
         }
         if (row < 0 || row >= int(tracks.size()))
             row = tracks.empty() ? -1 : 0;
@@ -1129,15 +569,14 @@ void HighlightPanel::refresh()
     }
     {
         const QSignalBlocker block(m_frameSpin);
-        m_frameSpin->setValue(m_frame);
+        if (frame > m_lastFrame->value())
+            m_lastFrame->setValue(frame);
+        m_frameSpin->setValue(frame);
     }
-    m_timeline->setFrame(m_frame);
 
     const model::HighlightTrack* t = track();
     m_removeLayer->setEnabled(t != nullptr);
     m_parameters->setEnabled(t != nullptr);
-    m_operationsBox->setEnabled(t != nullptr);
-    m_combinationsBox->setEnabled(t != nullptr);
     m_key->setEnabled(t != nullptr);
     m_editInViewport->setEnabled(t != nullptr && m_viewport != nullptr);
     m_paintPatch->setEnabled(t != nullptr && m_viewport != nullptr && m_document->hasMesh());
@@ -1145,22 +584,22 @@ void HighlightPanel::refresh()
     m_renamePatch->setEnabled(t != nullptr && !t->patch.isEmpty());
     m_deletePatch->setEnabled(t != nullptr && !t->patch.isEmpty());
     if (m_viewport) {
+        m_viewport->setHighlightTarget(t ? t->id : 0);
         // Painting follows the selected layer's patch; a layer on all faces ends painting.
         if (m_viewport->tool() == Viewport::Tool::Patch && (!t || t->patch.isEmpty()))
             m_viewport->setTool(Viewport::Tool::Navigate);
         else if (t)
             m_viewport->setPatchTarget(t->patch);
     }
-    const bool keyHere = t && std::any_of(t->keys.begin(), t->keys.end(), [this](const algo::HighlightKey& k) {
-        return k.frame == double(m_frame);
+    const bool keyHere = t && std::any_of(t->keys.begin(), t->keys.end(), [frame](const algo::HighlightKey& k) {
+        return k.frame == double(frame);
     });
     m_deleteKey->setEnabled(keyHere && t->keys.size() > 1);
-    m_previousKey->setEnabled(t && !t->keys.empty() && t->keys.front().frame < m_frame);
-    m_nextKey->setEnabled(t && !t->keys.empty() && t->keys.back().frame > m_frame);
-    m_addCombination->setEnabled(t && tracks.size() > 1);
+    m_previousKey->setEnabled(t && !t->keys.empty() && t->keys.front().frame < frame);
+    m_nextKey->setEnabled(t && !t->keys.empty() && t->keys.back().frame > frame);
 
     std::vector<double> keyFrames;
-    const algo::HighlightLayer layer = t ? t->layerAt(m_frame) : algo::HighlightLayer{};
+    const algo::HighlightLayer layer = t ? t->layerAt(frame) : algo::HighlightLayer{};
     if (t)
         for (const auto& k : t->keys)
             keyFrames.push_back(k.frame);
@@ -1187,15 +626,15 @@ void HighlightPanel::refresh()
         const QSignalBlocker block(m_patch);
         m_patch->clear();
         m_patch->addItem(tr("All faces"), QString());
-        for (const QString& name : faceSetNames())
+        for (const QString& name : m_document->data().faceSetNames())
             m_patch->addItem(name, name);
         const QString patch = t ? t->patch : QString();
         if (m_patch->findData(patch) < 0)
             m_patch->addItem(patch, patch);
         m_patch->setCurrentIndex(m_patch->findData(patch));
     }
-    rebuildOperations(layer);
-    rebuildCombinations(t ? *t : model::HighlightTrack{});
+    m_operations->showLayer(t ? t->id : 0);
+    m_combinations->showLayer(t ? t->id : 0);
     const int visibleLayers = int(
         std::count_if(tracks.begin(), tracks.end(), [](const model::HighlightTrack& track) { return track.visible; }));
     const bool beyond = visibleLayers > kViewportHighlightLayers

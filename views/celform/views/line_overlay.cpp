@@ -78,32 +78,26 @@ std::vector<float> viewDepthFromWindowDepth(const std::vector<float>& windowDept
 
 void LineOverlay::clear()
 {
-    m_faces.resize(0, 3);
-    m_topology = {};
-    m_shape.resize(0, 3);
+    m_mesh = nullptr;
+    m_generation = 0;
     m_valid = false;
     m_strokes.clear();
 }
 
-void LineOverlay::update(const algo::Positions& shape, const algo::TriMesh& mesh, const algo::LineView& view,
-    const algo::LineSettings& settings)
+void LineOverlay::update(
+    const algo::Shape& shape, const algo::TriMesh& mesh, const algo::LineView& view, const algo::LineSettings& settings)
 {
-    // Compared by value (a few hundred microseconds at most): a new mesh may reuse the address.
-    if (m_faces.rows() != mesh.faces.rows() || m_faces != mesh.faces || m_topology.edges.rows() == 0) {
-        m_topology = algo::buildEdgeTopology(mesh.faces, std::int32_t(mesh.vertices.rows()));
-        m_faces = mesh.faces;
-        m_valid = false;
-    }
     const bool sameView
         = view.eye == m_view.eye && view.direction == m_view.direction && view.orthographic == m_view.orthographic;
-    const bool sameShape = shape.rows() == m_shape.rows() && shape == m_shape;
-    if (m_valid && sameView && sameShape && settings == m_settings)
+    // The mesh's address only guards the generation: shapes of another mesh have other generations.
+    if (m_valid && sameView && &mesh == m_mesh && shape.generation == m_generation && settings == m_settings)
         return;
+    const algo::EdgeTopology& topology = mesh.edgeTopology();
     algo::FeatureEdges features;
-    algo::extractFeatureEdges(shape, mesh.faces, m_topology, mesh.faceMaterials, view, settings, features);
-    m_strokes = algo::chainStrokes(m_topology, features);
-    if (!sameShape)
-        m_shape = shape;
+    algo::extractFeatureEdges(shape.positions, mesh.faces, topology, mesh.faceMaterials, view, settings, features);
+    m_strokes = algo::chainStrokes(topology, features);
+    m_mesh = &mesh;
+    m_generation = shape.generation;
     m_view = view;
     m_settings = settings;
     m_valid = true;
@@ -114,8 +108,8 @@ QRect LineOverlay::draw(const algo::Positions& shape, const algo::LineStyle& sty
 {
     const int w = camera.width, h = camera.height;
     coverage.assign(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)), 0.f);
-    if (!m_valid || m_strokes.empty() || w <= 0 || h <= 0 || depth.size() != coverage.size()
-        || shape.rows() != m_shape.rows())
+    if (!m_valid || m_strokes.empty() || w <= 0 || h <= 0 || depth.size() != coverage.size() || !m_mesh
+        || shape.rows() != m_mesh->vertexCount())
         return {};
     const std::vector<algo::StyledStroke> styled
         = algo::styleStrokes(m_strokes, shape, style, [&camera](const Eigen::Vector3f& p) {

@@ -28,13 +28,14 @@ struct GlFrame {
 std::vector<float> viewDepthFromWindowDepth(const std::vector<float>& windowDepth, int width, int height,
     double nearDistance, double farDistance, bool orthographic);
 
-/// Strokes of the displayed shape, cached: the edge topology once per face set, the feature
-/// edges and chains again only when the shape, the line view or the settings change.
+/// Strokes of the displayed shape, cached: the edge topology is the mesh's own (built once per
+/// mesh), the feature edges and chains are extracted again only when the shape's generation, the
+/// line view or the settings change.
 class LineOverlay {
 public:
     /// Extracts the feature strokes of shape seen from view (the centre eye in stereo, paper 3,
     /// section 4.2.2). Cheap when nothing changed since the last call.
-    void update(const algo::Positions& shape, const algo::TriMesh& mesh, const algo::LineView& view,
+    void update(const algo::Shape& shape, const algo::TriMesh& mesh, const algo::LineView& view,
         const algo::LineSettings& settings);
     /// The strokes projected with camera and styled (pixels), drawn anti-aliased into coverage
     /// (camera.width x camera.height), hidden where depth (view-axis, top-down) is nearer.
@@ -47,9 +48,8 @@ public:
     void clear();
 
 private:
-    algo::Faces m_faces; ///< the face set m_topology was built for
-    algo::EdgeTopology m_topology;
-    algo::Positions m_shape; ///< the shape the strokes were extracted from
+    const algo::TriMesh* m_mesh = nullptr; ///< identity of the mesh the strokes belong to
+    std::uint64_t m_generation = 0; ///< of the shape the strokes were extracted from
     algo::LineView m_view;
     algo::LineSettings m_settings;
     bool m_valid = false;

@@ -5,6 +5,8 @@
 #include "celform/views/scrolling_panel.h"
 
 #include "celform/views/color_swatch.h"
+#include "celform/views/gesture_tracker.h"
+#include "celform/model/io_error.h"
 
 #include <QCheckBox>
 #include <QColorDialog>
@@ -60,14 +62,8 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     connect(m_style, qOverload<int>(&QComboBox::activated), this, [this](int index) {
         const auto style = model::ShadingStyle(m_style->itemData(index).toInt());
         const int material = m_material->currentData().toInt();
-        edit([style, material](model::Look& l) {
-            if (material < 0) {
-                l.style = style;
-                l.materialStyles.clear();
-            } else {
-                l.materialStyles[material] = style;
-            }
-        });
+        if (!m_updating)
+            m_document->setShadingStyle(style, material);
     });
     connect(m_material, qOverload<int>(&QComboBox::activated), this, [this](int) { refresh(); });
     m_refreshers.push_back([this] {
@@ -93,12 +89,12 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     shadingForm->addRow(tr("&Light:"), lightType);
     connect(lightType, qOverload<int>(&QComboBox::activated), this, [this, lightType](int index) {
         const auto type = model::LightType(lightType->itemData(index).toInt());
-        edit([type](model::Look& l) {
-            if (l.light.type == type)
+        edit(&model::Look::light, &model::Document::setLight, [type](model::Light& l) {
+            if (l.type == type)
                 return;
-            l.light.type = type;
-            if (type == model::LightType::Directional && l.light.vector.norm() > 0)
-                l.light.vector.normalize();
+            l.type = type;
+            if (type == model::LightType::Directional && l.vector.norm() > 0)
+                l.vector.normalize();
         });
     });
     m_refreshers.push_back([this, lightType] {
@@ -112,15 +108,16 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         spin->setMinimumWidth(40); // three in a row must fit a narrow dock
         spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         lightLayout->addWidget(spin);
-        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this, axis](double v) { edit([axis, v](model::Look& l) { l.light.vector[axis] = v; }); });
+        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, axis](double v) {
+            edit(&model::Look::light, &model::Document::setLight, [axis, v](model::Light& l) { l.vector[axis] = v; });
+        });
         m_refreshers.push_back([this, spin, axis] { spin->setValue(m_document->data().look.light.vector[axis]); });
     }
     shadingForm->addRow(tr("Light &vector:"), lightRow);
     shadingForm->addRow(tr("&Background:"),
         makeColorButton(
             tr("Colour behind the model"), [](const model::Look& l) { return l.backgroundColor; },
-            [](model::Look& l, const Eigen::Vector3f& c) { l.backgroundColor = c; }));
+            [this](const Eigen::Vector3f& c) { m_document->setBackgroundColor(c); }));
     layout->addWidget(shadingBox);
 
     // --- toon tones ----------------------------------------------------------------------------
@@ -135,8 +132,8 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
                               "shows each triangle's tone"));
     m_toneForm->addRow(tr("&Evaluation:"), evaluation);
     connect(evaluation, qOverload<int>(&QComboBox::activated), this, [this, evaluation](int index) {
-        const auto e = algo::ToonEvaluation(evaluation->itemData(index).toInt());
-        edit([e](model::Look& l) { l.toonEvaluation = e; });
+        if (!m_updating)
+            m_document->setToonEvaluation(algo::ToonEvaluation(evaluation->itemData(index).toInt()));
     });
     m_refreshers.push_back([this, evaluation] {
         evaluation->setCurrentIndex(evaluation->findData(int(m_document->data().look.toonEvaluation)));
@@ -148,16 +145,16 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     connect(m_toneCount, qOverload<int>(&QSpinBox::valueChanged), this, [this](int count) {
         if (m_updating)
             return;
-        edit([count](model::Look& l) {
+        edit(&model::Look::toon, &model::Document::setToonRamp, [count](algo::ToonRamp& toon) {
             // Evenly spaced thresholds over N.L in [-0.2, 0.8] and intensities from 0.25 to 0.95:
             // a sensible start that the artist then shapes tone by tone.
-            l.toon.thresholds.clear();
-            l.toon.intensities.clear();
+            toon.thresholds.clear();
+            toon.intensities.clear();
             for (int i = 0; i < count; ++i) {
-                l.toon.intensities.push_back(
+                toon.intensities.push_back(
                     count == 2 ? (i == 0 ? 0.25f : 0.75f) : 0.25f + 0.7f * float(i) / float(count - 1));
                 if (i > 0)
-                    l.toon.thresholds.push_back(count == 2 ? 0.5f : -0.2f + float(i) / float(count - 1));
+                    toon.thresholds.push_back(count == 2 ? 0.5f : -0.2f + float(i) / float(count - 1));
             }
         });
     });
@@ -178,14 +175,14 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     goochForm->addRow(tr("&Preset:"), preset);
     connect(preset, qOverload<int>(&QComboBox::activated), this, [this, preset](int index) {
         const std::string name = preset->itemData(index).toString().toStdString();
-        edit([name](model::Look& l) {
+        edit(&model::Look::gooch, &model::Document::setGooch, [name](algo::GoochParams& g) {
             const algo::GoochParams p = name == "auto" ? model::autoGooch() : algo::goochPreset(name);
-            l.gooch.preset = p.preset;
-            l.gooch.ka = p.ka;
-            l.gooch.k1 = p.k1;
-            l.gooch.k2 = p.k2;
-            l.gooch.k3 = p.k3;
-            l.gooch.k4 = p.k4;
+            g.preset = p.preset;
+            g.ka = p.ka;
+            g.k1 = p.k1;
+            g.k2 = p.k2;
+            g.k3 = p.k3;
+            g.k4 = p.k4;
         });
     });
     m_refreshers.push_back([this, preset] {
@@ -200,18 +197,23 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
             -4.0, 4.0, 0.05, 2, tr("C = ka·Cbase + (l1·n)(Cwarm − Cbase·k1)·k2 + (l2·n)(Ccool − Cbase·k3)·k4"));
         goochForm->addRow(QString::fromLatin1(name) + QLatin1Char(':'), spin);
         const auto m = member;
-        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this, m](double v) { edit([m, v](model::Look& l) { l.gooch.*m = float(v); }); });
+        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, m](double v) {
+            edit(&model::Look::gooch, &model::Document::setGooch, [m, v](algo::GoochParams& g) { g.*m = float(v); });
+        });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.gooch.*m); });
     }
     goochForm->addRow(tr("&Warm:"),
         makeColorButton(
             tr("Warm light colour"), [](const model::Look& l) { return l.gooch.warm; },
-            [](model::Look& l, const Eigen::Vector3f& c) { l.gooch.warm = c; }));
+            [this](const Eigen::Vector3f& c) {
+                edit(&model::Look::gooch, &model::Document::setGooch, [c](algo::GoochParams& g) { g.warm = c; });
+            }));
     goochForm->addRow(tr("&Cool:"),
         makeColorButton(
             tr("Cool light colour"), [](const model::Look& l) { return l.gooch.cool; },
-            [](model::Look& l, const Eigen::Vector3f& c) { l.gooch.cool = c; }));
+            [this](const Eigen::Vector3f& c) {
+                edit(&model::Look::gooch, &model::Document::setGooch, [c](algo::GoochParams& g) { g.cool = c; });
+            }));
     layout->addWidget(m_goochBox);
 
     // --- hatching -----------------------------------------------------------------------------------
@@ -227,8 +229,9 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         QDoubleSpinBox* spin = makeSpin(lo, hi, step, decimals, tip);
         hatchForm->addRow(label, spin);
         const auto m = member;
-        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this, m](double v) { edit([m, v](model::Look& l) { l.hatch.*m = float(v); }); });
+        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, m](double v) {
+            edit(&model::Look::hatch, &model::Document::setHatch, [m, v](algo::HatchParams& h) { h.*m = float(v); });
+        });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.hatch.*m); });
     }
     layout->addWidget(m_hatchBox);
@@ -238,7 +241,10 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     linesBox->setCheckable(true);
     linesBox->setToolTip(tr("Silhouettes, creases, borders and material boundaries"));
     auto* linesForm = new QFormLayout(linesBox);
-    connect(linesBox, &QGroupBox::toggled, this, [this](bool on) { edit([on](model::Look& l) { l.showLines = on; }); });
+    connect(linesBox, &QGroupBox::toggled, this, [this](bool on) {
+        if (!m_updating)
+            m_document->setShowLines(on);
+    });
     m_refreshers.push_back([this, linesBox] { linesBox->setChecked(m_document->data().look.showLines); });
     const std::pair<QString, bool algo::LineSettings::*> kinds[]
         = {{tr("Silhouettes"), &algo::LineSettings::silhouettes}, {tr("Creases"), &algo::LineSettings::creases},
@@ -248,21 +254,26 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         auto* check = new QCheckBox(label, linesBox);
         linesForm->addRow(check);
         const auto m = member;
-        connect(check, &QCheckBox::toggled, this,
-            [this, m](bool on) { edit([m, on](model::Look& l) { l.lines.*m = on; }); });
+        connect(check, &QCheckBox::toggled, this, [this, m](bool on) {
+            edit(&model::Look::lines, &model::Document::setLineSettings, [m, on](algo::LineSettings& s) { s.*m = on; });
+        });
         m_refreshers.push_back([this, check, m] { check->setChecked(m_document->data().look.lines.*m); });
     }
     QDoubleSpinBox* crease
         = makeSpin(1, 179, 1, 0, tr("A crease is drawn where the faces meet at more than this angle"));
     crease->setSuffix(QStringLiteral("°"));
     linesForm->addRow(tr("Crease &angle:"), crease);
-    connect(crease, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-        [this](double v) { edit([v](model::Look& l) { l.lines.creaseAngleDegrees = float(v); }); });
+    connect(crease, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        edit(&model::Look::lines, &model::Document::setLineSettings,
+            [v](algo::LineSettings& s) { s.creaseAngleDegrees = float(v); });
+    });
     m_refreshers.push_back([this, crease] { crease->setValue(m_document->data().look.lines.creaseAngleDegrees); });
     linesForm->addRow(tr("C&olour:"),
         makeColorButton(
             tr("Line colour"), [](const model::Look& l) { return l.lineStyle.color; },
-            [](model::Look& l, const Eigen::Vector3f& c) { l.lineStyle.color = c; }));
+            [this](const Eigen::Vector3f& c) {
+                edit(&model::Look::lineStyle, &model::Document::setLineStyle, [c](algo::LineStyle& s) { s.color = c; });
+            }));
     const std::tuple<QString, float algo::LineStyle::*, double, double, double, QString> styleControls[] = {
         {tr("O&utline width:"), &algo::LineStyle::outlineWidth, 0, 50, 0.25, tr("Silhouettes and borders, pixels")},
         {tr("&Inner width:"), &algo::LineStyle::innerWidth, 0, 50, 0.25, tr("Creases and material boundaries, pixels")},
@@ -274,8 +285,10 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         QDoubleSpinBox* spin = makeSpin(lo, hi, step, 2, tip);
         linesForm->addRow(label, spin);
         const auto m = member;
-        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this, m](double v) { edit([m, v](model::Look& l) { l.lineStyle.*m = float(v); }); });
+        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, m](double v) {
+            edit(&model::Look::lineStyle, &model::Document::setLineStyle,
+                [m, v](algo::LineStyle& s) { s.*m = float(v); });
+        });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.lineStyle.*m); });
     }
     layout->addWidget(linesBox);
@@ -294,7 +307,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     stereoForm->addRow(tr("&Output:"), output);
     connect(output, qOverload<int>(&QComboBox::activated), this, [this, output](int index) {
         const auto o = algo::StereoOutput(output->itemData(index).toInt());
-        edit([o](model::Look& l) { l.stereo.output = o; });
+        edit(&model::Look::stereo, &model::Document::setStereo, [o](model::StereoLook& st) { st.output = o; });
     });
     m_refreshers.push_back([this, output] {
         output->setCurrentIndex(std::max(0, output->findData(int(m_document->data().look.stereo.output))));
@@ -304,27 +317,32 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
            "(a thirtieth of the convergence distance)"));
     interocular->setSpecialValueText(tr("Automatic"));
     stereoForm->addRow(tr("&Interocular:"), interocular);
-    connect(interocular, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-        [this](double v) { edit([v](model::Look& l) { l.stereo.interocular = v; }); });
+    connect(interocular, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        edit(&model::Look::stereo, &model::Document::setStereo, [v](model::StereoLook& st) { st.interocular = v; });
+    });
     m_refreshers.push_back([this, interocular] { interocular->setValue(m_document->data().look.stereo.interocular); });
     QDoubleSpinBox* convergence = makeSpin(0, 1e6, 0.05, 3,
         tr("Distance of the zero-parallax plane from the camera; "
            "0 = automatic (the model's centre)"));
     convergence->setSpecialValueText(tr("Automatic"));
     stereoForm->addRow(tr("&Convergence:"), convergence);
-    connect(convergence, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-        [this](double v) { edit([v](model::Look& l) { l.stereo.convergence = v; }); });
+    connect(convergence, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        edit(&model::Look::stereo, &model::Document::setStereo, [v](model::StereoLook& st) { st.convergence = v; });
+    });
     m_refreshers.push_back([this, convergence] { convergence->setValue(m_document->data().look.stereo.convergence); });
     auto* toeIn = new QCheckBox(tr("&Toe-in (instead of off-axis)"), stereoBox);
     toeIn->setToolTip(tr("Rotate the eyes towards the convergence point; off-axis (the default) avoids the keystone "
                          "distortion of toe-in"));
     stereoForm->addRow(toeIn);
-    connect(toeIn, &QCheckBox::toggled, this, [this](bool on) { edit([on](model::Look& l) { l.stereo.toeIn = on; }); });
+    connect(toeIn, &QCheckBox::toggled, this, [this](bool on) {
+        edit(&model::Look::stereo, &model::Document::setStereo, [on](model::StereoLook& st) { st.toeIn = on; });
+    });
     m_refreshers.push_back([this, toeIn] { toeIn->setChecked(m_document->data().look.stereo.toeIn); });
     auto* swap = new QCheckBox(tr("S&wap eyes"), stereoBox);
     stereoForm->addRow(swap);
-    connect(
-        swap, &QCheckBox::toggled, this, [this](bool on) { edit([on](model::Look& l) { l.stereo.swapEyes = on; }); });
+    connect(swap, &QCheckBox::toggled, this, [this](bool on) {
+        edit(&model::Look::stereo, &model::Document::setStereo, [on](model::StereoLook& st) { st.swapEyes = on; });
+    });
     m_refreshers.push_back([this, swap] { swap->setChecked(m_document->data().look.stereo.swapEyes); });
     auto* dubois = new QPushButton(tr("&Dubois Matrices…"), stereoBox);
     dubois->setToolTip(tr("The 3 × 3 matrices mapping each eye's linear RGB to the anaglyph (Dubois "
@@ -334,8 +352,10 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     layout->addWidget(stereoBox);
     layout->addStretch(1);
 
-    connect(m_document, &model::Document::lookChanged, this, &LookPanel::refresh);
-    connect(m_document, &model::Document::documentReset, this, &LookPanel::refresh);
+    connect(m_document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
+        if (change.has(model::Part::Look) || change.has(model::Part::Mesh))
+            refresh();
+    });
     refresh();
 }
 
@@ -347,12 +367,13 @@ QDoubleSpinBox* LookPanel::makeSpin(double min, double max, double step, int dec
     spin->setDecimals(decimals);
     spin->setToolTip(tip);
     spin->setKeyboardTracking(false); // typing "0.35" is one edit, not four
+    GestureTracker::track(spin, m_document); // holding an arrow or a key is one undo step
     return spin;
 }
 
 QToolButton* LookPanel::makeColorButton(const QString& tip,
     const std::function<Eigen::Vector3f(const model::Look&)>& get,
-    const std::function<void(model::Look&, const Eigen::Vector3f&)>& set)
+    const std::function<void(const Eigen::Vector3f&)>& set)
 {
     auto* button = new QToolButton(this);
     button->setToolTip(tip);
@@ -360,21 +381,10 @@ QToolButton* LookPanel::makeColorButton(const QString& tip,
     connect(button, &QToolButton::clicked, this, [this, get, set, tip] {
         const QColor chosen = QColorDialog::getColor(toQColor(get(m_document->data().look)), this, tip);
         if (chosen.isValid())
-            edit([&](model::Look& l) { set(l, fromQColor(chosen)); });
+            set(fromQColor(chosen));
     });
     m_refreshers.push_back([this, button, get] { paintSwatch(button, get(m_document->data().look)); });
     return button;
-}
-
-void LookPanel::edit(const std::function<void(model::Look&)>& change)
-{
-    if (m_updating)
-        return;
-    model::Look look = m_document->data().look;
-    change(look);
-    if (!look.toon.isValid())
-        return; // never push a look the renderer cannot use
-    m_document->setLook(look);
 }
 
 void LookPanel::editDuboisMatrices()
@@ -419,11 +429,11 @@ void LookPanel::editDuboisMatrices()
     layout->addWidget(buttons);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    edit([&cells](model::Look& l) {
+    edit(&model::Look::stereo, &model::Document::setStereo, [&cells](model::StereoLook& st) {
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) {
-                l.stereo.dubois.left(r, c) = float(cells[0][r][c]->value());
-                l.stereo.dubois.right(r, c) = float(cells[1][r][c]->value());
+                st.dubois.left(r, c) = float(cells[0][r][c]->value());
+                st.dubois.right(r, c) = float(cells[1][r][c]->value());
             }
     });
 }
@@ -444,8 +454,10 @@ void LookPanel::rebuildTones()
         QDoubleSpinBox* intensity = makeSpin(0, 2, 0.05, 2, tr("Brightness of this tone (multiplies the base colour)"));
         intensity->setValue(toon.intensities[std::size_t(i)]);
         h->addWidget(intensity);
-        connect(intensity, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-            [this, i](double v) { edit([i, v](model::Look& l) { l.toon.intensities[std::size_t(i)] = float(v); }); });
+        connect(intensity, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i](double v) {
+            edit(&model::Look::toon, &model::Document::setToonRamp,
+                [i, v](algo::ToonRamp& toon) { toon.intensities[std::size_t(i)] = float(v); });
+        });
         if (i > 0) {
             h->addWidget(new QLabel(tr("from N·L"), row));
             QDoubleSpinBox* threshold
@@ -453,7 +465,8 @@ void LookPanel::rebuildTones()
             threshold->setValue(toon.thresholds[std::size_t(i - 1)]);
             h->addWidget(threshold);
             connect(threshold, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i](double v) {
-                edit([i, v](model::Look& l) { l.toon.thresholds[std::size_t(i - 1)] = float(v); });
+                edit(&model::Look::toon, &model::Document::setToonRamp,
+                    [i, v](algo::ToonRamp& toon) { toon.thresholds[std::size_t(i - 1)] = float(v); });
             });
             m_thresholds.push_back(threshold);
         }

@@ -1,9 +1,10 @@
 // The Look dock: shading style and its parameters, lines, key light, background and stereo
-// settings of the document's Look. Each change is a Document::setLook (a slider or spin-box drag
-// merges into one undo step).
+// settings of the document's Look. Each control sets one property through the document (a held
+// spin-box arrow or key is one undo step; two controls are always two steps).
 #pragma once
 
 #include "celform/model/document.h"
+#include "celform/model/io_error.h"
 
 #include <QWidget>
 
@@ -28,14 +29,27 @@ public:
     [[nodiscard]] QComboBox* styleBox() const { return m_style; }
 
 private:
-    /// Applies an edit to a copy of the current look and pushes it.
-    void edit(const std::function<void(model::Look&)>& change);
+    /// Edits a copy of one property of the look and hands it to the document's setter for it; a
+    /// refused value puts the controls back.
+    template <typename T, typename Change>
+    void edit(T model::Look::*field, void (model::Document::*set)(const T&), Change&& change)
+    {
+        if (m_updating)
+            return;
+        T value = m_document->data().look.*field;
+        change(value);
+        try {
+            (m_document->*set)(value);
+        } catch (const model::EditRefused&) {
+            refresh();
+        }
+    }
     void refresh();
     void rebuildTones();
     void editDuboisMatrices();
     QDoubleSpinBox* makeSpin(double min, double max, double step, int decimals, const QString& tip);
     QToolButton* makeColorButton(const QString& tip, const std::function<Eigen::Vector3f(const model::Look&)>& get,
-        const std::function<void(model::Look&, const Eigen::Vector3f&)>& set);
+        const std::function<void(const Eigen::Vector3f&)>& set);
 
     model::Document* m_document;
     bool m_updating = false;

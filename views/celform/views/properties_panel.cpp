@@ -7,6 +7,7 @@
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
+#include "celform/views/gesture_tracker.h"
 #include "celform/views/viewport.h"
 
 #include <QCheckBox>
@@ -293,15 +294,18 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         if (m_viewport)
             m_viewport->setBrushMirrorX(on);
     });
-    connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-        [this](double value) { editBlend([value](model::BlendSettings& b) { b.sharpness = value; }); });
+    GestureTracker::track(m_sharpness, m_document);
+    connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double value) {
+        if (!m_updating)
+            m_document->setSharpness(value);
+    });
     connect(m_unspecified, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
-        const auto mode = model::UnspecifiedMode(m_unspecified->itemData(index).toInt());
-        editBlend([mode](model::BlendSettings& b) { b.unspecified = mode; });
+        if (!m_updating)
+            m_document->setUnspecifiedMode(model::UnspecifiedMode(m_unspecified->itemData(index).toInt()));
     });
     connect(m_time, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
-        const auto time = model::TimeInterpolation(m_time->itemData(index).toInt());
-        editBlend([time](model::BlendSettings& b) { b.time = time; });
+        if (!m_updating)
+            m_document->setTimeInterpolation(model::TimeInterpolation(m_time->itemData(index).toInt()));
     });
     connect(m_preview, &QPushButton::toggled, this, [this](bool on) {
         if (m_updating || !m_viewport)
@@ -313,24 +317,36 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         m_viewport->setPreview(on);
         refreshTools();
     });
-    for (auto signal : {&model::Document::meshChanged, &model::Document::drawingsChanged, &model::Document::keysChanged,
-             &model::Document::documentReset})
-        connect(m_document, signal, this, &PropertiesPanel::refresh);
-    connect(m_document, &model::Document::blendChanged, this, &PropertiesPanel::refreshBlend);
-    connect(m_document, &model::Document::documentReset, this, &PropertiesPanel::refreshBlend);
-    connect(m_document, &model::Document::meshChanged, this, [this] {
+    connect(m_document, &model::Document::changed, this, &PropertiesPanel::documentChanged);
+    // Moved-vertex counts follow a brush stroke at most five times a second, not at every step.
+    m_summaryRefresh.setSingleShot(true);
+    m_summaryRefresh.setInterval(200);
+    connect(&m_summaryRefresh, &QTimer::timeout, this, &PropertiesPanel::refresh);
+    GestureTracker::track(m_opacity, m_document);
+    refresh();
+    refreshBlend();
+}
+
+void PropertiesPanel::documentChanged(const model::ChangeSet& change)
+{
+    using model::Part;
+    if (change.reset || change.has(Part::Mesh)) {
         // A radius of a few percent of the model is a useful first brush on any scale.
         if (m_viewport && m_document->hasMesh())
             m_viewport->setBrushRadius(
                 0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm());
-    });
-    connect(m_document, &model::Document::documentReset, this, [this] {
-        if (m_viewport && m_document->hasMesh())
-            m_viewport->setBrushRadius(
-                0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm());
-    });
-    refresh();
-    refreshBlend();
+    }
+    if (change.reset || change.has(Part::Blend))
+        refreshBlend();
+    const bool selectionTouched = change.touches(m_selection.id) || change.structure;
+    if (change.reset || change.has(Part::Mesh)) {
+        refresh();
+    } else if ((change.has(Part::Drawings) || change.has(Part::Keys)) && selectionTouched) {
+        if (change.offsetsOnly && !change.structure)
+            m_summaryRefresh.start();
+        else
+            refresh();
+    }
 }
 
 void PropertiesPanel::setViewport(Viewport* viewport)
@@ -490,15 +506,6 @@ void PropertiesPanel::refresh()
     m_form->setRowVisible(m_name, isDrawing || isKey);
     m_updating = false;
     refreshTools();
-}
-
-void PropertiesPanel::editBlend(const std::function<void(model::BlendSettings&)>& change)
-{
-    if (m_updating)
-        return;
-    auto blend = m_document->data().blend;
-    change(blend);
-    m_document->setBlendSettings(blend);
 }
 
 void PropertiesPanel::refreshBlend()

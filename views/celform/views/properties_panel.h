@@ -7,6 +7,7 @@
 #include "celform/views/scene_panel.h"
 
 #include <QPointer>
+#include <QTimer>
 #include <QWidget>
 
 #include <functional>
@@ -53,7 +54,7 @@ private:
     void refresh();
     void refreshBlend();
     /// One blend settings edit from a control (not while the panel itself updates them).
-    void editBlend(const std::function<void(model::BlendSettings&)>& change);
+    void documentChanged(const model::ChangeSet& change);
     void refreshTools();
     void refreshMatching();
     void importDeformation();
@@ -95,6 +96,7 @@ private:
     QComboBox* m_unspecified;
     QComboBox* m_time;
     QPushButton* m_preview;
+    QTimer m_summaryRefresh;
 };
 
 } // namespace celform::views

@@ -1,8 +1,9 @@
-// Scene tree: rebuilt from the document on every change, selection kept by id.
+// Scene tree: rebuilt from the document when its structure changes, selection kept by id.
 #include "celform/views/scene_panel.h"
 
 #include <QHeaderView>
 #include <QKeyEvent>
+#include <QSignalBlocker>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -32,9 +33,7 @@ ScenePanel::ScenePanel(model::Document* document, QWidget* parent)
             emit selectionChanged(selection());
     });
     connect(m_tree, &QTreeWidget::itemChanged, this, &ScenePanel::onItemChanged);
-    for (auto signal : {&model::Document::meshChanged, &model::Document::drawingsChanged, &model::Document::keysChanged,
-             &model::Document::documentReset})
-        connect(m_document, signal, this, &ScenePanel::rebuild);
+    connect(m_document, &model::Document::changed, this, &ScenePanel::documentChanged);
     rebuild();
 }
 
@@ -73,6 +72,54 @@ void ScenePanel::removeSelected()
         m_document->removeKey(s.id);
 }
 
+void ScenePanel::documentChanged(const model::ChangeSet& change)
+{
+    using model::Part;
+    // Only structure rebuilds the tree (and its drawing thumbnails): a brush step or an opacity
+    // drag does not touch it; a re-aligned drawing only updates its tooltip.
+    if (change.reset || change.has(Part::Mesh)
+        || ((change.has(Part::Drawings) || change.has(Part::Keys)) && change.structure)) {
+        rebuild();
+        return;
+    }
+    if (change.has(Part::Drawings) || (change.has(Part::Keys) && !change.offsetsOnly))
+        for (const model::ObjectId id : change.ids)
+            updateItem(id);
+}
+
+void ScenePanel::updateItem(model::ObjectId id)
+{
+    const auto& data = m_document->data();
+    for (QTreeWidgetItemIterator it(m_tree); *it; ++it) {
+        QTreeWidgetItem* item = *it;
+        if (model::ObjectId(item->data(0, kIdRole).toULongLong()) != id)
+            continue;
+        const QSignalBlocker block(m_tree);
+        if (const model::Drawing* d = data.drawing(id))
+            item->setToolTip(0, drawingTip(*d));
+        else if (const model::KeyViewpoint* k = data.key(id))
+            item->setToolTip(0, keyTip(*k));
+        return;
+    }
+}
+
+QString ScenePanel::drawingTip(const model::Drawing& d)
+{
+    return tr("%1 × %2 px, %3%4")
+        .arg(d.image.width())
+        .arg(d.image.height())
+        .arg(d.imageFormat.toUpper())
+        .arg(d.aligned ? tr(", aligned") : tr(", not aligned yet"));
+}
+
+QString ScenePanel::keyTip(const model::KeyViewpoint& k)
+{
+    return tr("Direction (%1, %2, %3)")
+        .arg(k.direction.x(), 0, 'f', 3)
+        .arg(k.direction.y(), 0, 'f', 3)
+        .arg(k.direction.z(), 0, 'f', 3);
+}
+
 void ScenePanel::rebuild()
 {
     const Selection previous = selection();
@@ -103,12 +150,7 @@ void ScenePanel::rebuild()
         item->setData(0, kKindRole, int(ItemKind::Drawing));
         item->setData(0, kIdRole, QVariant::fromValue<qulonglong>(d.id));
         item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable);
-        item->setToolTip(0,
-            tr("%1 × %2 px, %3%4")
-                .arg(d.image.width())
-                .arg(d.image.height())
-                .arg(d.imageFormat.toUpper())
-                .arg(d.aligned ? tr(", aligned") : tr(", not aligned yet")));
+        item->setToolTip(0, drawingTip(d));
         if (!d.image.isNull())
             item->setIcon(
                 0, QIcon(QPixmap::fromImage(d.image.scaled(32, 32, Qt::KeepAspectRatio, Qt::SmoothTransformation))));
@@ -121,11 +163,7 @@ void ScenePanel::rebuild()
         item->setData(0, kIdRole, QVariant::fromValue<qulonglong>(k.id));
         item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable | Qt::ItemIsUserCheckable);
         item->setCheckState(0, k.enabled ? Qt::Checked : Qt::Unchecked);
-        item->setToolTip(0,
-            tr("Direction (%1, %2, %3)")
-                .arg(k.direction.x(), 0, 'f', 3)
-                .arg(k.direction.y(), 0, 'f', 3)
-                .arg(k.direction.z(), 0, 'f', 3));
+        item->setToolTip(0, keyTip(k));
     }
     m_tree->expandAll();
     m_rebuilding = false;

@@ -33,7 +33,12 @@ signals:
     void selectionChanged(celform::views::ScenePanel::Selection selection);
 
 private:
+    void documentChanged(const model::ChangeSet& change);
     void rebuild();
+    /// Refreshes one object's item (tooltip) without rebuilding the tree.
+    void updateItem(model::ObjectId id);
+    static QString drawingTip(const model::Drawing& drawing);
+    static QString keyTip(const model::KeyViewpoint& key);
     void onItemChanged(QTreeWidgetItem* item, int column);
 
     model::Document* m_document;

@@ -112,9 +112,12 @@ ViewSpherePanel::ViewSpherePanel(model::Document* document, QWidget* parent)
     setToolTip(tr("The key viewpoints on the viewing sphere and their hull. The green facet holds the current "
                   "view; its red keys are the ones being blended.\nDrag to orbit, double-click a key to edit "
                   "it, double-click empty space to reset the orientation."));
-    for (auto signal : {&model::Document::keysChanged, &model::Document::blendChanged, &model::Document::documentReset,
-             &model::Document::meshChanged})
-        connect(m_document, signal, this, &ViewSpherePanel::refresh);
+    connect(m_document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
+        // Key directions, enabling and the blend settings shape the sphere; offsets do not.
+        if (change.reset || change.has(model::Part::Mesh) || change.has(model::Part::Blend)
+            || (change.has(model::Part::Keys) && !change.offsetsOnly))
+            refresh();
+    });
     refresh();
 }
 

@@ -1,0 +1,226 @@
+// The align tool: camera commits after navigation settles, and the matched points with their
+// markers over the viewport.
+#include "celform/views/tools/align_tool.h"
+
+#include "celform/algorithms/camera_solve.h"
+#include "celform/model/document.h"
+#include "celform/views/viewport.h"
+
+#include <QPainter>
+#include <QWidget>
+
+#include <algorithm>
+
+namespace celform::views {
+namespace {
+
+/// Paints the matched points of the semi-automatic alignment over the viewport: model points
+/// as red numbered dots, drawing points as blue numbered rings, a line between each pair.
+class MatchMarkers : public QWidget {
+public:
+    MatchMarkers(Viewport* viewport, const AlignTool* tool)
+        : QWidget(viewport)
+        , m_viewport(viewport)
+        , m_tool(tool)
+    {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override
+    {
+        QPainter p(this);
+        p.setRenderHint(QPainter::Antialiasing);
+        QFont font = p.font();
+        font.setBold(true);
+        p.setFont(font);
+        const auto& model = m_tool->modelPoints();
+        const auto& drawing = m_tool->drawingPoints();
+        for (size_t i = 0; i < std::max(model.size(), drawing.size()); ++i) {
+            const QString label = QString::number(i + 1);
+            QPointF a, b;
+            if (i < model.size())
+                a = m_viewport->projectToWidget(model[i]);
+            if (i < drawing.size())
+                b = m_viewport->drawingToWidget(drawing[i]);
+            if (i < model.size() && i < drawing.size()) {
+                p.setPen(QPen(QColor(40, 40, 40, 160), 1, Qt::DashLine));
+                p.drawLine(a, b);
+            }
+            if (i < model.size()) {
+                p.setPen(QPen(Qt::white, 1.5));
+                p.setBrush(QColor(220, 50, 40));
+                p.drawEllipse(a, 5, 5);
+                p.setPen(QColor(150, 20, 10));
+                p.drawText(a + QPointF(7, -6), label);
+            }
+            if (i < drawing.size()) {
+                p.setPen(QPen(QColor(30, 90, 220), 2.5));
+                p.setBrush(Qt::NoBrush);
+                p.drawEllipse(b, 6, 6);
+                p.setPen(QColor(20, 60, 170));
+                p.drawText(b + QPointF(8, 14), label);
+            }
+        }
+    }
+
+private:
+    Viewport* m_viewport;
+    const AlignTool* m_tool;
+};
+
+} // namespace
+
+AlignTool::AlignTool(Viewport* viewport)
+    : ViewportTool(viewport)
+    , m_markers(new MatchMarkers(viewport, this))
+{
+    m_markers->hide();
+    m_commit.setSingleShot(true);
+    m_commit.setInterval(300);
+    connect(&m_commit, &QTimer::timeout, this, [this] {
+        if (m_viewport->tool() == Viewport::Tool::Align && m_viewport->overlayDrawing() && m_viewport->document())
+            m_viewport->document()->setDrawingCamera(m_viewport->overlayDrawing(), m_viewport->camera());
+    });
+    // The markers follow the camera whichever tool is on (points outlive the tool until cleared).
+    connect(viewport, &Viewport::cameraChanged, m_markers, qOverload<>(&QWidget::update));
+}
+
+AlignTool::~AlignTool() = default;
+
+void AlignTool::activate()
+{
+    model::Document* document = m_viewport->document();
+    if (!document || !m_viewport->overlayDrawing())
+        return;
+    // Start from the stored alignment, so refining it does not jump.
+    const model::Drawing* drawing = document->data().drawing(m_viewport->overlayDrawing());
+    if (drawing && drawing->aligned)
+        m_viewport->setCamera(drawing->camera);
+}
+
+void AlignTool::deactivate()
+{
+    commitNow();
+    if (m_matching)
+        setMatching(false);
+}
+
+void AlignTool::commitNow()
+{
+    if (!m_commit.isActive())
+        return;
+    m_commit.stop();
+    if (m_viewport->overlayDrawing() && m_viewport->document())
+        m_viewport->document()->setDrawingCamera(m_viewport->overlayDrawing(), m_viewport->camera());
+}
+
+void AlignTool::cameraChanged()
+{
+    if (m_viewport->overlayDrawing())
+        m_commit.start();
+}
+
+bool AlignTool::press(const ToolEvent& event)
+{
+    if (!m_matching)
+        return false;
+    if (event.modifiers & Qt::ShiftModifier) {
+        if (const auto pixel = m_viewport->widgetToDrawing(event.position))
+            m_drawingPoints.push_back(*pixel);
+        else
+            emit m_viewport->message(tr("Shift+click inside the drawing to place its point."));
+    } else if (const auto hit = m_viewport->pickSurface(event.position)) {
+        // The picked surface point, not the nearest vertex: features rarely sit on one.
+        m_modelPoints.push_back(hit->second);
+    } else {
+        emit m_viewport->message(
+            tr("Click on the model to place a model point; Shift+click places the drawing point."));
+    }
+    m_markers->setVisible(true);
+    markersChanged();
+    return false; // a click, not a drag
+}
+
+void AlignTool::markersChanged()
+{
+    m_markers->update();
+    emit m_viewport->matchedPointsChanged();
+}
+
+void AlignTool::setMatching(bool on)
+{
+    m_matching = on;
+    m_markers->setVisible(on || !m_modelPoints.empty() || !m_drawingPoints.empty());
+    m_markers->setGeometry(m_viewport->rect());
+    m_markers->update();
+    if (on)
+        emit m_viewport->message(tr("Click a feature on the model, then Shift+click the same feature on the drawing; "
+                                    "six pairs or more, then Solve Camera."));
+}
+
+void AlignTool::clearPoints()
+{
+    m_modelPoints.clear();
+    m_drawingPoints.clear();
+    m_markers->setVisible(m_matching);
+    markersChanged();
+}
+
+void AlignTool::removeLastPoint()
+{
+    if (m_drawingPoints.size() >= m_modelPoints.size() && !m_drawingPoints.empty())
+        m_drawingPoints.pop_back();
+    else if (!m_modelPoints.empty())
+        m_modelPoints.pop_back();
+    markersChanged();
+}
+
+void AlignTool::resized()
+{
+    m_markers->setGeometry(m_viewport->rect());
+}
+
+std::optional<double> AlignTool::solve(QString* error)
+{
+    model::Document* document = m_viewport->document();
+    const model::Drawing* drawing
+        = (document && m_viewport->overlayDrawing()) ? document->data().drawing(m_viewport->overlayDrawing()) : nullptr;
+    const size_t pairs = std::min(m_modelPoints.size(), m_drawingPoints.size());
+    if (!drawing || drawing->image.isNull()) {
+        if (error)
+            *error = tr("Show a drawing to align first.");
+        return std::nullopt;
+    }
+    if (pairs < 6) {
+        if (error)
+            *error = tr("%1 pairs of points so far; the camera needs at least six.").arg(pairs);
+        return std::nullopt;
+    }
+    std::string message;
+    const auto solved = algo::solveCamera(
+        std::vector<Eigen::Vector3d>(m_modelPoints.begin(), m_modelPoints.begin() + std::ptrdiff_t(pairs)),
+        std::vector<Eigen::Vector2d>(m_drawingPoints.begin(), m_drawingPoints.begin() + std::ptrdiff_t(pairs)),
+        drawing->image.width(), drawing->image.height(), &message);
+    if (!solved) {
+        if (error)
+            *error = tr("The camera could not be solved: %1").arg(QString::fromStdString(message));
+        return std::nullopt;
+    }
+    model::Camera camera;
+    camera.eye = solved->eye;
+    camera.target = solved->target;
+    camera.up = solved->up;
+    camera.projection = model::Projection::Perspective;
+    camera.fovYDegrees = solved->fovYDegrees;
+    const model::ObjectId drawingId = m_viewport->overlayDrawing();
+    m_commit.stop();
+    m_viewport->setCamera(camera);
+    m_commit.stop();
+    document->setDrawingCamera(drawingId, camera);
+    m_markers->update();
+    return solved->rmsPixelError;
+}
+
+} // namespace celform::views

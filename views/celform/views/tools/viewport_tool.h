@@ -1,0 +1,52 @@
+// The interface of the viewport's editing tools (brush, patch painting, alignment, light,
+// highlight drag): the viewport handles navigation and hands the rest of a left-button drag to
+// the active tool as press, move, release, or cancel when the drag ends another way. Tools turn
+// pointer motion into document operations; they hold no document data of their own.
+#pragma once
+
+#include <QCursor>
+#include <QPointF>
+
+namespace celform::model {
+class Document;
+}
+
+namespace celform::views {
+
+class Viewport;
+
+/// One pointer event in widget coordinates (logical pixels, y down).
+struct ToolEvent {
+    QPointF position;
+    QPointF delta; ///< since the previous event of the drag (zero on press)
+    Qt::KeyboardModifiers modifiers;
+};
+
+class ViewportTool {
+public:
+    explicit ViewportTool(Viewport* viewport)
+        : m_viewport(viewport)
+    { }
+    virtual ~ViewportTool() = default;
+    ViewportTool(const ViewportTool&) = delete;
+    ViewportTool& operator=(const ViewportTool&) = delete;
+
+    /// The tool became active or inactive (setTool).
+    virtual void activate() { }
+    virtual void deactivate() { }
+    /// Left-button press; true when the tool takes the drag (move and release follow).
+    virtual bool press(const ToolEvent& event) = 0;
+    virtual void move(const ToolEvent& /*event*/) { }
+    virtual void release(const ToolEvent& /*event*/) { }
+    /// The drag ended without a release (tool change, a popup took the mouse): end the gesture,
+    /// keep what was done.
+    virtual void cancel() { }
+    /// The viewport's camera moved (navigation, programmatic).
+    virtual void cameraChanged() { }
+    [[nodiscard]] virtual Qt::CursorShape cursor() const { return Qt::CrossCursor; }
+
+protected:
+    Viewport* m_viewport;
+};
+
+} // namespace celform::views
