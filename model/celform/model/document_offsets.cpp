@@ -2,6 +2,7 @@
 // edit them, and the undo command that stores them sparsely.
 #include "celform/model/document.h"
 
+#include "celform/algorithms/sorted_merge.h"
 #include "celform/model/document_commands.h"
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
@@ -112,21 +113,19 @@ bool KeyOffsetsCommand::mergeWith(const QUndoCommand* other)
         m_change.afterPresent = b.afterPresent;
         return true;
     }
-    // Union of two ascending index lists: keep our "before", take their "after".
+    // Union of the two vertex sets: our "before" where we have one, their "after" where they do.
     Change merged;
     const Change& a = m_change;
-    std::size_t i = 0, j = 0;
-    while (i < a.indices.size() || j < b.indices.size()) {
-        const bool fromA = j == b.indices.size() || (i < a.indices.size() && a.indices[i] <= b.indices[j]);
-        const bool fromB = i == a.indices.size() || (j < b.indices.size() && b.indices[j] <= a.indices[i]);
-        merged.indices.push_back(fromA ? a.indices[i] : b.indices[j]);
-        merged.before.push_back(fromA ? a.before[i] : b.before[j]);
-        merged.beforePresent.push_back(fromA ? a.beforePresent[i] : b.beforePresent[j]);
-        merged.after.push_back(fromB ? b.after[j] : a.after[i]);
-        merged.afterPresent.push_back(fromB ? b.afterPresent[j] : a.afterPresent[i]);
-        i += fromA;
-        j += fromB;
-    }
+    auto add = [&merged](const Change& first, std::size_t i, const Change& last, std::size_t j) {
+        merged.indices.push_back(first.indices[i]);
+        merged.before.push_back(first.before[i]);
+        merged.beforePresent.push_back(first.beforePresent[i]);
+        merged.after.push_back(last.after[j]);
+        merged.afterPresent.push_back(last.afterPresent[j]);
+    };
+    algo::mergeAscending(
+        a.indices, b.indices, [&](std::size_t i) { add(a, i, a, i); }, [&](std::size_t j) { add(b, j, b, j); },
+        [&](std::size_t i, std::size_t j) { add(a, i, b, j); });
     m_change = std::move(merged);
     return true;
 }
@@ -143,19 +142,20 @@ void Document::setKeyOffsets(ObjectId id, int frame, SparseOffsets offsets, cons
     if (auto it = key->offsetsByFrame.find(frame); it != key->offsetsByFrame.end())
         old = &it->second;
     KeyOffsetsCommand::Change change;
-    std::size_t i = 0, j = 0;
-    const std::size_t n = old ? old->indices.size() : 0;
-    while (i < n || j < offsets.indices.size()) {
-        const bool takeOld = j == offsets.indices.size() || (i < n && old->indices[i] <= offsets.indices[j]);
-        const bool takeNew = i == n || (j < offsets.indices.size() && offsets.indices[j] <= old->indices[i]);
-        change.indices.push_back(takeOld ? old->indices[i] : offsets.indices[j]);
-        change.before.push_back(takeOld ? old->deltas[i] : Eigen::Vector3f::Zero());
-        change.beforePresent.push_back(takeOld);
-        change.after.push_back(takeNew ? offsets.deltas[j] : Eigen::Vector3f::Zero());
-        change.afterPresent.push_back(takeNew);
-        i += takeOld;
-        j += takeNew;
-    }
+    const SparseOffsets none;
+    const SparseOffsets& before = old ? *old : none;
+    auto add = [&change](std::uint32_t v, const Eigen::Vector3f* was, const Eigen::Vector3f* becomes) {
+        change.indices.push_back(v);
+        change.before.push_back(was ? *was : Eigen::Vector3f::Zero());
+        change.beforePresent.push_back(was != nullptr);
+        change.after.push_back(becomes ? *becomes : Eigen::Vector3f::Zero());
+        change.afterPresent.push_back(becomes != nullptr);
+    };
+    algo::mergeAscending(
+        before.indices, offsets.indices,
+        [&](std::size_t i) { add(before.indices[i], &before.deltas[i], nullptr); },
+        [&](std::size_t j) { add(offsets.indices[j], nullptr, &offsets.deltas[j]); },
+        [&](std::size_t i, std::size_t j) { add(before.indices[i], &before.deltas[i], &offsets.deltas[j]); });
     push(new KeyOffsetsCommand(this, undoText, id, frame, std::move(change), 0));
 }
 
@@ -218,22 +218,19 @@ void Document::displaceKeyVertices(ObjectId id, int frame, const std::vector<std
         change.after.push_back(after);
         change.afterPresent.push_back(1);
     };
-    std::size_t i = 0; // into current
-    for (std::size_t k = 0; k < indices.size(); ++k) {
-        const std::uint32_t v = indices[k];
-        // A new frame stores the interpolated offsets of the vertices the step does not touch.
-        for (; i < current.indices.size() && current.indices[i] < v; ++i)
+    const Eigen::Vector3f zero = Eigen::Vector3f::Zero();
+    auto moved = [&](std::size_t k, const Eigen::Vector3f* seen) {
+        const Eigen::Vector3f now = seen ? *seen : zero;
+        add(indices[k], isKeyed ? now : zero, isKeyed && seen, now + displacements.row(Eigen::Index(k)).transpose());
+    };
+    algo::mergeAscending(
+        current.indices, indices,
+        [&](std::size_t i) {
+            // A new frame stores the interpolated offsets of the vertices the step does not touch.
             if (!isKeyed)
-                add(current.indices[i], Eigen::Vector3f::Zero(), false, current.deltas[i]);
-        const bool present = i < current.indices.size() && current.indices[i] == v;
-        const Eigen::Vector3f seenOffset = present ? current.deltas[i] : Eigen::Vector3f::Zero();
-        i += present;
-        add(v, isKeyed ? seenOffset : Eigen::Vector3f::Zero(), isKeyed && present,
-            seenOffset + displacements.row(Eigen::Index(k)).transpose());
-    }
-    if (!isKeyed)
-        for (; i < current.indices.size(); ++i)
-            add(current.indices[i], Eigen::Vector3f::Zero(), false, current.deltas[i]);
+                add(current.indices[i], zero, false, current.deltas[i]);
+        },
+        [&](std::size_t k) { moved(k, nullptr); }, [&](std::size_t i, std::size_t k) { moved(k, &current.deltas[i]); });
 
     push(new KeyOffsetsCommand(this, undoText, id, frame, std::move(change), m_gesture));
     if (m_gesture != 0 && m_undo->index() > 0) {
@@ -275,18 +272,17 @@ BrushStroke Document::beginBrushStroke(
     const auto& b = stroke.mirrorSelection.indices;
     stroke.indices.reserve(a.size() + b.size());
     stroke.sources.reserve(a.size() + b.size());
-    std::size_t i = 0, j = 0;
-    while (i < a.size() || j < b.size()) {
-        if (j == b.size() || (i < a.size() && a[i] <= b[j])) {
-            if (j < b.size() && b[j] == a[i])
-                ++j;
-            stroke.sources.push_back(std::int32_t(i));
-            stroke.indices.push_back(a[i++]);
-        } else {
+    auto fromSelection = [&stroke, &a](std::size_t i) {
+        stroke.sources.push_back(std::int32_t(i));
+        stroke.indices.push_back(a[i]);
+    };
+    algo::mergeAscending(
+        a, b, fromSelection,
+        [&stroke, &b](std::size_t j) {
             stroke.sources.push_back(-1 - std::int32_t(j));
-            stroke.indices.push_back(b[j++]);
-        }
-    }
+            stroke.indices.push_back(b[j]);
+        },
+        [&fromSelection](std::size_t i, std::size_t) { fromSelection(i); });
     stroke.moves.resize(Eigen::Index(a.size()), 3);
     stroke.twinMoves.resize(Eigen::Index(b.size()), 3);
     stroke.steps.resize(Eigen::Index(stroke.indices.size()), 3);

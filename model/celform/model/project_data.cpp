@@ -2,6 +2,7 @@
 #include "celform/model/project_data.h"
 
 #include "celform/algorithms/blend.h"
+#include "celform/algorithms/sorted_merge.h"
 
 #include <QCoreApplication>
 
@@ -101,22 +102,19 @@ void SparseOffsets::assign(const std::vector<std::uint32_t>& changed, const std:
     std::vector<Eigen::Vector3f> mergedDeltas;
     mergedIndices.reserve(indices.size() + changed.size());
     mergedDeltas.reserve(indices.size() + changed.size());
-    std::size_t i = 0, j = 0;
-    while (i < indices.size() || j < changed.size()) {
-        if (j == changed.size() || (i < indices.size() && indices[i] < changed[j])) {
-            mergedIndices.push_back(indices[i]);
-            mergedDeltas.push_back(deltas[i]);
-            ++i;
-            continue;
+    auto fromChange = [&](std::size_t k) {
+        if (present[k]) { // else removed by the change
+            mergedIndices.push_back(changed[k]);
+            mergedDeltas.push_back(values[k]);
         }
-        if (i < indices.size() && indices[i] == changed[j])
-            ++i; // replaced (or removed) by the change
-        if (present[j]) {
-            mergedIndices.push_back(changed[j]);
-            mergedDeltas.push_back(values[j]);
-        }
-        ++j;
-    }
+    };
+    algo::mergeAscending(
+        indices, changed,
+        [&](std::size_t k) {
+            mergedIndices.push_back(indices[k]);
+            mergedDeltas.push_back(deltas[k]);
+        },
+        fromChange, [&](std::size_t, std::size_t k) { fromChange(k); });
     indices = std::move(mergedIndices);
     deltas = std::move(mergedDeltas);
 }

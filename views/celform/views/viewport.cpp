@@ -186,7 +186,8 @@ void Viewport::syncScene()
         return;
     const model::ProjectData& data = m_document->data();
     const Eigen::Vector3d direction = m_observed ? m_observed->viewDirection() : viewDirection();
-    m_shape->refresh(*m_document, direction);
+    if (m_shape->refresh(*m_document, direction))
+        ++m_shapeUpdates;
     const algo::Shape& shape = m_shape->shape();
     if (shape.positions.rows() != data.baseMesh->vertexCount())
         return; // a mesh change is on its way

@@ -58,6 +58,9 @@ public:
     QImage renderedImage();
     /// Number of frames drawn so far; tests wait on it.
     [[nodiscard]] int renderCount() const { return m_renderCount; }
+    /// Number of times the displayed shape was recomputed (in full or in part): a hidden
+    /// viewport's stays put while the document changes.
+    [[nodiscard]] int shapeUpdates() const { return m_shapeUpdates; }
     /// Wall time of the last paintGL (VTK render, readbacks, lines, stereo composition), ms.
     [[nodiscard]] double lastFrameMilliseconds() const { return m_frameMilliseconds; }
     /// Wall time of the last frame's line extraction and drawing alone, ms.
@@ -255,6 +258,7 @@ private:
     Qt::MouseButton m_dragButton = Qt::NoButton;
     QPointF m_lastPos;
     int m_renderCount = 0;
+    int m_shapeUpdates = 0;
     bool m_initialized = false;
 
     model::ObjectId m_displayedKey = 0;
