@@ -108,12 +108,6 @@ QJsonArray vec3f(const Eigen::Vector3f& v)
     return {double(v.x()), double(v.y()), double(v.z())};
 }
 
-QJsonObject cameraJson(const Camera& c)
-{
-    return {{"eye", vec3(c.eye)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
-        {"projection", enumName(c.projection)}, {"fov_y_degrees", c.fovYDegrees}, {"ortho_height", c.orthoHeight}};
-}
-
 /// Collects chunks (pointers into the data, no copies) and their manifest entries.
 class ChunkWriter {
 public:
@@ -743,6 +737,17 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
 }
 
 } // namespace
+
+QJsonArray vec3Json(const Eigen::Vector3d& v)
+{
+    return vec3(v);
+}
+
+QJsonObject cameraJson(const Camera& c)
+{
+    return {{"eye", vec3(c.eye)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
+        {"projection", enumName(c.projection)}, {"fov_y_degrees", c.fovYDegrees}, {"ortho_height", c.orthoHeight}};
+}
 
 QJsonObject highlightTrackJson(const HighlightTrack& t)
 {

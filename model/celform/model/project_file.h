@@ -4,6 +4,7 @@
 
 #include "celform/model/project_data.h"
 
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QString>
 
@@ -11,6 +12,13 @@ namespace celform::model {
 
 /// The format version this build writes; it reads this and every older one.
 constexpr int kProjectFormatVersion = 1;
+
+/// A 3D vector as the project file stores it, [x, y, z]; the command line's JSON uses the same form.
+QJsonArray vec3Json(const Eigen::Vector3d& v);
+
+/// A camera as the project file stores it (eye, target, up, projection, fov_y_degrees,
+/// ortho_height); `celform info --json` prints the same form.
+QJsonObject cameraJson(const Camera& camera);
 
 /// A highlight track as the project file stores it (docs/file-format.md); `celform highlight
 /// --list --json` prints the same form.
