@@ -2,6 +2,8 @@
 // the faces-around-vertex table makes possible.
 #include "celform/algorithms/mesh_topology.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
