@@ -5,9 +5,11 @@
 #include "celform/model/io_error.h"
 #include "celform/model/raster_codec.h"
 
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
+#include <QImageReader>
 #include <QPainter>
 #include <QSvgRenderer>
 
@@ -37,9 +39,9 @@ QString normalisedFormat(const QString& format)
     return f;
 }
 
-QImage renderSvg(const QByteArray& data, const QString& fileLabel)
+/// The pixel size an SVG drawing is rendered at: kSvgHeight high, its view box's aspect.
+QSize svgSize(const QSvgRenderer& renderer, const QString& fileLabel)
 {
-    QSvgRenderer renderer(data);
     if (!renderer.isValid())
         throw IoError(fileLabel, ImageIo::tr("not a valid SVG drawing"));
     QSizeF size = renderer.viewBoxF().size();
@@ -47,8 +49,14 @@ QImage renderSvg(const QByteArray& data, const QString& fileLabel)
         size = renderer.defaultSize();
     if (size.isEmpty())
         throw IoError(fileLabel, ImageIo::tr("the SVG drawing has no size"));
-    const int width
-        = std::clamp(static_cast<int>(std::lround(kSvgHeight * size.width() / size.height())), 1, 16 * kSvgHeight);
+    return {std::clamp(static_cast<int>(std::lround(kSvgHeight * size.width() / size.height())), 1, 16 * kSvgHeight),
+        kSvgHeight};
+}
+
+QImage renderSvg(const QByteArray& data, const QString& fileLabel)
+{
+    QSvgRenderer renderer(data);
+    const int width = svgSize(renderer, fileLabel).width();
     QImage image(width, kSvgHeight, QImage::Format_RGBA8888_Premultiplied);
     if (image.isNull())
         throw IoError(fileLabel, ImageIo::tr("the SVG drawing is too large"));
@@ -78,6 +86,26 @@ QImage decodeImage(const QByteArray& data, const QString& format, const QString&
     if (image.isNull())
         throw IoError(fileLabel, problem);
     return image;
+}
+
+QSize decodedImageSize(const QByteArray& data, const QString& format, const QString& fileLabel)
+{
+    if (data.isEmpty())
+        throw IoError(fileLabel, ImageIo::tr("the file is empty"));
+    const QString f = normalisedFormat(format);
+    if (f == QLatin1String("svg"))
+        return svgSize(QSvgRenderer(data), fileLabel);
+    // Formats whose header states the size OpenImageIO decodes (a GIF's screen may be larger than
+    // its first frame, so GIF is decoded like the rest).
+    if (f == QLatin1String("png") || f == QLatin1String("jpg") || f == QLatin1String("bmp")) {
+        QByteArray bytes = data; // shared, not copied
+        QBuffer buffer(&bytes);
+        QImageReader reader(&buffer, f.toLatin1());
+        const QSize size = reader.size();
+        if (size.isValid() && !size.isEmpty())
+            return size;
+    }
+    return decodeImage(data, format, fileLabel).size();
 }
 
 Drawing importDrawing(const QString& path)

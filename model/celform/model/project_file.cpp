@@ -600,7 +600,7 @@ Look readLook(const Reader& r, const QJsonObject& look)
     return out;
 }
 
-ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QString& path)
+ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QString& path, DrawingImages images)
 {
     ProjectData data;
     if (root.contains("base_mesh")) {
@@ -657,7 +657,8 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         d.aligned = r.boolean(o, "aligned");
         d.opacity = r.number(o, "opacity");
         d.frame = int(r.number(o, "frame"));
-        d.image = decodeImage(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
+        if (images == DrawingImages::Decode)
+            d.image = decodeImage(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
         data.drawings.push_back(std::move(d));
     }
 
@@ -792,7 +793,7 @@ void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
         throw IoError(path, ProjectFile::tr("could not be saved: %1").arg(file.errorString()));
 }
 
-ProjectData loadProject(const QString& path)
+ProjectData loadProject(const QString& path, DrawingImages images)
 {
     QFile file(path);
     if (!file.exists())
@@ -851,7 +852,7 @@ ProjectData loadProject(const QString& path)
                 .arg(manifestVersion)
                 .arg(kProjectFormatVersion));
     const Reader reader(path, bytes, size, root.value("chunks").toObject());
-    return parseManifest(reader, root, path);
+    return parseManifest(reader, root, path, images);
 }
 
 } // namespace celform::model

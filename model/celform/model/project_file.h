@@ -28,8 +28,16 @@ QJsonObject highlightTrackJson(const HighlightTrack& track);
 /// as PATH.bak. Throws IoError; on error the file on disk is unchanged.
 void saveProject(const ProjectData& data, const QString& path, bool keepBackup = true);
 
+/// What loadProject does with the drawings' embedded image bytes.
+enum class DrawingImages {
+    Decode, ///< decoded into Drawing::image (checked readable)
+    /// Drawing::image left null: for readers that need no pixels (`celform info` reads sizes with
+    /// decodedImageSize()), so they pay neither for decoding nor for loading OpenImageIO.
+    Skip,
+};
+
 /// Reads a project. Throws IoError for a missing, truncated or corrupt file, or one written by a
 /// newer format version.
-ProjectData loadProject(const QString& path);
+ProjectData loadProject(const QString& path, DrawingImages images = DrawingImages::Decode);
 
 } // namespace celform::model
