@@ -845,6 +845,79 @@ private slots:
         QVERIFY((key->offsetsByFrame.at(0).at(100) - Eigen::Vector3f(0.05f, 0, 0)).norm() < 1e-6);
         QVERIFY((key->offsetsByFrame.at(3).at(100) - Eigen::Vector3f(0.10f, 0, 0)).norm() < 1e-6);
     }
+
+    void editorChecksBeforeAnyWindow_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("named");
+        const QString sample = QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+        QTest::newRow("unknown word") << QStringList{"bogus"} << 2 << "bogus";
+        QTest::newRow("unknown option") << QStringList{"--bogus"} << 2 << "bogus";
+        QTest::newRow("missing project") << QStringList{"missing.celform"} << 3 << "missing.celform";
+        QTest::newRow("missing in a folder") << QStringList{"/nonexistent/p"} << 3 << "/nonexistent/p";
+        QTest::newRow("two projects") << QStringList{sample, sample} << 2 << "one project";
+        QTest::newRow("no display") << QStringList{sample} << 2 << "display";
+        QTest::newRow("no display, no project") << QStringList{} << 2 << "display";
+        QTest::newRow("screenshot without display")
+            << QStringList{sample, "--screenshot", "/tmp/x.png"} << 2 << "display";
+    }
+    void editorChecksBeforeAnyWindow()
+    {
+        // Without a display Qt's xcb plugin would abort: the launcher answers first, in one line.
+        QFETCH(QStringList, args);
+        QFETCH(int, exitCode);
+        QFETCH(QString, named);
+        const Run r = runCelform(args, {"QT_QPA_PLATFORM"});
+        QCOMPARE(r.status, QProcess::NormalExit);
+        QVERIFY2(r.exitCode == exitCode, qPrintable(QStringLiteral("%1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.section(QLatin1Char('\n'), 0, 0).contains(named), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
+
+    void editorWithoutItsModule()
+    {
+        // A celform binary with no editor module beside it (or in ../lib/celform) still runs the
+        // command line, and says so when asked for the editor.
+        const QString copy = m_dir.filePath(QStringLiteral("bin/celform"));
+        QVERIFY(QDir().mkpath(QFileInfo(copy).path()));
+        QFile::remove(copy);
+        QVERIFY(QFile::copy(QStringLiteral(CELFORM_EXECUTABLE), copy));
+        QVERIFY(QFile::setPermissions(copy, QFile::permissions(copy) | QFileDevice::ExeOwner));
+        QCOMPARE(runCelform({"--version"}, {}, copy).exitCode, 0);
+        const Run r = runCelform({}, {}, copy); // QT_QPA_PLATFORM=offscreen: a display of sorts
+        QCOMPARE(r.status, QProcess::NormalExit);
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains(QStringLiteral("libcelform_editor")), qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);
+    }
+
+    void commandLineMapsNoEditorLibraries_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("version") << QStringList{"--version"};
+        QTest::newRow("help") << QStringList{"--help"};
+        QTest::newRow("info") << QStringList{
+            "info", CELFORM_SOURCE_DIR "/resources/samples/elephant.celform", "--json"};
+    }
+    void commandLineMapsNoEditorLibraries()
+    {
+        // The loader's own list (LD_DEBUG=libs): no VTK, OpenGL, MPI, Qt Widgets, nor OpenImageIO
+        // for work that reads or writes no raster image.
+        QFETCH(QStringList, args);
+        const Run r = runCelform(args, {"LD_DEBUG=libs", "QT_QPA_PLATFORM"});
+        QCOMPARE(r.exitCode, 0);
+        QStringList mapped;
+        for (const QString& line : r.err.split(QLatin1Char('\n')))
+            if (line.contains(QStringLiteral("calling init: ")))
+                mapped << line.section(QStringLiteral("calling init: "), 1).trimmed();
+        if (mapped.isEmpty())
+            QSKIP("the dynamic loader prints no LD_DEBUG=libs lines here");
+        for (const QString& lib : mapped)
+            for (const char* editorOnly : {"libvtk", "libQt6Widgets", "libQt6OpenGL", "/libGL.so", "libmpi",
+                     "libOpenImageIO", "libcelform_editor"})
+                QVERIFY2(!lib.contains(QLatin1String(editorOnly)), qPrintable(lib));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCli)
