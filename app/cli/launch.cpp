@@ -38,6 +38,34 @@ bool displayAvailable()
         || !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
 }
 
+/// Takes out Qt's own window-system options (-platform offscreen, -style fusion, ...), which
+/// QApplication removes before the editor reads its arguments; says whether one chose a platform
+/// or an X display.
+QStringList withoutQtOptions(const QStringList& arguments, bool* choosesDisplay)
+{
+    static const QStringList flags = {QStringLiteral("-reverse"), QStringLiteral("-widgetcount"),
+        QStringLiteral("-nograb"), QStringLiteral("-dograb"), QStringLiteral("-sync")};
+    static const QStringList withValue = {QStringLiteral("-platform"), QStringLiteral("-platformpluginpath"),
+        QStringLiteral("-platformtheme"), QStringLiteral("-plugin"), QStringLiteral("-qwindowgeometry"),
+        QStringLiteral("-qwindowtitle"), QStringLiteral("-qwindowicon"), QStringLiteral("-session"),
+        QStringLiteral("-style"), QStringLiteral("-stylesheet"), QStringLiteral("-display"),
+        QStringLiteral("-geometry"), QStringLiteral("-name"), QStringLiteral("-title"), QStringLiteral("-visual")};
+    QStringList kept;
+    for (qsizetype i = 0; i < arguments.size(); ++i) {
+        // Qt reads "--platform" as "-platform".
+        const QString a = arguments[i].startsWith(QLatin1String("--")) ? arguments[i].mid(1) : arguments[i];
+        if (i > 0 && flags.contains(a))
+            continue;
+        if (i > 0 && withValue.contains(a) && i + 1 < arguments.size()) {
+            *choosesDisplay = *choosesDisplay || a == QLatin1String("-platform") || a == QLatin1String("-display");
+            ++i;
+            continue;
+        }
+        kept << arguments[i];
+    }
+    return kept;
+}
+
 /// Where the module may be: beside the binary (the build tree) or in ../lib/celform (installed).
 QStringList editorModuleCandidates()
 {
@@ -76,12 +104,14 @@ int parseEditorArguments(const QStringList& arguments, EditorArguments& parsed, 
     const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")}, QString());
     const QCommandLineOption screenshot(QStringLiteral("screenshot"), QString(), QStringLiteral("FILE"));
     parser.addOptions({help, version, screenshot});
+    bool choosesDisplay = false;
+    const QStringList editorArguments = withoutQtOptions(arguments, &choosesDisplay);
     auto problem = [&](int code, const QString& text) {
         if (message)
             *message = QStringLiteral("celform: ") + text;
         return code;
     };
-    if (!parser.parse(arguments))
+    if (!parser.parse(editorArguments))
         return problem(kExitUsage,
             parser.errorText() + QLatin1Char('\n') + Cli::tr("usage:") + QLatin1Char(' ') + synopsisLines().constLast()
                 + QLatin1Char('\n') + Cli::tr("(celform --help lists the sub-commands)"));
@@ -103,7 +133,7 @@ int parseEditorArguments(const QStringList& arguments, EditorArguments& parsed, 
                     .arg(parsed.project, subCommandNames().join(QStringLiteral(", "))));
         return problem(kExitBadInput, Cli::tr("%1: the file does not exist").arg(parsed.project));
     }
-    if (!displayAvailable())
+    if (!choosesDisplay && !displayAvailable())
         return problem(kExitUsage,
             Cli::tr("the editor needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is set (run it under "
                     "xvfb-run, or set QT_QPA_PLATFORM); the sub-commands need none (celform --help)"));

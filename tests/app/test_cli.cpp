@@ -861,6 +861,11 @@ private slots:
         QTest::newRow("no display, no project") << QStringList{} << 2 << "display";
         QTest::newRow("screenshot without display")
             << QStringList{sample, "--screenshot", "/tmp/x.png"} << 2 << "display";
+        // Qt's own window-system options (and their values) pass the checks.
+        QTest::newRow("Qt options pass") << QStringList{"-style", "fusion", "-reverse", "missing.celform"} << 3
+                                         << "missing.celform";
+        QTest::newRow("-platform takes its value")
+            << QStringList{"-platform", "offscreen", "bogus.celform"} << 3 << "bogus.celform";
     }
     void editorChecksBeforeAnyWindow()
     {
