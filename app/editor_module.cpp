@@ -23,7 +23,9 @@ extern "C" Q_DECL_EXPORT int celform_editor_main(int argc, char** argv)
 
     celform::app::EditorArguments parsed;
     QString message;
-    if (const int code = celform::app::parseEditorArguments(QCoreApplication::arguments(), parsed, &message)) {
+    // The QApplication has its display (QApplication took out -platform and the like).
+    if (const int code
+        = celform::app::parseEditorArguments(QCoreApplication::arguments(), parsed, &message, /*checkDisplay=*/false)) {
         fprintf(stderr, "%s\n", qPrintable(message));
         return code;
     }

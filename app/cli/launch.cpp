@@ -97,7 +97,7 @@ void installTranslations(QCoreApplication& app)
         QCoreApplication::installTranslator(own);
 }
 
-int parseEditorArguments(const QStringList& arguments, EditorArguments& parsed, QString* message)
+int parseEditorArguments(const QStringList& arguments, EditorArguments& parsed, QString* message, bool checkDisplay)
 {
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")}, QString());
@@ -133,7 +133,7 @@ int parseEditorArguments(const QStringList& arguments, EditorArguments& parsed, 
                     .arg(parsed.project, subCommandNames().join(QStringLiteral(", "))));
         return problem(kExitBadInput, Cli::tr("%1: the file does not exist").arg(parsed.project));
     }
-    if (!choosesDisplay && !displayAvailable())
+    if (checkDisplay && !choosesDisplay && !displayAvailable())
         return problem(kExitUsage,
             Cli::tr("the editor needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is set (run it under "
                     "xvfb-run, or set QT_QPA_PLATFORM); the sub-commands need none (celform --help)"));

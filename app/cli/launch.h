@@ -27,8 +27,9 @@ struct EditorArguments {
 /// Parses the editor's arguments (arguments[0] is the program). Returns 0, or the exit code of a
 /// problem found before any window opens, with its one-line message: an unknown option or a
 /// second project (2), a word that is neither a sub-command nor a file (2), a missing file (3),
-/// no display to open a window on (2).
-int parseEditorArguments(const QStringList& arguments, EditorArguments& parsed, QString* message);
+/// and with checkDisplay, no display to open a window on (2).
+int parseEditorArguments(
+    const QStringList& arguments, EditorArguments& parsed, QString* message, bool checkDisplay = true);
 
 /// Runs the editor: checks the arguments, loads the editor module beside the binary (or in
 /// ../lib/celform) and calls it. Prints a message and returns 2 or 3 when it cannot start.
