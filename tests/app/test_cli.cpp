@@ -2,11 +2,14 @@
 // file, JSON output, and no crash on any file of ../shared/data/bad.
 #include "test_support.h"
 
+#include "cli.h"
+
 #include "celform/model/project_file.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QTemporaryDir>
 
@@ -21,14 +24,24 @@ struct Run {
     QString err;
 };
 
-Run runCelform(const QStringList& args)
+/// Runs celform without a display. environment: NAME=VALUE sets a variable, NAME alone removes it.
+Run runCelform(const QStringList& args, const QStringList& environment = {},
+    const QString& program = QStringLiteral(CELFORM_EXECUTABLE))
 {
     QProcess p;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.remove(QStringLiteral("DISPLAY")); // sub-commands must not need a display
+    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
     env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    for (const QString& e : environment) {
+        const qsizetype equals = e.indexOf(QLatin1Char('='));
+        if (equals < 0)
+            env.remove(e);
+        else
+            env.insert(e.left(equals), e.mid(equals + 1));
+    }
     p.setProcessEnvironment(env);
-    p.start(QStringLiteral(CELFORM_EXECUTABLE), args);
+    p.start(program, args);
     if (!p.waitForFinished(120000))
         p.kill();
     return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
@@ -61,6 +74,34 @@ Mask readMask(const QString& png)
         m.cy /= m.area;
     }
     return m;
+}
+
+Eigen::Vector3d vector3(const QJsonValue& value)
+{
+    const QJsonArray a = value.toArray();
+    return a.size() == 3 ? Eigen::Vector3d(a[0].toDouble(), a[1].toDouble(), a[2].toDouble())
+                         : Eigen::Vector3d::Constant(std::nan(""));
+}
+
+/// A camera from the project file's JSON form, as `info --json` prints it.
+celform::model::Camera cameraOf(const QJsonObject& o)
+{
+    celform::model::Camera c;
+    c.eye = vector3(o["eye"]);
+    c.target = vector3(o["target"]);
+    c.up = vector3(o["up"]);
+    c.projection = o["projection"].toString() == QLatin1String("orthographic")
+        ? celform::model::Projection::Orthographic
+        : celform::model::Projection::Perspective;
+    c.fovYDegrees = o["fov_y_degrees"].toDouble();
+    c.orthoHeight = o["ortho_height"].toDouble();
+    return c;
+}
+
+QByteArray fileBytes(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 } // namespace
@@ -211,12 +252,14 @@ private slots:
         QCOMPARE(r.exitCode, 3);
         QVERIFY2(r.err.contains(QStringLiteral("front")), qPrintable(r.err));
 
-        // info reports each key camera's frame.
+        // info prints each key's camera as the project file stores it.
         r = runCelform({"info", p, "--json"});
         const QJsonObject info = QJsonDocument::fromJson(r.out.toUtf8()).object();
         const QJsonObject camera = info["key_viewpoints"].toArray()[0].toObject()["camera"].toObject();
-        for (const char* v : {"eye", "right", "up", "forward"})
-            QCOMPARE(camera[v].toArray().size(), 3);
+        QCOMPARE(QStringList(camera.keys()),
+            QStringList({"eye", "fov_y_degrees", "ortho_height", "projection", "target", "up"}));
+        const celform::model::Camera keyCamera = cameraOf(camera);
+        QCOMPARE(camera["projection"].toString(), QStringLiteral("perspective"));
 
         // Brush vertex 100 of "front" by (0.01, 0.02) along the key camera's right and up.
         const QString before = m_dir.filePath(QStringLiteral("before.obj"));
@@ -231,7 +274,6 @@ private slots:
         const QJsonObject eval = QJsonDocument::fromJson(r.out.toUtf8()).object();
         QCOMPARE(eval["keys"].toArray().size(), 1);
         QCOMPARE(eval["keys"].toArray()[0].toObject()["weight"].toDouble(), 1.0);
-        const auto right = camera["right"].toArray(), up = camera["up"].toArray();
         auto vertex = [](const QString& obj, int index) {
             QFile f(obj);
             f.open(QIODevice::ReadOnly);
@@ -246,9 +288,7 @@ private slots:
             return Eigen::Vector3d(Eigen::Vector3d::Constant(std::nan("")));
         };
         const Eigen::Vector3d moved = vertex(after, 100) - vertex(before, 100);
-        const Eigen::Vector3d expected
-            = 0.01 * Eigen::Vector3d(right[0].toDouble(), right[1].toDouble(), right[2].toDouble())
-            + 0.02 * Eigen::Vector3d(up[0].toDouble(), up[1].toDouble(), up[2].toDouble());
+        const Eigen::Vector3d expected = 0.01 * keyCamera.right() + 0.02 * keyCamera.trueUp();
         QVERIFY2((moved - expected).norm() < 1e-6,
             qPrintable(QStringLiteral("moved %1 %2 %3").arg(moved.x()).arg(moved.y()).arg(moved.z())));
         // Seen from the side key's direction, the front deformation is not there.
@@ -278,8 +318,8 @@ private slots:
         r = runCelform({"info", p, "--json"});
         const QJsonObject shot = QJsonDocument::fromJson(r.out.toUtf8()).object()["render_camera"].toObject();
         QVERIFY(!shot.isEmpty());
-        auto triple = [&](const char* key) {
-            const QJsonArray a = shot[QLatin1String(key)].toArray();
+        auto triple = [&](const char* name) {
+            const QJsonArray a = shot[QLatin1String(name)].toArray();
             return QStringLiteral("%1,%2,%3")
                 .arg(a[0].toDouble(), 0, 'g', 17)
                 .arg(a[1].toDouble(), 0, 'g', 17)
@@ -621,6 +661,267 @@ private slots:
         QCOMPARE(r.exitCode, 3);
         QVERIFY(r.err.contains(QStringLiteral("cut.celform")));
         QVERIFY(r.out.isEmpty());
+    }
+
+    void tableMatchesReadmeAndHelp()
+    {
+        // README.md's command-line block, `celform --help` and each `celform SUB --help` come from
+        // the one table of sub-commands.
+        QFile readme(QStringLiteral(CELFORM_SOURCE_DIR "/README.md"));
+        QVERIFY(readme.open(QIODevice::ReadOnly | QIODevice::Text));
+        const QString text = QString::fromUtf8(readme.readAll());
+        const qsizetype section = text.indexOf(QStringLiteral("\n## Command line"));
+        const qsizetype open = text.indexOf(QStringLiteral("```sh\n"), section);
+        const qsizetype close = text.indexOf(QStringLiteral("\n```"), open + 1);
+        QVERIFY(section >= 0 && open > section && close > open);
+        // Logical lines: a trailing backslash continues a line, " # ..." is a comment.
+        QStringList readmeLines;
+        QString current;
+        for (QString line : text.mid(open + 6, close - open - 6).split(QLatin1Char('\n'))) {
+            if (const qsizetype comment = line.indexOf(QStringLiteral(" #")); comment >= 0)
+                line.truncate(comment);
+            line = line.trimmed();
+            const bool continued = line.endsWith(QLatin1Char('\\'));
+            if (continued)
+                line.chop(1);
+            current += line + QLatin1Char(' ');
+            if (!continued) {
+                if (!current.trimmed().isEmpty())
+                    readmeLines << current.simplified();
+                current.clear();
+            }
+        }
+        QStringList table;
+        for (const QString& line : celform::app::synopsisLines())
+            table << line.simplified();
+        for (const QString& line : table)
+            QVERIFY2(readmeLines.contains(line), qPrintable(QStringLiteral("README.md lacks: ") + line));
+        for (const QString& line : readmeLines)
+            QVERIFY2(!line.startsWith(QStringLiteral("celform ")) || table.contains(line),
+                qPrintable(QStringLiteral("not in the table: ") + line));
+
+        const Run help = runCelform({"--help"});
+        QCOMPARE(help.exitCode, 0);
+        for (const QString& line : table)
+            QVERIFY2(help.out.contains(line), qPrintable(line));
+        for (const QString& name : celform::app::subCommandNames()) {
+            const Run r = runCelform({name, "--help"});
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY2(r.out.contains(QStringLiteral("celform ") + name), qPrintable(r.out));
+            QVERIFY2(r.out.contains(QStringLiteral("--help")), qPrintable(r.out));
+        }
+        QCOMPARE(runCelform({"help", "render"}).out, runCelform({"render", "--help"}).out);
+    }
+
+    void optionValuesTheFileWouldRefuse_data()
+    {
+        QTest::addColumn<QStringList>("args"); // "P" stands for the project
+        QTest::addColumn<QString>("option");
+        const QString huge = QStringLiteral("1e308,1e308,0");
+        QTest::newRow("render view overflows") << QStringList{"set", "P", "--render-view", huge} << "--render-view";
+        QTest::newRow("key view overflows")
+            << QStringList{"key", "add", "P", "--name", "k", "--from-base", "--view", huge} << "--view";
+        QTest::newRow("key up overflows") << QStringList{"key", "add", "P", "--name", "k", "--from-base", "--eye",
+            "0,0,3", "--target", "0,0,0", "--up", huge}
+                                          << "--up";
+        QTest::newRow("eval view overflows") << QStringList{"eval", "P", "--view", huge} << "--view";
+        QTest::newRow("directional light overflows")
+            << QStringList{"set", "P", "--light", "directional:1e308,1e308,0"} << "--light";
+        QTest::newRow("guide overflows") << QStringList{"highlight", "P", "--add", "x", "--guide", "1e308,0,0"}
+                                         << "--guide";
+        QTest::newRow("guide overflows a float")
+            << QStringList{"highlight", "P", "--add", "x", "--guide", "1e39,0,0"} << "--guide";
+        QTest::newRow("operation overflows a float")
+            << QStringList{"highlight", "P", "--add", "x", "--op", "translate:1e39,0"} << "--op";
+        QTest::newRow("drag overflows a float")
+            << QStringList{"brush", "P", "--key", "front", "--vertex", "1", "--radius", "0.1", "--drag", "1e39,0"}
+            << "--drag";
+        QTest::newRow("frames near INT_MAX")
+            << QStringList{"render", "P", "--frames", "2147483646-2147483647"} << "--frames";
+        QTest::newRow("too many frames") << QStringList{"render", "P", "--frames", "0-200000"} << "--frames";
+        QTest::newRow("frame beyond kMaxFrame") << QStringList{"render", "P", "--frame", "8000001"} << "--frame";
+        QTest::newRow("brush frame") << QStringList{"brush", "P", "--key", "front", "--vertex", "1", "--radius", "0.1",
+            "--push", "0.1", "--frame", "-8000001"}
+                                     << "--frame";
+        QTest::newRow("key frame") << QStringList{"key", "add", "P", "--name", "k", "--from-base", "--view", "0,1,0",
+            "--frame", "2147483647"}
+                                   << "--frame";
+        QTest::newRow("highlight frame") << QStringList{"highlight", "P", "--add", "x", "--frame", "9000000"}
+                                         << "--frame";
+        QTest::newRow("eval frame") << QStringList{"eval", "P", "--view", "0,0,1", "--frame", "99999999999"}
+                                    << "--frame";
+    }
+    void optionValuesTheFileWouldRefuse()
+    {
+        // Usage errors at the parser (exit 2) naming the option, at once, and nothing written.
+        QFETCH(QStringList, args);
+        QFETCH(QString, option);
+        const QString bunny = bunnyProject();
+        if (bunny.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString p = m_dir.filePath(QStringLiteral("refused.celform"));
+        if (!QFileInfo::exists(p)) {
+            QVERIFY(QFile::copy(bunny, p));
+            QCOMPARE(runCelform({"key", "add", p, "--name", "front", "--from-base", "--view", "0,0,1"}).exitCode, 0);
+        }
+        const QByteArray before = fileBytes(p);
+        args.replace(args.indexOf(QStringLiteral("P")), p);
+        QElapsedTimer clock;
+        clock.start();
+        const Run r = runCelform(args);
+        QCOMPARE(r.status, QProcess::NormalExit);
+        QVERIFY2(r.exitCode == 2, qPrintable(QStringLiteral("%1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.section(QLatin1Char('\n'), 0, 0).contains(option), qPrintable(r.err));
+        QVERIFY2(clock.elapsed() < 30000, "a refused option must not start the work");
+        QCOMPARE(fileBytes(p), before);
+    }
+
+    void brushStartsFromInterpolatedOffsets()
+    {
+        // Paper 1, section 4.2: at a frame without stored offsets the brush adds to what the artist
+        // sees there, the offsets interpolated over the keyed frames, and the frame stores them all.
+        using namespace celform::model;
+        const QString bunny = bunnyProject();
+        if (bunny.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString p = m_dir.filePath(QStringLiteral("between.celform"));
+        QFile::remove(p);
+        QVERIFY(QFile::copy(bunny, p));
+        QCOMPARE(runCelform({"key", "add", p, "--name", "front", "--from-base", "--view", "0,0,1"}).exitCode, 0);
+        Run r = runCelform(
+            {"brush", p, "--key", "front", "--vertex", "100", "--radius", "0.03", "--drag", "0.01,0", "--frame", "0"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = runCelform(
+            {"brush", p, "--key", "front", "--vertex", "100", "--radius", "0.05", "--drag", "0,0.02", "--frame", "10"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+
+        ProjectData data = loadProject(p);
+        const KeyViewpoint* key = data.keyByName(QStringLiteral("front"));
+        QVERIFY(key && key->offsetsByFrame.size() == 2 && !key->offsetsByFrame.count(5));
+        const SparseOffsets interpolated = *ProjectData::offsetsAt(*key, 5, data.blend.time).get();
+        // Between the keyed frames: neither frame 0's offsets nor frame 10's.
+        QVERIFY(interpolated.at(100) != key->offsetsByFrame.at(0).at(100));
+        QVERIFY(interpolated.at(100) != key->offsetsByFrame.at(10).at(100));
+        QVERIFY(interpolated.at(100).norm() > 1e-4);
+        const Eigen::Vector3f drag = (0.004 * key->camera.right() + 0.006 * key->camera.trueUp()).cast<float>();
+
+        // A radius that holds the picked vertex alone: it moves by the whole drag.
+        r = runCelform({"brush", p, "--key", "front", "--vertex", "100", "--radius", "1e-6", "--drag", "0.004,0.006",
+            "--frame", "5", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["moved_vertices"].toInt(), 1);
+        data = loadProject(p);
+        key = data.keyByName(QStringLiteral("front"));
+        QVERIFY(key->offsetsByFrame.count(5));
+        const SparseOffsets& stored = key->offsetsByFrame.at(5);
+        std::vector<std::uint32_t> vertices = interpolated.indices;
+        if (!std::binary_search(vertices.begin(), vertices.end(), 100u))
+            vertices.insert(std::upper_bound(vertices.begin(), vertices.end(), 100u), 100u);
+        QCOMPARE(stored.indices, vertices);
+        for (const std::uint32_t v : vertices) {
+            const Eigen::Vector3f expected = interpolated.at(v) + (v == 100 ? drag : Eigen::Vector3f::Zero());
+            QVERIFY2((stored.at(v) - expected).norm() < 1e-6, qPrintable(QString::number(v)));
+        }
+    }
+
+    void brushAddsToHeldOffsets()
+    {
+        // Only frame 0 keyed, 0.05 along x: frame 3 holds it, and a drag of 0.05 there stores 0.10.
+        using namespace celform::model;
+        const QString bunny = bunnyProject();
+        if (bunny.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString p = m_dir.filePath(QStringLiteral("held.celform"));
+        QFile::remove(p);
+        QVERIFY(QFile::copy(bunny, p));
+        QCOMPARE(runCelform({"key", "add", p, "--name", "front", "--from-base", "--view", "0,0,1"}).exitCode, 0);
+        const QStringList brush{
+            "brush", p, "--key", "front", "--vertex", "100", "--radius", "1e-6", "--drag", "0.05,0"};
+        QCOMPARE(runCelform(brush + QStringList{"--frame", "0"}).exitCode, 0);
+        QCOMPARE(runCelform(brush + QStringList{"--frame", "3"}).exitCode, 0);
+        const ProjectData data = loadProject(p);
+        const KeyViewpoint* key = data.keyByName(QStringLiteral("front"));
+        QVERIFY(key->camera.right().isApprox(Eigen::Vector3d::UnitX()));
+        QVERIFY((key->offsetsByFrame.at(0).at(100) - Eigen::Vector3f(0.05f, 0, 0)).norm() < 1e-6);
+        QVERIFY((key->offsetsByFrame.at(3).at(100) - Eigen::Vector3f(0.10f, 0, 0)).norm() < 1e-6);
+    }
+
+    void editorChecksBeforeAnyWindow_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("named");
+        const QString sample = QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+        QTest::newRow("unknown word") << QStringList{"bogus"} << 2 << "bogus";
+        QTest::newRow("unknown option") << QStringList{"--bogus"} << 2 << "bogus";
+        QTest::newRow("missing project") << QStringList{"missing.celform"} << 3 << "missing.celform";
+        QTest::newRow("missing in a folder") << QStringList{"/nonexistent/p"} << 3 << "/nonexistent/p";
+        QTest::newRow("two projects") << QStringList{sample, sample} << 2 << "one project";
+        QTest::newRow("no display") << QStringList{sample} << 2 << "display";
+        QTest::newRow("no display, no project") << QStringList{} << 2 << "display";
+        QTest::newRow("screenshot without display")
+            << QStringList{sample, "--screenshot", "/tmp/x.png"} << 2 << "display";
+        // Qt's own window-system options (and their values) pass the checks.
+        QTest::newRow("Qt options pass") << QStringList{"-style", "fusion", "-reverse", "missing.celform"} << 3
+                                         << "missing.celform";
+        QTest::newRow("-platform takes its value")
+            << QStringList{"-platform", "offscreen", "bogus.celform"} << 3 << "bogus.celform";
+    }
+    void editorChecksBeforeAnyWindow()
+    {
+        // Without a display Qt's xcb plugin would abort: the launcher answers first, in one line.
+        QFETCH(QStringList, args);
+        QFETCH(int, exitCode);
+        QFETCH(QString, named);
+        const Run r = runCelform(args, {"QT_QPA_PLATFORM"});
+        QCOMPARE(r.status, QProcess::NormalExit);
+        QVERIFY2(r.exitCode == exitCode, qPrintable(QStringLiteral("%1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.section(QLatin1Char('\n'), 0, 0).contains(named), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
+
+    void editorWithoutItsModule()
+    {
+        // A celform binary with no editor module beside it (or in ../lib/celform) still runs the
+        // command line, and says so when asked for the editor.
+        const QString copy = m_dir.filePath(QStringLiteral("bin/celform"));
+        QVERIFY(QDir().mkpath(QFileInfo(copy).path()));
+        QFile::remove(copy);
+        QVERIFY(QFile::copy(QStringLiteral(CELFORM_EXECUTABLE), copy));
+        QVERIFY(QFile::setPermissions(copy, QFile::permissions(copy) | QFileDevice::ExeOwner));
+        QCOMPARE(runCelform({"--version"}, {}, copy).exitCode, 0);
+        const Run r = runCelform({}, {}, copy); // QT_QPA_PLATFORM=offscreen: a display of sorts
+        QCOMPARE(r.status, QProcess::NormalExit);
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains(QStringLiteral("libcelform_editor")), qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);
+    }
+
+    void commandLineMapsNoEditorLibraries_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("version") << QStringList{"--version"};
+        QTest::newRow("help") << QStringList{"--help"};
+        QTest::newRow("info") << QStringList{
+            "info", CELFORM_SOURCE_DIR "/resources/samples/elephant.celform", "--json"};
+    }
+    void commandLineMapsNoEditorLibraries()
+    {
+        // The loader's own list (LD_DEBUG=libs): no VTK, OpenGL, MPI, Qt Widgets, nor OpenImageIO
+        // for work that reads or writes no raster image.
+        QFETCH(QStringList, args);
+        const Run r = runCelform(args, {"LD_DEBUG=libs", "QT_QPA_PLATFORM"});
+        QCOMPARE(r.exitCode, 0);
+        QStringList mapped;
+        for (const QString& line : r.err.split(QLatin1Char('\n')))
+            if (line.contains(QStringLiteral("calling init: ")))
+                mapped << line.section(QStringLiteral("calling init: "), 1).trimmed();
+        if (mapped.isEmpty())
+            QSKIP("the dynamic loader prints no LD_DEBUG=libs lines here");
+        for (const QString& lib : mapped)
+            for (const char* editorOnly : {"libvtk", "libQt6Widgets", "libQt6OpenGL", "/libGL.so", "libmpi",
+                     "libOpenImageIO", "libcelform_editor"})
+                QVERIFY2(!lib.contains(QLatin1String(editorOnly)), qPrintable(lib));
     }
 };
 

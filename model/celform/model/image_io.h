@@ -4,6 +4,7 @@
 #include "celform/model/project_data.h"
 
 #include <QImage>
+#include <QSize>
 #include <QString>
 #include <QStringList>
 
@@ -17,6 +18,11 @@ Drawing importDrawing(const QString& path);
 /// on transparent. HDR images are tone-clamped to 8 bits per channel for display. Throws
 /// IoError with fileLabel as the file name.
 QImage decodeImage(const QByteArray& data, const QString& format, const QString& fileLabel);
+
+/// The size decodeImage() gives, read from the header for PNG, JPEG and BMP (Qt's readers) and
+/// from the view box for SVG, decoding only the other formats: for readers that show sizes, like
+/// `celform info`, without paying for the pixels or for loading OpenImageIO. Throws IoError.
+QSize decodedImageSize(const QByteArray& data, const QString& format, const QString& fileLabel);
 
 /// Suffixes importDrawing() understands, lower case without the dot.
 QStringList imageSuffixes();

@@ -108,12 +108,6 @@ QJsonArray vec3f(const Eigen::Vector3f& v)
     return {double(v.x()), double(v.y()), double(v.z())};
 }
 
-QJsonObject cameraJson(const Camera& c)
-{
-    return {{"eye", vec3(c.eye)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
-        {"projection", enumName(c.projection)}, {"fov_y_degrees", c.fovYDegrees}, {"ortho_height", c.orthoHeight}};
-}
-
 /// Collects chunks (pointers into the data, no copies) and their manifest entries.
 class ChunkWriter {
 public:
@@ -606,7 +600,7 @@ Look readLook(const Reader& r, const QJsonObject& look)
     return out;
 }
 
-ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QString& path)
+ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QString& path, DrawingImages images)
 {
     ProjectData data;
     if (root.contains("base_mesh")) {
@@ -663,7 +657,8 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         d.aligned = r.boolean(o, "aligned");
         d.opacity = r.number(o, "opacity");
         d.frame = int(r.number(o, "frame"));
-        d.image = decodeImage(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
+        if (images == DrawingImages::Decode)
+            d.image = decodeImage(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
         data.drawings.push_back(std::move(d));
     }
 
@@ -744,6 +739,17 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
 
 } // namespace
 
+QJsonArray vec3Json(const Eigen::Vector3d& v)
+{
+    return vec3(v);
+}
+
+QJsonObject cameraJson(const Camera& c)
+{
+    return {{"eye", vec3(c.eye)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
+        {"projection", enumName(c.projection)}, {"fov_y_degrees", c.fovYDegrees}, {"ortho_height", c.orthoHeight}};
+}
+
 QJsonObject highlightTrackJson(const HighlightTrack& t)
 {
     QJsonArray combine;
@@ -787,7 +793,7 @@ void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
         throw IoError(path, ProjectFile::tr("could not be saved: %1").arg(file.errorString()));
 }
 
-ProjectData loadProject(const QString& path)
+ProjectData loadProject(const QString& path, DrawingImages images)
 {
     QFile file(path);
     if (!file.exists())
@@ -846,7 +852,7 @@ ProjectData loadProject(const QString& path)
                 .arg(manifestVersion)
                 .arg(kProjectFormatVersion));
     const Reader reader(path, bytes, size, root.value("chunks").toObject());
-    return parseManifest(reader, root, path);
+    return parseManifest(reader, root, path, images);
 }
 
 } // namespace celform::model

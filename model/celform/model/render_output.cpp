@@ -1,9 +1,8 @@
-// Render output through OpenImageIO.
+// Render output through OpenImageIO (the module of raster_codec.h).
 #include "celform/model/render_output.h"
 
 #include "celform/model/io_error.h"
-
-#include <OpenImageIO/imageio.h>
+#include "celform/model/raster_codec.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -52,23 +51,11 @@ void writeChannels(const QString& path, int width, int height, const std::vector
     if (!known.contains(suffix))
         throw IoError(path, RenderOutput::tr("has an unknown image type; use .png, .tif, .jpg or .exr"));
     const int channels = int(names.size());
-    OIIO::ImageSpec spec(width, height, channels, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    spec.channelnames = names;
-    spec.alpha_channel = -1;
-    for (int c = 0; c < channels; ++c)
-        if (names[std::size_t(c)] == "A")
-            spec.alpha_channel = c;
-    if (isFloat)
-        spec.attribute("compression", "zip");
     const QString temporary = temporaryBeside(path);
-    auto out = OIIO::ImageOutput::create(QFile::encodeName(temporary).toStdString());
-    if (!out || !out->open(QFile::encodeName(temporary).toStdString(), spec))
-        throw IoError(path,
-            RenderOutput::tr("could not be written: %1")
-                .arg(QString::fromStdString(out ? out->geterror() : OIIO::geterror())));
-    bool ok = false;
+    const RasterCodec& codec = rasterCodec(path);
+    QString error;
     if (isFloat) {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, data.data());
+        error = codec.write(temporary, width, height, names, true, data.data());
     } else {
         std::vector<unsigned char> bytes(data.size());
         for (std::size_t i = 0; i < data.size(); ++i) {
@@ -78,13 +65,11 @@ void writeChannels(const QString& path, int width, int height, const std::vector
                 v = algo::linearToSrgb(v);
             bytes[i] = static_cast<unsigned char>(std::lround(v * 255.f));
         }
-        ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+        error = codec.write(temporary, width, height, names, false, bytes.data());
     }
-    const std::string error = out->geterror();
-    out->close();
-    if (!ok) {
+    if (!error.isEmpty()) {
         QFile::remove(temporary);
-        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(QString::fromStdString(error)));
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
     }
     commit(temporary, path);
 }

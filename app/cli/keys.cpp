@@ -1,0 +1,183 @@
+// `celform key add`, `celform brush` and `celform eval`: key viewpoints, their deformation with the
+// falloff brush, and the view-dependent blend they make (paper 1, sections 3.1 and 3.2).
+#include "cli/command.h"
+#include "cli/options.h"
+
+#include "celform/model/document.h"
+#include "celform/model/io_error.h"
+#include "celform/model/mesh_io.h"
+#include "celform/model/project_file.h"
+
+#include <QJsonArray>
+
+namespace celform::app {
+namespace {
+
+const char* const kFrameOption = QT_TRANSLATE_NOOP("celform::app::Cli", "Frame of the deformation (default 0).");
+
+int runKey(const Invocation& in)
+{
+    if (in.argument(0) != QLatin1String("add"))
+        throw UsageError{Cli::tr("unknown key action “%1”").arg(in.argument(0))};
+    if (!in.isSet("name") || in.isSet("mesh") == in.isSet("from-base"))
+        throw UsageError{Cli::tr("--name and exactly one of --mesh or --from-base are required")};
+    camera_options::checkCombination(in, true);
+    const bool byView = camera_options::byView(in);
+    const Eigen::Vector3d view = byView ? camera_options::view(in) : Eigen::Vector3d::Zero();
+    const model::Camera explicitCamera = byView ? model::Camera{} : camera_options::explicitCamera(in);
+    const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+
+    const QString path = in.argument(1);
+    auto doc = openProject(path);
+    if (!doc->hasMesh())
+        throw model::IoError(path, Cli::tr("has no base model"));
+    const model::Camera camera = byView ? cameraFromView(doc->data(), view) : explicitCamera;
+    std::vector<model::ObjectId> drawingIds;
+    if (in.isSet("drawing")) {
+        const model::ObjectId drawing = doc->importDrawing(in.value("drawing"));
+        doc->setDrawingCamera(drawing, camera);
+        drawingIds.push_back(drawing);
+    }
+    const model::ObjectId id = doc->createKey(in.value("name"), camera, drawingIds, {}, frame);
+    if (in.isSet("mesh"))
+        for (const QString& w : doc->importKeyDeformation(id, in.value("mesh"), frame))
+            printErr(Cli::tr("warning: %1: %2").arg(in.value("mesh"), w));
+    doc->saveAs(path);
+    if (in.isSet("json")) {
+        const model::KeyViewpoint& key = *doc->data().key(id);
+        printJson({{"id", double(key.id)}, {"name", key.name}, {"direction", model::vec3Json(key.direction)},
+            {"camera", model::cameraJson(key.camera)}});
+    }
+    return kExitOk;
+}
+
+int runBrush(const Invocation& in)
+{
+    if (!in.isSet("key") || !in.isSet("vertex") || !in.isSet("radius") || in.isSet("drag") == in.isSet("push"))
+        throw UsageError{Cli::tr("--key, --vertex, --radius and exactly one of --drag or --push are required")};
+    const int picked = parseInt("vertex", in.value("vertex"));
+    const double radius = parseNumber("radius", in.value("radius"));
+    if (radius <= 0)
+        throw UsageError{Cli::tr("--radius must be positive")};
+    model::BrushStep step;
+    if (in.isSet("drag")) {
+        // Floats: the amounts must survive the float offsets the document stores.
+        const Eigen::VectorXd drag = parseFloats("drag", in.value("drag"), 2);
+        step = {model::BrushMotion::Drag, drag[0], drag[1]};
+    } else {
+        step = {model::BrushMotion::Push, parseFloat("push", in.value("push")), 0.0};
+    }
+    const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+
+    const QString path = in.argument(0);
+    auto doc = openProject(path);
+    const model::KeyViewpoint* key = doc->data().keyByName(in.value("key"));
+    if (!key)
+        throw model::IoError(path, Cli::tr("has no key named “%1”").arg(in.value("key")));
+    const qint64 vertexCount = doc->hasMesh() ? qint64(doc->data().baseMesh->vertexCount()) : 0;
+    if (picked < 0 || picked >= vertexCount)
+        throw model::IoError(
+            path, Cli::tr("has no vertex %1 (the base model has %2 vertices)").arg(picked).arg(vertexCount));
+    const QString keyName = key->name;
+    // One stroke of one step, seen through the key's camera, as the editor's brush tool runs it.
+    model::BrushStroke stroke = doc->beginBrushStroke(key->id, frame, std::uint32_t(picked), radius, key->camera);
+    doc->applyBrushStroke(stroke, step);
+    doc->endBrushStroke(stroke);
+    doc->saveAs(path);
+    if (in.isSet("json"))
+        printJson({{"key", keyName}, {"picked", picked}, {"frame", frame},
+            {"moved_vertices", double(stroke.selection.indices.size())}});
+    return kExitOk;
+}
+
+int runEval(const Invocation& in)
+{
+    if (!in.isSet("view"))
+        throw UsageError{Cli::tr("--view is required")};
+    const Eigen::Vector3d view = parseDirection("view", in.value("view"));
+    const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+
+    const QString path = in.argument(0);
+    const model::ProjectData data = model::loadProject(path);
+    if (!data.baseMesh)
+        throw model::IoError(path, Cli::tr("has no base model"));
+    model::BlendEvaluator blender;
+    QString error;
+    if (!blender.update(data, &error))
+        throw model::IoError(path, error);
+    const model::BlendResult blend = blender.weights(data, view);
+    if (in.isSet("out")) {
+        algo::TriMesh mesh;
+        mesh.faces = data.baseMesh->faces;
+        blender.shape(data, view, frame, mesh.vertices);
+        model::exportMesh(mesh, in.value("out"));
+    }
+    if (in.isSet("json")) {
+        QJsonArray shares;
+        for (const auto& share : blend.shares)
+            shares.append(
+                QJsonObject{{"key", data.key(share.key)->name}, {"id", double(share.key)}, {"weight", share.weight}});
+        printJson({{"view", model::vec3Json(view.normalized())}, {"frame", frame}, {"keys", shares},
+            {"base_weight", blend.baseShare}, {"facet", blend.raw.facet}, {"falloff", blend.raw.falloff}});
+        return kExitOk;
+    }
+    QString text;
+    for (const auto& share : blend.shares)
+        text += QStringLiteral("%1\t%2\n").arg(data.key(share.key)->name).arg(share.weight, 0, 'g', 10);
+    text += QStringLiteral("(base)\t%1\n").arg(blend.baseShare, 0, 'g', 10);
+    printOut(text);
+    return kExitOk;
+}
+
+} // namespace
+
+std::vector<SubCommand> keyCommands()
+{
+    std::vector<OptionSpec> keyOptions = {{"name", "N", QT_TRANSLATE_NOOP("celform::app::Cli", "Name of the new key.")},
+        {"mesh", "KEY.obj",
+            QT_TRANSLATE_NOOP(
+                "celform::app::Cli", "Key deformation: a mesh with the base model's vertex count and order.")},
+        {"from-base", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Start as a copy of the base model.")},
+        {"frame", "F", kFrameOption},
+        {"drawing", "IMAGE",
+            QT_TRANSLATE_NOOP(
+                "celform::app::Cli", "Reference drawing to embed and link, aligned with the key's camera.")},
+        {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print the new key as JSON.")}};
+    for (const OptionSpec& o : camera_options::specs())
+        keyOptions.push_back(o);
+    return {
+        {"key",
+            {"celform key add P --name N (--mesh KEY.obj | --from-base) (--view X,Y,Z | --eye X,Y,Z --target X,Y,Z "
+             "--up X,Y,Z) [--frame F] [--drawing IMAGE] [--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Adds a key viewpoint with its key deformation."),
+            {{"add", QT_TRANSLATE_NOOP("celform::app::Cli", "The action (add).")}, {"P", kProjectArgument}}, keyOptions,
+            runKey},
+        {"brush", {"celform brush P --key N --vertex I --radius R (--drag DX,DY | --push DZ) [--frame F] [--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Deforms a key with the falloff brush, seen from the key's camera."),
+            {{"P", kProjectArgument}},
+            {{"key", "N", QT_TRANSLATE_NOOP("celform::app::Cli", "Name of the key to deform.")},
+                {"vertex", "I", QT_TRANSLATE_NOOP("celform::app::Cli", "Index of the picked vertex.")},
+                {"radius", "R", QT_TRANSLATE_NOOP("celform::app::Cli", "Selection radius in world units.")},
+                {"drag", "DX,DY",
+                    QT_TRANSLATE_NOOP(
+                        "celform::app::Cli", "Move along the camera's right and up vectors, in world units.")},
+                {"push", "DZ",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "Move along the viewing direction (away from the camera), in world units.")},
+                {"frame", "F", kFrameOption},
+                {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print what moved as JSON.")}},
+            runBrush},
+        {"eval", {"celform eval P --view X,Y,Z [--frame F] [--out MESH] [--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Evaluates the view-dependent shape for a view direction."),
+            {{"P", kProjectArgument}},
+            {{"view", "X,Y,Z",
+                 QT_TRANSLATE_NOOP("celform::app::Cli", "View direction from the model's centroid towards the eye.")},
+                {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame (default 0).")},
+                {"out", "MESH",
+                    QT_TRANSLATE_NOOP("celform::app::Cli", "Write the blended mesh (OBJ or PLY, base vertex order).")},
+                {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print the keys and weights as JSON.")}},
+            runEval},
+    };
+}
+
+} // namespace celform::app

@@ -1,0 +1,275 @@
+// Option values of the sub-commands. Bounds follow what the project file accepts when it reads
+// the value back (finite numbers, unit directions, frames within kMaxFrame), so a usage error is
+// raised here rather than a file written that cannot be opened.
+#include "cli/options.h"
+
+#include "celform/algorithms/tri_mesh.h"
+
+#include <QRegularExpression>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace celform::app {
+
+// Unqualified return types below: lupdate misreads a qualified one as the context of the
+// function's Cli::tr() strings.
+using VectorX = Eigen::VectorXd;
+using Vector3 = Eigen::Vector3d;
+using Vector3f = Eigen::Vector3f;
+using model::Camera;
+using model::Light;
+using model::ShadingStyle;
+
+namespace {
+
+QString dashed(const char* option)
+{
+    return QStringLiteral("--") + QLatin1String(option);
+}
+
+bool finiteAsFloat(double v)
+{
+    return std::isfinite(v) && std::abs(v) <= double(std::numeric_limits<float>::max());
+}
+
+/// Whether a vector normalises: its length is a finite, non-zero number (1e308,1e308,0 overflows).
+template <typename Vector> bool normalisable(const Vector& v)
+{
+    const auto length = v.norm();
+    return v.allFinite() && std::isfinite(length) && length > 0 && (v / length).allFinite();
+}
+
+} // namespace
+
+VectorX parseNumbers(const char* option, const QString& text, int count)
+{
+    const QStringList parts = text.split(QLatin1Char(','));
+    Eigen::VectorXd v(count);
+    bool ok = parts.size() == count;
+    for (int i = 0; ok && i < count; ++i)
+        v[i] = parts[i].trimmed().toDouble(&ok);
+    if (!ok || !v.allFinite()) {
+        const QString o = QLatin1String(option);
+        throw UsageError{count == 3 ? Cli::tr("--%1 needs three numbers X,Y,Z, not “%2”").arg(o, text)
+                : count == 4        ? Cli::tr("--%1 needs four numbers X,Y,Z,R, not “%2”").arg(o, text)
+                                    : Cli::tr("--%1 needs two numbers A,B, not “%2”").arg(o, text)};
+    }
+    return v;
+}
+
+VectorX parseFloats(const char* option, const QString& text, int count)
+{
+    const Eigen::VectorXd v = parseNumbers(option, text, count);
+    for (int i = 0; i < count; ++i)
+        if (!finiteAsFloat(v[i]))
+            throw UsageError{Cli::tr("%1: “%2” is too large").arg(dashed(option), text)};
+    return v;
+}
+
+double parseNumber(const char* option, const QString& text)
+{
+    bool ok = false;
+    const double v = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(v))
+        throw UsageError{Cli::tr("--%1 needs a number, not “%2”").arg(QLatin1String(option), text)};
+    return v;
+}
+
+double parseFloat(const char* option, const QString& text)
+{
+    const double v = parseNumber(option, text);
+    if (!finiteAsFloat(v))
+        throw UsageError{Cli::tr("%1: “%2” is too large").arg(dashed(option), text)};
+    return v;
+}
+
+int parseInt(const char* option, const QString& text)
+{
+    bool ok = false;
+    const int v = text.trimmed().toInt(&ok);
+    if (!ok)
+        throw UsageError{Cli::tr("--%1 needs a whole number, not “%2”").arg(QLatin1String(option), text)};
+    return v;
+}
+
+int parseFrame(const char* option, const QString& text)
+{
+    bool ok = false;
+    const int v = text.trimmed().toInt(&ok);
+    if (!ok || std::abs(qint64(v)) > model::kMaxFrame)
+        throw UsageError{Cli::tr("%1 takes a frame number between -%2 and %2, not “%3”")
+                             .arg(dashed(option))
+                             .arg(model::kMaxFrame)
+                             .arg(text)};
+    return v;
+}
+
+std::pair<int, int> parseFrameRange(const char* option, const QString& text)
+{
+    static const QRegularExpression form(QStringLiteral("^\\s*(-?\\d+)\\s*-\\s*(-?\\d+)\\s*$"));
+    const QRegularExpressionMatch m = form.match(text);
+    bool okA = false, okB = false;
+    const qint64 first = m.hasMatch() ? m.captured(1).toLongLong(&okA) : 0;
+    const qint64 last = m.hasMatch() ? m.captured(2).toLongLong(&okB) : 0;
+    if (!okA || !okB || last < first)
+        throw UsageError{Cli::tr("--frames takes A-B with A <= B, not “%1”").arg(text)};
+    if (std::abs(first) > model::kMaxFrame || std::abs(last) > model::kMaxFrame)
+        throw UsageError{Cli::tr("%1 takes frame numbers between -%2 and %2, not “%3”")
+                             .arg(dashed(option))
+                             .arg(model::kMaxFrame)
+                             .arg(text)};
+    if (last - first + 1 > kMaxFramesPerRun)
+        throw UsageError{Cli::tr("%1 takes at most %2 frames at a time, not “%3”")
+                             .arg(dashed(option))
+                             .arg(kMaxFramesPerRun)
+                             .arg(text)};
+    return {int(first), int(last)};
+}
+
+QSize parseSize(const char* option, const QString& text)
+{
+    Q_UNUSED(option);
+    const QStringList parts = text.toLower().split(QLatin1Char('x'));
+    bool okW = false, okH = false;
+    const int w = parts.size() == 2 ? parts[0].toInt(&okW) : 0;
+    const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
+    if (!okW || !okH || w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw UsageError{Cli::tr("--size takes WIDTHxHEIGHT between 1 and 16384, not “%1”").arg(text)};
+    return {w, h};
+}
+
+bool parseOnOff(const char* option, const QString& text)
+{
+    if (text != QLatin1String("on") && text != QLatin1String("off"))
+        throw UsageError{Cli::tr("%1 takes on or off, not “%2”").arg(dashed(option), text)};
+    return text == QLatin1String("on");
+}
+
+Vector3 parsePoint(const char* option, const QString& text)
+{
+    return parseNumbers(option, text, 3);
+}
+
+Vector3 parseDirection(const char* option, const QString& text)
+{
+    const Eigen::Vector3d v = parsePoint(option, text);
+    if (!normalisable(v))
+        throw UsageError{Cli::tr("%1 needs a direction: not zero, and short enough that its length is a number, "
+                                 "not “%2”")
+                             .arg(dashed(option), text)};
+    return v;
+}
+
+Vector3f parseFloatDirection(const char* option, const QString& text)
+{
+    const Eigen::Vector3d v = parseDirection(option, text);
+    const Eigen::Vector3f f = v.cast<float>();
+    if (!finiteAsFloat(v.cwiseAbs().maxCoeff()) || !normalisable(f))
+        throw UsageError{Cli::tr("%1 needs a direction: not zero, and short enough that its length is a number, "
+                                 "not “%2”")
+                             .arg(dashed(option), text)};
+    return f;
+}
+
+Light parseLight(const char* option, const QString& text)
+{
+    const int colon = int(text.indexOf(QLatin1Char(':')));
+    const QString type = text.left(colon);
+    if (colon < 0 || (type != QLatin1String("point") && type != QLatin1String("directional")))
+        throw UsageError{Cli::tr("--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”").arg(text)};
+    model::Light light;
+    if (type == QLatin1String("point")) {
+        light.type = model::LightType::Point;
+        light.vector = parsePoint(option, text.mid(colon + 1));
+    } else {
+        light.type = model::LightType::Directional;
+        light.vector = parseDirection(option, text.mid(colon + 1)).normalized();
+    }
+    return light;
+}
+
+ShadingStyle parseStyle(const char* option, const QString& text)
+{
+    Q_UNUSED(option);
+    const std::pair<const char*, model::ShadingStyle> styles[]
+        = {{"toon", model::ShadingStyle::Toon}, {"gooch", model::ShadingStyle::Gooch},
+            {"comic", model::ShadingStyle::Comic}, {"lambert", model::ShadingStyle::Lambert}};
+    for (const auto& [name, style] : styles)
+        if (text == QLatin1String(name))
+            return style;
+    throw UsageError{Cli::tr("--style takes toon, gooch, comic or lambert, not “%1”").arg(text)};
+}
+
+Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector3d& view, double aspect)
+{
+    model::Camera camera;
+    const Eigen::Vector3d centre = algo::centroid(data.baseMesh->vertices);
+    // The sphere around the centroid holding every vertex fits the narrower field of view.
+    const double radius = std::max(
+        std::sqrt(
+            (data.baseMesh->vertices.cast<double>().rowwise() - centre.transpose()).rowwise().squaredNorm().maxCoeff()),
+        1e-6);
+    const double halfY = camera.fovYDegrees * M_PI / 360.0;
+    const double halfMin = std::min(halfY, std::atan(std::tan(halfY) * aspect));
+    const Eigen::Vector3d direction = view.normalized();
+    camera.target = centre;
+    camera.eye = centre + direction * (1.05 * radius / std::sin(halfMin));
+    camera.up = std::abs(direction.y()) > 0.99 ? Eigen::Vector3d(0, 0, -1) : Eigen::Vector3d(0, 1, 0);
+    return camera;
+}
+
+namespace camera_options {
+
+std::vector<OptionSpec> specs()
+{
+    return {{"view", "X,Y,Z",
+                QT_TRANSLATE_NOOP("celform::app::Cli", "View direction from the model's centroid towards the eye.")},
+        {"eye", "X,Y,Z", QT_TRANSLATE_NOOP("celform::app::Cli", "Camera position.")},
+        {"target", "X,Y,Z", QT_TRANSLATE_NOOP("celform::app::Cli", "Point the camera looks at.")},
+        {"up", "X,Y,Z", QT_TRANSLATE_NOOP("celform::app::Cli", "Camera up vector.")}};
+}
+
+bool byView(const Invocation& in)
+{
+    return in.isSet("view");
+}
+
+bool byCamera(const Invocation& in)
+{
+    return in.countSet({"eye", "target", "up"}) > 0;
+}
+
+void checkCombination(const Invocation& in, bool required)
+{
+    const int explicitCount = in.countSet({"eye", "target", "up"});
+    if (byView(in) && explicitCount > 0)
+        throw UsageError{Cli::tr("give either --view or --eye, --target and --up")};
+    if (explicitCount > 0 && explicitCount < 3)
+        throw UsageError{Cli::tr("--eye, --target and --up go together")};
+    if (required && !byView(in) && explicitCount == 0)
+        throw UsageError{Cli::tr("give either --view or all of --eye, --target and --up")};
+}
+
+Camera explicitCamera(const Invocation& in)
+{
+    model::Camera camera;
+    camera.eye = parsePoint("eye", in.value("eye"));
+    camera.target = parsePoint("target", in.value("target"));
+    camera.up = parseDirection("up", in.value("up"));
+    // isValid() also refuses an eye so far from the target that their distance overflows.
+    if (!camera.isValid())
+        throw UsageError{Cli::tr("--eye, --target and --up do not make a camera (eye equals target, or up is "
+                                 "parallel to the view)")};
+    return camera;
+}
+
+Vector3 view(const Invocation& in)
+{
+    return parseDirection("view", in.value("view"));
+}
+
+} // namespace camera_options
+
+} // namespace celform::app

@@ -1,0 +1,82 @@
+// Option values of the sub-commands: numbers, vectors, directions, frames, sizes, the light and
+// style, and the camera options. Each parser throws UsageError (exit 2) naming the option, so a
+// value the project file would refuse never reaches the document.
+#pragma once
+
+#include "cli/command.h"
+
+#include "celform/model/camera.h"
+#include "celform/model/project_data.h"
+
+#include <Eigen/Core>
+
+#include <QSize>
+#include <QString>
+
+#include <optional>
+
+namespace celform::app {
+
+/// The most frames one `render --frames` run writes.
+constexpr int kMaxFramesPerRun = 100'000;
+
+/// count comma-separated finite numbers ("X,Y,Z", "DX,DY", "X,Y,Z,R").
+Eigen::VectorXd parseNumbers(const char* option, const QString& text, int count);
+/// The same for values the document stores as floats (highlight parameters, brush amounts): each
+/// must also be finite as a float.
+Eigen::VectorXd parseFloats(const char* option, const QString& text, int count);
+double parseNumber(const char* option, const QString& text);
+/// A number the document stores as a float: finite as a float too.
+double parseFloat(const char* option, const QString& text);
+int parseInt(const char* option, const QString& text);
+/// A frame number within +-model::kMaxFrame.
+int parseFrame(const char* option, const QString& text);
+/// "A-B" (either may be negative), A <= B, both within +-model::kMaxFrame, at most
+/// kMaxFramesPerRun frames.
+std::pair<int, int> parseFrameRange(const char* option, const QString& text);
+/// "WxH", each between 1 and 16384.
+QSize parseSize(const char* option, const QString& text);
+bool parseOnOff(const char* option, const QString& text);
+
+/// A position: three finite numbers.
+Eigen::Vector3d parsePoint(const char* option, const QString& text);
+/// A direction: three finite numbers whose length is finite and not zero (so it normalises);
+/// returned as given, not normalised.
+Eigen::Vector3d parseDirection(const char* option, const QString& text);
+/// A direction stored as floats (a highlight's guide): a direction in float precision too.
+Eigen::Vector3f parseFloatDirection(const char* option, const QString& text);
+
+/// "point:X,Y,Z" or "directional:X,Y,Z" (normalised).
+model::Light parseLight(const char* option, const QString& text);
+/// toon, gooch, comic or lambert.
+model::ShadingStyle parseStyle(const char* option, const QString& text);
+
+/// An option's parsed value, or none when it is not given.
+template <typename Parse>
+auto optionalValue(const Invocation& in, const char* option, Parse parse) -> std::optional<decltype(parse(QString()))>
+{
+    std::optional<decltype(parse(QString()))> value;
+    if (in.isSet(option))
+        value.emplace(parse(in.value(option)));
+    return value;
+}
+
+/// A camera looking at the base centroid from a view direction, far enough back that the model
+/// fits an image of the given aspect ratio. Needs a base mesh.
+model::Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector3d& view, double aspect = 1.0);
+
+/// The camera options of `key add` and `render`: --view, or --eye, --target and --up together.
+namespace camera_options {
+/// Their entries for a sub-command's option list.
+std::vector<OptionSpec> specs();
+[[nodiscard]] bool byView(const Invocation& in);
+[[nodiscard]] bool byCamera(const Invocation& in);
+/// Usage errors for --view together with the others, or an incomplete --eye/--target/--up.
+void checkCombination(const Invocation& in, bool required);
+/// The camera of --eye, --target and --up; a usage error when they make none.
+[[nodiscard]] model::Camera explicitCamera(const Invocation& in);
+/// The --view direction.
+[[nodiscard]] Eigen::Vector3d view(const Invocation& in);
+} // namespace camera_options
+
+} // namespace celform::app

@@ -1,0 +1,130 @@
+// `celform new` and `celform info`: making a project from a mesh, and what a project holds.
+#include "cli/command.h"
+
+#include "celform/algorithms/tri_mesh.h"
+#include "celform/model/document.h"
+#include "celform/model/image_io.h"
+#include "celform/model/project_file.h"
+
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QTextStream>
+
+namespace celform::app {
+namespace {
+
+int runNew(const Invocation& in)
+{
+    if (!in.isSet("out"))
+        throw UsageError{Cli::tr("--out is required")};
+    const QString mesh = in.argument(0);
+    model::Document doc;
+    for (const QString& w : doc.newFromMesh(mesh))
+        printErr(Cli::tr("warning: %1: %2").arg(mesh, w));
+    for (const QString& image : in.values("drawing"))
+        doc.importDrawing(image);
+    doc.saveAs(in.value("out"));
+    return kExitOk;
+}
+
+int runInfo(const Invocation& in)
+{
+    const QString path = in.argument(0);
+    // Sizes from the images' headers: info decodes no pixels (nor loads OpenImageIO for them).
+    const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
+    std::vector<QSize> sizes;
+    for (const auto& d : data.drawings)
+        sizes.push_back(
+            model::decodedImageSize(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name)));
+
+    using model::vec3Json;
+    QJsonObject root{{"file", QFileInfo(path).absoluteFilePath()}, {"format_version", model::kProjectFormatVersion},
+        {"current_frame", data.currentFrame}};
+    if (data.baseMesh) {
+        const auto& mesh = *data.baseMesh;
+        const auto box = algo::boundingBox(mesh.vertices);
+        root.insert("base_mesh",
+            QJsonObject{{"name", data.baseMeshName}, {"vertex_count", double(mesh.vertexCount())},
+                {"triangle_count", double(mesh.faceCount())},
+                {"bounding_box", QJsonObject{{"min", vec3Json(box.min())}, {"max", vec3Json(box.max())}}},
+                {"centroid", vec3Json(algo::centroid(mesh.vertices))}, {"has_uvs", mesh.hasUvs()},
+                {"materials", double(mesh.materials.size())}, {"face_sets", double(data.faceSets.size())}});
+    } else {
+        root.insert("base_mesh", QJsonValue::Null);
+    }
+    QJsonArray drawings;
+    for (std::size_t i = 0; i < data.drawings.size(); ++i) {
+        const model::Drawing& d = data.drawings[i];
+        QJsonObject o{{"id", double(d.id)}, {"name", d.name}, {"format", d.imageFormat}, {"width", sizes[i].width()},
+            {"height", sizes[i].height()}, {"bytes", double(d.imageData.size())}, {"opacity", d.opacity},
+            {"frame", d.frame}, {"aligned", d.aligned}};
+        if (d.aligned)
+            o.insert("camera", model::cameraJson(d.camera));
+        drawings.append(o);
+    }
+    root.insert("drawings", drawings);
+    QJsonArray keys;
+    for (const auto& k : data.keys) {
+        QJsonArray frames, linked;
+        for (const auto& [frame, offsets] : k.offsetsByFrame)
+            frames.append(QJsonObject{{"frame", frame}, {"moved_vertices", double(offsets.indices.size())}});
+        for (auto id : k.drawingIds)
+            if (const auto* d = data.drawing(id))
+                linked.append(d->name);
+        keys.append(QJsonObject{{"id", double(k.id)}, {"name", k.name}, {"direction", vec3Json(k.direction)},
+            {"enabled", k.enabled}, {"camera", model::cameraJson(k.camera)}, {"drawings", linked}, {"frames", frames}});
+    }
+    root.insert("key_viewpoints", keys);
+    const char* unspecified[] = {"dummy", "cosine", "cosine2"};
+    root.insert("blend",
+        QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", unspecified[int(data.blend.unspecified)]},
+            {"time", data.blend.time == model::TimeInterpolation::PeriodicSpline ? "periodic" : "natural"}});
+    if (data.look.renderCamera)
+        root.insert("render_camera", model::cameraJson(*data.look.renderCamera));
+
+    if (in.isSet("json")) {
+        printJson(root);
+        return kExitOk;
+    }
+    QString text;
+    QTextStream s(&text);
+    s << Cli::tr("Project: %1 (format %2)").arg(path).arg(model::kProjectFormatVersion) << '\n';
+    if (data.baseMesh)
+        s << Cli::tr("Base model: %1, %2 vertices, %3 triangles")
+                 .arg(data.baseMeshName)
+                 .arg(qint64(data.baseMesh->vertexCount()))
+                 .arg(qint64(data.baseMesh->faceCount()))
+          << '\n';
+    else
+        s << Cli::tr("Base model: none") << '\n';
+    s << Cli::tr("Drawings: %1").arg(data.drawings.size()) << '\n';
+    for (std::size_t i = 0; i < data.drawings.size(); ++i)
+        s << "  " << data.drawings[i].name << " (" << sizes[i].width() << "x" << sizes[i].height() << ' '
+          << data.drawings[i].imageFormat << ")\n";
+    s << Cli::tr("Key viewpoints: %1").arg(data.keys.size()) << '\n';
+    for (const auto& k : data.keys)
+        s << "  " << k.name << " (" << k.direction.x() << ", " << k.direction.y() << ", " << k.direction.z() << ")\n";
+    s.flush();
+    printOut(text);
+    return kExitOk;
+}
+
+} // namespace
+
+std::vector<SubCommand> projectCommands()
+{
+    return {
+        {"new", {"celform new MESH --out P.celform [--drawing IMAGE]..."},
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Creates a project from a mesh file."),
+            {{"MESH", QT_TRANSLATE_NOOP("celform::app::Cli", "Mesh file (OBJ, PLY, STL, OFF, glTF, GLB).")}},
+            {{"out", "P.celform", QT_TRANSLATE_NOOP("celform::app::Cli", "Project file to write.")},
+                {"drawing", "IMAGE",
+                    QT_TRANSLATE_NOOP("celform::app::Cli", "Reference drawing to embed (repeatable).")}},
+            runNew},
+        {"info", {"celform info P.celform [--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Prints what a project holds."), {{"P", kProjectArgument}},
+            {{"json", nullptr, kJsonOption}}, runInfo},
+    };
+}
+
+} // namespace celform::app
