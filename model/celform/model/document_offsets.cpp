@@ -219,9 +219,9 @@ void Document::displaceKeyVertices(ObjectId id, int frame, const std::vector<std
         change.afterPresent.push_back(1);
     };
     const Eigen::Vector3f zero = Eigen::Vector3f::Zero();
-    auto moved = [&](std::size_t k, const Eigen::Vector3f* seen) {
-        const Eigen::Vector3f now = seen ? *seen : zero;
-        add(indices[k], isKeyed ? now : zero, isKeyed && seen, now + displacements.row(Eigen::Index(k)).transpose());
+    auto moved = [&](std::size_t k, const Eigen::Vector3f* shown) {
+        const Eigen::Vector3f now = shown ? *shown : zero;
+        add(indices[k], isKeyed ? now : zero, isKeyed && shown, now + displacements.row(Eigen::Index(k)).transpose());
     };
     algo::mergeAscending(
         current.indices, indices,
