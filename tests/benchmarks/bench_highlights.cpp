@@ -1,6 +1,6 @@
 // Stylized highlights (Anjyo & Hiramitsu 2003) on the armadillo (52k triangles) at 1280x720, toon
 // shading with lines (the default look):
-// - slider to frame: a highlight layer's epsilon changed through Document::setLook, as the
+// - slider to frame: a highlight layer's epsilon changed through Document::setHighlightKey, as the
 //   Highlights dock does, until the viewport has drawn the new frame; the baseline is the same
 //   viewport redrawn with nothing changed. Needs an X server: run under xvfb-run (Mesa llvmpipe
 //   there, so the figures are a software-GL floor).
@@ -148,9 +148,10 @@ Scene& scene()
 /// shaders and buffers for this configuration are in place before the timing.
 bool prepare(Scene& s, int layers)
 {
-    model::Look look = s.document.data().look;
-    look.highlights = highlightTracks(layers);
-    s.document.setLook(look);
+    while (!s.document.data().look.highlights.empty())
+        s.document.removeHighlightLayer(s.document.data().look.highlights.back().id);
+    if (layers > 0)
+        s.document.addHighlightLayers(highlightTracks(layers), QStringLiteral("Layers"));
     s.document.undoStack()->clear();
     for (int i = 0; i < 2; ++i) {
         const int before = s.viewport->renderCount();
@@ -168,20 +169,13 @@ void saveViewport(Scene& s, const QString& name)
         s.viewport->renderedImage().save(path);
 }
 
-/// The Highlights dock's edit path (HighlightPanel::edit): copy of the look, the change, no
-/// change no edit, tracks validated, one undo macro around Document::setLook.
+/// The Highlights dock's edit path: the layer at the frame, the change, Document::setHighlightKey.
 void dockEdit(model::Document& document, float epsilon)
 {
-    model::Look look = document.data().look;
-    look.highlights.front().keys.front().layer.shape.epsilon = epsilon;
-    if (look == document.data().look)
-        return;
-    if (!model::highlightTracksProblem(look.highlights, {}).isEmpty())
-        return;
-    QUndoStack* undo = document.undoStack();
-    undo->beginMacro(QStringLiteral("Highlight Epsilon"));
-    document.setLook(look);
-    undo->endMacro();
+    const model::HighlightTrack& track = document.data().look.highlights.front();
+    algo::HighlightLayer layer = track.layerAt(0);
+    layer.shape.epsilon = epsilon;
+    document.setHighlightKey(track.id, 0, layer);
 }
 
 void sliderFrames(benchmark::State& state, bool change)
@@ -223,7 +217,7 @@ void sliderFrames(benchmark::State& state, bool change)
     const double n = std::max(1.0, double(state.iterations()));
     state.counters["paint_ms"] = paintMs / n;
     if (change)
-        state.counters["setLook_ms"] = editMs / n;
+        state.counters["edit_ms"] = editMs / n;
     saveViewport(s, QStringLiteral("viewport_%1layers_%2.png").arg(layers).arg(change ? "slider" : "redraw"));
     s.document.undoStack()->clear();
 }

@@ -239,6 +239,53 @@ private slots:
         QVERIFY(m_doc.data().key(key)->direction.isApprox(Eigen::Vector3d(0, 0, 1)));
     }
 
+    void brushAtANewFrameStartsFromWhatIsShown()
+    {
+        // Only frame 0 keyed: frame 3 holds its offsets (paper 1, section 4.2, held outside the
+        // keyed range). A push of 0.05 over a held 0.05 stores 0.10, not 0.05.
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        algo::Positions move(1, 3);
+        move << 0.05f, 0, 0;
+        m_doc.displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"));
+        m_doc.displaceKeyVertices(key, 3, {4}, move, QStringLiteral("Brush"));
+        const KeyViewpoint& k = *m_doc.data().key(key);
+        QCOMPARE(k.offsetsByFrame.size(), std::size_t(2));
+        QVERIFY(k.offsetsByFrame.at(3).at(4).isApprox(Eigen::Vector3f(0.10f, 0, 0)));
+        // Undo takes the new keyed frame away entirely.
+        m_doc.undoStack()->undo();
+        QCOMPARE(m_doc.data().key(key)->offsetsByFrame.size(), std::size_t(1));
+    }
+
+    void brushBetweenKeyedFramesKeepsTheInterpolatedShape()
+    {
+        // Frames 0 and 10 keyed differently; a step at 5 on one vertex stores the interpolated
+        // offsets of every vertex there, so the shape at 5 changes only where the brush touched.
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        SparseOffsets at0, at10;
+        at0.indices = {1, 4};
+        at0.deltas = {Eigen::Vector3f(0.2f, 0, 0), Eigen::Vector3f(0, 0.1f, 0)};
+        at10.indices = {1, 2};
+        at10.deltas = {Eigen::Vector3f(-0.2f, 0, 0), Eigen::Vector3f(0, 0, 0.3f)};
+        m_doc.setKeyOffsets(key, 0, at0, QStringLiteral("0"));
+        m_doc.setKeyOffsets(key, 10, at10, QStringLiteral("10"));
+        const algo::Positions before = m_doc.data().keyShape(*m_doc.data().key(key), 5);
+        algo::Positions move(1, 3);
+        move << 0, 0.05f, 0;
+        m_doc.displaceKeyVertices(key, 5, {2}, move, QStringLiteral("Brush"));
+        const KeyViewpoint& k = *m_doc.data().key(key);
+        QCOMPARE(k.offsetsByFrame.size(), std::size_t(3));
+        const algo::Positions after = m_doc.data().keyShape(k, 5);
+        for (Eigen::Index v = 0; v < after.rows(); ++v) {
+            if (v == 2)
+                QVERIFY(after.row(v).isApprox(before.row(v) + Eigen::RowVector3f(0, 0.05f, 0)));
+            else
+                QVERIFY(after.row(v) == before.row(v));
+        }
+        // The other frames are untouched.
+        QVERIFY(k.offsetsByFrame.at(0) == at0);
+        QVERIFY(k.offsetsByFrame.at(10) == at10);
+    }
+
     void keysSurviveSaveAndOpen()
     {
         QTemporaryDir dir;

@@ -196,8 +196,8 @@ private slots:
                 if (!inside)
                     continue;
                 const QRgb a = viewport.pixel(x, y), b = atFive.pixel(x, y);
-                difference += std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b))
-                    + std::abs(qBlue(a) - qBlue(b));
+                difference
+                    += std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b)) + std::abs(qBlue(a) - qBlue(b));
                 ++count;
             }
         QVERIFY(count > 1000);
@@ -216,8 +216,7 @@ private slots:
         const KeyViewpoint before = *m_doc->data().key(m_key);
         const Positions shown = m_view->displayedShape();
         QVERIFY(shown == m_doc->data().keyShape(before, 5));
-        const ProjectData::FrameOffsets interpolated
-            = ProjectData::offsetsAt(before, 5, m_doc->data().blend.time);
+        const ProjectData::FrameOffsets interpolated = ProjectData::offsetsAt(before, 5, m_doc->data().blend.time);
         const int steps = m_doc->undoStack()->count();
         celform::test::drag(m_view.get(), Qt::LeftButton, Qt::NoModifier, QPoint(kSize / 2, kSize / 2),
             QPoint(kSize / 2 + 30, kSize / 2), 6);
@@ -257,8 +256,8 @@ private slots:
         frame();
         QSignalSpy changes(m_doc.get(), &Document::changed);
         const QPoint centre(kSize / 2, kSize / 2);
-        QMouseEvent press(QEvent::MouseButtonPress, centre, m_view->mapToGlobal(centre), Qt::LeftButton,
-            Qt::LeftButton, Qt::NoModifier);
+        QMouseEvent press(QEvent::MouseButtonPress, centre, m_view->mapToGlobal(centre), Qt::LeftButton, Qt::LeftButton,
+            Qt::NoModifier);
         QApplication::sendEvent(m_view.get(), &press);
         QCOMPARE(changes.count(), 0); // a press selects, it changes nothing
         for (int i = 1; i <= 3; ++i) {

@@ -623,14 +623,22 @@ void HighlightPanel::refresh()
         m_smoothing->setValue(t ? t->smoothing : 0);
     }
     {
+        // Rebuilt only when the face sets change: a key edit leaves the list as it is.
         const QSignalBlocker block(m_patch);
-        m_patch->clear();
-        m_patch->addItem(tr("All faces"), QString());
+        QStringList wanted{QString()};
         for (const QString& name : m_document->data().faceSetNames())
-            m_patch->addItem(name, name);
+            wanted << name;
         const QString patch = t ? t->patch : QString();
-        if (m_patch->findData(patch) < 0)
-            m_patch->addItem(patch, patch);
+        if (!wanted.contains(patch))
+            wanted << patch;
+        QStringList shown;
+        for (int i = 0; i < m_patch->count(); ++i)
+            shown << m_patch->itemData(i).toString();
+        if (shown != wanted) {
+            m_patch->clear();
+            for (const QString& name : wanted)
+                m_patch->addItem(name.isEmpty() ? tr("All faces") : name, name);
+        }
         m_patch->setCurrentIndex(m_patch->findData(patch));
     }
     m_operations->showLayer(t ? t->id : 0);

@@ -1,0 +1,151 @@
+// Every edit made in the editor is its own undo step with its own text (DESIGN.md, "The document":
+// a command merges only with the next one of the same property on the same target in the same
+// gesture). Driven through the real window under Xvfb, as an artist would: a style change, a lines
+// toggle, a light drag, "Set Render Camera", sharpness and the unspecified mode.
+#include "ui_test_support.h"
+#include "window_test_support.h"
+
+#include "main_window.h"
+
+#include "celform/model/document.h"
+#include "celform/views/look_panel.h"
+#include "celform/views/viewport.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QGroupBox>
+#include <QUndoStack>
+
+using namespace celform;
+
+class TestUndoSteps : public QObject {
+    Q_OBJECT
+
+    /// The texts of the undo stack's steps from index `from` on.
+    static QStringList stepTexts(const QUndoStack* stack, int from)
+    {
+        QStringList texts;
+        for (int i = from; i < stack->count(); ++i)
+            texts << stack->text(i);
+        return texts;
+    }
+
+    static void holdKey(QWidget* w, Qt::Key key, int repeats)
+    {
+        QKeyEvent press(QEvent::KeyPress, key, Qt::NoModifier);
+        QApplication::sendEvent(w, &press);
+        for (int i = 0; i < repeats; ++i) {
+            QKeyEvent repeat(QEvent::KeyPress, key, Qt::NoModifier, QString(), true);
+            QApplication::sendEvent(w, &repeat);
+        }
+        QKeyEvent release(QEvent::KeyRelease, key, Qt::NoModifier);
+        QApplication::sendEvent(w, &release);
+    }
+
+private slots:
+    void unrelatedEditsAreSeparateSteps()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window));
+        model::Document* doc = window.document();
+        views::Viewport* viewport = window.viewport();
+        QUndoStack* stack = doc->undoStack();
+        const int start = stack->count();
+        test::waitForRender(viewport);
+
+        // 1. The shading style, in the Look dock.
+        window.findChild<QDockWidget*>(QStringLiteral("lookDock"))->raise();
+        auto* look = window.findChild<views::LookPanel*>();
+        QVERIFY(look);
+        QComboBox* style = look->styleBox();
+        const int gooch = style->findText(QStringLiteral("Gooch warm/cool"));
+        QVERIFY(gooch >= 0);
+        style->setCurrentIndex(gooch);
+        emit style->activated(gooch);
+        QCOMPARE(doc->data().look.style, model::ShadingStyle::Gooch);
+
+        // 2. Lines off.
+        QGroupBox* lines = nullptr;
+        for (auto* box : look->findChildren<QGroupBox*>())
+            if (box->isCheckable())
+                lines = box;
+        QVERIFY(lines);
+        lines->setChecked(false);
+        QVERIFY(!doc->data().look.showLines);
+
+        // 3. A drag of the light gizmo (Ctrl+drag on its handle).
+        viewport->setLightGizmoVisible(true);
+        test::waitForRender(viewport);
+        const Eigen::Vector3d lightBefore = doc->data().look.light.vector;
+        const QPoint handle = viewport->projectToWidget(viewport->lightGizmoHandle()).toPoint();
+        QVERIFY(viewport->rect().contains(handle));
+        test::drag(viewport, Qt::LeftButton, Qt::ControlModifier, handle, handle + QPoint(-40, 25), 8);
+        QVERIFY((doc->data().look.light.vector - lightBefore).norm() > 0.05);
+
+        // 4. The render camera from the view.
+        QAction* setRenderCamera = window.findChild<QAction*>(QStringLiteral("actionSetRenderCamera"));
+        QVERIFY(setRenderCamera);
+        setRenderCamera->trigger();
+        QVERIFY(doc->data().look.renderCamera.has_value());
+
+        // 5. Sharpness held up with the keyboard, then the unspecified mode.
+        window.findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
+        QDoubleSpinBox* sharpness = nullptr;
+        for (auto* spin : window.findChildren<QDoubleSpinBox*>())
+            if (spin->toolTip().startsWith(QStringLiteral("Sharpness")))
+                sharpness = spin;
+        QVERIFY(sharpness);
+        holdKey(sharpness, Qt::Key_Up, 3);
+        QVERIFY(doc->data().blend.sharpness > 1.3);
+        QComboBox* unspecified = nullptr;
+        for (auto* combo : window.findChildren<QComboBox*>())
+            if (combo->findText(QStringLiteral("Cosine falloff")) >= 0)
+                unspecified = combo;
+        QVERIFY(unspecified);
+        unspecified->setCurrentIndex(unspecified->findText(QStringLiteral("Cosine falloff")));
+        QCOMPARE(doc->data().blend.unspecified, model::UnspecifiedMode::Cosine);
+
+        // Six edits, six steps, each named after what it did.
+        const QStringList texts = stepTexts(stack, start);
+        QCOMPARE(texts,
+            (QStringList{QStringLiteral("Change Shading Style"), QStringLiteral("Hide Lines"),
+                QStringLiteral("Move Light"), QStringLiteral("Set Render Camera"),
+                QStringLiteral("Change Blend Sharpness"), QStringLiteral("Change Unspecified Regions")}));
+
+        // Ctrl+Z takes back one edit at a time, from anywhere in the window.
+        auto undo = [&] {
+            window.findChild<QAction*>(QStringLiteral("actionUndo"))->trigger();
+            QApplication::processEvents();
+        };
+        undo();
+        QCOMPARE(doc->data().blend.unspecified, model::UnspecifiedMode::Dummy);
+        QVERIFY(doc->data().blend.sharpness > 1.3);
+        undo();
+        QCOMPARE(doc->data().blend.sharpness, 1.0); // the whole hold at once
+        undo();
+        QVERIFY(!doc->data().look.renderCamera.has_value());
+        QVERIFY((doc->data().look.light.vector - lightBefore).norm() > 0.05);
+        undo();
+        QVERIFY((doc->data().look.light.vector - lightBefore).norm() < 1e-12); // the whole drag at once
+        QVERIFY(!doc->data().look.showLines);
+        undo();
+        QVERIFY(doc->data().look.showLines);
+        QCOMPARE(doc->data().look.style, model::ShadingStyle::Gooch);
+        undo();
+        QCOMPARE(doc->data().look.style, model::ShadingStyle::Toon);
+        QCOMPARE(stack->index(), start);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(views::Viewport::defaultFormat());
+    QApplication app(argc, argv);
+    TestUndoSteps test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_undo_steps.moc"
