@@ -6,6 +6,7 @@
 
 #include "celform/model/brush_stroke.h"
 #include "celform/model/change_set.h"
+#include "celform/model/highlight_presets.h"
 #include "celform/model/project_data.h"
 #include "celform/model/view_blend.h"
 
@@ -155,6 +156,10 @@ public:
     std::vector<ObjectId> addHighlightLayers(std::vector<HighlightTrack> tracks, const QString& undoText);
     /// Adds one layer named name (made unique) with a plain key at frame. Returns its id.
     ObjectId addHighlightLayer(const QString& name, int frame);
+    /// Adds a preset's layers (highlight_presets.h) at frame, on the patch, guide and smoothing of
+    /// base (0: all faces) with names made unique; one undo step. Returns the ids, the visible
+    /// layer last.
+    std::vector<ObjectId> addHighlightPreset(HighlightPreset preset, ObjectId base, int frame);
     /// Removes a layer and its use in other layers' combinations (one undo step).
     void removeHighlightLayer(ObjectId id);
     /// Renames a layer, other layers' combinations following. Throws EditRefused for an empty or
@@ -165,6 +170,12 @@ public:
     void setHighlightKey(ObjectId id, double frame, const algo::HighlightLayer& layer);
     /// Replaces all keys at once (structure edits of the operations, which every key follows).
     void setHighlightKeys(ObjectId id, std::vector<algo::HighlightKey> keys, const QString& undoText);
+    /// Operations are the same list in every key (so that keys interpolate): these change the list
+    /// of every key at once. Add appends a neutral operation of the type; move shifts one by delta
+    /// places; remove drops one.
+    void addHighlightOperation(ObjectId id, algo::HighlightOperationType type);
+    void moveHighlightOperation(ObjectId id, int index, int delta);
+    void removeHighlightOperation(ObjectId id, int index);
     /// Removes the key at frame; a layer keeps at least one key (no change then).
     void removeHighlightKey(ObjectId id, double frame);
     /// Direct manipulation of a highlight at frame: Translation moves it by (a, b) along the

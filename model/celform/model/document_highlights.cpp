@@ -103,6 +103,64 @@ ObjectId Document::addHighlightLayer(const QString& name, int frame)
     return addHighlightLayers({std::move(track)}, tr("Add Highlight Layer")).front();
 }
 
+std::vector<ObjectId> Document::addHighlightPreset(HighlightPreset preset, ObjectId baseId, int frame)
+{
+    const HighlightTrack* base = m_data.highlight(baseId);
+    std::vector<HighlightTrack> layers = highlightPresetLayers(preset, base ? *base : HighlightTrack{}, frame);
+    // Unique names, the combinations following the renamed operands.
+    std::vector<QString> taken;
+    for (const auto& t : m_data.look.highlights)
+        taken.push_back(t.name);
+    for (HighlightTrack& layer : layers) {
+        QString name = layer.name;
+        for (int n = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++n)
+            name = QStringLiteral("%1 %2").arg(layer.name).arg(n);
+        taken.push_back(name);
+        for (HighlightTrack& other : layers)
+            for (auto& c : other.combineWith)
+                if (c.second == layer.name)
+                    c.second = name;
+        layer.name = name;
+    }
+    return addHighlightLayers(std::move(layers),
+        preset == HighlightPreset::Window ? tr("Add Window Highlight") : tr("Add Crescent Highlight"));
+}
+
+void Document::addHighlightOperation(ObjectId id, algo::HighlightOperationType type)
+{
+    std::vector<algo::HighlightKey> keys = highlightOrThrow(id).keys;
+    for (auto& k : keys)
+        k.layer.shape.operations.push_back(neutralHighlightOperation(type));
+    setHighlightKeys(id, std::move(keys), tr("Add Highlight Operation"));
+}
+
+void Document::moveHighlightOperation(ObjectId id, int index, int delta)
+{
+    std::vector<algo::HighlightKey> keys = highlightOrThrow(id).keys;
+    for (auto& k : keys) {
+        auto& ops = k.layer.shape.operations;
+        const int to = index + delta;
+        if (index < 0 || to < 0 || index >= int(ops.size()) || to >= int(ops.size()))
+            return;
+        const algo::HighlightOperation moved = ops[std::size_t(index)];
+        ops.erase(ops.begin() + index);
+        ops.insert(ops.begin() + to, moved);
+    }
+    setHighlightKeys(id, std::move(keys), tr("Move Highlight Operation"));
+}
+
+void Document::removeHighlightOperation(ObjectId id, int index)
+{
+    std::vector<algo::HighlightKey> keys = highlightOrThrow(id).keys;
+    for (auto& k : keys) {
+        auto& ops = k.layer.shape.operations;
+        if (index < 0 || index >= int(ops.size()))
+            return;
+        ops.erase(ops.begin() + index);
+    }
+    setHighlightKeys(id, std::move(keys), tr("Remove Highlight Operation"));
+}
+
 void Document::removeHighlightLayer(ObjectId id)
 {
     const HighlightTrack* track = m_data.highlight(id);
@@ -209,16 +267,11 @@ void Document::nudgeHighlight(ObjectId id, double frame, algo::HighlightOperatio
         return std::size_t(
             std::find_if(ops.begin(), ops.end(), [type](const auto& op) { return op.type == type; }) - ops.begin());
     };
-    auto neutral = [type] {
-        return type == T::Translation ? algo::HighlightOperation::translation(0.f, 0.f)
-            : type == T::Rotation     ? algo::HighlightOperation::rotation(0.f)
-                                      : algo::HighlightOperation::directionalScaling(0.f);
-    };
     HighlightTrack edited = track;
     for (auto& k : edited.keys) {
         auto& ops = k.layer.shape.operations;
         if (firstOf(ops) == ops.size())
-            ops.insert(type == T::DirectionalScaling ? ops.end() : ops.begin(), neutral());
+            ops.insert(type == T::DirectionalScaling ? ops.end() : ops.begin(), neutralHighlightOperation(type));
     }
     algo::HighlightLayer layer = edited.layerAt(frame);
     auto& ops = layer.shape.operations;

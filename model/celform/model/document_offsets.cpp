@@ -152,8 +152,7 @@ void Document::setKeyOffsets(ObjectId id, int frame, SparseOffsets offsets, cons
         change.afterPresent.push_back(becomes != nullptr);
     };
     algo::mergeAscending(
-        before.indices, offsets.indices,
-        [&](std::size_t i) { add(before.indices[i], &before.deltas[i], nullptr); },
+        before.indices, offsets.indices, [&](std::size_t i) { add(before.indices[i], &before.deltas[i], nullptr); },
         [&](std::size_t j) { add(offsets.indices[j], nullptr, &offsets.deltas[j]); },
         [&](std::size_t i, std::size_t j) { add(before.indices[i], &before.deltas[i], &offsets.deltas[j]); });
     push(new KeyOffsetsCommand(this, undoText, id, frame, std::move(change), 0));

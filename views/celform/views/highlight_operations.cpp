@@ -64,24 +64,6 @@ std::pair<ParameterSpec, ParameterSpec> operationSpecs(algo::HighlightOperationT
     return {};
 }
 
-algo::HighlightOperation defaultOperation(algo::HighlightOperationType type)
-{
-    using T = algo::HighlightOperationType;
-    switch (type) {
-    case T::Translation:
-        return algo::HighlightOperation::translation(0.f, 0.f);
-    case T::Rotation:
-        return algo::HighlightOperation::rotation(0.f);
-    case T::DirectionalScaling:
-        return algo::HighlightOperation::directionalScaling(0.f);
-    case T::Split:
-        return algo::HighlightOperation::split(0.f, 0.f);
-    case T::Squaring:
-        return algo::HighlightOperation::squaring(0.2f, 2.f);
-    }
-    return {};
-}
-
 QString operationTitle(algo::HighlightOperationType type)
 {
     using T = algo::HighlightOperationType;
@@ -117,27 +99,17 @@ HighlightOperationsBox::HighlightOperationsBox(model::Document* document, QWidge
     using T = algo::HighlightOperationType;
     for (T type : {T::Translation, T::Rotation, T::DirectionalScaling, T::Split, T::Squaring}) {
         QAction* a = menu->addAction(operationTitle(type));
-        connect(a, &QAction::triggered, this, [this, type] {
-            editStructure(Text::tr("Add Highlight Operation"),
-                [type](std::vector<algo::HighlightOperation>& ops) { ops.push_back(defaultOperation(type)); });
-        });
+        connect(a, &QAction::triggered, this,
+            [this, type] { run([&] { m_document->addHighlightOperation(m_layer, type); }); });
     }
     m_add->setMenu(menu);
     layout->addWidget(m_add, 0, Qt::AlignLeft);
 }
 
-void HighlightOperationsBox::editStructure(
-    const QString& undoText, const std::function<void(std::vector<algo::HighlightOperation>&)>& change)
+void HighlightOperationsBox::run(const std::function<void()>& operation)
 {
-    const model::HighlightTrack* track = m_document->data().highlight(m_layer);
-    if (!track)
-        return;
-    // Structure changes go to every key so that the keys keep interpolating.
-    std::vector<algo::HighlightKey> keys = track->keys;
-    for (auto& k : keys)
-        change(k.layer.shape.operations);
     try {
-        m_document->setHighlightKeys(m_layer, std::move(keys), undoText);
+        operation();
     } catch (const model::EditRefused&) {
         showLayer(m_layer); // never stored: the rows go back to the layer
     }
@@ -190,11 +162,7 @@ void HighlightOperationsBox::rebuildRows(const std::vector<algo::HighlightOperat
                     return;
                 auto& op = layer.shape.operations[std::size_t(i)];
                 (p == 0 ? op.a : op.b) = float(v);
-                try {
-                    m_document->setHighlightKey(m_layer, frame, layer);
-                } catch (const model::EditRefused&) {
-                    showLayer(m_layer);
-                }
+                run([&] { m_document->setHighlightKey(m_layer, frame, layer); });
             });
             spins[p] = spin;
         }
@@ -212,26 +180,12 @@ void HighlightOperationsBox::rebuildRows(const std::vector<algo::HighlightOperat
             return b;
         };
         connect(addButton(Qt::UpArrow, {}, Text::tr("Move the operation earlier"), i > 0), &QToolButton::clicked, this,
-            [this, i] {
-                editStructure(Text::tr("Move Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
-                    if (i > 0 && i < int(ops.size()))
-                        std::swap(ops[std::size_t(i - 1)], ops[std::size_t(i)]);
-                });
-            });
+            [this, i] { run([&] { m_document->moveHighlightOperation(m_layer, i, -1); }); });
         connect(addButton(Qt::DownArrow, {}, Text::tr("Move the operation later"), i + 1 < count),
-            &QToolButton::clicked, this, [this, i] {
-                editStructure(Text::tr("Move Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
-                    if (i + 1 < int(ops.size()))
-                        std::swap(ops[std::size_t(i)], ops[std::size_t(i + 1)]);
-                });
-            });
+            &QToolButton::clicked, this,
+            [this, i] { run([&] { m_document->moveHighlightOperation(m_layer, i, 1); }); });
         connect(addButton(Qt::NoArrow, Text::tr("✕"), Text::tr("Remove the operation from every key"), true),
-            &QToolButton::clicked, this, [this, i] {
-                editStructure(Text::tr("Remove Highlight Operation"), [i](std::vector<algo::HighlightOperation>& ops) {
-                    if (i < int(ops.size()))
-                        ops.erase(ops.begin() + i);
-                });
-            });
+            &QToolButton::clicked, this, [this, i] { run([&] { m_document->removeHighlightOperation(m_layer, i); }); });
         m_rows->addWidget(row);
         row->show(); // the layout would show it only once the event loop runs
         m_spins.emplace_back(spins[0], spins[1]);

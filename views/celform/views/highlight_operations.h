@@ -34,9 +34,8 @@ public:
 
 private:
     void rebuildRows(const std::vector<algo::HighlightOperationType>& types);
-    /// A structure change applied to every key of the layer.
-    void editStructure(
-        const QString& undoText, const std::function<void(std::vector<algo::HighlightOperation>&)>& change);
+    /// Runs a document operation; a refused edit puts the rows back.
+    void run(const std::function<void()>& operation);
 
     model::Document* m_document;
     model::ObjectId m_layer = 0;

@@ -109,10 +109,10 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     });
     // Presets: the paper's two worked examples as starting points (Figures 5 and 6).
     auto* presetMenu = new QMenu(m_addPreset);
-    presetMenu->addAction(tr("&Window"), this, [this] { addPreset(Preset::Window); })
+    presetMenu->addAction(tr("&Window"), this, [this] { addPreset(model::HighlightPreset::Window); })
         ->setToolTip(tr("Rotation, directional scaling and split on a nearly flat part: the car window of the "
                         "paper's Figure 5"));
-    presetMenu->addAction(tr("&Crescent"), this, [this] { addPreset(Preset::Crescent); })
+    presetMenu->addAction(tr("&Crescent"), this, [this] { addPreset(model::HighlightPreset::Crescent); })
         ->setToolTip(tr("A highlight minus a hidden, shifted copy of itself: the crescent of the paper's Figure 6"));
     presetMenu->setToolTipsVisible(true);
     m_addPreset->setMenu(presetMenu);
@@ -381,68 +381,13 @@ void HighlightPanel::editKey(const std::function<void(algo::HighlightLayer&)>& c
     run([&] { m_document->setHighlightKey(t->id, frame, layer); });
 }
 
-void HighlightPanel::addPreset(Preset preset)
+void HighlightPanel::addPreset(model::HighlightPreset preset)
 {
-    std::vector<QString> taken;
-    for (const auto& t : m_document->data().look.highlights)
-        taken.push_back(t.name);
-    auto unique = [&](const QString& base) {
-        QString name = base;
-        for (int n = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++n)
-            name = QStringLiteral("%1 %2").arg(base).arg(n);
-        taken.push_back(name);
-        return name;
-    };
-    // The new layers sit on the selected layer's patch, with its guide and smoothing. The values
-    // were tuned on the sample elephant seen from the front (resources/samples/
-    // elephant-highlights.celform): its ear is nearly flat like the paper's car window, where the
-    // plain highlight covers everything (Figure 5a); smoothed normals give clean outlines.
-    const model::HighlightTrack* selected = track();
-    model::HighlightTrack base;
-    base.smoothing = 8;
-    if (selected) {
-        base.patch = selected->patch;
-        base.guide = selected->guide;
-        if (selected->smoothing > 0)
-            base.smoothing = selected->smoothing;
-    }
-    const int frame = currentFrame();
-    using Op = algo::HighlightOperation;
-    std::vector<model::HighlightTrack> added;
-    QString undoText;
-    if (preset == Preset::Window) {
-        // Paper, Figure 5b: rotation, directional scaling and split turn the window-filling
-        // highlight into a long streak and a short one.
-        model::HighlightTrack window = base;
-        window.name = unique(tr("Window"));
-        algo::HighlightLayer layer;
-        layer.shape.epsilon = 0.03f;
-        layer.shape.operations = {Op::rotation(30.f), Op::directionalScaling(0.6f), Op::split(0.25f, 0.f)};
-        window.setKey(frame, layer);
-        added.push_back(std::move(window));
-        undoText = tr("Add Window Highlight");
-    } else {
-        // Paper, Figure 6: G minus H, H the same area moved along du and dv.
-        model::HighlightTrack cut = base;
-        cut.name = unique(tr("Crescent cut"));
-        cut.visible = false;
-        algo::HighlightLayer cutLayer;
-        cutLayer.shape.epsilon = 0.04f;
-        cutLayer.shape.operations = {Op::translation(0.1f, 0.1f)};
-        cut.setKey(frame, cutLayer);
-        model::HighlightTrack crescent = base;
-        crescent.name = unique(tr("Crescent"));
-        algo::HighlightLayer layer;
-        layer.shape.epsilon = 0.04f;
-        crescent.setKey(frame, layer);
-        crescent.combineWith.emplace_back(algo::HighlightBoolean::Subtraction, cut.name);
-        added.push_back(std::move(cut));
-        added.push_back(std::move(crescent));
-        undoText = tr("Add Crescent Highlight");
-    }
-    const int index = int(m_document->data().look.highlights.size() + added.size()) - 1;
-    run([&] { m_document->addHighlightLayers(std::move(added), undoText); });
-    selectLayer(index);
+    // The new layers sit on the selected layer's patch, with its guide and smoothing.
+    std::vector<model::ObjectId> added;
+    run([&] { added = m_document->addHighlightPreset(preset, selectedLayerId(), currentFrame()); });
+    if (!added.empty())
+        selectLayer(int(m_document->data().look.highlights.size()) - 1);
 }
 
 void HighlightPanel::newPatchForLayer()

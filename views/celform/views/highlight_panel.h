@@ -56,9 +56,8 @@ private:
     QDoubleSpinBox* makeSpin(double min, double max, double step, int decimals, const QString& tip);
     void refresh();
     void jumpToKey(int direction);
-    enum class Preset { Window, Crescent };
     /// Adds the layers of a preset after the others (one undo step) and selects the visible one.
-    void addPreset(Preset preset);
+    void addPreset(model::HighlightPreset preset);
     /// Makes an empty face set named after the selected layer and puts the layer on it (one undo step).
     void newPatchForLayer();
 

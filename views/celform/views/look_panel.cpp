@@ -456,7 +456,7 @@ void LookPanel::rebuildTones()
         h->addWidget(intensity);
         connect(intensity, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i](double v) {
             edit(&model::Look::toon, &model::Document::setToonRamp,
-                [i, v](algo::ToonRamp& toon) { toon.intensities[std::size_t(i)] = float(v); });
+                [i, v](algo::ToonRamp& ramp) { ramp.intensities[std::size_t(i)] = float(v); });
         });
         if (i > 0) {
             h->addWidget(new QLabel(tr("from N·L"), row));
@@ -466,7 +466,7 @@ void LookPanel::rebuildTones()
             h->addWidget(threshold);
             connect(threshold, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i](double v) {
                 edit(&model::Look::toon, &model::Document::setToonRamp,
-                    [i, v](algo::ToonRamp& toon) { toon.thresholds[std::size_t(i - 1)] = float(v); });
+                    [i, v](algo::ToonRamp& ramp) { ramp.thresholds[std::size_t(i - 1)] = float(v); });
             });
             m_thresholds.push_back(threshold);
         }

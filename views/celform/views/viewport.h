@@ -1,7 +1,8 @@
-// The 3D viewport: VTK 9.1 hosted in a Qt 6 QOpenGLWidget (STACK.md pitfall 5). This file is the
-// host: GL lifetime, events, navigation, and keeping the scene in step with the document at the
-// playhead. The VTK scene, the camera, the frame composition, the displayed shape and each editing
-// tool have files of their own (viewport_*.h, tools/).
+// The 3D viewport: VTK 9.1 hosted in a Qt 6 QOpenGLWidget (STACK.md pitfall 5). This class is the
+// host: GL lifetime and keeping the scene in step with the document at the playhead
+// (viewport.cpp), pointer and key events (viewport_events.cpp). The VTK scene, the camera, the
+// frame composition, the displayed shape and each editing tool have files of their own
+// (viewport_*.h, tools/).
 #pragma once
 
 #include "celform/algorithms/brush.h"
@@ -154,10 +155,6 @@ public:
     /// The highlight layer Tool::Highlight edits (0: none).
     void setHighlightTarget(model::ObjectId layer) { m_highlightTarget = layer; }
     [[nodiscard]] model::ObjectId highlightTarget() const { return m_highlightTarget; }
-    /// Faces a paint dab at a widget position would touch: the face under it and every face
-    /// turned towards the camera with a corner within the brush radius of the picked point.
-    /// Empty when nothing is picked.
-    [[nodiscard]] std::vector<std::int32_t> facesUnderBrush(const QPointF& position);
     /// The brush selection shown in red (brush tool), or none.
     void showBrushSelection(const algo::BrushSelection* selection, const algo::BrushSelection* mirror);
 
@@ -275,9 +272,6 @@ private:
     BrushMode m_brushMode = BrushMode::Move;
     bool m_brushMirror = false;
     QString m_patchTarget;
-    // Working memory of facesUnderBrush(), sized once per mesh.
-    std::vector<char> m_seen;
-    std::vector<std::int32_t> m_frontier, m_visited;
     model::ObjectId m_highlightTarget = 0;
     bool m_shadingEnabled = true;
     bool m_lightGizmoVisible = true;

@@ -5,6 +5,10 @@
 #include "celform/model/io_error.h"
 #include "celform/views/viewport.h"
 
+#include "celform/algorithms/tri_mesh.h"
+
+#include <algorithm>
+
 #include <QCoreApplication>
 
 namespace celform::views {
@@ -48,7 +52,7 @@ void PatchTool::paint(const ToolEvent& event)
         emit m_viewport->message(Patch::tr("Choose or create a patch in the Highlights dock first."));
         return;
     }
-    const std::vector<std::int32_t> dab = m_viewport->facesUnderBrush(event.position);
+    const std::vector<std::int32_t> dab = facesUnderBrush(event.position);
     if (dab.empty())
         return;
     try {
@@ -56,6 +60,61 @@ void PatchTool::paint(const ToolEvent& event)
     } catch (const model::EditRefused& e) {
         emit m_viewport->message(e.message());
     }
+}
+
+std::vector<std::int32_t> PatchTool::facesUnderBrush(const QPointF& position)
+{
+    const auto hit = m_viewport->pickSurface(position);
+    if (!hit)
+        return {};
+    const algo::TriMesh& mesh = *m_viewport->document()->data().baseMesh;
+    const algo::Positions& shape = m_viewport->displayedShape();
+    const algo::VertexFaces& around = mesh.vertexFaces();
+    // Only faces turned towards the camera, as the brush of a paint program works on what is
+    // seen: painting one side of a thin part (an ear) leaves the other side alone.
+    const model::Camera c = m_viewport->camera();
+    const Eigen::Vector3f eye = c.eye.cast<float>();
+    const Eigen::Vector3f forward = c.forward().cast<float>();
+    const bool parallel = c.projection == model::Projection::Orthographic;
+    auto facesCamera = [&](std::int32_t f) {
+        const Eigen::Vector3f a = shape.row(mesh.faces(f, 0)), b = shape.row(mesh.faces(f, 1)),
+                              d = shape.row(mesh.faces(f, 2));
+        const Eigen::Vector3f normal = (b - a).cross(d - a);
+        const Eigen::Vector3f towardsEye = parallel ? Eigen::Vector3f(-forward) : Eigen::Vector3f(eye - a);
+        return normal.dot(towardsEye) > 0.f;
+    };
+    std::vector<std::int32_t> faces{std::int32_t(hit->first)};
+    const Eigen::Vector3f centre = hit->second.cast<float>();
+    const float r2 = float(m_viewport->brushRadius() * m_viewport->brushRadius());
+    // Vertices within the radius: the picked face's corners grown over shared vertices, so the
+    // cost follows the dab, not the mesh, and paint does not jump gaps between parts.
+    if (m_seen.size() != std::size_t(mesh.vertexCount()))
+        m_seen.assign(std::size_t(mesh.vertexCount()), 0);
+    m_frontier.assign({mesh.faces(hit->first, 0), mesh.faces(hit->first, 1), mesh.faces(hit->first, 2)});
+    m_visited.clear();
+    while (!m_frontier.empty()) {
+        const std::int32_t v = m_frontier.back();
+        m_frontier.pop_back();
+        if (m_seen[std::size_t(v)])
+            continue;
+        m_seen[std::size_t(v)] = 1;
+        m_visited.push_back(v);
+        if ((shape.row(v).transpose() - centre).squaredNorm() > r2)
+            continue;
+        for (auto i = around.start[std::size_t(v)]; i < around.start[std::size_t(v) + 1]; ++i) {
+            const std::int32_t f = around.faces[std::size_t(i)];
+            if (facesCamera(f))
+                faces.push_back(f);
+            for (int k = 0; k < 3; ++k)
+                if (!m_seen[std::size_t(mesh.faces(f, k))])
+                    m_frontier.push_back(mesh.faces(f, k));
+        }
+    }
+    for (const std::int32_t v : m_visited)
+        m_seen[std::size_t(v)] = 0; // ready for the next dab without a pass over the mesh
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    return faces;
 }
 
 void PatchTool::finish()

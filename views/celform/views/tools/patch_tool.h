@@ -5,6 +5,9 @@
 
 #include "celform/views/tools/viewport_tool.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace celform::views {
 
 class PatchTool : public ViewportTool {
@@ -17,10 +20,18 @@ public:
     void release(const ToolEvent& event) override;
     void cancel() override;
 
+    /// Faces a paint dab at a widget position touches: the face under it and every face turned
+    /// towards the camera around a vertex within the brush radius of the picked point, reached
+    /// over the surface from it. Empty when nothing is picked.
+    [[nodiscard]] std::vector<std::int32_t> facesUnderBrush(const QPointF& position);
+
 private:
     void paint(const ToolEvent& event);
     void finish();
     int m_gesture = 0;
+    // Working memory of facesUnderBrush(), sized once per mesh.
+    std::vector<char> m_seen;
+    std::vector<std::int32_t> m_frontier, m_visited;
 };
 
 } // namespace celform::views

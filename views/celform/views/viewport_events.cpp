@@ -1,0 +1,195 @@
+// The viewport's pointer and key events: Maya-style navigation (Alt+left orbit, Alt+middle pan,
+// Alt+right dolly, middle-button equivalents for tablets, the wheel), the light gizmo's Ctrl+drag,
+// and every other left-button drag handed to the active tool.
+#include "celform/views/viewport.h"
+
+#include "celform/views/tools/viewport_tool.h"
+#include "celform/views/viewport_camera.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QWheelEvent>
+
+#include <cmath>
+
+namespace celform::views {
+namespace {
+
+constexpr double kOrbitDegreesPerPixel = 0.4;
+constexpr double kDollyPerPixel = 0.005; // exp(-kDollyPerPixel * pixels)
+constexpr double kDollyPerWheelNotch = 0.85; // factor per 120 units of wheel angle
+
+} // namespace
+
+void Viewport::mousePressEvent(QMouseEvent* event)
+{
+    if (m_drag != Drag::None) {
+        event->accept();
+        return;
+    }
+    const Qt::KeyboardModifiers mods = event->modifiers();
+    const Qt::MouseButton button = event->button();
+    const ToolEvent toolEvent{event->position(), {}, mods};
+    Drag drag = Drag::None;
+    ViewportTool* tool = nullptr;
+    if (button == Qt::LeftButton && !(mods & Qt::AltModifier) && m_lightTool->press(toolEvent)) {
+        // Ctrl+left on the light gizmo's handle grabs the light (elsewhere Ctrl+left is the tool's).
+        drag = Drag::Tool;
+        tool = m_lightTool.get();
+    } else if ((mods & Qt::AltModifier) && (mods & Qt::ShiftModifier) && button == Qt::LeftButton) {
+        drag = Drag::Roll; // for matching a drawing's tilt (paper 1, section 3.1.1)
+    } else if (mods & Qt::AltModifier) {
+        // Maya: Alt + left orbit, middle pan, right dolly.
+        if (button == Qt::LeftButton)
+            drag = Drag::Orbit;
+        else if (button == Qt::MiddleButton)
+            drag = Drag::Pan;
+        else if (button == Qt::RightButton)
+            drag = Drag::Dolly;
+    } else if (button == Qt::MiddleButton) {
+        // Middle button alone for tablets and laptops where Alt is taken by the window manager.
+        if (mods & Qt::ShiftModifier)
+            drag = Drag::Pan;
+        else if (mods & Qt::ControlModifier)
+            drag = Drag::Dolly;
+        else
+            drag = Drag::Orbit;
+    } else if (button == Qt::LeftButton && activeTool() && activeTool()->press(toolEvent)) {
+        drag = Drag::Tool;
+        tool = activeTool();
+    }
+    if (drag == Drag::None) {
+        QOpenGLWidget::mousePressEvent(event);
+        event->accept();
+        return;
+    }
+    m_drag = drag;
+    m_dragTool = tool;
+    m_dragButton = button;
+    m_lastPos = event->position();
+    switch (drag) {
+    case Drag::Orbit:
+        setCursor(Qt::ClosedHandCursor);
+        break;
+    case Drag::Pan:
+        setCursor(Qt::SizeAllCursor);
+        break;
+    case Drag::Dolly:
+        setCursor(Qt::SizeVerCursor);
+        break;
+    case Drag::Roll:
+        setCursor(Qt::SizeHorCursor);
+        break;
+    case Drag::Tool:
+        setCursor(tool->cursor());
+        break;
+    case Drag::None:
+        break;
+    }
+    event->accept();
+}
+
+void Viewport::endDrag(bool cancelled)
+{
+    if (m_drag == Drag::Tool && m_dragTool) {
+        ViewportTool* tool = m_dragTool;
+        m_dragTool = nullptr;
+        if (cancelled)
+            tool->cancel();
+        else
+            tool->release({m_lastPos, {}, Qt::NoModifier});
+    }
+    m_drag = Drag::None;
+    m_dragButton = Qt::NoButton;
+    setCursor(activeTool() ? activeTool()->cursor() : Qt::ArrowCursor);
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event)
+{
+    if (m_drag == Drag::None) {
+        QOpenGLWidget::mouseMoveEvent(event);
+        return;
+    }
+    if (!(event->buttons() & m_dragButton)) {
+        // The release went elsewhere (a popup, a window manager grab): end the drag here.
+        endDrag(true);
+        return;
+    }
+    const QPointF delta = event->position() - m_lastPos;
+    m_lastPos = event->position();
+    if (delta.isNull())
+        return;
+    switch (m_drag) {
+    case Drag::Orbit:
+        m_camera->orbit(delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
+        cameraEdited();
+        break;
+    case Drag::Pan:
+        m_camera->pan(delta);
+        cameraEdited();
+        break;
+    // Dragging right or up brings the camera closer.
+    case Drag::Dolly:
+        m_camera->dolly(std::exp(-kDollyPerPixel * (delta.x() - delta.y())));
+        cameraEdited();
+        break;
+    case Drag::Roll:
+        m_camera->roll(delta.x() * kOrbitDegreesPerPixel);
+        cameraEdited();
+        break;
+    case Drag::Tool:
+        if (m_dragTool)
+            m_dragTool->move({event->position(), delta, event->modifiers()});
+        break;
+    case Drag::None:
+        break;
+    }
+    event->accept();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (m_drag != Drag::None && event->button() == m_dragButton) {
+        m_lastPos = event->position();
+        endDrag(false);
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::mouseReleaseEvent(event);
+}
+
+void Viewport::wheelEvent(QWheelEvent* event)
+{
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches == 0.0) {
+        event->ignore();
+        return;
+    }
+    m_camera->dolly(std::pow(kDollyPerWheelNotch, notches));
+    cameraEdited();
+    event->accept();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_F && !(event->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
+        frameAll();
+        event->accept();
+        return;
+    }
+    if (event->key() == Qt::Key_Home) {
+        resetView();
+        event->accept();
+        return;
+    }
+    // Krita's and Photoshop's brush-size keys.
+    if (event->key() == Qt::Key_BracketLeft || event->key() == Qt::Key_BracketRight) {
+        setBrushRadius(m_brushRadius * (event->key() == Qt::Key_BracketRight ? 1.25 : 0.8));
+        emit message(tr("Brush radius %1").arg(m_brushRadius, 0, 'g', 3));
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+} // namespace celform::views
