@@ -10,7 +10,13 @@ uniform float cfThresholds[7];
 uniform float cfIntensities[8];
 // The comic paper's 32-entry table, filled from toonLookupTable().
 uniform float cfLut[32];
-// Gooch-like lighting (paper 1, section 3.2.4). GoochParams on the CPU.
+// Gooch-like lighting (paper 1, section 3.2.4). GoochParams on the CPU: one material's
+// coefficients (the "auto" preset gives each material its own, so the viewport passes the face's
+// material's set to cfGoochShadeWith); the uniforms are the look's single set for cfGoochShade.
+struct CfGoochParams {
+    float ka, k1, k2, k3, k4;
+    vec3 warm, cool;
+};
 uniform float cfKa, cfK1, cfK2, cfK3, cfK4;
 uniform vec3 cfWarm, cfCool;
 // Hatching. HatchParams on the CPU; the angle here is in radians (angleDegrees * 0.0174532925).
@@ -40,15 +46,21 @@ float cfLookupIntensity(float lambert)
 // goochShade (paper 1, section 3.2.4):
 //   C = ka*Cbase + (l1.n)(Cwarm - Cbase*k1)*k2 + (l2.n)(Ccool - Cbase*k3)*k4, l2 = -l1,
 // negative dot products clamped to 0, result clamped to [0, 1]. n and l1 are unit vectors.
-vec3 cfGoochShade(vec3 base, vec3 n, vec3 l1)
+vec3 cfGoochShadeWith(vec3 base, vec3 n, vec3 l1, CfGoochParams params)
 {
     float d1 = dot(n, l1);
     float w1 = max(0.0, d1);
     float w2 = max(0.0, -d1);
-    vec3 warmTerm = (cfWarm - base * cfK1) * cfK2;
-    vec3 coolTerm = (cfCool - base * cfK3) * cfK4;
-    vec3 c = cfKa * base + w1 * warmTerm + w2 * coolTerm;
+    vec3 warmTerm = (params.warm - base * params.k1) * params.k2;
+    vec3 coolTerm = (params.cool - base * params.k3) * params.k4;
+    vec3 c = params.ka * base + w1 * warmTerm + w2 * coolTerm;
     return min(max(c, 0.0), 1.0);
+}
+
+// goochShade with the uniforms' coefficients.
+vec3 cfGoochShade(vec3 base, vec3 n, vec3 l1)
+{
+    return cfGoochShadeWith(base, n, l1, CfGoochParams(cfKa, cfK1, cfK2, cfK3, cfK4, cfWarm, cfCool));
 }
 
 // pulseIntegral: ink of the pulse train "1 where fract(y) < width" from 0 to y.

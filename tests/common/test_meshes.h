@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace celform::test {
@@ -51,6 +52,37 @@ inline std::shared_ptr<algo::TriMesh> icosphere(int subdivisions)
     for (std::size_t i = 0; i < f.size(); ++i)
         mesh->faces.row(Eigen::Index(i)) << f[i][0], f[i][1], f[i][2];
     return mesh;
+}
+
+/// A copy of mesh with one material per colour, assigned face by face: the angle of the face's
+/// centre about the Z axis (turned by 0.3 radians so no boundary follows a symmetry plane) picks
+/// one of colors.size() equal sectors. The materials meet along zigzags of edges, where vertices
+/// are shared by faces of different materials and triangles have corners on both sides; seen
+/// from +Z, every material is in view.
+inline std::shared_ptr<algo::TriMesh> withSectorMaterials(
+    const algo::TriMesh& mesh, const std::vector<Eigen::Vector3f>& colors)
+{
+    auto out = std::make_shared<algo::TriMesh>(mesh);
+    out->materials.clear();
+    for (std::size_t m = 0; m < colors.size(); ++m) {
+        algo::Material material;
+        material.name = "sector" + std::to_string(m);
+        material.baseColor = colors[m];
+        out->materials.push_back(material);
+    }
+    const float pi = 3.14159265f;
+    const auto sectors = int(std::max<std::size_t>(colors.size(), 1));
+    out->faceMaterials.assign(std::size_t(mesh.faceCount()), 0);
+    for (Eigen::Index f = 0; f < mesh.faceCount(); ++f) {
+        const Eigen::Vector3f centre = (mesh.vertices.row(mesh.faces(f, 0)) + mesh.vertices.row(mesh.faces(f, 1))
+                                           + mesh.vertices.row(mesh.faces(f, 2)))
+            / 3.f;
+        float angle = std::atan2(centre.y(), centre.x()) + 0.3f;
+        angle = angle - 2.f * pi * std::floor(angle / (2.f * pi)); // [0, 2 pi)
+        const int sector = std::min(sectors - 1, int(angle / (2.f * pi) * float(sectors)));
+        out->faceMaterials[std::size_t(f)] = sector;
+    }
+    return out;
 }
 
 } // namespace celform::test

@@ -29,11 +29,16 @@ inline constexpr int kViewportHighlightCombinations = 2;
 /// array mapped as a custom attribute, not VTK's view-space normal); the light vector, the eye
 /// and the view axis are uniforms in model space (the actor has no transform).
 ///
+/// Per-face data (a float texture the fragment shader reads by gl_PrimitiveID, as render.cpp reads
+/// its G-buffer's face id): the face's material (colour, style and Gooch coefficients, which the
+/// "auto" preset sets per material), so nothing of a material is interpolated across faces, and
+/// for the PerFace toon evaluation the face's tone as render.cpp computes it (face normal, light
+/// at the face's centre, mean of the corners' offsets), from either side of the face.
+///
 /// Per-vertex attributes (point arrays added to the polydata): the shading offset O_v (paper 3,
 /// equation 4.3), the PerVertexLut intensity (lookupIntensity of N.L + O_v, computed here on the
-/// CPU exactly as render.cpp does), the base colour and the style of the vertex's material, and
-/// for up to 4 highlight layers (model::renderHighlightsFor at the frame) the vertex's du with the
-/// handedness of its frame (dv = w N x du), the layer's smoothed normal (zero: the surface's,
+/// CPU exactly as render.cpp does), and for up to 4 highlight layers (model::renderHighlightsFor at the frame) the
+/// vertex's du with the handedness of its frame (dv = w N x du), the layer's smoothed normal (zero: the surface's,
 /// which is then N) and whether the vertex lies in the layer's patch (a fragment is in the patch
 /// when all three corners are).
 /// Look uniforms are set from a cached copy each time VTK binds the program (UpdateShaderEvent),
