@@ -183,11 +183,17 @@ int runRender(const Invocation& in)
     algo::RenderCache cache;
     const bool sequence = lastFrame > firstFrame;
     const bool allPasses = suffix == QLatin1String("exr") && !in.isSet("pass") && stereo == algo::StereoOutput::Off;
+    // The shape keeps its generation while frames leave it still, so highlight geometry is reused.
+    algo::Shape shape;
+    algo::Positions next;
     for (int f = firstFrame; f <= lastFrame; ++f) {
-        algo::Positions shape;
-        blender.shape(data, direction, f, shape);
-        const algo::RenderPasses passes
-            = model::renderShape(data, look, shape, f, camera, imageSize.width(), imageSize.height(), stereo, cache);
+        blender.shape(data, direction, f, next);
+        if (shape.generation == 0 || next.rows() != shape.positions.rows() || next != shape.positions) {
+            shape.positions.swap(next);
+            shape.touch();
+        }
+        const algo::RenderPasses passes = model::renderShape(data, look, shape.positions, f, camera, imageSize.width(),
+            imageSize.height(), stereo, cache, shape.generation);
         const QString target = framePath(outPattern, f, sequence);
         if (allPasses)
             model::writePassesExr(passes, target);

@@ -245,8 +245,8 @@ private slots:
         // bisection on the meridian, seen orthographically as a disc of radius sin(angle).
         auto nDotH = [](double t) {
             const Eigen::Vector3d p(std::sin(t), 0, std::cos(t));
-            const Eigen::Vector3d h = (Eigen::Vector3d(0, 0, 1) + (Eigen::Vector3d(0, 0, 6) - p).normalized());
-            return p.dot(h.normalized());
+            const Eigen::Vector3d halfway = (Eigen::Vector3d(0, 0, 1) + (Eigen::Vector3d(0, 0, 6) - p).normalized());
+            return p.dot(halfway.normalized());
         };
         double lo = 0, hi = 1.5;
         for (int i = 0; i < 60; ++i)

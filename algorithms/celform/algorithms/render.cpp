@@ -128,18 +128,15 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     // (the centre eye for stereo pairs, paper 3, section 4.2.2), projected with this camera.
     out.lines.assign(pixelCount, 0.f);
     if (look.lines) {
-        if (cache.faces != &faces || cache.topology.edges.rows() == 0) {
-            cache.topology = buildEdgeTopology(faces, std::int32_t(shape.rows()));
-            cache.faces = &faces;
-        }
+        const EdgeTopology& topology = mesh.edgeTopology(); // built once per mesh, kept with it
         const RasterCamera& lv = lineView ? *lineView : camera;
         LineView view;
         view.eye = lv.eye.cast<float>();
         view.direction = lv.forward().cast<float>();
         view.orthographic = lv.orthographic;
         FeatureEdges features;
-        extractFeatureEdges(shape, faces, cache.topology, mesh.faceMaterials, view, look.lineSettings, features);
-        const std::vector<Stroke> strokes = chainStrokes(cache.topology, features);
+        extractFeatureEdges(shape, faces, topology, mesh.faceMaterials, view, look.lineSettings, features);
+        const std::vector<Stroke> strokes = chainStrokes(topology, features);
         const std::vector<StyledStroke> styled = styleStrokes(strokes, shape, look.lineStyle,
             [&](const Eigen::Vector3f& p) { return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>()); });
         drawStrokes(styled, g, out.lines);

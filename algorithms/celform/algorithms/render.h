@@ -68,13 +68,13 @@ struct RenderPasses {
 /// the shape, the patch, the guide and the smoothing but not on the layer's keyed parameters:
 /// kept across parameter edits and frames of a still shape (model::renderHighlightsFor).
 struct HighlightGeometry {
-    std::uint64_t key = 0; ///< hash of everything the geometry depends on
+    std::uint64_t key = 0; ///< hash of the shape's generation, the patch, the guide and the smoothing
     Positions normals, du, dv;
 };
 
+/// What renderFrame keeps between frames (the edge topology is the mesh's own, TriMesh::
+/// edgeTopology()).
 struct RenderCache {
-    const Faces* faces = nullptr;
-    EdgeTopology topology;
     std::vector<HighlightGeometry> highlights; ///< most recently used last, a few entries
 };
 

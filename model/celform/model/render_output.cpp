@@ -143,9 +143,11 @@ constexpr std::size_t kHighlightGeometryEntries = 8;
 
 } // namespace
 
-std::vector<algo::RenderHighlight> renderHighlightsFor(
-    const ProjectData& data, const Look& look, const algo::Positions& shape, int frame, algo::RenderCache* cache)
+std::vector<algo::RenderHighlight> renderHighlightsFor(const ProjectData& data, const Look& look,
+    const algo::Positions& shape, int frame, algo::RenderCache* cache, std::uint64_t shapeGeneration)
 {
+    if (shapeGeneration == 0)
+        cache = nullptr; // positions of unknown origin: nothing to recognise them by
     std::vector<algo::RenderHighlight> out;
     if (look.highlights.empty() || !data.baseMesh)
         return out;
@@ -159,7 +161,8 @@ std::vector<algo::RenderHighlight> renderHighlightsFor(
         deformed.vertices = shape;
         haveUvFrames = algo::vertexTangentFramesFromUvs(deformed, normals, uvDu, uvDv);
     }
-    std::uint64_t shapeKey = 0; // hashed on first use
+    // The shape is known by its generation (never reused in a process): no pass over its positions.
+    const std::uint64_t shapeKey = hashBytes(&shapeGeneration, sizeof(shapeGeneration));
     auto shapeOf = [&](const QString& name) -> std::optional<algo::HighlightShape> {
         for (const HighlightTrack& t : look.highlights)
             if (t.name == name)
@@ -189,9 +192,6 @@ std::vector<algo::RenderHighlight> renderHighlightsFor(
         // The geometry depends on the shape, the faces, the patch, the guide and the smoothing.
         std::uint64_t key = 0;
         if (cache) {
-            if (shapeKey == 0)
-                shapeKey = hashBytes(shape.data(), sizeof(float) * std::size_t(shape.size()),
-                    hashBytes(mesh.faces.data(), sizeof(std::int32_t) * std::size_t(mesh.faces.size())));
             key = hashBytes(patchFaces.data(), sizeof(std::int32_t) * patchFaces.size(), shapeKey);
             key = hashBytes(track.guide.data(), sizeof(float) * 3, key);
             key = hashBytes(&track.smoothing, sizeof(track.smoothing), key);
@@ -258,17 +258,17 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 }
 
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
-    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache)
+    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
+    std::uint64_t shapeGeneration)
 {
     algo::RenderLook renderLook = renderLookFor(data, look);
-    renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache);
+    renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::RenderPasses passes;
     algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);
     if (stereo == algo::StereoOutput::Off)
         return passes;
-    const auto [left, right]
-        = algo::stereoPair(centre, resolvedStereo(look.stereo, camera, algo::centroid(data.baseMesh->vertices)));
+    const auto [left, right] = algo::stereoPair(centre, resolvedStereo(look.stereo, camera, data.baseMesh->centre()));
     algo::RenderPasses l, r;
     algo::renderFrame(shape, *data.baseMesh, left, renderLook, cache, l, &centre);
     algo::renderFrame(shape, *data.baseMesh, right, renderLook, cache, r, &centre);

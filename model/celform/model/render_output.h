@@ -20,10 +20,11 @@ algo::RenderLook renderLookFor(const ProjectData& data, const Look& look);
 /// masks (all faces for an empty patch), each track's smoothed normals over its patch when it asks
 /// for smoothing, and per-vertex tangent frames of the shape (#V by 3) from the base model's UVs
 /// when it has them, else from each track's guide over its patch (against the smoothed normals
-/// where there are some). With a cache, the per-vertex geometry of a track whose shape, patch,
-/// guide and smoothing are unchanged is reused (parameter edits, scrubbing a still shape).
+/// where there are some). With a cache and the shape's generation (algo::Shape; 0: unknown, nothing
+/// cached), the per-vertex geometry of a track whose shape, patch, guide and smoothing are
+/// unchanged is reused (parameter edits, scrubbing a still shape) without looking at the positions.
 std::vector<algo::RenderHighlight> renderHighlightsFor(const ProjectData& data, const Look& look,
-    const algo::Positions& shape, int frame, algo::RenderCache* cache = nullptr);
+    const algo::Positions& shape, int frame, algo::RenderCache* cache = nullptr, std::uint64_t shapeGeneration = 0);
 
 /// The raster camera of a document camera for an image size.
 algo::RasterCamera rasterCamera(const Camera& camera, int width, int height);
@@ -34,9 +35,10 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 
 /// Renders a frame of the shape, mono or as a stereo composition (lines from the centre eye,
 /// paper 3, section 4.2.2). For stereo only the beauty pass is composed; the other passes are
-/// the centre eye's. frame selects the highlight keys.
+/// the centre eye's. frame selects the highlight keys; shapeGeneration as in renderHighlightsFor.
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
-    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache);
+    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
+    std::uint64_t shapeGeneration = 0);
 
 /// The pass names of `celform render --pass`.
 QStringList renderPassNames();

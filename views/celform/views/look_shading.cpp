@@ -744,7 +744,8 @@ void LookShading::setActive(bool active)
     m->installShaders(m->uniforms.hlLayerCount, m->uniforms.faceTable);
 }
 
-void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame)
+void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame,
+    std::uint64_t shapeGeneration)
 {
     // The renderer's own resolution of the look (styles, colours and Gooch presets per material),
     // so the two paths cannot disagree on what the document means.
@@ -862,7 +863,7 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
             lut[v] = algo::lookupIntensity(u.lut, n.dot(lightDirection(light, look.pointLight, p)) + offset[v]);
         }
     }
-    updateHighlights(data, shape, normals, frame, count);
+    updateHighlights(data, shape, normals, frame, count, shapeGeneration);
     for (vtkFloatArray* a : {m->offsets.Get(), m->lut.Get()})
         a->Modified();
     m->attachArrays();
@@ -873,13 +874,13 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
     m->mesh->Modified();
 }
 
-void LookShading::updateHighlights(
-    const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame, Eigen::Index count)
+void LookShading::updateHighlights(const model::ProjectData& data, const algo::Positions& shape, const float* normals,
+    int frame, Eigen::Index count, std::uint64_t shapeGeneration)
 {
     // The offline renderer's resolution of the tracks at the frame (keys, combinations, patches,
     // per-vertex frames), so both paths draw the same layers.
     const std::vector<algo::RenderHighlight> layers
-        = model::renderHighlightsFor(data, data.look, shape, frame, &m->highlightCache);
+        = model::renderHighlightsFor(data, data.look, shape, frame, &m->highlightCache, shapeGeneration);
     Uniforms& u = m->uniforms;
     u.hlLayerCount = int(std::min<std::size_t>(layers.size(), kMaxHighlightLayers));
     u.hlColor.fill(0.f);

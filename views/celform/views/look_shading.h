@@ -53,7 +53,9 @@ public:
     /// Refreshes the per-vertex arrays and the uniforms for the document and the displayed shape
     /// (#V by 3, with its vertex normals, row-major #V by 3 floats).
     /// frame selects the highlight tracks' keys (model::renderHighlightsFor at that frame).
-    void update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame = 0);
+    /// shapeGeneration (algo::Shape) lets the highlight geometry be reused while the shape is still.
+    void update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame = 0,
+        std::uint64_t shapeGeneration = 0);
     /// On: the look's shader; off: VTK's own lighting (the viewport's clay look) as configured
     /// before. Rebuilds the shaders only when the state changes.
     void setActive(bool active);
@@ -63,7 +65,7 @@ private:
     /// Highlight uniforms and per-vertex frames, normals and patch masks, as renderFrame resolves
     /// them.
     void updateHighlights(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame,
-        Eigen::Index count);
+        Eigen::Index count, std::uint64_t shapeGeneration);
 
     struct Impl;
     std::unique_ptr<Impl> m;

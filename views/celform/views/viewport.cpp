@@ -191,7 +191,8 @@ void Viewport::syncScene()
     }
     // The look's per-vertex data only when the look is drawn (the brush's clay look skips it).
     if (m_lookStale && m_shadingEnabled && !m_scene->selectionShown()) {
-        m_scene->look().update(data, shape.positions, m_shape->normals().data(), m_document->currentFrame());
+        m_scene->look().update(
+            data, shape.positions, m_shape->normals().data(), m_document->currentFrame(), shape.generation);
         m_lookStale = false;
     }
     if (m_patchStale) {
