@@ -128,9 +128,14 @@ private slots:
         QCOMPARE(panel->selectedLayer(), 2);
         panel->selectLayer(1);
         panel->setCurrentFrame(0);
+        // The rows of the previously selected layer are deleted later: let them go before looking.
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
         auto* cutAlpha = panel->findChild<QDoubleSpinBox*>(QStringLiteral("highlightOperation0a"));
         QVERIFY(cutAlpha);
         cutAlpha->setValue(0.05); // keys the cut at 0 (the preset's key is at frame 30)
+        QCOMPARE(tracks[1].keys.front().frame, 0.0);
+        QCOMPARE(tracks[1].keys.front().layer.shape.operations[0].a, 0.05f);
+        QCOMPARE(doc->undoStack()->text(doc->undoStack()->index() - 1), QStringLiteral("Change Highlight Operation"));
         panel->setCurrentFrame(30);
         cutAlpha->setValue(-0.05);
         QCOMPARE(doc->data().look.highlights[1].keys.size(), std::size_t(2));

@@ -318,10 +318,16 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         refreshTools();
     });
     connect(m_document, &model::Document::changed, this, &PropertiesPanel::documentChanged);
-    // Moved-vertex counts follow a brush stroke at most five times a second, not at every step.
+    // Moved-vertex counts follow a brush stroke at once, then at most five times a second rather
+    // than at every step (the last step's counts come when the stroke pauses or ends).
     m_summaryRefresh.setSingleShot(true);
     m_summaryRefresh.setInterval(200);
-    connect(&m_summaryRefresh, &QTimer::timeout, this, &PropertiesPanel::refresh);
+    connect(&m_summaryRefresh, &QTimer::timeout, this, [this] {
+        if (m_summaryPending) {
+            m_summaryPending = false;
+            refresh();
+        }
+    });
     GestureTracker::track(m_opacity, m_document);
     refresh();
     refreshBlend();
@@ -342,10 +348,13 @@ void PropertiesPanel::documentChanged(const model::ChangeSet& change)
     if (change.reset || change.has(Part::Mesh)) {
         refresh();
     } else if ((change.has(Part::Drawings) || change.has(Part::Keys)) && selectionTouched) {
-        if (change.offsetsOnly && !change.structure)
-            m_summaryRefresh.start();
-        else
+        if (change.offsetsOnly && !change.structure && m_summaryRefresh.isActive()) {
+            m_summaryPending = true;
+        } else {
             refresh();
+            if (change.offsetsOnly)
+                m_summaryRefresh.start();
+        }
     }
 }
 

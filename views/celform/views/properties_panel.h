@@ -96,7 +96,8 @@ private:
     QComboBox* m_unspecified;
     QComboBox* m_time;
     QPushButton* m_preview;
-    QTimer m_summaryRefresh;
+    QTimer m_summaryRefresh; ///< throttles refreshes during a brush stroke
+    bool m_summaryPending = false;
 };
 
 } // namespace celform::views
