@@ -2,41 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
 <context>
-    <name>Cli</name>
-    <message>
-        <source>has no key named “%1”</source>
-        <translation>「%1」という名前のキーがありません</translation>
-    </message>
-    <message>
-        <source>--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”</source>
-        <translation>--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
-    </message>
-    <message>
-        <source>a directional light needs a non-zero direction</source>
-        <translation>平行光源にはゼロ以外の方向ベクトルが必要です</translation>
-    </message>
-    <message>
-        <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
-        <translation>--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
-    </message>
-    <message>
-        <source>--op takes translate:A,B, rotate:DEG, scale:DELTA, split:G1,G2 or square:SIGMA,N, not “%1”</source>
-        <translation>--op には translate:A,B、rotate:DEG、scale:DELTA、split:G1,G2、square:SIGMA,N のいずれかを指定してください（「%1」は無効です）</translation>
-    </message>
-    <message>
-        <source>--op “%1”: %2</source>
-        <translation>--op「%1」: %2</translation>
-    </message>
-    <message>
-        <source>--eye, --target and --up do not make a camera (eye equals target, or up is parallel to the view)</source>
-        <translation>--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
-    </message>
-    <message>
-        <source>--view must not be zero</source>
-        <translation>--view にゼロベクトルは指定できません</translation>
-    </message>
-</context>
-<context>
     <name>ProjectFile</name>
     <message>
         <source>the entry “%1” is not a 3 by 3 matrix</source>
@@ -53,10 +18,6 @@
 <context>
     <name>celform::app::Cli</name>
     <message>
-        <source>usage: %1</source>
-        <translation>使い方: %1</translation>
-    </message>
-    <message>
         <source>Creates a project from a mesh file.</source>
         <translation>メッシュファイルからプロジェクトを作成します。</translation>
     </message>
@@ -71,12 +32,6 @@
     <message>
         <source>Reference drawing to embed (repeatable).</source>
         <translation>埋め込む参照画（複数指定可）。</translation>
-    </message>
-    <message>
-        <source>--out is required
-usage: %1</source>
-        <translation>--out の指定が必要です
-使い方: %1</translation>
     </message>
     <message>
         <source>warning: %1: %2</source>
@@ -175,30 +130,8 @@ usage: %1</source>
         <translation>新しいキーを JSON 形式で出力します。</translation>
     </message>
     <message>
-        <source>unknown key action “%1”
-usage: %2</source>
-        <translation>不明な key の操作「%1」です
-使い方: %2</translation>
-    </message>
-    <message>
-        <source>--name and exactly one of --mesh or --from-base are required
-usage: %1</source>
-        <translation>--name と、--mesh または --from-base のどちらか一方の指定が必要です
-使い方: %1</translation>
-    </message>
-    <message>
-        <source>give either --view or all of --eye, --target and --up
-usage: %1</source>
-        <translation>--view を指定するか、--eye、--target、--up をすべて指定してください
-使い方: %1</translation>
-    </message>
-    <message>
         <source>has no base model</source>
         <translation>ベースモデルがありません</translation>
-    </message>
-    <message>
-        <source>has %1 vertices, but the base model has %2: a key deformation needs the base model&apos;s vertex count and order</source>
-        <translation>頂点数が %1 ですが、ベースモデルの頂点数は %2 です。キー変形にはベースモデルと同じ頂点数と頂点順序が必要です</translation>
     </message>
     <message>
         <source>Deforms a key with the falloff brush, seen from the key&apos;s camera.</source>
@@ -229,22 +162,12 @@ usage: %1</source>
         <translation>移動した内容を JSON 形式で出力します。</translation>
     </message>
     <message>
-        <source>--key, --vertex, --radius and exactly one of --drag or --push are required
-usage: %1</source>
-        <translation>--key、--vertex、--radius と、--drag または --push のどちらか一方の指定が必要です
-使い方: %1</translation>
-    </message>
-    <message>
         <source>--radius must be positive</source>
         <translation>--radius には正の値を指定してください</translation>
     </message>
     <message>
         <source>has no vertex %1 (the base model has %2 vertices)</source>
         <translation>頂点 %1 がありません（ベースモデルの頂点数は %2 です）</translation>
-    </message>
-    <message>
-        <source>Brush “%1”</source>
-        <translation>ブラシ「%1」</translation>
     </message>
     <message>
         <source>Evaluates the view-dependent shape for a view direction.</source>
@@ -261,12 +184,6 @@ usage: %1</source>
     <message>
         <source>Print the keys and weights as JSON.</source>
         <translation>キーとウェイトを JSON 形式で出力します。</translation>
-    </message>
-    <message>
-        <source>--view is required
-usage: %1</source>
-        <translation>--view の指定が必要です
-使い方: %1</translation>
     </message>
     <message>
         <source>Changes project settings.</source>
@@ -287,12 +204,6 @@ usage: %1</source>
     <message>
         <source>Shading style.</source>
         <translation>シェーディングスタイル。</translation>
-    </message>
-    <message>
-        <source>nothing to set
-usage: %1</source>
-        <translation>設定する項目が指定されていません
-使い方: %1</translation>
     </message>
     <message>
         <source>--sharpness must be positive</source>
@@ -359,28 +270,12 @@ usage: %1</source>
         <translation>出力画像（既定値: プロジェクト名に .png を付けたもの）。</translation>
     </message>
     <message>
-        <source>give either --view or --eye, --target and --up
-usage: %1</source>
-        <translation>--view か、--eye・--target・--up の組み合わせのどちらか一方だけを指定してください
-使い方: %1</translation>
-    </message>
-    <message>
-        <source>--eye, --target and --up go together
-usage: %1</source>
-        <translation>--eye、--target、--up は 3 つともまとめて指定してください
-使い方: %1</translation>
-    </message>
-    <message>
         <source>give either --frame or --frames</source>
         <translation>--frame と --frames はどちらか一方だけを指定してください</translation>
     </message>
     <message>
         <source>--frames takes A-B with A &lt;= B, not “%1”</source>
         <translation>--frames には A &lt;= B となる A-B を指定してください（「%1」は無効です）</translation>
-    </message>
-    <message>
-        <source>--lines takes on or off, not “%1”</source>
-        <translation>--lines には on または off を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”</source>
@@ -469,20 +364,12 @@ usage: %1</source>
         <translation>--cut には [-1, 1] の範囲の値を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
-        <source>--guide must not be zero</source>
-        <translation>--guide にゼロベクトルは指定できません</translation>
-    </message>
-    <message>
         <source>--color components must lie in [0, 1], not “%1”</source>
         <translation>--color の各成分には [0, 1] の範囲の値を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--combine needs another layer than “%1” itself</source>
         <translation>--combine には「%1」自身以外のレイヤーを指定してください</translation>
-    </message>
-    <message>
-        <source>--visible takes on or off, not “%1”</source>
-        <translation>--visible には on または off を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>already has a highlight layer named “%1”; give --frame F to set a keyframe of it</source>
@@ -553,12 +440,6 @@ usage: %1</source>
         <translation>マテリアルの面を選びます（繰り返し可）。</translation>
     </message>
     <message>
-        <source>give one of --list, --add NAME or --subtract NAME with a selection, or --remove NAME
-usage: %1</source>
-        <translation>--list、選択付きの --add NAME か --subtract NAME、または --remove NAME のいずれかを指定してください
-使い方: %1</translation>
-    </message>
-    <message>
         <source>--sphere needs a positive radius, not “%1”</source>
         <translation>--sphere には正の半径が必要です（「%1」ではなく）</translation>
     </message>
@@ -581,10 +462,6 @@ usage: %1</source>
         <translation>パッチには名前が必要です</translation>
     </message>
     <message>
-        <source>Edit Patch “%1”</source>
-        <translation>パッチ「%1」を編集</translation>
-    </message>
-    <message>
         <source>Remove a layer and its use in other layers&apos; combinations.</source>
         <translation>レイヤーと、他のレイヤーの組み合わせでのその使用を削除します。</translation>
     </message>
@@ -597,22 +474,12 @@ usage: %1</source>
         <translation>--rename の新しい名前。</translation>
     </message>
     <message>
-        <source>give one of --list, --add NAME with its options, --remove NAME or --rename NAME --to NEW
-usage: %1</source>
-        <translation>--list、オプション付きの --add NAME、--remove NAME、--rename NAME --to NEW のいずれかを指定してください
-使い方: %1</translation>
-    </message>
-    <message>
         <source>--to needs a new name no other layer has, not “%1”</source>
         <translation>--to には他のレイヤーにない新しい名前が必要です（「%1」ではなく）</translation>
     </message>
     <message>
         <source>The render camera: looking at the model&apos;s centroid from this direction, framed; none removes it.</source>
         <translation>レンダーカメラ: この方向からモデルの重心を見て、全体が収まる位置に置きます。none で削除します。</translation>
-    </message>
-    <message>
-        <source>--render-view must not be zero</source>
-        <translation>--render-view にゼロは指定できません</translation>
     </message>
     <message>
         <source>has no base model to frame a render camera on</source>
@@ -625,6 +492,162 @@ usage: %1</source>
     <message>
         <source>--time takes natural or periodic, not “%1”</source>
         <translation>--time には natural か periodic を指定してください（「%1」ではなく）</translation>
+    </message>
+    <message>
+        <source>Show this help.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arguments:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Options:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Without a sub-command celform opens the editor (it needs a display). The sub-commands run without one:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>celform SUB-COMMAND --help describes each option.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 2 usage error, 3 bad input.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing arguments</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unexpected argument “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>celform: unknown sub-command “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(celform %1 --help describes each option)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--op takes translate:A,B, rotate:DEG, scale:DELTA, split:G1,G2 or square:SIGMA,N, not “%1”</source>
+        <translation type="unfinished">--op には translate:A,B、rotate:DEG、scale:DELTA、split:G1,G2、square:SIGMA,N のいずれかを指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>--op “%1”: %2</source>
+        <translation type="unfinished">--op「%1」: %2</translation>
+    </message>
+    <message>
+        <source>give one of --list, --add NAME with its options, --remove NAME or --rename NAME --to NEW</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give one of --list, --add NAME or --subtract NAME with a selection, or --remove NAME</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown key action “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--name and exactly one of --mesh or --from-base are required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--key, --vertex, --radius and exactly one of --drag or --push are required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has no key named “%1”</source>
+        <translation type="unfinished">「%1」という名前のキーがありません</translation>
+    </message>
+    <message>
+        <source>--view is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(celform --help lists the sub-commands)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown sub-command “%1”; the sub-commands are %2 (celform --help)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the file does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the editor needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is set (run it under xvfb-run, or set QT_QPA_PLATFORM); the sub-commands need none (celform --help)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>celform: the editor module %1 is missing (looked in %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>celform: %1: the editor module cannot be loaded: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nothing to set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: “%2” is too large</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 takes a frame number between -%2 and %2, not “%3”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 takes frame numbers between -%2 and %2, not “%3”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 takes at most %2 frames at a time, not “%3”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 takes on or off, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs a direction: not zero, and short enough that its length is a number, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”</source>
+        <translation type="unfinished">--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
+        <translation type="unfinished">--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>give either --view or --eye, --target and --up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--eye, --target and --up go together</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give either --view or all of --eye, --target and --up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--eye, --target and --up do not make a camera (eye equals target, or up is parallel to the view)</source>
+        <translation type="unfinished">--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
+    </message>
+    <message>
+        <source>--out is required</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1184,14 +1207,6 @@ Recover it now?</source>
         <translation>キー「%1」を無効化</translation>
     </message>
     <message>
-        <source>Change Blend Settings</source>
-        <translation>ブレンド設定を変更</translation>
-    </message>
-    <message>
-        <source>Change Look</source>
-        <translation>ルックを変更</translation>
-    </message>
-    <message>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
@@ -1270,6 +1285,242 @@ Recover it now?</source>
     <message>
         <source>Rename Patch “%1”</source>
         <translation>パッチ「%1」の名前を変更</translation>
+    </message>
+    <message>
+        <source>Add Highlight Layer</source>
+        <translation type="unfinished">ハイライトレイヤーを追加</translation>
+    </message>
+    <message>
+        <source>Change Highlight Size</source>
+        <translation type="unfinished">ハイライトのサイズを変更</translation>
+    </message>
+    <message>
+        <source>Change Highlight Colour</source>
+        <translation type="unfinished">ハイライトの色を変更</translation>
+    </message>
+    <message>
+        <source>Change Off-Specular Cut</source>
+        <translation type="unfinished">オフスペキュラーカットを変更</translation>
+    </message>
+    <message>
+        <source>Change Highlight Operation</source>
+        <translation type="unfinished">ハイライト操作を変更</translation>
+    </message>
+    <message>
+        <source>Key Highlight</source>
+        <translation type="unfinished">ハイライトのキーフレームを設定</translation>
+    </message>
+    <message>
+        <source>The highlight layer no longer exists.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add Window Highlight</source>
+        <translation type="unfinished">窓のハイライトを追加</translation>
+    </message>
+    <message>
+        <source>Add Crescent Highlight</source>
+        <translation type="unfinished">三日月のハイライトを追加</translation>
+    </message>
+    <message>
+        <source>Add Highlight Operation</source>
+        <translation type="unfinished">ハイライト操作を追加</translation>
+    </message>
+    <message>
+        <source>Move Highlight Operation</source>
+        <translation type="unfinished">ハイライト操作を移動</translation>
+    </message>
+    <message>
+        <source>Remove Highlight Operation</source>
+        <translation type="unfinished">ハイライト操作を削除</translation>
+    </message>
+    <message>
+        <source>Remove Highlight Layer “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A highlight layer needs a name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is already a highlight layer named “%1”.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rename Highlight Layer “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Highlight layer “%1”: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete Highlight Key</source>
+        <translation type="unfinished">ハイライトのキーフレームを削除</translation>
+    </message>
+    <message>
+        <source>Rotate Highlight</source>
+        <translation type="unfinished">ハイライトを回転</translation>
+    </message>
+    <message>
+        <source>Scale Highlight</source>
+        <translation type="unfinished">ハイライトを拡大縮小</translation>
+    </message>
+    <message>
+        <source>Move Highlight</source>
+        <translation type="unfinished">ハイライトを移動</translation>
+    </message>
+    <message>
+        <source>There is no patch named “%1”.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Highlight Patch</source>
+        <translation type="unfinished">ハイライトのパッチを変更</translation>
+    </message>
+    <message>
+        <source>A highlight&apos;s guide needs a direction (not zero).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Highlight Guide</source>
+        <translation type="unfinished">ハイライトのガイド方向を変更</translation>
+    </message>
+    <message>
+        <source>Normal smoothing takes 0 to %1 rounds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Highlight Smoothing</source>
+        <translation type="unfinished">ハイライトの平滑化を変更</translation>
+    </message>
+    <message>
+        <source>Show Highlight Layer</source>
+        <translation type="unfinished">ハイライトレイヤーを表示</translation>
+    </message>
+    <message>
+        <source>Hide Highlight Layer</source>
+        <translation type="unfinished">ハイライトレイヤーを非表示</translation>
+    </message>
+    <message>
+        <source>Change Highlight Combinations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint Patch “%1”</source>
+        <translation type="unfinished">パッチ「%1」をペイント</translation>
+    </message>
+    <message>
+        <source>New Patch “%1”</source>
+        <translation type="unfinished">新しいパッチ「%1」</translation>
+    </message>
+    <message>
+        <source>Change Blend Sharpness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Unspecified Regions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Time Interpolation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Shading Style</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Material Style</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Light Type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Background Colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Toon Tones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Toon Evaluation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Gooch Shading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Hatching</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show Lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hide Lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Line Kinds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Line Style</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Stereo Settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The render camera is not valid (eye, target and up must differ).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Render Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Render Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The look&apos;s toon tones are not valid.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply Look</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
+        <translation type="unfinished">先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
+    </message>
+    <message>
+        <source>The base model has no vertex %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The brush radius must be a positive number.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The brush needs a valid camera (eye, target and up must differ).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush “%1”</source>
+        <translation type="unfinished">ブラシ「%1」</translation>
     </message>
 </context>
 <context>
@@ -1837,6 +2088,25 @@ Recover it now?</source>
         <source>the render camera is not a camera (eye at the target, or up along the view)</source>
         <translation>レンダーカメラがカメラになっていません（視点が注視点と同じか、上方向が視線と平行）</translation>
     </message>
+    <message>
+        <source>two highlight layers have the same id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the current frame is not a frame number</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::RasterModule</name>
+    <message>
+        <source>%1 is not in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>raster images cannot be read or written: the OpenImageIO module cannot be loaded (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RenderOutput</name>
@@ -1855,6 +2125,47 @@ Recover it now?</source>
     <message>
         <source>all passes together need an .exr file</source>
         <translation>すべてのパスをまとめて書き出すには .exr ファイルが必要です</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::AlignTool</name>
+    <message>
+        <source>Shift+click inside the drawing to place its point.</source>
+        <translation type="unfinished">参照画の内側を Shift + クリックして参照画側の点を配置してください。</translation>
+    </message>
+    <message>
+        <source>Click on the model to place a model point; Shift+click places the drawing point.</source>
+        <translation type="unfinished">モデル上をクリックしてモデル側の点を配置します。Shift + クリックで参照画側の点を配置します。</translation>
+    </message>
+    <message>
+        <source>Click a feature on the model, then Shift+click the same feature on the drawing; six pairs or more, then Solve Camera.</source>
+        <translation type="unfinished">モデル上の特徴的な箇所をクリックし、参照画上の同じ箇所を Shift + クリックします。6 組以上指定したら「カメラを推定」を実行します。</translation>
+    </message>
+    <message>
+        <source>Show a drawing to align first.</source>
+        <translation type="unfinished">先に位置合わせする参照画を表示してください。</translation>
+    </message>
+    <message>
+        <source>%1 pairs of points so far; the camera needs at least six.</source>
+        <translation type="unfinished">現在の対応点は %1 組です。カメラの推定には 6 組以上必要です。</translation>
+    </message>
+    <message>
+        <source>The camera could not be solved: %1</source>
+        <translation type="unfinished">カメラを推定できませんでした: %1</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::BrushTool</name>
+    <message>
+        <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
+        <translation type="unfinished">先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::FrameTimeline</name>
+    <message>
+        <source>Frames of the animation: diamonds are the selected layer&apos;s keys; click or drag to move the current frame</source>
+        <translation type="unfinished">アニメーションのフレームです。ひし形は選択したレイヤーのキーフレームを示します。クリックまたはドラッグで現在のフレームを移動します</translation>
     </message>
 </context>
 <context>
@@ -1968,28 +2279,8 @@ Recover it now?</source>
         <translation>選択したレイヤーを削除し、他のレイヤーの組み合わせからも取り除きます</translation>
     </message>
     <message>
-        <source>Rename Highlight Layer</source>
-        <translation>ハイライトレイヤーの名前を変更</translation>
-    </message>
-    <message>
-        <source>Show Highlight Layer</source>
-        <translation>ハイライトレイヤーを表示</translation>
-    </message>
-    <message>
-        <source>Hide Highlight Layer</source>
-        <translation>ハイライトレイヤーを非表示</translation>
-    </message>
-    <message>
         <source>Highlight %1</source>
         <translation>ハイライト %1</translation>
-    </message>
-    <message>
-        <source>Add Highlight Layer</source>
-        <translation>ハイライトレイヤーを追加</translation>
-    </message>
-    <message>
-        <source>Remove Highlight Layer</source>
-        <translation>ハイライトレイヤーを削除</translation>
     </message>
     <message>
         <source>Keys</source>
@@ -2036,14 +2327,6 @@ Recover it now?</source>
         <translation>現在のフレームにあるレイヤーのキーフレームを削除します（レイヤーには少なくとも 1 つのキーフレームが残ります）</translation>
     </message>
     <message>
-        <source>Key Highlight</source>
-        <translation>ハイライトのキーフレームを設定</translation>
-    </message>
-    <message>
-        <source>Delete Highlight Key</source>
-        <translation>ハイライトのキーフレームを削除</translation>
-    </message>
-    <message>
         <source>Parameters at this frame</source>
         <translation>このフレームのパラメーター</translation>
     </message>
@@ -2060,20 +2343,12 @@ Recover it now?</source>
         <translation>ハイライトの色</translation>
     </message>
     <message>
-        <source>Change Highlight Colour</source>
-        <translation>ハイライトの色を変更</translation>
-    </message>
-    <message>
         <source>epsilon: size of the area where (N, H) &gt; 1 - epsilon (keyed)</source>
         <translation>epsilon: (N, H) &gt; 1 - epsilon となる領域のサイズ（キーフレーム対象）</translation>
     </message>
     <message>
         <source>&amp;Epsilon:</source>
         <translation>イプシロン(&amp;E):</translation>
-    </message>
-    <message>
-        <source>Change Highlight Size</source>
-        <translation>ハイライトのサイズを変更</translation>
     </message>
     <message>
         <source>Off-specular cut: no highlight where N·L is at most this value; -1 turns it off (keyed)</source>
@@ -2084,10 +2359,6 @@ Recover it now?</source>
         <translation>オフスペキュラーカット(&amp;U):</translation>
     </message>
     <message>
-        <source>Change Off-Specular Cut</source>
-        <translation>オフスペキュラーカットを変更</translation>
-    </message>
-    <message>
         <source>Face set the highlight may appear on (not keyed)</source>
         <translation>ハイライトを表示できるフェースセット（キーフレーム対象外）</translation>
     </message>
@@ -2096,16 +2367,8 @@ Recover it now?</source>
         <translation>パッチ(&amp;P):</translation>
     </message>
     <message>
-        <source>Change Highlight Patch</source>
-        <translation>ハイライトのパッチを変更</translation>
-    </message>
-    <message>
         <source>Guide direction (x, y, z): the u axis of the highlight on models without UVs (not keyed)</source>
         <translation>ガイド方向（x, y, z）: UV のないモデルでのハイライトの u 軸（キーフレーム対象外）</translation>
-    </message>
-    <message>
-        <source>Change Highlight Guide</source>
-        <translation>ハイライトのガイド方向を変更</translation>
     </message>
     <message>
         <source>&amp;Guide:</source>
@@ -2124,10 +2387,6 @@ Recover it now?</source>
         <translation>ハイライトのベクトル場に対する操作を、レイヤーのすべてのキーフレームの末尾に追加します</translation>
     </message>
     <message>
-        <source>Add Highlight Operation</source>
-        <translation>ハイライト操作を追加</translation>
-    </message>
-    <message>
         <source>Combinations</source>
         <translation>組み合わせ</translation>
     </message>
@@ -2140,24 +2399,12 @@ Recover it now?</source>
         <translation>同じフレームでの別のレイヤーの領域を、このレイヤーの領域に加えるか、このレイヤーの領域から差し引きます</translation>
     </message>
     <message>
-        <source>Add Highlight Combination</source>
-        <translation>ハイライトの組み合わせを追加</translation>
-    </message>
-    <message>
         <source> (keyed)</source>
         <translation>（キーフレーム対象）</translation>
     </message>
     <message>
-        <source>Change Highlight Operation</source>
-        <translation>ハイライト操作を変更</translation>
-    </message>
-    <message>
         <source>Move the operation earlier</source>
         <translation>操作を前に移動します</translation>
-    </message>
-    <message>
-        <source>Move Highlight Operation</source>
-        <translation>ハイライト操作を移動</translation>
     </message>
     <message>
         <source>Move the operation later</source>
@@ -2170,10 +2417,6 @@ Recover it now?</source>
     <message>
         <source>Remove the operation from every key</source>
         <translation>すべてのキーフレームからこの操作を削除します</translation>
-    </message>
-    <message>
-        <source>Remove Highlight Operation</source>
-        <translation>ハイライト操作を削除</translation>
     </message>
     <message>
         <source>Union with</source>
@@ -2196,14 +2439,6 @@ Recover it now?</source>
         <translation>この組み合わせを削除します</translation>
     </message>
     <message>
-        <source>Change Highlight Combination</source>
-        <translation>ハイライトの組み合わせを変更</translation>
-    </message>
-    <message>
-        <source>Remove Highlight Combination</source>
-        <translation>ハイライトの組み合わせを削除</translation>
-    </message>
-    <message>
         <source>Checked: drawn; unchecked: used only in other layers&apos; combinations</source>
         <translation>オン: 描画します。オフ: 他のレイヤーの組み合わせにのみ使用します</translation>
     </message>
@@ -2218,18 +2453,6 @@ Recover it now?</source>
     <message>
         <source>Drag on the model to move the highlight; Shift+drag rotates it, Ctrl+drag scales it (keyed at the current frame)</source>
         <translation>モデル上をドラッグしてハイライトを移動します。Shift+ドラッグで回転、Ctrl+ドラッグで拡大縮小します（現在のフレームにキーフレームを設定）</translation>
-    </message>
-    <message>
-        <source>Rotate Highlight</source>
-        <translation>ハイライトを回転</translation>
-    </message>
-    <message>
-        <source>Scale Highlight</source>
-        <translation>ハイライトを拡大縮小</translation>
-    </message>
-    <message>
-        <source>Move Highlight</source>
-        <translation>ハイライトを移動</translation>
     </message>
     <message>
         <source>&amp;Preset</source>
@@ -2304,20 +2527,12 @@ Recover it now?</source>
         <translation>法線の平滑化(&amp;S):</translation>
     </message>
     <message>
-        <source>Change Highlight Smoothing</source>
-        <translation>ハイライトの平滑化を変更</translation>
-    </message>
-    <message>
         <source>The viewport draws the first %1 visible layers and, of each, %2 operations and %3 combinations; the rest shows in renders (celform render).</source>
         <translation>ビューポートが描くのは表示中の最初の %1 レイヤーと、それぞれの %2 個の操作・%3 個の組み合わせまでです。残りはレンダー（celform render）に表示されます。</translation>
     </message>
     <message>
         <source>Window</source>
         <translation>窓</translation>
-    </message>
-    <message>
-        <source>Add Window Highlight</source>
-        <translation>窓のハイライトを追加</translation>
     </message>
     <message>
         <source>Crescent cut</source>
@@ -2328,23 +2543,8 @@ Recover it now?</source>
         <translation>三日月</translation>
     </message>
     <message>
-        <source>Add Crescent Highlight</source>
-        <translation>三日月のハイライトを追加</translation>
-    </message>
-    <message>
         <source>%1 patch</source>
         <translation>%1 のパッチ</translation>
-    </message>
-    <message>
-        <source>New Patch “%1”</source>
-        <translation>新しいパッチ「%1」</translation>
-    </message>
-</context>
-<context>
-    <name>celform::views::HighlightTimeline</name>
-    <message>
-        <source>Frames of the animation: diamonds are the selected layer&apos;s keys; click or drag to move the current frame</source>
-        <translation>アニメーションのフレームです。ひし形は選択したレイヤーのキーフレームを示します。クリックまたはドラッグで現在のフレームを移動します</translation>
     </message>
 </context>
 <context>
@@ -2724,6 +2924,17 @@ Recover it now?</source>
     <message>
         <source>B out</source>
         <translation>出力 B</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::PatchTool</name>
+    <message>
+        <source>Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.</source>
+        <translation type="unfinished">パッチ「%1」を描きます: ドラッグで面を追加、Ctrl+ドラッグで除去、[ と ] で半径を変更します。</translation>
+    </message>
+    <message>
+        <source>Choose or create a patch in the Highlights dock first.</source>
+        <translation type="unfinished">まずハイライトドックでパッチを選ぶか作成してください。</translation>
     </message>
 </context>
 <context>
@@ -3160,38 +3371,6 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
         <translation>3D ビューポート</translation>
     </message>
     <message>
-        <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
-        <translation>先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
-    </message>
-    <message>
-        <source>Brush “%1”</source>
-        <translation>ブラシ「%1」</translation>
-    </message>
-    <message>
-        <source>Click a feature on the model, then Shift+click the same feature on the drawing; six pairs or more, then Solve Camera.</source>
-        <translation>モデル上の特徴的な箇所をクリックし、参照画上の同じ箇所を Shift + クリックします。6 組以上指定したら「カメラを推定」を実行します。</translation>
-    </message>
-    <message>
-        <source>Show a drawing to align first.</source>
-        <translation>先に位置合わせする参照画を表示してください。</translation>
-    </message>
-    <message>
-        <source>%1 pairs of points so far; the camera needs at least six.</source>
-        <translation>現在の対応点は %1 組です。カメラの推定には 6 組以上必要です。</translation>
-    </message>
-    <message>
-        <source>The camera could not be solved: %1</source>
-        <translation>カメラを推定できませんでした: %1</translation>
-    </message>
-    <message>
-        <source>Shift+click inside the drawing to place its point.</source>
-        <translation>参照画の内側を Shift + クリックして参照画側の点を配置してください。</translation>
-    </message>
-    <message>
-        <source>Click on the model to place a model point; Shift+click places the drawing point.</source>
-        <translation>モデル上をクリックしてモデル側の点を配置します。Shift + クリックで参照画側の点を配置します。</translation>
-    </message>
-    <message>
         <source>Brush radius %1</source>
         <translation>ブラシ半径 %1</translation>
     </message>
@@ -3199,35 +3378,9 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
         <source>&lt;p&gt;The 3D view of the model.&lt;/p&gt;&lt;p&gt;Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. F: frame the model. Home: front view.&lt;/p&gt;&lt;p&gt;Ctrl+left drag on the light gizmo (the yellow arrow or sphere): move the key light around the model.&lt;/p&gt;</source>
         <translation>&lt;p&gt;モデルの 3D ビューです。&lt;/p&gt;&lt;p&gt;Alt + 左ボタンドラッグまたは中ボタンドラッグ: 回転（オービット）。Alt + 中ボタンドラッグまたは Shift + 中ボタンドラッグ: パン。Alt + 右ボタンドラッグ、Ctrl + 中ボタンドラッグ、またはマウスホイール: ドリー。F: モデル全体を表示。Home: 正面ビュー。&lt;/p&gt;&lt;p&gt;ライトのギズモ（黄色の矢印または球）上で Ctrl + 左ボタンドラッグ: モデルの周りでキーライトを移動。&lt;/p&gt;</translation>
     </message>
-    <message>
-        <source>Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.</source>
-        <translation>パッチ「%1」を描きます: ドラッグで面を追加、Ctrl+ドラッグで除去、[ と ] で半径を変更します。</translation>
-    </message>
-    <message>
-        <source>Choose or create a patch in the Highlights dock first.</source>
-        <translation>まずハイライトドックでパッチを選ぶか作成してください。</translation>
-    </message>
-    <message>
-        <source>Paint Patch “%1”</source>
-        <translation>パッチ「%1」をペイント</translation>
-    </message>
 </context>
 <context>
     <name>main</name>
-    <message>
-        <source>Celform: view-dependent models and cartoon looks for cel animation.
-Sub-commands (celform new, info, ...) run without the editor: see celform --help.</source>
-        <translation>Celform: セルアニメーションのための視点依存モデルとアニメ調のルック。
-サブコマンド（celform new、info など）はエディターを起動せずに実行されます。詳しくは celform --help を参照してください。</translation>
-    </message>
-    <message>
-        <source>Project (.celform) or mesh file to open.</source>
-        <translation>開くプロジェクト（.celform）またはメッシュファイル。</translation>
-    </message>
-    <message>
-        <source>Open, render once, save a PNG of the main window to FILE and quit.</source>
-        <translation>起動して一度レンダリングし、メインウィンドウの PNG 画像を FILE に保存して終了します。</translation>
-    </message>
     <message>
         <source>only one project can be opened</source>
         <translation>開けるプロジェクトは 1 つだけです</translation>
