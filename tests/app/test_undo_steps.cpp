@@ -33,18 +33,6 @@ class TestUndoSteps : public QObject {
         return texts;
     }
 
-    static void holdKey(QWidget* w, Qt::Key key, int repeats)
-    {
-        QKeyEvent press(QEvent::KeyPress, key, Qt::NoModifier);
-        QApplication::sendEvent(w, &press);
-        for (int i = 0; i < repeats; ++i) {
-            QKeyEvent repeat(QEvent::KeyPress, key, Qt::NoModifier, QString(), true);
-            QApplication::sendEvent(w, &repeat);
-        }
-        QKeyEvent release(QEvent::KeyRelease, key, Qt::NoModifier);
-        QApplication::sendEvent(w, &release);
-    }
-
 private slots:
     void unrelatedEditsAreSeparateSteps()
     {
@@ -98,7 +86,7 @@ private slots:
             if (spin->toolTip().startsWith(QStringLiteral("Sharpness")))
                 sharpness = spin;
         QVERIFY(sharpness);
-        holdKey(sharpness, Qt::Key_Up, 3);
+        celform::test::holdKey(sharpness, Qt::Key_Up, 3);
         QVERIFY(doc->data().blend.sharpness > 1.3);
         QComboBox* unspecified = nullptr;
         for (auto* combo : window.findChildren<QComboBox*>())

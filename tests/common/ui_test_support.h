@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QtTest/QtTest>
 
@@ -38,6 +39,19 @@ inline void drag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods,
         QApplication::sendEvent(w, &move);
     }
     QMouseEvent release(QEvent::MouseButtonRelease, to, w->mapToGlobal(to), button, Qt::NoButton, mods);
+    QApplication::sendEvent(w, &release);
+}
+
+/// Holds a key on a control: one press, the repeats a held key sends, one release (one gesture).
+inline void holdKey(QWidget* w, Qt::Key key, int repeats)
+{
+    QKeyEvent press(QEvent::KeyPress, key, Qt::NoModifier);
+    QApplication::sendEvent(w, &press);
+    for (int i = 0; i < repeats; ++i) {
+        QKeyEvent repeat(QEvent::KeyPress, key, Qt::NoModifier, QString(), true);
+        QApplication::sendEvent(w, &repeat);
+    }
+    QKeyEvent release(QEvent::KeyRelease, key, Qt::NoModifier);
     QApplication::sendEvent(w, &release);
 }
 

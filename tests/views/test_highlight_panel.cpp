@@ -6,6 +6,8 @@
 #include "celform/views/frame_timeline.h"
 #include "celform/views/highlight_panel.h"
 
+#include "ui_test_support.h"
+
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QListWidget>
@@ -65,19 +67,6 @@ class TestHighlightPanel : public QObject {
         QVERIFY(loaded == m_doc->data().look);
     }
 
-    /// Holds a key on a control: one press, repeats as the keyboard sends them, one release.
-    static void holdKey(QWidget* w, Qt::Key key, int repeats)
-    {
-        QKeyEvent press(QEvent::KeyPress, key, Qt::NoModifier);
-        QApplication::sendEvent(w, &press);
-        for (int i = 0; i < repeats; ++i) {
-            QKeyEvent repeat(QEvent::KeyPress, key, Qt::NoModifier, QString(), true);
-            QApplication::sendEvent(w, &repeat);
-        }
-        QKeyEvent release(QEvent::KeyRelease, key, Qt::NoModifier);
-        QApplication::sendEvent(w, &release);
-    }
-
     void setEpsilon(double value)
     {
         auto* spin = child<QDoubleSpinBox>("highlightEpsilon");
@@ -129,7 +118,7 @@ private slots:
         checkRoundTrip();
 
         // Holding the spin box's Up key (a press and its repeats) is one undo step of its own.
-        holdKey(child<QDoubleSpinBox>("highlightEpsilon"), Qt::Key_Up, 2);
+        celform::test::holdKey(child<QDoubleSpinBox>("highlightEpsilon"), Qt::Key_Up, 2);
         QCOMPARE(m_doc->undoStack()->index(), afterAdd + 2);
         QVERIFY(tracks[0].keys[0].layer.shape.epsilon > 0.125f); // three steps or more (Qt may accelerate)
         m_doc->undoStack()->undo(); // the whole hold at once

@@ -22,6 +22,17 @@ template <typename T> std::function<T*(ProjectData&)> blendField(T BlendSettings
     return [member](ProjectData& d) { return &(d.blend.*member); };
 }
 
+/// The step that sets one member of the look (null when it already has the value).
+template <typename T>
+QUndoCommand* lookCommand(
+    Document* doc, const QString& text, Property property, T Look::*member, const T& value, int gesture)
+{
+    if (doc->data().look.*member == value)
+        return nullptr;
+    return new PropertyCommand<T>(
+        doc, text, property, {}, lookField(member), value, ChangeSet::of(Part::Look), gesture);
+}
+
 } // namespace
 
 // --- blend settings -------------------------------------------------------------------------------
@@ -98,66 +109,59 @@ void Document::setBackgroundColor(const Eigen::Vector3f& color)
 
 void Document::setToonRamp(const algo::ToonRamp& ramp)
 {
-    if (ramp == m_data.look.toon || !ramp.isValid())
+    if (!ramp.isValid())
         return; // never store tones the renderer cannot use
-    push(new PropertyCommand<algo::ToonRamp>(this, tr("Change Toon Tones"), Property::ToonRamp, {},
-        lookField(&Look::toon), ramp, ChangeSet::of(Part::Look), m_gesture));
+    if (QUndoCommand* cmd
+        = lookCommand(this, tr("Change Toon Tones"), Property::ToonRamp, &Look::toon, ramp, m_gesture))
+        push(cmd);
 }
 
 void Document::setToonEvaluation(algo::ToonEvaluation evaluation)
 {
-    if (evaluation == m_data.look.toonEvaluation)
-        return;
-    push(new PropertyCommand<algo::ToonEvaluation>(this, tr("Change Toon Evaluation"), Property::ToonEvaluation, {},
-        lookField(&Look::toonEvaluation), evaluation, ChangeSet::of(Part::Look), m_gesture));
+    if (QUndoCommand* cmd = lookCommand(
+            this, tr("Change Toon Evaluation"), Property::ToonEvaluation, &Look::toonEvaluation, evaluation, m_gesture))
+        push(cmd);
 }
 
 void Document::setGooch(const algo::GoochParams& gooch)
 {
-    if (gooch == m_data.look.gooch)
-        return;
-    push(new PropertyCommand<algo::GoochParams>(this, tr("Change Gooch Shading"), Property::Gooch, {},
-        lookField(&Look::gooch), gooch, ChangeSet::of(Part::Look), m_gesture));
+    if (QUndoCommand* cmd
+        = lookCommand(this, tr("Change Gooch Shading"), Property::Gooch, &Look::gooch, gooch, m_gesture))
+        push(cmd);
 }
 
 void Document::setHatch(const algo::HatchParams& hatch)
 {
-    if (hatch == m_data.look.hatch)
-        return;
-    push(new PropertyCommand<algo::HatchParams>(this, tr("Change Hatching"), Property::Hatch, {},
-        lookField(&Look::hatch), hatch, ChangeSet::of(Part::Look), m_gesture));
+    if (QUndoCommand* cmd = lookCommand(this, tr("Change Hatching"), Property::Hatch, &Look::hatch, hatch, m_gesture))
+        push(cmd);
 }
 
 void Document::setShowLines(bool show)
 {
-    if (show == m_data.look.showLines)
-        return;
-    push(new PropertyCommand<bool>(this, show ? tr("Show Lines") : tr("Hide Lines"), Property::ShowLines, {},
-        lookField(&Look::showLines), show, ChangeSet::of(Part::Look), m_gesture));
+    if (QUndoCommand* cmd = lookCommand(
+            this, show ? tr("Show Lines") : tr("Hide Lines"), Property::ShowLines, &Look::showLines, show, m_gesture))
+        push(cmd);
 }
 
 void Document::setLineSettings(const algo::LineSettings& settings)
 {
-    if (settings == m_data.look.lines)
-        return;
-    push(new PropertyCommand<algo::LineSettings>(this, tr("Change Line Kinds"), Property::LineSettings, {},
-        lookField(&Look::lines), settings, ChangeSet::of(Part::Look), m_gesture));
+    if (QUndoCommand* cmd
+        = lookCommand(this, tr("Change Line Kinds"), Property::LineSettings, &Look::lines, settings, m_gesture))
+        push(cmd);
 }
 
 void Document::setLineStyle(const algo::LineStyle& style)
 {
-    if (style == m_data.look.lineStyle)
-        return;
-    push(new PropertyCommand<algo::LineStyle>(this, tr("Change Line Style"), Property::LineStyle, {},
-        lookField(&Look::lineStyle), style, ChangeSet::of(Part::Look), m_gesture));
+    if (QUndoCommand* cmd
+        = lookCommand(this, tr("Change Line Style"), Property::LineStyle, &Look::lineStyle, style, m_gesture))
+        push(cmd);
 }
 
 void Document::setStereo(const StereoLook& stereo)
 {
-    if (stereo == m_data.look.stereo)
-        return;
-    push(new PropertyCommand<StereoLook>(this, tr("Change Stereo Settings"), Property::Stereo, {},
-        lookField(&Look::stereo), stereo, ChangeSet::of(Part::Look), m_gesture));
+    if (QUndoCommand* cmd
+        = lookCommand(this, tr("Change Stereo Settings"), Property::Stereo, &Look::stereo, stereo, m_gesture))
+        push(cmd);
 }
 
 void Document::setRenderCamera(const std::optional<Camera>& camera)

@@ -22,7 +22,7 @@ bool HighlightTool::press(const ToolEvent& event)
     m_du = QPointF(1.0, 0.0);
     m_dv = QPointF(0.0, -1.0);
     m_unitsPerPixel = 0.005;
-    m_gesture = document->beginGesture();
+    openGesture();
     const auto& mesh = document->data().baseMesh;
     const std::int64_t vertex = m_viewport->pickVertex(event.position);
     const algo::Positions& shape = m_viewport->displayedShape();
@@ -67,7 +67,7 @@ void HighlightTool::move(const ToolEvent& event)
 {
     model::Document* document = m_viewport->document();
     const model::ObjectId target = m_viewport->highlightTarget();
-    if (!document || m_gesture == 0 || !document->data().highlight(target))
+    if (!document || !inGesture() || !document->data().highlight(target))
         return;
     using T = algo::HighlightOperationType;
     const QPointF d = event.delta;
@@ -86,24 +86,6 @@ void HighlightTool::move(const ToolEvent& event)
     } catch (const model::EditRefused& e) {
         emit m_viewport->message(e.message());
     }
-}
-
-void HighlightTool::finish()
-{
-    model::Document* document = m_viewport->document();
-    if (document && m_gesture != 0 && document->currentGesture() == m_gesture)
-        document->endGesture();
-    m_gesture = 0;
-}
-
-void HighlightTool::release(const ToolEvent&)
-{
-    finish();
-}
-
-void HighlightTool::cancel()
-{
-    finish();
 }
 
 } // namespace celform::views

@@ -15,13 +15,8 @@ public:
 
     bool press(const ToolEvent& event) override;
     void move(const ToolEvent& event) override;
-    void release(const ToolEvent& event) override;
-    void cancel() override;
 
 private:
-    void finish();
-
-    int m_gesture = 0;
     QPointF m_du{1.0, 0.0}, m_dv{0.0, -1.0}; ///< screen directions (unit) of du, dv at the picked point
     double m_unitsPerPixel = 0.005; ///< translation parameter per pixel of drag
 };

@@ -21,14 +21,13 @@ bool LightTool::press(const ToolEvent& event)
     if (!document || !document->hasMesh() || !m_viewport->lightGizmoShown() || !(event.modifiers & Qt::ControlModifier)
         || QLineF(m_viewport->projectToWidget(m_viewport->lightGizmoHandle()), event.position).length() > kGrabPixels)
         return false;
-    m_gesture = document->beginGesture();
-    return true;
+    return openGesture();
 }
 
 void LightTool::move(const ToolEvent& event)
 {
     model::Document* document = m_viewport->document();
-    if (!document || m_gesture == 0)
+    if (!document || !inGesture())
         return;
     const auto [origin, direction] = m_viewport->rayThrough(event.position);
     if (!direction.allFinite())
@@ -58,24 +57,6 @@ void LightTool::move(const ToolEvent& event)
         return;
     light.vector = light.type == model::LightType::Point ? Eigen::Vector3d(centre + radius * unit) : unit;
     document->setLight(light);
-}
-
-void LightTool::finish()
-{
-    model::Document* document = m_viewport->document();
-    if (document && m_gesture != 0 && document->currentGesture() == m_gesture)
-        document->endGesture();
-    m_gesture = 0;
-}
-
-void LightTool::release(const ToolEvent&)
-{
-    finish();
-}
-
-void LightTool::cancel()
-{
-    finish();
 }
 
 } // namespace celform::views

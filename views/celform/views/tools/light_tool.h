@@ -13,13 +13,7 @@ public:
     /// Takes the press only on the handle with Ctrl held.
     bool press(const ToolEvent& event) override;
     void move(const ToolEvent& event) override;
-    void release(const ToolEvent& event) override;
-    void cancel() override;
     [[nodiscard]] Qt::CursorShape cursor() const override { return Qt::ClosedHandCursor; }
-
-private:
-    void finish();
-    int m_gesture = 0;
 };
 
 } // namespace celform::views

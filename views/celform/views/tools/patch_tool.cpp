@@ -32,7 +32,7 @@ bool PatchTool::press(const ToolEvent& event)
     model::Document* document = m_viewport->document();
     if (!document || !document->hasMesh())
         return false;
-    m_gesture = document->beginGesture();
+    openGesture();
     paint(event);
     return true;
 }
@@ -45,7 +45,7 @@ void PatchTool::move(const ToolEvent& event)
 void PatchTool::paint(const ToolEvent& event)
 {
     model::Document* document = m_viewport->document();
-    if (!document || m_gesture == 0)
+    if (!document || !inGesture())
         return;
     const QString target = m_viewport->patchTarget();
     if (target.trimmed().isEmpty()) {
@@ -115,24 +115,6 @@ std::vector<std::int32_t> PatchTool::facesUnderBrush(const QPointF& position)
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
     return faces;
-}
-
-void PatchTool::finish()
-{
-    model::Document* document = m_viewport->document();
-    if (document && m_gesture != 0 && document->currentGesture() == m_gesture)
-        document->endGesture();
-    m_gesture = 0;
-}
-
-void PatchTool::release(const ToolEvent&)
-{
-    finish();
-}
-
-void PatchTool::cancel()
-{
-    finish();
 }
 
 } // namespace celform::views

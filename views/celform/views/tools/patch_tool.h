@@ -17,8 +17,6 @@ public:
     void activate() override;
     bool press(const ToolEvent& event) override;
     void move(const ToolEvent& event) override;
-    void release(const ToolEvent& event) override;
-    void cancel() override;
 
     /// Faces a paint dab at a widget position touches: the face under it and every face turned
     /// towards the camera around a vertex within the brush radius of the picked point, reached
@@ -27,8 +25,6 @@ public:
 
 private:
     void paint(const ToolEvent& event);
-    void finish();
-    int m_gesture = 0;
     // Working memory of facesUnderBrush(), sized once per mesh.
     std::vector<char> m_seen;
     std::vector<std::int32_t> m_frontier, m_visited;

@@ -37,16 +37,27 @@ public:
     /// Left-button press; true when the tool takes the drag (move and release follow).
     virtual bool press(const ToolEvent& event) = 0;
     virtual void move(const ToolEvent& /*event*/) { }
-    virtual void release(const ToolEvent& /*event*/) { }
+    /// The drag ended: by default the tool's gesture ends (its edits form one undo step).
+    virtual void release(const ToolEvent& /*event*/) { closeGesture(); }
     /// The drag ended without a release (tool change, a popup took the mouse): end the gesture,
     /// keep what was done.
-    virtual void cancel() { }
+    virtual void cancel() { closeGesture(); }
     /// The viewport's camera moved (navigation, programmatic).
     virtual void cameraChanged() { }
     [[nodiscard]] virtual Qt::CursorShape cursor() const { return Qt::CrossCursor; }
 
 protected:
+    /// Opens a document gesture for the drag: until closeGesture(), the tool's edits of one
+    /// property merge into one undo step. Returns false without a document.
+    bool openGesture();
+    /// Ends the tool's gesture, if it is still the document's open one.
+    void closeGesture();
+    [[nodiscard]] bool inGesture() const { return m_gesture != 0; }
+
     Viewport* m_viewport;
+
+private:
+    int m_gesture = 0;
 };
 
 } // namespace celform::views

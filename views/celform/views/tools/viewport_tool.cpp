@@ -1,0 +1,26 @@
+// The gesture bookkeeping every drag tool shares.
+#include "celform/views/tools/viewport_tool.h"
+
+#include "celform/model/document.h"
+#include "celform/views/viewport.h"
+
+namespace celform::views {
+
+bool ViewportTool::openGesture()
+{
+    model::Document* document = m_viewport->document();
+    if (!document)
+        return false;
+    m_gesture = document->beginGesture();
+    return true;
+}
+
+void ViewportTool::closeGesture()
+{
+    model::Document* document = m_viewport->document();
+    if (document && m_gesture != 0 && document->currentGesture() == m_gesture)
+        document->endGesture();
+    m_gesture = 0;
+}
+
+} // namespace celform::views
