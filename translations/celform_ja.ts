@@ -495,159 +495,159 @@
     </message>
     <message>
         <source>Show this help.</source>
-        <translation type="unfinished"></translation>
+        <translation>このヘルプを表示します。</translation>
     </message>
     <message>
         <source>Arguments:</source>
-        <translation type="unfinished"></translation>
+        <translation>引数:</translation>
     </message>
     <message>
         <source>Options:</source>
-        <translation type="unfinished"></translation>
+        <translation>オプション:</translation>
     </message>
     <message>
         <source>Without a sub-command celform opens the editor (it needs a display). The sub-commands run without one:</source>
-        <translation type="unfinished"></translation>
+        <translation>サブコマンドを指定しない場合、celform はエディターを開きます（ディスプレイが必要です）。サブコマンドはディスプレイなしで実行できます:</translation>
     </message>
     <message>
         <source>celform SUB-COMMAND --help describes each option.</source>
-        <translation type="unfinished"></translation>
+        <translation>各オプションの説明は celform SUB-COMMAND --help で表示されます。</translation>
     </message>
     <message>
         <source>Exit codes: 0 success, 2 usage error, 3 bad input.</source>
-        <translation type="unfinished"></translation>
+        <translation>終了コード: 0 成功、2 使い方の誤り、3 不正な入力。</translation>
     </message>
     <message>
         <source>missing arguments</source>
-        <translation type="unfinished"></translation>
+        <translation>引数が足りません</translation>
     </message>
     <message>
         <source>unexpected argument “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>予期しない引数「%1」です</translation>
     </message>
     <message>
         <source>celform: unknown sub-command “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>celform: 不明なサブコマンド「%1」です</translation>
     </message>
     <message>
         <source>(celform %1 --help describes each option)</source>
-        <translation type="unfinished"></translation>
+        <translation>（各オプションの説明は celform %1 --help で表示されます）</translation>
     </message>
     <message>
         <source>--op takes translate:A,B, rotate:DEG, scale:DELTA, split:G1,G2 or square:SIGMA,N, not “%1”</source>
-        <translation type="unfinished">--op には translate:A,B、rotate:DEG、scale:DELTA、split:G1,G2、square:SIGMA,N のいずれかを指定してください（「%1」は無効です）</translation>
+        <translation>--op には translate:A,B、rotate:DEG、scale:DELTA、split:G1,G2、square:SIGMA,N のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--op “%1”: %2</source>
-        <translation type="unfinished">--op「%1」: %2</translation>
+        <translation>--op「%1」: %2</translation>
     </message>
     <message>
         <source>give one of --list, --add NAME with its options, --remove NAME or --rename NAME --to NEW</source>
-        <translation type="unfinished"></translation>
+        <translation>--list、オプション付きの --add NAME、--remove NAME、--rename NAME --to NEW のいずれかを指定してください</translation>
     </message>
     <message>
         <source>give one of --list, --add NAME or --subtract NAME with a selection, or --remove NAME</source>
-        <translation type="unfinished"></translation>
+        <translation>--list、面の選択を付けた --add NAME または --subtract NAME、--remove NAME のいずれかを指定してください</translation>
     </message>
     <message>
         <source>unknown key action “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>不明な key の操作「%1」です</translation>
     </message>
     <message>
         <source>--name and exactly one of --mesh or --from-base are required</source>
-        <translation type="unfinished"></translation>
+        <translation>--name と、--mesh または --from-base のどちらか一方の指定が必要です</translation>
     </message>
     <message>
         <source>--key, --vertex, --radius and exactly one of --drag or --push are required</source>
-        <translation type="unfinished"></translation>
+        <translation>--key、--vertex、--radius と、--drag または --push のどちらか一方の指定が必要です</translation>
     </message>
     <message>
         <source>has no key named “%1”</source>
-        <translation type="unfinished">「%1」という名前のキーがありません</translation>
+        <translation>「%1」という名前のキーがありません</translation>
     </message>
     <message>
         <source>--view is required</source>
-        <translation type="unfinished"></translation>
+        <translation>--view の指定が必要です</translation>
     </message>
     <message>
         <source>(celform --help lists the sub-commands)</source>
-        <translation type="unfinished"></translation>
+        <translation>（サブコマンドの一覧は celform --help で表示されます）</translation>
     </message>
     <message>
         <source>unknown sub-command “%1”; the sub-commands are %2 (celform --help)</source>
-        <translation type="unfinished"></translation>
+        <translation>不明なサブコマンド「%1」です。サブコマンドは %2 です（celform --help）</translation>
     </message>
     <message>
         <source>%1: the file does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ファイルが存在しません</translation>
     </message>
     <message>
         <source>the editor needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is set (run it under xvfb-run, or set QT_QPA_PLATFORM); the sub-commands need none (celform --help)</source>
-        <translation type="unfinished"></translation>
+        <translation>エディターにはディスプレイが必要ですが、DISPLAY も WAYLAND_DISPLAY も設定されていません（xvfb-run の下で実行するか、QT_QPA_PLATFORM を設定してください）。サブコマンドはディスプレイなしで実行できます（celform --help）</translation>
     </message>
     <message>
         <source>celform: the editor module %1 is missing (looked in %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>celform: エディターモジュール %1 が見つかりません（検索場所: %2）</translation>
     </message>
     <message>
         <source>celform: %1: the editor module cannot be loaded: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>celform: %1: エディターモジュールを読み込めません: %2</translation>
     </message>
     <message>
         <source>nothing to set</source>
-        <translation type="unfinished"></translation>
+        <translation>設定する項目が指定されていません</translation>
     </message>
     <message>
         <source>%1: “%2” is too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: 「%2」は大きすぎます</translation>
     </message>
     <message>
         <source>%1 takes a frame number between -%2 and %2, not “%3”</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 には -%2～%2 の範囲のフレーム番号を指定してください（「%3」は無効です）</translation>
     </message>
     <message>
         <source>%1 takes frame numbers between -%2 and %2, not “%3”</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 のフレーム番号はどちらも -%2～%2 の範囲で指定してください（「%3」は無効です）</translation>
     </message>
     <message>
         <source>%1 takes at most %2 frames at a time, not “%3”</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 で一度に指定できるのは %2 フレームまでです（「%3」は無効です）</translation>
     </message>
     <message>
         <source>%1 takes on or off, not “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 には on または off を指定してください（「%2」は無効です）</translation>
     </message>
     <message>
         <source>%1 needs a direction: not zero, and short enough that its length is a number, not “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 には方向を指定してください。ゼロではなく、長さが有限の数値に収まる程度に短いベクトルが必要です（「%2」は無効です）</translation>
     </message>
     <message>
         <source>--light takes point:X,Y,Z or directional:X,Y,Z, not “%1”</source>
-        <translation type="unfinished">--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
+        <translation>--light には point:X,Y,Z または directional:X,Y,Z を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--style takes toon, gooch, comic or lambert, not “%1”</source>
-        <translation type="unfinished">--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
+        <translation>--style には toon、gooch、comic、lambert のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>give either --view or --eye, --target and --up</source>
-        <translation type="unfinished"></translation>
+        <translation>--view か、--eye・--target・--up の組み合わせのどちらか一方だけを指定してください</translation>
     </message>
     <message>
         <source>--eye, --target and --up go together</source>
-        <translation type="unfinished"></translation>
+        <translation>--eye、--target、--up は 3 つともまとめて指定してください</translation>
     </message>
     <message>
         <source>give either --view or all of --eye, --target and --up</source>
-        <translation type="unfinished"></translation>
+        <translation>--view を指定するか、--eye、--target、--up をすべて指定してください</translation>
     </message>
     <message>
         <source>--eye, --target and --up do not make a camera (eye equals target, or up is parallel to the view)</source>
-        <translation type="unfinished">--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
+        <translation>--eye、--target、--up ではカメラを構成できません（eye と target が同じか、up が視線方向と平行です）</translation>
     </message>
     <message>
         <source>--out is required</source>
-        <translation type="unfinished"></translation>
+        <translation>--out の指定が必要です</translation>
     </message>
 </context>
 <context>
@@ -1288,239 +1288,239 @@ Recover it now?</source>
     </message>
     <message>
         <source>Add Highlight Layer</source>
-        <translation type="unfinished">ハイライトレイヤーを追加</translation>
+        <translation>ハイライトレイヤーを追加</translation>
     </message>
     <message>
         <source>Change Highlight Size</source>
-        <translation type="unfinished">ハイライトのサイズを変更</translation>
+        <translation>ハイライトのサイズを変更</translation>
     </message>
     <message>
         <source>Change Highlight Colour</source>
-        <translation type="unfinished">ハイライトの色を変更</translation>
+        <translation>ハイライトの色を変更</translation>
     </message>
     <message>
         <source>Change Off-Specular Cut</source>
-        <translation type="unfinished">オフスペキュラーカットを変更</translation>
+        <translation>オフスペキュラーカットを変更</translation>
     </message>
     <message>
         <source>Change Highlight Operation</source>
-        <translation type="unfinished">ハイライト操作を変更</translation>
+        <translation>ハイライト操作を変更</translation>
     </message>
     <message>
         <source>Key Highlight</source>
-        <translation type="unfinished">ハイライトのキーフレームを設定</translation>
+        <translation>ハイライトのキーフレームを設定</translation>
     </message>
     <message>
         <source>The highlight layer no longer exists.</source>
-        <translation type="unfinished"></translation>
+        <translation>このハイライトレイヤーはすでに存在しません。</translation>
     </message>
     <message>
         <source>Add Window Highlight</source>
-        <translation type="unfinished">窓のハイライトを追加</translation>
+        <translation>窓のハイライトを追加</translation>
     </message>
     <message>
         <source>Add Crescent Highlight</source>
-        <translation type="unfinished">三日月のハイライトを追加</translation>
+        <translation>三日月のハイライトを追加</translation>
     </message>
     <message>
         <source>Add Highlight Operation</source>
-        <translation type="unfinished">ハイライト操作を追加</translation>
+        <translation>ハイライト操作を追加</translation>
     </message>
     <message>
         <source>Move Highlight Operation</source>
-        <translation type="unfinished">ハイライト操作を移動</translation>
+        <translation>ハイライト操作を移動</translation>
     </message>
     <message>
         <source>Remove Highlight Operation</source>
-        <translation type="unfinished">ハイライト操作を削除</translation>
+        <translation>ハイライト操作を削除</translation>
     </message>
     <message>
         <source>Remove Highlight Layer “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」を削除</translation>
     </message>
     <message>
         <source>A highlight layer needs a name.</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤーには名前が必要です。</translation>
     </message>
     <message>
         <source>There is already a highlight layer named “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」という名前のハイライトレイヤーはすでにあります。</translation>
     </message>
     <message>
         <source>Rename Highlight Layer “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」の名前を変更</translation>
     </message>
     <message>
         <source>Highlight layer “%1”: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトレイヤー「%1」: %2</translation>
     </message>
     <message>
         <source>Delete Highlight Key</source>
-        <translation type="unfinished">ハイライトのキーフレームを削除</translation>
+        <translation>ハイライトのキーフレームを削除</translation>
     </message>
     <message>
         <source>Rotate Highlight</source>
-        <translation type="unfinished">ハイライトを回転</translation>
+        <translation>ハイライトを回転</translation>
     </message>
     <message>
         <source>Scale Highlight</source>
-        <translation type="unfinished">ハイライトを拡大縮小</translation>
+        <translation>ハイライトを拡大縮小</translation>
     </message>
     <message>
         <source>Move Highlight</source>
-        <translation type="unfinished">ハイライトを移動</translation>
+        <translation>ハイライトを移動</translation>
     </message>
     <message>
         <source>There is no patch named “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」という名前のパッチはありません。</translation>
     </message>
     <message>
         <source>Change Highlight Patch</source>
-        <translation type="unfinished">ハイライトのパッチを変更</translation>
+        <translation>ハイライトのパッチを変更</translation>
     </message>
     <message>
         <source>A highlight&apos;s guide needs a direction (not zero).</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトのガイド方向にはゼロ以外のベクトルが必要です。</translation>
     </message>
     <message>
         <source>Change Highlight Guide</source>
-        <translation type="unfinished">ハイライトのガイド方向を変更</translation>
+        <translation>ハイライトのガイド方向を変更</translation>
     </message>
     <message>
         <source>Normal smoothing takes 0 to %1 rounds.</source>
-        <translation type="unfinished"></translation>
+        <translation>法線の平滑化の回数は 0～%1 の範囲で指定してください。</translation>
     </message>
     <message>
         <source>Change Highlight Smoothing</source>
-        <translation type="unfinished">ハイライトの平滑化を変更</translation>
+        <translation>ハイライトの平滑化を変更</translation>
     </message>
     <message>
         <source>Show Highlight Layer</source>
-        <translation type="unfinished">ハイライトレイヤーを表示</translation>
+        <translation>ハイライトレイヤーを表示</translation>
     </message>
     <message>
         <source>Hide Highlight Layer</source>
-        <translation type="unfinished">ハイライトレイヤーを非表示</translation>
+        <translation>ハイライトレイヤーを非表示</translation>
     </message>
     <message>
         <source>Change Highlight Combinations</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトの組み合わせを変更</translation>
     </message>
     <message>
         <source>Paint Patch “%1”</source>
-        <translation type="unfinished">パッチ「%1」をペイント</translation>
+        <translation>パッチ「%1」をペイント</translation>
     </message>
     <message>
         <source>New Patch “%1”</source>
-        <translation type="unfinished">新しいパッチ「%1」</translation>
+        <translation>新しいパッチ「%1」</translation>
     </message>
     <message>
         <source>Change Blend Sharpness</source>
-        <translation type="unfinished"></translation>
+        <translation>ブレンドのシャープネスを変更</translation>
     </message>
     <message>
         <source>Change Unspecified Regions</source>
-        <translation type="unfinished"></translation>
+        <translation>未指定領域のモードを変更</translation>
     </message>
     <message>
         <source>Change Time Interpolation</source>
-        <translation type="unfinished"></translation>
+        <translation>時間の補間を変更</translation>
     </message>
     <message>
         <source>Change Shading Style</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングスタイルを変更</translation>
     </message>
     <message>
         <source>Change Material Style</source>
-        <translation type="unfinished"></translation>
+        <translation>マテリアルのスタイルを変更</translation>
     </message>
     <message>
         <source>Change Light Type</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトの種類を変更</translation>
     </message>
     <message>
         <source>Move Light</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトを移動</translation>
     </message>
     <message>
         <source>Change Background Colour</source>
-        <translation type="unfinished"></translation>
+        <translation>背景色を変更</translation>
     </message>
     <message>
         <source>Change Toon Tones</source>
-        <translation type="unfinished"></translation>
+        <translation>トゥーンの階調を変更</translation>
     </message>
     <message>
         <source>Change Toon Evaluation</source>
-        <translation type="unfinished"></translation>
+        <translation>トゥーンの評価単位を変更</translation>
     </message>
     <message>
         <source>Change Gooch Shading</source>
-        <translation type="unfinished"></translation>
+        <translation>Gooch シェーディングを変更</translation>
     </message>
     <message>
         <source>Change Hatching</source>
-        <translation type="unfinished"></translation>
+        <translation>ハッチングを変更</translation>
     </message>
     <message>
         <source>Show Lines</source>
-        <translation type="unfinished"></translation>
+        <translation>線を表示</translation>
     </message>
     <message>
         <source>Hide Lines</source>
-        <translation type="unfinished"></translation>
+        <translation>線を非表示</translation>
     </message>
     <message>
         <source>Change Line Kinds</source>
-        <translation type="unfinished"></translation>
+        <translation>線の種類を変更</translation>
     </message>
     <message>
         <source>Change Line Style</source>
-        <translation type="unfinished"></translation>
+        <translation>線のスタイルを変更</translation>
     </message>
     <message>
         <source>Change Stereo Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオ設定を変更</translation>
     </message>
     <message>
         <source>The render camera is not valid (eye, target and up must differ).</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダーカメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
     </message>
     <message>
         <source>Set Render Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダーカメラを設定</translation>
     </message>
     <message>
         <source>Remove Render Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダーカメラを削除</translation>
     </message>
     <message>
         <source>The look&apos;s toon tones are not valid.</source>
-        <translation type="unfinished"></translation>
+        <translation>ルックのトゥーンの階調設定が不正です。</translation>
     </message>
     <message>
         <source>Apply Look</source>
-        <translation type="unfinished"></translation>
+        <translation>ルックを適用</translation>
     </message>
     <message>
         <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
-        <translation type="unfinished">先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
+        <translation>先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
     </message>
     <message>
         <source>The base model has no vertex %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースモデルに頂点 %1 はありません。</translation>
     </message>
     <message>
         <source>The brush radius must be a positive number.</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシ半径には正の数を指定してください。</translation>
     </message>
     <message>
         <source>The brush needs a valid camera (eye, target and up must differ).</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシには有効なカメラが必要です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
     </message>
     <message>
         <source>Brush “%1”</source>
-        <translation type="unfinished">ブラシ「%1」</translation>
+        <translation>ブラシ「%1」</translation>
     </message>
 </context>
 <context>
@@ -2090,22 +2090,22 @@ Recover it now?</source>
     </message>
     <message>
         <source>two highlight layers have the same id</source>
-        <translation type="unfinished"></translation>
+        <translation>2 つのハイライトレイヤーの ID が同じです</translation>
     </message>
     <message>
         <source>the current frame is not a frame number</source>
-        <translation type="unfinished"></translation>
+        <translation>現在のフレームがフレーム番号になっていません</translation>
     </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
     <message>
         <source>%1 is not in %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 が %2 にありません</translation>
     </message>
     <message>
         <source>raster images cannot be read or written: the OpenImageIO module cannot be loaded (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>ラスター画像を読み書きできません: OpenImageIO モジュールを読み込めません（%1）</translation>
     </message>
 </context>
 <context>
@@ -2131,41 +2131,41 @@ Recover it now?</source>
     <name>celform::views::AlignTool</name>
     <message>
         <source>Shift+click inside the drawing to place its point.</source>
-        <translation type="unfinished">参照画の内側を Shift + クリックして参照画側の点を配置してください。</translation>
+        <translation>参照画の内側を Shift + クリックして参照画側の点を配置してください。</translation>
     </message>
     <message>
         <source>Click on the model to place a model point; Shift+click places the drawing point.</source>
-        <translation type="unfinished">モデル上をクリックしてモデル側の点を配置します。Shift + クリックで参照画側の点を配置します。</translation>
+        <translation>モデル上をクリックしてモデル側の点を配置します。Shift + クリックで参照画側の点を配置します。</translation>
     </message>
     <message>
         <source>Click a feature on the model, then Shift+click the same feature on the drawing; six pairs or more, then Solve Camera.</source>
-        <translation type="unfinished">モデル上の特徴的な箇所をクリックし、参照画上の同じ箇所を Shift + クリックします。6 組以上指定したら「カメラを推定」を実行します。</translation>
+        <translation>モデル上の特徴的な箇所をクリックし、参照画上の同じ箇所を Shift + クリックします。6 組以上指定したら「カメラを推定」を実行します。</translation>
     </message>
     <message>
         <source>Show a drawing to align first.</source>
-        <translation type="unfinished">先に位置合わせする参照画を表示してください。</translation>
+        <translation>先に位置合わせする参照画を表示してください。</translation>
     </message>
     <message>
         <source>%1 pairs of points so far; the camera needs at least six.</source>
-        <translation type="unfinished">現在の対応点は %1 組です。カメラの推定には 6 組以上必要です。</translation>
+        <translation>現在の対応点は %1 組です。カメラの推定には 6 組以上必要です。</translation>
     </message>
     <message>
         <source>The camera could not be solved: %1</source>
-        <translation type="unfinished">カメラを推定できませんでした: %1</translation>
+        <translation>カメラを推定できませんでした: %1</translation>
     </message>
 </context>
 <context>
     <name>celform::views::BrushTool</name>
     <message>
         <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
-        <translation type="unfinished">先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
+        <translation>先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
     </message>
 </context>
 <context>
     <name>celform::views::FrameTimeline</name>
     <message>
         <source>Frames of the animation: diamonds are the selected layer&apos;s keys; click or drag to move the current frame</source>
-        <translation type="unfinished">アニメーションのフレームです。ひし形は選択したレイヤーのキーフレームを示します。クリックまたはドラッグで現在のフレームを移動します</translation>
+        <translation>アニメーションのフレームです。ひし形は選択したレイヤーのキーフレームを示します。クリックまたはドラッグで現在のフレームを移動します</translation>
     </message>
 </context>
 <context>
@@ -2930,11 +2930,11 @@ Recover it now?</source>
     <name>celform::views::PatchTool</name>
     <message>
         <source>Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.</source>
-        <translation type="unfinished">パッチ「%1」を描きます: ドラッグで面を追加、Ctrl+ドラッグで除去、[ と ] で半径を変更します。</translation>
+        <translation>パッチ「%1」を描きます: ドラッグで面を追加、Ctrl+ドラッグで除去、[ と ] で半径を変更します。</translation>
     </message>
     <message>
         <source>Choose or create a patch in the Highlights dock first.</source>
-        <translation type="unfinished">まずハイライトドックでパッチを選ぶか作成してください。</translation>
+        <translation>まずハイライトドックでパッチを選ぶか作成してください。</translation>
     </message>
 </context>
 <context>
