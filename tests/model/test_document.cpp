@@ -5,6 +5,7 @@
 #include "celform/model/io_error.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 
 using namespace celform;
 using namespace celform::model;
@@ -278,6 +279,87 @@ private slots:
         pyramid->faces.conservativeResize(3, 3);
         const ProjectData after = applyUndoRedo([&] { m_doc.setBaseMesh(pyramid, QStringLiteral("three.off")); });
         QVERIFY(after.faceSets.empty());
+    }
+
+    void editsMergeOnlyWithinAGestureOnTheSameProperty()
+    {
+        // DESIGN.md, "The document": a command merges only with the next command of the same
+        // property on the same target in the same gesture; two different edits are two steps.
+        QUndoStack* stack = m_doc.undoStack();
+        const int start = stack->count();
+        QSignalSpy changes(&m_doc, &Document::changed);
+        m_doc.beginGesture();
+        m_doc.setShadingStyle(ShadingStyle::Gooch);
+        m_doc.setShowLines(false);
+        for (int i = 1; i <= 3; ++i) {
+            Light light = m_doc.data().look.light;
+            light.vector = Eigen::Vector3d(0.1 * i, 0.6, 0.7).normalized();
+            m_doc.setLight(light);
+        }
+        Camera camera;
+        camera.eye = Eigen::Vector3d(0, 0, 4);
+        m_doc.setRenderCamera(camera);
+        m_doc.endGesture();
+        QCOMPARE(stack->count(), start + 4);
+        QCOMPARE(stack->text(start), QStringLiteral("Change Shading Style"));
+        QCOMPARE(stack->text(start + 1), QStringLiteral("Hide Lines"));
+        QCOMPARE(stack->text(start + 2), QStringLiteral("Move Light"));
+        QCOMPARE(stack->text(start + 3), QStringLiteral("Set Render Camera"));
+        QCOMPARE(changes.count(), 6); // one notification per edit, merged or not
+        for (const auto& args : changes)
+            QVERIFY(args.at(0).value<ChangeSet>().has(Part::Look));
+        // Undo takes back the render camera only, then the whole light drag.
+        stack->undo();
+        QVERIFY(!m_doc.data().look.renderCamera);
+        QVERIFY(m_doc.data().look.light.vector.isApprox(Eigen::Vector3d(0.3, 0.6, 0.7).normalized()));
+        stack->undo();
+        QVERIFY(m_doc.data().look.light.vector.isApprox(Light{}.vector));
+        QVERIFY(!m_doc.data().look.showLines);
+
+        // Outside a gesture, the same property twice is two steps.
+        const int blendStart = stack->index(); // the two steps undone above go with the next push
+        m_doc.setSharpness(2.0);
+        m_doc.setSharpness(3.0);
+        m_doc.setUnspecifiedMode(UnspecifiedMode::Cosine);
+        QCOMPARE(stack->count(), blendStart + 3);
+        // In one gesture, the same property on another target is another step; a gesture that
+        // comes back to where it began leaves no step.
+        const ObjectId a = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
+        const ObjectId b = m_doc.addDrawing(smallDrawing(QStringLiteral("b")));
+        const int drawingStart = stack->count();
+        m_doc.beginGesture();
+        m_doc.setDrawingOpacity(a, 0.2);
+        m_doc.setDrawingOpacity(b, 0.2);
+        m_doc.endGesture();
+        QCOMPARE(stack->count(), drawingStart + 2);
+        m_doc.beginGesture();
+        m_doc.setDrawingOpacity(a, 0.9);
+        m_doc.setDrawingOpacity(a, 0.2);
+        m_doc.endGesture();
+        QCOMPARE(stack->count(), drawingStart + 2);
+        QCOMPARE(m_doc.data().drawing(a)->opacity, 0.2);
+    }
+
+    void playheadIsNotAnEdit()
+    {
+        QSignalSpy changes(&m_doc, &Document::changed);
+        m_doc.setCurrentFrame(12);
+        QCOMPARE(m_doc.currentFrame(), 12);
+        QCOMPARE(changes.count(), 1);
+        const auto change = changes.front().at(0).value<ChangeSet>();
+        QVERIFY(change.onlyPlayhead());
+        QCOMPARE(change.frames, std::vector<int>{12});
+        QVERIFY(!m_doc.isModified());
+        QCOMPARE(m_doc.undoStack()->count(), 0);
+        m_doc.setCurrentFrame(12); // no move, no notification
+        QCOMPARE(changes.count(), 1);
+        // Saved with the project.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("frame.celform"));
+        m_doc.saveAs(path);
+        Document other;
+        other.open(path);
+        QCOMPARE(other.currentFrame(), 12);
     }
 
     void cleanStateFollowsUndo()

@@ -187,9 +187,11 @@ void Document::displaceKeyVertices(ObjectId id, int frame, const std::vector<std
         return;
     if (!validStep(indices, displacements, std::uint32_t(m_data.baseMesh->vertexCount())))
         return; // out of range, out of order or NaN: never written into the document
-    // A stroke's later steps: the command on top takes them in place.
-    if (m_openOffsets && m_openOffsets->key() == id && m_openOffsets->frame() == frame
-        && m_openOffsets->gesture() == m_gesture && m_gesture != 0 && m_openOffsets->absorb(indices, displacements))
+    // A stroke's later steps: the command on top of the stack takes them in place.
+    const bool onTop = m_openOffsets && m_undo->index() == m_undo->count() && m_undo->index() > 0
+        && m_undo->command(m_undo->index() - 1) == m_openOffsets;
+    if (onTop && m_openOffsets->key() == id && m_openOffsets->frame() == frame && m_openOffsets->gesture() == m_gesture
+        && m_gesture != 0 && m_openOffsets->absorb(indices, displacements))
         return;
 
     // The offsets the artist sees at this frame: the stored ones, or where the frame has none,
