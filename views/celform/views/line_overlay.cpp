@@ -89,8 +89,9 @@ void LineOverlay::update(
 {
     const bool sameView
         = view.eye == m_view.eye && view.direction == m_view.direction && view.orthographic == m_view.orthographic;
-    // The mesh's address only guards the generation: shapes of another mesh have other generations.
-    if (m_valid && sameView && &mesh == m_mesh && shape.generation == m_generation && settings == m_settings)
+    // A generation is never reused, and a new mesh comes with a new shape: it alone says whether
+    // the positions (and so the strokes) can have changed.
+    if (m_valid && sameView && shape.generation != 0 && shape.generation == m_generation && settings == m_settings)
         return;
     const algo::EdgeTopology& topology = mesh.edgeTopology();
     algo::FeatureEdges features;

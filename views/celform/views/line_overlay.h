@@ -48,7 +48,7 @@ public:
     void clear();
 
 private:
-    const algo::TriMesh* m_mesh = nullptr; ///< identity of the mesh the strokes belong to
+    const algo::TriMesh* m_mesh = nullptr; ///< the mesh the strokes were extracted on (its size)
     std::uint64_t m_generation = 0; ///< of the shape the strokes were extracted from
     algo::LineView m_view;
     algo::LineSettings m_settings;
