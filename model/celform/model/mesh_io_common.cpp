@@ -1,0 +1,51 @@
+// The out-of-line parts of the readers' shared helpers (mesh_io_common.h): opening and mapping
+// the file, and the messages for skipped faces, impossible counts and unexpected text.
+#include "celform/model/mesh_io_common.h"
+
+#include <QFileInfo>
+
+namespace celform::model::meshio {
+
+FileBytes::FileBytes(const QString& path)
+    : m_file(path)
+{
+    if (!QFileInfo::exists(path))
+        throw IoError(path, MeshIo::tr("the file does not exist"));
+    if (!m_file.open(QIODevice::ReadOnly))
+        throw IoError(path, MeshIo::tr("the file cannot be opened: %1").arg(m_file.errorString()));
+    const qint64 size = m_file.size();
+    if (size == 0)
+        throw IoError(path, MeshIo::tr("the file is empty"));
+    if (uchar* mapped = m_file.map(0, size)) {
+        m_data = reinterpret_cast<const char*>(mapped);
+        m_size = static_cast<std::size_t>(size);
+    } else {
+        m_copy = m_file.readAll();
+        if (m_copy.size() != size)
+            throw IoError(path, MeshIo::tr("the file cannot be read: %1").arg(m_file.errorString()));
+        m_data = m_copy.constData();
+        m_size = static_cast<std::size_t>(m_copy.size());
+    }
+}
+
+QString skippedFacesWarning(std::int64_t skipped)
+{
+    if (skipped == 1)
+        return MeshIo::tr("1 face with fewer than three corners ignored");
+    return MeshIo::tr("%n faces with fewer than three corners ignored", nullptr, static_cast<int>(skipped));
+}
+
+[[noreturn]] void throwTooLarge(const QString& path, std::int64_t vertices, std::int64_t faces)
+{
+    throw IoError(path,
+        MeshIo::tr("the header announces %1 vertices and %2 faces, more than the file holds").arg(vertices).arg(faces));
+}
+
+void TextCursor::fail(const char* what) const
+{
+    if (m_p >= m_end)
+        throw IoError(m_path, MeshIo::tr("the file ends early, while reading %1").arg(MeshIo::tr(what)));
+    throw IoError(m_path, MeshIo::tr("line %1: expected %2").arg(m_line).arg(MeshIo::tr(what)));
+}
+
+} // namespace celform::model::meshio
