@@ -29,11 +29,12 @@ inline constexpr int kViewportHighlightCombinations = 2;
 /// array mapped as a custom attribute, not VTK's view-space normal); the light vector, the eye
 /// and the view axis are uniforms in model space (the actor has no transform).
 ///
-/// Per-face data (a float texture the fragment shader reads by gl_PrimitiveID, as render.cpp reads
-/// its G-buffer's face id): the face's material (colour, style and Gooch coefficients, which the
-/// "auto" preset sets per material), so nothing of a material is interpolated across faces, and
-/// for the PerFace toon evaluation the face's tone as render.cpp computes it (face normal, light
-/// at the face's centre, mean of the corners' offsets), from either side of the face.
+/// Per-face data (LookFaceTable: a float texture the fragment shader reads by gl_PrimitiveID, as
+/// render.cpp reads its G-buffer's face id): the face's material (colour, style and Gooch
+/// coefficients, which the "auto" preset sets per material), so nothing of a material is
+/// interpolated across faces, and for the PerFace toon evaluation the face's tone as render.cpp
+/// computes it (face normal, light at the face's centre, mean of the corners' offsets), from
+/// either side of the face.
 ///
 /// Per-vertex attributes (point arrays added to the polydata): the shading offset O_v (paper 3,
 /// equation 4.3), the PerVertexLut intensity (lookupIntensity of N.L + O_v, computed here on the
