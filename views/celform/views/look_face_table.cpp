@@ -2,6 +2,8 @@
 // its upload as a texture in VTK 9.1's drawing order (degenerate triangles left out).
 #include "celform/views/look_face_table.h"
 
+#include "celform/views/look_shading.h"
+
 #include "celform/algorithms/shading.h"
 
 #include <vtkCallbackCommand.h>
@@ -19,6 +21,7 @@
 #include <QtGlobal>
 
 #include <algorithm>
+#include <string>
 
 namespace celform::views {
 namespace {
@@ -32,6 +35,12 @@ constexpr int kFaceTableShift = 12;
 /// Tone indices the shader's uniforms hold (cfIntensities[8]): the per-face tones are stored as
 /// indices into them, front + 8 * back.
 constexpr int kMaxTones = 8;
+/// The code in a face's first texel: style in bits 0-1, one bit per highlight layer from bit 2
+/// (set where the face is in the layer's patch), the material entry above. A float holds it
+/// exactly below 2^24, so entries stop at 2^18 - 1.
+constexpr int kPatchShift = 2;
+constexpr int kEntryShift = kPatchShift + kViewportHighlightLayers;
+constexpr std::size_t kMaxEntries = std::size_t(1) << (24 - kEntryShift);
 
 // The texture's layout, for the fragment shader.
 const char* const kGlsl = R"glsl(
@@ -39,13 +48,14 @@ const char* const kGlsl = R"glsl(
 // 2^cfFaceTableShift (shifts and masks: software GL divides slowly).
 // First 3 texels per material entry, the Gooch coefficients: (ka, k1, k2, k3), (k4, warm),
 // (cool, 0); the last entry is the look's fallback for material indices it has nothing for.
-// Then 2 texels per triangle VTK draws, in its drawing order: (base colour, 4 * material entry +
-// style), and for the PerFace toon evaluation (unit face normal, tone index seen from the
-// normal's side + 8 * tone index from the other side). One fetch per fragment for most looks.
-// When every face has the same first texel and nothing per face is needed (one material, no
-// PerFace tones: the usual case), the shaders are built without the table (CF_FACE_TABLE not
-// defined): that texel and its material's entry come as uniforms, and neither gl_PrimitiveID nor
-// a texture is read, so such a look costs what it did before the table.
+// Then 2 texels per triangle VTK draws, in its drawing order: (base colour, code), the code
+// holding the style, the highlight layers whose patch has the face and the material entry (see
+// cfCodeStyle and after), and for the PerFace toon evaluation (unit face normal, tone index seen
+// from the normal's side + 8 * tone index from the other side). One fetch per fragment for most
+// looks. When every face has the same first texel and nothing per face is needed (one material,
+// no PerFace tones, no highlight patch: the usual case), the shaders are built without the table
+// (CF_FACE_TABLE not defined): that texel and its material's entry come as uniforms, and neither
+// gl_PrimitiveID nor a texture is read, so such a look costs what it did before the table.
 #ifdef CF_FACE_TABLE
 uniform sampler2D cfFaceTable;
 uniform int cfFaceTableShift;
@@ -77,15 +87,22 @@ uniform vec4 cfSameFace;
 uniform vec4 cfSameGooch[3];
 #endif
 
-// The parts of the code in a face's first texel (its w, rounded).
+// The parts of the code in a face's first texel (its w, rounded): the style (0 Lambert, 1 toon,
+// 2 Gooch, 3 comic), whether the face is in highlight layer `layer`'s patch (render.cpp tests the
+// layer's faceMask at the pixel's face), and the material entry.
 int cfCodeStyle(int code)
 {
   return code & 3;
 }
 
+bool cfCodeInPatch(int code, int layer)
+{
+  return ((code >> (CF_PATCH_SHIFT + layer)) & 1) != 0;
+}
+
 int cfCodeEntry(int code)
 {
-  return code >> 2;
+  return code >> CF_ENTRY_SHIFT;
 }
 )glsl";
 
@@ -139,30 +156,44 @@ LookFaceTable::~LookFaceTable()
 
 std::string LookFaceTable::glslDeclarations()
 {
-    return kGlsl;
+    return "#define CF_PATCH_SHIFT " + std::to_string(kPatchShift) + "\n#define CF_ENTRY_SHIFT "
+        + std::to_string(kEntryShift) + "\n" + kGlsl;
 }
 
 void LookFaceTable::update(const algo::RenderLook& look, const algo::TriMesh& mesh, const algo::Positions& shape,
-    const std::vector<float>& offsets)
+    const std::vector<float>& offsets, const std::vector<algo::RenderHighlight>& highlights)
 {
     // Material entries: the Gooch coefficients (paper 1, section 3.2.4; the "auto" preset sets
     // them per material), one entry per index of the look's lists and one more, the look's own
     // set, for indices beyond them (and negative ones), as render.cpp resolves them.
-    const std::size_t materials
+    // (The code's bits hold kMaxEntries entries: beyond, the fallback set, with a warning.)
+    const std::size_t listed
         = std::max({look.materialColors.size(), look.materialStyles.size(), look.materialGooch.size()});
+    const std::size_t materials = std::min(listed, kMaxEntries - 1);
+    if (listed > materials && !m_tooManyMaterials)
+        qWarning(
+            "Look shading: the viewport shades materials from %zu on with the look's Gooch coefficients", materials);
+    m_tooManyMaterials = listed > materials;
     std::vector<float> materialTable(kMaterialFloats * (materials + 1), 0.f);
     for (std::size_t e = 0; e <= materials; ++e) {
-        const algo::GoochParams& g = e < look.materialGooch.size() ? look.materialGooch[e] : look.gooch;
+        const algo::GoochParams& g
+            = e < materials && e < look.materialGooch.size() ? look.materialGooch[e] : look.gooch;
         const std::array<float, kMaterialFloats> entry = {
             g.ka, g.k1, g.k2, g.k3, g.k4, g.warm.x(), g.warm.y(), g.warm.z(), g.cool.x(), g.cool.y(), g.cool.z(), 0.f};
         std::copy(entry.begin(), entry.end(), materialTable.begin() + std::ptrdiff_t(e * kMaterialFloats));
     }
 
     // Per face: its material's colour and style (each from the look's list when it has the
-    // index, else the look's default, as render.cpp resolves them) and material entry, and for
-    // the PerFace toon evaluation its unit normal and the tone render.cpp gives it from either
-    // side (which side faces the eye is decided per fragment: the camera moves without an update).
+    // index, else the look's default, as render.cpp resolves them) and material entry, the
+    // layers whose patch it is in (render.cpp's highlightAt skips a layer at a pixel whose face
+    // its faceMask leaves out; an empty mask has every face), and for the PerFace toon evaluation
+    // its unit normal and the tone render.cpp gives it from either side (which side faces the eye
+    // is decided per fragment: the camera moves without an update).
     const algo::Faces& faces = mesh.faces;
+    const std::size_t layers = std::min<std::size_t>(highlights.size(), kViewportHighlightLayers);
+    const auto inPatch = [&](const algo::RenderHighlight& h, Eigen::Index f) {
+        return h.faceMask.empty() || (std::size_t(f) < h.faceMask.size() && h.faceMask[std::size_t(f)] != 0);
+    };
     const bool perFace = look.toonEvaluation == algo::ToonEvaluation::PerFace;
     const auto offsetAt
         = [&](std::int32_t v) { return std::size_t(v) < offsets.size() ? offsets[std::size_t(v)] : 0.f; };
@@ -179,7 +210,11 @@ void LookFaceTable::update(const algo::RenderLook& look, const algo::TriMesh& me
         row[0] = color.x();
         row[1] = color.y();
         row[2] = color.z();
-        row[3] = float(4 * std::min(index, materials) + std::size_t(styleIndex(style)));
+        std::size_t patches = 0;
+        for (std::size_t l = 0; l < layers; ++l)
+            patches |= inPatch(highlights[l], f) ? std::size_t(1) << l : 0;
+        const std::size_t entry = std::min(index, materials);
+        row[3] = float((entry << kEntryShift) | (patches << kPatchShift) | std::size_t(styleIndex(style)));
         if (!perFace)
             continue;
         // render.cpp, ToonEvaluation::PerFace, the same expressions in the same order.
@@ -205,7 +240,7 @@ void LookFaceTable::update(const algo::RenderLook& look, const algo::TriMesh& me
     m_sameGooch.fill(0.f);
     if (same) {
         std::copy_n(faceTable.begin(), 4, m_sameFace.begin());
-        const auto entry = std::size_t(faceTable[3] + 0.5f) / 4;
+        const auto entry = std::size_t(faceTable[3] + 0.5f) >> kEntryShift;
         std::copy_n(
             materialTable.begin() + std::ptrdiff_t(entry * kMaterialFloats), kMaterialFloats, m_sameGooch.begin());
     }

@@ -1,5 +1,5 @@
-// The per-face data of the viewport's look (LookShading): each face's material and PerFace tones,
-// resolved as render.cpp does, uploaded as a float texture in the order VTK draws the triangles.
+// The per-face data of the viewport's look (LookShading): each face's material, PerFace tones and
+// highlight patches, resolved as render.cpp does, uploaded as a texture in VTK's drawing order.
 #pragma once
 
 #include "celform/algorithms/render.h"
@@ -33,7 +33,7 @@ namespace celform::views {
 /// interpolated across faces.
 ///
 /// When every face has the same data and nothing per face is needed (the usual case: one
-/// material, no PerFace tones), needed() is false and the shaders are built without the table:
+/// material, no PerFace tones, no highlight patch), needed() is false and the shaders are built without the table:
 /// setUniforms() then passes the shared data as uniforms and no texture is made.
 class LookFaceTable {
 public:
@@ -50,10 +50,12 @@ public:
     [[nodiscard]] static std::string glslDeclarations();
 
     /// Resolves each face's data for the look on the displayed shape (#V by 3): its material's
-    /// colour, style and Gooch entry, and for the PerFace toon evaluation its normal and tones
-    /// (offsets: per-vertex shading offsets, empty for none). The upload waits for the next draw.
+    /// colour, style and Gooch entry, whether it is in the patch of each of the highlight layers
+    /// the shaders draw (the first kViewportHighlightLayers of `highlights`, by their faceMask),
+    /// and for the PerFace toon evaluation its normal and tones (offsets: per-vertex shading
+    /// offsets, empty for none). The upload waits for the next draw.
     void update(const algo::RenderLook& look, const algo::TriMesh& mesh, const algo::Positions& shape,
-        const std::vector<float>& offsets);
+        const std::vector<float>& offsets, const std::vector<algo::RenderHighlight>& highlights);
     /// Whether the faces differ, so the shaders must read the table (CF_FACE_TABLE).
     [[nodiscard]] bool needed() const { return m_needed; }
 
@@ -97,6 +99,7 @@ private:
     int m_faceBase = 0; ///< first face texel in the texture
     int m_shift = 0; ///< log2 of its width
     bool m_tooLarge = false;
+    bool m_tooManyMaterials = false;
 };
 
 } // namespace celform::views

@@ -42,8 +42,7 @@ constexpr const char* kOffsetArray = "cfShadingOffset";
 constexpr const char* kLutArray = "cfLutIntensity";
 // Highlights: per layer the vertex's du and the handedness of its frame (dv = w * N x du, as
 // makeTangentFrame builds it, N the layer's normal), and per layer the layer's smoothed normal
-// (zero: the surface's) with, in w, 1 where the vertex belongs to the layer's patch. The patch
-// rides along with the normal to keep the vertex attributes within GL 3.2's 16.
+// (zero: the surface's). The layers' patches are per face, in the face table (LookFaceTable).
 constexpr int kMaxHighlightLayers = kViewportHighlightLayers;
 constexpr int kMaxHighlightCombinations = kViewportHighlightCombinations;
 constexpr int kMaxHighlightOperations = kViewportHighlightOperations;
@@ -59,7 +58,7 @@ constexpr const char* kHighlightNormalAttributes[kMaxHighlightLayers]
 // Vertex shader: model-space position and normal, and the per-vertex look attributes, passed on.
 // The highlight layers' attributes and varyings are added per layer in use (layerDeclarations):
 // with none, the shader carries none of them (software GL interpolates every varying of every
-// fragment). With 4 layers: 48 varying components (GL 3.2 guarantees 60), 13 attributes (16).
+// fragment). With 4 layers: 44 varying components (GL 3.2 guarantees 60), 13 attributes (16).
 const char* const kVertexDec = R"glsl(//VTK::Normal::Dec
 in vec3 cfNormalAttr;
 in float cfOffsetAttr;
@@ -128,18 +127,19 @@ float cfEncode(float l)
   return l > 0.0031308 ? 1.055 * pow(l, 1.0 / 2.4) - 0.055 : 12.92 * l;
 }
 
-// render.cpp's highlightAt, one layer: "over" with premultiplied colour, nothing outside the
-// layer's patch (all three vertices in it), evaluated with the layer's normal (its interpolated
-// smoothed normal, else n). The coverage is evaluated everywhere so that its derivatives stay in
-// uniform control flow.
-void cfHighlightOver(int layer, vec3 du, vec3 dv, vec3 layerNormal, float mask, vec3 p, vec3 n,
+// render.cpp's highlightAt, one layer: "over" with premultiplied colour, nothing on a face outside
+// the layer's patch (inPatch: the face's bit in the face table, as render.cpp tests the layer's
+// faceMask at the pixel's face), evaluated with the layer's normal (its interpolated smoothed
+// normal, else n). The coverage is evaluated everywhere so that its derivatives stay in uniform
+// control flow.
+void cfHighlightOver(int layer, vec3 du, vec3 dv, vec3 layerNormal, bool inPatch, vec3 p, vec3 n,
     inout float coverage, inout vec3 premultiplied)
 {
   if (layer >= cfHlLayerCount)
     return;
   vec3 ln = cfHighlightNormal(layerNormal, n);
   float c = cfLayerCoverage(layer, p, ln, du, dv, cfLightVector, cfPointLight != 0, cfEye);
-  c = mask > 0.999 ? c : 0.0;
+  c = inPatch ? c : 0.0;
   premultiplied = premultiplied * (1.0 - c) + cfHlColor[layer] * c;
   coverage = c + coverage * (1.0 - c);
 }
@@ -223,8 +223,8 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
 
 /// The per-layer parts of the shaders for `layers` highlight layers in use (0 to 4): the vertex
 /// attributes and varyings, the frames (dv = w * (N x du), N the layer's smoothed normal where
-/// it has one, else the surface's, as renderHighlightsFor builds them), the patch flag (a fragment
-/// is in the patch when all three corners are), and each layer's "over" in the fragment shader.
+/// it has one, else the surface's, as renderHighlightsFor builds them), and each layer's "over" in
+/// the fragment shader, on the faces of its patch (the face code's bit for the layer).
 struct HighlightShaderParts {
     std::string vertexDec, vertexImpl, fragmentDec, fragmentImpl;
 };
@@ -235,15 +235,14 @@ HighlightShaderParts highlightShaderParts(int layers)
     std::string over;
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        parts.vertexDec += "in vec4 cfHlDuAttr" + n + ";\nin vec4 cfHlNAttr" + n + ";\nout vec3 cfHlDu" + n
-            + ";\nout vec3 cfHlDv" + n + ";\nout vec3 cfHlN" + n + ";\nout float cfHlMask" + n + ";\n";
+        parts.vertexDec += "in vec4 cfHlDuAttr" + n + ";\nin vec3 cfHlNAttr" + n + ";\nout vec3 cfHlDu" + n
+            + ";\nout vec3 cfHlDv" + n + ";\nout vec3 cfHlN" + n + ";\n";
         parts.vertexImpl += "  cfHlDu" + n + " = cfHlDuAttr" + n + ".xyz;\n  cfHlDv" + n + " = cfHlDuAttr" + n
-            + ".w * cross(cfFrameNormal(cfHlNAttr" + n + ".xyz, cfNv), cfHlDuAttr" + n + ".xyz);\n  cfHlN" + n
-            + " = cfHlNAttr" + n + ".xyz;\n  cfHlMask" + n + " = cfHlNAttr" + n + ".w;\n";
-        parts.fragmentDec += "in vec3 cfHlDu" + n + ";\nin vec3 cfHlDv" + n + ";\nin vec3 cfHlN" + n
-            + ";\nin float cfHlMask" + n + ";\n";
-        over += "      cfHighlightOver(" + n + ", cfHlDu" + n + ", cfHlDv" + n + ", cfHlN" + n + ", cfHlMask" + n
-            + ", cfP, cfN, cfHlCoverage, cfHlPremultiplied);\n";
+            + ".w * cross(cfFrameNormal(cfHlNAttr" + n + ", cfNv), cfHlDuAttr" + n + ".xyz);\n  cfHlN" + n
+            + " = cfHlNAttr" + n + ";\n";
+        parts.fragmentDec += "in vec3 cfHlDu" + n + ";\nin vec3 cfHlDv" + n + ";\nin vec3 cfHlN" + n + ";\n";
+        over += "      cfHighlightOver(" + n + ", cfHlDu" + n + ", cfHlDv" + n + ", cfHlN" + n
+            + ", cfCodeInPatch(cfFaceCode, " + n + "), cfP, cfN, cfHlCoverage, cfHlPremultiplied);\n";
     }
     if (layers > 0)
         parts.fragmentImpl = "    // Highlights after shading, before lines: mix(shaded, layer colour, coverage).\n"
@@ -342,8 +341,8 @@ struct LookShading::Impl {
         namedArray(kHighlightDuArrays[1], 4), namedArray(kHighlightDuArrays[2], 4),
         namedArray(kHighlightDuArrays[3], 4)};
     std::array<vtkSmartPointer<vtkFloatArray>, kMaxHighlightLayers> highlightNormal{
-        namedArray(kHighlightNormalArrays[0], 4), namedArray(kHighlightNormalArrays[1], 4),
-        namedArray(kHighlightNormalArrays[2], 4), namedArray(kHighlightNormalArrays[3], 4)};
+        namedArray(kHighlightNormalArrays[0], 3), namedArray(kHighlightNormalArrays[1], 3),
+        namedArray(kHighlightNormalArrays[2], 3), namedArray(kHighlightNormalArrays[3], 3)};
     Uniforms uniforms;
     bool active = false;
     int compiledLayers = -1; ///< highlight layers the installed shaders carry; -1: none installed
@@ -542,8 +541,11 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
                                                                              : 0;
     u.lineColor = {look.lineStyle.color.x(), look.lineStyle.color.y(), look.lineStyle.color.z()};
 
-    // Each face's material and PerFace tones, as render.cpp resolves them.
-    m->faceTable.update(look, *mesh, shape, data.shadingOffsets);
+    // The highlight layers, then each face's material, PerFace tones and patches, as render.cpp
+    // resolves them.
+    const std::vector<algo::RenderHighlight> layers
+        = updateHighlights(data, shape, normals, frame, count, shapeGeneration);
+    m->faceTable.update(look, *mesh, shape, data.shadingOffsets, layers);
 
     // Per vertex: the shading offset and the PerVertexLut intensity.
     const auto offsetAt = [&](Eigen::Index v) {
@@ -564,7 +566,6 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
             lut[v] = algo::lookupIntensity(u.lut, n.dot(lookLightDirection(light, look.pointLight, p)) + offset[v]);
         }
     }
-    updateHighlights(data, shape, normals, frame, count, shapeGeneration);
     for (vtkFloatArray* a : {m->offsets.Get(), m->lut.Get()})
         a->Modified();
     m->attachArrays();
@@ -575,12 +576,12 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
     m->mesh->Modified();
 }
 
-void LookShading::updateHighlights(const model::ProjectData& data, const algo::Positions& shape, const float* normals,
-    int frame, Eigen::Index count, std::uint64_t shapeGeneration)
+std::vector<algo::RenderHighlight> LookShading::updateHighlights(const model::ProjectData& data,
+    const algo::Positions& shape, const float* normals, int frame, Eigen::Index count, std::uint64_t shapeGeneration)
 {
     // The offline renderer's resolution of the tracks at the frame (keys, combinations, patches,
     // per-vertex frames), so both paths draw the same layers.
-    const std::vector<algo::RenderHighlight> layers
+    std::vector<algo::RenderHighlight> layers
         = model::renderHighlightsFor(data, data.look, shape, frame, &m->highlightCache, shapeGeneration);
     Uniforms& u = m->uniforms;
     u.hlLayerCount = int(std::min<std::size_t>(layers.size(), kMaxHighlightLayers));
@@ -600,7 +601,6 @@ void LookShading::updateHighlights(const model::ProjectData& data, const algo::P
             a->FillValue(0.f);
             a->Modified();
         }
-    const algo::Faces& faces = data.baseMesh->faces;
     for (int layer = 0; layer < u.hlLayerCount; ++layer) {
         const algo::RenderHighlight& h = layers[std::size_t(layer)];
         const auto l = std::size_t(layer);
@@ -617,19 +617,12 @@ void LookShading::updateHighlights(const model::ProjectData& data, const algo::P
                 = c.mode == algo::HighlightBoolean::Union ? 0 : 1;
             storeShape(u, layer * (1 + kMaxHighlightCombinations) + 1 + k, c.shape);
         }
-        // The layer's smoothed normals (zero: the surface's), and the patch per vertex in w: 1 on
-        // every vertex of a patch face (all faces for no mask).
+        // The layer's smoothed normals (zero: the surface's).
         float* layerNormal = m->highlightNormal[l]->GetPointer(0);
         const bool haveNormals = h.normals.rows() == count;
         for (Eigen::Index v = 0; haveNormals && v < count; ++v)
             for (int k = 0; k < 3; ++k)
-                layerNormal[4 * v + k] = h.normals(v, k);
-        for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-            if (!h.faceMask.empty() && (std::size_t(f) >= h.faceMask.size() || !h.faceMask[std::size_t(f)]))
-                continue;
-            for (int k = 0; k < 3; ++k)
-                layerNormal[4 * std::size_t(faces(f, k)) + 3] = 1.f;
-        }
+                layerNormal[3 * v + k] = h.normals(v, k);
         // du and the handedness w of each vertex frame: dv = w * (N x du), N the normal the
         // vertex shader builds dv with (cfFrameNormal: the layer's, else the surface's).
         float* du = m->highlightDu[l]->GetPointer(0);
@@ -637,7 +630,7 @@ void LookShading::updateHighlights(const model::ProjectData& data, const algo::P
         for (Eigen::Index v = 0; haveFrames && v < count; ++v) {
             const Eigen::Vector3f d = h.du.row(v);
             const Eigen::Vector3f e = h.dv.row(v);
-            Eigen::Vector3f n(layerNormal[4 * v], layerNormal[4 * v + 1], layerNormal[4 * v + 2]);
+            Eigen::Vector3f n(layerNormal[3 * v], layerNormal[3 * v + 1], layerNormal[3 * v + 2]);
             if (!(n.squaredNorm() > 0.f))
                 n = Eigen::Vector3f(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
             const float nl = n.norm();
@@ -649,6 +642,8 @@ void LookShading::updateHighlights(const model::ProjectData& data, const algo::P
             du[4 * v + 3] = handedness > 0.f ? 1.f : (handedness < 0.f ? -1.f : 0.f);
         }
     }
+    layers.resize(std::size_t(u.hlLayerCount)); // those beyond the shader's are not drawn
+    return layers;
 }
 
 } // namespace celform::views
