@@ -157,6 +157,26 @@ private:
         return image;
     }
 
+    /// The face under the centroid of the pixels of the highlight colour (within 24 per channel),
+    /// -1 when there are none.
+    static std::int32_t highlightCentreFace(
+        const QImage& image, const celform::algo::RenderPasses& passes, const std::array<int, 3>& color)
+    {
+        double sx = 0, sy = 0;
+        long n = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x)
+                if (channelDistance(rgbAt(image, x, y), color) <= 24) {
+                    sx += x;
+                    sy += y;
+                    ++n;
+                }
+        if (n == 0)
+            return -1;
+        const int x = int(sx / double(n)), y = int(sy / double(n));
+        return passes.id[std::size_t(y * kSize + x)];
+    }
+
     void useMesh(std::shared_ptr<const TriMesh> mesh, const Camera& camera)
     {
         ProjectData data;
@@ -534,15 +554,22 @@ private slots:
     {
         QTest::addColumn<bool>("combined");
         QTest::addColumn<int>("smoothing");
-        QTest::newRow("one layer") << false << 0;
-        QTest::newRow("subtraction and off-specular cut") << true << 0;
-        QTest::newRow("smoothed normals on a bumpy sphere") << false << 10;
+        // A patch of every face but one, on a coarse sphere (faces about 40 pixels a side): the
+        // face left out lies under the highlight at frame 0 and its three corners all lie on
+        // patch faces. render.cpp tests the patch per face (RenderHighlight::faceMask), so that
+        // face shows no highlight.
+        QTest::addColumn<bool>("oneFaceHole");
+        QTest::newRow("one layer") << false << 0 << false;
+        QTest::newRow("subtraction and off-specular cut") << true << 0 << false;
+        QTest::newRow("smoothed normals on a bumpy sphere") << false << 10 << false;
+        QTest::newRow("patch with a one-face hole under the highlight") << false << 0 << true;
     }
 
     void highlightsMatchTheRenderer()
     {
         QFETCH(bool, combined);
         QFETCH(int, smoothing);
+        QFETCH(bool, oneFaceHole);
         // One layer, light and eye on the same axis: the area sits around the sphere's centre
         // and the translation moves it along du (the guide, +Y) by frame. With smoothing, the
         // sphere's vertices are moved in and out a little (noisy normals, as on a scanned model)
@@ -571,6 +598,8 @@ private slots:
             }
             data.baseMesh = std::move(bumpy);
         }
+        if (oneFaceHole)
+            data.baseMesh = celform::test::icosphere(2);
         data.shadingOffsets.clear();
         data.look = baseLook();
         data.look.light.vector = Eigen::Vector3d(0.0, 0.0, 1.0);
@@ -586,6 +615,34 @@ private slots:
             data.look.highlights.push_back(hole);
         }
         data.look.highlights.push_back(track);
+        std::int32_t holeFace = -1;
+        if (oneFaceHole) {
+            // The face under the centre of the highlight the renderer draws at frame 0 without
+            // a patch, then a patch of all the others.
+            const auto faceCount = std::int32_t(data.baseMesh->faceCount());
+            m_doc->reset(ProjectData(data));
+            m_view->setCamera(m_camera);
+            celform::algo::RenderPasses passes;
+            const QImage cpu = cpuImage(&passes, 0);
+            holeFace = highlightCentreFace(cpu, passes, encode8(yellow));
+            QVERIFY(holeFace >= 0);
+            celform::algo::FaceSet patch;
+            patch.name = "all but one";
+            for (std::int32_t f = 0; f < faceCount; ++f)
+                if (f != holeFace)
+                    patch.faces.push_back(f);
+            // Each corner of the hole is a corner of some patch face: per vertex, the hole's
+            // corners are all in the patch.
+            for (int k = 0; k < 3; ++k) {
+                const std::int32_t corner = data.baseMesh->faces(holeFace, k);
+                bool onPatch = false;
+                for (const std::int32_t f : patch.faces)
+                    onPatch = onPatch || (data.baseMesh->faces.row(f).array() == corner).any();
+                QVERIFY(onPatch);
+            }
+            data.faceSets.push_back(std::move(patch));
+            data.look.highlights.back().patch = QStringLiteral("all but one");
+        }
         m_doc->reset(std::move(data));
         m_view->setCamera(m_camera);
         QCOMPARE(m_doc->currentFrame(), 0);
@@ -600,10 +657,21 @@ private slots:
             const QImage cpu = cpuImage(&passes, frameNumber);
             const QString tag = combined ? QStringLiteral("combined_")
                 : smoothing > 0          ? QStringLiteral("smoothed_")
+                : oneFaceHole            ? QStringLiteral("hole_")
                                          : QString();
             gpu.save(QStringLiteral("/tmp/look_highlight_%1f%2_viewport.png").arg(tag).arg(frameNumber));
             cpu.save(QStringLiteral("/tmp/look_highlight_%1f%2_cpu.png").arg(tag).arg(frameNumber));
-            long gpuBright = 0, cpuBright = 0, bothBright = 0, compared = 0;
+            // What the renderer shows at each pixel: the highlight (-2), else the tone; the pixels
+            // within kBand of a change (highlight edges, antialiased differently by the two paths,
+            // and tone boundaries) are left out of the count of pixels off by more than 2.
+            std::vector<int> region(std::size_t(kSize * kSize), -1);
+            for (int i = 0; i < kSize * kSize; ++i)
+                if (passes.id[std::size_t(i)] >= 0)
+                    region[std::size_t(i)] = channelDistance(rgbAt(cpu, i % kSize, i / kSize), hl8) <= 24
+                        ? -2
+                        : int(std::lround(passes.tone[std::size_t(i)] * 1000.f));
+            long gpuBright = 0, cpuBright = 0, bothBright = 0, compared = 0, holePixels = 0, holeBright = 0;
+            long away = 0, over2 = 0;
             double sum[3] = {0, 0, 0};
             double gx = 0, gy = 0, cx = 0, cy = 0;
             for (int y = kBand; y < kSize - kBand; ++y)
@@ -635,6 +703,18 @@ private slots:
                     for (int k = 0; k < 3; ++k)
                         sum[k] += std::abs(g[std::size_t(k)] - c[std::size_t(k)]);
                     ++compared;
+                    bool edge = false;
+                    for (int dy = -kBand; dy <= kBand && !edge; ++dy)
+                        for (int dx = -kBand; dx <= kBand && !edge; ++dx)
+                            edge = region[std::size_t((y + dy) * kSize + x + dx)] != region[std::size_t(y * kSize + x)];
+                    if (!edge) {
+                        ++away;
+                        over2 += channelDistance(g, c) > 2 ? 1 : 0;
+                    }
+                    if (passes.id[std::size_t(y * kSize + x)] == holeFace) {
+                        ++holePixels;
+                        holeBright += gb ? 1 : 0;
+                    }
                 }
             QVERIFY(compared > 10000);
             QVERIFY2(cpuBright > 500, qPrintable(QStringLiteral("%1 highlight pixels").arg(cpuBright)));
@@ -642,12 +722,19 @@ private slots:
             const double overlap = double(bothBright) / double(std::max(gpuBright, cpuBright));
             const double shift = std::hypot(gx / gpuBright - cx / cpuBright, gy / gpuBright - cy / cpuBright);
             centroidY[frameNumber == 0 ? 0 : 1] = cy / cpuBright;
-            qInfo("%s, frame %d: %ld pixels compared, mean |diff| per channel %.3f %.3f %.3f (of 255); "
-                  "highlight pixels viewport %ld, renderer %ld, overlap %.4f, centroid shift %.3f px",
+            qInfo("%s, frame %d: %ld pixels compared, mean |diff| per channel %.3f %.3f %.3f (of 255), "
+                  "of %ld away from edges %ld over 2; highlight pixels viewport %ld, renderer %ld, "
+                  "overlap %.4f, centroid shift %.3f px; hole %ld pixels, %ld highlighted in the viewport",
                 QTest::currentDataTag(), frameNumber, compared, sum[0] / compared, sum[1] / compared, sum[2] / compared,
-                gpuBright, cpuBright, overlap, shift);
+                away, over2, gpuBright, cpuBright, overlap, shift, holePixels, holeBright);
+            if (oneFaceHole && frameNumber == 0)
+                QVERIFY2(holePixels > 300, "the hole must be in view under the highlight");
             for (double v : sum)
                 QVERIFY2(v / compared < 3.0, "mean difference per channel must stay under 3/255");
+            // A highlight on a wrong face hides in the mean: away from edges, at most one pixel in a
+            // thousand may differ by more than 2.
+            QVERIFY(away > compared / 2);
+            QVERIFY2(over2 <= away / 1000, qPrintable(QStringLiteral("%1 pixels differ by more than 2").arg(over2)));
             QVERIFY2(overlap > 0.97, "the highlight must cover the same pixels");
             QVERIFY2(shift < 1.0, "the highlight must sit at the same place");
         }

@@ -3,6 +3,8 @@
 // (STACK.md pitfall 6).
 #include "celform/views/look_shading.h"
 
+#include "celform/views/look_face_table.h"
+
 #include "celform/algorithms/render.h"
 #include "celform/algorithms/shading.h"
 #include "celform/model/render_output.h"
@@ -11,31 +13,23 @@
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkDataObject.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
-#include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderProperty.h>
 #include <vtkOpenGLVertexBufferObject.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkSmartPointer.h>
-#include <vtkTextureObject.h>
-#include <vtk_glew.h>
-
-#include <QtGlobal>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <string>
 
 namespace celform::views {
@@ -48,8 +42,7 @@ constexpr const char* kOffsetArray = "cfShadingOffset";
 constexpr const char* kLutArray = "cfLutIntensity";
 // Highlights: per layer the vertex's du and the handedness of its frame (dv = w * N x du, as
 // makeTangentFrame builds it, N the layer's normal), and per layer the layer's smoothed normal
-// (zero: the surface's) with, in w, 1 where the vertex belongs to the layer's patch. The patch
-// rides along with the normal to keep the vertex attributes within GL 3.2's 16.
+// (zero: the surface's). The layers' patches are per face, in the face table (LookFaceTable).
 constexpr int kMaxHighlightLayers = kViewportHighlightLayers;
 constexpr int kMaxHighlightCombinations = kViewportHighlightCombinations;
 constexpr int kMaxHighlightOperations = kViewportHighlightOperations;
@@ -65,7 +58,7 @@ constexpr const char* kHighlightNormalAttributes[kMaxHighlightLayers]
 // Vertex shader: model-space position and normal, and the per-vertex look attributes, passed on.
 // The highlight layers' attributes and varyings are added per layer in use (layerDeclarations):
 // with none, the shader carries none of them (software GL interpolates every varying of every
-// fragment). With 4 layers: 48 varying components (GL 3.2 guarantees 60), 13 attributes (16).
+// fragment). With 4 layers: 44 varying components (GL 3.2 guarantees 60), 13 attributes (16).
 const char* const kVertexDec = R"glsl(//VTK::Normal::Dec
 in vec3 cfNormalAttr;
 in float cfOffsetAttr;
@@ -108,32 +101,6 @@ uniform vec3 cfForward;      // unit view axis, model space
 uniform float cfPixelScale;  // model units per pixel: times depth (perspective) or as is (ortho)
 uniform int cfOrthographic;
 
-// The face table (LookShading::Impl::bindFaceTable), a float RGBA texture read as one row of
-// texels wrapped every 2^cfFaceTableShift (shifts and masks: software GL divides slowly).
-// First 3 texels per material entry, the Gooch coefficients: (ka, k1, k2, k3), (k4, warm),
-// (cool, 0); the last entry is the look's fallback for material indices it has nothing for.
-// Then 2 texels per triangle VTK draws, in its drawing order: (base colour, 4 * material entry +
-// style), and for the PerFace toon evaluation (unit face normal, tone index seen from the
-// normal's side + 8 * tone index from the other side). One fetch per fragment for most looks.
-// When every face has the same first texel and nothing per face is needed (one material, no
-// PerFace tones: the usual case), the shaders are built without the table (CF_FACE_TABLE not
-// defined): that texel and its material's entry come as uniforms, and neither gl_PrimitiveID nor
-// a texture is read, so such a look costs what it did before the table.
-#ifdef CF_FACE_TABLE
-uniform sampler2D cfFaceTable;
-uniform int cfFaceTableShift;
-uniform int cfFaceBase;      // texel of the first triangle's data
-uniform int cfPrimitiveBase; // primitives VTK numbers before the triangles (vertices, lines)
-
-vec4 cfTableTexel(int i)
-{
-  return texelFetch(cfFaceTable, ivec2(i & ((1 << cfFaceTableShift) - 1), i >> cfFaceTableShift), 0);
-}
-#else
-uniform vec4 cfSameFace;
-uniform vec4 cfSameGooch[3];
-#endif
-
 // render.cpp's lightDirection: unit vector towards the light, +Z for a degenerate one.
 vec3 cfLightDirection(vec3 position)
 {
@@ -160,18 +127,19 @@ float cfEncode(float l)
   return l > 0.0031308 ? 1.055 * pow(l, 1.0 / 2.4) - 0.055 : 12.92 * l;
 }
 
-// render.cpp's highlightAt, one layer: "over" with premultiplied colour, nothing outside the
-// layer's patch (all three vertices in it), evaluated with the layer's normal (its interpolated
-// smoothed normal, else n). The coverage is evaluated everywhere so that its derivatives stay in
-// uniform control flow.
-void cfHighlightOver(int layer, vec3 du, vec3 dv, vec3 layerNormal, float mask, vec3 p, vec3 n,
+// render.cpp's highlightAt, one layer: "over" with premultiplied colour, nothing on a face outside
+// the layer's patch (inPatch: the face's bit in the face table, as render.cpp tests the layer's
+// faceMask at the pixel's face), evaluated with the layer's normal (its interpolated smoothed
+// normal, else n). The coverage is evaluated everywhere so that its derivatives stay in uniform
+// control flow.
+void cfHighlightOver(int layer, vec3 du, vec3 dv, vec3 layerNormal, bool inPatch, vec3 p, vec3 n,
     inout float coverage, inout vec3 premultiplied)
 {
   if (layer >= cfHlLayerCount)
     return;
   vec3 ln = cfHighlightNormal(layerNormal, n);
   float c = cfLayerCoverage(layer, p, ln, du, dv, cfLightVector, cfPointLight != 0, cfEye);
-  c = mask > 0.999 ? c : 0.0;
+  c = inPatch ? c : 0.0;
   premultiplied = premultiplied * (1.0 - c) + cfHlColor[layer] * c;
   coverage = c + coverage * (1.0 - c);
 }
@@ -186,14 +154,14 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
     // primitives), so the triangle's index in drawing order is:
 #ifdef CF_FACE_TABLE
     int cfTriangle = gl_PrimitiveID + PrimitiveIDOffset - cfPrimitiveBase;
-    vec4 cfFace = cfTableTexel(cfFaceBase + 2 * cfTriangle);
+    vec4 cfFace = cfFaceTexel(cfTriangle);
 #else
     vec4 cfFace = cfSameFace;
 #endif
     vec3 cfBase = cfFace.rgb;
     int cfFaceCode = int(cfFace.w + 0.5);
-    int cfStyleIndex = cfFaceCode & 3;
-    int cfMaterial = cfFaceCode >> 2;
+    int cfStyleIndex = cfCodeStyle(cfFaceCode);
+    int cfMaterial = cfCodeEntry(cfFaceCode);
     vec3 cfP = cfPositionMC;
     float cfLength = length(cfNormalMC);
     vec3 cfN = cfLength > 0.0 ? cfNormalMC / cfLength : vec3(0.0);
@@ -216,7 +184,7 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
         // eye moves without a new table); the side test takes this fragment's position, on the
         // face's plane like the corner render.cpp takes.
 #ifdef CF_FACE_TABLE
-        vec4 cfFaceTone = cfTableTexel(cfFaceBase + 2 * cfTriangle + 1);
+        vec4 cfFaceTone = cfFaceToneTexel(cfTriangle);
         int cfTones = int(cfFaceTone.w + 0.5);
         cfIntensity = cfIntensities[dot(cfFaceTone.xyz, cfEye - cfP) < 0.0 ? cfTones >> 3 : cfTones & 7];
 #else
@@ -229,9 +197,9 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
     } else if (cfStyleIndex == 2) {
       // The face's material's coefficients (the "auto" preset varies them per material).
 #ifdef CF_FACE_TABLE
-      vec4 cfG1 = cfTableTexel(3 * cfMaterial);
-      vec4 cfG2 = cfTableTexel(3 * cfMaterial + 1);
-      vec4 cfG3 = cfTableTexel(3 * cfMaterial + 2);
+      vec4 cfG1 = cfEntryTexel(cfMaterial, 0);
+      vec4 cfG2 = cfEntryTexel(cfMaterial, 1);
+      vec4 cfG3 = cfEntryTexel(cfMaterial, 2);
 #else
       vec4 cfG1 = cfSameGooch[0];
       vec4 cfG2 = cfSameGooch[1];
@@ -255,8 +223,8 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
 
 /// The per-layer parts of the shaders for `layers` highlight layers in use (0 to 4): the vertex
 /// attributes and varyings, the frames (dv = w * (N x du), N the layer's smoothed normal where
-/// it has one, else the surface's, as renderHighlightsFor builds them), the patch flag (a fragment
-/// is in the patch when all three corners are), and each layer's "over" in the fragment shader.
+/// it has one, else the surface's, as renderHighlightsFor builds them), and each layer's "over" in
+/// the fragment shader, on the faces of its patch (the face code's bit for the layer).
 struct HighlightShaderParts {
     std::string vertexDec, vertexImpl, fragmentDec, fragmentImpl;
 };
@@ -267,15 +235,14 @@ HighlightShaderParts highlightShaderParts(int layers)
     std::string over;
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        parts.vertexDec += "in vec4 cfHlDuAttr" + n + ";\nin vec4 cfHlNAttr" + n + ";\nout vec3 cfHlDu" + n
-            + ";\nout vec3 cfHlDv" + n + ";\nout vec3 cfHlN" + n + ";\nout float cfHlMask" + n + ";\n";
+        parts.vertexDec += "in vec4 cfHlDuAttr" + n + ";\nin vec3 cfHlNAttr" + n + ";\nout vec3 cfHlDu" + n
+            + ";\nout vec3 cfHlDv" + n + ";\nout vec3 cfHlN" + n + ";\n";
         parts.vertexImpl += "  cfHlDu" + n + " = cfHlDuAttr" + n + ".xyz;\n  cfHlDv" + n + " = cfHlDuAttr" + n
-            + ".w * cross(cfFrameNormal(cfHlNAttr" + n + ".xyz, cfNv), cfHlDuAttr" + n + ".xyz);\n  cfHlN" + n
-            + " = cfHlNAttr" + n + ".xyz;\n  cfHlMask" + n + " = cfHlNAttr" + n + ".w;\n";
-        parts.fragmentDec += "in vec3 cfHlDu" + n + ";\nin vec3 cfHlDv" + n + ";\nin vec3 cfHlN" + n
-            + ";\nin float cfHlMask" + n + ";\n";
-        over += "      cfHighlightOver(" + n + ", cfHlDu" + n + ", cfHlDv" + n + ", cfHlN" + n + ", cfHlMask" + n
-            + ", cfP, cfN, cfHlCoverage, cfHlPremultiplied);\n";
+            + ".w * cross(cfFrameNormal(cfHlNAttr" + n + ", cfNv), cfHlDuAttr" + n + ".xyz);\n  cfHlN" + n
+            + " = cfHlNAttr" + n + ";\n";
+        parts.fragmentDec += "in vec3 cfHlDu" + n + ";\nin vec3 cfHlDv" + n + ";\nin vec3 cfHlN" + n + ";\n";
+        over += "      cfHighlightOver(" + n + ", cfHlDu" + n + ", cfHlDv" + n + ", cfHlN" + n
+            + ", cfCodeInPatch(cfFaceCode, " + n + "), cfP, cfN, cfHlCoverage, cfHlPremultiplied);\n";
     }
     if (layers > 0)
         parts.fragmentImpl = "    // Highlights after shading, before lines: mix(shaded, layer colour, coverage).\n"
@@ -287,21 +254,6 @@ HighlightShaderParts highlightShaderParts(int layers)
               "      cfColor = cfColor * (1.0 - cfHlCoverage) + cfHlColorHere * cfHlCoverage;\n"
               "    }\n";
     return parts;
-}
-
-int styleIndex(algo::Style style)
-{
-    switch (style) {
-    case algo::Style::Lambert:
-        return 0;
-    case algo::Style::Toon:
-        return 1;
-    case algo::Style::Gooch:
-        return 2;
-    case algo::Style::Comic:
-        return 3;
-    }
-    return 1;
 }
 
 vtkSmartPointer<vtkFloatArray> namedArray(const char* name, int components)
@@ -323,11 +275,6 @@ struct Uniforms {
     int pointLight = 0;
     int evaluation = 0;
     std::array<float, 3> lineColor{};
-    // Whether the shaders need the face table; if not, the first texel all faces share and its
-    // material's entry.
-    bool faceTable = false;
-    std::array<float, 4> sameFace{};
-    std::array<float, 12> sameGooch{};
     // Highlights (see celform_shading.glsl for the layout).
     int hlLayerCount = 0;
     std::array<float, 3 * kMaxHighlightLayers> hlColor{};
@@ -373,27 +320,16 @@ void storeShape(Uniforms& u, int shape, const algo::HighlightShape& s)
     }
 }
 
-/// The face table's layout (see the fragment shader): floats per material entry and per face.
-constexpr std::size_t kMaterialFloats = 12;
-constexpr std::size_t kFaceFloats = 8;
-/// Texels per row, as a power of two (at most the GL's maximum texture size, llvmpipe's 16384);
-/// rows follow as the mesh needs them: 4096 by 16384 texels hold 33 million triangles.
-constexpr int kFaceTableShift = 12;
-/// Tone indices the shader's uniforms hold (cfIntensities[8]): the per-face tones are stored as
-/// indices into them, front + 8 * back.
-constexpr int kMaxTones = 8;
-
-/// render.cpp's lightDirection: unit vector towards the light, +Z for a degenerate one.
-Eigen::Vector3f lightDirection(const Eigen::Vector3f& light, bool point, const Eigen::Vector3f& position)
-{
-    Eigen::Vector3f l = point ? Eigen::Vector3f(light - position) : light;
-    const float n = l.norm();
-    return n > 0.f ? Eigen::Vector3f(l / n) : Eigen::Vector3f(0.f, 0.f, 1.f);
-}
-
 } // namespace
 
 struct LookShading::Impl {
+    Impl(vtkActor* actor, vtkPolyData* mesh, vtkRenderer* renderer)
+        : actor(actor)
+        , mesh(mesh)
+        , renderer(renderer)
+        , faceTable(mesh, renderer)
+    { }
+
     vtkActor* actor = nullptr;
     vtkOpenGLPolyDataMapper* mapper = nullptr;
     vtkPolyData* mesh = nullptr;
@@ -405,8 +341,8 @@ struct LookShading::Impl {
         namedArray(kHighlightDuArrays[1], 4), namedArray(kHighlightDuArrays[2], 4),
         namedArray(kHighlightDuArrays[3], 4)};
     std::array<vtkSmartPointer<vtkFloatArray>, kMaxHighlightLayers> highlightNormal{
-        namedArray(kHighlightNormalArrays[0], 4), namedArray(kHighlightNormalArrays[1], 4),
-        namedArray(kHighlightNormalArrays[2], 4), namedArray(kHighlightNormalArrays[3], 4)};
+        namedArray(kHighlightNormalArrays[0], 3), namedArray(kHighlightNormalArrays[1], 3),
+        namedArray(kHighlightNormalArrays[2], 3), namedArray(kHighlightNormalArrays[3], 3)};
     Uniforms uniforms;
     bool active = false;
     int compiledLayers = -1; ///< highlight layers the installed shaders carry; -1: none installed
@@ -415,182 +351,25 @@ struct LookShading::Impl {
     // Clay settings restored when the look is turned off.
     bool clayLighting = true;
     double claySpecular = 0.0;
-
-    // The face table (layout in the fragment shader): the look's material entries (Gooch
-    // coefficients) and, per face of the document in face order, its material's colour, style and
-    // entry and its PerFace normal and tones, as update() resolves them; uploaded in VTK's drawing
-    // order at the next draw after a change.
-    std::vector<float> materialTable; ///< kMaterialFloats per entry
-    std::vector<float> faceTable; ///< kFaceFloats per face
-    bool tableChanged = true;
-    // The triangles VTK draws, in order: it builds its index buffer from the polys at every
-    // change of the polydata and leaves out triangles with two equal corners (as the CPU
-    // rasteriser covers no pixel of them), numbering the others consecutively (gl_PrimitiveID).
-    std::vector<std::int32_t> drawnFaces; ///< face of each triangle; empty when all are drawn
-    std::int32_t drawnCount = 0;
-    int primitiveBase = 0; ///< vertex and line primitives VTK numbers before the triangles
-    vtkPoints* drawnPoints = nullptr; ///< what drawnFaces was found for, and when
-    vtkCellArray* drawnPolys = nullptr;
-    vtkMTimeType drawnTime = 0;
-    vtkSmartPointer<vtkTextureObject> faceTexture;
-    std::vector<float> packed; ///< the texture's texels, reused between uploads
-    int faceBase = 0; ///< first face texel in the texture
-    int faceTableShift = kFaceTableShift; ///< log2 of its width
-    bool tableTooLarge = false;
-    vtkNew<vtkCallbackCommand> renderEndObserver;
+    LookFaceTable faceTable; ///< each face's data, read by the shaders when faces differ
 
     void setUniforms(vtkShaderProgram* program);
-    /// Brings drawnFaces up to date with the polydata as VTK's index buffer sees it; true when
-    /// it changed.
-    bool findDrawnFaces();
-    /// Uploads the face table in drawing order when it changed (or GL lost it) and binds it.
-    bool bindFaceTable(vtkShaderProgram* program);
     void attachArrays();
     /// Maps the per-vertex arrays and installs the shaders for `layers` highlight layers.
     void installShaders(int layers, bool faceTable);
 };
 
-bool LookShading::Impl::findDrawnFaces()
-{
-    vtkPoints* points = mesh->GetPoints();
-    vtkCellArray* polys = mesh->GetPolys();
-    if (!points || !polys)
-        return false;
-    const vtkMTimeType time = std::max(points->GetMTime(), polys->GetMTime());
-    if (points == drawnPoints && polys == drawnPolys && time == drawnTime)
-        return false;
-    drawnPoints = points;
-    drawnPolys = polys;
-    drawnTime = time;
-    // vtkOpenGLIndexBufferObject::AppendTriangleIndexBuffer (VTK 9.1): each polygon as a fan
-    // (0, i - 1, i), a triangle dropped when two of its corners are at the same coordinates.
-    std::vector<std::int32_t> faces;
-    std::int32_t drawn = 0;
-    bool all = true;
-    auto* floats = vtkFloatArray::SafeDownCast(points->GetData());
-    const float* p = floats && floats->GetNumberOfComponents() == 3 ? floats->GetPointer(0) : nullptr;
-    auto corner = [&](vtkIdType id) {
-        if (p)
-            return Eigen::Vector3d(p[3 * id], p[3 * id + 1], p[3 * id + 2]);
-        Eigen::Vector3d c;
-        points->GetPoint(id, c.data());
-        return c;
-    };
-    auto scan = [&](const auto* offsets, const auto* ids, vtkIdType cells) {
-        for (vtkIdType cell = 0; cell < cells; ++cell) {
-            const auto first = offsets[cell], size = offsets[cell + 1] - first;
-            for (vtkIdType i = 2; i < vtkIdType(size); ++i) {
-                const Eigen::Vector3d a = corner(vtkIdType(ids[first])), b = corner(vtkIdType(ids[first + i - 1])),
-                                      c = corner(vtkIdType(ids[first + i]));
-                const bool kept = a != b && b != c && a != c;
-                if (kept && all && (size != 3 || drawn != cell)) {
-                    // The first change from "triangle k is face k": list every face from here on.
-                    all = false;
-                    faces.resize(std::size_t(drawn));
-                    for (std::int32_t k = 0; k < drawn; ++k)
-                        faces[std::size_t(k)] = k;
-                }
-                if (kept) {
-                    if (!all)
-                        faces.push_back(std::int32_t(cell));
-                    ++drawn;
-                }
-            }
-        }
-    };
-    if (polys->IsStorage64Bit())
-        scan(polys->GetOffsetsArray64()->GetPointer(0), polys->GetConnectivityArray64()->GetPointer(0),
-            polys->GetNumberOfCells());
-    else
-        scan(polys->GetOffsetsArray32()->GetPointer(0), polys->GetConnectivityArray32()->GetPointer(0),
-            polys->GetNumberOfCells());
-    // VTK's primitive numbering (vtkOpenGLCellToVTKCellMap): a primitive per vertex, then one per
-    // line segment, then the triangles.
-    vtkCellArray* lines = mesh->GetLines();
-    const int base = int(mesh->GetVerts()->GetNumberOfConnectivityIds()
-        + (lines->GetNumberOfConnectivityIds() - lines->GetNumberOfCells()));
-    const bool changed = faces != drawnFaces || drawn != drawnCount || base != primitiveBase;
-    drawnFaces = std::move(faces);
-    drawnCount = drawn;
-    primitiveBase = base;
-    return changed;
-}
-
-bool LookShading::Impl::bindFaceTable(vtkShaderProgram* program)
-{
-    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer ? renderer->GetRenderWindow() : nullptr);
-    if (!window)
-        return false;
-    if (!faceTexture)
-        faceTexture = vtkSmartPointer<vtkTextureObject>::New();
-    if (faceTexture->GetContext() != window) {
-        faceTexture->SetContext(window);
-        tableChanged = true;
-    }
-    if (findDrawnFaces())
-        tableChanged = true;
-    if (tableChanged || faceTexture->GetHandle() == 0) {
-        // Materials, then the drawn triangles' face data in drawing order.
-        const std::size_t faceCount = faceTable.size() / kFaceFloats;
-        const std::size_t texels = materialTable.size() / 4 + 2 * std::size_t(drawnCount);
-        const int maxSize = vtkTextureObject::GetMaximumTextureSize(window);
-        int shift = kFaceTableShift;
-        while (shift > 0 && (1 << shift) > maxSize)
-            --shift;
-        const std::size_t width = std::size_t(1) << shift;
-        const std::size_t height = std::max<std::size_t>(1, (texels + width - 1) / width);
-        if (height > std::size_t(maxSize)) {
-            if (!tableTooLarge)
-                qWarning("Look shading: %d triangles are more than the face table of this GL can hold", drawnCount);
-            tableTooLarge = true;
-            return false;
-        }
-        tableTooLarge = false;
-        packed.assign(4 * width * height, 0.f);
-        std::copy(materialTable.begin(), materialTable.end(), packed.begin());
-        faceBase = int(materialTable.size() / 4);
-        faceTableShift = shift;
-        float* faces = packed.data() + materialTable.size();
-        if (drawnFaces.empty()) {
-            const std::size_t n = std::min(faceCount, std::size_t(drawnCount));
-            std::copy_n(faceTable.begin(), n * kFaceFloats, faces);
-        } else {
-            for (std::size_t k = 0; k < drawnFaces.size(); ++k) {
-                const auto f = std::size_t(drawnFaces[k]);
-                if (f < faceCount)
-                    std::copy_n(
-                        faceTable.begin() + std::ptrdiff_t(f * kFaceFloats), kFaceFloats, faces + k * kFaceFloats);
-            }
-        }
-        faceTexture->SetInternalFormat(GL_RGBA32F);
-        if (!faceTexture->Create2DFromRaw(
-                unsigned(width), unsigned(height), 4, VTK_FLOAT, static_cast<void*>(packed.data())))
-            return false;
-        tableChanged = false;
-    }
-    // Bound for this draw; released when the renderer finishes its frame.
-    faceTexture->Activate();
-    program->SetUniformi("cfFaceTable", faceTexture->GetTextureUnit());
-    program->SetUniformi("cfFaceTableShift", faceTableShift);
-    program->SetUniformi("cfFaceBase", faceBase);
-    program->SetUniformi("cfPrimitiveBase", primitiveBase);
-    return true;
-}
-
 void LookShading::Impl::setUniforms(vtkShaderProgram* program)
 {
     if (!program || !active)
         return;
-    if (compiledFaceTable)
-        bindFaceTable(program);
+    faceTable.setUniforms(program, compiledFaceTable);
     const Uniforms& u = uniforms;
     // Unused uniforms (optimised away for a style) are simply not found: no error.
     program->SetUniformi("cfToneCount", u.toneCount);
     program->SetUniform1fv("cfThresholds", 7, u.thresholds.data());
     program->SetUniform1fv("cfIntensities", 8, u.intensities.data());
     program->SetUniform1fv("cfLut", 32, u.lut.data());
-    program->SetUniform4f("cfSameFace", u.sameFace.data());
-    program->SetUniform4fv("cfSameGooch", 3, u.sameGooch.data());
     program->SetUniformf("cfHatchSpacing", u.hatchSpacing);
     program->SetUniformf("cfHatchAngle", u.hatchAngle);
     program->SetUniformf("cfHatchWidth", u.hatchWidth);
@@ -666,7 +445,8 @@ void LookShading::Impl::installShaders(int layers, bool faceTable)
         shaders->AddVertexShaderReplacement("//VTK::Normal::Dec", true, kVertexDec + parts.vertexDec, false);
         shaders->AddVertexShaderReplacement("//VTK::Normal::Impl", true, kVertexImpl + parts.vertexImpl, false);
         const std::string declarations = std::string("//VTK::Light::Dec\n")
-            + (faceTable ? "#define CF_FACE_TABLE\n" : "") + kCelformShadingGlsl + kFragmentDec + parts.fragmentDec;
+            + (faceTable ? "#define CF_FACE_TABLE\n" : "") + kCelformShadingGlsl + LookFaceTable::glslDeclarations()
+            + kFragmentDec + parts.fragmentDec;
         shaders->AddFragmentShaderReplacement("//VTK::Light::Dec", true, declarations, false);
         std::string impl = kFragmentImpl;
         const std::string marker = "    //CF::Highlights::Impl\n";
@@ -679,11 +459,8 @@ void LookShading::Impl::installShaders(int layers, bool faceTable)
 }
 
 LookShading::LookShading(vtkActor* actor, vtkPolyData* mesh, vtkRenderer* renderer)
-    : m(std::make_unique<Impl>())
+    : m(std::make_unique<Impl>(actor, mesh, renderer))
 {
-    m->actor = actor;
-    m->mesh = mesh;
-    m->renderer = renderer;
     m->mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
     if (m->mapper) {
         // vertexMC must be the document's coordinates: hatching and the light use them as such.
@@ -694,24 +471,12 @@ LookShading::LookShading(vtkActor* actor, vtkPolyData* mesh, vtkRenderer* render
         });
         m->mapper->AddObserver(vtkCommand::UpdateShaderEvent, m->bindObserver);
     }
-    if (m->renderer) {
-        // The face table holds a texture unit from its draw to the end of the frame.
-        m->renderEndObserver->SetClientData(m.get());
-        m->renderEndObserver->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
-            auto* impl = static_cast<Impl*>(clientData);
-            if (impl->faceTexture)
-                impl->faceTexture->Deactivate();
-        });
-        m->renderer->AddObserver(vtkCommand::EndEvent, m->renderEndObserver);
-    }
 }
 
 LookShading::~LookShading()
 {
     if (m->mapper)
         m->mapper->RemoveObserver(m->bindObserver);
-    if (m->renderer)
-        m->renderer->RemoveObserver(m->renderEndObserver);
 }
 
 bool LookShading::isActive() const
@@ -741,7 +506,7 @@ void LookShading::setActive(bool active)
     // VTK's lights play no part: the shader computes the whole colour from the look.
     property->LightingOff();
     property->SetSpecular(0.0);
-    m->installShaders(m->uniforms.hlLayerCount, m->uniforms.faceTable);
+    m->installShaders(m->uniforms.hlLayerCount, m->faceTable.needed());
 }
 
 void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame,
@@ -776,110 +541,47 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
                                                                              : 0;
     u.lineColor = {look.lineStyle.color.x(), look.lineStyle.color.y(), look.lineStyle.color.z()};
 
-    // Material entries of the face table: the Gooch coefficients (paper 1, section 3.2.4; the
-    // "auto" preset sets them per material), one entry per index of the look's lists and one more,
-    // the look's own set, for indices beyond them (and negative ones), as render.cpp resolves them.
-    const std::size_t materials
-        = std::max({look.materialColors.size(), look.materialStyles.size(), look.materialGooch.size()});
-    std::vector<float> materialTable(kMaterialFloats * (materials + 1), 0.f);
-    for (std::size_t e = 0; e <= materials; ++e) {
-        const algo::GoochParams& g = e < look.materialGooch.size() ? look.materialGooch[e] : look.gooch;
-        const std::array<float, kMaterialFloats> entry = {
-            g.ka, g.k1, g.k2, g.k3, g.k4, g.warm.x(), g.warm.y(), g.warm.z(), g.cool.x(), g.cool.y(), g.cool.z(), 0.f};
-        std::copy(entry.begin(), entry.end(), materialTable.begin() + std::ptrdiff_t(e * kMaterialFloats));
-    }
-
-    // Per face: its material's colour and style (each from the look's list when it has the
-    // index, else the look's default, as render.cpp resolves them) and material entry, and for
-    // the PerFace toon evaluation its unit normal and the tone render.cpp gives it from either
-    // side (which side faces the eye is decided per fragment: the camera moves without an update).
-    const algo::Faces& faces = mesh->faces;
-    const bool perFace = look.toonEvaluation == algo::ToonEvaluation::PerFace;
-    const auto offsetAt = [&](std::int32_t v) {
-        return std::size_t(v) < data.shadingOffsets.size() ? data.shadingOffsets[std::size_t(v)] : 0.f;
-    };
-    const auto toneIndex = [&](float lambert) { return std::min(algo::toonTone(look.toon, lambert), kMaxTones - 1); };
-    std::vector<float> faceTable(kFaceFloats * std::size_t(faces.rows()), 0.f);
-    for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-        float* row = faceTable.data() + kFaceFloats * std::size_t(f);
-        const std::int32_t material = mesh->faceMaterials.empty() || std::size_t(f) >= mesh->faceMaterials.size()
-            ? 0
-            : mesh->faceMaterials[std::size_t(f)];
-        const auto index = std::size_t(material); // negative: beyond every list
-        const algo::Color color = index < look.materialColors.size() ? look.materialColors[index] : look.defaultColor;
-        const algo::Style style = index < look.materialStyles.size() ? look.materialStyles[index] : look.style;
-        row[0] = color.x();
-        row[1] = color.y();
-        row[2] = color.z();
-        row[3] = float(4 * std::min(index, materials) + std::size_t(styleIndex(style)));
-        if (!perFace)
-            continue;
-        // render.cpp, ToonEvaluation::PerFace, the same expressions in the same order.
-        const std::int32_t a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-        const Eigen::Vector3f pa = shape.row(a), pb = shape.row(b), pc = shape.row(c);
-        const Eigen::Vector3f fn = (pb - pa).cross(pc - pa).normalized();
-        const Eigen::Vector3f back = -fn;
-        const Eigen::Vector3f centre = (pa + pb + pc) / 3.f;
-        const float faceOffset = (offsetAt(a) + offsetAt(b) + offsetAt(c)) / 3.f;
-        const Eigen::Vector3f l = lightDirection(light, look.pointLight, centre);
-        row[4] = fn.x();
-        row[5] = fn.y();
-        row[6] = fn.z();
-        row[7] = float(toneIndex(fn.dot(l) + faceOffset) + kMaxTones * toneIndex(back.dot(l) + faceOffset));
-    }
-    // The usual case, one look for every face: uniforms instead of a fetch per fragment.
-    bool same = !perFace && faces.rows() > 0;
-    for (Eigen::Index f = 1; same && f < faces.rows(); ++f)
-        same = std::equal(
-            faceTable.begin(), faceTable.begin() + 4, faceTable.begin() + std::ptrdiff_t(kFaceFloats * std::size_t(f)));
-    u.faceTable = !same;
-    u.sameFace.fill(0.f);
-    u.sameGooch.fill(0.f);
-    if (same) {
-        std::copy_n(faceTable.begin(), 4, u.sameFace.begin());
-        const auto entry = std::size_t(faceTable[3] + 0.5f) / 4;
-        std::copy_n(
-            materialTable.begin() + std::ptrdiff_t(entry * kMaterialFloats), kMaterialFloats, u.sameGooch.begin());
-    }
-    if (materialTable != m->materialTable || faceTable != m->faceTable) {
-        m->materialTable = std::move(materialTable);
-        m->faceTable = std::move(faceTable);
-        m->tableChanged = true;
-    }
+    // The highlight layers, then each face's material, PerFace tones and patches, as render.cpp
+    // resolves them.
+    const std::vector<algo::RenderHighlight> layers
+        = updateHighlights(data, shape, normals, frame, count, shapeGeneration);
+    m->faceTable.update(look, *mesh, shape, data.shadingOffsets, layers);
 
     // Per vertex: the shading offset and the PerVertexLut intensity.
+    const auto offsetAt = [&](Eigen::Index v) {
+        return std::size_t(v) < data.shadingOffsets.size() ? data.shadingOffsets[std::size_t(v)] : 0.f;
+    };
     m->offsets->SetNumberOfTuples(count);
     m->lut->SetNumberOfTuples(count);
     float* offset = m->offsets->GetPointer(0);
     float* lut = m->lut->GetPointer(0);
     const bool perVertex = look.toonEvaluation == algo::ToonEvaluation::PerVertexLut;
     for (Eigen::Index v = 0; v < count; ++v) {
-        offset[v] = offsetAt(std::int32_t(v));
+        offset[v] = offsetAt(v);
         lut[v] = 0.f;
         if (perVertex) {
             // render.cpp: lookupIntensity(table, N.L + O_v) per vertex, interpolated.
             const Eigen::Vector3f p = shape.row(v);
             const Eigen::Vector3f n(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
-            lut[v] = algo::lookupIntensity(u.lut, n.dot(lightDirection(light, look.pointLight, p)) + offset[v]);
+            lut[v] = algo::lookupIntensity(u.lut, n.dot(lookLightDirection(light, look.pointLight, p)) + offset[v]);
         }
     }
-    updateHighlights(data, shape, normals, frame, count, shapeGeneration);
     for (vtkFloatArray* a : {m->offsets.Get(), m->lut.Get()})
         a->Modified();
     m->attachArrays();
     // Shaders carry only the layers in use, and the face table only when faces differ: a change
     // rebuilds them (rare: a mesh or a look of another kind).
-    if (m->active && (m->compiledLayers != m->uniforms.hlLayerCount || m->compiledFaceTable != m->uniforms.faceTable))
-        m->installShaders(m->uniforms.hlLayerCount, m->uniforms.faceTable);
+    if (m->active && (m->compiledLayers != m->uniforms.hlLayerCount || m->compiledFaceTable != m->faceTable.needed()))
+        m->installShaders(m->uniforms.hlLayerCount, m->faceTable.needed());
     m->mesh->Modified();
 }
 
-void LookShading::updateHighlights(const model::ProjectData& data, const algo::Positions& shape, const float* normals,
-    int frame, Eigen::Index count, std::uint64_t shapeGeneration)
+std::vector<algo::RenderHighlight> LookShading::updateHighlights(const model::ProjectData& data,
+    const algo::Positions& shape, const float* normals, int frame, Eigen::Index count, std::uint64_t shapeGeneration)
 {
     // The offline renderer's resolution of the tracks at the frame (keys, combinations, patches,
     // per-vertex frames), so both paths draw the same layers.
-    const std::vector<algo::RenderHighlight> layers
+    std::vector<algo::RenderHighlight> layers
         = model::renderHighlightsFor(data, data.look, shape, frame, &m->highlightCache, shapeGeneration);
     Uniforms& u = m->uniforms;
     u.hlLayerCount = int(std::min<std::size_t>(layers.size(), kMaxHighlightLayers));
@@ -899,7 +601,6 @@ void LookShading::updateHighlights(const model::ProjectData& data, const algo::P
             a->FillValue(0.f);
             a->Modified();
         }
-    const algo::Faces& faces = data.baseMesh->faces;
     for (int layer = 0; layer < u.hlLayerCount; ++layer) {
         const algo::RenderHighlight& h = layers[std::size_t(layer)];
         const auto l = std::size_t(layer);
@@ -916,19 +617,12 @@ void LookShading::updateHighlights(const model::ProjectData& data, const algo::P
                 = c.mode == algo::HighlightBoolean::Union ? 0 : 1;
             storeShape(u, layer * (1 + kMaxHighlightCombinations) + 1 + k, c.shape);
         }
-        // The layer's smoothed normals (zero: the surface's), and the patch per vertex in w: 1 on
-        // every vertex of a patch face (all faces for no mask).
+        // The layer's smoothed normals (zero: the surface's).
         float* layerNormal = m->highlightNormal[l]->GetPointer(0);
         const bool haveNormals = h.normals.rows() == count;
         for (Eigen::Index v = 0; haveNormals && v < count; ++v)
             for (int k = 0; k < 3; ++k)
-                layerNormal[4 * v + k] = h.normals(v, k);
-        for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-            if (!h.faceMask.empty() && (std::size_t(f) >= h.faceMask.size() || !h.faceMask[std::size_t(f)]))
-                continue;
-            for (int k = 0; k < 3; ++k)
-                layerNormal[4 * std::size_t(faces(f, k)) + 3] = 1.f;
-        }
+                layerNormal[3 * v + k] = h.normals(v, k);
         // du and the handedness w of each vertex frame: dv = w * (N x du), N the normal the
         // vertex shader builds dv with (cfFrameNormal: the layer's, else the surface's).
         float* du = m->highlightDu[l]->GetPointer(0);
@@ -936,7 +630,7 @@ void LookShading::updateHighlights(const model::ProjectData& data, const algo::P
         for (Eigen::Index v = 0; haveFrames && v < count; ++v) {
             const Eigen::Vector3f d = h.du.row(v);
             const Eigen::Vector3f e = h.dv.row(v);
-            Eigen::Vector3f n(layerNormal[4 * v], layerNormal[4 * v + 1], layerNormal[4 * v + 2]);
+            Eigen::Vector3f n(layerNormal[3 * v], layerNormal[3 * v + 1], layerNormal[3 * v + 2]);
             if (!(n.squaredNorm() > 0.f))
                 n = Eigen::Vector3f(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
             const float nl = n.norm();
@@ -948,6 +642,8 @@ void LookShading::updateHighlights(const model::ProjectData& data, const algo::P
             du[4 * v + 3] = handedness > 0.f ? 1.f : (handedness < 0.f ? -1.f : 0.f);
         }
     }
+    layers.resize(std::size_t(u.hlLayerCount)); // those beyond the shader's are not drawn
+    return layers;
 }
 
 } // namespace celform::views

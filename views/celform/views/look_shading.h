@@ -7,10 +7,15 @@
 #include "celform/model/project_data.h"
 
 #include <memory>
+#include <vector>
 
 class vtkActor;
 class vtkPolyData;
 class vtkRenderer;
+
+namespace celform::algo {
+struct RenderHighlight;
+}
 
 namespace celform::views {
 
@@ -29,18 +34,19 @@ inline constexpr int kViewportHighlightCombinations = 2;
 /// array mapped as a custom attribute, not VTK's view-space normal); the light vector, the eye
 /// and the view axis are uniforms in model space (the actor has no transform).
 ///
-/// Per-face data (a float texture the fragment shader reads by gl_PrimitiveID, as render.cpp reads
-/// its G-buffer's face id): the face's material (colour, style and Gooch coefficients, which the
-/// "auto" preset sets per material), so nothing of a material is interpolated across faces, and
-/// for the PerFace toon evaluation the face's tone as render.cpp computes it (face normal, light
-/// at the face's centre, mean of the corners' offsets), from either side of the face.
+/// Per-face data (LookFaceTable: a float texture the fragment shader reads by gl_PrimitiveID, as
+/// render.cpp reads its G-buffer's face id): the face's material (colour, style and Gooch
+/// coefficients, which the "auto" preset sets per material), so nothing of a material is
+/// interpolated across faces, and for the PerFace toon evaluation the face's tone as render.cpp
+/// computes it (face normal, light at the face's centre, mean of the corners' offsets), from
+/// either side of the face.
 ///
 /// Per-vertex attributes (point arrays added to the polydata): the shading offset O_v (paper 3,
 /// equation 4.3), the PerVertexLut intensity (lookupIntensity of N.L + O_v, computed here on the
-/// CPU exactly as render.cpp does), and for up to 4 highlight layers (model::renderHighlightsFor at the frame) the
-/// vertex's du with the handedness of its frame (dv = w N x du), the layer's smoothed normal (zero: the surface's,
-/// which is then N) and whether the vertex lies in the layer's patch (a fragment is in the patch
-/// when all three corners are).
+/// CPU exactly as render.cpp does), and for up to 4 highlight layers (model::renderHighlightsFor at
+/// the frame) the vertex's du with the handedness of its frame (dv = w N x du) and the layer's
+/// smoothed normal (zero: the surface's, which is then N). Whether a fragment is in a layer's
+/// patch is decided per face, as render.cpp decides it: a bit per layer in the face table.
 /// Look uniforms are set from a cached copy each time VTK binds the program (UpdateShaderEvent),
 /// so a Look change costs no shader rebuild; only setActive() rebuilds the shaders.
 class LookShading {
@@ -62,10 +68,10 @@ public:
     [[nodiscard]] bool isActive() const;
 
 private:
-    /// Highlight uniforms and per-vertex frames, normals and patch masks, as renderFrame resolves
-    /// them.
-    void updateHighlights(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame,
-        Eigen::Index count, std::uint64_t shapeGeneration);
+    /// Highlight uniforms and per-vertex frames and normals, as renderFrame resolves them; returns
+    /// the layers the shaders draw (for their patches' face masks).
+    std::vector<algo::RenderHighlight> updateHighlights(const model::ProjectData& data, const algo::Positions& shape,
+        const float* normals, int frame, Eigen::Index count, std::uint64_t shapeGeneration);
 
     struct Impl;
     std::unique_ptr<Impl> m;
