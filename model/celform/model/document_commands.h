@@ -240,6 +240,8 @@ private:
     int m_gesture;
     bool m_frameExisted; ///< whether the key had offsets at m_frame before the first step
     ChangeSet m_note; ///< reused for every notification
+    /// absorb()'s working memory: each step index's slot in m_change and in the stored offsets.
+    std::vector<std::pair<std::size_t, std::size_t>> m_slots;
 };
 
 } // namespace celform::model

@@ -73,27 +73,28 @@ bool KeyOffsetsCommand::absorb(const std::vector<std::uint32_t>& indices, const 
     const auto stored = key->offsetsByFrame.find(m_frame);
     if (stored == key->offsetsByFrame.end())
         return false;
-    // Every step index must be one of ours and already stored: both lists ascend, so one walk
-    // finds our slots; the stored offsets are found by binary search. Check before writing.
+    // Every step index must be one of ours and already stored. All three lists ascend, so one
+    // forward walk finds each index's slot in the command and in the stored offsets; nothing is
+    // written before every index is found.
+    SparseOffsets& offsets = stored->second;
+    m_slots.resize(indices.size());
     std::size_t slot = 0;
-    for (const std::uint32_t v : indices) {
+    auto at = offsets.indices.begin();
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        const std::uint32_t v = indices[k];
         while (slot < m_change.indices.size() && m_change.indices[slot] < v)
             ++slot;
         if (slot == m_change.indices.size() || m_change.indices[slot] != v || !m_change.afterPresent[slot])
             return false;
-    }
-    SparseOffsets& offsets = stored->second;
-    slot = 0;
-    for (std::size_t k = 0; k < indices.size(); ++k) {
-        const std::uint32_t v = indices[k];
-        while (m_change.indices[slot] < v)
-            ++slot;
-        const auto at = std::lower_bound(offsets.indices.begin(), offsets.indices.end(), v);
+        at = std::lower_bound(at, offsets.indices.end(), v);
         if (at == offsets.indices.end() || *at != v)
-            return false; // cannot happen while we are on top of the stack; nothing written yet for v
-        Eigen::Vector3f& after = m_change.after[slot];
+            return false;
+        m_slots[k] = {slot, std::size_t(at - offsets.indices.begin())};
+    }
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        Eigen::Vector3f& after = m_change.after[m_slots[k].first];
         after += displacements.row(Eigen::Index(k)).transpose();
-        offsets.deltas[std::size_t(at - offsets.indices.begin())] = after;
+        offsets.deltas[m_slots[k].second] = after;
     }
     m_note.vertices.assign(indices.begin(), indices.end());
     const Document::Batch batch(m_doc);
