@@ -8,11 +8,14 @@ find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets C
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(CGAL REQUIRED)
 
-# Pitfall 3: VTK 9.1's targets reference MPI::MPI_C.
-find_package(MPI COMPONENTS C)
-find_package(VTK REQUIRED COMPONENTS
-  CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
-  RenderingCore RenderingOpenGL2 RenderingImage InteractionStyle FiltersCore FiltersSources)
+# VTK serves views/ and the editor only (CELFORM_BUILD_EDITOR).
+if(CELFORM_BUILD_EDITOR)
+  # Pitfall 3: VTK 9.1's targets reference MPI::MPI_C.
+  find_package(MPI COMPONENTS C)
+  find_package(VTK REQUIRED COMPONENTS
+    CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
+    RenderingCore RenderingOpenGL2 RenderingImage InteractionStyle FiltersCore FiltersSources)
+endif()
 
 # Pitfall 1 (needs openimageio-tools installed) and pitfall 2 (drop the opencv4 include path).
 find_package(OpenImageIO REQUIRED)

@@ -13,6 +13,9 @@ packages=(
   libassimp-dev libtinyobjloader-dev zlib1g-dev
   libbenchmark-dev glslang-tools
   xvfb xauth libgl1-mesa-dri
+  # The sanitize preset and the fuzz targets: Clang with its sanitizer and libFuzzer runtimes
+  # (LeakSanitizer needs libclang-rt-14-dev), and llvm-symbolizer for readable stacks.
+  clang libclang-rt-14-dev llvm
 )
 
 missing=()

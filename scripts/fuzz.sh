@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (the sanitize preset: Clang, ASan + UBSan) and runs each for SECONDS
+# (default 180), or only the KINDs given (ply, off, obj, stl, gltf, glb, fbx, png, jpg, tif, exr,
+# psd, svg, project, cli-options). A crash, sanitizer report, uncaught exception, broken promise,
+# hang (-timeout) or huge allocation (-rss_limit_mb) is a finding: its input goes to
+# FUZZ_OUT/crashes/KIND/ and every finding is listed at the end (exit 1 when there is one).
+#
+# Usage: scripts/fuzz.sh [SECONDS] [KIND...]
+# Environment:
+#   FUZZ_OUT=build/fuzz        corpora (kept between runs), crashes and logs
+#   FUZZ_RSS_MB=2048           memory limit per process, and per allocation
+#   FUZZ_TIMEOUT=10            seconds one input may take
+#   FUZZ_FORK=N                N worker processes that go on after a finding (-fork -ignore_*),
+#                              for long runs with known defects; default: stop at the first finding
+#   FUZZ_SEED=N                libFuzzer's random seed (CI fixes it; default: random)
+#   FUZZ_NO_BUILD=1            use the targets already built
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+
+seconds=${1:-180}
+[ $# -gt 0 ] && shift
+out=${FUZZ_OUT:-build/fuzz}
+rss=${FUZZ_RSS_MB:-2048}
+timeout=${FUZZ_TIMEOUT:-10}
+fork=${FUZZ_FORK:-0}
+list=build/sanitize/fuzzers.txt
+
+if [ -z "${FUZZ_NO_BUILD:-}" ]; then
+  [ -f build/sanitize/CMakeCache.txt ] || nice cmake --preset sanitize
+  nice cmake --build --preset fuzz
+fi
+[ -f "$list" ] || { echo "fuzz: $list is missing: configure the sanitize preset first" >&2; exit 2; }
+
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+# Findings of this run are the files newer than this mark (older ones stay in crashes/ until removed).
+mark=$out/.run-start
+touch "$mark"
+newFindings() { find "$@" -type f -newer "$mark" \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \); }
+shared=$(cd .. && pwd)/shared/data
+
+# Leaks are findings too; the symbolizer names the lines of a stack.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1:check_initialization_order=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export QT_QPA_PLATFORM=offscreen
+
+summary=()
+while read -r kind binary; do
+  if [ $# -gt 0 ] && ! printf '%s\n' "$@" | grep -qx -- "$kind"; then
+    continue
+  fi
+  corpus=$out/corpus/$kind
+  crashes=$out/crashes/$kind
+  work=$out/work/$kind
+  mkdir -p "$corpus" "$crashes" "$work" "$out/logs"
+  # Seeds: the committed corpus and regressions, and the shared data's files under 50 kB.
+  seeds=()
+  for dir in tests/data/fuzz-corpus/$kind tests/data/fuzz-regressions/$kind; do
+    [ -d "$dir" ] && seeds+=("$root/$dir")
+  done
+  if [ -d "$shared" ] && [[ $kind =~ ^(ply|off|obj|stl|gltf|glb|fbx|png|jpg|tif|exr|psd|svg)$ ]]; then
+    find "$shared" -type f -iname "*.$kind" -size -50k -exec cp -n {} "$corpus/" \;
+  fi
+  dict=tests/fuzz/dict/$kind.dict
+  [ "$kind" = glb ] && dict=tests/fuzz/dict/gltf.dict
+  flags=(-max_total_time="$seconds" -rss_limit_mb="$rss" -timeout="$timeout" -print_final_stats=1
+    -artifact_prefix="$crashes/")
+  [ -f "$dict" ] && flags+=(-dict="$root/$dict")
+  [ -n "${FUZZ_SEED:-}" ] && flags+=(-seed="$FUZZ_SEED")
+  [ "$fork" -gt 0 ] && flags+=(-fork="$fork" -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1)
+  log=$out/logs/$kind.log
+  echo "fuzz: $kind for ${seconds}s (log: $log)"
+  status=0
+  # Run from a folder of its own: libFuzzer writes fuzz-N.log files there in fork mode.
+  (cd "$work" && nice "$binary" "${flags[@]}" "$corpus" "${seeds[@]}") >"$log" 2>&1 || status=$?
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1 || true)
+  [ -n "$runs" ] || runs=$(grep -o '^#[0-9]*' "$log" | tail -1 | tr -d '#' || true)
+  found=$(newFindings "$crashes" | wc -l)
+  summary+=("$(printf '%-12s %12s executions  %3d findings  exit %d' "$kind" "${runs:-?}" "$found" "$status")")
+  if [ "$status" -ne 0 ] && [ "$found" -eq 0 ]; then
+    echo "fuzz: $kind stopped with status $status and no input saved; the end of its log:" >&2
+    tail -30 "$log" >&2
+  fi
+done <"$list"
+
+echo
+echo "fuzz: per target (corpora in $out/corpus):"
+printf '  %s\n' "${summary[@]}"
+findings=$(newFindings "$out/crashes" | sort)
+if [ -n "$findings" ]; then
+  echo
+  echo "fuzz: findings (replay one with: build/sanitize/tests/fuzz/fuzz_KIND FILE):"
+  printf '  %s\n' $findings
+  exit 1
+fi
+failed=$(printf '%s\n' "${summary[@]}" | grep -vc 'exit 0$' || true)
+[ "$failed" -eq 0 ] || { echo "fuzz: $failed target(s) stopped with an error" >&2; exit 1; }
+echo "fuzz: no findings"

@@ -1,0 +1,314 @@
+// Feeding one input to its loader, and the promises checked on what the loader accepted.
+#include "fuzz_inputs.h"
+
+#include "cli/options.h"
+
+#include "celform/algorithms/mesh_analysis.h"
+#include "celform/model/image_io.h"
+#include "celform/model/io_error.h"
+#include "celform/model/mesh_io.h"
+#include "celform/model/project_data.h"
+#include "celform/model/project_file.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtEndian>
+
+#include <zlib.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <set>
+#include <vector>
+
+namespace celform::fuzz {
+namespace {
+
+const QStringList kMeshKinds = {"ply", "off", "obj", "stl", "gltf", "glb", "fbx"};
+const QStringList kDrawingKinds = {"png", "jpg", "tif", "exr", "psd", "svg"};
+
+/// input.SUFFIX in a folder of this process, rewritten for every input. The folder's depth under
+/// the temporary folder is fixed, so relative references in a file (an OBJ's mtllib ../../x)
+/// resolve the same way in the fuzzer and in the replay.
+QString writeInput(const QString& suffix, const QByteArray& bytes)
+{
+    static QTemporaryDir dir(QDir::tempPath() + QStringLiteral("/celform-fuzz-XXXXXX"));
+    if (!dir.isValid()) {
+        std::fprintf(stderr, "fuzz: no temporary folder: %s\n", qPrintable(dir.errorString()));
+        std::abort();
+    }
+    const QString path = dir.filePath(QStringLiteral("input.") + suffix);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size()) {
+        std::fprintf(stderr, "fuzz: cannot write %s\n", qPrintable(path));
+        std::abort();
+    }
+    return path;
+}
+
+// --- promises of accepted input -------------------------------------------------------------------
+
+/// What every mesh the readers hand out must satisfy (mesh_io.h, tri_mesh.h): usable (vertices,
+/// faces, finite coordinates, indices in range), UV faces one per face and in range, face
+/// materials one per face and naming a material (0 stands for the default one).
+QString meshProblem(const algo::TriMesh& mesh)
+{
+    if (const auto defect = algo::findFatalDefect(mesh))
+        return QString::fromStdString(*defect);
+    const Eigen::Index nf = mesh.faceCount();
+    if (mesh.uvFaces.rows() > 0) {
+        if (mesh.uvFaces.rows() != nf)
+            return QStringLiteral("%1 UV faces for %2 faces").arg(mesh.uvFaces.rows()).arg(nf);
+        if (mesh.uvFaces.minCoeff() < 0 || mesh.uvFaces.maxCoeff() >= mesh.uvs.rows())
+            return QStringLiteral("a UV index is outside the %1 texture coordinates").arg(mesh.uvs.rows());
+    }
+    if (!mesh.faceMaterials.empty()) {
+        if (Eigen::Index(mesh.faceMaterials.size()) != nf)
+            return QStringLiteral("%1 face materials for %2 faces").arg(mesh.faceMaterials.size()).arg(nf);
+        for (const std::int32_t m : mesh.faceMaterials)
+            if (m < 0 || (m > 0 && std::size_t(m) >= mesh.materials.size()))
+                return QStringLiteral("face material %1 of %2 materials").arg(m).arg(mesh.materials.size());
+    }
+    return {};
+}
+
+/// The reading rules of docs/file-format.md on an accepted project: a usable base model, face
+/// sets and key offsets in range and in order, finite offsets, valid highlight tracks, shading
+/// offsets per vertex, decoded drawings.
+QString projectProblem(const model::ProjectData& data)
+{
+    const Eigen::Index nv = data.baseMesh ? data.baseMesh->vertexCount() : 0;
+    if (data.baseMesh) {
+        if (QString problem = meshProblem(*data.baseMesh); !problem.isEmpty())
+            return QStringLiteral("base model: ") + problem;
+    }
+    std::set<std::string> names;
+    for (const algo::FaceSet& set : data.faceSets) {
+        if (set.name.empty() || !names.insert(set.name).second)
+            return QStringLiteral("face set name empty or repeated");
+        for (std::size_t k = 0; k < set.faces.size(); ++k)
+            if (!data.baseMesh || set.faces[k] < 0 || set.faces[k] >= data.baseMesh->faceCount()
+                || (k > 0 && set.faces[k] <= set.faces[k - 1]))
+                return QStringLiteral("face set %1: face out of range or order").arg(QString::fromStdString(set.name));
+    }
+    for (const model::KeyViewpoint& key : data.keys)
+        for (const auto& [frame, offsets] : key.offsetsByFrame) {
+            if (offsets.indices.size() != offsets.deltas.size())
+                return QStringLiteral("key %1: %2 indices, %3 offsets")
+                    .arg(key.name)
+                    .arg(offsets.indices.size())
+                    .arg(offsets.deltas.size());
+            for (std::size_t i = 0; i < offsets.indices.size(); ++i)
+                if (offsets.indices[i] >= nv || (i > 0 && offsets.indices[i] <= offsets.indices[i - 1])
+                    || !offsets.deltas[i].allFinite())
+                    return QStringLiteral("key %1, frame %2: offset %3 out of range, order or not finite")
+                        .arg(key.name)
+                        .arg(frame)
+                        .arg(i);
+        }
+    if (const QString problem = model::highlightTracksProblem(data.look.highlights, data.faceSetNames());
+        !problem.isEmpty())
+        return QStringLiteral("highlights: ") + problem;
+    if (!data.shadingOffsets.empty() && Eigen::Index(data.shadingOffsets.size()) != nv)
+        return QStringLiteral("%1 shading offsets for %2 vertices").arg(data.shadingOffsets.size()).arg(nv);
+    for (const model::Drawing& d : data.drawings)
+        if (d.image.isNull())
+            return QStringLiteral("drawing %1 accepted but not decoded").arg(d.name);
+    return {};
+}
+
+// --- the option parsers ---------------------------------------------------------------------------
+
+/// Checks a parser's result; empty when it keeps its promise (options.h).
+using OptionParser = std::function<QString(const QString&)>;
+
+QString unless(bool ok, const char* promise)
+{
+    return ok ? QString() : QString::fromLatin1(promise);
+}
+
+template <typename Vector> bool unitLength(const Vector& v)
+{
+    return v.allFinite() && std::abs(double(v.norm()) - 1.0) < 1e-5;
+}
+
+template <typename Vector> bool normalises(const Vector& v)
+{
+    return v.allFinite() && v.norm() > 0 && std::isfinite(double(v.norm())) && v.normalized().allFinite();
+}
+
+bool finiteAsFloat(double v)
+{
+    return std::isfinite(v) && std::isfinite(float(v));
+}
+
+const std::vector<OptionParser>& optionParsers()
+{
+    using namespace celform::app;
+    static const std::vector<OptionParser> parsers = {
+        [](const QString& t) { return unless(parseNumbers("n", t, 2).allFinite(), "numbers finite"); },
+        [](const QString& t) { return unless(parseNumbers("n", t, 3).allFinite(), "numbers finite"); },
+        [](const QString& t) { return unless(parseNumbers("n", t, 4).allFinite(), "numbers finite"); },
+        [](const QString& t) {
+            const Eigen::VectorXd v = parseFloats("f", t, 2);
+            return unless(finiteAsFloat(v[0]) && finiteAsFloat(v[1]), "floats finite");
+        },
+        [](const QString& t) { return unless(std::isfinite(parseNumber("n", t)), "number finite"); },
+        [](const QString& t) { return unless(finiteAsFloat(parseFloat("f", t)), "float finite"); },
+        [](const QString& t) { return (void)parseInt("i", t), QString(); },
+        [](const QString& t) { return unless(std::abs(parseFrame("frame", t)) <= model::kMaxFrame, "frame in range"); },
+        [](const QString& t) {
+            const auto [a, b] = parseFrameRange("frames", t);
+            return unless(a <= b && std::abs(a) <= model::kMaxFrame && std::abs(b) <= model::kMaxFrame
+                    && qint64(b) - a + 1 <= kMaxFramesPerRun,
+                "frame range in bounds");
+        },
+        [](const QString& t) {
+            const QSize s = parseSize("size", t);
+            return unless(s.width() >= 1 && s.height() >= 1 && s.width() <= 16384 && s.height() <= 16384,
+                "size in bounds");
+        },
+        [](const QString& t) { return (void)parseOnOff("lines", t), QString(); },
+        [](const QString& t) { return unless(parsePoint("eye", t).allFinite(), "point finite"); },
+        [](const QString& t) { return unless(normalises(parseDirection("view", t)), "direction normalises"); },
+        [](const QString& t) { return unless(normalises(parseFloatDirection("guide", t)), "direction normalises"); },
+        [](const QString& t) {
+            const model::Light light = parseLight("light", t);
+            return unless(light.type == model::LightType::Point ? light.vector.allFinite() : unitLength(light.vector),
+                "light finite, directions of unit length");
+        },
+        [](const QString& t) { return (void)parseStyle("style", t), QString(); },
+        [](const QString& t) {
+            // The camera options of `key add` and `render`, each '\0'-separated word an argument.
+            static const SubCommand command{"render", {}, "", {}, camera_options::specs(), nullptr};
+            QCommandLineParser parser;
+            for (const OptionSpec& o : command.options)
+                parser.addOption(QCommandLineOption(QLatin1String(o.name), QString(), QLatin1String(o.valueName)));
+            if (!parser.parse(QStringList{QStringLiteral("celform")} + t.split(QLatin1Char('\0'))))
+                throw UsageError{parser.errorText()};
+            const Invocation in(command, parser);
+            camera_options::checkCombination(in, true);
+            if (camera_options::byView(in))
+                return unless(normalises(camera_options::view(in)), "view normalises");
+            return unless(camera_options::explicitCamera(in).isValid(), "camera valid");
+        },
+    };
+    return parsers;
+}
+
+Outcome feedOptions(const QByteArray& bytes)
+{
+    Outcome out;
+    if (bytes.isEmpty()) {
+        out.refusal = QStringLiteral("no parser chosen");
+        return out;
+    }
+    const auto& parsers = optionParsers();
+    const OptionParser& parse = parsers[std::size_t(static_cast<unsigned char>(bytes[0])) % parsers.size()];
+    try {
+        out.broken = parse(QString::fromUtf8(QByteArrayView(bytes).mid(1))); // NULs included
+        out.loaded = true;
+    } catch (const app::UsageError& e) {
+        out.refusal = e.message;
+    }
+    return out;
+}
+
+// --- the project container ----------------------------------------------------------------------
+
+constexpr qint64 kTrailerSize = 32;
+constexpr char kEndMagic[8] = {'C', 'E', 'L', 'F', 'E', 'N', 'D', '\n'};
+
+quint32 crc32Of(const char* data, qint64 size)
+{
+    return quint32(crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(data), uInt(size)));
+}
+
+} // namespace
+
+QStringList kinds()
+{
+    return kMeshKinds + kDrawingKinds + QStringList{QStringLiteral("project"), QStringLiteral("cli-options")};
+}
+
+Outcome feed(const QString& kind, const QByteArray& bytes)
+{
+    if (kind == QLatin1String("cli-options"))
+        return feedOptions(bytes);
+    Outcome out;
+    try {
+        if (kMeshKinds.contains(kind)) {
+            const model::MeshImport mesh = model::importMesh(writeInput(kind, bytes));
+            out.loaded = true;
+            out.broken = meshProblem(mesh.mesh);
+        } else if (kDrawingKinds.contains(kind)) {
+            const model::Drawing drawing = model::importDrawing(writeInput(kind, bytes));
+            out.loaded = true;
+            if (drawing.image.isNull())
+                out.broken = QStringLiteral("accepted but not decoded");
+        } else if (kind == QLatin1String("project")) {
+            const model::ProjectData data = model::loadProject(writeInput(QStringLiteral("celform"), bytes));
+            out.loaded = true;
+            out.broken = projectProblem(data);
+        } else {
+            std::fprintf(stderr, "fuzz: unknown kind %s\n", qPrintable(kind));
+            std::abort();
+        }
+    } catch (const model::IoError& e) {
+        out.refusal = e.message();
+    }
+    return out;
+}
+
+QByteArray fixProjectChecksums(const QByteArray& bytes)
+{
+    const qint64 size = bytes.size();
+    if (size < 16 + kTrailerSize || std::memcmp(bytes.constData() + size - 8, kEndMagic, 8) != 0)
+        return bytes;
+    const char* trailer = bytes.constData() + size - kTrailerSize;
+    const auto offset = qFromLittleEndian<quint64>(trailer);
+    const auto length = qFromLittleEndian<quint64>(trailer + 8);
+    if (offset < 16 || length > quint64(size) || offset + length > quint64(size - kTrailerSize))
+        return bytes; // refused before any checksum: nothing to fix
+    QByteArray manifest = bytes.mid(qsizetype(offset), qsizetype(length));
+
+    // The chunks before the manifest keep their offsets; re-serialize only when a checksum changes,
+    // so that mutations of the manifest's text reach the reader as they are.
+    const QJsonDocument json = QJsonDocument::fromJson(manifest);
+    QJsonObject root = json.object();
+    QJsonObject chunks = root.value(QLatin1String("chunks")).toObject();
+    bool changed = false;
+    for (auto it = chunks.begin(); it != chunks.end(); ++it) {
+        QJsonObject entry = it.value().toObject();
+        const double at = entry.value(QLatin1String("offset")).toDouble(-1);
+        const double n = entry.value(QLatin1String("size")).toDouble(-1);
+        if (!(at >= 16 && n >= 0 && at + n <= double(offset)))
+            continue;
+        const double crc = crc32Of(bytes.constData() + qint64(at), qint64(n));
+        if (entry.value(QLatin1String("crc32")).toDouble(-1) != crc) {
+            entry.insert(QLatin1String("crc32"), crc);
+            it.value() = entry;
+            changed = true;
+        }
+    }
+    if (changed) {
+        root.insert(QLatin1String("chunks"), chunks);
+        manifest = QJsonDocument(root).toJson(QJsonDocument::Compact);
+    }
+
+    QByteArray out = bytes.left(qsizetype(offset)) + manifest;
+    char fixed[kTrailerSize];
+    std::memcpy(fixed, trailer, kTrailerSize);
+    qToLittleEndian<quint64>(quint64(manifest.size()), fixed + 8);
+    qToLittleEndian<quint32>(crc32Of(manifest.constData(), manifest.size()), fixed + 16);
+    out.append(fixed, kTrailerSize);
+    return out;
+}
+
+} // namespace celform::fuzz

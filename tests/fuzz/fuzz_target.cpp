@@ -1,0 +1,61 @@
+// A libFuzzer target for one kind of input (CELFORM_FUZZ_KIND, one executable per kind: see
+// tests/fuzz/CMakeLists.txt). A finding is a crash or sanitizer report, a hang or huge allocation
+// (libFuzzer's -timeout and -rss_limit_mb), an exception other than the loader's refusal, or an
+// accepted input that breaks a promise the loader makes (fuzz_inputs.cpp).
+//
+// CELFORM_FUZZ_SAVE=FILE writes each input as the loader saw it (for the project target: with its
+// checksums fixed), to turn a crash artifact into a file for tests/data/fuzz-regressions/.
+// CELFORM_FUZZ_VERBOSE=1 keeps Qt's warnings (dropped otherwise: QtSvg prints one per bad element).
+#include "fuzz_inputs.h"
+
+#include <QFile>
+#include <QGuiApplication>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace {
+
+const QString kKind = QStringLiteral(CELFORM_FUZZ_KIND);
+
+void quietMessages(QtMsgType type, const QMessageLogContext&, const QString& message)
+{
+    if (type == QtFatalMsg || qEnvironmentVariableIsSet("CELFORM_FUZZ_VERBOSE"))
+        std::fprintf(stderr, "%s\n", qPrintable(message));
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+    qInstallMessageHandler(quietMessages);
+    // SVG text needs fonts and fonts need a QGuiApplication; the offscreen platform needs no
+    // display. It lives until the process ends (reachable, so not a leak) and never sees
+    // libFuzzer's flags.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char name[] = "celform-fuzz";
+    static char* argv[] = {name, nullptr};
+    static QGuiApplication* app = new QGuiApplication(argc, argv);
+    Q_UNUSED(app);
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+    const QByteArray raw = QByteArray::fromRawData(reinterpret_cast<const char*>(data), qsizetype(size));
+    const QByteArray input = kKind == QLatin1String("project") ? celform::fuzz::fixProjectChecksums(raw) : raw;
+    if (const QByteArray save = qgetenv("CELFORM_FUZZ_SAVE"); !save.isEmpty()) {
+        QFile file(QFile::decodeName(save));
+        if (file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+            file.write(input);
+    }
+    const celform::fuzz::Outcome outcome = celform::fuzz::feed(kKind, input);
+    if (!outcome.broken.isEmpty()) {
+        std::fprintf(stderr, "celform fuzz: the %s loader accepted an input that breaks its promise: %s\n",
+            qPrintable(kKind), qPrintable(outcome.broken));
+        std::abort();
+    }
+    return 0;
+}
