@@ -10,10 +10,16 @@
 #include <QtEndian>
 #include <QtTest/QtTest>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
+#include <iterator>
 #include <limits>
+#include <mutex>
 #include <random>
+#include <thread>
 
 using celform::algo::Faces;
 using celform::algo::Positions;
@@ -111,6 +117,55 @@ QByteArray tightBinaryPly(int vertexCountInHeader, int verticesWritten)
     return out;
 }
 
+/// Ends the run with a message when an import takes longer than a limit: a loader that hangs on a
+/// regression input (an endless loop, a blocking open) then fails the suite at once, naming the
+/// input, instead of stalling it until ctest's timeout.
+class Watchdog {
+public:
+    Watchdog(const QString& what, std::chrono::seconds limit)
+        : m_what(what.toLocal8Bit())
+        , m_thread([this, limit] {
+            std::unique_lock lock(m_mutex);
+            if (!m_doneChanged.wait_for(lock, limit, [this] { return m_done; }))
+                qFatal("%s: no answer within %lld s (hang)", m_what.constData(), static_cast<long long>(limit.count()));
+        })
+    { }
+    Watchdog(const Watchdog&) = delete;
+    Watchdog& operator=(const Watchdog&) = delete;
+    ~Watchdog()
+    {
+        {
+            const std::lock_guard lock(m_mutex);
+            m_done = true;
+        }
+        m_doneChanged.notify_one();
+        m_thread.join();
+    }
+
+private:
+    QByteArray m_what;
+    std::mutex m_mutex;
+    std::condition_variable m_doneChanged;
+    bool m_done = false;
+    std::thread m_thread; // last: it starts once the members it uses exist
+};
+
+constexpr std::chrono::seconds kImportTimeLimit{20};
+
+/// What each input under tests/data/fuzz-regressions/mesh must give: an IoError whose problem
+/// contains `expected`, or (loads) a mesh with a warning containing it. Every file in the folder
+/// needs a row here, and every row a file.
+struct RegressionExpectation {
+    const char* file;
+    bool loads;
+    const char* expected;
+};
+
+constexpr RegressionExpectation kMeshRegressions[] = {
+    {"ply-ascii-second-vertex-element-heap-overflow.ply", false, "a second \"vertex\" element"},
+    {"ply-binary-second-vertex-element-heap-overflow.ply", false, "a second \"vertex\" element"},
+};
+
 void verifyQuad(const MeshImport& result)
 {
     QCOMPARE(result.mesh.vertexCount(), 4);
@@ -143,6 +198,8 @@ private slots:
     void roundTrip();
     void exportErrors();
     void suffixesAndFilter();
+    void fuzzRegressions_data();
+    void fuzzRegressions();
 };
 
 void TestMeshIo::offVertexOrderAndFan_data()
@@ -324,6 +381,13 @@ void TestMeshIo::malformed_data()
     QTest::newRow("obj float overflow") << "big.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n")
                                         << "vertex 3";
     QTest::newRow("obj NaN") << "nan.obj" << QByteArray("v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n") << "vertex 2";
+    QTest::newRow("ply second face element")
+        << "faces2.ply"
+        << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element face 1\nproperty list uchar int vertex_indices\n"
+                      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n")
+        << "PLY header line 9: a second \"face\" element";
     QTest::newRow("obj no faces") << "nofaces.obj" << QByteArray("v 0 0 0\n") << "no faces";
     QTest::newRow("stl garbage") << "garbage.stl" << QByteArray("this is not an stl file at all, not even close\n")
                                  << "STL";
@@ -486,6 +550,48 @@ void TestMeshIo::suffixesAndFilter()
     for (const char* needed : {"obj", "ply", "off", "stl", "gltf", "glb"})
         QVERIFY(s.contains(QLatin1String(needed)));
     QVERIFY(celform::model::meshFileFilter().contains(QStringLiteral("*.ply")));
+}
+
+void TestMeshIo::fuzzRegressions_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<bool>("listed");
+    QTest::addColumn<bool>("loads");
+    QTest::addColumn<QString>("expected");
+    const QDir dir(celform::test::testDataPath(QStringLiteral("fuzz-regressions/mesh")));
+    QStringList files = dir.entryList(QDir::Files, QDir::Name);
+    for (const RegressionExpectation& r : kMeshRegressions)
+        if (!files.contains(QLatin1String(r.file)))
+            files << QLatin1String(r.file); // a listed file that is missing fails below
+    for (const QString& file : files) {
+        const auto it = std::find_if(std::begin(kMeshRegressions), std::end(kMeshRegressions),
+            [&](const RegressionExpectation& r) { return file == QLatin1String(r.file); });
+        const bool listed = it != std::end(kMeshRegressions);
+        QTest::newRow(qPrintable(file)) << dir.filePath(file) << listed << (listed && it->loads)
+                                        << (listed ? QString::fromUtf8(it->expected) : QString());
+    }
+}
+
+void TestMeshIo::fuzzRegressions()
+{
+    QFETCH(QString, path);
+    QFETCH(bool, listed);
+    QFETCH(bool, loads);
+    QFETCH(QString, expected);
+    QVERIFY2(listed, "no row in kMeshRegressions for this file");
+    QVERIFY2(QFileInfo(path).isFile(), qPrintable(QStringLiteral("missing: ") + path));
+    const Watchdog watchdog(path, kImportTimeLimit);
+    try {
+        const MeshImport r = importMesh(path);
+        QVERIFY2(loads, qPrintable(QStringLiteral("loaded, but should be refused with: ") + expected));
+        const QString warnings = r.warnings.join(QStringLiteral(" | "));
+        QVERIFY2(warnings.contains(expected), qPrintable(QStringLiteral("warnings: ") + warnings));
+    } catch (const IoError& e) {
+        QVERIFY2(!loads, qPrintable(QStringLiteral("refused, but should load: ") + e.message()));
+        QCOMPARE(e.file(), path);
+        QVERIFY2(e.problem().contains(expected), qPrintable(e.message()));
+        QVERIFY2(!e.problem().contains(QLatin1Char('\n')), qPrintable(e.message()));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestMeshIo)

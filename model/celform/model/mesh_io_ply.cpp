@@ -237,7 +237,16 @@ PlyHeader readPlyHeader(const QString& path, const char* data, std::size_t size)
                 std::from_chars(w[2].data(), w[2].data() + w[2].size(), count);
             if (count < 0)
                 throw bad(MeshIo::tr("invalid element line"));
-            h.elements.push_back({std::string(w[1]), count, {}});
+            // The readers size the vertex array by the one "vertex" element and take faces from
+            // the one "face" element: a second "vertex" would write past that array and a second
+            // "face" would be dropped without a word, so either is refused.
+            const std::string_view name = w[1];
+            if ((name == "vertex" || name == "face")
+                && std::any_of(
+                    h.elements.begin(), h.elements.end(), [&](const PlyElement& e) { return e.name == name; }))
+                throw bad(MeshIo::tr("a second \"%1\" element (a PLY file has one)")
+                              .arg(QString::fromUtf8(name.data(), int(name.size()))));
+            h.elements.push_back({std::string(name), count, {}});
         } else if (w[0] == "property") {
             if (h.elements.empty())
                 throw bad(MeshIo::tr("property before any element"));
@@ -289,7 +298,6 @@ void readPlyBinary(
             MeshIo::tr("the file is truncated: it ends inside the \"%1\" element").arg(QString::fromStdString(e.name)));
     };
     FaceBuilder faces(path, nv);
-    bool sawFaces = false;
 
     for (const PlyElement& e : h.elements) {
         const std::size_t remaining = static_cast<std::size_t>(end - p);
@@ -365,8 +373,7 @@ void readPlyBinary(
             continue;
         }
 
-        if (e.name == "face" && !sawFaces) {
-            sawFaces = true;
+        if (e.name == "face") {
             const int listIndex = plyFaceList(e);
             if (listIndex < 0)
                 throw IoError(path, MeshIo::tr("the face element has no vertex_indices list"));
@@ -461,7 +468,6 @@ void readPlyAscii(
 {
     TextCursor in(path, data + h.bodyOffset, data + size, false);
     FaceBuilder faces(path, nv);
-    bool sawFaces = false;
     std::vector<std::int64_t> corners;
     for (const PlyElement& e : h.elements) {
         // Each value takes at least one digit and one separator.
@@ -471,11 +477,10 @@ void readPlyAscii(
                 MeshIo::tr("the file is truncated: it ends inside the \"%1\" element")
                     .arg(QString::fromStdString(e.name)));
         const bool isVertex = e.name == "vertex";
-        const bool isFace = e.name == "face" && !sawFaces;
+        const bool isFace = e.name == "face";
         const int ix = e.find("x"), iy = e.find("y"), iz = e.find("z");
         const int listIndex = isFace ? plyFaceList(e) : -1;
         if (isFace) {
-            sawFaces = true;
             if (listIndex < 0)
                 throw IoError(path, MeshIo::tr("the face element has no vertex_indices list"));
             faces.reserve(e.count);
