@@ -164,6 +164,8 @@ struct RegressionExpectation {
 constexpr RegressionExpectation kMeshRegressions[] = {
     {"ply-ascii-second-vertex-element-heap-overflow.ply", false, "a second \"vertex\" element"},
     {"ply-binary-second-vertex-element-heap-overflow.ply", false, "a second \"vertex\" element"},
+    {"ply-binary-propertyless-element-9e18-rows-hang.ply", false,
+        "element \"junk\" has 9000000000000000000 rows but no properties"},
 };
 
 void verifyQuad(const MeshImport& result)
@@ -388,6 +390,12 @@ void TestMeshIo::malformed_data()
                       "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n")
         << "PLY header line 9: a second \"face\" element";
+    QTest::newRow("ply ascii element without properties")
+        << "noprops.ply"
+        << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element junk 5\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+        << "PLY header line 7: element \"junk\" has 5 rows but no properties";
     QTest::newRow("obj no faces") << "nofaces.obj" << QByteArray("v 0 0 0\n") << "no faces";
     QTest::newRow("stl garbage") << "garbage.stl" << QByteArray("this is not an stl file at all, not even close\n")
                                  << "STL";

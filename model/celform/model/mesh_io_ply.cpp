@@ -71,6 +71,7 @@ struct PlyElement {
     std::string name;
     std::int64_t count = 0;
     std::vector<PlyProperty> properties;
+    std::int64_t headerLine = 0; ///< for messages about the element as a whole
 
     /// Bytes per binary row, or 0 when a list makes the rows variable.
     [[nodiscard]] std::size_t fixedStride() const
@@ -246,7 +247,7 @@ PlyHeader readPlyHeader(const QString& path, const char* data, std::size_t size)
                     h.elements.begin(), h.elements.end(), [&](const PlyElement& e) { return e.name == name; }))
                 throw bad(MeshIo::tr("a second \"%1\" element (a PLY file has one)")
                               .arg(QString::fromUtf8(name.data(), int(name.size()))));
-            h.elements.push_back({std::string(name), count, {}});
+            h.elements.push_back({std::string(name), count, {}, lineNo});
         } else if (w[0] == "property") {
             if (h.elements.empty())
                 throw bad(MeshIo::tr("property before any element"));
@@ -272,6 +273,16 @@ PlyHeader readPlyHeader(const QString& path, const char* data, std::size_t size)
     }
     if (!sawFormat)
         throw IoError(path, MeshIo::tr("the PLY header has no format line"));
+    // Rows without properties take no bytes, so no file size bounds their count, and the readers
+    // would step through every one of them (10^19 is a hang). They carry nothing: refused.
+    for (const PlyElement& e : h.elements)
+        if (e.count > 0 && e.properties.empty())
+            throw IoError(path,
+                MeshIo::tr("PLY header line %1: %2")
+                    .arg(e.headerLine)
+                    .arg(MeshIo::tr("element \"%1\" has %2 rows but no properties")
+                             .arg(QString::fromStdString(e.name))
+                             .arg(e.count)));
     h.bodyOffset = pos;
     return h;
 }
@@ -301,8 +312,10 @@ void readPlyBinary(
 
     for (const PlyElement& e : h.elements) {
         const std::size_t remaining = static_cast<std::size_t>(end - p);
-        const std::size_t minStride = e.minStride();
-        if (minStride > 0 && static_cast<std::uint64_t>(e.count) > remaining / minStride)
+        // Every row takes at least one byte (the header refuses rows without properties), so the
+        // count is always checked against the bytes left, never skipped.
+        const std::size_t minStride = std::max<std::size_t>(e.minStride(), 1);
+        if (static_cast<std::uint64_t>(e.count) > remaining / minStride)
             throw truncated(e);
         const std::size_t stride = e.fixedStride();
 
@@ -377,8 +390,11 @@ void readPlyBinary(
             const int listIndex = plyFaceList(e);
             if (listIndex < 0)
                 throw IoError(path, MeshIo::tr("the face element has no vertex_indices list"));
-            faces.reserve(e.count);
             const PlyProperty& list = e.properties[std::size_t(listIndex)];
+            // Reserve for the triangles the bytes left can hold, not for the count: rows with
+            // fewer than three corners are smaller than a triangle and give none.
+            const std::size_t triangleRow = minStride + 3 * plySize(list.type);
+            faces.reserve(std::min<std::int64_t>(e.count, static_cast<std::int64_t>(remaining / triangleRow)));
             const bool fast = e.properties.size() == 1 && list.countType == PlyType::UInt8
                 && (list.type == PlyType::Int32 || list.type == PlyType::UInt32) && !swap;
             std::int64_t corners[256];
@@ -483,7 +499,8 @@ void readPlyAscii(
         if (isFace) {
             if (listIndex < 0)
                 throw IoError(path, MeshIo::tr("the face element has no vertex_indices list"));
-            faces.reserve(e.count);
+            // As many triangles as the text left can hold ("3 0 1 2" and a separator), at most.
+            faces.reserve(std::min<std::int64_t>(e.count, static_cast<std::int64_t>(in.remaining() / 8)));
         }
         float* pv = out.mesh.vertices.data();
         for (std::int64_t i = 0; i < e.count; ++i) {
