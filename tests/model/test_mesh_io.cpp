@@ -21,6 +21,8 @@
 #include <random>
 #include <thread>
 
+#include <sys/stat.h> // mkfifo
+
 using celform::algo::Faces;
 using celform::algo::Positions;
 using celform::algo::TriMesh;
@@ -202,6 +204,8 @@ private slots:
     void suffixesAndFilter();
     void fuzzRegressions_data();
     void fuzzRegressions();
+    void notRegularFile_data();
+    void notRegularFile();
 };
 
 void TestMeshIo::offVertexOrderAndFan_data()
@@ -599,6 +603,43 @@ void TestMeshIo::fuzzRegressions()
         QCOMPARE(e.file(), path);
         QVERIFY2(e.problem().contains(expected), qPrintable(e.message()));
         QVERIFY2(!e.problem().contains(QLatin1Char('\n')), qPrintable(e.message()));
+    }
+}
+
+void TestMeshIo::notRegularFile_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("kind");
+    QTest::newRow("fifo ply") << "pipe.ply"
+                              << "fifo";
+    QTest::newRow("fifo stl (Assimp)") << "pipe.stl"
+                                       << "fifo";
+    QTest::newRow("directory obj") << "folder.obj"
+                                   << "directory";
+    QTest::newRow("link to a device") << "zero.off"
+                                      << "device";
+}
+
+void TestMeshIo::notRegularFile()
+{
+    QFETCH(QString, name);
+    QFETCH(QString, kind);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(name);
+    if (kind == QLatin1String("fifo"))
+        QVERIFY(::mkfifo(QFile::encodeName(path).constData(), 0600) == 0);
+    else if (kind == QLatin1String("directory"))
+        QVERIFY(QDir(dir.path()).mkdir(name));
+    else
+        QVERIFY(QFile::link(QStringLiteral("/dev/zero"), path));
+    // Opening a FIFO with no writer blocks: the refusal must come before any open().
+    const Watchdog watchdog(path, kImportTimeLimit);
+    try {
+        importMesh(path);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), path);
+        QVERIFY2(e.problem().contains(QStringLiteral("not a regular file")), qPrintable(e.message()));
     }
 }
 

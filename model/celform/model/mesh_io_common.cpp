@@ -6,13 +6,26 @@
 
 namespace celform::model::meshio {
 
+void requireRegularFile(const QString& path)
+{
+    const QFileInfo info(path);
+    if (!info.exists())
+        throw IoError(path, MeshIo::tr("the file does not exist"));
+    if (info.isDir())
+        throw IoError(path, MeshIo::tr("this is a folder, not a regular file"));
+    if (!info.isFile())
+        throw IoError(path, MeshIo::tr("this is not a regular file (a pipe, a socket or a device)"));
+}
+
 FileBytes::FileBytes(const QString& path)
     : m_file(path)
 {
-    if (!QFileInfo::exists(path))
-        throw IoError(path, MeshIo::tr("the file does not exist"));
+    requireRegularFile(path);
     if (!m_file.open(QIODevice::ReadOnly))
         throw IoError(path, MeshIo::tr("the file cannot be opened: %1").arg(m_file.errorString()));
+    // Replaced by a device between the check and the open: its size says nothing, refuse it too.
+    if (m_file.isSequential())
+        throw IoError(path, MeshIo::tr("this is not a regular file (a pipe, a socket or a device)"));
     const qint64 size = m_file.size();
     if (size == 0)
         throw IoError(path, MeshIo::tr("the file is empty"));

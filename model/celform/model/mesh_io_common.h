@@ -31,10 +31,16 @@ namespace meshio {
 constexpr std::int64_t kMaxIndex = std::numeric_limits<std::int32_t>::max();
 constexpr bool kHostLittleEndian = Q_BYTE_ORDER == Q_LITTLE_ENDIAN;
 
+/// Throws IoError naming the file unless path is an existing regular file (symbolic links
+/// followed). Checked before anything opens the file: opening a FIFO with no writer blocks for
+/// ever, and a directory or a device such as /dev/zero has no end to read to.
+void requireRegularFile(const QString& path);
+
 /// Whole-file access: mapped where possible, so a 16 MB PLY costs no copy.
 class FileBytes {
 public:
-    /// Throws IoError for a missing, unopenable, empty or unreadable file.
+    /// Throws IoError for a missing, unopenable, empty or unreadable file, and for anything that
+    /// is not a regular file (refused before it is opened).
     explicit FileBytes(const QString& path);
     [[nodiscard]] const char* data() const { return m_data; }
     [[nodiscard]] std::size_t size() const { return m_size; }
