@@ -168,6 +168,8 @@ constexpr RegressionExpectation kMeshRegressions[] = {
     {"ply-binary-second-vertex-element-heap-overflow.ply", false, "a second \"vertex\" element"},
     {"ply-binary-propertyless-element-9e18-rows-hang.ply", false,
         "element \"junk\" has 9000000000000000000 rows but no properties"},
+    {"obj-mtllib-dotdot-dev-zero-oom.obj", true, "is outside the folder of the OBJ file"},
+    {"obj-mtllib-dotdot-dev-urandom-hang.obj", true, "is outside the folder of the OBJ file"},
 };
 
 void verifyQuad(const MeshImport& result)
@@ -206,6 +208,8 @@ private slots:
     void fuzzRegressions();
     void notRegularFile_data();
     void notRegularFile();
+    void objMaterialLibraries_data();
+    void objMaterialLibraries();
 };
 
 void TestMeshIo::offVertexOrderAndFan_data()
@@ -640,6 +644,60 @@ void TestMeshIo::notRegularFile()
     } catch (const IoError& e) {
         QCOMPARE(e.file(), path);
         QVERIFY2(e.problem().contains(QStringLiteral("not a regular file")), qPrintable(e.message()));
+    }
+}
+
+void TestMeshIo::objMaterialLibraries_data()
+{
+    QTest::addColumn<QString>("mtllib");
+    QTest::addColumn<QString>("warning"); // empty: the materials load
+    QTest::newRow("sub-folder") << "mats/quad.mtl" << QString();
+    QTest::newRow("absolute") << "/dev/zero"
+                              << "\"/dev/zero\" is outside the folder of the OBJ file";
+    QTest::newRow("absolute to a file") << "@/mats/quad.mtl"
+                                        << "is outside the folder of the OBJ file";
+    QTest::newRow("dot-dot inside") << "mats/../mats/quad.mtl" << QString();
+    QTest::newRow("dot-dot") << "../quad.mtl"
+                             << "is outside the folder of the OBJ file";
+    QTest::newRow("missing") << "none.mtl"
+                             << "\"none.mtl\" does not exist";
+    QTest::newRow("fifo") << "pipe.mtl"
+                          << "\"pipe.mtl\" is not a regular file";
+    QTest::newRow("folder") << "mats"
+                            << "\"mats\" is not a regular file";
+    QTest::newRow("too large") << "big.mtl"
+                               << "\"big.mtl\" is larger than";
+}
+
+void TestMeshIo::objMaterialLibraries()
+{
+    QFETCH(QString, mtllib);
+    QFETCH(QString, warning);
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("obj/mats")));
+    const QByteArray mtl = "newmtl red\nKd 1 0 0\n";
+    writeFile(dir, QStringLiteral("quad.mtl"), mtl); // beside the OBJ's folder: out of reach
+    writeFile(dir, QStringLiteral("obj/mats/quad.mtl"), mtl);
+    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath(QStringLiteral("obj/pipe.mtl"))).constData(), 0600) == 0);
+    {
+        QFile big(dir.filePath(QStringLiteral("obj/big.mtl")));
+        QVERIFY(big.open(QIODevice::WriteOnly) && big.resize(qint64(64) << 20)); // sparse
+    }
+    mtllib.replace(QLatin1Char('@'), dir.filePath(QStringLiteral("obj")));
+    const QString path = writeFile(dir, QStringLiteral("obj/tri.obj"),
+        "mtllib " + mtllib.toUtf8() + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    const Watchdog watchdog(path, kImportTimeLimit);
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(path))
+    QCOMPARE(r.mesh.faceCount(), 1);
+    if (warning.isEmpty()) {
+        QVERIFY2(r.warnings.filter(QStringLiteral("material")).isEmpty(), qPrintable(r.warnings.join('|')));
+        QCOMPARE(int(r.mesh.materials.size()), 1);
+        QCOMPARE(r.mesh.materials[0].name, std::string("red"));
+    } else {
+        QVERIFY2(r.warnings.join('|').contains(warning), qPrintable(r.warnings.join('|')));
+        QVERIFY(r.mesh.materials.empty()); // default materials
+        for (const QString& w : r.warnings)
+            QVERIFY2(!w.contains(QLatin1Char('\n')), qPrintable(w));
     }
 }
 
