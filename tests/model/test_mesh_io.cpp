@@ -170,6 +170,7 @@ constexpr RegressionExpectation kMeshRegressions[] = {
         "element \"junk\" has 9000000000000000000 rows but no properties"},
     {"obj-mtllib-dotdot-dev-zero-oom.obj", true, "is outside the folder of the OBJ file"},
     {"obj-mtllib-dotdot-dev-urandom-hang.obj", true, "is outside the folder of the OBJ file"},
+    {"obj-face-index-99999999999-wraps.obj", false, "line 4: face 1 has the index 99999999999, which is too large"},
 };
 
 void verifyQuad(const MeshImport& result)
@@ -391,6 +392,16 @@ void TestMeshIo::malformed_data()
     QTest::newRow("obj float overflow") << "big.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n")
                                         << "vertex 3";
     QTest::newRow("obj NaN") << "nan.obj" << QByteArray("v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n") << "vertex 2";
+    QTest::newRow("obj index wraps to a valid one")
+        << "wrap.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967299\n") << "index 4294967299, which";
+    QTest::newRow("obj negative index overflow")
+        << "negwrap.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -99999999999\n") << "-99999999999";
+    QTest::newRow("obj texcoord index overflow")
+        << "vtwrap.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/4294967297\n")
+        << "line 5: face 1 has the index 4294967297";
+    QTest::newRow("obj index of 30 digits")
+        << "digits.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 123456789012345678901234567890\n")
+        << "123456789012345678901234567890";
     QTest::newRow("ply second face element")
         << "faces2.ply"
         << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"

@@ -117,14 +117,51 @@ private:
     QStringList m_problems;
 };
 
+/// Checks the index parts of an "f" line (from p to eol) as tinyobjloader will read them, with
+/// atoi(): an index beyond 32 bits would wrap there (99999999999 to 1215752191, 4294967299 to a
+/// valid 3), so it is refused here, quoted as written.
+void checkObjFaceIndices(const QString& path, const char* p, const char* eol, std::int64_t line, std::int64_t face)
+{
+    const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+    while (p < eol) {
+        if (*p == ' ' || *p == '\t' || *p == '\r' || *p == '/') {
+            ++p;
+            continue;
+        }
+        const char* const start = p;
+        if (*p == '-' || *p == '+')
+            ++p;
+        const char* const digits = p;
+        while (p < eol && isDigit(*p))
+            ++p;
+        if (p > digits) {
+            std::int64_t value = 0;
+            const auto [next, ec] = std::from_chars(digits, p, value);
+            if (ec == std::errc::result_out_of_range || next != p || value > kMaxIndex) {
+                const auto length = std::min<std::ptrdiff_t>(p - start, 40);
+                throw IoError(path,
+                    MeshIo::tr("line %1: face %2 has the index %3, which is too large")
+                        .arg(line)
+                        .arg(face)
+                        .arg(QString::fromLatin1(start, static_cast<qsizetype>(length))
+                            + (p - start > length ? QStringLiteral("...") : QString())));
+            }
+        }
+        while (p < eol && *p != ' ' && *p != '\t' && *p != '\r' && *p != '/')
+            ++p; // the rest of the part, as atoi() ignores it
+    }
+}
+
 /// tinyobjloader reads a coordinate it cannot parse ("nan", "1,5", "x") as 0 without a word; check
-/// the "v" lines first so such a file is an error rather than a silently flattened mesh.
-void checkObjCoordinates(const QString& path, const FileBytes& bytes)
+/// the "v" lines first so such a file is an error rather than a silently flattened mesh. The "f"
+/// lines' indices are checked too (checkObjFaceIndices).
+void checkObjLines(const QString& path, const FileBytes& bytes)
 {
     const char* p = bytes.data();
     const char* const end = p + bytes.size();
     std::int64_t line = 0;
     std::int64_t vertex = 0;
+    std::int64_t face = 0;
     while (p < end) {
         ++line;
         const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
@@ -153,6 +190,8 @@ void checkObjCoordinates(const QString& path, const FileBytes& bytes)
                             .arg(vertex));
                 p = next;
             }
+        } else if (eol - p >= 2 && p[0] == 'f' && (p[1] == ' ' || p[1] == '\t')) {
+            checkObjFaceIndices(path, p + 2, eol, line, ++face);
         }
         p = eol + 1;
     }
@@ -163,7 +202,7 @@ void checkObjCoordinates(const QString& path, const FileBytes& bytes)
 void readObj(const QString& path, MeshImport& out)
 {
     const FileBytes bytes(path); // also gives missing and empty files the usual messages
-    checkObjCoordinates(path, bytes);
+    checkObjLines(path, bytes);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
