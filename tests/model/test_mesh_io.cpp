@@ -171,6 +171,12 @@ constexpr RegressionExpectation kMeshRegressions[] = {
     {"obj-mtllib-dotdot-dev-zero-oom.obj", true, "is outside the folder of the OBJ file"},
     {"obj-mtllib-dotdot-dev-urandom-hang.obj", true, "is outside the folder of the OBJ file"},
     {"obj-face-index-99999999999-wraps.obj", false, "line 4: face 1 has the index 99999999999, which is too large"},
+    {"ply-header-only-60m-faces.ply", false,
+        "60000000 faces, more than the file holds and more than the 50000000 triangles Celform can load"},
+    {"ply-header-only-60m-vertices.ply", false,
+        "60000000 vertices and 1 faces, more than the file holds and more than the 50000000 vertices Celform can load"},
+    {"off-header-only-60m-faces.off", false,
+        "60000000 faces, more than the file holds and more than the 50000000 triangles Celform can load"},
 };
 
 void verifyQuad(const MeshImport& result)
@@ -207,6 +213,8 @@ private slots:
     void suffixesAndFilter();
     void fuzzRegressions_data();
     void fuzzRegressions();
+    void sizeLimits_data();
+    void sizeLimits();
     void notRegularFile_data();
     void notRegularFile();
     void objMaterialLibraries_data();
@@ -618,6 +626,56 @@ void TestMeshIo::fuzzRegressions()
         QCOMPARE(e.file(), path);
         QVERIFY2(e.problem().contains(expected), qPrintable(e.message()));
         QVERIFY2(!e.problem().contains(QLatin1Char('\n')), qPrintable(e.message()));
+    }
+}
+
+void TestMeshIo::sizeLimits_data()
+{
+    // Headers whose counts the file's size could hold: a zero-filled (sparse) body makes them
+    // plausible, so only the size limit stands between the count and the allocation.
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QByteArray>("header");
+    QTest::addColumn<qint64>("bodyBytes");
+    QTest::addColumn<QString>("expected");
+    const QByteArray vertices = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    QTest::newRow("ply faces") << "faces.ply"
+                               << QByteArray("ply\nformat binary_little_endian 1.0\n" + vertices
+                                      + "element face 60000000\nproperty list uchar int vertex_indices\nend_header\n")
+                               << qint64(36 + 60000000)
+                               << "the file has 60000000 faces, more than the 50000000 triangles";
+    QTest::newRow("ply vertices")
+        << "vertices.ply"
+        << QByteArray("ply\nformat binary_little_endian 1.0\nelement vertex 60000000\nproperty float x\n"
+                      "property float y\nproperty float z\nend_header\n")
+        << qint64(720000000) << "the file has 60000000 vertices, more than the 50000000 vertices";
+    QTest::newRow("off faces") << "faces.off" << QByteArray("OFF\n3 60000000 0\n") << qint64(500000000)
+                               << "the file has 60000000 faces, more than the 50000000 triangles";
+    QTest::newRow("ply polygon of 60 M corners")
+        << "polygon.ply"
+        << QByteArray("ply\nformat ascii 1.0\n" + vertices
+               + "element face 1\nproperty list uint int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n60000000 ")
+        << qint64(60000000) << "face 1 makes more than the 50000000 triangles";
+}
+
+void TestMeshIo::sizeLimits()
+{
+    QFETCH(QString, name);
+    QFETCH(QByteArray, header);
+    QFETCH(qint64, bodyBytes);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, name, header);
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadWrite) && file.resize(header.size() + bodyBytes)); // sparse
+    }
+    const Watchdog watchdog(path, kImportTimeLimit);
+    try {
+        importMesh(path);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), path);
+        QVERIFY2(e.problem().contains(expected), qPrintable(e.message()));
     }
 }
 

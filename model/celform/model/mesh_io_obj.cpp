@@ -119,12 +119,24 @@ private:
 
 /// Checks the index parts of an "f" line (from p to eol) as tinyobjloader will read them, with
 /// atoi(): an index beyond 32 bits would wrap there (99999999999 to 1215752191, 4294967299 to a
-/// valid 3), so it is refused here, quoted as written.
-void checkObjFaceIndices(const QString& path, const char* p, const char* eol, std::int64_t line, std::int64_t face)
+/// valid 3), so it is refused here, quoted as written. Returns the number of corners.
+std::int64_t checkObjFaceIndices(
+    const QString& path, const char* p, const char* eol, std::int64_t line, std::int64_t face)
 {
     const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+    std::int64_t corners = 0;
+    bool inCorner = false;
     while (p < eol) {
-        if (*p == ' ' || *p == '\t' || *p == '\r' || *p == '/') {
+        if (*p == ' ' || *p == '\t' || *p == '\r') {
+            inCorner = false;
+            ++p;
+            continue;
+        }
+        if (!inCorner) {
+            inCorner = true;
+            ++corners;
+        }
+        if (*p == '/') {
             ++p;
             continue;
         }
@@ -150,11 +162,13 @@ void checkObjFaceIndices(const QString& path, const char* p, const char* eol, st
         while (p < eol && *p != ' ' && *p != '\t' && *p != '\r' && *p != '/')
             ++p; // the rest of the part, as atoi() ignores it
     }
+    return corners;
 }
 
 /// tinyobjloader reads a coordinate it cannot parse ("nan", "1,5", "x") as 0 without a word; check
 /// the "v" lines first so such a file is an error rather than a silently flattened mesh. The "f"
-/// lines' indices are checked too (checkObjFaceIndices).
+/// lines' indices are checked too (checkObjFaceIndices), and the counts against the mesh size
+/// limits, before tinyobjloader allocates anything.
 void checkObjLines(const QString& path, const FileBytes& bytes)
 {
     const char* p = bytes.data();
@@ -162,6 +176,7 @@ void checkObjLines(const QString& path, const FileBytes& bytes)
     std::int64_t line = 0;
     std::int64_t vertex = 0;
     std::int64_t face = 0;
+    std::int64_t triangles = 0;
     while (p < end) {
         ++line;
         const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
@@ -191,10 +206,14 @@ void checkObjLines(const QString& path, const FileBytes& bytes)
                 p = next;
             }
         } else if (eol - p >= 2 && p[0] == 'f' && (p[1] == ' ' || p[1] == '\t')) {
-            checkObjFaceIndices(path, p + 2, eol, line, ++face);
+            const std::int64_t corners = checkObjFaceIndices(path, p + 2, eol, line, ++face);
+            triangles += std::max<std::int64_t>(corners - 2, 0);
         }
         p = eol + 1;
     }
+    checkVertexCount(path, vertex);
+    checkFaceCount(path, face);
+    checkTriangleCount(path, triangles);
 }
 
 } // namespace

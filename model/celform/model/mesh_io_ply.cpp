@@ -441,6 +441,7 @@ void readPlyBinary(
                     if (n < 0 || static_cast<std::uint64_t>(n) * is > static_cast<std::uint64_t>(end - p))
                         throw truncated(e);
                     if (static_cast<int>(j) == listIndex) {
+                        faces.checkPolygon(f, n);
                         many.resize(static_cast<std::size_t>(n));
                         for (std::size_t k = 0; k < many.size(); ++k)
                             many[k] = loadBinaryIndex(prop.type, p + is * k, swap);
@@ -527,6 +528,7 @@ void readPlyAscii(
                             .arg(i + 1)
                             .arg(n));
                 if (ji == listIndex) {
+                    faces.checkPolygon(i, n);
                     corners.resize(static_cast<std::size_t>(n));
                     for (auto& c : corners)
                         c = in.integer(kWhatIndex);
@@ -556,18 +558,19 @@ void readPly(const QString& path, MeshImport& out)
     if (vertexElement->find("x") < 0 || vertexElement->find("y") < 0 || vertexElement->find("z") < 0)
         throw IoError(path, MeshIo::tr("the vertex element lacks an x, y or z property"));
     const std::int64_t nv = vertexElement->count;
+    std::int64_t nf = 0;
+    for (const auto& e : h.elements)
+        if (e.name == "face")
+            nf = e.count;
     // Reject impossible counts before allocating: each binary vertex row holds at least its
-    // properties, each ASCII one at least two characters per property.
+    // properties, each ASCII one at least two characters per property. Then the size limits.
     const std::size_t body = bytes.size() - h.bodyOffset;
     const std::size_t rowMin = h.format == PlyFormat::Ascii ? vertexElement->properties.size() * 2
                                                             : std::max<std::size_t>(vertexElement->minStride(), 1);
-    if (nv > kMaxIndex || static_cast<std::uint64_t>(nv) > body / rowMin) {
-        std::int64_t nf = 0;
-        for (const auto& e : h.elements)
-            if (e.name == "face")
-                nf = e.count;
+    if (nv > kMaxIndex || static_cast<std::uint64_t>(nv) > body / rowMin)
         throwTooLarge(path, nv, nf);
-    }
+    checkVertexCount(path, nv);
+    checkFaceCount(path, nf);
     out.mesh.vertices.resize(nv, 3);
     if (h.format == PlyFormat::Ascii)
         readPlyAscii(path, h, bytes.data(), bytes.size(), nv, out);
