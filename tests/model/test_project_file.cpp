@@ -9,13 +9,23 @@
 
 #include <QBuffer>
 #include <QCryptographicHash>
+#include <QDir>
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QTemporaryDir>
+#include <QThread>
 #include <QtEndian>
 
+#include <csignal>
 #include <cstring>
 #include <functional>
+#include <new>
+
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace celform;
 using namespace celform::model;
@@ -192,6 +202,94 @@ void setLastTrackEntry(QJsonObject& manifest, const QString& name, const QJsonVa
     tracks.replace(tracks.size() - 1, track);
     look.insert("highlights", tracks);
     manifest.insert("look", look);
+}
+
+/// How a load run in a child process ended.
+struct ChildOutcome {
+    enum Kind { IoErrorThrown, OtherException, Returned, Crashed, TimedOut } kind = Crashed;
+    QString message; ///< the exception's text
+    int signal = 0; ///< for Crashed
+    qint64 milliseconds = 0;
+
+    [[nodiscard]] QString describe() const
+    {
+        const char* names[] = {"IoError", "another exception", "no exception", "crash", "time-out"};
+        return QStringLiteral("%1 after %2 ms (signal %3): %4")
+            .arg(names[kind])
+            .arg(milliseconds)
+            .arg(signal)
+            .arg(message);
+    }
+};
+
+/// Runs body in a forked child whose address space may grow by at most budget bytes, killed after
+/// timeoutMs: a regression that crashes, hangs or allocates gigabytes fails its test instead of
+/// taking the test run (or the machine) down with it.
+ChildOutcome runInChild(const std::function<void()>& body, qint64 budget = 512ll << 20, int timeoutMs = 10000)
+{
+    int fds[2];
+    if (::pipe(fds) != 0)
+        qFatal("pipe failed");
+    std::fflush(stdout);
+    std::fflush(stderr);
+    QElapsedTimer timer;
+    timer.start();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::close(fds[0]);
+        for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL})
+            std::signal(sig, SIG_DFL); // die by the signal, without QtTest's crash report
+        QFile statm(QStringLiteral("/proc/self/statm"));
+        const qint64 pages = statm.open(QIODevice::ReadOnly) ? statm.readAll().split(' ').value(0).toLongLong() : 0;
+        const auto limit = rlim_t(pages * ::sysconf(_SC_PAGESIZE) + budget);
+        const rlimit rl{limit, limit};
+        ::setrlimit(RLIMIT_AS, &rl);
+        ChildOutcome::Kind kind = ChildOutcome::Returned;
+        QByteArray message;
+        try {
+            body();
+        } catch (const IoError& e) {
+            kind = ChildOutcome::IoErrorThrown;
+            message = e.message().toUtf8();
+        } catch (const std::bad_alloc&) {
+            kind = ChildOutcome::OtherException;
+            message = "std::bad_alloc";
+        } catch (const std::exception& e) {
+            kind = ChildOutcome::OtherException;
+            message = e.what();
+        }
+        const QByteArray out = QByteArray::number(int(kind)) + ' ' + message;
+        [[maybe_unused]] const auto written = ::write(fds[1], out.constData(), std::size_t(out.size()));
+        ::_exit(0);
+    }
+    ::close(fds[1]);
+    ChildOutcome outcome;
+    int status = 0;
+    bool finished = false;
+    while (!finished && timer.elapsed() < timeoutMs) {
+        finished = ::waitpid(pid, &status, WNOHANG) == pid;
+        if (!finished)
+            QThread::msleep(5);
+    }
+    outcome.milliseconds = timer.elapsed();
+    if (!finished) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, &status, 0);
+        outcome.kind = ChildOutcome::TimedOut;
+    } else if (WIFSIGNALED(status)) {
+        outcome.kind = ChildOutcome::Crashed;
+        outcome.signal = WTERMSIG(status);
+    }
+    QByteArray out;
+    char buffer[4096];
+    for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) > 0;)
+        out.append(buffer, n);
+    ::close(fds[0]);
+    if (finished && WIFEXITED(status) && !out.isEmpty()) {
+        outcome.kind = ChildOutcome::Kind(out.left(out.indexOf(' ')).toInt());
+        outcome.message = QString::fromUtf8(out.mid(out.indexOf(' ') + 1));
+    }
+    return outcome;
 }
 
 } // namespace
@@ -383,6 +481,81 @@ private slots:
             QVERIFY2(e.message().contains(expected), qPrintable(e.message()));
             QVERIFY2(e.message().contains(QStringLiteral("bad.celform")), qPrintable(e.message()));
         }
+    }
+
+    // Issue 14: handcrafted files that crashed, or allocated gigabytes before their refusal, each
+    // named after what it triggers (tests/data/fuzz-regressions/README.md). Every one is refused at
+    // once, in one line naming the file, within a small memory budget.
+    void refusesFuzzRegressions_data()
+    {
+        QTest::addColumn<QString>("path");
+        QTest::addColumn<QString>("expected");
+        const QDir dir(celform::test::testDataPath(QStringLiteral("fuzz-regressions/project")));
+        const QStringList files = dir.entryList({QStringLiteral("*.celform")}, QDir::Files, QDir::Name);
+        QVERIFY(!files.isEmpty());
+        for (const QString& name : files) {
+            const QString expected = name.startsWith(QLatin1String("drawing-")) ? QStringLiteral("too large")
+                : name.startsWith(QLatin1String("trailer-"))                    ? QStringLiteral("table of contents")
+                                                                                : QStringLiteral("damaged");
+            QTest::newRow(qPrintable(name)) << dir.filePath(name) << expected;
+        }
+    }
+
+    void refusesFuzzRegressions()
+    {
+        QFETCH(QString, path);
+        QFETCH(QString, expected);
+        const ChildOutcome outcome = runInChild([&] { loadProject(path); });
+        QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+        QVERIFY2(outcome.message.startsWith(path + QStringLiteral(": ")), qPrintable(outcome.message));
+        QVERIFY2(outcome.message.contains(expected), qPrintable(outcome.message));
+        QVERIFY2(!outcome.message.contains(QLatin1Char('\n')), qPrintable(outcome.message));
+        QVERIFY2(outcome.milliseconds < 5000, qPrintable(outcome.describe()));
+    }
+
+    // The trailer's and the chunk table's bounds are checked by subtraction, against the data's end.
+    void refusesOffsetsOutsideTheFile_data()
+    {
+        QTest::addColumn<QString>("entry");
+        QTest::addColumn<double>("value");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("offset 2^64") << "offset" << 18446744073709551616.0 << "out of range";
+        QTest::newRow("offset 2^53") << "offset" << 9007199254740992.0 << "outside the file";
+        QTest::newRow("offset fractional") << "offset" << 16.5 << "out of range";
+        QTest::newRow("offset negative") << "offset" << -8.0 << "out of range";
+        QTest::newRow("offset in the header") << "offset" << 8.0 << "outside the file";
+        QTest::newRow("offset at the manifest") << "offset" << -1.0 << "outside the file"; // -1: the manifest's
+        QTest::newRow("size 2^53") << "size" << 9007199254740992.0 << "outside the file";
+        QTest::newRow("size past the manifest") << "size" << -1.0 << "outside the file"; // -1: to the manifest + 1
+        QTest::newRow("crc 2^32") << "crc32" << 4294967296.0 << "out of range";
+    }
+
+    void refusesOffsetsOutsideTheFile()
+    {
+        QFETCH(QString, entry);
+        QFETCH(double, value);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("offsets.celform"));
+        saveProject(richProject(), path);
+        editManifest(path, [&](QJsonObject& m) {
+            QJsonObject chunks = m.value("chunks").toObject();
+            QJsonObject faces = chunks.value("mesh/faces").toObject();
+            const QByteArray bytes = readAll(path);
+            const auto manifestOffset = double(qFromLittleEndian<quint64>(bytes.constData() + bytes.size() - 32));
+            if (value != -1.0)
+                faces.insert(entry, value);
+            else if (entry == QLatin1String("offset"))
+                faces.insert(entry, manifestOffset);
+            else
+                faces.insert(entry, manifestOffset - faces.value("offset").toDouble() + 1);
+            chunks.insert("mesh/faces", faces);
+            m.insert("chunks", chunks);
+        });
+        const ChildOutcome outcome = runInChild([&] { loadProject(path); });
+        QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+        QVERIFY2(outcome.message.contains(expected), qPrintable(outcome.message));
+        QVERIFY2(outcome.message.contains(QStringLiteral("offsets.celform")), qPrintable(outcome.message));
     }
 
     void failedOpenLeavesDocumentUntouched()

@@ -316,10 +316,11 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
 /// Reads the manifest's values, throwing IoError with the file name on anything malformed.
 class Reader {
 public:
-    Reader(QString path, const char* bytes, qint64 size, QJsonObject chunks)
+    /// dataEnd: where the data blocks end (the manifest's offset); no block may reach past it.
+    Reader(QString path, const char* bytes, qint64 dataEnd, QJsonObject chunks)
         : m_path(std::move(path))
         , m_bytes(bytes)
-        , m_size(size)
+        , m_dataEnd(dataEnd)
         , m_chunks(std::move(chunks))
     { }
 
@@ -345,6 +346,15 @@ public:
         const double d = number(o, name);
         if (d < 0 || d > double(std::numeric_limits<std::int32_t>::max()) || d != std::floor(d))
             corrupt(ProjectFile::tr("the count “%1” is out of range").arg(QLatin1String(name)));
+        return qint64(d);
+    }
+    /// A whole number in [0, max] that locates or sizes bytes of the file. JSON numbers are doubles,
+    /// so anything above 2^53 (or fractional, or negative) is refused before it becomes an integer.
+    qint64 position(const QJsonObject& o, const char* name, qint64 max) const
+    {
+        const double d = number(o, name);
+        if (d < 0 || d > double(max) || d != std::floor(d))
+            corrupt(ProjectFile::tr("the entry “%1” is out of range").arg(QLatin1String(name)));
         return qint64(d);
     }
     QString string(const QJsonObject& o, const char* name) const
@@ -398,18 +408,22 @@ public:
         if (!entry.isObject())
             corrupt(ProjectFile::tr("the data block “%1” is missing").arg(chunkName));
         const QJsonObject e = entry.toObject();
-        const double offset = number(e, "offset"), size = number(e, "size"), crc = number(e, "crc32");
-        if (offset < kHeaderSize || size < 0 || offset + size > double(m_size))
+        constexpr qint64 kMaxExact = qint64(1) << 53; // every integer up to here is exact as a double
+        const qint64 offset = position(e, "offset", kMaxExact);
+        const qint64 size = position(e, "size", kMaxExact);
+        const auto crc = quint32(position(e, "crc32", std::numeric_limits<quint32>::max()));
+        // By subtraction: offset + size could pass a limit by wrapping around (as the trailer's did).
+        if (offset < kHeaderSize || offset > m_dataEnd || size > m_dataEnd - offset)
             corrupt(ProjectFile::tr("the data block “%1” lies outside the file").arg(chunkName));
-        if (expectedSize >= 0 && qint64(size) != expectedSize)
+        if (expectedSize >= 0 && size != expectedSize)
             corrupt(ProjectFile::tr("the data block “%1” has %2 bytes instead of %3")
                         .arg(chunkName)
-                        .arg(qint64(size))
+                        .arg(size)
                         .arg(expectedSize));
-        const char* p = m_bytes + qint64(offset);
-        if (crc32Of(p, qint64(size)) != quint32(crc))
+        const char* p = m_bytes + offset;
+        if (crc32Of(p, size) != crc)
             corrupt(ProjectFile::tr("the data block “%1” fails its checksum").arg(chunkName));
-        return {p, qint64(size)};
+        return {p, size};
     }
     template <typename Matrix>
     void readMatrix(const QJsonObject& o, const char* name, Eigen::Index rows, Matrix& m) const
@@ -428,7 +442,7 @@ public:
 private:
     QString m_path;
     const char* m_bytes;
-    qint64 m_size;
+    qint64 m_dataEnd;
     QJsonObject m_chunks;
 };
 
@@ -831,8 +845,11 @@ ProjectData loadProject(const QString& path, DrawingImages images)
         throw IoError(path, ProjectFile::tr("is truncated or damaged: its end marker is missing"));
     const auto manifestOffset = qFromLittleEndian<quint64>(trailer);
     const auto manifestSize = qFromLittleEndian<quint64>(trailer + 8);
-    if (manifestOffset < quint64(kHeaderSize) || manifestSize > quint64(size)
-        || manifestOffset + manifestSize > quint64(size - kTrailerSize))
+    // By subtraction: with an offset near 2^64, offset + size wraps around to a small number and
+    // passes an addition's check.
+    const auto manifestLimit = quint64(size - kTrailerSize);
+    if (manifestOffset < quint64(kHeaderSize) || manifestOffset > manifestLimit
+        || manifestSize > manifestLimit - manifestOffset)
         throw IoError(path, ProjectFile::tr("is damaged: its table of contents lies outside the file"));
     const char* manifestBytes = bytes + manifestOffset;
     if (crc32Of(manifestBytes, qint64(manifestSize)) != qFromLittleEndian<quint32>(trailer + 16))
@@ -851,7 +868,7 @@ ProjectData loadProject(const QString& path, DrawingImages images)
                             "to %2). Please update Celform to open it.")
                 .arg(manifestVersion)
                 .arg(kProjectFormatVersion));
-    const Reader reader(path, bytes, size, root.value("chunks").toObject());
+    const Reader reader(path, bytes, qint64(manifestOffset), root.value("chunks").toObject());
     return parseManifest(reader, root, path, images);
 }
 
