@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <new>
 #include <set>
 
 #include <unistd.h>
@@ -357,6 +358,20 @@ public:
             corrupt(ProjectFile::tr("the entry “%1” is out of range").arg(QLatin1String(name)));
         return qint64(d);
     }
+    /// An object id: a whole number that a double holds exactly (a cast of -1 or 1e300 to an
+    /// unsigned id is undefined).
+    ObjectId objectId(const QJsonObject& o, const char* name) const
+    {
+        return ObjectId(position(o, name, qint64(1) << 53));
+    }
+    /// A frame number of a key or drawing: whole, within +-kMaxFrame as the playhead's.
+    int frame(const QJsonObject& o, const char* name) const
+    {
+        const double d = number(o, name);
+        if (d != std::floor(d) || std::abs(d) > double(kMaxFrame))
+            corrupt(ProjectFile::tr("the entry “%1” is not a frame number").arg(QLatin1String(name)));
+        return int(d);
+    }
     QString string(const QJsonObject& o, const char* name) const
     {
         return member(o, name, QJsonValue::String).toString();
@@ -407,6 +422,10 @@ public:
         const QJsonValue entry = m_chunks.value(chunkName);
         if (!entry.isObject())
             corrupt(ProjectFile::tr("the data block “%1” is missing").arg(chunkName));
+        // Each block describes one thing. A block named many times over would multiply what the
+        // reader allocates (a thousand face sets on one large block) beyond the file's own size.
+        if (!m_used.insert(chunkName).second)
+            corrupt(ProjectFile::tr("the data block “%1” is used twice").arg(chunkName));
         const QJsonObject e = entry.toObject();
         constexpr qint64 kMaxExact = qint64(1) << 53; // every integer up to here is exact as a double
         const qint64 offset = position(e, "offset", kMaxExact);
@@ -425,18 +444,23 @@ public:
             corrupt(ProjectFile::tr("the data block “%1” fails its checksum").arg(chunkName));
         return {p, size};
     }
+    /// Reads a matrix of rows rows from a chunk. The chunk's size is checked against rows before
+    /// anything is allocated: a count from the manifest is only believed once its block holds it, so
+    /// a count of 2^31 over a 48-byte block costs nothing.
     template <typename Matrix>
     void readMatrix(const QJsonObject& o, const char* name, Eigen::Index rows, Matrix& m) const
     {
+        constexpr qint64 rowBytes = qint64(Matrix::ColsAtCompileTime) * qint64(sizeof(typename Matrix::Scalar));
+        const auto [p, size] = chunk(o, name, qint64(rows) * rowBytes);
         m.resize(rows, Matrix::ColsAtCompileTime);
-        const auto [p, size] = chunk(o, name, qint64(m.size()) * qint64(sizeof(typename Matrix::Scalar)));
         std::memcpy(m.data(), p, std::size_t(size));
     }
+    /// The same for a vector of n items.
     template <typename T> void readVector(const QJsonObject& o, const char* name, qint64 n, std::vector<T>& v) const
     {
-        v.resize(std::size_t(n));
         const auto [p, size] = chunk(o, name, n * qint64(sizeof(T)));
-        std::memcpy(v.data(), p, std::size_t(size));
+        v.resize(std::size_t(n));
+        std::memcpy(static_cast<void*>(v.data()), p, std::size_t(size));
     }
 
 private:
@@ -444,6 +468,7 @@ private:
     const char* m_bytes;
     qint64 m_dataEnd;
     QJsonObject m_chunks;
+    mutable std::set<QString> m_used; ///< the chunks read so far
 };
 
 std::vector<float> readFloats(const Reader& r, const QJsonObject& o, const char* name)
@@ -642,7 +667,12 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
             set.name = r.string(o, "name").toStdString();
             if (set.name.empty() || data.faceSet(QString::fromStdString(set.name)))
                 r.corrupt(ProjectFile::tr("a face set name is empty or used twice"));
-            r.readVector(o, "faces", r.count(o, "count"), set.faces);
+            // Ascending and without repeats, so never more than the faces (checked before the block).
+            const qint64 count = r.count(o, "count");
+            if (count > mesh->faces.rows())
+                r.corrupt(ProjectFile::tr("face set “%1” has more faces than the model")
+                              .arg(QString::fromStdString(set.name)));
+            r.readVector(o, "faces", count, set.faces);
             for (std::size_t k = 0; k < set.faces.size(); ++k)
                 if (set.faces[k] < 0 || set.faces[k] >= mesh->faces.rows()
                     || (k > 0 && set.faces[k] <= set.faces[k - 1]))
@@ -662,7 +692,7 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     for (const QJsonValue& v : r.array(root, "drawings")) {
         const QJsonObject o = v.toObject();
         Drawing d;
-        d.id = ObjectId(r.number(o, "id"));
+        d.id = r.objectId(o, "id");
         d.name = r.string(o, "name");
         d.imageFormat = r.string(o, "format");
         const auto [p, size] = r.chunk(o, "image", -1);
@@ -670,7 +700,7 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         d.camera = r.camera(r.object(o, "camera"));
         d.aligned = r.boolean(o, "aligned");
         d.opacity = r.number(o, "opacity");
-        d.frame = int(r.number(o, "frame"));
+        d.frame = r.frame(o, "frame");
         if (images == DrawingImages::Decode)
             d.image = decodeImage(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
         data.drawings.push_back(std::move(d));
@@ -679,28 +709,29 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     for (const QJsonValue& v : r.array(root, "keys")) {
         const QJsonObject o = v.toObject();
         KeyViewpoint k;
-        k.id = ObjectId(r.number(o, "id"));
+        k.id = r.objectId(o, "id");
         k.name = r.string(o, "name");
         k.direction = r.vector3(o, "direction");
         k.camera = r.camera(r.object(o, "camera"));
         k.enabled = r.boolean(o, "enabled");
         for (const QJsonValue& id : r.array(o, "drawings"))
-            k.drawingIds.push_back(ObjectId(id.toDouble()));
+            k.drawingIds.push_back(r.objectId(QJsonObject{{"drawings", id}}, "drawings"));
         for (const QJsonValue& fv : r.array(o, "frames")) {
             const QJsonObject f = fv.toObject();
             SparseOffsets offsets;
+            // Strictly increasing vertex indices: never more than the vertices.
             const qint64 n = r.count(f, "count");
+            if (n > vertexCount)
+                r.corrupt(ProjectFile::tr("key “%1” moves more vertices than the model has").arg(k.name));
             r.readVector(f, "indices", n, offsets.indices);
-            offsets.deltas.resize(std::size_t(n));
-            const auto [p, size] = r.chunk(f, "offsets", n * qint64(sizeof(Eigen::Vector3f)));
-            std::memcpy(static_cast<void*>(offsets.deltas.data()), p, std::size_t(size));
+            r.readVector(f, "offsets", n, offsets.deltas);
             for (std::size_t i = 0; i < offsets.indices.size(); ++i) {
                 if (offsets.indices[i] >= vertexCount || (i > 0 && offsets.indices[i] <= offsets.indices[i - 1]))
                     r.corrupt(ProjectFile::tr("key “%1” has a vertex index out of range or out of order").arg(k.name));
                 if (!offsets.deltas[i].allFinite())
                     r.corrupt(ProjectFile::tr("key “%1” has a non-finite offset").arg(k.name));
             }
-            k.offsetsByFrame.emplace(int(r.number(f, "frame")), std::move(offsets));
+            k.offsetsByFrame.emplace(r.frame(f, "frame"), std::move(offsets));
         }
         data.keys.push_back(std::move(k));
     }
@@ -725,7 +756,7 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
                 r.corrupt(ProjectFile::tr("a shading offset is not finite"));
     }
 
-    data.nextId = ObjectId(r.number(root, "next_id"));
+    data.nextId = r.objectId(root, "next_id");
     for (const auto& d : data.drawings)
         if (d.id >= data.nextId)
             r.corrupt(ProjectFile::tr("an object id is not below next_id"));
@@ -869,7 +900,13 @@ ProjectData loadProject(const QString& path, DrawingImages images)
                 .arg(manifestVersion)
                 .arg(kProjectFormatVersion));
     const Reader reader(path, bytes, qint64(manifestOffset), root.value("chunks").toObject());
-    return parseManifest(reader, root, path, images);
+    try {
+        return parseManifest(reader, root, path, images);
+    } catch (const std::bad_alloc&) {
+        // Every count is checked against the file before it is allocated, so this is a file too
+        // large for the memory left, not a damaged one; either way the message names the file.
+        throw IoError(path, ProjectFile::tr("cannot be opened: not enough memory"));
+    }
 }
 
 } // namespace celform::model
