@@ -15,6 +15,8 @@
 
 #include <cmath>
 
+#include <sys/resource.h>
+
 namespace {
 
 struct Run {
@@ -44,6 +46,32 @@ Run runCelform(const QStringList& args, const QStringList& environment = {},
     p.start(program, args);
     if (!p.waitForFinished(120000))
         p.kill();
+    return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
+        QString::fromUtf8(p.readAllStandardError())};
+}
+
+/// Runs celform as runCelform does, with its address space capped at addressSpace bytes and
+/// killed after timeoutMs: a regression that allocates gigabytes or blocks fails its test.
+Run runCelformLimited(const QStringList& args, qint64 addressSpace, int timeoutMs)
+{
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("DISPLAY"));
+    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    p.setProcessEnvironment(env);
+    p.setChildProcessModifier([addressSpace] {
+        const rlimit limit{rlim_t(addressSpace), rlim_t(addressSpace)};
+        ::setrlimit(RLIMIT_AS, &limit);
+    });
+    p.start(QStringLiteral(CELFORM_EXECUTABLE), args);
+    Run run;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        run.err = QStringLiteral("(killed after %1 ms)").arg(timeoutMs);
+        return run;
+    }
     return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
         QString::fromUtf8(p.readAllStandardError())};
 }
@@ -228,6 +256,41 @@ private slots:
         } else {
             QVERIFY2(r.err.contains(QStringLiteral("warning")), qPrintable(r.err)); // bad files are never clean
         }
+    }
+
+    // Issue 14: every handcrafted file of tests/data/fuzz-regressions (a trailer offset that wrapped
+    // past its check and crashed, counts that allocated gigabytes, images stating more pixels than
+    // their file holds) is bad input: exit 3 and one line naming the file, within 1 GB and 20 s.
+    void fuzzRegressionsAreOneLineRefusals_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("named");
+        const QString root = celform::test::testDataPath(QStringLiteral("fuzz-regressions"));
+        const QString out = m_dir.filePath(QStringLiteral("fuzz.celform"));
+        const QString picture = m_dir.filePath(QStringLiteral("fuzz.png"));
+        const QString mesh = root + QStringLiteral("/cli/tetrahedron.off");
+        for (const QFileInfo& f : QDir(root + QStringLiteral("/project")).entryInfoList(QDir::Files, QDir::Name)) {
+            QTest::addRow("info %s", qPrintable(f.fileName())) << QStringList{"info", f.filePath()} << f.fileName();
+            QTest::addRow("render %s", qPrintable(f.fileName()))
+                << QStringList{"render", f.filePath(), "--size", "64x64", "--out", picture} << f.fileName();
+        }
+        for (const QFileInfo& f : QDir(root + QStringLiteral("/image")).entryInfoList(QDir::Files, QDir::Name))
+            QTest::addRow("new --drawing %s", qPrintable(f.fileName()))
+                << QStringList{"new", mesh, "--drawing", f.filePath(), "--out", out} << f.fileName();
+    }
+    void fuzzRegressionsAreOneLineRefusals()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, named);
+        const Run r = runCelformLimited(args, 1ll << 30, 20000);
+        QVERIFY2(r.status == QProcess::NormalExit, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 3, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.contains(named), qPrintable(r.err));
+        QVERIFY2(r.err.trimmed().count(QLatin1Char('\n')) == 0, qPrintable(r.err)); // one line
+        // Refused from what the file states, not by running out of the 1 GB.
+        QVERIFY2(!r.err.contains(QStringLiteral("memory")) && !r.err.contains(QStringLiteral("bad_alloc")),
+            qPrintable(r.err));
+        QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("fuzz.celform"))));
     }
 
     void viewDependentWorkflow()

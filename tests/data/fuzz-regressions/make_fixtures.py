@@ -132,6 +132,20 @@ def png_bomb():
     return png(11585, 11585, 8, 2, b"\0" * 64)
 
 
+def tiff(width, height, strip):
+    """A little-endian greyscale TIFF stating width x height, uncompressed, in one strip of the bytes given."""
+    entries = [(256, 4, width), (257, 4, height), (258, 3, 8), (259, 3, 1), (262, 3, 1), (273, 4, 0),
+               (277, 3, 1), (278, 4, height), (279, 4, len(strip))]
+    ifd_size = 2 + 12 * len(entries) + 4
+    data_offset = 8 + ifd_size
+    out = b"II*\0" + struct.pack("<I", 8) + struct.pack("<H", len(entries))
+    for tag, kind, value in entries:
+        value = data_offset if tag == 273 else value
+        packed = struct.pack("<HH", value, 0) if kind == 3 else struct.pack("<I", value)
+        out += struct.pack("<HHI", tag, kind, 1) + packed
+    return out + struct.pack("<I", 0) + strip
+
+
 def image_fixtures(folder):
     with open(os.path.join(folder, "png-11585x11585-69-bytes.png"), "wb") as f:
         f.write(png_bomb())
@@ -140,6 +154,13 @@ def image_fixtures(folder):
         f.write(png(40000, 1, 1, 0, b"\0" + b"\xff" * 5000))
     with open(os.path.join(folder, "jpeg-11585x11585-short-scan.jpg"), "wb") as f:
         f.write(jpeg(11585, 11585))
+    # A format image_io.cpp reads no header of: OpenImageIO's header is checked in the module.
+    with open(os.path.join(folder, "tiff-11585x11585-16-byte-strip.tif"), "wb") as f:
+        f.write(tiff(11585, 11585, b"\0" * 16))
+    # A plausible size (1000 x 1000) with too little data: libpng printed "libpng error: Not enough
+    # image data" on standard error, beside the one-line message.
+    with open(os.path.join(folder, "png-1000x1000-libpng-error-line.png"), "wb") as f:
+        f.write(png(1000, 1000, 8, 0, b"\0" * 64))
 
 
 def cli_fixtures(folder):
