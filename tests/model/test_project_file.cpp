@@ -22,7 +22,7 @@
 #include <functional>
 #include <new>
 
-#include <poll.h>
+#include <sys/ptrace.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -409,6 +409,87 @@ private slots:
         QCOMPARE(readAll(path + QStringLiteral(".bak")), firstBytes);
         QCOMPARE(loadProject(path).blend.sharpness, 4.0);
         QCOMPARE(loadProject(path + QStringLiteral(".bak")).blend.sharpness, 1.75);
+    }
+
+    // Issue 14: a save killed at any instant leaves the project opening and a whole backup. The
+    // save runs in a child stopped at every system call (ptrace), where a kill would leave the
+    // files exactly as they are; the old save removed .bak before linking the new one.
+    void backupSurvivesAKillAtEveryStep()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.celform"));
+        const QString backup = path + QStringLiteral(".bak");
+        ProjectData data = richProject();
+        const double first = 1.25, second = 2.5, third = 5.0; // the versions' sharpness
+        data.blend.sharpness = first;
+        saveProject(data, path);
+        data.blend.sharpness = second;
+        saveProject(data, path);
+        QCOMPARE(loadProject(backup, DrawingImages::Skip).blend.sharpness, first);
+        // A staged backup left by an interrupted save is replaced, not trusted.
+        writeAll(path + QStringLiteral(".bak.new"), "left over");
+        data.blend.sharpness = third;
+
+        std::fflush(stdout);
+        std::fflush(stderr);
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            ::ptrace(PTRACE_TRACEME, 0, nullptr, nullptr);
+            ::raise(SIGSTOP);
+            try {
+                saveProject(data, path);
+            } catch (...) {
+                ::_exit(1);
+            }
+            ::_exit(0);
+        }
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        if (!WIFSTOPPED(status)
+            || ::ptrace(PTRACE_SETOPTIONS, pid, nullptr, PTRACE_O_TRACESYSGOOD | PTRACE_O_EXITKILL) != 0) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, &status, 0);
+            QSKIP("ptrace is not allowed here");
+        }
+        auto sharpnessOf = [](const QString& file) {
+            try {
+                return loadProject(file, DrawingImages::Skip).blend.sharpness;
+            } catch (const IoError&) {
+                return -1.0;
+            }
+        };
+        int stops = 0;
+        QString broken;
+        int signal = 0;
+        while (broken.isEmpty()) {
+            if (::ptrace(PTRACE_SYSCALL, pid, nullptr, reinterpret_cast<void*>(qintptr(signal))) != 0)
+                break;
+            ::waitpid(pid, &status, 0);
+            if (WIFEXITED(status) || WIFSIGNALED(status))
+                break;
+            signal = 0;
+            if (WSTOPSIG(status) != (SIGTRAP | 0x80)) {
+                signal = WSTOPSIG(status); // not a system call: pass the signal on
+                continue;
+            }
+            ++stops;
+            const double current = sharpnessOf(path), previous = sharpnessOf(backup);
+            if ((current != second && current != third) || (previous != first && previous != second))
+                broken = QStringLiteral("at system call stop %1 the project reads %2 and its backup %3 (-1: none)")
+                             .arg(stops)
+                             .arg(current)
+                             .arg(previous);
+        }
+        if (!broken.isEmpty()) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, &status, 0);
+            QFAIL(qPrintable(broken));
+        }
+        QVERIFY2(WIFEXITED(status) && WEXITSTATUS(status) == 0, "the traced save failed");
+        QVERIFY(stops > 10);
+        QCOMPARE(sharpnessOf(path), third);
+        QCOMPARE(sharpnessOf(backup), second);
+        QVERIFY(!QFileInfo::exists(path + QStringLiteral(".bak.new")));
     }
 
     void failedSaveLeavesFileIntact()
