@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 namespace {
 
@@ -291,6 +292,39 @@ private slots:
         QVERIFY2(!r.err.contains(QStringLiteral("memory")) && !r.err.contains(QStringLiteral("bad_alloc")),
             qPrintable(r.err));
         QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("fuzz.celform"))));
+    }
+
+    // Issue 14: a named pipe or a folder given as a project or a drawing blocked for ever; both are
+    // bad input, refused before they are opened.
+    void pipesAndFoldersAreRefused_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("command");
+        for (const char* kind : {"fifo", "folder"})
+            for (const char* command : {"info", "render", "set", "drawing"})
+                QTest::addRow("%s %s", kind, command) << QString::fromLatin1(kind) << QString::fromLatin1(command);
+    }
+    void pipesAndFoldersAreRefused()
+    {
+        QFETCH(QString, kind);
+        QFETCH(QString, command);
+        QTemporaryDir dir;
+        const QString special
+            = dir.filePath(command == QLatin1String("drawing") ? QStringLiteral("d.png") : QStringLiteral("p.celform"));
+        if (kind == QLatin1String("fifo"))
+            QCOMPARE(::mkfifo(QFile::encodeName(special).constData(), 0600), 0);
+        else
+            QVERIFY(QDir(dir.path()).mkdir(QFileInfo(special).fileName()));
+        const QString mesh = celform::test::testDataPath(QStringLiteral("fuzz-regressions/cli/tetrahedron.off"));
+        const QStringList args = command == QLatin1String("drawing")
+            ? QStringList{"new", mesh, "--drawing", special, "--out", dir.filePath(QStringLiteral("out.celform"))}
+            : command == QLatin1String("set") ? QStringList{"set", special, "--sharpness", "2"}
+                                              : QStringList{command, special};
+        const Run r = runCelformLimited(args, 2ll << 30, 10000);
+        QVERIFY2(r.status == QProcess::NormalExit, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 3, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.contains(special) && r.err.contains(QStringLiteral("not a regular file")), qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);
     }
 
     void viewDependentWorkflow()

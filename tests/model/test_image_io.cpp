@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -175,6 +176,8 @@ private slots:
     void refusesFuzzRegressions();
     void decoderMessagesStayQuiet();
     void mostCompressiblePngIsRead();
+    void refusesPipesAndFolders_data();
+    void refusesPipesAndFolders();
 };
 
 void TestImageIo::sharedPng()
@@ -381,6 +384,30 @@ void TestImageIo::mostCompressiblePngIsRead()
     CELFORM_IMPORT_OR_FAIL(d, importDrawing(path))
     QCOMPARE(d.image.size(), QSize(4200, 4200));
     QCOMPARE(celform::model::decodedImageSize(png, QStringLiteral("png"), path), QSize(4200, 4200));
+}
+
+void TestImageIo::refusesPipesAndFolders_data()
+{
+    QTest::addColumn<QString>("kind");
+    QTest::newRow("named pipe") << "fifo";
+    QTest::newRow("folder") << "folder";
+}
+
+// Issue 14: a named pipe given as a drawing blocked in open() for ever, waiting for a writer;
+// anything but a regular file is refused before it is opened.
+void TestImageIo::refusesPipesAndFolders()
+{
+    QFETCH(QString, kind);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("special.png"));
+    if (kind == QLatin1String("fifo"))
+        QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+    else
+        QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("special.png")));
+    const ChildOutcome outcome = runInChild([&] { importDrawing(path); }, 512ll << 20, 5000);
+    QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+    QVERIFY2(outcome.message.startsWith(path + QStringLiteral(": ")), qPrintable(outcome.message));
+    QVERIFY2(outcome.message.contains(QStringLiteral("not a regular file")), qPrintable(outcome.message));
 }
 
 QTEST_MAIN(TestImageIo)

@@ -24,6 +24,7 @@
 
 #include <sys/ptrace.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -713,6 +714,33 @@ private slots:
         QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
         QVERIFY2(outcome.message.contains(expected), qPrintable(outcome.message));
         QVERIFY2(outcome.message.contains(QStringLiteral("numbers.celform")), qPrintable(outcome.message));
+    }
+
+    // Issue 14: a named pipe given as a project blocked in open() for ever, waiting for a writer;
+    // anything but a regular file is refused before it is opened.
+    void refusesPipesAndFolders_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("named pipe") << "fifo";
+        QTest::newRow("folder") << "folder";
+        QTest::newRow("device") << "device";
+    }
+
+    void refusesPipesAndFolders()
+    {
+        QFETCH(QString, kind);
+        QTemporaryDir dir;
+        QString path = dir.filePath(QStringLiteral("special.celform"));
+        if (kind == QLatin1String("fifo"))
+            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+        else if (kind == QLatin1String("folder"))
+            QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("special.celform")));
+        else
+            path = QStringLiteral("/dev/zero");
+        const ChildOutcome outcome = runInChild([&] { loadProject(path); }, 512ll << 20, 5000);
+        QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+        QVERIFY2(outcome.message.startsWith(path + QStringLiteral(": ")), qPrintable(outcome.message));
+        QVERIFY2(outcome.message.contains(QStringLiteral("not a regular file")), qPrintable(outcome.message));
     }
 
     void failedOpenLeavesDocumentUntouched()

@@ -190,6 +190,9 @@ Drawing importDrawing(const QString& path)
     const QFileInfo info(path);
     if (!info.exists())
         throw IoError(path, ImageIo::tr("the file does not exist"));
+    // Before open(): opening a named pipe blocks until something writes to it, for ever.
+    if (!info.isFile())
+        throw IoError(path, ImageIo::tr("the file is not a regular file (a folder, pipe or device)"));
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         throw IoError(path, ImageIo::tr("the file cannot be opened: %1").arg(file.errorString()));

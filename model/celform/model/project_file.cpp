@@ -854,9 +854,13 @@ void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
 
 ProjectData loadProject(const QString& path, DrawingImages images)
 {
-    QFile file(path);
-    if (!file.exists())
+    const QFileInfo info(path);
+    if (!info.exists())
         throw IoError(path, ProjectFile::tr("does not exist"));
+    // Before open(): opening a named pipe blocks until something writes to it, for ever.
+    if (!info.isFile())
+        throw IoError(path, ProjectFile::tr("is not a regular file (a folder, pipe or device)"));
+    QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         throw IoError(path, ProjectFile::tr("could not be opened: %1").arg(file.errorString()));
     const qint64 size = file.size();
