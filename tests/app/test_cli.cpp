@@ -141,6 +141,16 @@ class TestCli : public QObject {
 private:
     QTemporaryDir m_dir;
 
+    /// A fresh project on the committed tetrahedron (no shared data needed), in m_dir.
+    QString tetrahedronProject(const QString& name)
+    {
+        const QString mesh = celform::test::testDataPath(QStringLiteral("fuzz-regressions/cli/tetrahedron.off"));
+        const QString out = m_dir.filePath(name);
+        QFile::remove(out);
+        const Run r = runCelform({QStringLiteral("new"), mesh, QStringLiteral("--out"), out});
+        return r.exitCode == 0 ? out : QString();
+    }
+
     QString bunnyProject()
     {
         const QString mesh = celform::test::sharedDataPath(QStringLiteral("meshes/npm_bunny.off"));
@@ -325,6 +335,119 @@ private slots:
         QVERIFY2(r.exitCode == 3, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
         QVERIFY2(r.err.contains(special) && r.err.contains(QStringLiteral("not a regular file")), qPrintable(r.err));
         QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);
+    }
+
+    // Issue 14: `new` wrote its project over its own input mesh, and wrote projects under any
+    // suffix. Both are usage errors now, and nothing is written.
+    void newRefusesItsInputAndOtherSuffixes()
+    {
+        QTemporaryDir dir;
+        const QString mesh = dir.filePath(QStringLiteral("a.off"));
+        QVERIFY(QFile::copy(celform::test::testDataPath(QStringLiteral("fuzz-regressions/cli/tetrahedron.off")), mesh));
+        const QByteArray before = fileBytes(mesh);
+        Run r = runCelform({"new", mesh, "--out", mesh});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("one of the files being read")), qPrintable(r.err));
+        QCOMPARE(fileBytes(mesh), before);
+        // Through a link to it too.
+        const QString link = dir.filePath(QStringLiteral("link.celform"));
+        QVERIFY(QFile::link(mesh, link));
+        r = runCelform({"new", mesh, "--out", link});
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(fileBytes(mesh), before);
+        // A project is a .celform file.
+        const QString text = dir.filePath(QStringLiteral("o.txt"));
+        r = runCelform({"new", mesh, "--out", text});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral(".celform")), qPrintable(r.err));
+        QVERIFY(!QFileInfo::exists(text));
+        r = runCelform({"new", mesh, "--out", dir.filePath(QStringLiteral("Upper.CELFORM"))});
+        QCOMPARE(r.exitCode, 0);
+    }
+
+    // Issue 14: `key add` took an empty name, and a name in use silently became "NAME 2". Empty is
+    // a usage error; a name in use is made unique as the editor does, and a warning says so.
+    void keyAddNames()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("names.celform"));
+        QVERIFY(!p.isEmpty());
+        for (const QString& empty : {QString(), QStringLiteral("   ")}) {
+            const Run r = runCelform({"key", "add", p, "--name", empty, "--from-base", "--view", "0,0,1"});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("--name")), qPrintable(r.err));
+        }
+        Run r = runCelform({"key", "add", p, "--name", "side", "--from-base", "--view", "1,0,0"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.isEmpty(), qPrintable(r.err));
+        r = runCelform({"key", "add", p, "--name", "side", "--from-base", "--view", "0,0,1", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["name"].toString(), QStringLiteral("side 2"));
+        QVERIFY2(r.err.startsWith(QStringLiteral("warning: ") + p) && r.err.contains(QStringLiteral("“side 2”")),
+            qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);
+        r = runCelform({"info", p, "--json"});
+        const QJsonArray keys = QJsonDocument::fromJson(r.out.toUtf8()).object()["key_viewpoints"].toArray();
+        QCOMPARE(keys.size(), 2);
+        QCOMPARE(keys[1].toObject()["name"].toString(), QStringLiteral("side 2"));
+    }
+
+    // Issue 14: `patch --faces ,,,` made an empty patch; a --faces naming no face is a usage error,
+    // found before the project is opened.
+    void patchFacesNeedAFace()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("faces.celform"));
+        QVERIFY(!p.isEmpty());
+        const QByteArray before = fileBytes(p);
+        for (const char* faces : {",,,", "", " , "}) {
+            const Run r = runCelform({"patch", p, "--add", "empty", "--faces", faces});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("--faces")), qPrintable(r.err));
+        }
+        QCOMPARE(fileBytes(p), before);
+        QCOMPARE(
+            runCelform({"patch", m_dir.filePath(QStringLiteral("missing.celform")), "--add", "x", "--faces", ",,,"})
+                .exitCode,
+            2);
+        QCOMPARE(runCelform({"patch", p, "--add", "two", "--faces", ",0,,3,"}).exitCode, 0);
+    }
+
+    // Issue 14 listed `eval --view 0,0,0` exiting 0 while render refused it: both are usage errors.
+    void evalRefusesZeroView()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("eval.celform"));
+        QVERIFY(!p.isEmpty());
+        for (const char* command : {"eval", "render"}) {
+            const Run r = runCelform({command, p, "--view", "0,0,0"});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("--view")), qPrintable(r.err));
+        }
+    }
+
+    // Issue 14: --size 16384x16384 was accepted and needs about 24 GB (88 bytes a pixel). The pixel
+    // count is capped (8192x8192), and a size the memory available cannot hold is refused too, both
+    // before the project is read. Run under a 2 GB cap so a regression cannot take the machine.
+    void renderSizeIsCapped()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("size.celform"));
+        QVERIFY(!p.isEmpty());
+        const QString png = m_dir.filePath(QStringLiteral("size.png"));
+        for (const char* size : {"16384x16384", "8193x8192", "16384x4097"}) {
+            const Run r = runCelformLimited({"render", p, "--size", size, "--out", png}, 2ll << 30, 60000);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("67108864 pixels")), qPrintable(r.err));
+        }
+        // Within the cap but not within the 2 GB given: refused with what it needs.
+        Run r = runCelformLimited({"render", p, "--size", "8192x8192", "--out", png}, 2ll << 30, 60000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("GB of memory")), qPrintable(r.err));
+        r = runCelformLimited(
+            {"render", p, "--size", "4096x4096", "--stereo", "anaglyph", "--out", png}, 2ll << 30, 60000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(!QFileInfo::exists(png));
+        // The sides' own limit stands: a long strip renders.
+        r = runCelformLimited({"render", p, "--size", "16384x2", "--out", png}, 2ll << 30, 60000);
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(QImage(png).size(), QSize(16384, 2));
     }
 
     void viewDependentWorkflow()
