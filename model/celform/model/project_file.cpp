@@ -19,6 +19,7 @@
 #include <zlib.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <set>
@@ -787,11 +788,16 @@ void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
     chunks.write(file, manifest);
 
     if (keepBackup && QFileInfo::exists(path)) {
-        // A hard link keeps the previous version at no cost; fall back to a copy.
+        // A hard link keeps the previous version at no cost; fall back to a copy. It is made under
+        // a temporary name and renamed over the old backup, so a crash at any moment leaves a
+        // backup, the old or the new one: removing the old one first left none for as long as
+        // freeing its blocks took (milliseconds for a large project).
         const QString backup = path + QStringLiteral(".bak");
-        QFile::remove(backup);
-        if (::link(QFile::encodeName(path).constData(), QFile::encodeName(backup).constData()) != 0)
-            QFile::copy(path, backup);
+        const QString staged = backup + QStringLiteral(".new");
+        QFile::remove(staged);
+        if (::link(QFile::encodeName(path).constData(), QFile::encodeName(staged).constData()) != 0)
+            QFile::copy(path, staged);
+        ::rename(QFile::encodeName(staged).constData(), QFile::encodeName(backup).constData());
     }
     if (!file.commit())
         throw IoError(path, ProjectFile::tr("could not be saved: %1").arg(file.errorString()));
