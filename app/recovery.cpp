@@ -107,7 +107,12 @@ bool RecoveryManager::adopt(const Orphan& orphan)
     if (!QFile::rename(orphan.recoveryFile, m_ownFile))
         return false;
     const QString oldBase = QString(orphan.recoveryFile).chopped(int(strlen(".celform")));
-    QFile::remove(oldBase + QStringLiteral(".json"));
+    // The note goes along: should this session crash before its first autosave, the copy is
+    // offered again still naming the project it belongs to.
+    const QString ownNote = QString(m_ownFile).replace(QStringLiteral(".celform"), QStringLiteral(".json"));
+    QFile::remove(ownNote);
+    if (!QFile::rename(oldBase + QStringLiteral(".json"), ownNote))
+        QFile::remove(oldBase + QStringLiteral(".json"));
     QFile::remove(oldBase + QStringLiteral(".lock"));
     return true;
 }
