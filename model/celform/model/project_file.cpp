@@ -618,7 +618,11 @@ Look readLook(const Reader& r, const QJsonObject& look)
         out.lineStyle.jitter = float(r.number(l, "jitter"));
         out.lineStyle.widthVariation = float(r.number(l, "width_variation"));
         out.lineStyle.overshoot = float(r.number(l, "overshoot"));
-        out.lineStyle.seed = std::uint32_t(r.count(l, "seed"));
+        // Any 32-bit seed: the writer stores the whole range, so count()'s int32 limit is too tight.
+        const double seed = r.number(l, "seed");
+        if (seed < 0 || seed > double(std::numeric_limits<std::uint32_t>::max()) || seed != std::floor(seed))
+            r.corrupt(ProjectFile::tr("the count “%1” is out of range").arg(QLatin1String("seed")));
+        out.lineStyle.seed = std::uint32_t(seed);
     }
     if (look.contains("stereo")) {
         const QJsonObject st = r.object(look, "stereo");
