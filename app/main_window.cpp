@@ -15,7 +15,9 @@
 #include "celform/views/view_sphere_panel.h"
 #include "celform/views/viewport.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
+#include <QKeyEvent>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -54,6 +56,33 @@ static void initResources()
 
 namespace celform::app {
 namespace {
+
+/// Lets the window's Undo and Redo through when a spin box has the keyboard: its line edit would
+/// otherwise take Ctrl+Z for its own text, and the project's undo would seem dead (a spin box's
+/// text undo is of no use; text fields such as names keep theirs).
+class UndoFromSpinBoxes : public QObject {
+public:
+    using QObject::QObject;
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() != QEvent::ShortcutOverride)
+            return false;
+        auto* key = static_cast<QKeyEvent*>(event);
+        const QKeySequence pressed(key->keyCombination());
+        const bool undoRedo = pressed == QKeySequence(Qt::CTRL | Qt::Key_Z)
+            || pressed == QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)
+            || pressed == QKeySequence(Qt::CTRL | Qt::Key_Y);
+        auto* widget = qobject_cast<QWidget*>(watched);
+        const bool inSpinBox = widget
+            && (qobject_cast<QAbstractSpinBox*>(widget) || qobject_cast<QAbstractSpinBox*>(widget->parentWidget()));
+        if (!undoRedo || !inSpinBox)
+            return false;
+        event->ignore(); // not overridden: the shortcut (the window's Undo or Redo) runs
+        return true;
+    }
+};
 
 constexpr int kMaxRecentFiles = 10;
 const char* const kRecentKey = "files/recent";
@@ -110,6 +139,7 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
 {
     setObjectName(QStringLiteral("CelformMainWindow"));
     initResources();
+    qApp->installEventFilter(new UndoFromSpinBoxes(this));
     setWindowIcon(QIcon(QStringLiteral(":/celform/icon.svg")));
     setAcceptDrops(true);
     setDockNestingEnabled(true);
@@ -265,27 +295,31 @@ void MainWindow::createActions()
         addAction(a);
         return a;
     };
-    make(QStringLiteral("actionNewFromMesh"), tr("&New from Mesh…"), QKeySequence::New,
+    // Explicit key sequences: QKeySequence's standard keys (SaveAs, Quit, ...) are empty outside
+    // the KDE and GNOME platform themes, and the README documents these.
+    make(QStringLiteral("actionNewFromMesh"), tr("&New from Mesh…"), QKeySequence(Qt::CTRL | Qt::Key_N),
         tr("Start a new project on a base model (OBJ, PLY, STL, OFF, glTF)"), [this] { newFromMeshDialog(); });
-    make(QStringLiteral("actionOpen"), tr("&Open…"), QKeySequence::Open, tr("Open a Celform project"),
+    make(QStringLiteral("actionOpen"), tr("&Open…"), QKeySequence(Qt::CTRL | Qt::Key_O), tr("Open a Celform project"),
         [this] { openDialog(); });
-    make(QStringLiteral("actionSave"), tr("&Save"), QKeySequence::Save, tr("Save the project"), [this] { save(); });
-    make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs, tr("Save the project under a new name"),
-        [this] { saveAs(); });
+    make(QStringLiteral("actionSave"), tr("&Save"), QKeySequence(Qt::CTRL | Qt::Key_S), tr("Save the project"),
+        [this] { save(); });
+    make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+        tr("Save the project under a new name"), [this] { saveAs(); });
     make(QStringLiteral("actionImportMesh"), tr("Import &Mesh…"), QKeySequence(Qt::CTRL | Qt::Key_I),
         tr("Replace the base model by a mesh file with the same vertex order"), [this] { importMeshDialog(); });
     make(QStringLiteral("actionImportDrawing"), tr("Import &Drawing…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I),
         tr("Add a reference drawing (PNG, JPEG, TIFF, EXR, PSD, SVG) to the model sheet"),
         [this] { importDrawingDialog(); });
-    make(QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Celform"), [this] { close(); });
+    make(QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), tr("Quit Celform"),
+        [this] { close(); });
 
     QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("actionUndo"));
-    undo->setShortcut(QKeySequence::Undo);
+    undo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
     addAction(undo);
     QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("actionRedo"));
-    redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     addAction(redo);
     QAction* del = make(QStringLiteral("actionDelete"), tr("&Delete"), QKeySequence::Delete,
         tr("Remove the selected drawing or key viewpoint"), [this] { m_scene->removeSelected(); });
@@ -297,6 +331,32 @@ void MainWindow::createActions()
     make(QStringLiteral("actionFrameAll"), tr("&Frame All"), QKeySequence(Qt::Key_F),
         tr("Fit the whole model in the viewport"), [this] { m_viewport->frameAll(); })
         ->setShortcutContext(Qt::WindowShortcut);
+    // View presets, as Blender's numeric keypad (Ctrl for the opposite side) and Home for the front.
+    using Preset = views::Viewport::ViewPreset;
+    const struct {
+        const char* name;
+        QString text;
+        QList<QKeySequence> keys;
+        Preset preset;
+    } presets[] = {
+        {"actionViewFront", tr("&Front"),
+            {QKeySequence(Qt::Key_Home), QKeySequence(QKeyCombination(Qt::KeypadModifier, Qt::Key_1))}, Preset::Front},
+        {"actionViewBack", tr("&Back"),
+            {QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_1))}, Preset::Back},
+        {"actionViewRight", tr("&Right"), {QKeySequence(QKeyCombination(Qt::KeypadModifier, Qt::Key_3))},
+            Preset::Right},
+        {"actionViewLeft", tr("&Left"),
+            {QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_3))}, Preset::Left},
+        {"actionViewTop", tr("&Top"), {QKeySequence(QKeyCombination(Qt::KeypadModifier, Qt::Key_7))}, Preset::Top},
+        {"actionViewBottom", tr("B&ottom"),
+            {QKeySequence(QKeyCombination(Qt::ControlModifier | Qt::KeypadModifier, Qt::Key_7))}, Preset::Bottom},
+    };
+    for (const auto& p : presets) {
+        QAction* a
+            = make(QString::fromLatin1(p.name), p.text, QKeySequence(), tr("Look at the model from this side, framed"),
+                [this, preset = p.preset] { m_viewport->setViewPreset(preset); });
+        a->setShortcuts(p.keys);
+    }
     auto* ortho = make(QStringLiteral("actionOrthographic"), tr("&Orthographic"), QKeySequence(Qt::Key_5),
         tr("Switch between perspective and orthographic projection"), [this](bool on) {
             m_viewport->setProjection(on ? model::Projection::Orthographic : model::Projection::Perspective);
@@ -337,6 +397,7 @@ void MainWindow::createActions()
         tr("Full-screen stereo review of the look: turntable, keys' cameras, stereo modes (H for help)"), [this] {
             auto* review = new ReviewWindow(m_document, m_viewport->camera(), this);
             review->setAttribute(Qt::WA_DeleteOnClose);
+            review->showAs(*m_viewport);
             review->showReview();
         });
     make(QStringLiteral("actionNavigate"), tr("&Navigate Only"), QKeySequence(Qt::Key_Escape),
@@ -398,6 +459,11 @@ void MainWindow::createMenus()
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("actionFrameAll")));
+    QMenu* presets = m_viewMenu->addMenu(tr("View &From"));
+    presets->setObjectName(QStringLiteral("menuViewFrom"));
+    for (const char* name :
+        {"actionViewFront", "actionViewBack", "actionViewRight", "actionViewLeft", "actionViewTop", "actionViewBottom"})
+        presets->addAction(action(QString::fromLatin1(name)));
     m_viewMenu->addAction(action(QStringLiteral("actionOrthographic")));
     m_viewMenu->addAction(action(QStringLiteral("actionPreview")));
     m_viewMenu->addAction(action(QStringLiteral("actionSetRenderCamera")));

@@ -27,6 +27,12 @@ RecoveryManager::RecoveryManager(model::Document* document, const QString& direc
     m_lock->setStaleLockTime(0); // held for the whole session; stale only when the process is gone
     m_lock->tryLock(0);
     connect(&m_timer, &QTimer::timeout, this, &RecoveryManager::autosaveNow);
+    // Any change counts, also one merged into the undo step last autosaved (a slider still
+    // moving, a brush stroke going on), which leaves the undo index where it was.
+    connect(m_document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
+        if (!change.onlyPlayhead())
+            m_dirty = true;
+    });
     // A saved or reopened document needs no recovery copy.
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, [this](bool clean) {
         if (clean)
@@ -47,7 +53,7 @@ void RecoveryManager::setInterval(int milliseconds)
 
 bool RecoveryManager::autosaveNow()
 {
-    if (!m_document->isModified() || m_document->undoStack()->index() == m_savedIndex)
+    if (!m_document->isModified() || !m_dirty)
         return true;
     try {
         m_document->saveCopy(m_ownFile);
@@ -60,7 +66,7 @@ bool RecoveryManager::autosaveNow()
         note.write(QJsonDocument(QJsonObject{{"original", m_document->filePath()},
                                      {"saved_at", QDateTime::currentDateTime().toString(Qt::ISODate)}})
                        .toJson());
-    m_savedIndex = m_document->undoStack()->index();
+    m_dirty = false;
     emit autosaved(m_ownFile);
     return true;
 }
@@ -101,7 +107,12 @@ bool RecoveryManager::adopt(const Orphan& orphan)
     if (!QFile::rename(orphan.recoveryFile, m_ownFile))
         return false;
     const QString oldBase = QString(orphan.recoveryFile).chopped(int(strlen(".celform")));
-    QFile::remove(oldBase + QStringLiteral(".json"));
+    // The note goes along: should this session crash before its first autosave, the copy is
+    // offered again still naming the project it belongs to.
+    const QString ownNote = QString(m_ownFile).replace(QStringLiteral(".celform"), QStringLiteral(".json"));
+    QFile::remove(ownNote);
+    if (!QFile::rename(oldBase + QStringLiteral(".json"), ownNote))
+        QFile::remove(oldBase + QStringLiteral(".json"));
     QFile::remove(oldBase + QStringLiteral(".lock"));
     return true;
 }
@@ -118,7 +129,7 @@ void RecoveryManager::removeOwn()
 {
     QFile::remove(m_ownFile);
     QFile::remove(QString(m_ownFile).replace(QStringLiteral(".celform"), QStringLiteral(".json")));
-    m_savedIndex = -1;
+    m_dirty = true;
 }
 
 } // namespace celform::app

@@ -56,7 +56,7 @@ private:
     QString m_ownFile;
     std::unique_ptr<QLockFile> m_lock;
     QTimer m_timer;
-    int m_savedIndex = -1; ///< undo index at the last autosave
+    bool m_dirty = true; ///< the document changed since the last autosave
 };
 
 } // namespace celform::app

@@ -76,6 +76,17 @@ ReviewWindow::ReviewWindow(model::Document* document, const model::Camera& camer
 
 ReviewWindow::~ReviewWindow() = default;
 
+void ReviewWindow::showAs(const views::Viewport& editor)
+{
+    // What the editor shows: the view-dependent preview, or the key it displays, or the base.
+    if (editor.isPreview())
+        m_viewport->setPreview(true);
+    else
+        m_viewport->setDisplayedKey(editor.displayedKey());
+    m_viewport->setShadingEnabled(true);
+    refreshStatus();
+}
+
 void ReviewWindow::showReview()
 {
     if (QScreen* screen = parentWidget() ? parentWidget()->screen() : QGuiApplication::primaryScreen())
@@ -259,7 +270,11 @@ QString ReviewWindow::statusText() const
     parts << outputName(m_viewport->stereo());
     parts << tr("Key: %1").arg(key);
     parts << tr("Interocular %1").arg(m_viewport->resolvedStereoSettings().interocular, 0, 'g', 3);
-    parts << tr("%1 fps").arg(m_fps, 0, 'f', 1);
+    // Frames are drawn on change only: an idle review shows the last frame's time, not "0 fps".
+    if (m_fps > 0.0)
+        parts << tr("%1 fps").arg(m_fps, 0, 'f', 1);
+    else
+        parts << tr("Idle (last frame %1 ms)").arg(m_viewport->lastFrameMilliseconds(), 0, 'f', 0);
     if (m_turntable.isActive())
         parts << tr("Turntable");
     if (!m_viewport->linesShown())

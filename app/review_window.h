@@ -26,6 +26,8 @@ public:
     /// A review of document starting from camera. Show it with showReview().
     ReviewWindow(model::Document* document, const model::Camera& camera, QWidget* parent = nullptr);
     ~ReviewWindow() override;
+    /// Shows what an editor viewport shows: its preview state or its displayed key.
+    void showAs(const views::Viewport& editor);
 
     /// Full screen on the screen of the parent (or the primary one), focused.
     void showReview();

@@ -20,6 +20,7 @@ using Combinations = std::vector<std::pair<algo::HighlightBoolean, QString>>;
 using Combination = std::pair<algo::HighlightBoolean, QString>;
 using Operation = algo::HighlightOperation;
 using FaceList = std::vector<std::int32_t>;
+using FaceRanges = std::vector<std::pair<qlonglong, qlonglong>>;
 
 /// "--op TYPE:V[,V]" (translate:A,B rotate:DEG scale:DELTA split:G1,G2 square:SIGMA,N).
 Operation parseOperation(const QString& value)
@@ -254,18 +255,33 @@ int runHighlight(const Invocation& in)
     return kExitOk;
 }
 
-/// Face indices from "A-B,C,...", each below faceCount (a usage error when malformed; bad input
-/// naming the file when the mesh has no such face).
-FaceList parseFaceList(const QString& text, Eigen::Index faceCount, const QString& path)
+/// The ranges of "A-B,C,..." (a usage error when malformed or naming no face at all: ",,," made
+/// an empty patch). Checked before the project is opened; the face count after.
+FaceRanges parseFaceRanges(const QString& text)
 {
-    std::vector<std::int32_t> faces;
+    FaceRanges ranges;
+    const auto malformed
+        = [&] { return UsageError{Cli::tr("--faces takes indices and ranges like 0-99,120, not “%1”").arg(text)}; };
     for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
         const QStringList ends = part.trimmed().split(QLatin1Char('-'));
         bool okA = false, okB = true;
         const qlonglong a = ends[0].toLongLong(&okA);
         const qlonglong b = ends.size() == 2 ? ends[1].toLongLong(&okB) : a;
         if (ends.size() > 2 || !okA || !okB || a < 0 || b < a)
-            throw UsageError{Cli::tr("--faces takes indices and ranges like 0-99,120, not “%1”").arg(text)};
+            throw malformed();
+        ranges.emplace_back(a, b);
+    }
+    if (ranges.empty())
+        throw malformed();
+    return ranges;
+}
+
+/// Face indices of ranges, each below faceCount (bad input naming the file when the mesh has no
+/// such face).
+FaceList expandFaceRanges(const FaceRanges& ranges, Eigen::Index faceCount, const QString& path)
+{
+    std::vector<std::int32_t> faces;
+    for (const auto& [a, b] : ranges) {
         if (b >= faceCount)
             throw model::IoError(path, Cli::tr("has %1 faces; face %2 does not exist").arg(faceCount).arg(b));
         for (qlonglong f = a; f <= b; ++f)
@@ -275,12 +291,12 @@ FaceList parseFaceList(const QString& text, Eigen::Index faceCount, const QStrin
 }
 
 /// The faces of --faces, --material and --sphere, united.
-FaceList selectFaces(
-    const Invocation& in, const algo::TriMesh& mesh, const std::vector<Eigen::Vector4d>& spheres, const QString& path)
+FaceList selectFaces(const Invocation& in, const algo::TriMesh& mesh, const std::vector<FaceRanges>& faceRanges,
+    const std::vector<Eigen::Vector4d>& spheres, const QString& path)
 {
     std::vector<std::int32_t> selected;
-    for (const QString& text : in.values("faces")) {
-        const auto faces = parseFaceList(text, mesh.faceCount(), path);
+    for (const FaceRanges& ranges : faceRanges) {
+        const auto faces = expandFaceRanges(ranges, mesh.faceCount(), path);
         selected.insert(selected.end(), faces.begin(), faces.end());
     }
     for (const QString& name : in.values("material")) {
@@ -328,6 +344,9 @@ int runPatch(const Invocation& in)
             throw UsageError{Cli::tr("--sphere needs a positive radius, not “%1”").arg(text)};
         spheres.emplace_back(s);
     }
+    std::vector<FaceRanges> faceRanges;
+    for (const QString& text : in.values("faces"))
+        faceRanges.push_back(parseFaceRanges(text));
     const QString name = in.value(in.isSet("add") ? "add" : in.isSet("subtract") ? "subtract" : "remove");
     if (!in.isSet("list") && name.trimmed().isEmpty())
         throw UsageError{Cli::tr("a patch needs a name")};
@@ -353,7 +372,7 @@ int runPatch(const Invocation& in)
     if (in.isSet("remove")) {
         doc->removeFaceSet(name); // its layers go back to all faces in the same step
     } else {
-        const auto selected = selectFaces(in, *doc->data().baseMesh, spheres, path);
+        const auto selected = selectFaces(in, *doc->data().baseMesh, faceRanges, spheres, path);
         doc->paintFaceSet(name, selected, in.isSet("subtract"));
     }
     doc->saveAs(path);

@@ -21,6 +21,9 @@ int runKey(const Invocation& in)
         throw UsageError{Cli::tr("unknown key action “%1”").arg(in.argument(0))};
     if (!in.isSet("name") || in.isSet("mesh") == in.isSet("from-base"))
         throw UsageError{Cli::tr("--name and exactly one of --mesh or --from-base are required")};
+    const QString name = in.value("name");
+    if (name.trimmed().isEmpty())
+        throw UsageError{Cli::tr("--name needs a name, not “%1”").arg(name)};
     camera_options::checkCombination(in, true);
     const bool byView = camera_options::byView(in);
     const Eigen::Vector3d view = byView ? camera_options::view(in) : Eigen::Vector3d::Zero();
@@ -38,11 +41,16 @@ int runKey(const Invocation& in)
         doc->setDrawingCamera(drawing, camera);
         drawingIds.push_back(drawing);
     }
-    const model::ObjectId id = doc->createKey(in.value("name"), camera, drawingIds, {}, frame);
+    const model::ObjectId id = doc->createKey(name, camera, drawingIds, {}, frame);
     if (in.isSet("mesh"))
         for (const QString& w : doc->importKeyDeformation(id, in.value("mesh"), frame))
             printErr(Cli::tr("warning: %1: %2").arg(in.value("mesh"), w));
     doc->saveAs(path);
+    // A name in use is made unique, as the editor makes it (Document::uniqueKeyName): say so, since
+    // later commands (brush --key) need the name given to the key.
+    if (const QString& given = doc->data().key(id)->name; given != name.trimmed())
+        printErr(Cli::tr("warning: %1: a key named “%2” exists; the new key is named “%3”")
+                     .arg(path, name.trimmed(), given));
     if (in.isSet("json")) {
         const model::KeyViewpoint& key = *doc->data().key(id);
         printJson({{"id", double(key.id)}, {"name", key.name}, {"direction", model::vec3Json(key.direction)},

@@ -155,6 +155,12 @@ int runRender(const Invocation& in)
             QStringLiteral("jpg"), QStringLiteral("jpeg")}
              .contains(suffix))
         throw UsageError{Cli::tr("--out must end in .png, .exr, .tif or .jpg, not “%1”").arg(outPattern)};
+    // Two eyes in stereo; an EXR of every pass adds a float copy of the passes (measured).
+    const bool allPasses = suffix == QLatin1String("exr") && !in.isSet("pass") && stereo == algo::StereoOutput::Off;
+    const qint64 bytesPerPixel
+        = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2) + (allPasses ? 32 : 0);
+    checkRenderMemory("size", QStringLiteral("%1x%2").arg(imageSize.width()).arg(imageSize.height()),
+        qint64(imageSize.width()) * imageSize.height() * bytesPerPixel);
 
     // A render reads the project and writes pictures; the overrides apply to this render only.
     const model::ProjectData data = model::loadProject(path);
@@ -182,7 +188,6 @@ int runRender(const Invocation& in)
     const Eigen::Vector3d direction = blender.viewDirection(data, camera.eye);
     algo::RenderCache cache;
     const bool sequence = lastFrame > firstFrame;
-    const bool allPasses = suffix == QLatin1String("exr") && !in.isSet("pass") && stereo == algo::StereoOutput::Off;
     // The shape keeps its generation while frames leave it still, so highlight geometry is reused.
     algo::Shape shape;
     algo::Positions next;

@@ -5,11 +5,16 @@
 
 #include "celform/algorithms/tri_mesh.h"
 
+#include <QFile>
 #include <QRegularExpression>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace celform::app {
 
@@ -130,14 +135,46 @@ std::pair<int, int> parseFrameRange(const char* option, const QString& text)
 
 QSize parseSize(const char* option, const QString& text)
 {
-    Q_UNUSED(option);
+    static_assert(kMaxRenderSide == 16384, "the message below names the limit");
     const QStringList parts = text.toLower().split(QLatin1Char('x'));
     bool okW = false, okH = false;
     const int w = parts.size() == 2 ? parts[0].toInt(&okW) : 0;
     const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
-    if (!okW || !okH || w < 1 || h < 1 || w > 16384 || h > 16384)
+    if (!okW || !okH || w < 1 || h < 1 || w > kMaxRenderSide || h > kMaxRenderSide)
         throw UsageError{Cli::tr("--size takes WIDTHxHEIGHT between 1 and 16384, not “%1”").arg(text)};
+    // 16384 x 16384 needs about 24 GB: the sides alone do not bound what a render holds.
+    if (qint64(w) * h > kMaxRenderPixels)
+        throw UsageError{Cli::tr("%1 takes at most %2 pixels (8192x8192: the renderer holds %3 bytes a pixel), not "
+                                 "“%4”")
+                             .arg(dashed(option))
+                             .arg(kMaxRenderPixels)
+                             .arg(kRenderBytesPerPixel)
+                             .arg(text)};
     return {w, h};
+}
+
+void checkRenderMemory(const char* option, const QString& text, qint64 bytes)
+{
+    qint64 available = std::numeric_limits<qint64>::max();
+    QFile meminfo(QStringLiteral("/proc/meminfo"));
+    if (meminfo.open(QIODevice::ReadOnly)) {
+        for (const QByteArray& line : meminfo.readAll().split('\n'))
+            if (line.startsWith("MemAvailable:"))
+                available = line.mid(13).trimmed().split(' ').value(0).toLongLong() * 1024;
+    }
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+        QFile statm(QStringLiteral("/proc/self/statm"));
+        const qint64 used = statm.open(QIODevice::ReadOnly)
+            ? statm.readAll().split(' ').value(0).toLongLong() * ::sysconf(_SC_PAGESIZE)
+            : 0;
+        available = std::min(available, qint64(limit.rlim_cur) - used);
+    }
+    if (bytes > available)
+        throw UsageError{Cli::tr("%1 %2 needs about %3 GB of memory to render, and %4 GB are available")
+                             .arg(dashed(option), text)
+                             .arg(double(bytes) / 1e9, 0, 'f', 1)
+                             .arg(double(std::max<qint64>(available, 0)) / 1e9, 0, 'f', 1)};
 }
 
 bool parseOnOff(const char* option, const QString& text)
@@ -200,6 +237,14 @@ ShadingStyle parseStyle(const char* option, const QString& text)
         if (text == QLatin1String(name))
             return style;
     throw UsageError{Cli::tr("--style takes toon, gooch, comic or lambert, not “%1”").arg(text)};
+}
+
+bool sameFile(const QString& a, const QString& b)
+{
+    struct stat sa {
+    }, sb{};
+    return ::stat(QFile::encodeName(a).constData(), &sa) == 0 && ::stat(QFile::encodeName(b).constData(), &sb) == 0
+        && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
 Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector3d& view, double aspect)

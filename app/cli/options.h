@@ -19,6 +19,13 @@ namespace celform::app {
 
 /// The most frames one `render --frames` run writes.
 constexpr int kMaxFramesPerRun = 100'000;
+/// The widest or tallest `render --size`.
+constexpr int kMaxRenderSide = 16384;
+/// The most pixels of one `render --size`: 8192 x 8192, about 5.9 GB for the renderer's passes.
+constexpr qint64 kMaxRenderPixels = qint64(8192) * 8192;
+/// What the renderer holds per pixel (G-buffer, passes and the beauty image, measured); a stereo
+/// render holds two eyes.
+constexpr qint64 kRenderBytesPerPixel = 88;
 
 /// count comma-separated finite numbers ("X,Y,Z", "DX,DY", "X,Y,Z,R").
 Eigen::VectorXd parseNumbers(const char* option, const QString& text, int count);
@@ -34,8 +41,12 @@ int parseFrame(const char* option, const QString& text);
 /// "A-B" (either may be negative), A <= B, both within +-model::kMaxFrame, at most
 /// kMaxFramesPerRun frames.
 std::pair<int, int> parseFrameRange(const char* option, const QString& text);
-/// "WxH", each between 1 and 16384.
+/// "WxH", each between 1 and kMaxRenderSide, at most kMaxRenderPixels in all.
 QSize parseSize(const char* option, const QString& text);
+/// A usage error when a render of bytes cannot fit in the memory available now (the system's
+/// available memory, and the address-space limit if one is set): refused before the project is
+/// read rather than ending in "out of memory" or the kernel's OOM killer.
+void checkRenderMemory(const char* option, const QString& text, qint64 bytes);
 bool parseOnOff(const char* option, const QString& text);
 
 /// A position: three finite numbers.
@@ -50,6 +61,9 @@ Eigen::Vector3f parseFloatDirection(const char* option, const QString& text);
 model::Light parseLight(const char* option, const QString& text);
 /// toon, gooch, comic or lambert.
 model::ShadingStyle parseStyle(const char* option, const QString& text);
+
+/// Whether two paths name the same existing file (through links too).
+bool sameFile(const QString& a, const QString& b);
 
 /// An option's parsed value, or none when it is not given.
 template <typename Parse>

@@ -1,5 +1,6 @@
 // `celform new` and `celform info`: making a project from a mesh, and what a project holds.
 #include "cli/command.h"
+#include "cli/options.h"
 
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/document.h"
@@ -18,12 +19,19 @@ int runNew(const Invocation& in)
     if (!in.isSet("out"))
         throw UsageError{Cli::tr("--out is required")};
     const QString mesh = in.argument(0);
+    const QString out = in.value("out");
+    // The project replaces whatever is at --out: never one of the files it is made from.
+    for (const QString& input : QStringList{mesh} + in.values("drawing"))
+        if (sameFile(out, input))
+            throw UsageError{Cli::tr("--out “%1” is one of the files being read; give a new .celform file").arg(out)};
+    if (QFileInfo(out).suffix().compare(QLatin1String("celform"), Qt::CaseInsensitive) != 0)
+        throw UsageError{Cli::tr("--out must end in .celform, not “%1”").arg(out)};
     model::Document doc;
     for (const QString& w : doc.newFromMesh(mesh))
         printErr(Cli::tr("warning: %1: %2").arg(mesh, w));
     for (const QString& image : in.values("drawing"))
         doc.importDrawing(image);
-    doc.saveAs(in.value("out"));
+    doc.saveAs(out);
     return kExitOk;
 }
 

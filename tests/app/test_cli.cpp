@@ -15,6 +15,9 @@
 
 #include <cmath>
 
+#include <sys/resource.h>
+#include <sys/stat.h>
+
 namespace {
 
 struct Run {
@@ -44,6 +47,32 @@ Run runCelform(const QStringList& args, const QStringList& environment = {},
     p.start(program, args);
     if (!p.waitForFinished(120000))
         p.kill();
+    return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
+        QString::fromUtf8(p.readAllStandardError())};
+}
+
+/// Runs celform as runCelform does, with its address space capped at addressSpace bytes and
+/// killed after timeoutMs: a regression that allocates gigabytes or blocks fails its test.
+Run runCelformLimited(const QStringList& args, qint64 addressSpace, int timeoutMs)
+{
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("DISPLAY"));
+    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    p.setProcessEnvironment(env);
+    p.setChildProcessModifier([addressSpace] {
+        const rlimit limit{rlim_t(addressSpace), rlim_t(addressSpace)};
+        ::setrlimit(RLIMIT_AS, &limit);
+    });
+    p.start(QStringLiteral(CELFORM_EXECUTABLE), args);
+    Run run;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        run.err = QStringLiteral("(killed after %1 ms)").arg(timeoutMs);
+        return run;
+    }
     return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
         QString::fromUtf8(p.readAllStandardError())};
 }
@@ -111,6 +140,16 @@ class TestCli : public QObject {
 
 private:
     QTemporaryDir m_dir;
+
+    /// A fresh project on the committed tetrahedron (no shared data needed), in m_dir.
+    QString tetrahedronProject(const QString& name)
+    {
+        const QString mesh = celform::test::testDataPath(QStringLiteral("fuzz-regressions/cli/tetrahedron.off"));
+        const QString out = m_dir.filePath(name);
+        QFile::remove(out);
+        const Run r = runCelform({QStringLiteral("new"), mesh, QStringLiteral("--out"), out});
+        return r.exitCode == 0 ? out : QString();
+    }
 
     QString bunnyProject()
     {
@@ -228,6 +267,187 @@ private slots:
         } else {
             QVERIFY2(r.err.contains(QStringLiteral("warning")), qPrintable(r.err)); // bad files are never clean
         }
+    }
+
+    // Issue 14: every handcrafted file of tests/data/fuzz-regressions (a trailer offset that wrapped
+    // past its check and crashed, counts that allocated gigabytes, images stating more pixels than
+    // their file holds) is bad input: exit 3 and one line naming the file, within 1 GB and 20 s.
+    void fuzzRegressionsAreOneLineRefusals_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("named");
+        const QString root = celform::test::testDataPath(QStringLiteral("fuzz-regressions"));
+        const QString out = m_dir.filePath(QStringLiteral("fuzz.celform"));
+        const QString picture = m_dir.filePath(QStringLiteral("fuzz.png"));
+        const QString mesh = root + QStringLiteral("/cli/tetrahedron.off");
+        for (const QFileInfo& f : QDir(root + QStringLiteral("/project")).entryInfoList(QDir::Files, QDir::Name)) {
+            QTest::addRow("info %s", qPrintable(f.fileName())) << QStringList{"info", f.filePath()} << f.fileName();
+            QTest::addRow("render %s", qPrintable(f.fileName()))
+                << QStringList{"render", f.filePath(), "--size", "64x64", "--out", picture} << f.fileName();
+        }
+        for (const QFileInfo& f : QDir(root + QStringLiteral("/image")).entryInfoList(QDir::Files, QDir::Name))
+            QTest::addRow("new --drawing %s", qPrintable(f.fileName()))
+                << QStringList{"new", mesh, "--drawing", f.filePath(), "--out", out} << f.fileName();
+    }
+    void fuzzRegressionsAreOneLineRefusals()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, named);
+        const Run r = runCelformLimited(args, 1ll << 30, 20000);
+        QVERIFY2(r.status == QProcess::NormalExit, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 3, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.contains(named), qPrintable(r.err));
+        QVERIFY2(r.err.trimmed().count(QLatin1Char('\n')) == 0, qPrintable(r.err)); // one line
+        // Refused from what the file states, not by running out of the 1 GB.
+        QVERIFY2(!r.err.contains(QStringLiteral("memory")) && !r.err.contains(QStringLiteral("bad_alloc")),
+            qPrintable(r.err));
+        QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("fuzz.celform"))));
+    }
+
+    // Issue 14: a named pipe or a folder given as a project or a drawing blocked for ever; both are
+    // bad input, refused before they are opened.
+    void pipesAndFoldersAreRefused_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("command");
+        for (const char* kind : {"fifo", "folder"})
+            for (const char* command : {"info", "render", "set", "drawing"})
+                QTest::addRow("%s %s", kind, command) << QString::fromLatin1(kind) << QString::fromLatin1(command);
+    }
+    void pipesAndFoldersAreRefused()
+    {
+        QFETCH(QString, kind);
+        QFETCH(QString, command);
+        QTemporaryDir dir;
+        const QString special
+            = dir.filePath(command == QLatin1String("drawing") ? QStringLiteral("d.png") : QStringLiteral("p.celform"));
+        if (kind == QLatin1String("fifo"))
+            QCOMPARE(::mkfifo(QFile::encodeName(special).constData(), 0600), 0);
+        else
+            QVERIFY(QDir(dir.path()).mkdir(QFileInfo(special).fileName()));
+        const QString mesh = celform::test::testDataPath(QStringLiteral("fuzz-regressions/cli/tetrahedron.off"));
+        const QStringList args = command == QLatin1String("drawing")
+            ? QStringList{"new", mesh, "--drawing", special, "--out", dir.filePath(QStringLiteral("out.celform"))}
+            : command == QLatin1String("set") ? QStringList{"set", special, "--sharpness", "2"}
+                                              : QStringList{command, special};
+        const Run r = runCelformLimited(args, 2ll << 30, 10000);
+        QVERIFY2(r.status == QProcess::NormalExit, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 3, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.contains(special) && r.err.contains(QStringLiteral("not a regular file")), qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);
+    }
+
+    // Issue 14: `new` wrote its project over its own input mesh, and wrote projects under any
+    // suffix. Both are usage errors now, and nothing is written.
+    void newRefusesItsInputAndOtherSuffixes()
+    {
+        QTemporaryDir dir;
+        const QString mesh = dir.filePath(QStringLiteral("a.off"));
+        QVERIFY(QFile::copy(celform::test::testDataPath(QStringLiteral("fuzz-regressions/cli/tetrahedron.off")), mesh));
+        const QByteArray before = fileBytes(mesh);
+        Run r = runCelform({"new", mesh, "--out", mesh});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("one of the files being read")), qPrintable(r.err));
+        QCOMPARE(fileBytes(mesh), before);
+        // Through a link to it too.
+        const QString link = dir.filePath(QStringLiteral("link.celform"));
+        QVERIFY(QFile::link(mesh, link));
+        r = runCelform({"new", mesh, "--out", link});
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(fileBytes(mesh), before);
+        // A project is a .celform file.
+        const QString text = dir.filePath(QStringLiteral("o.txt"));
+        r = runCelform({"new", mesh, "--out", text});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral(".celform")), qPrintable(r.err));
+        QVERIFY(!QFileInfo::exists(text));
+        r = runCelform({"new", mesh, "--out", dir.filePath(QStringLiteral("Upper.CELFORM"))});
+        QCOMPARE(r.exitCode, 0);
+    }
+
+    // Issue 14: `key add` took an empty name, and a name in use silently became "NAME 2". Empty is
+    // a usage error; a name in use is made unique as the editor does, and a warning says so.
+    void keyAddNames()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("names.celform"));
+        QVERIFY(!p.isEmpty());
+        for (const QString& empty : {QString(), QStringLiteral("   ")}) {
+            const Run r = runCelform({"key", "add", p, "--name", empty, "--from-base", "--view", "0,0,1"});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("--name")), qPrintable(r.err));
+        }
+        Run r = runCelform({"key", "add", p, "--name", "side", "--from-base", "--view", "1,0,0"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.isEmpty(), qPrintable(r.err));
+        r = runCelform({"key", "add", p, "--name", "side", "--from-base", "--view", "0,0,1", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["name"].toString(), QStringLiteral("side 2"));
+        QVERIFY2(r.err.startsWith(QStringLiteral("warning: ") + p) && r.err.contains(QStringLiteral("“side 2”")),
+            qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);
+        r = runCelform({"info", p, "--json"});
+        const QJsonArray keys = QJsonDocument::fromJson(r.out.toUtf8()).object()["key_viewpoints"].toArray();
+        QCOMPARE(keys.size(), 2);
+        QCOMPARE(keys[1].toObject()["name"].toString(), QStringLiteral("side 2"));
+    }
+
+    // Issue 14: `patch --faces ,,,` made an empty patch; a --faces naming no face is a usage error,
+    // found before the project is opened.
+    void patchFacesNeedAFace()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("faces.celform"));
+        QVERIFY(!p.isEmpty());
+        const QByteArray before = fileBytes(p);
+        for (const char* faces : {",,,", "", " , "}) {
+            const Run r = runCelform({"patch", p, "--add", "empty", "--faces", faces});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("--faces")), qPrintable(r.err));
+        }
+        QCOMPARE(fileBytes(p), before);
+        QCOMPARE(
+            runCelform({"patch", m_dir.filePath(QStringLiteral("missing.celform")), "--add", "x", "--faces", ",,,"})
+                .exitCode,
+            2);
+        QCOMPARE(runCelform({"patch", p, "--add", "two", "--faces", ",0,,3,"}).exitCode, 0);
+    }
+
+    // Issue 14 listed `eval --view 0,0,0` exiting 0 while render refused it: both are usage errors.
+    void evalRefusesZeroView()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("eval.celform"));
+        QVERIFY(!p.isEmpty());
+        for (const char* command : {"eval", "render"}) {
+            const Run r = runCelform({command, p, "--view", "0,0,0"});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("--view")), qPrintable(r.err));
+        }
+    }
+
+    // Issue 14: --size 16384x16384 was accepted and needs about 24 GB (88 bytes a pixel). The pixel
+    // count is capped (8192x8192), and a size the memory available cannot hold is refused too, both
+    // before the project is read. Run under a 2 GB cap so a regression cannot take the machine.
+    void renderSizeIsCapped()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("size.celform"));
+        QVERIFY(!p.isEmpty());
+        const QString png = m_dir.filePath(QStringLiteral("size.png"));
+        for (const char* size : {"16384x16384", "8193x8192", "16384x4097"}) {
+            const Run r = runCelformLimited({"render", p, "--size", size, "--out", png}, 2ll << 30, 60000);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("67108864 pixels")), qPrintable(r.err));
+        }
+        // Within the cap but not within the 2 GB given: refused with what it needs.
+        Run r = runCelformLimited({"render", p, "--size", "8192x8192", "--out", png}, 2ll << 30, 60000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("GB of memory")), qPrintable(r.err));
+        r = runCelformLimited(
+            {"render", p, "--size", "4096x4096", "--stereo", "anaglyph", "--out", png}, 2ll << 30, 60000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(!QFileInfo::exists(png));
+        // The sides' own limit stands: a long strip renders.
+        r = runCelformLimited({"render", p, "--size", "16384x2", "--out", png}, 2ll << 30, 60000);
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(QImage(png).size(), QSize(16384, 2));
     }
 
     void viewDependentWorkflow()

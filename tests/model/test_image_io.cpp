@@ -6,11 +6,20 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <QBuffer>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest/QtTest>
 
+#include <csignal>
+#include <functional>
+#include <new>
 #include <vector>
+
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using celform::model::Drawing;
 using celform::model::importDrawing;
@@ -60,6 +69,92 @@ QString writeBytes(const QTemporaryDir& dir, const QString& name, const QByteArr
     return path;
 }
 
+/// How a call run in a child process ended, with what it printed on standard error.
+struct ChildOutcome {
+    enum Kind { IoErrorThrown, OtherException, Returned, Crashed, TimedOut } kind = Crashed;
+    QString message; ///< the exception's text
+    QString standardError; ///< everything the child wrote to file descriptor 2
+    qint64 milliseconds = 0;
+
+    [[nodiscard]] QString describe() const
+    {
+        const char* names[] = {"IoError", "another exception", "no exception", "crash", "time-out"};
+        return QStringLiteral("%1 after %2 ms: %3 [stderr: %4]")
+            .arg(names[kind])
+            .arg(milliseconds)
+            .arg(message, standardError);
+    }
+};
+
+/// Runs body in a forked child whose address space may grow by at most budget bytes, killed after
+/// timeoutMs, its standard error captured: a decode that allocates gigabytes, hangs or prints
+/// its library's own lines fails the test instead of taking the run (or the machine) down.
+ChildOutcome runInChild(const std::function<void()>& body, qint64 budget = 512ll << 20, int timeoutMs = 10000)
+{
+    QTemporaryFile result, errors;
+    if (!result.open() || !errors.open())
+        qFatal("cannot make temporary files");
+    std::fflush(stdout);
+    std::fflush(stderr);
+    QElapsedTimer timer;
+    timer.start();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL})
+            std::signal(sig, SIG_DFL); // die by the signal, without QtTest's crash report
+        ::dup2(int(errors.handle()), STDERR_FILENO);
+        QFile statm(QStringLiteral("/proc/self/statm"));
+        const qint64 pages = statm.open(QIODevice::ReadOnly) ? statm.readAll().split(' ').value(0).toLongLong() : 0;
+        const auto limit = rlim_t(pages * ::sysconf(_SC_PAGESIZE) + budget);
+        const rlimit rl{limit, limit};
+        ::setrlimit(RLIMIT_AS, &rl);
+        ChildOutcome::Kind kind = ChildOutcome::Returned;
+        QByteArray message;
+        try {
+            body();
+        } catch (const IoError& e) {
+            kind = ChildOutcome::IoErrorThrown;
+            message = e.message().toUtf8();
+        } catch (const std::bad_alloc&) {
+            kind = ChildOutcome::OtherException;
+            message = "std::bad_alloc";
+        } catch (const std::exception& e) {
+            kind = ChildOutcome::OtherException;
+            message = e.what();
+        }
+        const QByteArray out = QByteArray::number(int(kind)) + ' ' + message;
+        [[maybe_unused]] const auto written = ::write(int(result.handle()), out.constData(), std::size_t(out.size()));
+        ::_exit(0);
+    }
+    ChildOutcome outcome;
+    int status = 0;
+    bool finished = false;
+    while (!finished && timer.elapsed() < timeoutMs) {
+        finished = ::waitpid(pid, &status, WNOHANG) == pid;
+        if (!finished)
+            QThread::msleep(5);
+    }
+    outcome.milliseconds = timer.elapsed();
+    QFile resultFile(result.fileName()), errorFile(errors.fileName());
+    const QByteArray out = resultFile.open(QIODevice::ReadOnly) ? resultFile.readAll() : QByteArray();
+    outcome.standardError = QString::fromUtf8(errorFile.open(QIODevice::ReadOnly) ? errorFile.readAll() : "");
+    if (!finished) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, &status, 0);
+        outcome.kind = ChildOutcome::TimedOut;
+    } else if (WIFEXITED(status) && !out.isEmpty()) {
+        outcome.kind = ChildOutcome::Kind(out.left(out.indexOf(' ')).toInt());
+        outcome.message = QString::fromUtf8(out.mid(out.indexOf(' ') + 1));
+    }
+    return outcome;
+}
+
+QByteArray fileBytes(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
 } // namespace
 
 class TestImageIo : public QObject {
@@ -77,6 +172,12 @@ private slots:
     void damaged_data();
     void damaged();
     void suffixesAndFilter();
+    void refusesFuzzRegressions_data();
+    void refusesFuzzRegressions();
+    void decoderMessagesStayQuiet();
+    void mostCompressiblePngIsRead();
+    void refusesPipesAndFolders_data();
+    void refusesPipesAndFolders();
 };
 
 void TestImageIo::sharedPng()
@@ -209,6 +310,104 @@ void TestImageIo::suffixesAndFilter()
         QVERIFY(s.contains(QLatin1String(needed)));
     QVERIFY(celform::model::imageFileFilter().contains(QStringLiteral("*.svg")));
     QVERIFY_THROWS_EXCEPTION(IoError, importDrawing(QStringLiteral("/nonexistent/drawing.png")));
+}
+
+void TestImageIo::refusesFuzzRegressions_data()
+{
+    QTest::addColumn<QString>("path");
+    const QDir dir(celform::test::testDataPath(QStringLiteral("fuzz-regressions/image")));
+    QStringList files = dir.entryList(QDir::Files, QDir::Name);
+    files.removeAll(QStringLiteral("png-1000x1000-libpng-error-line.png")); // decoderMessagesStayQuiet
+    QVERIFY(!files.isEmpty());
+    for (const QString& name : files)
+        QTest::newRow(qPrintable(name)) << dir.filePath(name);
+}
+
+// Issue 14: images whose header states more pixels than allowed, or more than their file can hold
+// (a 69-byte PNG of 11585 x 11585 pixels took 1.7 GB), are refused from the header, before any
+// buffer is allocated, in one line naming the file; both for a drawing being imported and for the
+// sizes `celform info` reads, and for formats whose header OpenImageIO reads (TIFF).
+void TestImageIo::refusesFuzzRegressions()
+{
+    QFETCH(QString, path);
+    const ChildOutcome imported = runInChild([&] { importDrawing(path); });
+    QVERIFY2(imported.kind == ChildOutcome::IoErrorThrown, qPrintable(imported.describe()));
+    QVERIFY2(imported.message.startsWith(path + QStringLiteral(": ")), qPrintable(imported.message));
+    QVERIFY2(imported.message.contains(QStringLiteral("too large")), qPrintable(imported.message));
+    QVERIFY2(!imported.message.contains(QLatin1Char('\n')), qPrintable(imported.message));
+    QVERIFY2(imported.standardError.isEmpty(), qPrintable(imported.describe()));
+    QVERIFY2(imported.milliseconds < 5000, qPrintable(imported.describe()));
+
+    const QByteArray bytes = fileBytes(path);
+    const QString suffix = QFileInfo(path).suffix();
+    const ChildOutcome sized
+        = runInChild([&] { celform::model::decodedImageSize(bytes, suffix, QStringLiteral("label")); });
+    QVERIFY2(sized.kind == ChildOutcome::IoErrorThrown, qPrintable(sized.describe()));
+    QVERIFY2(sized.message.startsWith(QStringLiteral("label: ")), qPrintable(sized.message));
+    QVERIFY2(sized.message.contains(QStringLiteral("too large")), qPrintable(sized.message));
+}
+
+// libpng printed "libpng error: Not enough image data" on standard error beside the one-line
+// refusal; the decoder's own messages are silenced, the refusal says what they said.
+void TestImageIo::decoderMessagesStayQuiet()
+{
+    const QString path
+        = celform::test::testDataPath(QStringLiteral("fuzz-regressions/image/png-1000x1000-libpng-error-line.png"));
+    const ChildOutcome outcome = runInChild([&] { importDrawing(path); });
+    QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+    QVERIFY2(outcome.message.startsWith(path + QStringLiteral(": ")), qPrintable(outcome.message));
+    QVERIFY2(outcome.message.contains(QStringLiteral("Not enough image data")), qPrintable(outcome.message));
+    QVERIFY2(outcome.standardError.isEmpty(), qPrintable(outcome.describe()));
+    // Standard error works again after the decode.
+    const ChildOutcome after = runInChild([&] {
+        try {
+            importDrawing(path);
+        } catch (const IoError&) { }
+        std::fputs("still here\n", stderr);
+    });
+    QCOMPARE(after.standardError, QStringLiteral("still here\n"));
+}
+
+// The limit on pixels per byte of the file keeps clear of real files: a blank 1-bit PNG, about the
+// most a PNG is compressed (zlib: 3,300 pixels a byte), beyond the 16-megapixel floor, is read.
+void TestImageIo::mostCompressiblePngIsRead()
+{
+    QImage blank(4200, 4200, QImage::Format_Mono);
+    blank.fill(1);
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    QVERIFY(blank.save(&buffer, "PNG", 0));
+    QVERIFY(qint64(4200) * 4200 > qint64(png.size()) * 2000); // far beyond a drawing's usual ratio
+    QTemporaryDir dir;
+    const QString path = writeBytes(dir, QStringLiteral("blank.png"), png);
+    CELFORM_IMPORT_OR_FAIL(d, importDrawing(path))
+    QCOMPARE(d.image.size(), QSize(4200, 4200));
+    QCOMPARE(celform::model::decodedImageSize(png, QStringLiteral("png"), path), QSize(4200, 4200));
+}
+
+void TestImageIo::refusesPipesAndFolders_data()
+{
+    QTest::addColumn<QString>("kind");
+    QTest::newRow("named pipe") << "fifo";
+    QTest::newRow("folder") << "folder";
+}
+
+// Issue 14: a named pipe given as a drawing blocked in open() for ever, waiting for a writer;
+// anything but a regular file is refused before it is opened.
+void TestImageIo::refusesPipesAndFolders()
+{
+    QFETCH(QString, kind);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("special.png"));
+    if (kind == QLatin1String("fifo"))
+        QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+    else
+        QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("special.png")));
+    const ChildOutcome outcome = runInChild([&] { importDrawing(path); }, 512ll << 20, 5000);
+    QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+    QVERIFY2(outcome.message.startsWith(path + QStringLiteral(": ")), qPrintable(outcome.message));
+    QVERIFY2(outcome.message.contains(QStringLiteral("not a regular file")), qPrintable(outcome.message));
 }
 
 QTEST_MAIN(TestImageIo)

@@ -10,10 +10,18 @@
 #include <QtEndian>
 #include <QtTest/QtTest>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
+#include <iterator>
 #include <limits>
+#include <mutex>
 #include <random>
+#include <thread>
+
+#include <sys/stat.h> // mkfifo
 
 using celform::algo::Faces;
 using celform::algo::Positions;
@@ -111,6 +119,66 @@ QByteArray tightBinaryPly(int vertexCountInHeader, int verticesWritten)
     return out;
 }
 
+/// Ends the run with a message when an import takes longer than a limit: a loader that hangs on a
+/// regression input (an endless loop, a blocking open) then fails the suite at once, naming the
+/// input, instead of stalling it until ctest's timeout.
+class Watchdog {
+public:
+    Watchdog(const QString& what, std::chrono::seconds limit)
+        : m_what(what.toLocal8Bit())
+        , m_thread([this, limit] {
+            std::unique_lock lock(m_mutex);
+            if (!m_doneChanged.wait_for(lock, limit, [this] { return m_done; }))
+                qFatal("%s: no answer within %lld s (hang)", m_what.constData(), static_cast<long long>(limit.count()));
+        })
+    { }
+    Watchdog(const Watchdog&) = delete;
+    Watchdog& operator=(const Watchdog&) = delete;
+    ~Watchdog()
+    {
+        {
+            const std::lock_guard lock(m_mutex);
+            m_done = true;
+        }
+        m_doneChanged.notify_one();
+        m_thread.join();
+    }
+
+private:
+    QByteArray m_what;
+    std::mutex m_mutex;
+    std::condition_variable m_doneChanged;
+    bool m_done = false;
+    std::thread m_thread; // last: it starts once the members it uses exist
+};
+
+constexpr std::chrono::seconds kImportTimeLimit{20};
+
+/// What each input under tests/data/fuzz-regressions/mesh must give: an IoError whose problem
+/// contains `expected`, or (loads) a mesh with a warning containing it. Every file in the folder
+/// needs a row here, and every row a file.
+struct RegressionExpectation {
+    const char* file;
+    bool loads;
+    const char* expected;
+};
+
+constexpr RegressionExpectation kMeshRegressions[] = {
+    {"ply-ascii-second-vertex-element-heap-overflow.ply", false, "a second \"vertex\" element"},
+    {"ply-binary-second-vertex-element-heap-overflow.ply", false, "a second \"vertex\" element"},
+    {"ply-binary-propertyless-element-9e18-rows-hang.ply", false,
+        "element \"junk\" has 9000000000000000000 rows but no properties"},
+    {"obj-mtllib-dotdot-dev-zero-oom.obj", true, "is outside the folder of the OBJ file"},
+    {"obj-mtllib-dotdot-dev-urandom-hang.obj", true, "is outside the folder of the OBJ file"},
+    {"obj-face-index-99999999999-wraps.obj", false, "line 4: face 1 has the index 99999999999, which is too large"},
+    {"ply-header-only-60m-faces.ply", false,
+        "60000000 faces, more than the file holds and more than the 50000000 triangles Celform can load"},
+    {"ply-header-only-60m-vertices.ply", false,
+        "60000000 vertices and 1 faces, more than the file holds and more than the 50000000 vertices Celform can load"},
+    {"off-header-only-60m-faces.off", false,
+        "60000000 faces, more than the file holds and more than the 50000000 triangles Celform can load"},
+};
+
 void verifyQuad(const MeshImport& result)
 {
     QCOMPARE(result.mesh.vertexCount(), 4);
@@ -143,6 +211,14 @@ private slots:
     void roundTrip();
     void exportErrors();
     void suffixesAndFilter();
+    void fuzzRegressions_data();
+    void fuzzRegressions();
+    void sizeLimits_data();
+    void sizeLimits();
+    void notRegularFile_data();
+    void notRegularFile();
+    void objMaterialLibraries_data();
+    void objMaterialLibraries();
 };
 
 void TestMeshIo::offVertexOrderAndFan_data()
@@ -324,6 +400,29 @@ void TestMeshIo::malformed_data()
     QTest::newRow("obj float overflow") << "big.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n")
                                         << "vertex 3";
     QTest::newRow("obj NaN") << "nan.obj" << QByteArray("v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n") << "vertex 2";
+    QTest::newRow("obj index wraps to a valid one")
+        << "wrap.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967299\n") << "index 4294967299, which";
+    QTest::newRow("obj negative index overflow")
+        << "negwrap.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -99999999999\n") << "-99999999999";
+    QTest::newRow("obj texcoord index overflow")
+        << "vtwrap.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/4294967297\n")
+        << "line 5: face 1 has the index 4294967297";
+    QTest::newRow("obj index of 30 digits")
+        << "digits.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 123456789012345678901234567890\n")
+        << "123456789012345678901234567890";
+    QTest::newRow("ply second face element")
+        << "faces2.ply"
+        << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element face 1\nproperty list uchar int vertex_indices\n"
+                      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n")
+        << "PLY header line 9: a second \"face\" element";
+    QTest::newRow("ply ascii element without properties")
+        << "noprops.ply"
+        << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element junk 5\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+        << "PLY header line 7: element \"junk\" has 5 rows but no properties";
     QTest::newRow("obj no faces") << "nofaces.obj" << QByteArray("v 0 0 0\n") << "no faces";
     QTest::newRow("stl garbage") << "garbage.stl" << QByteArray("this is not an stl file at all, not even close\n")
                                  << "STL";
@@ -486,6 +585,189 @@ void TestMeshIo::suffixesAndFilter()
     for (const char* needed : {"obj", "ply", "off", "stl", "gltf", "glb"})
         QVERIFY(s.contains(QLatin1String(needed)));
     QVERIFY(celform::model::meshFileFilter().contains(QStringLiteral("*.ply")));
+}
+
+void TestMeshIo::fuzzRegressions_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<bool>("listed");
+    QTest::addColumn<bool>("loads");
+    QTest::addColumn<QString>("expected");
+    const QDir dir(celform::test::testDataPath(QStringLiteral("fuzz-regressions/mesh")));
+    QStringList files = dir.entryList(QDir::Files, QDir::Name);
+    for (const RegressionExpectation& r : kMeshRegressions)
+        if (!files.contains(QLatin1String(r.file)))
+            files << QLatin1String(r.file); // a listed file that is missing fails below
+    for (const QString& file : files) {
+        const auto it = std::find_if(std::begin(kMeshRegressions), std::end(kMeshRegressions),
+            [&](const RegressionExpectation& r) { return file == QLatin1String(r.file); });
+        const bool listed = it != std::end(kMeshRegressions);
+        QTest::newRow(qPrintable(file)) << dir.filePath(file) << listed << (listed && it->loads)
+                                        << (listed ? QString::fromUtf8(it->expected) : QString());
+    }
+}
+
+void TestMeshIo::fuzzRegressions()
+{
+    QFETCH(QString, path);
+    QFETCH(bool, listed);
+    QFETCH(bool, loads);
+    QFETCH(QString, expected);
+    QVERIFY2(listed, "no row in kMeshRegressions for this file");
+    QVERIFY2(QFileInfo(path).isFile(), qPrintable(QStringLiteral("missing: ") + path));
+    const Watchdog watchdog(path, kImportTimeLimit);
+    try {
+        const MeshImport r = importMesh(path);
+        QVERIFY2(loads, qPrintable(QStringLiteral("loaded, but should be refused with: ") + expected));
+        const QString warnings = r.warnings.join(QStringLiteral(" | "));
+        QVERIFY2(warnings.contains(expected), qPrintable(QStringLiteral("warnings: ") + warnings));
+    } catch (const IoError& e) {
+        QVERIFY2(!loads, qPrintable(QStringLiteral("refused, but should load: ") + e.message()));
+        QCOMPARE(e.file(), path);
+        QVERIFY2(e.problem().contains(expected), qPrintable(e.message()));
+        QVERIFY2(!e.problem().contains(QLatin1Char('\n')), qPrintable(e.message()));
+    }
+}
+
+void TestMeshIo::sizeLimits_data()
+{
+    // Headers whose counts the file's size could hold: a zero-filled (sparse) body makes them
+    // plausible, so only the size limit stands between the count and the allocation.
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QByteArray>("header");
+    QTest::addColumn<qint64>("bodyBytes");
+    QTest::addColumn<QString>("expected");
+    const QByteArray vertices = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    QTest::newRow("ply faces") << "faces.ply"
+                               << QByteArray("ply\nformat binary_little_endian 1.0\n" + vertices
+                                      + "element face 60000000\nproperty list uchar int vertex_indices\nend_header\n")
+                               << qint64(36 + 60000000)
+                               << "the file has 60000000 faces, more than the 50000000 triangles";
+    QTest::newRow("ply vertices")
+        << "vertices.ply"
+        << QByteArray("ply\nformat binary_little_endian 1.0\nelement vertex 60000000\nproperty float x\n"
+                      "property float y\nproperty float z\nend_header\n")
+        << qint64(720000000) << "the file has 60000000 vertices, more than the 50000000 vertices";
+    QTest::newRow("off faces") << "faces.off" << QByteArray("OFF\n3 60000000 0\n") << qint64(500000000)
+                               << "the file has 60000000 faces, more than the 50000000 triangles";
+    QTest::newRow("ply polygon of 60 M corners")
+        << "polygon.ply"
+        << QByteArray("ply\nformat ascii 1.0\n" + vertices
+               + "element face 1\nproperty list uint int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n60000000 ")
+        << qint64(60000000) << "face 1 makes more than the 50000000 triangles";
+}
+
+void TestMeshIo::sizeLimits()
+{
+    QFETCH(QString, name);
+    QFETCH(QByteArray, header);
+    QFETCH(qint64, bodyBytes);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, name, header);
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadWrite) && file.resize(header.size() + bodyBytes)); // sparse
+    }
+    const Watchdog watchdog(path, kImportTimeLimit);
+    try {
+        importMesh(path);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), path);
+        QVERIFY2(e.problem().contains(expected), qPrintable(e.message()));
+    }
+}
+
+void TestMeshIo::notRegularFile_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("kind");
+    QTest::newRow("fifo ply") << "pipe.ply"
+                              << "fifo";
+    QTest::newRow("fifo stl (Assimp)") << "pipe.stl"
+                                       << "fifo";
+    QTest::newRow("directory obj") << "folder.obj"
+                                   << "directory";
+    QTest::newRow("link to a device") << "zero.off"
+                                      << "device";
+}
+
+void TestMeshIo::notRegularFile()
+{
+    QFETCH(QString, name);
+    QFETCH(QString, kind);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(name);
+    if (kind == QLatin1String("fifo"))
+        QVERIFY(::mkfifo(QFile::encodeName(path).constData(), 0600) == 0);
+    else if (kind == QLatin1String("directory"))
+        QVERIFY(QDir(dir.path()).mkdir(name));
+    else
+        QVERIFY(QFile::link(QStringLiteral("/dev/zero"), path));
+    // Opening a FIFO with no writer blocks: the refusal must come before any open().
+    const Watchdog watchdog(path, kImportTimeLimit);
+    try {
+        importMesh(path);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), path);
+        QVERIFY2(e.problem().contains(QStringLiteral("not a regular file")), qPrintable(e.message()));
+    }
+}
+
+void TestMeshIo::objMaterialLibraries_data()
+{
+    QTest::addColumn<QString>("mtllib");
+    QTest::addColumn<QString>("warning"); // empty: the materials load
+    QTest::newRow("sub-folder") << "mats/quad.mtl" << QString();
+    QTest::newRow("absolute") << "/dev/zero"
+                              << "\"/dev/zero\" is outside the folder of the OBJ file";
+    QTest::newRow("absolute to a file") << "@/mats/quad.mtl"
+                                        << "is outside the folder of the OBJ file";
+    QTest::newRow("dot-dot inside") << "mats/../mats/quad.mtl" << QString();
+    QTest::newRow("dot-dot") << "../quad.mtl"
+                             << "is outside the folder of the OBJ file";
+    QTest::newRow("missing") << "none.mtl"
+                             << "\"none.mtl\" does not exist";
+    QTest::newRow("fifo") << "pipe.mtl"
+                          << "\"pipe.mtl\" is not a regular file";
+    QTest::newRow("folder") << "mats"
+                            << "\"mats\" is not a regular file";
+    QTest::newRow("too large") << "big.mtl"
+                               << "\"big.mtl\" is larger than";
+}
+
+void TestMeshIo::objMaterialLibraries()
+{
+    QFETCH(QString, mtllib);
+    QFETCH(QString, warning);
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("obj/mats")));
+    const QByteArray mtl = "newmtl red\nKd 1 0 0\n";
+    writeFile(dir, QStringLiteral("quad.mtl"), mtl); // beside the OBJ's folder: out of reach
+    writeFile(dir, QStringLiteral("obj/mats/quad.mtl"), mtl);
+    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath(QStringLiteral("obj/pipe.mtl"))).constData(), 0600) == 0);
+    {
+        QFile big(dir.filePath(QStringLiteral("obj/big.mtl")));
+        QVERIFY(big.open(QIODevice::WriteOnly) && big.resize(qint64(64) << 20)); // sparse
+    }
+    mtllib.replace(QLatin1Char('@'), dir.filePath(QStringLiteral("obj")));
+    const QString path = writeFile(dir, QStringLiteral("obj/tri.obj"),
+        "mtllib " + mtllib.toUtf8() + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    const Watchdog watchdog(path, kImportTimeLimit);
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(path))
+    QCOMPARE(r.mesh.faceCount(), 1);
+    if (warning.isEmpty()) {
+        QVERIFY2(r.warnings.filter(QStringLiteral("material")).isEmpty(), qPrintable(r.warnings.join('|')));
+        QCOMPARE(int(r.mesh.materials.size()), 1);
+        QCOMPARE(r.mesh.materials[0].name, std::string("red"));
+    } else {
+        QVERIFY2(r.warnings.join('|').contains(warning), qPrintable(r.warnings.join('|')));
+        QVERIFY(r.mesh.materials.empty()); // default materials
+        for (const QString& w : r.warnings)
+            QVERIFY2(!w.contains(QLatin1Char('\n')), qPrintable(w));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestMeshIo)

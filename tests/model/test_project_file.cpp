@@ -9,13 +9,24 @@
 
 #include <QBuffer>
 #include <QCryptographicHash>
+#include <QDir>
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QTemporaryDir>
+#include <QThread>
 #include <QtEndian>
 
+#include <csignal>
 #include <cstring>
 #include <functional>
+#include <new>
+
+#include <sys/ptrace.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace celform;
 using namespace celform::model;
@@ -194,6 +205,94 @@ void setLastTrackEntry(QJsonObject& manifest, const QString& name, const QJsonVa
     manifest.insert("look", look);
 }
 
+/// How a load run in a child process ended.
+struct ChildOutcome {
+    enum Kind { IoErrorThrown, OtherException, Returned, Crashed, TimedOut } kind = Crashed;
+    QString message; ///< the exception's text
+    int signal = 0; ///< for Crashed
+    qint64 milliseconds = 0;
+
+    [[nodiscard]] QString describe() const
+    {
+        const char* names[] = {"IoError", "another exception", "no exception", "crash", "time-out"};
+        return QStringLiteral("%1 after %2 ms (signal %3): %4")
+            .arg(names[kind])
+            .arg(milliseconds)
+            .arg(signal)
+            .arg(message);
+    }
+};
+
+/// Runs body in a forked child whose address space may grow by at most budget bytes, killed after
+/// timeoutMs: a regression that crashes, hangs or allocates gigabytes fails its test instead of
+/// taking the test run (or the machine) down with it.
+ChildOutcome runInChild(const std::function<void()>& body, qint64 budget = 512ll << 20, int timeoutMs = 10000)
+{
+    int fds[2];
+    if (::pipe(fds) != 0)
+        qFatal("pipe failed");
+    std::fflush(stdout);
+    std::fflush(stderr);
+    QElapsedTimer timer;
+    timer.start();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::close(fds[0]);
+        for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL})
+            std::signal(sig, SIG_DFL); // die by the signal, without QtTest's crash report
+        QFile statm(QStringLiteral("/proc/self/statm"));
+        const qint64 pages = statm.open(QIODevice::ReadOnly) ? statm.readAll().split(' ').value(0).toLongLong() : 0;
+        const auto limit = rlim_t(pages * ::sysconf(_SC_PAGESIZE) + budget);
+        const rlimit rl{limit, limit};
+        ::setrlimit(RLIMIT_AS, &rl);
+        ChildOutcome::Kind kind = ChildOutcome::Returned;
+        QByteArray message;
+        try {
+            body();
+        } catch (const IoError& e) {
+            kind = ChildOutcome::IoErrorThrown;
+            message = e.message().toUtf8();
+        } catch (const std::bad_alloc&) {
+            kind = ChildOutcome::OtherException;
+            message = "std::bad_alloc";
+        } catch (const std::exception& e) {
+            kind = ChildOutcome::OtherException;
+            message = e.what();
+        }
+        const QByteArray out = QByteArray::number(int(kind)) + ' ' + message;
+        [[maybe_unused]] const auto written = ::write(fds[1], out.constData(), std::size_t(out.size()));
+        ::_exit(0);
+    }
+    ::close(fds[1]);
+    ChildOutcome outcome;
+    int status = 0;
+    bool finished = false;
+    while (!finished && timer.elapsed() < timeoutMs) {
+        finished = ::waitpid(pid, &status, WNOHANG) == pid;
+        if (!finished)
+            QThread::msleep(5);
+    }
+    outcome.milliseconds = timer.elapsed();
+    if (!finished) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, &status, 0);
+        outcome.kind = ChildOutcome::TimedOut;
+    } else if (WIFSIGNALED(status)) {
+        outcome.kind = ChildOutcome::Crashed;
+        outcome.signal = WTERMSIG(status);
+    }
+    QByteArray out;
+    char buffer[4096];
+    for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) > 0;)
+        out.append(buffer, n);
+    ::close(fds[0]);
+    if (finished && WIFEXITED(status) && !out.isEmpty()) {
+        outcome.kind = ChildOutcome::Kind(out.left(out.indexOf(' ')).toInt());
+        outcome.message = QString::fromUtf8(out.mid(out.indexOf(' ') + 1));
+    }
+    return outcome;
+}
+
 } // namespace
 
 class TestProjectFile : public QObject {
@@ -313,6 +412,87 @@ private slots:
         QCOMPARE(loadProject(path + QStringLiteral(".bak")).blend.sharpness, 1.75);
     }
 
+    // Issue 14: a save killed at any instant leaves the project opening and a whole backup. The
+    // save runs in a child stopped at every system call (ptrace), where a kill would leave the
+    // files exactly as they are; the old save removed .bak before linking the new one.
+    void backupSurvivesAKillAtEveryStep()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.celform"));
+        const QString backup = path + QStringLiteral(".bak");
+        ProjectData data = richProject();
+        const double first = 1.25, second = 2.5, third = 5.0; // the versions' sharpness
+        data.blend.sharpness = first;
+        saveProject(data, path);
+        data.blend.sharpness = second;
+        saveProject(data, path);
+        QCOMPARE(loadProject(backup, DrawingImages::Skip).blend.sharpness, first);
+        // A staged backup left by an interrupted save is replaced, not trusted.
+        writeAll(path + QStringLiteral(".bak.new"), "left over");
+        data.blend.sharpness = third;
+
+        std::fflush(stdout);
+        std::fflush(stderr);
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            ::ptrace(PTRACE_TRACEME, 0, nullptr, nullptr);
+            ::raise(SIGSTOP);
+            try {
+                saveProject(data, path);
+            } catch (...) {
+                ::_exit(1);
+            }
+            ::_exit(0);
+        }
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        if (!WIFSTOPPED(status)
+            || ::ptrace(PTRACE_SETOPTIONS, pid, nullptr, PTRACE_O_TRACESYSGOOD | PTRACE_O_EXITKILL) != 0) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, &status, 0);
+            QSKIP("ptrace is not allowed here");
+        }
+        auto sharpnessOf = [](const QString& file) {
+            try {
+                return loadProject(file, DrawingImages::Skip).blend.sharpness;
+            } catch (const IoError&) {
+                return -1.0;
+            }
+        };
+        int stops = 0;
+        QString broken;
+        int signal = 0;
+        while (broken.isEmpty()) {
+            if (::ptrace(PTRACE_SYSCALL, pid, nullptr, reinterpret_cast<void*>(qintptr(signal))) != 0)
+                break;
+            ::waitpid(pid, &status, 0);
+            if (WIFEXITED(status) || WIFSIGNALED(status))
+                break;
+            signal = 0;
+            if (WSTOPSIG(status) != (SIGTRAP | 0x80)) {
+                signal = WSTOPSIG(status); // not a system call: pass the signal on
+                continue;
+            }
+            ++stops;
+            const double current = sharpnessOf(path), previous = sharpnessOf(backup);
+            if ((current != second && current != third) || (previous != first && previous != second))
+                broken = QStringLiteral("at system call stop %1 the project reads %2 and its backup %3 (-1: none)")
+                             .arg(stops)
+                             .arg(current)
+                             .arg(previous);
+        }
+        if (!broken.isEmpty()) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, &status, 0);
+            QFAIL(qPrintable(broken));
+        }
+        QVERIFY2(WIFEXITED(status) && WEXITSTATUS(status) == 0, "the traced save failed");
+        QVERIFY(stops > 10);
+        QCOMPARE(sharpnessOf(path), third);
+        QCOMPARE(sharpnessOf(backup), second);
+        QVERIFY(!QFileInfo::exists(path + QStringLiteral(".bak.new")));
+    }
+
     void failedSaveLeavesFileIntact()
     {
         QTemporaryDir dir;
@@ -383,6 +563,184 @@ private slots:
             QVERIFY2(e.message().contains(expected), qPrintable(e.message()));
             QVERIFY2(e.message().contains(QStringLiteral("bad.celform")), qPrintable(e.message()));
         }
+    }
+
+    // Issue 14: handcrafted files that crashed, or allocated gigabytes before their refusal, each
+    // named after what it triggers (tests/data/fuzz-regressions/README.md). Every one is refused at
+    // once, in one line naming the file, within a small memory budget.
+    void refusesFuzzRegressions_data()
+    {
+        QTest::addColumn<QString>("path");
+        QTest::addColumn<QString>("expected");
+        const QDir dir(celform::test::testDataPath(QStringLiteral("fuzz-regressions/project")));
+        const QStringList files = dir.entryList({QStringLiteral("*.celform")}, QDir::Files, QDir::Name);
+        QVERIFY(!files.isEmpty());
+        for (const QString& name : files) {
+            const QString expected = name.startsWith(QLatin1String("drawing-")) ? QStringLiteral("too large")
+                : name.startsWith(QLatin1String("trailer-"))                    ? QStringLiteral("table of contents")
+                                                                                : QStringLiteral("damaged");
+            QTest::newRow(qPrintable(name)) << dir.filePath(name) << expected;
+        }
+    }
+
+    void refusesFuzzRegressions()
+    {
+        QFETCH(QString, path);
+        QFETCH(QString, expected);
+        const ChildOutcome outcome = runInChild([&] { loadProject(path); });
+        QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+        QVERIFY2(outcome.message.startsWith(path), qPrintable(outcome.message));
+        QVERIFY2(outcome.message.contains(expected), qPrintable(outcome.message));
+        QVERIFY2(!outcome.message.contains(QLatin1Char('\n')), qPrintable(outcome.message));
+        QVERIFY2(outcome.milliseconds < 5000, qPrintable(outcome.describe()));
+    }
+
+    // The trailer's and the chunk table's bounds are checked by subtraction, against the data's end.
+    void refusesOffsetsOutsideTheFile_data()
+    {
+        QTest::addColumn<QString>("entry");
+        QTest::addColumn<double>("value");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("offset 2^64") << "offset" << 18446744073709551616.0 << "out of range";
+        QTest::newRow("offset 2^53") << "offset" << 9007199254740992.0 << "outside the file";
+        QTest::newRow("offset fractional") << "offset" << 16.5 << "out of range";
+        QTest::newRow("offset negative") << "offset" << -8.0 << "out of range";
+        QTest::newRow("offset in the header") << "offset" << 8.0 << "outside the file";
+        QTest::newRow("offset at the manifest") << "offset" << -1.0 << "outside the file"; // -1: the manifest's
+        QTest::newRow("size 2^53") << "size" << 9007199254740992.0 << "outside the file";
+        QTest::newRow("size past the manifest") << "size" << -1.0 << "outside the file"; // -1: to the manifest + 1
+        QTest::newRow("crc 2^32") << "crc32" << 4294967296.0 << "out of range";
+    }
+
+    void refusesOffsetsOutsideTheFile()
+    {
+        QFETCH(QString, entry);
+        QFETCH(double, value);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("offsets.celform"));
+        saveProject(richProject(), path);
+        editManifest(path, [&](QJsonObject& m) {
+            QJsonObject chunks = m.value("chunks").toObject();
+            QJsonObject faces = chunks.value("mesh/faces").toObject();
+            const QByteArray bytes = readAll(path);
+            const auto manifestOffset = double(qFromLittleEndian<quint64>(bytes.constData() + bytes.size() - 32));
+            if (value != -1.0)
+                faces.insert(entry, value);
+            else if (entry == QLatin1String("offset"))
+                faces.insert(entry, manifestOffset);
+            else
+                faces.insert(entry, manifestOffset - faces.value("offset").toDouble() + 1);
+            chunks.insert("mesh/faces", faces);
+            m.insert("chunks", chunks);
+        });
+        const ChildOutcome outcome = runInChild([&] { loadProject(path); });
+        QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+        QVERIFY2(outcome.message.contains(expected), qPrintable(outcome.message));
+        QVERIFY2(outcome.message.contains(QStringLiteral("offsets.celform")), qPrintable(outcome.message));
+    }
+
+    // Numbers that become ids, frames or counts are checked before the cast, and a block serves
+    // one entry only (a block named by many entries multiplied what was allocated).
+    void refusesBadNumbersAndSharedBlocks_data()
+    {
+        QTest::addColumn<QString>("edit");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("face set block used twice") << "shared-block"
+                                                   << "used twice";
+        QTest::newRow("face set longer than the faces") << "face-set-count"
+                                                        << "more faces than the model";
+        QTest::newRow("key moves more vertices than there are") << "key-count"
+                                                                << "more vertices than the model";
+        QTest::newRow("key frame 1e300") << "key-frame"
+                                         << "not a frame number";
+        QTest::newRow("drawing frame 2.5") << "drawing-frame"
+                                           << "not a frame number";
+        QTest::newRow("drawing id -1") << "drawing-id"
+                                       << "out of range";
+        QTest::newRow("linked drawing id 1e300") << "linked-id"
+                                                 << "out of range";
+        QTest::newRow("next_id 2^64") << "next-id"
+                                      << "out of range";
+    }
+
+    void refusesBadNumbersAndSharedBlocks()
+    {
+        QFETCH(QString, edit);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("numbers.celform"));
+        saveProject(richProject(), path);
+        editManifest(path, [&](QJsonObject& m) {
+            QJsonObject mesh = m.value("base_mesh").toObject();
+            QJsonArray sets = mesh.value("face_sets").toArray();
+            QJsonArray drawings = m.value("drawings").toArray();
+            QJsonObject drawing = drawings.first().toObject();
+            QJsonArray keys = m.value("keys").toArray();
+            QJsonObject key = keys.first().toObject();
+            QJsonArray frames = key.value("frames").toArray();
+            QJsonObject frame = frames.first().toObject();
+            if (edit == QLatin1String("shared-block")) {
+                QJsonObject twin = sets.first().toObject();
+                twin.insert("name", QStringLiteral("twin"));
+                sets.append(twin);
+            } else if (edit == QLatin1String("face-set-count")) {
+                QJsonObject set = sets.first().toObject();
+                set.insert("count", 5); // the mesh has 4 faces
+                sets.replace(0, set);
+            } else if (edit == QLatin1String("key-count")) {
+                frame.insert("count", 6); // the mesh has 5 vertices
+            } else if (edit == QLatin1String("key-frame")) {
+                frame.insert("frame", 1e300);
+            } else if (edit == QLatin1String("drawing-frame")) {
+                drawing.insert("frame", 2.5);
+            } else if (edit == QLatin1String("drawing-id")) {
+                drawing.insert("id", -1);
+            } else if (edit == QLatin1String("linked-id")) {
+                key.insert("drawings", QJsonArray{1e300});
+            } else if (edit == QLatin1String("next-id")) {
+                m.insert("next_id", 18446744073709551616.0);
+            }
+            mesh.insert("face_sets", sets);
+            m.insert("base_mesh", mesh);
+            drawings.replace(0, drawing);
+            m.insert("drawings", drawings);
+            frames.replace(0, frame);
+            key.insert("frames", frames);
+            keys.replace(0, key);
+            m.insert("keys", keys);
+        });
+        const ChildOutcome outcome = runInChild([&] { loadProject(path); });
+        QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+        QVERIFY2(outcome.message.contains(expected), qPrintable(outcome.message));
+        QVERIFY2(outcome.message.contains(QStringLiteral("numbers.celform")), qPrintable(outcome.message));
+    }
+
+    // Issue 14: a named pipe given as a project blocked in open() for ever, waiting for a writer;
+    // anything but a regular file is refused before it is opened.
+    void refusesPipesAndFolders_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("named pipe") << "fifo";
+        QTest::newRow("folder") << "folder";
+        QTest::newRow("device") << "device";
+    }
+
+    void refusesPipesAndFolders()
+    {
+        QFETCH(QString, kind);
+        QTemporaryDir dir;
+        QString path = dir.filePath(QStringLiteral("special.celform"));
+        if (kind == QLatin1String("fifo"))
+            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+        else if (kind == QLatin1String("folder"))
+            QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("special.celform")));
+        else
+            path = QStringLiteral("/dev/zero");
+        const ChildOutcome outcome = runInChild([&] { loadProject(path); }, 512ll << 20, 5000);
+        QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+        QVERIFY2(outcome.message.startsWith(path + QStringLiteral(": ")), qPrintable(outcome.message));
+        QVERIFY2(outcome.message.contains(QStringLiteral("not a regular file")), qPrintable(outcome.message));
     }
 
     void failedOpenLeavesDocumentUntouched()

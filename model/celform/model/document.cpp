@@ -316,13 +316,22 @@ void Document::setDrawingCamera(ObjectId id, const Camera& camera)
     const Drawing* drawing = m_data.drawing(id);
     if (!drawing || !camera.isValid() || (drawing->aligned && drawing->camera == camera))
         return;
-    auto* cmd = new CompositeCommand(this, tr("Align Drawing “%1”").arg(drawing->name));
-    const ChangeSet change = ChangeSet::of(Part::Drawings, id);
-    new PropertyCommand<Camera>(
-        this, {}, Property::DrawingCamera, idTarget(id), drawingField(id, &Drawing::camera), camera, change, 0, cmd);
-    new PropertyCommand<bool>(
-        this, {}, Property::DrawingCamera, idTarget(id), drawingField(id, &Drawing::aligned), true, change, 0, cmd);
-    push(cmd);
+    // The camera and the "aligned" flag are one value: a navigation gesture is one step, and its
+    // undo gives back an unaligned drawing where there was one.
+    using Aligned = std::pair<Camera, bool>;
+    push(new PropertyCommand<Aligned>(
+        this, tr("Align Drawing “%1”").arg(drawing->name), Property::DrawingCamera, idTarget(id),
+        [id](const ProjectData& d) -> std::optional<Aligned> {
+            const Drawing* x = d.drawing(id);
+            return x ? std::optional<Aligned>(Aligned{x->camera, x->aligned}) : std::nullopt;
+        },
+        [id](ProjectData& d, const Aligned& value) {
+            if (Drawing* x = d.drawing(id)) {
+                x->camera = value.first;
+                x->aligned = value.second;
+            }
+        },
+        Aligned{camera, true}, ChangeSet::of(Part::Drawings, id), m_gesture));
 }
 
 // --- key viewpoints ---------------------------------------------------------------------------------

@@ -185,6 +185,9 @@ public:
     /// key first (translation and rotation at the front, scaling at the end), so its keys keep
     /// interpolating. Steps in one gesture are one undo step.
     void nudgeHighlight(ObjectId id, double frame, algo::HighlightOperationType type, double a, double b = 0.0);
+    /// Moves a highlight at frame so that its translation along the unturned du and dv is
+    /// (alpha, beta) (HighlightTrack::translationAt); the "Move Highlight" step of a drag.
+    void setHighlightTranslation(ObjectId id, double frame, double alpha, double beta);
     void setHighlightPatch(ObjectId id, const QString& patch);
     void setHighlightGuide(ObjectId id, const Eigen::Vector3f& guide);
     void setHighlightSmoothing(ObjectId id, int rounds);

@@ -9,6 +9,7 @@
 #include <QUndoCommand>
 
 #include <functional>
+#include <optional>
 #include <utility>
 
 namespace celform::model {
@@ -83,22 +84,42 @@ protected:
 /// A step made of child commands only.
 using CompositeCommand = DocumentCommand;
 
-/// Sets one value found by a locator (by id) from `before` to `after`.
+/// Sets one value found by a locator (by id) from `before` to `after`. A value spread over
+/// several members (a drawing's camera and its "aligned" flag) goes through a getter and a setter.
 template <typename T> class PropertyCommand : public DocumentCommand {
 public:
     using Locator = std::function<T*(ProjectData&)>;
+    using Getter = std::function<std::optional<T>(const ProjectData&)>;
+    using Setter = std::function<void(ProjectData&, const T&)>;
 
     PropertyCommand(Document* doc, const QString& text, Property property, QString target, Locator locate, T after,
         ChangeSet change, int gesture, QUndoCommand* parent = nullptr)
+        : PropertyCommand(
+            doc, text, property, std::move(target),
+            [locate](const ProjectData& d) -> std::optional<T> {
+                if (T* v = locate(const_cast<ProjectData&>(d)))
+                    return *v;
+                return std::nullopt;
+            },
+            [locate](ProjectData& d, const T& value) {
+                if (T* v = locate(d))
+                    *v = value;
+            },
+            std::move(after), std::move(change), gesture, parent)
+    { }
+
+    PropertyCommand(Document* doc, const QString& text, Property property, QString target, Getter get, Setter set,
+        T after, ChangeSet change, int gesture, QUndoCommand* parent = nullptr)
         : DocumentCommand(doc, text, parent)
         , m_property(property)
         , m_target(std::move(target))
-        , m_locate(std::move(locate))
+        , m_get(std::move(get))
+        , m_set(std::move(set))
         , m_after(std::move(after))
         , m_change(std::move(change))
         , m_gesture(gesture)
     {
-        if (T* v = m_locate(m_doc->mutableData()))
+        if (const std::optional<T> v = m_get(m_doc->data()))
             m_before = *v;
     }
 
@@ -118,16 +139,17 @@ public:
 protected:
     void apply(bool forward) override
     {
-        if (T* v = m_locate(m_doc->mutableData())) {
-            *v = forward ? m_after : m_before;
-            m_doc->noteChange(m_change);
-        }
+        if (!m_get(m_doc->data()))
+            return; // the target is gone
+        m_set(m_doc->mutableData(), forward ? m_after : m_before);
+        m_doc->noteChange(m_change);
     }
 
 private:
     Property m_property;
     QString m_target;
-    Locator m_locate;
+    Getter m_get;
+    Setter m_set;
     T m_before{};
     T m_after;
     ChangeSet m_change;

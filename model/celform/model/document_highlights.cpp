@@ -303,6 +303,14 @@ void Document::nudgeHighlight(ObjectId id, double frame, algo::HighlightOperatio
                                             : tr("Move Highlight"));
 }
 
+void Document::setHighlightTranslation(ObjectId id, double frame, double alpha, double beta)
+{
+    const Eigen::Vector2d now = highlightOrThrow(id).translationAt(frame);
+    if (!std::isfinite(alpha) || !std::isfinite(beta))
+        return;
+    nudgeHighlight(id, frame, algo::HighlightOperationType::Translation, alpha - now.x(), beta - now.y());
+}
+
 void Document::setHighlightPatch(ObjectId id, const QString& patch)
 {
     const HighlightTrack& track = highlightOrThrow(id);

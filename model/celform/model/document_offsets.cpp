@@ -188,9 +188,11 @@ void Document::displaceKeyVertices(ObjectId id, int frame, const std::vector<std
         return;
     if (!validStep(indices, displacements, std::uint32_t(m_data.baseMesh->vertexCount())))
         return; // out of range, out of order or NaN: never written into the document
-    // A stroke's later steps: the command on top of the stack takes them in place.
+    // A stroke's later steps: the command on top of the stack takes them in place. Not at the
+    // clean index (a save during the stroke): the saved state must stay one undo step away, as
+    // QUndoStack keeps it by never merging into the clean command.
     const bool onTop = m_openOffsets && m_undo->index() == m_undo->count() && m_undo->index() > 0
-        && m_undo->command(m_undo->index() - 1) == m_openOffsets;
+        && m_undo->cleanIndex() != m_undo->index() && m_undo->command(m_undo->index() - 1) == m_openOffsets;
     if (onTop && m_openOffsets->key() == id && m_openOffsets->frame() == frame && m_openOffsets->gesture() == m_gesture
         && m_gesture != 0 && m_openOffsets->absorb(indices, displacements))
         return;

@@ -100,6 +100,9 @@ MeshImport importMesh(const QString& path)
         throw IoError(path,
             MeshIo::tr("unknown mesh format \"%1\"; use one of: %2")
                 .arg(suffix, meshSuffixes().join(QStringLiteral(", "))));
+    // Before any reader (or Assimp, or tinyobjloader) opens it: a FIFO would block the open for
+    // ever, a directory or device would be read without end.
+    meshio::requireRegularFile(path);
     reader->read(path, out);
 
     throwIfUnusable(path, out.mesh);

@@ -34,8 +34,12 @@ void appendNode(const QString& path, const aiScene& scene, const aiNode& node, c
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
         const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
         const auto base = static_cast<std::int64_t>(positions.size() / 3);
-        if (base + mesh.mNumVertices > kMaxIndex)
+        // Assimp has read the scene by now, but our arrays are still to be filled.
+        if (base + mesh.mNumVertices > kMaxMeshVertices)
             throw IoError(path, MeshIo::tr("the scene has more vertices than Celform can hold"));
+        if (static_cast<std::int64_t>(indices.size() / 3) + mesh.mNumFaces > kMaxMeshTriangles)
+            throw IoError(
+                path, MeshIo::tr("the scene has more than the %1 triangles Celform can load").arg(kMaxMeshTriangles));
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D p = transform * mesh.mVertices[v];
             positions.insert(positions.end(), {p.x, p.y, p.z});

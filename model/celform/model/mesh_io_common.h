@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QFile>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -31,10 +32,30 @@ namespace meshio {
 constexpr std::int64_t kMaxIndex = std::numeric_limits<std::int32_t>::max();
 constexpr bool kHostLittleEndian = Q_BYTE_ORDER == Q_LITTLE_ENDIAN;
 
+/// The largest mesh importMesh() accepts: 50 M vertices and 50 M triangles, 600 MB of positions and
+/// as much of indices (the Stanford dragon has 0.9 M triangles). The counts a file declares (PLY
+/// and OFF headers) or that a first pass finds (OBJ) are checked before any array is allocated, so
+/// a small file claiming 60 M faces is refused at once; polygons that fan into more triangles than
+/// the faces declared stop at the limit as they are added. Not configurable yet.
+constexpr std::int64_t kMaxMeshVertices = 50'000'000;
+constexpr std::int64_t kMaxMeshTriangles = 50'000'000;
+
+/// Throw IoError naming the file when a count exceeds the limits above: checkFaceCount() is for
+/// faces of any size (each gives at least one triangle), checkTriangleCount() for triangles.
+void checkVertexCount(const QString& path, std::int64_t vertices);
+void checkFaceCount(const QString& path, std::int64_t faces);
+void checkTriangleCount(const QString& path, std::int64_t triangles);
+
+/// Throws IoError naming the file unless path is an existing regular file (symbolic links
+/// followed). Checked before anything opens the file: opening a FIFO with no writer blocks for
+/// ever, and a directory or a device such as /dev/zero has no end to read to.
+void requireRegularFile(const QString& path);
+
 /// Whole-file access: mapped where possible, so a 16 MB PLY costs no copy.
 class FileBytes {
 public:
-    /// Throws IoError for a missing, unopenable, empty or unreadable file.
+    /// Throws IoError for a missing, unopenable, empty or unreadable file, and for anything that
+    /// is not a regular file (refused before it is opened).
     explicit FileBytes(const QString& path);
     [[nodiscard]] const char* data() const { return m_data; }
     [[nodiscard]] std::size_t size() const { return m_size; }
@@ -54,10 +75,24 @@ public:
         : m_path(path)
         , m_vertexCount(vertexCount)
     { }
-    void reserve(std::int64_t triangles) { m_indices.reserve(static_cast<std::size_t>(triangles) * 3); }
+    /// Callers pass what the bytes left can hold; never more than the limit is reserved.
+    void reserve(std::int64_t triangles)
+    {
+        m_indices.reserve(static_cast<std::size_t>(std::clamp<std::int64_t>(triangles, 0, kMaxMeshTriangles)) * 3);
+    }
+
+    /// Throws before a polygon of that many corners is read when its triangles would take the mesh
+    /// over kMaxMeshTriangles (a corner list as long as the file allows is refused unread).
+    void checkPolygon(std::int64_t sourceFace, std::int64_t corners) const
+    {
+        if (corners - 2 > kMaxMeshTriangles - triangleCount())
+            throwTooManyTriangles(sourceFace);
+    }
 
     void addTriangle(std::int64_t sourceFace, std::int64_t a, std::int64_t b, std::int64_t c)
     {
+        if (triangleCount() >= kMaxMeshTriangles)
+            throwTooManyTriangles(sourceFace);
         check(sourceFace, a);
         check(sourceFace, b);
         check(sourceFace, c);
@@ -76,6 +111,7 @@ public:
             addTriangle(sourceFace, corners[0], corners[k], corners[k + 1]);
     }
     [[nodiscard]] std::int64_t skipped() const { return m_skipped; }
+    [[nodiscard]] std::int64_t triangleCount() const { return static_cast<std::int64_t>(m_indices.size() / 3); }
 
     algo::Faces take()
     {
@@ -87,6 +123,13 @@ public:
     }
 
 private:
+    [[noreturn]] void throwTooManyTriangles(std::int64_t sourceFace) const
+    {
+        throw IoError(m_path,
+            MeshIo::tr("face %1 makes more than the %2 triangles Celform can load")
+                .arg(sourceFace + 1)
+                .arg(kMaxMeshTriangles));
+    }
     void check(std::int64_t sourceFace, std::int64_t v) const
     {
         if (v < 0 || v >= m_vertexCount)
@@ -106,7 +149,8 @@ private:
 /// "1 face with fewer than three corners ignored", "%n faces ...": for FaceBuilder::skipped().
 QString skippedFacesWarning(std::int64_t skipped);
 
-/// For a header whose counts cannot fit in the rest of the file.
+/// For a header whose counts cannot fit in the rest of the file; the message also says when they
+/// are over the size limits (a header alone, declaring 60 M faces, is told about the limit too).
 [[noreturn]] void throwTooLarge(const QString& path, std::int64_t vertices, std::int64_t faces);
 
 /// Text tokenizer for OFF and ASCII PLY; counts lines for the error messages.

@@ -1,15 +1,21 @@
 // OBJ import through tinyobjloader, after a check of the "v" lines it would read as 0; vertex order,
-// UVs and materials kept, polygons fan-triangulated like OFF and PLY.
+// UVs and materials kept, polygons fan-triangulated like OFF and PLY. Material libraries are read
+// only from the OBJ's folder, and only when they are regular files of a sane size.
 #include "celform/model/mesh_io_common.h"
 
 #include <tiny_obj_loader.h>
 
+#include <QDir>
 #include <QFileInfo>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <istream>
+#include <map>
+#include <sstream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -28,15 +34,149 @@ QString firstLine(const std::string& s)
     return text.trimmed();
 }
 
-/// tinyobjloader reads a coordinate it cannot parse ("nan", "1,5", "x") as 0 without a word; check
-/// the "v" lines first so such a file is an error rather than a silently flattened mesh.
-void checkObjCoordinates(const QString& path)
+/// The largest material library read. An MTL file holds a few lines per material, so this is far
+/// more than any real one; a larger file is something else, and reading it would only fill memory.
+constexpr qint64 kMaxMaterialLibraryBytes = qint64(16) << 20;
+
+/// A read-only stream buffer over the mapped OBJ file, so that tinyobjloader parses the bytes
+/// already checked instead of opening the path a second time.
+class MemoryStreamBuffer : public std::streambuf {
+public:
+    MemoryStreamBuffer(const char* data, std::size_t size)
+    {
+        char* begin = const_cast<char*>(data); // the get area is only ever read
+        setg(begin, begin, begin + size);
+    }
+};
+
+/// Reads the material libraries an OBJ file names ("mtllib"), confined to the OBJ's folder and its
+/// sub-folders: an absolute path or one that climbs out with ".." is refused (a file could
+/// otherwise make us read /dev/zero until memory runs out, or /dev/urandom for ever), and so is
+/// anything that is not a regular file or is larger than kMaxMaterialLibraryBytes. A refused or
+/// missing library is a warning; its faces then get default materials.
+class ConfinedMaterialReader : public tinyobj::MaterialReader {
+public:
+    explicit ConfinedMaterialReader(const QString& objPath)
+        : m_folder(QFileInfo(objPath).absoluteDir())
+    { }
+
+    bool operator()(const std::string& matId, std::vector<tinyobj::material_t>* materials,
+        std::map<std::string, int>* matMap, std::string* warn, std::string* err) override
+    {
+        QByteArray bytes;
+        const QString problem = read(QFile::decodeName(matId.c_str()), bytes);
+        if (!problem.isEmpty()) {
+            m_problems << MeshIo::tr("some materials could not be read: %1").arg(problem);
+            return false;
+        }
+        std::istringstream in(std::string(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        tinyobj::LoadMtl(matMap, materials, &in, warn, err);
+        return true;
+    }
+
+    /// One translated line per library not read.
+    [[nodiscard]] const QStringList& problems() const { return m_problems; }
+
+private:
+    /// A long name (a chain of "../") keeps its end, which says what it points at, from a '/' on.
+    static QString shortName(const QString& name)
+    {
+        if (name.size() <= 80)
+            return name;
+        const QString tail = name.right(78);
+        return QChar(0x2026) + tail.mid(std::max<qsizetype>(tail.indexOf(QLatin1Char('/')), 0));
+    }
+
+    /// Fills bytes with the library's contents, or returns why it was not read.
+    QString read(const QString& name, QByteArray& bytes) const
+    {
+        const QString shown = shortName(name);
+        const QString clean = QDir::cleanPath(name);
+        if (QDir::isAbsolutePath(name) || clean == QLatin1String("..") || clean.startsWith(QLatin1String("../")))
+            return MeshIo::tr("\"%1\" is outside the folder of the OBJ file").arg(shown);
+        const QString path = m_folder.filePath(clean);
+        const QFileInfo info(path);
+        if (!info.exists())
+            return MeshIo::tr("\"%1\" does not exist").arg(shown);
+        if (!info.isFile()) // a FIFO would block the open, a device never ends
+            return MeshIo::tr("\"%1\" is not a regular file").arg(shown);
+        const QString tooLarge
+            = MeshIo::tr("\"%1\" is larger than %2 MB").arg(shown).arg(kMaxMaterialLibraryBytes >> 20);
+        if (info.size() > kMaxMaterialLibraryBytes)
+            return tooLarge;
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly))
+            return MeshIo::tr("\"%1\" cannot be opened: %2").arg(shown, file.errorString());
+        bytes = file.read(kMaxMaterialLibraryBytes + 1); // bounded even if it grew since the check
+        if (bytes.size() > kMaxMaterialLibraryBytes)
+            return tooLarge;
+        return {};
+    }
+
+    QDir m_folder;
+    QStringList m_problems;
+};
+
+/// Checks the index parts of an "f" line (from p to eol) as tinyobjloader will read them, with
+/// atoi(): an index beyond 32 bits would wrap there (99999999999 to 1215752191, 4294967299 to a
+/// valid 3), so it is refused here, quoted as written. Returns the number of corners.
+std::int64_t checkObjFaceIndices(
+    const QString& path, const char* p, const char* eol, std::int64_t line, std::int64_t face)
 {
-    const FileBytes bytes(path); // also gives missing and empty files the usual messages
+    const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+    std::int64_t corners = 0;
+    bool inCorner = false;
+    while (p < eol) {
+        if (*p == ' ' || *p == '\t' || *p == '\r') {
+            inCorner = false;
+            ++p;
+            continue;
+        }
+        if (!inCorner) {
+            inCorner = true;
+            ++corners;
+        }
+        if (*p == '/') {
+            ++p;
+            continue;
+        }
+        const char* const start = p;
+        if (*p == '-' || *p == '+')
+            ++p;
+        const char* const digits = p;
+        while (p < eol && isDigit(*p))
+            ++p;
+        if (p > digits) {
+            std::int64_t value = 0;
+            const auto [next, ec] = std::from_chars(digits, p, value);
+            if (ec == std::errc::result_out_of_range || next != p || value > kMaxIndex) {
+                const auto length = std::min<std::ptrdiff_t>(p - start, 40);
+                throw IoError(path,
+                    MeshIo::tr("line %1: face %2 has the index %3, which is too large")
+                        .arg(line)
+                        .arg(face)
+                        .arg(QString::fromLatin1(start, static_cast<qsizetype>(length))
+                            + (p - start > length ? QStringLiteral("...") : QString())));
+            }
+        }
+        while (p < eol && *p != ' ' && *p != '\t' && *p != '\r' && *p != '/')
+            ++p; // the rest of the part, as atoi() ignores it
+    }
+    return corners;
+}
+
+/// tinyobjloader reads a coordinate it cannot parse ("nan", "1,5", "x") as 0 without a word; check
+/// the "v" lines first so such a file is an error rather than a silently flattened mesh. The "f"
+/// lines' indices are checked too (checkObjFaceIndices), and the counts against the mesh size
+/// limits, before tinyobjloader allocates anything.
+void checkObjLines(const QString& path, const FileBytes& bytes)
+{
     const char* p = bytes.data();
     const char* const end = p + bytes.size();
     std::int64_t line = 0;
     std::int64_t vertex = 0;
+    std::int64_t face = 0;
+    std::int64_t triangles = 0;
     while (p < end) {
         ++line;
         const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
@@ -65,26 +205,34 @@ void checkObjCoordinates(const QString& path)
                             .arg(vertex));
                 p = next;
             }
+        } else if (eol - p >= 2 && p[0] == 'f' && (p[1] == ' ' || p[1] == '\t')) {
+            const std::int64_t corners = checkObjFaceIndices(path, p + 2, eol, line, ++face);
+            triangles += std::max<std::int64_t>(corners - 2, 0);
         }
         p = eol + 1;
     }
+    checkVertexCount(path, vertex);
+    checkFaceCount(path, face);
+    checkTriangleCount(path, triangles);
 }
 
 } // namespace
 
 void readObj(const QString& path, MeshImport& out)
 {
-    checkObjCoordinates(path);
+    const FileBytes bytes(path); // also gives missing and empty files the usual messages
+    checkObjLines(path, bytes);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
     std::string warn;
     std::string err;
-    const QByteArray file = QFile::encodeName(path);
-    const QByteArray dir = QFile::encodeName(QFileInfo(path).absolutePath() + QLatin1Char('/'));
+    MemoryStreamBuffer buffer(bytes.data(), bytes.size());
+    std::istream stream(&buffer);
+    ConfinedMaterialReader materialReader(path);
     // tinyobjloader's own triangulation skips faces with bad indices (a warning only) and reads
     // positions through them; we check every index first, then fan-triangulate like OFF and PLY.
-    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, file.constData(), dir.constData(),
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &stream, &materialReader,
             /*triangulate=*/false, /*default_vcols_fallback=*/false))
         throw IoError(path, MeshIo::tr("not a readable OBJ file: %1").arg(firstLine(err)));
 
@@ -162,7 +310,9 @@ void readObj(const QString& path, MeshImport& out)
                 m = fallback;
         out.mesh.faceMaterials = std::move(faceMaterials);
     }
-    if (warn.find("not found") != std::string::npos)
+    // A library not read makes its materials "not found" too: its own line says it all.
+    out.warnings << materialReader.problems();
+    if (materialReader.problems().isEmpty() && warn.find("not found") != std::string::npos)
         out.warnings << MeshIo::tr("some materials could not be read: %1").arg(firstLine(warn));
 }
 

@@ -37,10 +37,12 @@ void readOff(const QString& path, MeshImport& out)
     in.skipLine(); // the edge count, unused and sometimes missing
     if (nv < 0 || nf < 0)
         throw IoError(path, MeshIo::tr("the header has a negative vertex or face count"));
-    // A vertex takes at least "0 0 0\n", a face at least "3 0 1 2\n".
+    // A vertex takes at least "0 0 0\n", a face at least "3 0 1 2\n". Then the size limits.
     if (nv > kMaxIndex || nf > kMaxIndex
         || static_cast<double>(nv) * 6 + static_cast<double>(nf) * 8 > static_cast<double>(in.remaining()) + 1)
         throwTooLarge(path, nv, nf);
+    checkVertexCount(path, nv);
+    checkFaceCount(path, nf);
 
     algo::Positions& v = out.mesh.vertices;
     v.resize(nv, 3);
@@ -62,6 +64,7 @@ void readOff(const QString& path, MeshImport& out)
         const std::int64_t n = in.integer(kWhatCount);
         if (n < 0 || n > static_cast<std::int64_t>(in.remaining()))
             throw IoError(path, MeshIo::tr("face %1 has an invalid corner count %2").arg(f + 1).arg(n));
+        faces.checkPolygon(f, n);
         corners.resize(static_cast<std::size_t>(n));
         for (auto& c : corners)
             c = in.integer(kWhatIndex);

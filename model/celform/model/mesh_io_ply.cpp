@@ -71,6 +71,7 @@ struct PlyElement {
     std::string name;
     std::int64_t count = 0;
     std::vector<PlyProperty> properties;
+    std::int64_t headerLine = 0; ///< for messages about the element as a whole
 
     /// Bytes per binary row, or 0 when a list makes the rows variable.
     [[nodiscard]] std::size_t fixedStride() const
@@ -237,7 +238,16 @@ PlyHeader readPlyHeader(const QString& path, const char* data, std::size_t size)
                 std::from_chars(w[2].data(), w[2].data() + w[2].size(), count);
             if (count < 0)
                 throw bad(MeshIo::tr("invalid element line"));
-            h.elements.push_back({std::string(w[1]), count, {}});
+            // The readers size the vertex array by the one "vertex" element and take faces from
+            // the one "face" element: a second "vertex" would write past that array and a second
+            // "face" would be dropped without a word, so either is refused.
+            const std::string_view name = w[1];
+            if ((name == "vertex" || name == "face")
+                && std::any_of(
+                    h.elements.begin(), h.elements.end(), [&](const PlyElement& e) { return e.name == name; }))
+                throw bad(MeshIo::tr("a second \"%1\" element (a PLY file has one)")
+                              .arg(QString::fromUtf8(name.data(), int(name.size()))));
+            h.elements.push_back({std::string(name), count, {}, lineNo});
         } else if (w[0] == "property") {
             if (h.elements.empty())
                 throw bad(MeshIo::tr("property before any element"));
@@ -263,6 +273,16 @@ PlyHeader readPlyHeader(const QString& path, const char* data, std::size_t size)
     }
     if (!sawFormat)
         throw IoError(path, MeshIo::tr("the PLY header has no format line"));
+    // Rows without properties take no bytes, so no file size bounds their count, and the readers
+    // would step through every one of them (10^19 is a hang). They carry nothing: refused.
+    for (const PlyElement& e : h.elements)
+        if (e.count > 0 && e.properties.empty())
+            throw IoError(path,
+                MeshIo::tr("PLY header line %1: %2")
+                    .arg(e.headerLine)
+                    .arg(MeshIo::tr("element \"%1\" has %2 rows but no properties")
+                             .arg(QString::fromStdString(e.name))
+                             .arg(e.count)));
     h.bodyOffset = pos;
     return h;
 }
@@ -289,12 +309,13 @@ void readPlyBinary(
             MeshIo::tr("the file is truncated: it ends inside the \"%1\" element").arg(QString::fromStdString(e.name)));
     };
     FaceBuilder faces(path, nv);
-    bool sawFaces = false;
 
     for (const PlyElement& e : h.elements) {
         const std::size_t remaining = static_cast<std::size_t>(end - p);
-        const std::size_t minStride = e.minStride();
-        if (minStride > 0 && static_cast<std::uint64_t>(e.count) > remaining / minStride)
+        // Every row takes at least one byte (the header refuses rows without properties), so the
+        // count is always checked against the bytes left, never skipped.
+        const std::size_t minStride = std::max<std::size_t>(e.minStride(), 1);
+        if (static_cast<std::uint64_t>(e.count) > remaining / minStride)
             throw truncated(e);
         const std::size_t stride = e.fixedStride();
 
@@ -365,13 +386,15 @@ void readPlyBinary(
             continue;
         }
 
-        if (e.name == "face" && !sawFaces) {
-            sawFaces = true;
+        if (e.name == "face") {
             const int listIndex = plyFaceList(e);
             if (listIndex < 0)
                 throw IoError(path, MeshIo::tr("the face element has no vertex_indices list"));
-            faces.reserve(e.count);
             const PlyProperty& list = e.properties[std::size_t(listIndex)];
+            // Reserve for the triangles the bytes left can hold, not for the count: rows with
+            // fewer than three corners are smaller than a triangle and give none.
+            const std::size_t triangleRow = minStride + 3 * plySize(list.type);
+            faces.reserve(std::min<std::int64_t>(e.count, static_cast<std::int64_t>(remaining / triangleRow)));
             const bool fast = e.properties.size() == 1 && list.countType == PlyType::UInt8
                 && (list.type == PlyType::Int32 || list.type == PlyType::UInt32) && !swap;
             std::int64_t corners[256];
@@ -418,6 +441,7 @@ void readPlyBinary(
                     if (n < 0 || static_cast<std::uint64_t>(n) * is > static_cast<std::uint64_t>(end - p))
                         throw truncated(e);
                     if (static_cast<int>(j) == listIndex) {
+                        faces.checkPolygon(f, n);
                         many.resize(static_cast<std::size_t>(n));
                         for (std::size_t k = 0; k < many.size(); ++k)
                             many[k] = loadBinaryIndex(prop.type, p + is * k, swap);
@@ -461,7 +485,6 @@ void readPlyAscii(
 {
     TextCursor in(path, data + h.bodyOffset, data + size, false);
     FaceBuilder faces(path, nv);
-    bool sawFaces = false;
     std::vector<std::int64_t> corners;
     for (const PlyElement& e : h.elements) {
         // Each value takes at least one digit and one separator.
@@ -471,14 +494,14 @@ void readPlyAscii(
                 MeshIo::tr("the file is truncated: it ends inside the \"%1\" element")
                     .arg(QString::fromStdString(e.name)));
         const bool isVertex = e.name == "vertex";
-        const bool isFace = e.name == "face" && !sawFaces;
+        const bool isFace = e.name == "face";
         const int ix = e.find("x"), iy = e.find("y"), iz = e.find("z");
         const int listIndex = isFace ? plyFaceList(e) : -1;
         if (isFace) {
-            sawFaces = true;
             if (listIndex < 0)
                 throw IoError(path, MeshIo::tr("the face element has no vertex_indices list"));
-            faces.reserve(e.count);
+            // As many triangles as the text left can hold ("3 0 1 2" and a separator), at most.
+            faces.reserve(std::min<std::int64_t>(e.count, static_cast<std::int64_t>(in.remaining() / 8)));
         }
         float* pv = out.mesh.vertices.data();
         for (std::int64_t i = 0; i < e.count; ++i) {
@@ -505,6 +528,7 @@ void readPlyAscii(
                             .arg(i + 1)
                             .arg(n));
                 if (ji == listIndex) {
+                    faces.checkPolygon(i, n);
                     corners.resize(static_cast<std::size_t>(n));
                     for (auto& c : corners)
                         c = in.integer(kWhatIndex);
@@ -534,18 +558,19 @@ void readPly(const QString& path, MeshImport& out)
     if (vertexElement->find("x") < 0 || vertexElement->find("y") < 0 || vertexElement->find("z") < 0)
         throw IoError(path, MeshIo::tr("the vertex element lacks an x, y or z property"));
     const std::int64_t nv = vertexElement->count;
+    std::int64_t nf = 0;
+    for (const auto& e : h.elements)
+        if (e.name == "face")
+            nf = e.count;
     // Reject impossible counts before allocating: each binary vertex row holds at least its
-    // properties, each ASCII one at least two characters per property.
+    // properties, each ASCII one at least two characters per property. Then the size limits.
     const std::size_t body = bytes.size() - h.bodyOffset;
     const std::size_t rowMin = h.format == PlyFormat::Ascii ? vertexElement->properties.size() * 2
                                                             : std::max<std::size_t>(vertexElement->minStride(), 1);
-    if (nv > kMaxIndex || static_cast<std::uint64_t>(nv) > body / rowMin) {
-        std::int64_t nf = 0;
-        for (const auto& e : h.elements)
-            if (e.name == "face")
-                nf = e.count;
+    if (nv > kMaxIndex || static_cast<std::uint64_t>(nv) > body / rowMin)
         throwTooLarge(path, nv, nf);
-    }
+    checkVertexCount(path, nv);
+    checkFaceCount(path, nf);
     out.mesh.vertices.resize(nv, 3);
     if (h.format == PlyFormat::Ascii)
         readPlyAscii(path, h, bytes.data(), bytes.size(), nv, out);

@@ -274,6 +274,23 @@ void HighlightTrack::setKey(double frame, const algo::HighlightLayer& layer)
         keys.insert(it, algo::HighlightKey{frame, layer});
 }
 
+Eigen::Vector2d HighlightTrack::translationAt(double frame) const
+{
+    using T = algo::HighlightOperationType;
+    const algo::HighlightLayer layer = layerAt(frame);
+    double degrees = 0.0;
+    for (const algo::HighlightOperation& op : layer.shape.operations) {
+        if (op.type == T::Rotation)
+            degrees += op.a;
+        if (op.type != T::Translation)
+            continue;
+        // The stored values are in the frame the earlier rotations left: turn them back.
+        const double r = degrees * 3.14159265358979323846 / 180.0, c = std::cos(r), s = std::sin(r);
+        return {c * op.a - s * op.b, s * op.a + c * op.b};
+    }
+    return Eigen::Vector2d::Zero();
+}
+
 QString highlightOperationName(algo::HighlightOperationType type)
 {
     switch (type) {

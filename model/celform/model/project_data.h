@@ -154,6 +154,10 @@ struct HighlightTrack {
     [[nodiscard]] algo::HighlightLayer layerAt(double frame) const;
     /// Sets (replaces or inserts) the key at frame, keeping keys sorted.
     void setKey(double frame, const algo::HighlightLayer& layer);
+    /// The translation (alpha, beta) of the layer at a frame along du and dv as they are before
+    /// its operations (rotations earlier in the list turn the frame the stored values are in);
+    /// zero without a translation.
+    [[nodiscard]] Eigen::Vector2d translationAt(double frame) const;
     bool operator==(const HighlightTrack& o) const
     {
         return id == o.id && name == o.name && patch == o.patch && guide == o.guide && visible == o.visible

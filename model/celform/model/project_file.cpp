@@ -19,8 +19,10 @@
 #include <zlib.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
+#include <new>
 #include <set>
 
 #include <unistd.h>
@@ -316,10 +318,11 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
 /// Reads the manifest's values, throwing IoError with the file name on anything malformed.
 class Reader {
 public:
-    Reader(QString path, const char* bytes, qint64 size, QJsonObject chunks)
+    /// dataEnd: where the data blocks end (the manifest's offset); no block may reach past it.
+    Reader(QString path, const char* bytes, qint64 dataEnd, QJsonObject chunks)
         : m_path(std::move(path))
         , m_bytes(bytes)
-        , m_size(size)
+        , m_dataEnd(dataEnd)
         , m_chunks(std::move(chunks))
     { }
 
@@ -346,6 +349,29 @@ public:
         if (d < 0 || d > double(std::numeric_limits<std::int32_t>::max()) || d != std::floor(d))
             corrupt(ProjectFile::tr("the count “%1” is out of range").arg(QLatin1String(name)));
         return qint64(d);
+    }
+    /// A whole number in [0, max] that locates or sizes bytes of the file. JSON numbers are doubles,
+    /// so anything above 2^53 (or fractional, or negative) is refused before it becomes an integer.
+    qint64 position(const QJsonObject& o, const char* name, qint64 max) const
+    {
+        const double d = number(o, name);
+        if (d < 0 || d > double(max) || d != std::floor(d))
+            corrupt(ProjectFile::tr("the entry “%1” is out of range").arg(QLatin1String(name)));
+        return qint64(d);
+    }
+    /// An object id: a whole number that a double holds exactly (a cast of -1 or 1e300 to an
+    /// unsigned id is undefined).
+    ObjectId objectId(const QJsonObject& o, const char* name) const
+    {
+        return ObjectId(position(o, name, qint64(1) << 53));
+    }
+    /// A frame number of a key or drawing: whole, within +-kMaxFrame as the playhead's.
+    int frame(const QJsonObject& o, const char* name) const
+    {
+        const double d = number(o, name);
+        if (d != std::floor(d) || std::abs(d) > double(kMaxFrame))
+            corrupt(ProjectFile::tr("the entry “%1” is not a frame number").arg(QLatin1String(name)));
+        return int(d);
     }
     QString string(const QJsonObject& o, const char* name) const
     {
@@ -397,39 +423,53 @@ public:
         const QJsonValue entry = m_chunks.value(chunkName);
         if (!entry.isObject())
             corrupt(ProjectFile::tr("the data block “%1” is missing").arg(chunkName));
+        // Each block describes one thing. A block named many times over would multiply what the
+        // reader allocates (a thousand face sets on one large block) beyond the file's own size.
+        if (!m_used.insert(chunkName).second)
+            corrupt(ProjectFile::tr("the data block “%1” is used twice").arg(chunkName));
         const QJsonObject e = entry.toObject();
-        const double offset = number(e, "offset"), size = number(e, "size"), crc = number(e, "crc32");
-        if (offset < kHeaderSize || size < 0 || offset + size > double(m_size))
+        constexpr qint64 kMaxExact = qint64(1) << 53; // every integer up to here is exact as a double
+        const qint64 offset = position(e, "offset", kMaxExact);
+        const qint64 size = position(e, "size", kMaxExact);
+        const auto crc = quint32(position(e, "crc32", std::numeric_limits<quint32>::max()));
+        // By subtraction: offset + size could pass a limit by wrapping around (as the trailer's did).
+        if (offset < kHeaderSize || offset > m_dataEnd || size > m_dataEnd - offset)
             corrupt(ProjectFile::tr("the data block “%1” lies outside the file").arg(chunkName));
-        if (expectedSize >= 0 && qint64(size) != expectedSize)
+        if (expectedSize >= 0 && size != expectedSize)
             corrupt(ProjectFile::tr("the data block “%1” has %2 bytes instead of %3")
                         .arg(chunkName)
-                        .arg(qint64(size))
+                        .arg(size)
                         .arg(expectedSize));
-        const char* p = m_bytes + qint64(offset);
-        if (crc32Of(p, qint64(size)) != quint32(crc))
+        const char* p = m_bytes + offset;
+        if (crc32Of(p, size) != crc)
             corrupt(ProjectFile::tr("the data block “%1” fails its checksum").arg(chunkName));
-        return {p, qint64(size)};
+        return {p, size};
     }
+    /// Reads a matrix of rows rows from a chunk. The chunk's size is checked against rows before
+    /// anything is allocated: a count from the manifest is only believed once its block holds it, so
+    /// a count of 2^31 over a 48-byte block costs nothing.
     template <typename Matrix>
     void readMatrix(const QJsonObject& o, const char* name, Eigen::Index rows, Matrix& m) const
     {
+        constexpr qint64 rowBytes = qint64(Matrix::ColsAtCompileTime) * qint64(sizeof(typename Matrix::Scalar));
+        const auto [p, size] = chunk(o, name, qint64(rows) * rowBytes);
         m.resize(rows, Matrix::ColsAtCompileTime);
-        const auto [p, size] = chunk(o, name, qint64(m.size()) * qint64(sizeof(typename Matrix::Scalar)));
         std::memcpy(m.data(), p, std::size_t(size));
     }
+    /// The same for a vector of n items.
     template <typename T> void readVector(const QJsonObject& o, const char* name, qint64 n, std::vector<T>& v) const
     {
-        v.resize(std::size_t(n));
         const auto [p, size] = chunk(o, name, n * qint64(sizeof(T)));
-        std::memcpy(v.data(), p, std::size_t(size));
+        v.resize(std::size_t(n));
+        std::memcpy(static_cast<void*>(v.data()), p, std::size_t(size));
     }
 
 private:
     QString m_path;
     const char* m_bytes;
-    qint64 m_size;
+    qint64 m_dataEnd;
     QJsonObject m_chunks;
+    mutable std::set<QString> m_used; ///< the chunks read so far
 };
 
 std::vector<float> readFloats(const Reader& r, const QJsonObject& o, const char* name)
@@ -578,7 +618,11 @@ Look readLook(const Reader& r, const QJsonObject& look)
         out.lineStyle.jitter = float(r.number(l, "jitter"));
         out.lineStyle.widthVariation = float(r.number(l, "width_variation"));
         out.lineStyle.overshoot = float(r.number(l, "overshoot"));
-        out.lineStyle.seed = std::uint32_t(r.count(l, "seed"));
+        // Any 32-bit seed: the writer stores the whole range, so count()'s int32 limit is too tight.
+        const double seed = r.number(l, "seed");
+        if (seed < 0 || seed > double(std::numeric_limits<std::uint32_t>::max()) || seed != std::floor(seed))
+            r.corrupt(ProjectFile::tr("the count “%1” is out of range").arg(QLatin1String("seed")));
+        out.lineStyle.seed = std::uint32_t(seed);
     }
     if (look.contains("stereo")) {
         const QJsonObject st = r.object(look, "stereo");
@@ -628,7 +672,12 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
             set.name = r.string(o, "name").toStdString();
             if (set.name.empty() || data.faceSet(QString::fromStdString(set.name)))
                 r.corrupt(ProjectFile::tr("a face set name is empty or used twice"));
-            r.readVector(o, "faces", r.count(o, "count"), set.faces);
+            // Ascending and without repeats, so never more than the faces (checked before the block).
+            const qint64 count = r.count(o, "count");
+            if (count > mesh->faces.rows())
+                r.corrupt(ProjectFile::tr("face set “%1” has more faces than the model")
+                              .arg(QString::fromStdString(set.name)));
+            r.readVector(o, "faces", count, set.faces);
             for (std::size_t k = 0; k < set.faces.size(); ++k)
                 if (set.faces[k] < 0 || set.faces[k] >= mesh->faces.rows()
                     || (k > 0 && set.faces[k] <= set.faces[k - 1]))
@@ -648,7 +697,7 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     for (const QJsonValue& v : r.array(root, "drawings")) {
         const QJsonObject o = v.toObject();
         Drawing d;
-        d.id = ObjectId(r.number(o, "id"));
+        d.id = r.objectId(o, "id");
         d.name = r.string(o, "name");
         d.imageFormat = r.string(o, "format");
         const auto [p, size] = r.chunk(o, "image", -1);
@@ -656,7 +705,7 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         d.camera = r.camera(r.object(o, "camera"));
         d.aligned = r.boolean(o, "aligned");
         d.opacity = r.number(o, "opacity");
-        d.frame = int(r.number(o, "frame"));
+        d.frame = r.frame(o, "frame");
         if (images == DrawingImages::Decode)
             d.image = decodeImage(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
         data.drawings.push_back(std::move(d));
@@ -665,28 +714,29 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     for (const QJsonValue& v : r.array(root, "keys")) {
         const QJsonObject o = v.toObject();
         KeyViewpoint k;
-        k.id = ObjectId(r.number(o, "id"));
+        k.id = r.objectId(o, "id");
         k.name = r.string(o, "name");
         k.direction = r.vector3(o, "direction");
         k.camera = r.camera(r.object(o, "camera"));
         k.enabled = r.boolean(o, "enabled");
         for (const QJsonValue& id : r.array(o, "drawings"))
-            k.drawingIds.push_back(ObjectId(id.toDouble()));
+            k.drawingIds.push_back(r.objectId(QJsonObject{{"drawings", id}}, "drawings"));
         for (const QJsonValue& fv : r.array(o, "frames")) {
             const QJsonObject f = fv.toObject();
             SparseOffsets offsets;
+            // Strictly increasing vertex indices: never more than the vertices.
             const qint64 n = r.count(f, "count");
+            if (n > vertexCount)
+                r.corrupt(ProjectFile::tr("key “%1” moves more vertices than the model has").arg(k.name));
             r.readVector(f, "indices", n, offsets.indices);
-            offsets.deltas.resize(std::size_t(n));
-            const auto [p, size] = r.chunk(f, "offsets", n * qint64(sizeof(Eigen::Vector3f)));
-            std::memcpy(static_cast<void*>(offsets.deltas.data()), p, std::size_t(size));
+            r.readVector(f, "offsets", n, offsets.deltas);
             for (std::size_t i = 0; i < offsets.indices.size(); ++i) {
                 if (offsets.indices[i] >= vertexCount || (i > 0 && offsets.indices[i] <= offsets.indices[i - 1]))
                     r.corrupt(ProjectFile::tr("key “%1” has a vertex index out of range or out of order").arg(k.name));
                 if (!offsets.deltas[i].allFinite())
                     r.corrupt(ProjectFile::tr("key “%1” has a non-finite offset").arg(k.name));
             }
-            k.offsetsByFrame.emplace(int(r.number(f, "frame")), std::move(offsets));
+            k.offsetsByFrame.emplace(r.frame(f, "frame"), std::move(offsets));
         }
         data.keys.push_back(std::move(k));
     }
@@ -711,7 +761,7 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
                 r.corrupt(ProjectFile::tr("a shading offset is not finite"));
     }
 
-    data.nextId = ObjectId(r.number(root, "next_id"));
+    data.nextId = r.objectId(root, "next_id");
     for (const auto& d : data.drawings)
         if (d.id >= data.nextId)
             r.corrupt(ProjectFile::tr("an object id is not below next_id"));
@@ -735,6 +785,24 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         data.currentFrame = int(frame);
     }
     return data;
+}
+
+/// Makes PATH.bak the current PATH, before the new version replaces it. The new backup is made
+/// beside the old one and renamed over it, so a kill at any instant leaves a whole backup (the old
+/// one or the new); removing the old .bak first left none for a moment (15 of 60 aimed kills).
+void keepPreviousVersion(const QString& path)
+{
+    const QByteArray current = QFile::encodeName(path);
+    const QByteArray backup = current + ".bak";
+    const QByteArray staged = current + ".bak.new";
+    ::unlink(staged.constData()); // left by an interrupted save; .bak is still whole
+    // A hard link keeps the previous version at no cost; fall back to a copy.
+    if (::link(current.constData(), staged.constData()) != 0 && !QFile::copy(path, QFile::decodeName(staged)))
+        return; // no backup can be made here (as before): the save itself goes on
+    // rename(2) replaces .bak atomically. When both already name the same file (a save killed
+    // after this step and before its commit) it does nothing, so the staged name is removed after.
+    ::rename(staged.constData(), backup.constData());
+    ::unlink(staged.constData());
 }
 
 } // namespace
@@ -782,22 +850,21 @@ void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
     const QJsonObject manifest = buildManifest(data, chunks);
     chunks.write(file, manifest);
 
-    if (keepBackup && QFileInfo::exists(path)) {
-        // A hard link keeps the previous version at no cost; fall back to a copy.
-        const QString backup = path + QStringLiteral(".bak");
-        QFile::remove(backup);
-        if (::link(QFile::encodeName(path).constData(), QFile::encodeName(backup).constData()) != 0)
-            QFile::copy(path, backup);
-    }
+    if (keepBackup && QFileInfo(path).isFile())
+        keepPreviousVersion(path);
     if (!file.commit())
         throw IoError(path, ProjectFile::tr("could not be saved: %1").arg(file.errorString()));
 }
 
 ProjectData loadProject(const QString& path, DrawingImages images)
 {
-    QFile file(path);
-    if (!file.exists())
+    const QFileInfo info(path);
+    if (!info.exists())
         throw IoError(path, ProjectFile::tr("does not exist"));
+    // Before open(): opening a named pipe blocks until something writes to it, for ever.
+    if (!info.isFile())
+        throw IoError(path, ProjectFile::tr("is not a regular file (a folder, pipe or device)"));
+    QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         throw IoError(path, ProjectFile::tr("could not be opened: %1").arg(file.errorString()));
     const qint64 size = file.size();
@@ -831,8 +898,11 @@ ProjectData loadProject(const QString& path, DrawingImages images)
         throw IoError(path, ProjectFile::tr("is truncated or damaged: its end marker is missing"));
     const auto manifestOffset = qFromLittleEndian<quint64>(trailer);
     const auto manifestSize = qFromLittleEndian<quint64>(trailer + 8);
-    if (manifestOffset < quint64(kHeaderSize) || manifestSize > quint64(size)
-        || manifestOffset + manifestSize > quint64(size - kTrailerSize))
+    // By subtraction: with an offset near 2^64, offset + size wraps around to a small number and
+    // passes an addition's check.
+    const auto manifestLimit = quint64(size - kTrailerSize);
+    if (manifestOffset < quint64(kHeaderSize) || manifestOffset > manifestLimit
+        || manifestSize > manifestLimit - manifestOffset)
         throw IoError(path, ProjectFile::tr("is damaged: its table of contents lies outside the file"));
     const char* manifestBytes = bytes + manifestOffset;
     if (crc32Of(manifestBytes, qint64(manifestSize)) != qFromLittleEndian<quint32>(trailer + 16))
@@ -851,8 +921,14 @@ ProjectData loadProject(const QString& path, DrawingImages images)
                             "to %2). Please update Celform to open it.")
                 .arg(manifestVersion)
                 .arg(kProjectFormatVersion));
-    const Reader reader(path, bytes, size, root.value("chunks").toObject());
-    return parseManifest(reader, root, path, images);
+    const Reader reader(path, bytes, qint64(manifestOffset), root.value("chunks").toObject());
+    try {
+        return parseManifest(reader, root, path, images);
+    } catch (const std::bad_alloc&) {
+        // Every count is checked against the file before it is allocated, so this is a file too
+        // large for the memory left, not a damaged one; either way the message names the file.
+        throw IoError(path, ProjectFile::tr("cannot be opened: not enough memory"));
+    }
 }
 
 } // namespace celform::model

@@ -5,13 +5,52 @@
 #pragma once
 
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QImage>
 #include <QString>
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace celform::model {
+
+/// The widest and tallest drawing read, in pixels.
+constexpr std::int64_t kMaxImageSide = 32768;
+/// The most pixels a drawing may have: larger than any drawing an artist scans, small enough that
+/// the decoder's float buffer stays below 2 GB.
+constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 27;
+/// Any file may decode to this many pixels (64 MB as 8-bit RGBA)...
+constexpr std::int64_t kAlwaysPlausiblePixels = std::int64_t(4096) * 4096;
+/// ...and beyond that to at most this many per byte of the file. Deflate (PNG, EXR, TIFF) gains at
+/// most 1032:1, so even a blank 1-bit PNG stays below 8,300 pixels per byte (3,300 from zlib), a
+/// JPEG near 250; a 69-byte PNG stating 11585 x 11585 pixels (134 million) is damaged or a bomb.
+/// Only bilevel fax-coded TIFFs of blank pages can beat it, and they are no drawings.
+constexpr std::int64_t kMaxPixelsPerFileByte = 16384;
+
+/// Why width x height pixels, as an image's header states them, are not read from a file of
+/// fileBytes bytes; empty when they may be. Checked before any pixel is decoded, by the header
+/// readers of image_io.cpp and by the OpenImageIO module for every other format.
+inline QString imageSizeProblem(std::int64_t width, std::int64_t height, std::int64_t fileBytes)
+{
+    if (width <= 0 || height <= 0)
+        return QCoreApplication::translate("celform::model::ImageIo", "the image has no pixels");
+    if (width > kMaxImageSide || height > kMaxImageSide || width * height > kMaxImagePixels)
+        return QCoreApplication::translate("celform::model::ImageIo",
+            "the image is too large (%1 x %2 pixels; drawings may have up to %3 pixels a side and %4 million in all)")
+            .arg(width)
+            .arg(height)
+            .arg(kMaxImageSide)
+            .arg(kMaxImagePixels / 1000000);
+    if (width * height > std::max(kAlwaysPlausiblePixels, fileBytes * kMaxPixelsPerFileByte))
+        return QCoreApplication::translate("celform::model::ImageIo",
+            "the image is too large for its file (%1 x %2 pixels from %3 bytes): the file is damaged")
+            .arg(width)
+            .arg(height)
+            .arg(fileBytes);
+    return {};
+}
 
 /// The module's functions. They report problems as text, so no exception crosses the module.
 struct RasterCodec {

@@ -13,7 +13,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
+#include <mutex>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace celform::model {
 namespace {
@@ -27,9 +32,6 @@ struct ImageIo {
 struct Problem {
     QString text;
 };
-
-// Larger than any drawing an artist scans, small enough that the float buffer stays below 2 GB.
-constexpr std::int64_t kMaxPixels = std::int64_t(1) << 27;
 
 float linearToSrgb(float v)
 {
@@ -85,10 +87,11 @@ QImage decodeRaster(const QByteArray& data, const QString& format, const QString
     // Subimage 0 is the composite for PSD and the first page of a TIFF.
     const OIIO::ImageSpec spec = in.spec();
     const std::int64_t pixels = std::int64_t(spec.width) * spec.height;
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    if (spec.nchannels <= 0)
         throw Problem{ImageIo::tr("the image has no pixels")};
-    if (pixels > kMaxPixels)
-        throw Problem{ImageIo::tr("the image is too large (%1 x %2 pixels)").arg(spec.width).arg(spec.height)};
+    // The header is all that has been read: refuse before the buffers below are allocated.
+    if (const QString problem = imageSizeProblem(spec.width, spec.height, data.size()); !problem.isEmpty())
+        throw Problem{problem};
     const int channels = std::min(spec.nchannels, 4);
     std::vector<float> buffer(static_cast<std::size_t>(pixels) * static_cast<std::size_t>(channels));
     if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, buffer.data()))
@@ -135,8 +138,47 @@ QImage decodeRaster(const QByteArray& data, const QString& format, const QString
     return image;
 }
 
+/// Libraries under OpenImageIO print their own diagnostics (libpng's "libpng error: ..." line, which
+/// comes on top of the error OpenImageIO reports); while decodes run, standard error goes to
+/// /dev/null so the one line naming the file is all the user sees. Counted, so overlapping decodes
+/// on several threads restore it once, after the last; another thread's output in that time is lost.
+class QuietStandardError {
+public:
+    QuietStandardError()
+    {
+        const std::lock_guard<std::mutex> lock(s_mutex);
+        if (s_depth++ > 0)
+            return;
+        std::fflush(stderr);
+        const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+        s_saved = null >= 0 ? ::fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 0) : -1;
+        if (s_saved >= 0)
+            ::dup2(null, STDERR_FILENO);
+        if (null >= 0)
+            ::close(null);
+    }
+    ~QuietStandardError()
+    {
+        const std::lock_guard<std::mutex> lock(s_mutex);
+        if (--s_depth > 0 || s_saved < 0)
+            return;
+        std::fflush(stderr);
+        ::dup2(s_saved, STDERR_FILENO);
+        ::close(s_saved);
+        s_saved = -1;
+    }
+    QuietStandardError(const QuietStandardError&) = delete;
+    QuietStandardError& operator=(const QuietStandardError&) = delete;
+
+private:
+    static inline std::mutex s_mutex;
+    static inline int s_depth = 0;
+    static inline int s_saved = -1;
+};
+
 QImage decode(const QByteArray& data, const QString& format, const QString& fileLabel, QString* problem)
 {
+    const QuietStandardError quiet;
     try {
         return decodeRaster(data, format, fileLabel);
     } catch (const Problem& p) {

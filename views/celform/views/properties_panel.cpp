@@ -8,9 +8,12 @@
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
 #include "celform/views/gesture_tracker.h"
+#include "celform/views/thumbnail.h"
 #include "celform/views/viewport.h"
 
+#include <QApplication>
 #include <QCheckBox>
+#include <QPointer>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
@@ -310,10 +313,10 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     connect(m_preview, &QPushButton::toggled, this, [this](bool on) {
         if (m_updating || !m_viewport)
             return;
-        if (on) {
+        // The preview changes the shape, never the camera: the drawing (and with it the frame
+        // the camera fits) stays as it is.
+        if (on)
             m_viewport->setTool(Viewport::Tool::Navigate);
-            m_viewport->setOverlayDrawing(0);
-        }
         m_viewport->setPreview(on);
         refreshTools();
     });
@@ -448,6 +451,12 @@ void PropertiesPanel::refreshTools()
 
 void PropertiesPanel::refresh()
 {
+    // A focused control about to be hidden (Create Key from Drawing hides the drawing's rows) hands
+    // the keyboard to the next one, a spin box, where the viewport's keys (5, P, F) would type
+    // into it: the keyboard goes back to the viewport instead (see the end).
+    QPointer<QWidget> focused = QApplication::focusWidget();
+    if (focused && !isAncestorOf(focused))
+        focused = nullptr;
     m_updating = true;
     const auto& data = m_document->data();
     const QLocale locale;
@@ -465,8 +474,7 @@ void PropertiesPanel::refresh()
                                .arg(d.imageFormat.toUpper())
                                .arg(d.aligned ? tr("camera aligned") : tr("camera not aligned yet")));
         if (!d.image.isNull()) {
-            m_thumbnail->setPixmap(
-                QPixmap::fromImage(d.image.scaled(220, 160, Qt::KeepAspectRatio, Qt::SmoothTransformation)));
+            m_thumbnail->setPixmap(drawingThumbnail(d.image, QSize(220, 160)));
             m_thumbnail->setVisible(true);
         }
         m_name->setText(d.name);
@@ -513,6 +521,8 @@ void PropertiesPanel::refresh()
     for (QWidget* w : std::initializer_list<QWidget*>{m_enabled, m_linkedDrawing, m_editKey, m_importDeformation})
         m_form->setRowVisible(w, isKey);
     m_form->setRowVisible(m_name, isDrawing || isKey);
+    if (focused && !focused->isVisibleTo(this) && m_viewport)
+        m_viewport->setFocus(Qt::OtherFocusReason);
     m_updating = false;
     refreshTools();
 }

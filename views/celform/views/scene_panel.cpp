@@ -1,6 +1,8 @@
 // Scene tree: rebuilt from the document when its structure changes, selection kept by id.
 #include "celform/views/scene_panel.h"
 
+#include "celform/views/thumbnail.h"
+
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QSignalBlocker>
@@ -152,8 +154,7 @@ void ScenePanel::rebuild()
         item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable);
         item->setToolTip(0, drawingTip(d));
         if (!d.image.isNull())
-            item->setIcon(
-                0, QIcon(QPixmap::fromImage(d.image.scaled(32, 32, Qt::KeepAspectRatio, Qt::SmoothTransformation))));
+            item->setIcon(0, QIcon(drawingThumbnail(d.image, QSize(32, 32))));
     }
     m_keysRoot = makeRoot(tr("Key viewpoints (%1)").arg(data.keys.size()),
         tr("Key deformations, each seen from its key viewpoint"), ItemKind::None);

@@ -485,13 +485,21 @@ void ViewSpherePanel::paintPoints(QPainter& painter, const Frame& f, bool front)
         const double len = std::hypot(dir.x(), dir.y());
         dir = len > 0.15 * f.radius ? dir / len : QPointF(0.7071, -0.7071);
         const QPointF anchor = s + dir * (r + 3.0);
-        QRectF label(QPointF(), size);
+        // On the outer side when it fits there, else on the roomier side, shortened with "…" when
+        // even that is too narrow: a label is never cut by the panel's edge.
+        const double roomRight = bounds.right() - anchor.x(), roomLeft = anchor.x() - bounds.left();
+        bool right = dir.x() >= -0.2;
+        if (size.width() > (right ? roomRight : roomLeft))
+            right = roomRight >= roomLeft;
+        const double room = std::max(0.0, right ? roomRight : roomLeft);
+        const QString name = size.width() <= room ? point.name : fm.elidedText(point.name, Qt::ElideRight, room - 1.0);
+        QRectF label(QPointF(), QSizeF(std::min(size.width(), room), size.height()));
         label.moveTop(anchor.y() - size.height() / 2.0 + dir.y() * size.height() / 2.0);
-        if (dir.x() >= -0.2)
-            label.moveLeft(anchor.x() + (dir.x() < 0.2 ? 2.0 : 0.0));
+        if (right)
+            label.moveLeft(anchor.x() + (std::abs(dir.x()) < 0.2 ? 2.0 : 0.0));
         else
             label.moveRight(anchor.x());
-        drawHaloText(painter, clampInto(label, bounds), point.name, active ? kActiveKey.darker(135) : text, base);
+        drawHaloText(painter, clampInto(label, bounds), name, active ? kActiveKey.darker(135) : text, base);
         painter.restore();
     }
 }

@@ -72,6 +72,12 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
 
     if (m_document)
         connect(m_document, &model::Document::changed, this, &Viewport::documentChanged);
+    m_wheelBurst.setSingleShot(true);
+    m_wheelBurst.setInterval(400);
+    connect(&m_wheelBurst, &QTimer::timeout, this, [this] {
+        if (ViewportTool* tool = activeTool())
+            tool->navigationEnded();
+    });
     rebuildMesh();
     resetView();
 }
@@ -258,6 +264,36 @@ void Viewport::resetView()
     cameraEdited();
 }
 
+void Viewport::setViewPreset(ViewPreset preset)
+{
+    // The eye's side of the model and the up vector of each view (Y up; top looks down with -Z up).
+    Eigen::Vector3d side = Eigen::Vector3d::UnitZ(), up = Eigen::Vector3d::UnitY();
+    switch (preset) {
+    case ViewPreset::Front:
+        break;
+    case ViewPreset::Back:
+        side = -Eigen::Vector3d::UnitZ();
+        break;
+    case ViewPreset::Right:
+        side = Eigen::Vector3d::UnitX();
+        break;
+    case ViewPreset::Left:
+        side = -Eigen::Vector3d::UnitX();
+        break;
+    case ViewPreset::Top:
+        side = Eigen::Vector3d::UnitY();
+        up = -Eigen::Vector3d::UnitZ();
+        break;
+    case ViewPreset::Bottom:
+        side = -Eigen::Vector3d::UnitY();
+        up = Eigen::Vector3d::UnitZ();
+        break;
+    }
+    m_camera->viewFrom(side, up);
+    m_scene->cameraPlaced = true;
+    cameraEdited();
+}
+
 void Viewport::cameraEdited()
 {
     if (m_preview)
@@ -342,6 +378,9 @@ void Viewport::setOverlayDrawing(model::ObjectId drawing)
 {
     if (drawing == m_overlayDrawing)
         return;
+    // Aligning is bound to its drawing: showing another ends it (storing what was aligned).
+    if (m_tool == Tool::Align)
+        setTool(Tool::Navigate);
     m_overlayDrawing = drawing;
     if (!matchedModelPoints().empty() || !matchedDrawingPoints().empty())
         clearMatchedPoints(); // the pairs belong to the drawing they were placed on
@@ -436,6 +475,11 @@ void Viewport::setTool(Tool tool)
         return;
     if (m_drag == Drag::Tool)
         endDrag(true);
+    if (m_wheelBurst.isActive()) {
+        m_wheelBurst.stop();
+        if (ViewportTool* old = activeTool())
+            old->navigationEnded();
+    }
     if (ViewportTool* old = activeTool())
         old->deactivate();
     m_tool = tool;

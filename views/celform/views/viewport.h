@@ -16,6 +16,7 @@
 #include <QPoint>
 #include <QPointer>
 #include <QSurfaceFormat>
+#include <QTimer>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -187,6 +188,10 @@ public:
     /// The ray through a widget position: origin and unit direction (model space).
     [[nodiscard]] std::pair<Eigen::Vector3d, Eigen::Vector3d> rayThrough(const QPointF& position) const;
 
+    /// The six axis views, framed (Blender's numeric keypad 1, 3, 7 and their opposites).
+    enum class ViewPreset { Front, Back, Right, Left, Top, Bottom };
+    void setViewPreset(ViewPreset preset);
+
 public slots:
     /// Keeps the view direction and fits the whole model in the view.
     void frameAll();
@@ -251,6 +256,7 @@ private:
     std::unique_ptr<ViewportTool> m_lightTool; ///< Ctrl+drag on the gizmo, whatever the tool
 
     Drag m_drag = Drag::None;
+    QTimer m_wheelBurst; ///< a pause in wheel ticks ends their navigation gesture
     ViewportTool* m_dragTool = nullptr;
     Qt::MouseButton m_dragButton = Qt::NoButton;
     QPointF m_lastPos;

@@ -140,11 +140,16 @@ void ViewportCamera::frameAll()
 
 void ViewportCamera::resetView()
 {
+    viewFrom(Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY());
+}
+
+void ViewportCamera::viewFrom(const Eigen::Vector3d& side, const Eigen::Vector3d& up)
+{
     const Eigen::Vector3d center = m_bounds.center();
     m_vtk->SetFocalPoint(center.data());
-    const Eigen::Vector3d eye = center + Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d eye = center + side;
     m_vtk->SetPosition(eye.data());
-    m_vtk->SetViewUp(0.0, 1.0, 0.0);
+    m_vtk->SetViewUp(up.data());
     frameAll();
 }
 

@@ -39,6 +39,8 @@ public:
     void frameAll();
     /// Front view (looking down -Z, Y up), framed.
     void resetView();
+    /// Looks at the model's centre from the side `side` (unit, model space) with `up`, framed.
+    void viewFrom(const Eigen::Vector3d& side, const Eigen::Vector3d& up);
     /// Whether the camera is as frameAll() left it (not moved since): resizes keep it framed.
     [[nodiscard]] bool isFramed() const { return m_framed; }
 

@@ -67,6 +67,8 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     m_dragTool = tool;
     m_dragButton = button;
     m_lastPos = event->position();
+    if (drag != Drag::Tool && activeTool())
+        activeTool()->navigationStarted();
     switch (drag) {
     case Drag::Orbit:
         setCursor(Qt::ClosedHandCursor);
@@ -98,6 +100,8 @@ void Viewport::endDrag(bool cancelled)
             tool->cancel();
         else
             tool->release({m_lastPos, {}, Qt::NoModifier});
+    } else if (m_drag != Drag::None && activeTool()) {
+        activeTool()->navigationEnded();
     }
     m_drag = Drag::None;
     m_dragButton = Qt::NoButton;
@@ -165,6 +169,10 @@ void Viewport::wheelEvent(QWheelEvent* event)
         event->ignore();
         return;
     }
+    // A burst of wheel ticks is one navigation gesture for the tool (one undo step while aligning).
+    if (!m_wheelBurst.isActive() && activeTool())
+        activeTool()->navigationStarted();
+    m_wheelBurst.start();
     m_camera->dolly(std::pow(kDollyPerWheelNotch, notches));
     cameraEdited();
     event->accept();

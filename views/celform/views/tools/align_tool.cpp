@@ -6,6 +6,7 @@
 #include "celform/model/document.h"
 #include "celform/views/viewport.h"
 
+#include <QLabel>
 #include <QPainter>
 #include <QWidget>
 
@@ -75,14 +76,14 @@ private:
 AlignTool::AlignTool(Viewport* viewport)
     : ViewportTool(viewport)
     , m_markers(new MatchMarkers(viewport, this))
+    , m_banner(new QLabel(viewport))
 {
     m_markers->hide();
-    m_commit.setSingleShot(true);
-    m_commit.setInterval(300);
-    connect(&m_commit, &QTimer::timeout, this, [this] {
-        if (m_viewport->tool() == Viewport::Tool::Align && m_viewport->overlayDrawing() && m_viewport->document())
-            m_viewport->document()->setDrawingCamera(m_viewport->overlayDrawing(), m_viewport->camera());
-    });
+    m_banner->setObjectName(QStringLiteral("alignBanner"));
+    m_banner->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_banner->setStyleSheet(QStringLiteral("QLabel { background: rgba(30, 90, 200, 200); color: white; "
+                                           "border-radius: 5px; padding: 4px 10px; }"));
+    m_banner->hide();
     // The markers follow the camera whichever tool is on (points outlive the tool until cleared).
     connect(viewport, &Viewport::cameraChanged, m_markers, qOverload<>(&QWidget::update));
 }
@@ -92,34 +93,71 @@ AlignTool::~AlignTool() = default;
 void AlignTool::activate()
 {
     model::Document* document = m_viewport->document();
-    if (!document || !m_viewport->overlayDrawing())
+    m_drawing = m_viewport->overlayDrawing();
+    const model::Drawing* drawing = document && m_drawing ? document->data().drawing(m_drawing) : nullptr;
+    if (!drawing) {
+        m_drawing = 0;
         return;
-    // Start from the stored alignment, so refining it does not jump.
-    const model::Drawing* drawing = document->data().drawing(m_viewport->overlayDrawing());
-    if (drawing && drawing->aligned)
+    }
+    // Start from the stored alignment, so refining it does not jump; nothing is stored until the
+    // artist moves the camera.
+    if (drawing->aligned)
         m_viewport->setCamera(drawing->camera);
+    m_stored = m_viewport->camera();
+    m_banner->setText(tr("Aligning to “%1”: move the camera until the model matches the drawing "
+                         "(Alt+drag, the wheel, Alt+Shift+drag rolls). Esc finishes.")
+                          .arg(drawing->name));
+    placeBanner();
+    m_banner->show();
+    m_banner->raise();
 }
 
 void AlignTool::deactivate()
 {
-    commitNow();
+    commit();
+    closeGesture();
+    m_drawing = 0;
+    m_banner->hide();
     if (m_matching)
         setMatching(false);
 }
 
-void AlignTool::commitNow()
+void AlignTool::placeBanner()
 {
-    if (!m_commit.isActive())
+    m_banner->setMaximumWidth(std::max(m_viewport->width() - 20, 100));
+    m_banner->setWordWrap(true);
+    m_banner->adjustSize();
+    m_banner->move((m_viewport->width() - m_banner->width()) / 2, 8);
+}
+
+void AlignTool::commit()
+{
+    model::Document* document = m_viewport->document();
+    // Only the drawing the mode was started on, and only a camera the artist changed (a resize
+    // or another drawing's letterbox keeps the camera and stores nothing).
+    if (!document || !m_drawing || m_viewport->overlayDrawing() != m_drawing)
         return;
-    m_commit.stop();
-    if (m_viewport->overlayDrawing() && m_viewport->document())
-        m_viewport->document()->setDrawingCamera(m_viewport->overlayDrawing(), m_viewport->camera());
+    const model::Camera camera = m_viewport->camera();
+    if (camera == m_stored)
+        return;
+    document->setDrawingCamera(m_drawing, camera);
+    m_stored = camera;
 }
 
 void AlignTool::cameraChanged()
 {
-    if (m_viewport->overlayDrawing())
-        m_commit.start();
+    commit();
+}
+
+void AlignTool::navigationStarted()
+{
+    openGesture(); // the drag's or the wheel burst's camera edits merge into one undo step
+}
+
+void AlignTool::navigationEnded()
+{
+    commit();
+    closeGesture();
 }
 
 bool AlignTool::press(const ToolEvent& event)
@@ -180,6 +218,8 @@ void AlignTool::removeLastPoint()
 void AlignTool::resized()
 {
     m_markers->setGeometry(m_viewport->rect());
+    if (m_banner->isVisible())
+        placeBanner();
 }
 
 std::optional<double> AlignTool::solve(QString* error)
@@ -214,11 +254,10 @@ std::optional<double> AlignTool::solve(QString* error)
     camera.up = solved->up;
     camera.projection = model::Projection::Perspective;
     camera.fovYDegrees = solved->fovYDegrees;
-    const model::ObjectId drawingId = m_viewport->overlayDrawing();
-    m_commit.stop();
+    // One step: the solved camera, stored with the drawing (setCamera commits it while aligning).
     m_viewport->setCamera(camera);
-    m_commit.stop();
-    document->setDrawingCamera(drawingId, camera);
+    if (m_drawing != m_viewport->overlayDrawing())
+        document->setDrawingCamera(m_viewport->overlayDrawing(), camera);
     m_markers->update();
     return solved->rmsPixelError;
 }

@@ -1,19 +1,23 @@
-// Aligning the model to a reference drawing (paper 1, section 3.1.1): while the tool is on, the
-// navigation moves a camera that is stored with the drawing once it settles (one undo step per
-// gesture), and with point matching on, clicks place model and drawing points for the camera solve.
+// Aligning the model to a reference drawing (paper 1, section 3.1.1): an explicit mode bound to the
+// drawing it was started on, shown by a banner over the viewport. While it is on, the navigation
+// moves a camera stored with that drawing (one undo step per navigation gesture); with point
+// matching on, clicks place model and drawing points for the camera solve.
 #pragma once
 
 #include "celform/views/tools/viewport_tool.h"
 
+#include "celform/model/camera.h"
+#include "celform/model/object_id.h"
+
 #include <QObject>
 #include <QString>
-#include <QTimer>
 
 #include <Eigen/Core>
 
 #include <optional>
 #include <vector>
 
+class QLabel;
 class QWidget;
 
 namespace celform::views {
@@ -28,7 +32,11 @@ public:
     void deactivate() override;
     bool press(const ToolEvent& event) override;
     void cameraChanged() override;
+    void navigationStarted() override;
+    void navigationEnded() override;
     [[nodiscard]] Qt::CursorShape cursor() const override { return Qt::ArrowCursor; }
+    /// The drawing being aligned (0 while the tool is off).
+    [[nodiscard]] model::ObjectId drawing() const { return m_drawing; }
 
     void setMatching(bool on);
     [[nodiscard]] bool isMatching() const { return m_matching; }
@@ -42,15 +50,18 @@ public:
     void resized();
 
 private:
-    /// Stores the camera with the drawing now, if a commit is pending.
-    void commitNow();
+    /// Stores the viewport's camera with the drawing when it differs from the last one stored.
+    void commit();
     void markersChanged();
+    void placeBanner();
 
-    QTimer m_commit; ///< stores the aligned camera once navigation settles
+    model::ObjectId m_drawing = 0; ///< bound at activation: another drawing ends the mode
+    model::Camera m_stored; ///< the camera last stored (or found) with the drawing
     bool m_matching = false;
     std::vector<Eigen::Vector3d> m_modelPoints;
     std::vector<Eigen::Vector2d> m_drawingPoints;
     QWidget* m_markers; ///< transparent child of the viewport painting the matched points
+    QLabel* m_banner; ///< says the mode is on, what it edits, and the way out
 };
 
 } // namespace celform::views

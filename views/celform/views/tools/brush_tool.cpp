@@ -77,11 +77,15 @@ void BrushTool::finish()
 void BrushTool::release(const ToolEvent&)
 {
     finish();
+    // The selection is shown during the stroke only: afterwards (and after an undo) the model
+    // shows its look again.
+    m_viewport->showBrushSelection(nullptr, nullptr);
 }
 
 void BrushTool::cancel()
 {
     finish();
+    m_viewport->showBrushSelection(nullptr, nullptr);
 }
 
 void BrushTool::deactivate()

@@ -1,5 +1,7 @@
-// Screen motion to highlight parameters: the tangent frame the renderer uses at the picked vertex,
-// seen on screen, maps the drag to translation amounts along du and dv.
+// Cursor to highlight parameters. A plain drag keeps the grabbed point of the highlight under the
+// cursor: the translation that puts the highlight's centre (where N · H~ is 1) on the surface point
+// under the cursor has a closed form in the renderer's tangent frame there, and the drag keeps the
+// offset the press had from it. Shift (rotation) and Ctrl (scaling) map pixels to amounts.
 #include "celform/views/tools/highlight_tool.h"
 
 #include "celform/algorithms/highlights.h"
@@ -9,8 +11,58 @@
 #include "celform/views/viewport.h"
 
 #include <cmath>
+#include <optional>
 
 namespace celform::views {
+
+std::optional<Eigen::Vector2d> HighlightTool::centringTranslation(const QPointF& position)
+{
+    model::Document* document = m_viewport->document();
+    const auto hit = m_viewport->pickSurface(position);
+    if (!document || !hit || !document->hasMesh() || m_layer.du.rows() == 0)
+        return std::nullopt;
+    const algo::TriMesh& mesh = *document->data().baseMesh;
+    const algo::Positions& shape = m_viewport->displayedShape();
+    const auto face = hit->first;
+    if (!m_layer.faceMask.empty() && !m_layer.faceMask[std::size_t(face)])
+        return std::nullopt; // off the layer's patch: the highlight cannot sit there
+    const Eigen::Vector3f p = hit->second.cast<float>();
+    const Eigen::Index a = mesh.faces(face, 0), b = mesh.faces(face, 1), c = mesh.faces(face, 2);
+    // Barycentric coordinates of the picked point, as the renderer interpolates its attributes.
+    const Eigen::Vector3f pa = shape.row(a), pb = shape.row(b), pc = shape.row(c);
+    const Eigen::Vector3f n0 = (pb - pa).cross(pc - pa);
+    const float area = n0.squaredNorm();
+    if (!(area > 0.f))
+        return std::nullopt;
+    const float u = (pb - p).cross(pc - p).dot(n0) / area, v = (pc - p).cross(pa - p).dot(n0) / area;
+    const Eigen::Vector3f w(u, v, 1.f - u - v);
+    auto at = [&](const algo::Positions& rows) {
+        return Eigen::Vector3f(w.x() * rows.row(a) + w.y() * rows.row(b) + w.z() * rows.row(c));
+    };
+    // The layer's normal (smoothed where it asks for it) on the viewer's side, and its frame.
+    const model::Camera camera = m_viewport->camera();
+    Eigen::Vector3f normal = n0.normalized();
+    if (m_layer.normals.rows() == shape.rows() && at(m_layer.normals).squaredNorm() > 1e-12f)
+        normal = at(m_layer.normals).normalized();
+    const Eigen::Vector3f towardsEye = camera.projection == model::Projection::Orthographic
+        ? Eigen::Vector3f(-camera.forward().cast<float>())
+        : Eigen::Vector3f(camera.eye.cast<float>() - p);
+    if (normal.dot(towardsEye) < 0.f)
+        normal = -normal;
+    const algo::HighlightFrame frame = algo::makeTangentFrame(normal, at(m_layer.du), at(m_layer.dv));
+    // Paper 2, "translation": H~ = (H + alpha du + beta dv) / |...|. With H = h_n N + h_u du + h_v dv
+    // in this orthonormal frame, H~ is parallel to N (the highlight's centre) for alpha = -h_u and
+    // beta = -h_v.
+    const model::Light& light = document->data().look.light;
+    algo::HighlightLight highlightLight;
+    highlightLight.point = light.type == model::LightType::Point;
+    highlightLight.vector = light.vector.cast<float>();
+    // V towards the camera's eye, as the renderer takes it for either projection.
+    const Eigen::Vector3f h = algo::halfwayVector(p, highlightLight, camera.eye.cast<float>());
+    if (!(h.dot(normal) > 0.f))
+        return std::nullopt; // the light is behind this point: no highlight can centre here
+    return Eigen::Vector2d(-double(h.dot(frame.du)), -double(h.dot(frame.dv)));
+}
 
 bool HighlightTool::press(const ToolEvent& event)
 {
@@ -18,48 +70,22 @@ bool HighlightTool::press(const ToolEvent& event)
     const model::ObjectId target = m_viewport->highlightTarget();
     if (!document || !document->data().highlight(target))
         return false;
-    // Fallback without a picked point: screen axes, a fixed rate.
-    m_du = QPointF(1.0, 0.0);
-    m_dv = QPointF(0.0, -1.0);
-    m_unitsPerPixel = 0.005;
     openGesture();
-    const auto& mesh = document->data().baseMesh;
-    const std::int64_t vertex = m_viewport->pickVertex(event.position);
-    const algo::Positions& shape = m_viewport->displayedShape();
-    if (!mesh || vertex < 0 || vertex >= shape.rows() || shape.rows() != mesh->vertices.rows())
-        return true;
     const model::HighlightTrack& track = *document->data().highlight(target);
-    const Eigen::Vector3f p = shape.row(vertex).transpose();
-    // The frame the renderer uses at that vertex (UVs where the model has them, else the guide
-    // smoothed over the patch); a hidden layer or a vertex off its patch falls back to the guide.
-    algo::HighlightFrame frame;
-    bool found = false;
-    for (const auto& h :
-        model::renderHighlightsFor(document->data(), document->data().look, shape, document->currentFrame()))
-        if (QString::fromStdString(h.layer.name) == track.name && h.du.rows() == shape.rows()
-            && h.du.row(vertex).squaredNorm() > 0.5f) {
-            frame.du = h.du.row(vertex).transpose();
-            frame.dv = h.dv.row(vertex).transpose();
-            found = true;
+    const int frame = document->currentFrame();
+    // The layer's geometry as the renderer resolves it (UV frames, or the guide over the patch;
+    // smoothed normals): fixed for the drag, the shape does not change under it.
+    m_layer = {};
+    const algo::Positions& shape = m_viewport->displayedShape();
+    for (auto& h : model::renderHighlightsFor(document->data(), document->data().look, shape, frame))
+        if (QString::fromStdString(h.layer.name) == track.name) {
+            m_layer = std::move(h);
             break;
         }
-    if (!found) {
-        const algo::Positions normals = algo::vertexNormals(shape, mesh->faces);
-        frame = algo::guideTangentFrame(normals.row(vertex).transpose(), track.guide);
-    }
-    const double perPixel = m_viewport->worldUnitsPerPixel(p.cast<double>());
-    const QPointF origin = m_viewport->projectToWidget(p.cast<double>());
-    auto screenDirection = [&](const Eigen::Vector3f& d) {
-        const QPointF s = m_viewport->projectToWidget((p + d * float(perPixel * 10.0)).cast<double>()) - origin;
-        const double length = std::hypot(s.x(), s.y());
-        return length > 1e-6 ? s / length : QPointF();
-    };
-    m_du = screenDirection(frame.du);
-    m_dv = screenDirection(frame.dv);
-    // H + alpha du tilts H by atan(alpha): on a surface of curvature radius r the highlight moves
-    // about r * alpha; the distance to the model's centre stands in for r.
-    const double radius = std::max(double((p.cast<double>() - m_viewport->modelCentre()).norm()), 1e-9);
-    m_unitsPerPixel = perPixel / radius;
+    m_grabOffset.reset();
+    if (const auto centring = centringTranslation(event.position))
+        m_grabOffset = track.translationAt(frame) - *centring;
+    // Rotation and scaling: a fixed rate per pixel.
     return true;
 }
 
@@ -72,16 +98,18 @@ void HighlightTool::move(const ToolEvent& event)
     using T = algo::HighlightOperationType;
     const QPointF d = event.delta;
     const bool rotate = event.modifiers & Qt::ShiftModifier, scale = event.modifiers & Qt::ControlModifier;
+    const int frame = document->currentFrame();
     try {
         if (rotate) {
-            document->nudgeHighlight(target, document->currentFrame(), T::Rotation, d.x() * 0.5);
+            document->nudgeHighlight(target, frame, T::Rotation, d.x() * 0.5);
         } else if (scale) {
-            document->nudgeHighlight(target, document->currentFrame(), T::DirectionalScaling, d.x() * 0.005);
-        } else {
-            const double a = d.x() * m_du.x() + d.y() * m_du.y();
-            const double b = d.x() * m_dv.x() + d.y() * m_dv.y();
-            document->nudgeHighlight(
-                target, document->currentFrame(), T::Translation, a * m_unitsPerPixel, b * m_unitsPerPixel);
+            document->nudgeHighlight(target, frame, T::DirectionalScaling, d.x() * 0.005);
+        } else if (m_grabOffset) {
+            // The grabbed point follows the cursor; off the model (or the patch) it stays put.
+            if (const auto centring = centringTranslation(event.position)) {
+                const Eigen::Vector2d wanted = *centring + *m_grabOffset;
+                document->setHighlightTranslation(target, frame, wanted.x(), wanted.y());
+            }
         }
     } catch (const model::EditRefused& e) {
         emit m_viewport->message(e.message());

@@ -1,11 +1,14 @@
 // Direct manipulation of a stylized highlight (Anjyo & Hiramitsu 2003) in the viewport: drag moves
-// the target layer along the surface, Shift+drag rotates it, Ctrl+drag scales it, keyed at the
-// playhead; one undo step per drag (Document::nudgeHighlight).
+// the target layer along the surface with the grabbed point under the cursor, Shift+drag rotates
+// it, Ctrl+drag scales it, keyed at the playhead; one undo step per drag.
 #pragma once
 
+#include "celform/algorithms/render.h"
 #include "celform/views/tools/viewport_tool.h"
 
-#include <QPointF>
+#include <Eigen/Core>
+
+#include <optional>
 
 namespace celform::views {
 
@@ -17,8 +20,13 @@ public:
     void move(const ToolEvent& event) override;
 
 private:
-    QPointF m_du{1.0, 0.0}, m_dv{0.0, -1.0}; ///< screen directions (unit) of du, dv at the picked point
-    double m_unitsPerPixel = 0.005; ///< translation parameter per pixel of drag
+    /// The translation (along the unturned du, dv) that centres the highlight on the surface
+    /// point under a widget position; nothing off the model, off the patch or in shadow.
+    std::optional<Eigen::Vector2d> centringTranslation(const QPointF& position);
+
+    algo::RenderHighlight m_layer; ///< the target layer's geometry at the press
+    /// translation at the press minus the one centring the highlight on the press point
+    std::optional<Eigen::Vector2d> m_grabOffset;
 };
 
 } // namespace celform::views

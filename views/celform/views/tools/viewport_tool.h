@@ -44,6 +44,10 @@ public:
     virtual void cancel() { closeGesture(); }
     /// The viewport's camera moved (navigation, programmatic).
     virtual void cameraChanged() { }
+    /// A navigation gesture (an orbit, pan, dolly or roll drag, a burst of wheel ticks) starts or
+    /// ends while the tool is on.
+    virtual void navigationStarted() { }
+    virtual void navigationEnded() { }
     [[nodiscard]] virtual Qt::CursorShape cursor() const { return Qt::CrossCursor; }
 
 protected:
