@@ -300,6 +300,10 @@ void TestImageIo::damaged()
         QVERIFY(!e.problem().isEmpty());
         QVERIFY2(!e.problem().contains(QLatin1Char('\n')), qPrintable(e.message()));
         qInfo("%s -> %s", qPrintable(name), qPrintable(e.problem()));
+        // Refused before OpenImageIO reads past the end (where its PNG reader leaks, which the
+        // sanitize preset's LeakSanitizer reports).
+        if (name.startsWith(QLatin1String("frog")) || name == QLatin1String("header.png"))
+            QVERIFY2(e.problem().contains(QStringLiteral("truncated")), qPrintable(e.problem()));
     }
 }
 

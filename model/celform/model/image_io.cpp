@@ -126,6 +126,30 @@ std::optional<QSize> headerSize(const QByteArray& data, const QString& format)
     return std::nullopt;
 }
 
+/// Whether a PNG's chunks end before its IEND chunk does. OpenImageIO's PNG reader leaks its error
+/// message on every read past the end of the data (the message lives in a std::string across
+/// libpng's longjmp: fixed upstream in OpenImageIO PR #5289, not in Debian's 2.4), so a truncated
+/// file is refused here, with a clearer message, before the decoder reads it.
+bool pngIsTruncated(const QByteArray& data)
+{
+    const auto* p = reinterpret_cast<const uchar*>(data.constData());
+    const qsizetype n = data.size();
+    if (n < 8 || std::memcmp(p, "\x89PNG\r\n\x1a\n", 8) != 0)
+        return false; // not a PNG: the decoder says so
+    qsizetype at = 8;
+    while (n - at >= 8) {
+        const quint32 length = bigEndian32(p + at);
+        if (length > 0x7fffffffu) // beyond the format's limit: libpng refuses it without reading on
+            return false;
+        if (n - at - 12 < qsizetype(length)) // length, type, data and CRC
+            return true;
+        if (std::memcmp(p + at + 4, "IEND", 4) == 0)
+            return false;
+        at += 12 + qsizetype(length);
+    }
+    return true;
+}
+
 QImage renderSvg(const QByteArray& data, const QString& fileLabel)
 {
     QSvgRenderer renderer(data);
@@ -160,6 +184,8 @@ QImage decodeImage(const QByteArray& data, const QString& format, const QString&
         if (const QString problem = imageSizeProblem(size->width(), size->height(), data.size()); !problem.isEmpty())
             throw IoError(fileLabel, problem);
     }
+    if (f == QLatin1String("png") && pngIsTruncated(data))
+        throw IoError(fileLabel, ImageIo::tr("the PNG file is truncated (it ends before its last chunk)"));
     QString problem;
     QImage image = rasterCodec(fileLabel).decode(data, f, fileLabel, &problem);
     if (image.isNull())
