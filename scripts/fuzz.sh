@@ -41,8 +41,11 @@ newFindings() { find "$@" -type f -newer "$mark" \( -name 'crash-*' -o -name 'le
 shared=$(cd .. && pwd)/shared/data
 
 # Leaks are findings too; the symbolizer names the lines of a stack.
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1:check_initialization_order=1}
+# intercept_tls_get_addr=0: see tests/lsan-suppressions.txt (LeakSanitizer's tracer crash).
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1:check_initialization_order=1:intercept_tls_get_addr=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+# Upstream leaks only, each named in the file.
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tests/lsan-suppressions.txt:print_suppressions=0}
 export QT_QPA_PLATFORM=offscreen
 
 summary=()
@@ -54,14 +57,18 @@ while read -r kind binary; do
   crashes=$out/crashes/$kind
   work=$out/work/$kind
   mkdir -p "$corpus" "$crashes" "$work" "$out/logs"
-  # Seeds: the committed corpus and regressions, and the shared data's files under 50 kB.
+  # Seeds: the committed corpus and the fuzzers' regressions, and (copied into the corpus) the
+  # handcrafted regressions and the shared data's files under 50 kB with the kind's suffix.
   seeds=()
-  for dir in tests/data/fuzz-corpus/$kind tests/data/fuzz-regressions/$kind; do
+  for dir in tests/data/fuzz-corpus/$kind tests/data/fuzz-regressions/fuzzed/$kind; do
     [ -d "$dir" ] && seeds+=("$root/$dir")
   done
-  if [ -d "$shared" ] && [[ $kind =~ ^(ply|off|obj|stl|gltf|glb|fbx|png|jpg|tif|exr|psd|svg)$ ]]; then
-    find "$shared" -type f -iname "*.$kind" -size -50k -exec cp -n {} "$corpus/" \;
-  fi
+  suffix=$kind
+  [ "$kind" = project ] && suffix=celform
+  for dir in tests/data/fuzz-regressions "$shared"; do
+    [ -d "$dir" ] && find "$dir" -path '*/fuzzed' -prune -o -type f -iname "*.$suffix" -size -50k \
+      -exec cp -n {} "$corpus/" \;
+  done
   dict=tests/fuzz/dict/$kind.dict
   [ "$kind" = glb ] && dict=tests/fuzz/dict/gltf.dict
   flags=(-max_total_time="$seconds" -rss_limit_mb="$rss" -timeout="$timeout" -print_final_stats=1

@@ -70,7 +70,9 @@ private slots:
         s.toeIn = toeIn;
         const auto [left, right] = stereoPair(centre, s);
         const Eigen::Vector3d f = centre.forward();
-        const auto disparity = [&](const Eigen::Vector3d& p) { return right.project(p).x() - left.project(p).x(); };
+        // Structured bindings are captured through references: C++17 (and Clang 14) cannot capture them.
+        const auto disparity
+            = [&l = left, &r = right](const Eigen::Vector3d& p) { return r.project(p).x() - l.project(p).x(); };
         const Eigen::Vector3d onAxis = centre.eye + s.convergence * f;
         QVERIFY2(std::abs(disparity(onAxis)) < 1e-9, qPrintable(QString::number(disparity(onAxis))));
         QVERIFY(std::abs(left.project(onAxis).y() - right.project(onAxis).y()) < 1e-9);

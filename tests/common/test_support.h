@@ -6,7 +6,24 @@
 #include <QString>
 #include <QtTest/QtTest>
 
+// AddressSanitizer (the sanitize preset): GCC defines __SANITIZE_ADDRESS__, Clang has the feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define CELFORM_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CELFORM_TEST_ASAN 1
+#endif
+#endif
+
 namespace celform::test {
+
+/// Whether this build runs under AddressSanitizer. Its shadow memory reserves terabytes of address
+/// space when a program starts, so a test cannot cap a child's address space (RLIMIT_AS) there.
+#ifdef CELFORM_TEST_ASAN
+inline constexpr bool kAddressSanitizer = true;
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
 
 /// Absolute path of a file under ../shared/data, or an empty string when it is absent.
 inline QString sharedDataPath(const QString& relative)

@@ -171,7 +171,8 @@ const std::vector<OptionParser>& optionParsers()
         },
         [](const QString& t) {
             const QSize s = parseSize("size", t);
-            return unless(s.width() >= 1 && s.height() >= 1 && s.width() <= 16384 && s.height() <= 16384,
+            return unless(s.width() >= 1 && s.height() >= 1 && s.width() <= kMaxRenderSide
+                    && s.height() <= kMaxRenderSide && qint64(s.width()) * s.height() <= kMaxRenderPixels,
                 "size in bounds");
         },
         [](const QString& t) { return (void)parseOnOff("lines", t), QString(); },
@@ -212,7 +213,7 @@ Outcome feedOptions(const QByteArray& bytes)
     const auto& parsers = optionParsers();
     const OptionParser& parse = parsers[std::size_t(static_cast<unsigned char>(bytes[0])) % parsers.size()];
     try {
-        out.broken = parse(QString::fromUtf8(QByteArrayView(bytes).mid(1))); // NULs included
+        out.broken = parse(QString::fromUtf8(bytes.mid(1))); // NULs included
         out.loaded = true;
     } catch (const app::UsageError& e) {
         out.refusal = e.message;

@@ -721,7 +721,7 @@ private:
 
         // The base model: the same topology moved, fewer faces (patches go), more vertices, or
         // fewer vertices than the keys use (refused with IoError).
-        add("setBaseMesh", 1, Kind::Edit, [this, &d, &r](Rng&) {
+        add("setBaseMesh", 1, Kind::Edit, [&d, &r](Rng&) {
             switch (below(r, 4)) {
             case 0:
                 d.setBaseMesh(walkMesh(2, uniformF(r, 0.8, 1.2)), QStringLiteral("scaled.obj"));
