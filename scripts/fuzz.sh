@@ -8,7 +8,9 @@
 # Usage: scripts/fuzz.sh [SECONDS] [KIND...]
 # Environment:
 #   FUZZ_OUT=build/fuzz        corpora (kept between runs), crashes and logs
-#   FUZZ_RSS_MB=2048           memory limit per process, and per allocation
+#   FUZZ_RSS_MB=4096           memory limit per process (a drawing may decode to 4096 x 4096
+#                              pixels from any file: about 700 MB at once under ASan)
+#   FUZZ_MALLOC_MB=2048        the largest single allocation
 #   FUZZ_TIMEOUT=10            seconds one input may take
 #   FUZZ_FORK=N                N worker processes that go on after a finding (-fork -ignore_*),
 #                              for long runs with known defects; default: stop at the first finding
@@ -21,7 +23,8 @@ root=$PWD
 seconds=${1:-180}
 [ $# -gt 0 ] && shift
 out=${FUZZ_OUT:-build/fuzz}
-rss=${FUZZ_RSS_MB:-2048}
+rss=${FUZZ_RSS_MB:-4096}
+malloc=${FUZZ_MALLOC_MB:-2048}
 timeout=${FUZZ_TIMEOUT:-10}
 fork=${FUZZ_FORK:-0}
 list=build/sanitize/fuzzers.txt
@@ -71,7 +74,8 @@ while read -r kind binary; do
   done
   dict=tests/fuzz/dict/$kind.dict
   [ "$kind" = glb ] && dict=tests/fuzz/dict/gltf.dict
-  flags=(-max_total_time="$seconds" -rss_limit_mb="$rss" -timeout="$timeout" -print_final_stats=1
+  flags=(-max_total_time="$seconds" -rss_limit_mb="$rss" -malloc_limit_mb="$malloc" -timeout="$timeout"
+    -print_final_stats=1
     -artifact_prefix="$crashes/")
   [ -f "$dict" ] && flags+=(-dict="$root/$dict")
   [ -n "${FUZZ_SEED:-}" ] && flags+=(-seed="$FUZZ_SEED")
