@@ -19,6 +19,7 @@
 #include <QRegularExpression>
 #include <QTextBrowser>
 #include <QTreeWidget>
+#include <QUndoStack>
 
 using namespace celform;
 using views::Viewport;
@@ -76,8 +77,15 @@ private slots:
         window.propertiesPanel()->editKeyButton()->click();
         QCOMPARE(viewport->tool(), Viewport::Tool::Brush);
         test::waitForRender(viewport);
-        const QPoint nose = viewport->projectToWidget(viewport->modelCentre()).toPoint() + QPoint(-60, 0);
+        // A point on the model near its centre: pull it towards the drawing's back.
+        const QPoint centre = viewport->projectToWidget(viewport->modelCentre()).toPoint();
+        QPoint nose = centre;
+        for (int dx = 0; dx < 200 && !viewport->pickSurface(nose); dx += 5)
+            nose = centre + QPoint(-dx, dx / 2);
+        QVERIFY(viewport->pickSurface(nose));
+        const int steps = window.document()->undoStack()->index();
         test::drag(viewport, Qt::LeftButton, Qt::NoModifier, nose, nose + QPoint(-25, 10));
+        QCOMPARE(window.document()->undoStack()->index(), steps + 1);
         QMouseEvent hover(QEvent::MouseMove, nose, viewport->mapToGlobal(nose), Qt::NoButton, Qt::NoButton, {});
         QApplication::sendEvent(viewport, &hover);
         QTest::qWait(60);
