@@ -364,7 +364,35 @@ private slots:
         const algo::Positions reviewed = review->viewport()->displayedShape();
         QCOMPARE(reviewed.rows(), shown.rows());
         QVERIFY((reviewed - shown).cwiseAbs().maxCoeff() < 1e-5);
+        // Bug 8: an idle review shows its last frame's time, not "0.0 fps".
+        QTest::qWait(1200);
+        QVERIFY2(!review->statusText().contains(QStringLiteral("0.0 fps")), qPrintable(review->statusText()));
         review->close();
+    }
+
+    // Bug 8: a white-on-transparent drawing's thumbnail shows in the Scene tree (drawn on a checker).
+    void thumbnailsShowLightDrawings()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(showActive(window));
+        QTreeWidget* tree = window.scenePanel()->tree();
+        const auto items = tree->findItems(QStringLiteral("tuxpaint_elephant"), Qt::MatchExactly | Qt::MatchRecursive);
+        QVERIFY(!items.isEmpty());
+        const QImage icon = items.front()->icon(0).pixmap(32, 32).toImage().convertToFormat(QImage::Format_ARGB32);
+        QVERIFY(!icon.isNull());
+        // On a plain white tree the drawing's white would vanish: count the pixels that are not.
+        int visible = 0;
+        for (int y = 0; y < icon.height(); ++y)
+            for (int x = 0; x < icon.width(); ++x) {
+                const QColor p = icon.pixelColor(x, y);
+                visible += p.alpha() > 200 && p.lightness() < 225;
+            }
+        QVERIFY2(visible > icon.width() * icon.height() / 8,
+            qPrintable(QStringLiteral("%1 of %2x%3, first %4")
+                           .arg(visible)
+                           .arg(icon.width())
+                           .arg(icon.height())
+                           .arg(icon.pixel(5, 5), 8, 16)));
     }
 
     // Bug 8: the brush's red selection shows during the stroke only (not after it, nor after undo);
