@@ -135,6 +135,7 @@ private slots:
     void transferCarriesUvsAndMaterials();
     void psdCrossesWhole();
     void drawingsShareOneChild();
+    void psdHeaderReadHere();
     void batchFailureNamesTheDrawing();
     void childEndings_data();
     void childEndings();
@@ -256,6 +257,19 @@ void TestImportProcess::drawingsShareOneChild()
     QFile counted(runs);
     QVERIFY(counted.open(QIODevice::ReadOnly));
     QCOMPARE(counted.readAll(), QByteArray("run\n"));
+}
+
+// A PSD's size comes from its header, read in this process: `celform info` starts no child for it,
+// and a header stating too many pixels is refused before one is started.
+void TestImportProcess::psdHeaderReadHere()
+{
+    m_environment.set("CELFORM_EXECUTABLE", "/nonexistent/celform");
+    QCOMPARE(celform::model::decodedImageSize(rgbPsd(16, 8), QStringLiteral("psd"), QStringLiteral("a")), QSize(16, 8));
+    QByteArray bomb = rgbPsd(16, 8);
+    bomb[14] = bomb[18] = char(0x7f); // over two billion pixels a side
+    const IoError e = ioErrorOf([&] { decodeImage(bomb, QStringLiteral("psd"), QStringLiteral("bomb")); });
+    QCOMPARE(e.file(), QStringLiteral("bomb"));
+    QVERIFY2(e.problem().startsWith(QStringLiteral("the image is too large")), qPrintable(e.message()));
 }
 
 // When the shared child fails, each drawing is decoded alone, so that the error names the one that

@@ -62,7 +62,7 @@ quint32 bigEndian32(const uchar* p)
     return quint32(p[0]) << 24 | quint32(p[1]) << 16 | quint32(p[2]) << 8 | p[3];
 }
 
-/// Width and height from a PNG's IHDR, a JPEG's frame header or a BMP's info header, read here
+/// Width and height from a PNG's IHDR, a JPEG's frame header, a BMP's info header or a PSD's, read here
 /// rather than by Qt's readers (which print libpng's and libjpeg's complaints about a damaged file
 /// on standard error) or OpenImageIO (which needs loading). Nothing for other formats or a header
 /// that cannot be read: the decoder then judges the file.
@@ -124,6 +124,14 @@ std::optional<QSize> headerSize(const QByteArray& data, const QString& format)
         if (w < 0 || !inRange(quint32(w), quint32(std::abs(h))))
             return std::nullopt;
         return QSize(int(w), int(std::abs(h)));
+    }
+    if (format == QLatin1String("psd")) {
+        // "8BPS", version, 6 reserved bytes, channels, then height and width (big-endian): the
+        // composite's size, which is what is decoded. Read here, `celform info` starts no child.
+        if (n < 26 || std::memcmp(p, "8BPS", 4) != 0)
+            return std::nullopt;
+        const quint32 h = bigEndian32(p + 14), w = bigEndian32(p + 18);
+        return inRange(w, h) ? std::optional<QSize>(QSize(int(w), int(h))) : std::nullopt;
     }
     return std::nullopt;
 }

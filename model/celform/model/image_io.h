@@ -43,7 +43,7 @@ std::vector<QImage> decodeImages(const std::vector<EncodedImage>& images);
 /// to a file of the same base name in outFolder. Throws IoError naming inFolder.
 void decodeImagesForParent(const QString& inFolder, const QString& outFolder);
 
-/// The size decodeImage() gives, read from the header for PNG, JPEG and BMP (Qt's readers) and
+/// The size decodeImage() gives, read from the header for PNG, JPEG, BMP and PSD and
 /// from the view box for SVG, decoding only the other formats: for readers that show sizes, like
 /// `celform info`, without paying for the pixels or for loading OpenImageIO. Throws IoError.
 QSize decodedImageSize(const QByteArray& data, const QString& format, const QString& fileLabel);
