@@ -118,6 +118,31 @@ private slots:
         QCOMPARE(brushFalloff(d, 3.0), expected);
     }
 
+    // The falloff choices (issue 10): at d = r/2, t = 1/2: smooth 3t^2 - 2t^3 = 0.5, sphere
+    // sqrt(1 - 1/4) = 0.8660..., the paper's 0.25; all 1 at the centre and 0 at the radius.
+    void falloffCurves()
+    {
+        QCOMPARE(brushFalloff(1.5, 3.0, BrushFalloff::Paper), 0.25);
+        QCOMPARE(brushFalloff(1.5, 3.0, BrushFalloff::Smooth), 0.5);
+        QVERIFY(std::abs(brushFalloff(1.5, 3.0, BrushFalloff::Sphere) - std::sqrt(0.75)) < 1e-15);
+        QCOMPARE(brushFalloff(0.75, 3.0, BrushFalloff::Smooth), 0.84375); // t = 3/4: 27/16 - 27/32
+        for (const auto curve : {BrushFalloff::Paper, BrushFalloff::Smooth, BrushFalloff::Sphere}) {
+            QCOMPARE(brushFalloff(0.0, 3.0, curve), 1.0);
+            QCOMPARE(brushFalloff(3.0, 3.0, curve), 0.0);
+            QCOMPARE(brushFalloff(4.0, 3.0, curve), 0.0);
+        }
+        // The profile: weights are strength times the curve, the picked vertex at the strength.
+        const Positions p = randomPoints(2000, 4);
+        const VertexGrid grid(p);
+        const BrushSelection s = selectForBrush(p, grid, 3, 0.4, {BrushFalloff::Sphere, 0.5});
+        QVERIFY(s.indices.size() > 5);
+        for (std::size_t k = 0; k < s.indices.size(); ++k) {
+            const double d = (p.row(s.indices[k]) - p.row(3)).cast<double>().norm();
+            const double expected = s.indices[k] == 3 ? 0.5 : 0.5 * brushFalloff(d, 0.4, BrushFalloff::Sphere);
+            QVERIFY(std::abs(s.weights[k] - expected) < 1e-6);
+        }
+    }
+
     void selectionWeightsFollowFalloff()
     {
         const Positions p = randomPoints(5000, 3);
@@ -281,6 +306,34 @@ private slots:
         TriMesh flat = planeGrid(5);
         const Positions still = brushSmooth(s, flat.vertices, flat.faces, 1.0);
         QVERIFY(still.col(2).cwiseAbs().maxCoeff() < 1e-7);
+    }
+
+    // Relax (issue 10): the smoothing step in each vertex's tangent plane. A vertex pushed
+    // sideways in a flat grid goes back towards the average of its ring and stays in the plane;
+    // the spike of the test above is left alone (its move is along its normal), so the shape and
+    // the silhouette are kept.
+    void relaxMovesAlongTheSurface()
+    {
+        TriMesh m = planeGrid(5);
+        const std::uint32_t centre = 5 * 11 + 5;
+        const Eigen::RowVector3f rest = m.vertices.row(centre);
+        m.vertices(centre, 0) += 0.3f; // off-centre in the plane
+        const BrushSelection s = selectForBrush(m.vertices, VertexGrid(m.vertices), centre, 2.5);
+        Positions out;
+        std::vector<std::int32_t> scratch;
+        brushSmooth(s, m.vertices, m.faces, m.vertexFaces(), 1.0, out, scratch, true);
+        const Positions moved = applied(m.vertices, s, out);
+        QVERIFY(std::abs(moved(centre, 0) - rest.x()) < 0.05f); // back near the ring's average
+        QVERIFY(moved.col(2).cwiseAbs().maxCoeff() < 1e-7f); // nothing left the plane
+
+        TriMesh spike = planeGrid(5);
+        spike.vertices(centre, 2) = 2.0f;
+        brushSmooth(s, spike.vertices, spike.faces, spike.vertexFaces(), 1.0, out, scratch, true);
+        const Positions relaxed = applied(spike.vertices, s, out);
+        // The tip's normal is +z: its move to the ring's average is all normal, so it stays.
+        QVERIFY(std::abs(relaxed(centre, 2) - 2.0f) < 1e-6f);
+        brushSmooth(s, spike.vertices, spike.faces, spike.vertexFaces(), 1.0, out, scratch, false);
+        QVERIFY(std::abs(applied(spike.vertices, s, out)(centre, 2)) < 1e-6f); // Smooth flattens it
     }
 
     void radiusQueryMatchesBruteForce()

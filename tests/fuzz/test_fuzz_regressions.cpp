@@ -1,8 +1,9 @@
-// Replays every input kept under tests/data/fuzz-regressions (inputs that once crashed a loader or
-// broke its promises) and the fuzz seeds under tests/data/fuzz-corpus/KIND/ through their loaders,
-// as the fuzz targets feed them (fuzz_inputs.h). Each must be refused with the loader's error
-// (model::IoError) or accepted keeping its promises; a crash fails the run, and under the sanitize
-// preset so does every sanitizer report.
+// Replays the fuzzers' findings kept under tests/data/fuzz-regressions/fuzzed/KIND/ and the fuzz
+// seeds under tests/data/fuzz-corpus/KIND/ through their loaders, in this process, as the fuzz
+// targets feed them (fuzz_inputs.h). Each must be refused with the loader's error (model::IoError)
+// or accepted keeping its promises; a crash fails the run, and under the sanitize preset so does
+// every sanitizer report. The handcrafted regressions beside fuzzed/ belong to the model and
+// command-line tests, which read them as the product does (Assimp's in a child process).
 #include "fuzz_inputs.h"
 
 #include <QDirIterator>
@@ -24,34 +25,19 @@ public:
     }
 
 private:
-    /// A row per file in the folders of root (files beside them, a README, are not inputs). The
-    /// kind is the folder's name when byFolder, else the file's suffix.
-    static void addRows(const QDir& root, const QString& label, bool byFolder)
+    /// A row per file in the kind folders of root (files beside them, a README, are not inputs).
+    static void addRows(const QDir& root, const QString& label)
     {
-        for (const QFileInfo& folder : root.entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
-            if (!byFolder && folder.fileName() == QLatin1String("fuzzed"))
-                continue;
-            QDirIterator it(folder.filePath(), QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
+        for (const QFileInfo& kind : root.entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
+            QDirIterator it(kind.filePath(), QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
             QStringList files;
             while (it.hasNext())
                 files << it.next();
             files.sort();
             for (const QString& file : files)
                 QTest::newRow(qPrintable(label + QLatin1Char('/') + root.relativeFilePath(file)))
-                    << (byFolder ? folder.fileName() : kindOfSuffix(QFileInfo(file).suffix())) << file;
+                    << kind.fileName() << file;
         }
-    }
-
-    static QString kindOfSuffix(const QString& suffix)
-    {
-        const QString s = suffix.toLower();
-        if (s == QLatin1String("celform"))
-            return QStringLiteral("project");
-        if (s == QLatin1String("jpeg"))
-            return QStringLiteral("jpg");
-        if (s == QLatin1String("tiff"))
-            return QStringLiteral("tif");
-        return s;
     }
 
 private slots:
@@ -60,12 +46,8 @@ private slots:
         QTest::addColumn<QString>("kind");
         QTest::addColumn<QString>("path");
         const QString data = QStringLiteral(CELFORM_TEST_DATA_DIR "/");
-        // Seeds and fuzzers' findings sit in a folder named after their kind; the handcrafted
-        // regressions (cli/, image/, mesh/, project/) are sorted by subject, so their suffix names it.
-        addRows(QDir(data + QStringLiteral("fuzz-corpus")), QStringLiteral("fuzz-corpus"), true);
-        addRows(
-            QDir(data + QStringLiteral("fuzz-regressions/fuzzed")), QStringLiteral("fuzz-regressions/fuzzed"), true);
-        addRows(QDir(data + QStringLiteral("fuzz-regressions")), QStringLiteral("fuzz-regressions"), false);
+        addRows(QDir(data + QStringLiteral("fuzz-corpus")), QStringLiteral("fuzz-corpus"));
+        addRows(QDir(data + QStringLiteral("fuzz-regressions/fuzzed")), QStringLiteral("fuzz-regressions/fuzzed"));
     }
 
     void replay()
@@ -73,8 +55,7 @@ private slots:
         QFETCH(QString, kind);
         QFETCH(QString, path);
         QVERIFY2(kinds().contains(kind),
-            qPrintable(QStringLiteral("unknown kind “%1” (a folder or a suffix); the kinds are %2")
-                           .arg(kind, kinds().join(", "))));
+            qPrintable(QStringLiteral("unknown kind folder “%1”; the kinds are %2").arg(kind, kinds().join(", "))));
         QFile file(path);
         QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(file.errorString()));
         const Outcome outcome = feed(kind, file.readAll());

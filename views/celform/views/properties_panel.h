@@ -10,11 +10,14 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <optional>
+
 #include <functional>
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QSpinBox;
 class QFormLayout;
 class QGroupBox;
 class QLabel;
@@ -82,6 +85,7 @@ private:
     QPushButton* m_solve;
     QPushButton* m_clearPoints;
     QLabel* m_matchStatus;
+    std::optional<double> m_lastSolveError; ///< RMS reprojection error of the last Solve Camera, pixels
     QCheckBox* m_enabled;
     QComboBox* m_linkedDrawing;
     QPushButton* m_editKey;
@@ -89,6 +93,10 @@ private:
 
     QGroupBox* m_brushBox;
     QDoubleSpinBox* m_radius;
+    QSpinBox* m_pixelRadius;
+    QComboBox* m_radiusUnit;
+    QComboBox* m_falloff;
+    QDoubleSpinBox* m_strength;
     QComboBox* m_brushMode;
     QCheckBox* m_mirror;
 

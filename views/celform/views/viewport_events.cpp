@@ -1,6 +1,6 @@
 // The viewport's pointer and key events: Maya-style navigation (Alt+left orbit, Alt+middle pan,
-// Alt+right dolly, middle-button equivalents for tablets, the wheel), the light gizmo's Ctrl+drag,
-// and every other left-button drag handed to the active tool.
+// Alt+right dolly) or Blender's (middle orbit, Shift+middle pan, Ctrl+middle dolly), the wheel, the light gizmo's
+// Ctrl+drag, and every other left-button drag handed to the active tool.
 #include "celform/views/viewport.h"
 
 #include "celform/views/tools/viewport_tool.h"
@@ -16,6 +16,7 @@ namespace celform::views {
 namespace {
 
 constexpr double kOrbitDegreesPerPixel = 0.4;
+constexpr double kRollSnapDegrees = 15.0;
 constexpr double kDollyPerPixel = 0.005; // exp(-kDollyPerPixel * pixels)
 constexpr double kDollyPerWheelNotch = 0.85; // factor per 120 units of wheel angle
 
@@ -38,7 +39,7 @@ void Viewport::mousePressEvent(QMouseEvent* event)
         tool = m_lightTool.get();
     } else if ((mods & Qt::AltModifier) && (mods & Qt::ShiftModifier) && button == Qt::LeftButton) {
         drag = Drag::Roll; // for matching a drawing's tilt (paper 1, section 3.1.1)
-    } else if (mods & Qt::AltModifier) {
+    } else if ((mods & Qt::AltModifier) && m_navigationStyle == NavigationStyle::Maya) {
         // Maya: Alt + left orbit, middle pan, right dolly.
         if (button == Qt::LeftButton)
             drag = Drag::Orbit;
@@ -67,6 +68,11 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     m_dragTool = tool;
     m_dragButton = button;
     m_lastPos = event->position();
+    m_rollDragged = m_rollApplied = 0.0;
+    if (drag == Drag::Orbit && m_orbitAroundCursor) {
+        if (const auto hit = pickSurface(event->position()))
+            m_camera->setPivot(hit->second);
+    }
     if (drag != Drag::Tool && activeTool())
         activeTool()->navigationStarted();
     switch (drag) {
@@ -111,6 +117,8 @@ void Viewport::endDrag(bool cancelled)
 void Viewport::mouseMoveEvent(QMouseEvent* event)
 {
     if (m_drag == Drag::None) {
+        if (ViewportTool* tool = activeTool(); tool && event->buttons() == Qt::NoButton)
+            tool->hover(event->position());
         QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
@@ -125,7 +133,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         return;
     switch (m_drag) {
     case Drag::Orbit:
-        m_camera->orbit(delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
+        m_camera->orbit(
+            delta.x() * kOrbitDegreesPerPixel * m_orbitSpeed, delta.y() * kOrbitDegreesPerPixel * m_orbitSpeed);
         cameraEdited();
         break;
     case Drag::Pan:
@@ -137,10 +146,19 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         m_camera->dolly(std::exp(-kDollyPerPixel * (delta.x() - delta.y())));
         cameraEdited();
         break;
-    case Drag::Roll:
-        m_camera->roll(delta.x() * kOrbitDegreesPerPixel);
-        cameraEdited();
+    case Drag::Roll: {
+        // Ctrl snaps the drag's roll to 15 degree steps (Blender's and Maya's snapping key).
+        m_rollDragged += delta.x() * kOrbitDegreesPerPixel;
+        const double wanted = (event->modifiers() & Qt::ControlModifier)
+            ? kRollSnapDegrees * std::round(m_rollDragged / kRollSnapDegrees)
+            : m_rollDragged;
+        if (wanted != m_rollApplied) {
+            m_camera->roll(wanted - m_rollApplied);
+            m_rollApplied = wanted;
+            cameraEdited();
+        }
         break;
+    }
     case Drag::Tool:
         if (m_dragTool)
             m_dragTool->move({event->position(), delta, event->modifiers()});
@@ -178,8 +196,34 @@ void Viewport::wheelEvent(QWheelEvent* event)
     event->accept();
 }
 
+void Viewport::leaveEvent(QEvent* event)
+{
+    if (ViewportTool* tool = activeTool())
+        tool->leave();
+    QOpenGLWidget::leaveEvent(event);
+}
+
+bool Viewport::event(QEvent* event)
+{
+    // Keys the tool wants come here before the window's shortcuts (the brush's F, Esc while resizing).
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (ViewportTool* tool = activeTool();
+            tool && m_drag == Drag::None && tool->wantsKey(key->key(), key->modifiers())) {
+            event->accept();
+            return true;
+        }
+    }
+    return QOpenGLWidget::event(event);
+}
+
 void Viewport::keyPressEvent(QKeyEvent* event)
 {
+    if (ViewportTool* tool = activeTool();
+        tool && m_drag == Drag::None && tool->keyPress(event->key(), event->modifiers())) {
+        event->accept();
+        return;
+    }
     if (event->key() == Qt::Key_F && !(event->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
         frameAll();
         event->accept();
@@ -192,8 +236,16 @@ void Viewport::keyPressEvent(QKeyEvent* event)
     }
     // Krita's and Photoshop's brush-size keys.
     if (event->key() == Qt::Key_BracketLeft || event->key() == Qt::Key_BracketRight) {
-        setBrushRadius(m_brushRadius * (event->key() == Qt::Key_BracketRight ? 1.25 : 0.8));
-        emit message(tr("Brush radius %1").arg(m_brushRadius, 0, 'g', 3));
+        const double factor = event->key() == Qt::Key_BracketRight ? 1.25 : 0.8;
+        if (m_brushRadiusUnit == BrushRadiusUnit::Pixels) {
+            setBrushPixelRadius(m_brushPixelRadius * factor);
+            emit message(tr("Brush radius %1 px").arg(m_brushPixelRadius, 0, 'f', 0));
+        } else {
+            setBrushRadius(m_brushRadius * factor);
+            emit message(tr("Brush radius %1").arg(m_brushRadius, 0, 'g', 3));
+        }
+        if (ViewportTool* tool = activeTool())
+            tool->hover(mapFromGlobal(QCursor::pos()));
         event->accept();
         return;
     }

@@ -105,7 +105,8 @@ void AlignTool::activate()
         m_viewport->setCamera(drawing->camera);
     m_stored = m_viewport->camera();
     m_banner->setText(tr("Aligning to “%1”: move the camera until the model matches the drawing "
-                         "(Alt+drag, the wheel, Alt+Shift+drag rolls). Esc finishes.")
+                         "(Alt+drag, the wheel, Alt+Shift+drag rolls, add Ctrl to snap to 15°; numpad 1/3/7 "
+                         "for the axis views; O: outline only). Esc finishes.")
                           .arg(drawing->name));
     placeBanner();
     m_banner->show();
@@ -124,7 +125,8 @@ void AlignTool::deactivate()
 
 void AlignTool::placeBanner()
 {
-    m_banner->setMaximumWidth(std::max(m_viewport->width() - 20, 100));
+    // Clear of the axis gizmo in the top right corner.
+    m_banner->setMaximumWidth(std::max(m_viewport->width() - 200, 100));
     m_banner->setWordWrap(true);
     m_banner->adjustSize();
     m_banner->move((m_viewport->width() - m_banner->width()) / 2, 8);
