@@ -1,6 +1,7 @@
 // The editor window and its file handling.
 #include "main_window.h"
 
+#include "editor_dialogs.h"
 #include "recovery.h"
 #include "review_window.h"
 
@@ -191,6 +192,7 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
     updateTitle();
     updateStatistics();
     updateRecentMenu();
+    installEditorDialogs(this); // render, preferences, keyboard shortcuts (editor_dialogs.cpp)
 }
 
 MainWindow::~MainWindow() = default;

@@ -5,6 +5,7 @@
 
 #include "celform/views/tools/viewport_tool.h"
 #include "celform/views/viewport_camera.h"
+#include "celform/views/viewport_keys.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -180,24 +181,26 @@ void Viewport::wheelEvent(QWheelEvent* event)
 
 void Viewport::keyPressEvent(QKeyEvent* event)
 {
-    if (event->key() == Qt::Key_F && !(event->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
+    // The keys and what they do are listed in one table (viewport_keys.h) for the help too.
+    const auto command = viewportKeyCommand(*event);
+    if (!command) {
+        QOpenGLWidget::keyPressEvent(event);
+        return;
+    }
+    switch (*command) {
+    case ViewportKeyCommand::FrameAll:
         frameAll();
-        event->accept();
-        return;
-    }
-    if (event->key() == Qt::Key_Home) {
+        break;
+    case ViewportKeyCommand::FrontView:
         resetView();
-        event->accept();
-        return;
-    }
-    // Krita's and Photoshop's brush-size keys.
-    if (event->key() == Qt::Key_BracketLeft || event->key() == Qt::Key_BracketRight) {
-        setBrushRadius(m_brushRadius * (event->key() == Qt::Key_BracketRight ? 1.25 : 0.8));
+        break;
+    case ViewportKeyCommand::BrushSmaller:
+    case ViewportKeyCommand::BrushLarger:
+        setBrushRadius(m_brushRadius * (*command == ViewportKeyCommand::BrushLarger ? 1.25 : 0.8));
         emit message(tr("Brush radius %1").arg(m_brushRadius, 0, 'g', 3));
-        event->accept();
-        return;
+        break;
     }
-    QOpenGLWidget::keyPressEvent(event);
+    event->accept();
 }
 
 } // namespace celform::views
