@@ -77,6 +77,23 @@ int runBrush(const Invocation& in)
         step = {model::BrushMotion::Push, parseFloat("push", in.value("push")), 0.0};
     }
     const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    algo::BrushProfile profile;
+    if (in.isSet("falloff")) {
+        const QString curve = in.value("falloff");
+        if (curve == QLatin1String("paper"))
+            profile.falloff = algo::BrushFalloff::Paper;
+        else if (curve == QLatin1String("smooth"))
+            profile.falloff = algo::BrushFalloff::Smooth;
+        else if (curve == QLatin1String("sphere"))
+            profile.falloff = algo::BrushFalloff::Sphere;
+        else
+            throw UsageError{Cli::tr("--falloff must be paper, smooth or sphere, not “%1”").arg(curve)};
+    }
+    if (in.isSet("strength")) {
+        profile.strength = parseNumber("strength", in.value("strength"));
+        if (!(profile.strength > 0.0 && profile.strength <= 1.0))
+            throw UsageError{Cli::tr("--strength must be in (0, 1]")};
+    }
 
     const QString path = in.argument(0);
     auto doc = openProject(path);
@@ -89,7 +106,8 @@ int runBrush(const Invocation& in)
             path, Cli::tr("has no vertex %1 (the base model has %2 vertices)").arg(picked).arg(vertexCount));
     const QString keyName = key->name;
     // One stroke of one step, seen through the key's camera, as the editor's brush tool runs it.
-    model::BrushStroke stroke = doc->beginBrushStroke(key->id, frame, std::uint32_t(picked), radius, key->camera);
+    model::BrushStroke stroke
+        = doc->beginBrushStroke(key->id, frame, std::uint32_t(picked), radius, key->camera, false, profile);
     doc->applyBrushStroke(stroke, step);
     doc->endBrushStroke(stroke);
     doc->saveAs(path);
@@ -161,7 +179,9 @@ std::vector<SubCommand> keyCommands()
             QT_TRANSLATE_NOOP("celform::app::Cli", "Adds a key viewpoint with its key deformation."),
             {{"add", QT_TRANSLATE_NOOP("celform::app::Cli", "The action (add).")}, {"P", kProjectArgument}}, keyOptions,
             runKey},
-        {"brush", {"celform brush P --key N --vertex I --radius R (--drag DX,DY | --push DZ) [--frame F] [--json]"},
+        {"brush",
+            {"celform brush P --key N --vertex I --radius R (--drag DX,DY | --push DZ) [--falloff C] [--strength S] "
+             "[--frame F] [--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Deforms a key with the falloff brush, seen from the key's camera."),
             {{"P", kProjectArgument}},
             {{"key", "N", QT_TRANSLATE_NOOP("celform::app::Cli", "Name of the key to deform.")},
@@ -173,6 +193,10 @@ std::vector<SubCommand> keyCommands()
                 {"push", "DZ",
                     QT_TRANSLATE_NOOP("celform::app::Cli",
                         "Move along the viewing direction (away from the camera), in world units.")},
+                {"falloff", "C",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "Falloff curve: paper ((1 - d/r)^2, the default), smooth or sphere.")},
+                {"strength", "S", QT_TRANSLATE_NOOP("celform::app::Cli", "Strength in (0, 1], 1 by default.")},
                 {"frame", "F", kFrameOption},
                 {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print what moved as JSON.")}},
             runBrush},

@@ -336,8 +336,10 @@ std::int64_t VertexGrid::nearest(const Eigen::Vector3d& point, double maxDistanc
     }
 }
 
-BrushSelection selectForBrush(const Positions& shape, const VertexGrid& grid, std::uint32_t picked, double radius)
+BrushSelection selectForBrush(
+    const Positions& shape, const VertexGrid& grid, std::uint32_t picked, double radius, const BrushProfile& profile)
 {
+    const double strength = std::isfinite(profile.strength) ? std::clamp(profile.strength, 0.0, 1.0) : 1.0;
     assert(Eigen::Index(picked) < shape.rows());
     BrushSelection selection;
     selection.picked = picked;
@@ -352,7 +354,7 @@ BrushSelection selectForBrush(const Positions& shape, const VertexGrid& grid, st
     selection.weights.resize(selection.indices.size());
     for (std::size_t k = 0; k < selection.indices.size(); ++k) {
         const std::uint32_t v = selection.indices[k];
-        const double w = v == picked ? 1.0 : brushFalloff(double(distances[k]), selection.radius);
+        const double w = strength * (v == picked ? 1.0 : brushFalloff(double(distances[k]), selection.radius, profile.falloff));
         if (w <= 0.0)
             continue;
         hasPicked = hasPicked || v == picked;
@@ -366,7 +368,7 @@ BrushSelection selectForBrush(const Positions& shape, const VertexGrid& grid, st
         const auto at = std::lower_bound(selection.indices.begin(), selection.indices.end(), picked);
         const auto offset = at - selection.indices.begin();
         selection.indices.insert(at, picked);
-        selection.weights.insert(selection.weights.begin() + offset, 1.0f);
+        selection.weights.insert(selection.weights.begin() + offset, float(strength));
     }
     return selection;
 }

@@ -6,6 +6,8 @@
 #include "celform/algorithms/mesh_topology.h"
 #include "celform/algorithms/tri_mesh.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -17,6 +19,35 @@ inline double brushFalloff(double d, double r)
 {
     return (r > 0.0 && d < r) ? (1.0 - d / r) * (1.0 - d / r) : 0.0;
 }
+
+/// The falloff curve of the brush. Paper: (1 - d/r)^2, the paper's and the default. Smooth:
+/// Blender's smoothstep of t = 1 - d/r, 3t^2 - 2t^3 (flat at the centre, so a small radius does
+/// not make a spike). Sphere: Blender's sqrt(1 - (d/r)^2), a dome.
+enum class BrushFalloff { Paper, Smooth, Sphere };
+
+inline double brushFalloff(double d, double r, BrushFalloff curve)
+{
+    if (!(r > 0.0 && d < r))
+        return 0.0;
+    const double t = 1.0 - d / r;
+    switch (curve) {
+    case BrushFalloff::Smooth:
+        return t * t * (3.0 - 2.0 * t);
+    case BrushFalloff::Sphere: {
+        const double u = d / r;
+        return std::sqrt(std::max(1.0 - u * u, 0.0));
+    }
+    case BrushFalloff::Paper:
+        break;
+    }
+    return t * t;
+}
+
+/// How the brush weighs what it selects: the falloff curve times the strength (0, 1].
+struct BrushProfile {
+    BrushFalloff falloff = BrushFalloff::Paper;
+    double strength = 1.0;
+};
 
 /// Uniform-grid spatial index over vertex positions for radius queries: occupied cells live in a
 /// hash table, so memory follows the vertices and not the bounding box. With cellSize <= 0 the
@@ -53,7 +84,9 @@ struct BrushSelection {
 /// Selects around vertex `picked` of `shape` (the key's current shape) with the grid built on it:
 /// vertices with 3D distance d < radius, weight brushFalloff(d, radius); the picked vertex is always
 /// selected with weight exactly 1 (also for radius <= 0).
-BrushSelection selectForBrush(const Positions& shape, const VertexGrid& grid, std::uint32_t picked, double radius);
+/// The profile scales every weight by its strength and shapes them by its falloff curve.
+BrushSelection selectForBrush(const Positions& shape, const VertexGrid& grid, std::uint32_t picked, double radius,
+    const BrushProfile& profile = {});
 
 /// An orthonormal camera frame: right, up (image plane) and forward (into the screen).
 struct ImageFrame {

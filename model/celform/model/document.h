@@ -111,10 +111,10 @@ public:
     // --- the falloff brush (paper 1, section 3.1.2): the editor's tool and `celform brush` -----
     /// Starts a stroke on key `id` at `frame`: selects the vertices of the key's shape there
     /// within radius of vertex picked, and with mirrorX their mirror images across x = 0, and
-    /// opens a gesture. The camera gives the image plane. Throws EditRefused (no such key or
-    /// vertex, no base model).
-    BrushStroke beginBrushStroke(
-        ObjectId id, int frame, std::uint32_t picked, double radius, const Camera& camera, bool mirrorX = false);
+    /// opens a gesture. The camera gives the image plane; the profile the falloff curve and
+    /// strength. Throws EditRefused (no such key or vertex, no base model).
+    BrushStroke beginBrushStroke(ObjectId id, int frame, std::uint32_t picked, double radius, const Camera& camera,
+        bool mirrorX = false, const algo::BrushProfile& profile = {});
     /// One step of the stroke: displaces the selection (see BrushStep) and stores it; all steps of
     /// a stroke are one undo step. After the first step nothing is allocated.
     void applyBrushStroke(BrushStroke& stroke, const BrushStep& step);

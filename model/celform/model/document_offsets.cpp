@@ -246,8 +246,8 @@ void Document::displaceKeyVertices(ObjectId id, int frame, const std::vector<std
 
 // --- brush strokes ------------------------------------------------------------------------------------
 
-BrushStroke Document::beginBrushStroke(
-    ObjectId id, int frame, std::uint32_t picked, double radius, const Camera& camera, bool mirrorX)
+BrushStroke Document::beginBrushStroke(ObjectId id, int frame, std::uint32_t picked, double radius,
+    const Camera& camera, bool mirrorX, const algo::BrushProfile& profile)
 {
     const KeyViewpoint* key = m_data.key(id);
     if (!key)
@@ -265,11 +265,11 @@ BrushStroke Document::beginBrushStroke(
     stroke.shape = m_data.keyShape(*key, frame);
     // Paper 1, section 3.1.2: every vertex within r of the picked one, on the shape as it is now.
     const algo::VertexGrid grid(stroke.shape);
-    stroke.selection = algo::selectForBrush(stroke.shape, grid, picked, radius);
+    stroke.selection = algo::selectForBrush(stroke.shape, grid, picked, radius, profile);
     if (mirrorX) {
         const std::int32_t twin = m_data.baseMesh->xMirror()[picked];
         if (twin >= 0 && std::uint32_t(twin) != picked)
-            stroke.mirrorSelection = algo::selectForBrush(stroke.shape, grid, std::uint32_t(twin), radius);
+            stroke.mirrorSelection = algo::selectForBrush(stroke.shape, grid, std::uint32_t(twin), radius, profile);
     }
     // The union of both selections, ascending; where both hold a vertex the first one moves it.
     const auto& a = stroke.selection.indices;

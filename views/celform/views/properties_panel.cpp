@@ -1,6 +1,7 @@
 // Properties of the selection, the tools that work on it, and the blend settings, kept in sync
 // with the document and the viewport.
 #include "celform/views/properties_panel.h"
+#include "celform/views/scrolling_panel.h"
 
 #include <functional>
 
@@ -26,7 +27,10 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSlider>
+#include <QSpinBox>
 #include <QVBoxLayout>
+
+#include <cmath>
 
 namespace celform::views {
 
@@ -34,7 +38,8 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     : QWidget(parent)
     , m_document(document)
 {
-    auto* layout = new QVBoxLayout(this);
+    // Scrolls rather than raising the window's minimum height (a 1366x768 screen must fit it).
+    QVBoxLayout* layout = scrollingPanelLayout(this);
 
     m_selectionBox = new QGroupBox(tr("Selection"), this);
     m_form = new QFormLayout(m_selectionBox);
@@ -135,7 +140,38 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_radius->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
     m_radius->setToolTip(tr("Vertices within this distance of the picked vertex (world units) follow it with the "
                             "falloff (1 − d/r)²; [ and ] in the viewport"));
-    brushForm->addRow(tr("&Radius:"), m_radius);
+    m_pixelRadius = new QSpinBox(m_brushBox);
+    m_pixelRadius->setRange(1, 4096);
+    m_pixelRadius->setSuffix(tr(" px"));
+    m_pixelRadius->setToolTip(tr("The brush circle's radius on screen; the world radius follows the zoom at the "
+                                 "picked point. [ and ] in the viewport, F to resize by dragging"));
+    m_radiusUnit = new QComboBox(m_brushBox);
+    m_radiusUnit->addItem(tr("World units"), int(Viewport::BrushRadiusUnit::World));
+    m_radiusUnit->addItem(tr("Screen pixels"), int(Viewport::BrushRadiusUnit::Pixels));
+    m_radiusUnit->setToolTip(tr("World: the radius stays the same on the model whatever the zoom. Screen: the "
+                                "circle stays the same on screen (Blender's View radius)"));
+    auto* radiusRow = new QWidget(m_brushBox);
+    auto* radiusLayout = new QHBoxLayout(radiusRow);
+    radiusLayout->setContentsMargins(0, 0, 0, 0);
+    radiusLayout->addWidget(m_radius, 1);
+    radiusLayout->addWidget(m_pixelRadius, 1);
+    radiusLayout->addWidget(m_radiusUnit);
+    m_pixelRadius->hide();
+    brushForm->addRow(tr("&Radius:"), radiusRow);
+    m_falloff = new QComboBox(m_brushBox);
+    m_falloff->addItem(tr("Paper (1 − d/r)²"), int(algo::BrushFalloff::Paper));
+    m_falloff->addItem(tr("Smooth"), int(algo::BrushFalloff::Smooth));
+    m_falloff->addItem(tr("Sphere"), int(algo::BrushFalloff::Sphere));
+    m_falloff->setToolTip(tr("How the pull fades from the picked vertex to the radius. Paper: (1 − d/r)², sharp "
+                             "at the centre. Smooth: flat at the centre, no spikes from small radii. Sphere: a dome"));
+    brushForm->addRow(tr("&Falloff:"), m_falloff);
+    m_strength = new QDoubleSpinBox(m_brushBox);
+    m_strength->setRange(0.05, 1.0);
+    m_strength->setSingleStep(0.05);
+    m_strength->setDecimals(2);
+    m_strength->setValue(1.0);
+    m_strength->setToolTip(tr("Share of the cursor's motion the picked vertex follows (1: all of it)"));
+    brushForm->addRow(tr("S&trength:"), m_strength);
     m_brushMode = new QComboBox(m_brushBox);
     m_brushMode->addItem(tr("Move"), int(Viewport::BrushMode::Move));
     m_brushMode->addItem(tr("Smooth"), int(Viewport::BrushMode::Smooth));
@@ -289,6 +325,24 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         if (!m_updating && m_viewport)
             m_viewport->setBrushRadius(r);
     });
+    connect(m_pixelRadius, qOverload<int>(&QSpinBox::valueChanged), this, [this](int px) {
+        if (!m_updating && m_viewport)
+            m_viewport->setBrushPixelRadius(px);
+    });
+    connect(m_radiusUnit, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        const auto unit = Viewport::BrushRadiusUnit(m_radiusUnit->itemData(index).toInt());
+        m_radius->setVisible(unit == Viewport::BrushRadiusUnit::World);
+        m_pixelRadius->setVisible(unit == Viewport::BrushRadiusUnit::Pixels);
+        if (m_viewport)
+            m_viewport->setBrushRadiusUnit(unit);
+    });
+    auto applyProfile = [this] {
+        if (m_viewport)
+            m_viewport->setBrushProfile(
+                {algo::BrushFalloff(m_falloff->currentData().toInt()), m_strength->value()});
+    };
+    connect(m_falloff, qOverload<int>(&QComboBox::currentIndexChanged), this, applyProfile);
+    connect(m_strength, qOverload<double>(&QDoubleSpinBox::valueChanged), this, applyProfile);
     connect(m_brushMode, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
         if (m_viewport)
             m_viewport->setBrushMode(Viewport::BrushMode(m_brushMode->itemData(index).toInt()));
@@ -373,6 +427,11 @@ void PropertiesPanel::setViewport(Viewport* viewport)
         m_radius->setValue(r);
         m_updating = false;
     });
+    connect(viewport, &Viewport::brushPixelRadiusChanged, this, [this](double px) {
+        m_updating = true;
+        m_pixelRadius->setValue(int(std::lround(px)));
+        m_updating = false;
+    });
     connect(viewport, &Viewport::cameraChanged, this, [this] {
         if (m_fov->hasFocus())
             return;
@@ -384,6 +443,7 @@ void PropertiesPanel::setViewport(Viewport* viewport)
     if (m_document->hasMesh())
         viewport->setBrushRadius(0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm());
     m_radius->setValue(viewport->brushRadius());
+    m_pixelRadius->setValue(int(std::lround(viewport->brushPixelRadius())));
     refreshTools();
 }
 

@@ -15,6 +15,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QSpinBox;
 class QFormLayout;
 class QGroupBox;
 class QLabel;
@@ -89,6 +90,10 @@ private:
 
     QGroupBox* m_brushBox;
     QDoubleSpinBox* m_radius;
+    QSpinBox* m_pixelRadius;
+    QComboBox* m_radiusUnit;
+    QComboBox* m_falloff;
+    QDoubleSpinBox* m_strength;
     QComboBox* m_brushMode;
     QCheckBox* m_mirror;
 

@@ -12,6 +12,7 @@
 #include "celform/views/tools/highlight_tool.h"
 #include "celform/views/tools/light_tool.h"
 #include "celform/views/tools/patch_tool.h"
+#include "celform/views/axis_gizmo.h"
 #include "celform/views/viewport_camera.h"
 #include "celform/views/viewport_compositor.h"
 #include "celform/views/viewport_scene.h"
@@ -44,6 +45,8 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
 {
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(64, 64);
+    m_axisGizmo = new AxisGizmo(this);
+    setMouseTracking(true); // hover feedback: the brush circle
     setAccessibleName(tr("3D viewport"));
     setWhatsThis(tr("<p>The 3D view of the model.</p>"
                     "<p>Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. "
@@ -294,6 +297,22 @@ void Viewport::setViewPreset(ViewPreset preset)
     cameraEdited();
 }
 
+void Viewport::setOrbitMode(OrbitMode mode)
+{
+    m_camera->setTrackball(mode == OrbitMode::Trackball);
+}
+
+OrbitMode Viewport::orbitMode() const
+{
+    return m_camera->isTrackball() ? OrbitMode::Trackball : OrbitMode::Turntable;
+}
+
+void Viewport::setOrbitSpeed(double factor)
+{
+    if (std::isfinite(factor) && factor > 0.0)
+        m_orbitSpeed = factor;
+}
+
 void Viewport::cameraEdited()
 {
     if (m_preview)
@@ -497,6 +516,19 @@ void Viewport::setBrushRadius(double radius)
         return;
     m_brushRadius = radius;
     emit brushRadiusChanged(radius);
+}
+
+void Viewport::setBrushPixelRadius(double pixels)
+{
+    if (!(pixels > 0.0) || !std::isfinite(pixels) || pixels == m_brushPixelRadius)
+        return;
+    m_brushPixelRadius = std::clamp(pixels, 1.0, 4096.0);
+    emit brushPixelRadiusChanged(m_brushPixelRadius);
+}
+
+BrushTool* Viewport::brushTool() const
+{
+    return static_cast<BrushTool*>(m_tools.at(Tool::Brush).get());
 }
 
 void Viewport::setPatchTarget(const QString& name)
@@ -772,6 +804,7 @@ void Viewport::resizeGL(int w, int h)
     const qreal dpr = devicePixelRatioF();
     m_scene->window()->SetSize(qRound(w * dpr), qRound(h * dpr));
     m_camera->setWidgetSize(w, h, dpr);
+    m_axisGizmo->move(width() - m_axisGizmo->width() - 6, 6);
     if (AlignTool* align = alignTool())
         align->resized();
     refreshFrameScale();

@@ -33,11 +33,16 @@ class Document;
 namespace celform::views {
 
 class AlignTool;
+class AxisGizmo;
+class BrushTool;
 class DisplayedShape;
 class ViewportCamera;
 class ViewportCompositor;
 class ViewportScene;
 class ViewportTool;
+
+enum class NavigationStyle { Maya, Blender };
+enum class OrbitMode { Turntable, Trackball };
 
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
@@ -147,6 +152,18 @@ public:
     [[nodiscard]] double brushRadius() const { return m_brushRadius; }
     void setBrushMode(BrushMode mode) { m_brushMode = mode; }
     [[nodiscard]] BrushMode brushMode() const { return m_brushMode; }
+    /// The radius in world units (setBrushRadius) or in widget pixels, as Blender's "View"
+    /// radius: the same size on screen whatever the zoom.
+    enum class BrushRadiusUnit { World, Pixels };
+    void setBrushRadiusUnit(BrushRadiusUnit unit) { m_brushRadiusUnit = unit; }
+    [[nodiscard]] BrushRadiusUnit brushRadiusUnit() const { return m_brushRadiusUnit; }
+    void setBrushPixelRadius(double pixels);
+    [[nodiscard]] double brushPixelRadius() const { return m_brushPixelRadius; }
+    /// The falloff curve and strength of the next strokes.
+    void setBrushProfile(const algo::BrushProfile& profile) { m_brushProfile = profile; }
+    [[nodiscard]] const algo::BrushProfile& brushProfile() const { return m_brushProfile; }
+    /// The brush tool (its circle under the cursor, F-resize state), for tests.
+    [[nodiscard]] BrushTool* brushTool() const;
     void setBrushMirrorX(bool on) { m_brushMirror = on; }
     [[nodiscard]] bool brushMirrorX() const { return m_brushMirror; }
     /// The face set (highlight patch) Tool::Patch paints into; created by the first stroke when
@@ -192,6 +209,22 @@ public:
     enum class ViewPreset { Front, Back, Right, Left, Top, Bottom };
     void setViewPreset(ViewPreset preset);
 
+    // --- navigation preferences (Edit > Preferences) --------------------------------------------
+    /// Maya: Alt + left orbit, Alt + middle pan, Alt + right dolly (and the middle-button
+    /// equivalents). Blender: middle orbit, Shift + middle pan, Ctrl + middle dolly; Alt + left
+    /// drag goes to the tool.
+    void setNavigationStyle(NavigationStyle style) { m_navigationStyle = style; }
+    [[nodiscard]] NavigationStyle navigationStyle() const { return m_navigationStyle; }
+    void setOrbitMode(OrbitMode mode);
+    [[nodiscard]] OrbitMode orbitMode() const;
+    /// Multiplies the orbit's degrees per pixel (1: 0.4 degrees per pixel).
+    void setOrbitSpeed(double factor);
+    [[nodiscard]] double orbitSpeed() const { return m_orbitSpeed; }
+    /// Orbit turns around the surface point under the cursor where the drag starts (Maya's
+    /// tumble pivot); elsewhere, and when off, around the framed centre moved by panning.
+    void setOrbitAroundCursor(bool on) { m_orbitAroundCursor = on; }
+    [[nodiscard]] bool orbitAroundCursor() const { return m_orbitAroundCursor; }
+
 public slots:
     /// Keeps the view direction and fits the whole model in the view.
     void frameAll();
@@ -202,6 +235,7 @@ signals:
     /// Emitted after every navigation step and every programmatic camera change.
     void cameraChanged();
     void brushRadiusChanged(double radius);
+    void brushPixelRadiusChanged(double pixels);
     void toolChanged(celform::views::Viewport::Tool tool);
     /// A message for the status bar (brush refused, nothing picked, ...).
     void message(const QString& text);
@@ -218,6 +252,8 @@ protected:
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+    bool event(QEvent* event) override;
 
 private:
     friend class AlignTool;
@@ -254,6 +290,7 @@ private:
     std::unique_ptr<DisplayedShape> m_shape;
     std::map<Tool, std::unique_ptr<ViewportTool>> m_tools;
     std::unique_ptr<ViewportTool> m_lightTool; ///< Ctrl+drag on the gizmo, whatever the tool
+    AxisGizmo* m_axisGizmo = nullptr; ///< child widget, top right
 
     Drag m_drag = Drag::None;
     QTimer m_wheelBurst; ///< a pause in wheel ticks ends their navigation gesture
@@ -275,12 +312,19 @@ private:
 
     Tool m_tool = Tool::Navigate;
     double m_brushRadius = 0.1;
+    double m_brushPixelRadius = 50.0;
+    BrushRadiusUnit m_brushRadiusUnit = BrushRadiusUnit::World;
+    algo::BrushProfile m_brushProfile;
     BrushMode m_brushMode = BrushMode::Move;
     bool m_brushMirror = false;
     QString m_patchTarget;
     model::ObjectId m_highlightTarget = 0;
     bool m_shadingEnabled = true;
     bool m_lightGizmoVisible = true;
+
+    NavigationStyle m_navigationStyle = NavigationStyle::Maya;
+    double m_orbitSpeed = 1.0;
+    bool m_orbitAroundCursor = false;
 
     algo::StereoOutput m_stereo = algo::StereoOutput::Off;
     std::optional<model::StereoLook> m_stereoLook;

@@ -173,6 +173,22 @@ void ViewportCamera::orbit(double yawDegrees, double pitchDegrees)
     const Eigen::Vector3d forward = (target - eye).normalized();
     const Eigen::Vector3d worldUp = Eigen::Vector3d::UnitY();
 
+    if (m_trackball) {
+        const Eigen::Vector3d right = forward.cross(up).normalized();
+        const Eigen::Vector3d trueUp = right.cross(forward);
+        const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(radians(-pitchDegrees), right)
+            * Eigen::AngleAxisd(radians(-yawDegrees), trueUp))
+                                             .toRotationMatrix();
+        const Eigen::Vector3d newEye = m_pivot + rotation * (eye - m_pivot);
+        const Eigen::Vector3d newTarget = m_pivot + rotation * (target - m_pivot);
+        const Eigen::Vector3d newUp = rotation * trueUp;
+        m_vtk->SetPosition(newEye.data());
+        m_vtk->SetFocalPoint(newTarget.data());
+        m_vtk->SetViewUp(newUp.data());
+        edited();
+        return;
+    }
+
     // Turntable: yaw about the world up axis, then pitch about the camera's horizontal axis,
     // clamped by elevation so the view never rolls over the pole.
     const double elevation = std::asin(std::clamp(-forward.dot(worldUp), -1.0, 1.0)) * 180.0 / kPi;

@@ -44,7 +44,11 @@ public:
     /// Whether the camera is as frameAll() left it (not moved since): resizes keep it framed.
     [[nodiscard]] bool isFramed() const { return m_framed; }
 
+    /// Turntable (the default): yaw about the world's up axis, pitch clamped short of the poles.
+    /// Trackball: yaw about the view's up and pitch about its right, free to roll over.
     void orbit(double yawDegrees, double pitchDegrees);
+    void setTrackball(bool on) { m_trackball = on; }
+    [[nodiscard]] bool isTrackball() const { return m_trackball; }
     void pan(const QPointF& deltaPixels);
     void dolly(double factor);
     void roll(double degrees);
@@ -53,6 +57,8 @@ public:
 
     /// The point orbit turns around (the framed centre, moved by panning).
     [[nodiscard]] Eigen::Vector3d pivot() const { return m_pivot; }
+    /// Maya's tumble pivot: orbit turns around this point from now on (the view does not move).
+    void setPivot(const Eigen::Vector3d& pivot) { m_pivot = pivot; }
     /// World units per logical pixel at a point's depth.
     [[nodiscard]] double worldUnitsPerPixel(const Eigen::Vector3d& point) const;
     /// A model point in widget coordinates (logical pixels, y down).
@@ -70,6 +76,7 @@ private:
     Eigen::Vector3d m_pivot{0.0, 0.0, 0.0};
     double m_frameScale = 1.0;
     bool m_framed = false;
+    bool m_trackball = false;
     int m_width = 1;
     int m_height = 1;
     double m_dpr = 1.0;

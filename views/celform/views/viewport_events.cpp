@@ -1,5 +1,5 @@
 // The viewport's pointer and key events: Maya-style navigation (Alt+left orbit, Alt+middle pan,
-// Alt+right dolly, middle-button equivalents for tablets, the wheel), the light gizmo's Ctrl+drag,
+// Alt+right dolly) or Blender's (middle orbit, Shift+middle pan, Ctrl+middle dolly), the wheel, the light gizmo's Ctrl+drag,
 // and every other left-button drag handed to the active tool.
 #include "celform/views/viewport.h"
 
@@ -39,7 +39,7 @@ void Viewport::mousePressEvent(QMouseEvent* event)
         tool = m_lightTool.get();
     } else if ((mods & Qt::AltModifier) && (mods & Qt::ShiftModifier) && button == Qt::LeftButton) {
         drag = Drag::Roll; // for matching a drawing's tilt (paper 1, section 3.1.1)
-    } else if (mods & Qt::AltModifier) {
+    } else if ((mods & Qt::AltModifier) && m_navigationStyle == NavigationStyle::Maya) {
         // Maya: Alt + left orbit, middle pan, right dolly.
         if (button == Qt::LeftButton)
             drag = Drag::Orbit;
@@ -68,6 +68,10 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     m_dragTool = tool;
     m_dragButton = button;
     m_lastPos = event->position();
+    if (drag == Drag::Orbit && m_orbitAroundCursor) {
+        if (const auto hit = pickSurface(event->position()))
+            m_camera->setPivot(hit->second);
+    }
     if (drag != Drag::Tool && activeTool())
         activeTool()->navigationStarted();
     switch (drag) {
@@ -112,6 +116,8 @@ void Viewport::endDrag(bool cancelled)
 void Viewport::mouseMoveEvent(QMouseEvent* event)
 {
     if (m_drag == Drag::None) {
+        if (ViewportTool* tool = activeTool(); tool && event->buttons() == Qt::NoButton)
+            tool->hover(event->position());
         QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
@@ -126,7 +132,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         return;
     switch (m_drag) {
     case Drag::Orbit:
-        m_camera->orbit(delta.x() * kOrbitDegreesPerPixel, delta.y() * kOrbitDegreesPerPixel);
+        m_camera->orbit(delta.x() * kOrbitDegreesPerPixel * m_orbitSpeed,
+            delta.y() * kOrbitDegreesPerPixel * m_orbitSpeed);
         cameraEdited();
         break;
     case Drag::Pan:
@@ -179,8 +186,33 @@ void Viewport::wheelEvent(QWheelEvent* event)
     event->accept();
 }
 
+void Viewport::leaveEvent(QEvent* event)
+{
+    if (ViewportTool* tool = activeTool())
+        tool->leave();
+    QOpenGLWidget::leaveEvent(event);
+}
+
+bool Viewport::event(QEvent* event)
+{
+    // Keys the tool wants come here before the window's shortcuts (the brush's F, Esc while resizing).
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (ViewportTool* tool = activeTool(); tool && m_drag == Drag::None && tool->wantsKey(key->key(), key->modifiers())) {
+            event->accept();
+            return true;
+        }
+    }
+    return QOpenGLWidget::event(event);
+}
+
 void Viewport::keyPressEvent(QKeyEvent* event)
 {
+    if (ViewportTool* tool = activeTool();
+        tool && m_drag == Drag::None && tool->keyPress(event->key(), event->modifiers())) {
+        event->accept();
+        return;
+    }
     // The keys and what they do are listed in one table (viewport_keys.h) for the help too.
     const auto command = viewportKeyCommand(*event);
     if (!command) {
@@ -195,10 +227,20 @@ void Viewport::keyPressEvent(QKeyEvent* event)
         resetView();
         break;
     case ViewportKeyCommand::BrushSmaller:
-    case ViewportKeyCommand::BrushLarger:
-        setBrushRadius(m_brushRadius * (*command == ViewportKeyCommand::BrushLarger ? 1.25 : 0.8));
-        emit message(tr("Brush radius %1").arg(m_brushRadius, 0, 'g', 3));
+    case ViewportKeyCommand::BrushLarger: {
+        // Krita's and Photoshop's brush-size keys.
+        const double factor = *command == ViewportKeyCommand::BrushLarger ? 1.25 : 0.8;
+        if (m_brushRadiusUnit == BrushRadiusUnit::Pixels) {
+            setBrushPixelRadius(m_brushPixelRadius * factor);
+            emit message(tr("Brush radius %1 px").arg(m_brushPixelRadius, 0, 'f', 0));
+        } else {
+            setBrushRadius(m_brushRadius * factor);
+            emit message(tr("Brush radius %1").arg(m_brushRadius, 0, 'g', 3));
+        }
+        if (ViewportTool* tool = activeTool())
+            tool->hover(mapFromGlobal(QCursor::pos()));
         break;
+    }
     }
     event->accept();
 }

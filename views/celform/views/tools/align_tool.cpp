@@ -124,7 +124,8 @@ void AlignTool::deactivate()
 
 void AlignTool::placeBanner()
 {
-    m_banner->setMaximumWidth(std::max(m_viewport->width() - 20, 100));
+    // Clear of the axis gizmo in the top right corner.
+    m_banner->setMaximumWidth(std::max(m_viewport->width() - 200, 100));
     m_banner->setWordWrap(true);
     m_banner->adjustSize();
     m_banner->move((m_viewport->width() - m_banner->width()) / 2, 8);

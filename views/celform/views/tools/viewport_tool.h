@@ -49,6 +49,13 @@ public:
     virtual void navigationStarted() { }
     virtual void navigationEnded() { }
     [[nodiscard]] virtual Qt::CursorShape cursor() const { return Qt::CrossCursor; }
+    /// The pointer moves over the viewport with no button held (hover feedback), or leaves it.
+    virtual void hover(const QPointF& /*position*/) { }
+    virtual void leave() { }
+    /// A key the tool takes before the window's shortcuts (F resizes the brush, as in Blender);
+    /// keyPress then handles it and returns whether it did.
+    [[nodiscard]] virtual bool wantsKey(int /*key*/, Qt::KeyboardModifiers /*modifiers*/) const { return false; }
+    virtual bool keyPress(int /*key*/, Qt::KeyboardModifiers /*modifiers*/) { return false; }
 
 protected:
     /// Opens a document gesture for the drag: until closeGesture(), the tool's edits of one
