@@ -2,6 +2,8 @@
 #include "editor_dialogs.h"
 
 #include "main_window.h"
+#include "preferences.h"
+#include "preferences_dialog.h"
 #include "render_dialog.h"
 #include "render_runner.h"
 #include "shortcuts.h"
@@ -102,6 +104,32 @@ void installEditorDialogs(MainWindow* window)
         const int at = int(items.indexOf(window->action(QStringLiteral("actionNavigationHelp"))));
         help->insertAction(items.value(at + 1), shortcuts);
     }
+
+    QAction* preferences = makeAction(window, QStringLiteral("actionPreferences"), MainWindow::tr("&Preferences…"),
+        MainWindow::tr("Navigation, autosave, undo steps, language, new projects' look and keyboard shortcuts"));
+    preferences->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Comma));
+    preferences->setMenuRole(QAction::PreferencesRole);
+    if (QMenu* edit = menuHolding(window, "actionUndo")) {
+        edit->addSeparator();
+        edit->addAction(preferences);
+    }
+    // Undo and Redo change their text with the history: the shortcut lists use a fixed name.
+    for (const auto& [name, text] :
+        {std::pair{"actionUndo", MainWindow::tr("Undo")}, {"actionRedo", MainWindow::tr("Redo")}})
+        if (QAction* action = window->action(QString::fromLatin1(name)))
+            action->setProperty("shortcutName", text);
+
+    // Last, so that every action's default keys are noted before the user's are applied.
+    auto* applier = new PreferencesApplier(window);
+    QObject::connect(preferences, &QAction::triggered, window, [window, applier] {
+        auto* dialog = window->findChild<PreferencesDialog*>();
+        if (!dialog) {
+            dialog = new PreferencesDialog(applier, window, window);
+            dialog->setAttribute(Qt::WA_DeleteOnClose);
+        }
+        dialog->open();
+        dialog->raise();
+    });
 }
 
 } // namespace celform::app

@@ -2,6 +2,7 @@
 #include "main_window.h"
 
 #include "editor_dialogs.h"
+#include "preferences.h"
 #include "recovery.h"
 #include "review_window.h"
 
@@ -617,7 +618,9 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
     }
     auto mesh = std::make_shared<const algo::TriMesh>(std::move(outcome.value->mesh));
     if (asNewProject) {
-        m_document->reset(model::newProject(std::move(mesh), QFileInfo(path).fileName()));
+        model::ProjectData data = model::newProject(std::move(mesh), QFileInfo(path).fileName());
+        data.look.style = Preferences::load().newProjectStyle; // Edit > Preferences
+        m_document->reset(std::move(data));
     } else {
         try {
             m_document->setBaseMesh(std::move(mesh), QFileInfo(path).fileName());

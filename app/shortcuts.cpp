@@ -12,6 +12,7 @@
 #include <QWidget>
 
 #include <algorithm>
+#include <iterator>
 
 namespace celform::app {
 namespace {
@@ -106,11 +107,16 @@ std::vector<ShortcutEntry> collectShortcuts(const QWidget* window, bool withoutK
             continue;
         entries.push_back({actionGroup(action), actionName(action), action->toolTip(), keys, action});
     }
-    // The viewport's own keys reach it only when no action of the window takes them first.
+    // The viewport's own keys reach it only when no action of the window takes them first; a
+    // tool's keys go to it before the window's shortcuts while the tool is on.
     const QString viewport = ShortcutText::tr("Viewport");
-    for (const views::ViewportKeyBinding& binding : views::viewportKeyBindings())
-        if (!taken.contains(binding.sequence()))
-            entries.push_back({viewport, binding.description(), QString(), {binding.sequence()}, nullptr});
+    const QString brush = ShortcutText::tr("Viewport ▸ Brush tool");
+    for (const views::ViewportKeyBinding& binding : views::viewportKeyBindings()) {
+        const bool tool = binding.scope != views::ViewportKeyBinding::Scope::Viewport;
+        if (tool || !taken.contains(binding.sequence()))
+            entries.push_back(
+                {tool ? brush : viewport, binding.description(), QString(), {binding.sequence()}, nullptr});
+    }
     const QString review = ShortcutText::tr("Stereo Review");
     for (const ReviewWindow::KeyBinding& binding : ReviewWindow::keyBindings()) {
         const QString text = binding.description();
@@ -152,27 +158,32 @@ void applyShortcuts(const QWidget* window, const ShortcutOverrides& overrides)
     }
 }
 
-QStringList shortcutConflicts(const QWidget* window, const QMap<const QAction*, QList<QKeySequence>>& keysByAction)
+QString ShortcutConflict::text() const
 {
-    QStringList conflicts;
-    const std::vector<QAction*> actions = shortcutActions(window);
-    for (std::size_t i = 0; i < actions.size(); ++i)
-        for (const QKeySequence& key : keysOf(actions[i], keysByAction)) {
-            QStringList users;
-            // Reported once, at the first action that has the key.
-            bool first = true;
-            for (std::size_t j = 0; j < actions.size(); ++j) {
-                if (j == i || !keysOf(actions[j], keysByAction).contains(key))
-                    continue;
-                if (j < i)
-                    first = false;
-                users << QStringLiteral("“%1”").arg(actionName(actions[j]));
-            }
-            if (first && !users.isEmpty())
-                conflicts << ShortcutText::tr("%1 is given to “%2” and to %3.")
-                                 .arg(keyText(key), actionName(actions[i]),
-                                     users.join(ShortcutText::tr(" and ", "between action names")));
+    QStringList others;
+    for (std::size_t i = 1; i < actions.size(); ++i)
+        others << QStringLiteral("“%1”").arg(actionName(actions[i]));
+    return ShortcutText::tr("%1 is given to “%2” and to %3.")
+        .arg(keyText(key), actionName(actions.front()), others.join(ShortcutText::tr(" and ", "between action names")));
+}
+
+std::vector<ShortcutConflict> shortcutConflicts(
+    const QWidget* window, const QMap<const QAction*, QList<QKeySequence>>& keysByAction)
+{
+    // Keys in the order their first action comes, each with the actions that have it.
+    std::vector<ShortcutConflict> byKey;
+    for (const QAction* action : shortcutActions(window))
+        for (const QKeySequence& key : keysOf(action, keysByAction)) {
+            auto it
+                = std::find_if(byKey.begin(), byKey.end(), [&key](const ShortcutConflict& c) { return c.key == key; });
+            if (it == byKey.end())
+                byKey.push_back({key, {action}});
+            else if (std::find(it->actions.begin(), it->actions.end(), action) == it->actions.end())
+                it->actions.push_back(action);
         }
+    std::vector<ShortcutConflict> conflicts;
+    std::copy_if(byKey.begin(), byKey.end(), std::back_inserter(conflicts),
+        [](const ShortcutConflict& c) { return c.actions.size() > 1; });
     return conflicts;
 }
 
@@ -185,7 +196,7 @@ QStringList shadowedViewportKeys(const QWidget* window, const QMap<const QAction
             if (defaults.contains(key))
                 continue;
             for (const views::ViewportKeyBinding& binding : views::viewportKeyBindings())
-                if (binding.sequence() == key)
+                if (binding.scope == views::ViewportKeyBinding::Scope::Viewport && binding.sequence() == key)
                     notes << ShortcutText::tr("%1 is the viewport's key for “%2”: “%3” takes it first.")
                                  .arg(keyText(key), binding.description(), actionName(action));
         }

@@ -53,9 +53,16 @@ void applyShortcuts(const QWidget* window, const ShortcutOverrides& overrides);
 /// The keys an action has with the given user key: that key first, then the defaults' other keys.
 [[nodiscard]] QList<QKeySequence> keysWith(const QAction* action, const QKeySequence& primary);
 
-/// Sentences naming each key given to two actions, for the actions' keys as they would be
-/// (keysByAction; actions not in it keep theirs); empty when there are none.
-[[nodiscard]] QStringList shortcutConflicts(
+/// A key given to several actions: Qt runs none of them (an ambiguous shortcut).
+struct ShortcutConflict {
+    QKeySequence key;
+    std::vector<const QAction*> actions; ///< two or more, in the window's order
+    /// "Ctrl+S is given to “Save” and to “Render Image”."
+    [[nodiscard]] QString text() const;
+};
+/// The keys given to several actions, for the actions' keys as they would be (keysByAction;
+/// actions not in it keep theirs); empty when there are none.
+[[nodiscard]] std::vector<ShortcutConflict> shortcutConflicts(
     const QWidget* window, const QMap<const QAction*, QList<QKeySequence>>& keysByAction);
 /// Sentences naming each key the viewport handles itself (brush size, ...) that an action would
 /// take from it, other than the action's default keys (F and Home do the same either way).

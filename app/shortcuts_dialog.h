@@ -5,11 +5,12 @@
 
 #include <QDialog>
 
-class QLabel;
 class QLineEdit;
 class QTreeWidget;
 
 namespace celform::app {
+
+class ShortcutList;
 
 class ShortcutsDialog : public QDialog {
     Q_OBJECT
@@ -17,8 +18,8 @@ public:
     /// The shortcuts of window (the main window).
     explicit ShortcutsDialog(QWidget* window, QWidget* parent = nullptr);
 
-    [[nodiscard]] QLineEdit* filterEdit() const { return m_filter; }
-    [[nodiscard]] QTreeWidget* tree() const { return m_tree; }
+    [[nodiscard]] QLineEdit* filterEdit() const;
+    [[nodiscard]] QTreeWidget* tree() const;
     /// Shortcuts listed now (after the filter), not counting the group headings.
     [[nodiscard]] int visibleCount() const;
     /// The names of the shortcuts listed now with their keys ("Save As: Ctrl+Shift+S").
@@ -31,9 +32,7 @@ public slots:
 
 private:
     QWidget* m_window;
-    QLineEdit* m_filter = nullptr;
-    QTreeWidget* m_tree = nullptr;
-    QLabel* m_empty = nullptr;
+    ShortcutList* m_list;
 };
 
 } // namespace celform::app

@@ -7,6 +7,8 @@
 #include "window_test_support.h"
 
 #include "main_window.h"
+#include "preferences.h"
+#include "preferences_dialog.h"
 #include "recovery.h"
 #include "render_dialog.h"
 #include "render_runner.h"
@@ -15,6 +17,7 @@
 #include "shortcuts_dialog.h"
 
 #include "celform/model/document.h"
+#include "celform/model/project_file.h"
 #include "celform/views/viewport.h"
 #include "celform/views/viewport_keys.h"
 
@@ -34,6 +37,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTreeWidget>
@@ -97,6 +101,19 @@ app::RenderDialog* openRenderDialog(app::MainWindow& window, const char* actionN
     child<QSpinBox>(dialog, "renderWidth")->setValue(size.width());
     child<QSpinBox>(dialog, "renderHeight")->setValue(size.height());
     return dialog;
+}
+
+/// Opens Edit > Preferences.
+app::PreferencesDialog* openPreferences(app::MainWindow& window)
+{
+    window.action(QStringLiteral("actionPreferences"))->trigger();
+    auto* dialog = window.findChild<app::PreferencesDialog*>();
+    return dialog && QTest::qWaitForWindowExposed(dialog) ? dialog : nullptr;
+}
+
+void choose(QComboBox* combo, int data)
+{
+    combo->setCurrentIndex(combo->findData(data));
 }
 
 /// The file names in a folder, hidden ones (temporary files) included.
@@ -319,9 +336,10 @@ private slots:
         for (QAction* action : app::shortcutActions(&window))
             if (!action->shortcut().isEmpty())
                 QVERIFY2(all.contains(entryText(action)), qPrintable(entryText(action)));
-        for (const char* expected : {"Brush radius larger (× 1.25): ]", "Brush radius smaller (× 0.8): [",
-                 "Preview View-Dependent Shape: P", "Create Key from View: Ctrl+K", "Navigate Only: Esc",
-                 "Stereo Review: F11", "Turntable on / off: Space"})
+        for (const char* expected :
+            {"Brush radius larger (× 1.25): ]", "Brush radius smaller (× 0.8): [", "Preview View-Dependent Shape: P",
+                "Create Key from View: Ctrl+K", "Navigate Only: Esc", "Stereo Review: F11", "Turntable on / off: Space",
+                "Resize the brush with the mouse (click or Enter keeps, Esc cancels): F"})
             QVERIFY2(all.contains(QString::fromUtf8(expected)), expected);
 
         test::keepScreenshot(dialog, "shortcuts");
@@ -361,6 +379,218 @@ private slots:
         QKeyEvent s(QEvent::KeyPress, Qt::Key_S, Qt::NoModifier);
         QApplication::sendEvent(review.viewport(), &s);
         QCOMPARE(review.viewport()->stereo(), app::ReviewWindow::nextOutput(before));
+    }
+
+    // --- Edit > Preferences ----------------------------------------------------------------------
+
+    void preferencesApplyToTheLiveWindowAndAreStored()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
+        QUndoStack* stack = window.document()->undoStack();
+        QCOMPARE(stack->count(), 0);
+        // The defaults: Maya navigation, turntable orbit, no undo limit.
+        QCOMPARE(window.viewport()->navigationStyle(), views::NavigationStyle::Maya);
+        QCOMPARE(window.viewport()->orbitMode(), views::OrbitMode::Turntable);
+
+        auto* dialog = openPreferences(window);
+        QVERIFY(dialog);
+        test::keepScreenshot(dialog, "preferences");
+        choose(child<QComboBox>(dialog, "prefNavigationStyle"), int(views::NavigationStyle::Blender));
+        choose(child<QComboBox>(dialog, "prefOrbitMode"), int(views::OrbitMode::Trackball));
+        child<QDoubleSpinBox>(dialog, "prefOrbitSpeed")->setValue(2.0);
+        child<QCheckBox>(dialog, "prefOrbitAroundCursor")->setChecked(true);
+        dialog->tabs()->setCurrentIndex(1);
+        test::keepScreenshot(dialog, "preferences-general");
+        child<QSpinBox>(dialog, "prefAutosave")->setValue(7);
+        child<QSpinBox>(dialog, "prefUndoLimit")->setValue(50);
+        dialog->tabs()->setCurrentIndex(2);
+        const QKeySequence newKey(Qt::CTRL | Qt::ALT | Qt::Key_S);
+        dialog->shortcutEdit(QStringLiteral("actionSaveAs"))->setKeySequence(newKey);
+        QVERIFY(dialog->conflicts().isEmpty());
+        test::keepScreenshot(dialog, "preferences-shortcuts");
+        okButton(dialog)->click();
+        QVERIFY(!dialog->isVisible());
+
+        // Stored...
+        QSettings settings;
+        QCOMPARE(settings.value(QStringLiteral("navigation/style")).toString(), QStringLiteral("blender"));
+        QCOMPARE(settings.value(QStringLiteral("navigation/orbitMode")).toString(), QStringLiteral("trackball"));
+        QCOMPARE(settings.value(QStringLiteral("navigation/orbitSpeed")).toDouble(), 2.0);
+        QCOMPARE(settings.value(QStringLiteral("autosave/minutes")).toInt(), 7);
+        QCOMPARE(settings.value(QStringLiteral("editing/undoLimit")).toInt(), 50);
+        QCOMPARE(settings.value(QStringLiteral("shortcuts/actionSaveAs")).toString(), QStringLiteral("Ctrl+Alt+S"));
+        // Keys left at their default are not stored (a new default would reach the user).
+        QVERIFY(!settings.contains(QStringLiteral("shortcuts/actionSave")));
+
+        // ... and applied to the live window: both viewports, the history, the action.
+        for (views::Viewport* vp : {window.viewport(), window.observer()}) {
+            QCOMPARE(vp->navigationStyle(), views::NavigationStyle::Blender);
+            QCOMPARE(vp->orbitMode(), views::OrbitMode::Trackball);
+            QCOMPARE(vp->orbitSpeed(), 2.0);
+            QVERIFY(vp->orbitAroundCursor());
+        }
+        QCOMPARE(stack->undoLimit(), 50);
+        QCOMPARE(window.action(QStringLiteral("actionSaveAs"))->shortcut(), newKey);
+        // A batch window (screenshots, tests) never autosaves, whatever the preference.
+        QCOMPARE(window.recovery()->interval(), 0);
+
+        // The new key works, the old one no longer does.
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QSignalSpy saveAs(window.action(QStringLiteral("actionSaveAs")), &QAction::triggered);
+        QTest::keyClick(&window, Qt::Key_S, Qt::ControlModifier | Qt::AltModifier);
+        QCOMPARE(saveAs.count(), 1);
+        QTest::keyClick(&window, Qt::Key_S, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(saveAs.count(), 1);
+
+        // Help > Keyboard Shortcuts shows the user's key.
+        window.action(QStringLiteral("actionKeyboardShortcuts"))->trigger();
+        auto* shortcuts = window.findChild<app::ShortcutsDialog*>();
+        QVERIFY(shortcuts);
+        QVERIFY(shortcuts->visibleEntries().contains(
+            QStringLiteral("Save As: ") + newKey.toString(QKeySequence::NativeText)));
+        shortcuts->close();
+
+        // The stereo review, opened later, navigates the same way.
+        window.action(QStringLiteral("actionStereoReview"))->trigger();
+        auto* review = window.findChild<app::ReviewWindow*>();
+        QVERIFY(review);
+        QTRY_VERIFY(review->isVisible());
+        QCOMPARE(review->viewport()->orbitMode(), views::OrbitMode::Trackball);
+        QCOMPARE(review->viewport()->navigationStyle(), views::NavigationStyle::Blender);
+        review->close();
+
+        // The next start applies them (a new window reads the stored preferences).
+        app::MainWindow next(app::MainWindow::Mode::Batch);
+        QCOMPARE(next.action(QStringLiteral("actionSaveAs"))->shortcut(), newKey);
+        QCOMPARE(next.viewport()->orbitMode(), views::OrbitMode::Trackball);
+        QCOMPARE(next.document()->undoStack()->undoLimit(), 50);
+
+        // Restore Defaults and OK put everything back.
+        dialog = openPreferences(window);
+        QVERIFY(dialog);
+        dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::RestoreDefaults)->click();
+        okButton(dialog)->click();
+        QCOMPARE(
+            window.action(QStringLiteral("actionSaveAs"))->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+        QCOMPARE(window.viewport()->orbitMode(), views::OrbitMode::Turntable);
+        QCOMPARE(stack->undoLimit(), 0);
+        QVERIFY(!QSettings().contains(QStringLiteral("shortcuts/actionSaveAs")));
+    }
+
+    void undoLimitWaitsForAnEmptyHistory()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
+        QUndoStack* stack = window.document()->undoStack();
+        window.document()->setSharpness(2.0);
+        QCOMPARE(stack->count(), 1);
+        auto* dialog = openPreferences(window);
+        QVERIFY(dialog);
+        child<QSpinBox>(dialog, "prefUndoLimit")->setValue(5);
+        QVERIFY(child<QLabel>(dialog, "prefUndoNote")->text().contains(QStringLiteral("next empty")));
+        okButton(dialog)->click();
+        // QUndoStack takes a limit only while empty: the step stays, the limit waits.
+        QCOMPARE(stack->count(), 1);
+        QCOMPARE(stack->undoLimit(), 0);
+        QVERIFY(window.openFile(test::sampleProject()));
+        QCOMPARE(stack->count(), 0);
+        QCOMPARE(stack->undoLimit(), 5);
+        for (int i = 0; i < 8; ++i)
+            window.document()->setSharpness(1.5 + 0.1 * i);
+        QCOMPARE(stack->count(), 5);
+    }
+
+    void conflictingShortcutIsReported()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
+        auto* dialog = openPreferences(window);
+        QVERIFY(dialog);
+        dialog->tabs()->setCurrentIndex(2);
+        auto* conflicts = child<QLabel>(dialog, "prefConflicts");
+        QVERIFY(conflicts->isHidden());
+        // The key list filters like Help > Keyboard Shortcuts.
+        auto* tree = child<QTreeWidget>(dialog, "prefShortcutTree");
+        child<QLineEdit>(dialog, "prefShortcutFilter")->setText(QStringLiteral("render"));
+        QStringList shown;
+        for (QTreeWidgetItemIterator it(tree, QTreeWidgetItemIterator::NotHidden | QTreeWidgetItemIterator::NoChildren);
+             *it; ++it)
+            shown << (*it)->text(0);
+        QVERIFY2(shown.contains(QStringLiteral("Render Image")) && shown.contains(QStringLiteral("Render Sequence")),
+            qPrintable(shown.join(QStringLiteral(", "))));
+        QVERIFY(!shown.contains(QStringLiteral("Save")));
+        child<QLineEdit>(dialog, "prefShortcutFilter")->clear();
+        // Render Image gets Save's key.
+        QKeySequenceEdit* render = dialog->shortcutEdit(QStringLiteral("actionRenderImage"));
+        QVERIFY(render);
+        render->setKeySequence(QKeySequence(Qt::CTRL | Qt::Key_S));
+        QCOMPARE(dialog->conflicts().size(), 1);
+        QVERIFY(dialog->conflicts().constFirst().contains(QStringLiteral("“Save”")));
+        QVERIFY(dialog->conflicts().constFirst().contains(QStringLiteral("“Render Image”")));
+        QVERIFY(conflicts->isVisible());
+        QVERIFY(conflicts->text().contains(QStringLiteral("Render Image")));
+        QVERIFY(!okButton(dialog)->isEnabled());
+        test::keepScreenshot(dialog, "preferences-conflict");
+        // OK is refused: nothing is stored or applied.
+        dialog->accept();
+        QVERIFY(dialog->isVisible());
+        QVERIFY(!QSettings().contains(QStringLiteral("shortcuts/actionRenderImage")));
+        QCOMPARE(window.action(QStringLiteral("actionRenderImage"))->shortcut(), QKeySequence(Qt::Key_F12));
+
+        // A key the viewport keeps (brush size) is a note, not a conflict.
+        render->setKeySequence(QKeySequence(Qt::Key_BracketRight));
+        QVERIFY(dialog->conflicts().isEmpty());
+        QVERIFY(conflicts->text().contains(QStringLiteral("viewport")));
+        QVERIFY(okButton(dialog)->isEnabled());
+
+        // Tab leaves a key editor instead of becoming the key (keyboard use of the page).
+        render->setKeySequence(QKeySequence(Qt::Key_F12));
+        QVERIFY(QTest::qWaitForWindowActive(dialog));
+        render->setFocus();
+        QVERIFY(render->hasFocus());
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        QVERIFY(!render->hasFocus());
+        QCOMPARE(render->keySequence(), QKeySequence(Qt::Key_F12));
+        dialog->reject();
+    }
+
+    void languageAppliesAtTheNextStart()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
+        auto* dialog = openPreferences(window);
+        QVERIFY(dialog);
+        dialog->tabs()->setCurrentIndex(1);
+        auto* note = child<QLabel>(dialog, "prefLanguageNote");
+        QVERIFY(!note->text().contains(QStringLiteral("Restart")));
+        choose(child<QComboBox>(dialog, "prefLanguage"), int(app::Preferences::Language::Japanese));
+        QVERIFY(note->text().contains(QStringLiteral("Restart")));
+        okButton(dialog)->click();
+        QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("ja"));
+        QCOMPARE(app::Preferences::load().locale().language(), QLocale::Japanese);
+        // Not live: the menus keep their language until the next start.
+        QCOMPARE(window.action(QStringLiteral("actionSave"))->text(), QStringLiteral("&Save"));
+    }
+
+    void newProjectsStartWithTheChosenStyle()
+    {
+        app::Preferences prefs;
+        prefs.newProjectStyle = model::ShadingStyle::Gooch;
+        prefs.save();
+        QTemporaryDir dir;
+        const QString mesh = dir.filePath(QStringLiteral("tetra.obj"));
+        QFile file(mesh);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+        file.close();
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(window.openFile(mesh));
+        QCOMPARE(window.document()->data().look.style, model::ShadingStyle::Gooch);
+        // An opened project keeps its own look.
+        QVERIFY(window.openFile(test::sampleProject()));
+        QCOMPARE(window.document()->data().look.style, model::loadProject(test::sampleProject()).look.style);
     }
 
 private:

@@ -226,6 +226,8 @@ void Viewport::keyPressEvent(QKeyEvent* event)
     case ViewportKeyCommand::FrontView:
         resetView();
         break;
+    case ViewportKeyCommand::BrushResize: // the brush tool's own (viewportKeyCommand never gives it)
+        break;
     case ViewportKeyCommand::BrushSmaller:
     case ViewportKeyCommand::BrushLarger: {
         // Krita's and Photoshop's brush-size keys.
