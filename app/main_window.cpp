@@ -2,6 +2,8 @@
 #include "main_window.h"
 
 #include "editor_dialogs.h"
+#include "first_steps_hint.h"
+#include "getting_started.h"
 #include "preferences.h"
 #include "recovery.h"
 #include "review_window.h"
@@ -19,6 +21,7 @@
 
 #include <QAbstractSpinBox>
 #include <QAction>
+#include <QActionGroup>
 #include <QKeyEvent>
 #include <QApplication>
 #include <QCloseEvent>
@@ -148,6 +151,7 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
 
     m_viewport = new views::Viewport(m_document, this);
     m_viewport->setObjectName(QStringLiteral("viewport"));
+    new FirstStepsHint(m_document, m_viewport);
     m_viewport->setMinimumSize(320, 240);
     setCentralWidget(m_viewport);
 
@@ -263,7 +267,7 @@ void MainWindow::createDocks()
     // distortion shows while the main camera orbits.
     m_observer = new views::Viewport(m_document, this);
     m_observer->setObjectName(QStringLiteral("observerViewport"));
-    m_observer->setMinimumSize(200, 160);
+    m_observer->setMinimumSize(160, 120);
     m_observer->setObserved(m_viewport);
     m_observer->setToolTip(tr("The view-dependent shape for the main camera, seen from this camera of its own"));
     QDockWidget* observerDock
@@ -277,7 +281,9 @@ void MainWindow::createDocks()
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(2000);
     m_log->setToolTip(tr("Messages of this session: files opened and saved, import warnings, errors"));
-    QDockWidget* logDock = makeDock(tr("Log"), QStringLiteral("logDock"), m_log, Qt::RightDockWidgetArea);
+    QDockWidget* logDock = makeDock(tr("Log"), QStringLiteral("logDock"), m_log, Qt::LeftDockWidgetArea);
+    // Tabbed with the History: a third panel in the right column would not fit a 1366x768 screen.
+    tabifyDockWidget(findChild<QDockWidget*>(QStringLiteral("historyDock")), logDock);
     logDock->hide(); // shown on demand from the View menu; warnings also reach the status bar
     connect(m_scene, &views::ScenePanel::selectionChanged, m_properties, &views::PropertiesPanel::showSelection);
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("sceneDock")),
@@ -403,6 +409,47 @@ void MainWindow::createActions()
             review->showAs(*m_viewport);
             review->showReview();
         });
+    // Stereo in the main viewport (DESIGN.md, "Look"): the look's stereo outputs and Off.
+    auto* stereoGroup = new QActionGroup(this);
+    const struct {
+        const char* name;
+        QString text;
+        algo::StereoOutput output;
+    } stereoModes[] = {{"actionStereoOff", tr("&Off (Mono)"), algo::StereoOutput::Off},
+        {"actionStereoAnaglyph", tr("&Anaglyph (Red/Cyan)"), algo::StereoOutput::Anaglyph},
+        {"actionStereoDubois", tr("&Dubois Anaglyph"), algo::StereoOutput::Dubois},
+        {"actionStereoHalfColor", tr("&Half-Colour Anaglyph"), algo::StereoOutput::HalfColor},
+        {"actionStereoSideBySide", tr("&Side by Side"), algo::StereoOutput::SideBySide},
+        {"actionStereoTopBottom", tr("&Top/Bottom"), algo::StereoOutput::TopBottom}};
+    for (const auto& mode : stereoModes) {
+        QAction* a = make(QString::fromLatin1(mode.name), mode.text, QKeySequence(),
+            tr("Show the viewport in this stereo mode, with the look's interocular and convergence"),
+            [this, output = mode.output] {
+                m_viewport->setStereo(output);
+                if (output != algo::StereoOutput::Off)
+                    m_lastStereo = output;
+            });
+        a->setCheckable(true);
+        a->setChecked(mode.output == algo::StereoOutput::Off);
+        stereoGroup->addAction(a);
+    }
+    make(QStringLiteral("actionStereoToggle"), tr("Toggle Stereo &Preview"), QKeySequence(Qt::CTRL | Qt::Key_3),
+        tr("Switch the viewport between mono and the last stereo mode (anaglyph at first)"), [this] {
+            const bool on = m_viewport->stereo() == algo::StereoOutput::Off;
+            const algo::StereoOutput output = on ? m_lastStereo : algo::StereoOutput::Off;
+            for (QAction* a : findChildren<QAction*>())
+                if (a->objectName().startsWith(QLatin1String("actionStereo")) && a->isCheckable() && a->data().isValid()
+                    && algo::StereoOutput(a->data().toInt()) == output)
+                    a->setChecked(true);
+            m_viewport->setStereo(output);
+        });
+    for (const auto& mode : stereoModes)
+        action(QString::fromLatin1(mode.name))->setData(int(mode.output));
+    make(QStringLiteral("actionDrawingOutline"), tr("Drawing &Outline Only"), QKeySequence(Qt::Key_O),
+        tr("Show only the lines and silhouette edge of the drawing in the viewport, so the model's contours can be "
+           "matched to them"),
+        [this](bool on) { m_viewport->setOverlayOutline(on); })
+        ->setCheckable(true);
     make(QStringLiteral("actionNavigate"), tr("&Navigate Only"), QKeySequence(Qt::Key_Escape),
         tr("Leave alignment and brush tools"), [this] { m_viewport->setTool(views::Viewport::Tool::Navigate); });
     make(QStringLiteral("actionCreateKeyFromView"), tr("Create Key from &View"), QKeySequence(Qt::CTRL | Qt::Key_K),
@@ -414,6 +461,9 @@ void MainWindow::createActions()
                 showError(e.message());
             }
         });
+    make(QStringLiteral("actionGettingStarted"), tr("&Getting Started"), QKeySequence(),
+        tr("A short illustrated guide: from the sample to a view-dependent model"),
+        [this] { showGettingStarted(this); });
     make(QStringLiteral("actionAbout"), tr("&About Celform"), QKeySequence(), tr("Version and licence"), [this] {
         QMessageBox::about(this, tr("About Celform"),
             tr("<h3>Celform %1</h3><p>View-dependent models, shaped highlights and stereo-aware toon "
@@ -471,8 +521,16 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(action(QStringLiteral("actionPreview")));
     m_viewMenu->addAction(action(QStringLiteral("actionSetRenderCamera")));
     m_viewMenu->addAction(action(QStringLiteral("actionViewRenderCamera")));
+    QMenu* stereo = m_viewMenu->addMenu(tr("&Stereo Preview"));
+    stereo->setObjectName(QStringLiteral("menuStereo"));
+    stereo->addAction(action(QStringLiteral("actionStereoToggle")));
+    stereo->addSeparator();
+    for (const char* name : {"actionStereoOff", "actionStereoAnaglyph", "actionStereoDubois", "actionStereoHalfColor",
+             "actionStereoSideBySide", "actionStereoTopBottom"})
+        stereo->addAction(action(QString::fromLatin1(name)));
     m_viewMenu->addAction(action(QStringLiteral("actionStereoReview")));
     m_viewMenu->addAction(action(QStringLiteral("actionShowLook")));
+    m_viewMenu->addAction(action(QStringLiteral("actionDrawingOutline")));
     m_viewMenu->addAction(action(QStringLiteral("actionNavigate")));
     m_viewMenu->addSeparator();
     for (auto* dock : findChildren<QDockWidget*>())
@@ -502,6 +560,7 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(tools->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(action(QStringLiteral("actionGettingStarted")));
     help->addAction(action(QStringLiteral("actionNavigationHelp")));
     help->addSeparator();
     help->addAction(action(QStringLiteral("actionAbout")));
@@ -832,7 +891,12 @@ bool MainWindow::saveScreenshot(const QString& path)
     {
         QPainter painter(&shot);
         const QImage viewport = m_viewport->renderedImage();
-        painter.drawImage(QRect(m_viewport->mapTo(this, QPoint(0, 0)), m_viewport->size()), viewport);
+        const QPoint origin = m_viewport->mapTo(this, QPoint(0, 0));
+        painter.drawImage(QRect(origin, m_viewport->size()), viewport);
+        // Then the widgets over it (axis gizmo, banners, the brush circle), as the screen shows them.
+        for (QWidget* child : m_viewport->findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly))
+            if (child->isVisible())
+                child->render(&painter, origin + child->pos(), QRegion(), QWidget::DrawChildren);
     }
     if (shot.isNull() || !shot.save(path, "PNG")) {
         qWarning("celform: %s: the screenshot could not be written", qPrintable(path));

@@ -2,6 +2,7 @@
 // bar, file handling (open, save, recent files, drag and drop) and autosave with recovery.
 #pragma once
 
+#include "celform/algorithms/stereo.h"
 #include "celform/model/document.h"
 
 #include <QMainWindow>
@@ -97,6 +98,7 @@ private:
     RecoveryManager* m_recovery = nullptr;
     QMenu* m_recentMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
+    algo::StereoOutput m_lastStereo = algo::StereoOutput::Anaglyph; ///< what Ctrl+3 turns on
     QLabel* m_statistics = nullptr;
     QPlainTextEdit* m_log = nullptr;
     QStringList m_dropQueue;

@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
 <context>
+    <name>MeshIo</name>
+    <message>
+        <source>line %1: face %2 has the index %3, which is too large</source>
+        <translation>%1 行目: 面 %2 のインデックス %3 が大きすぎます</translation>
+    </message>
+</context>
+<context>
     <name>ProjectFile</name>
     <message>
         <source>the entry “%1” is not a 3 by 3 matrix</source>
@@ -649,6 +656,68 @@
         <source>--out is required</source>
         <translation>--out の指定が必要です</translation>
     </message>
+    <message>
+        <source>--name needs a name, not “%1”</source>
+        <translation>--name には名前が必要です（“%1” ではなく）</translation>
+    </message>
+    <message>
+        <source>warning: %1: a key named “%2” exists; the new key is named “%3”</source>
+        <translation>警告: %1: “%2” という名前のキーがすでにあります。新しいキーの名前は “%3” です</translation>
+    </message>
+    <message>
+        <source>--falloff must be paper, smooth or sphere, not “%1”</source>
+        <translation>--falloff は paper、smooth、sphere のいずれかです（“%1” ではなく）</translation>
+    </message>
+    <message>
+        <source>--strength must be in (0, 1]</source>
+        <translation>--strength は (0, 1] の範囲で指定してください</translation>
+    </message>
+    <message>
+        <source>Falloff curve: paper ((1 - d/r)^2, the default), smooth or sphere.</source>
+        <translation>減衰カーブ: paper（(1 - d/r)^2、既定）、smooth、sphere。</translation>
+    </message>
+    <message>
+        <source>Strength in (0, 1], 1 by default.</source>
+        <translation>強さ (0, 1]、既定は 1。</translation>
+    </message>
+    <message>
+        <source>%1 takes at most %2 pixels (8192x8192: the renderer holds %3 bytes a pixel), not “%4”</source>
+        <translation>%1 は最大 %2 ピクセルです（8192x8192: レンダラーは 1 ピクセルに %3 バイトを使います）。“%4” は指定できません</translation>
+    </message>
+    <message>
+        <source>%1 %2 needs about %3 GB of memory to render, and %4 GB are available</source>
+        <translation>%1 %2 のレンダリングには約 %3 GB のメモリが必要ですが、使えるのは %4 GB です</translation>
+    </message>
+    <message>
+        <source>--out “%1” is one of the files being read; give a new .celform file</source>
+        <translation>--out “%1” は読み込むファイルの一つです。新しい .celform ファイルを指定してください</translation>
+    </message>
+    <message>
+        <source>--out must end in .celform, not “%1”</source>
+        <translation>--out は .celform で終わる必要があります（“%1” ではなく）</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::FirstStepsHint</name>
+    <message>
+        <source>Start with a model: File ▸ New from Mesh (Ctrl+N), or open a project (Ctrl+O). Help ▸ Getting Started walks through the rest.</source>
+        <translation>まずモデルから: ファイル ▸ メッシュから新規作成（Ctrl+N）、またはプロジェクトを開く（Ctrl+O）。続きはヘルプ ▸ はじめにで案内します。</translation>
+    </message>
+    <message>
+        <source>Import a drawing of the model sheet: File ▸ Import Drawing (Ctrl+Shift+I), or drop an image here.</source>
+        <translation>設定画の絵を読み込みます: ファイル ▸ 絵の読み込み（Ctrl+Shift+I）、またはここに画像をドロップしてください。</translation>
+    </message>
+    <message>
+        <source>Select a drawing in the Scene panel and press Align to Drawing; then Create Key from Drawing.</source>
+        <translation>シーンパネルで絵を選んで「絵に合わせる」を押し、次に「絵からキーを作成」を押してください。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::GettingStarted</name>
+    <message>
+        <source>Getting Started</source>
+        <translation>はじめに</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::MainWindow</name>
@@ -1088,6 +1157,94 @@ Recover it now?</source>
         <source>No render camera yet: set one from a view first (Ctrl+Alt+0).</source>
         <translation>レンダーカメラがまだありません。まず視点から設定してください（Ctrl+Alt+0）。</translation>
     </message>
+    <message>
+        <source>&amp;Front</source>
+        <translation>正面(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>背面(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Right</source>
+        <translation>右(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Left</source>
+        <translation>左(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Top</source>
+        <translation>上(&amp;T)</translation>
+    </message>
+    <message>
+        <source>B&amp;ottom</source>
+        <translation>下(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Look at the model from this side, framed</source>
+        <translation>この方向からモデルを見て、全体を収めます</translation>
+    </message>
+    <message>
+        <source>&amp;Off (Mono)</source>
+        <translation>オフ（モノラル）(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Anaglyph (Red/Cyan)</source>
+        <translation>アナグリフ（赤/シアン）(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Dubois Anaglyph</source>
+        <translation>Dubois アナグリフ(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Half-Colour Anaglyph</source>
+        <translation>ハーフカラー アナグリフ(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Side by Side</source>
+        <translation>サイドバイサイド(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Top/Bottom</source>
+        <translation>トップアンドボトム(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Show the viewport in this stereo mode, with the look&apos;s interocular and convergence</source>
+        <translation>このステレオ方式でビューポートを表示します（ルックの眼間距離と輻輳を使用）</translation>
+    </message>
+    <message>
+        <source>Toggle Stereo &amp;Preview</source>
+        <translation>ステレオプレビューの切り替え(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Switch the viewport between mono and the last stereo mode (anaglyph at first)</source>
+        <translation>ビューポートをモノラルと最後のステレオ方式（最初はアナグリフ）で切り替えます</translation>
+    </message>
+    <message>
+        <source>Drawing &amp;Outline Only</source>
+        <translation>絵の輪郭線のみ(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Show only the lines and silhouette edge of the drawing in the viewport, so the model&apos;s contours can be matched to them</source>
+        <translation>ビューポートで絵の線とシルエットの縁だけを表示し、モデルの輪郭を合わせやすくします</translation>
+    </message>
+    <message>
+        <source>&amp;Getting Started</source>
+        <translation>はじめに(&amp;G)</translation>
+    </message>
+    <message>
+        <source>A short illustrated guide: from the sample to a view-dependent model</source>
+        <translation>図解の短い手引き: サンプルから視点依存モデルまで</translation>
+    </message>
+    <message>
+        <source>View &amp;From</source>
+        <translation>視点プリセット(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Stereo Preview</source>
+        <translation>ステレオプレビュー(&amp;S)</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ReviewWindow</name>
@@ -1154,6 +1311,10 @@ Recover it now?</source>
     <message>
         <source>H: help</source>
         <translation>H: ヘルプ</translation>
+    </message>
+    <message>
+        <source>Idle (last frame %1 ms)</source>
+        <translation>待機中（直前のフレーム %1 ms）</translation>
     </message>
 </context>
 <context>
@@ -1644,6 +1805,18 @@ Recover it now?</source>
         <source>Drawings (%1)</source>
         <translation>参照画 (%1)</translation>
     </message>
+    <message>
+        <source>the file is not a regular file (a folder, pipe or device)</source>
+        <translation>通常のファイルではありません（フォルダー、パイプ、デバイス）</translation>
+    </message>
+    <message>
+        <source>the image is too large (%1 x %2 pixels; drawings may have up to %3 pixels a side and %4 million in all)</source>
+        <translation>画像が大きすぎます（%1 x %2 ピクセル。絵は一辺 %3 ピクセル、合計 %4 百万ピクセルまでです）</translation>
+    </message>
+    <message>
+        <source>the image is too large for its file (%1 x %2 pixels from %3 bytes): the file is damaged</source>
+        <translation>ファイルの大きさに対して画像が大きすぎます（%3 バイトから %1 x %2 ピクセル）。ファイルが壊れています</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::MeshIo</name>
@@ -1917,6 +2090,70 @@ Recover it now?</source>
         <source>the file cannot be written: %1</source>
         <translation>ファイルを書き込めません: %1</translation>
     </message>
+    <message>
+        <source>the scene has more than the %1 triangles Celform can load</source>
+        <translation>シーンの三角形が、Celform が読み込める %1 個を超えています</translation>
+    </message>
+    <message>
+        <source>this is a folder, not a regular file</source>
+        <translation>これはフォルダーで、通常のファイルではありません</translation>
+    </message>
+    <message>
+        <source>this is not a regular file (a pipe, a socket or a device)</source>
+        <translation>通常のファイルではありません（パイプ、ソケット、デバイス）</translation>
+    </message>
+    <message>
+        <source>the file has %1 vertices, more than the %2 vertices Celform can load</source>
+        <translation>ファイルには %1 個の頂点があり、Celform が読み込める %2 個を超えています</translation>
+    </message>
+    <message>
+        <source>the file has %1 faces, more than the %2 triangles Celform can load</source>
+        <translation>ファイルには %1 個の面があり、Celform が読み込める %2 個の三角形を超えています</translation>
+    </message>
+    <message>
+        <source>the file&apos;s faces make %1 triangles, more than the %2 triangles Celform can load</source>
+        <translation>ファイルの面は %1 個の三角形になり、Celform が読み込める %2 個を超えています</translation>
+    </message>
+    <message>
+        <source>the header announces %1 vertices and %2 faces, more than the file holds and more than the %3 vertices Celform can load</source>
+        <translation>ヘッダーは頂点 %1 個と面 %2 個を示していますが、ファイルの中身より多く、Celform が読み込める %3 個の頂点も超えています</translation>
+    </message>
+    <message>
+        <source>the header announces %1 vertices and %2 faces, more than the file holds and more than the %3 triangles Celform can load</source>
+        <translation>ヘッダーは頂点 %1 個と面 %2 個を示していますが、ファイルの中身より多く、Celform が読み込める %3 個の三角形も超えています</translation>
+    </message>
+    <message>
+        <source>face %1 makes more than the %2 triangles Celform can load</source>
+        <translation>面 %1 で三角形が Celform が読み込める %2 個を超えます</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is outside the folder of the OBJ file</source>
+        <translation>&quot;%1&quot; は OBJ ファイルのフォルダーの外にあります</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; does not exist</source>
+        <translation>&quot;%1&quot; は存在しません</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a regular file</source>
+        <translation>&quot;%1&quot; は通常のファイルではありません</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is larger than %2 MB</source>
+        <translation>&quot;%1&quot; は %2 MB より大きいファイルです</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be opened: %2</source>
+        <translation>&quot;%1&quot; を開けません: %2</translation>
+    </message>
+    <message>
+        <source>a second &quot;%1&quot; element (a PLY file has one)</source>
+        <translation>二つ目の &quot;%1&quot; 要素があります（PLY ファイルには一つだけです）</translation>
+    </message>
+    <message>
+        <source>element &quot;%1&quot; has %2 rows but no properties</source>
+        <translation>要素 &quot;%1&quot; は %2 行ありますが、プロパティがありません</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ProjectFile</name>
@@ -2096,6 +2333,34 @@ Recover it now?</source>
         <source>the current frame is not a frame number</source>
         <translation>現在のフレームがフレーム番号になっていません</translation>
     </message>
+    <message>
+        <source>the entry “%1” is out of range</source>
+        <translation>項目 “%1” が範囲外です</translation>
+    </message>
+    <message>
+        <source>the entry “%1” is not a frame number</source>
+        <translation>項目 “%1” はフレーム番号ではありません</translation>
+    </message>
+    <message>
+        <source>the data block “%1” is used twice</source>
+        <translation>データブロック “%1” が二度使われています</translation>
+    </message>
+    <message>
+        <source>face set “%1” has more faces than the model</source>
+        <translation>面セット “%1” の面がモデルより多くあります</translation>
+    </message>
+    <message>
+        <source>key “%1” moves more vertices than the model has</source>
+        <translation>キー “%1” はモデルの頂点数より多くの頂点を動かしています</translation>
+    </message>
+    <message>
+        <source>is not a regular file (a folder, pipe or device)</source>
+        <translation>通常のファイルではありません（フォルダー、パイプ、デバイス）</translation>
+    </message>
+    <message>
+        <source>cannot be opened: not enough memory</source>
+        <translation>開けません: メモリが足りません</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
@@ -2153,12 +2418,31 @@ Recover it now?</source>
         <source>The camera could not be solved: %1</source>
         <translation>カメラを推定できませんでした: %1</translation>
     </message>
+    <message>
+        <source>Aligning to “%1”: move the camera until the model matches the drawing (Alt+drag, the wheel, Alt+Shift+drag rolls, add Ctrl to snap to 15°; numpad 1/3/7 for the axis views; O: outline only). Esc finishes.</source>
+        <translation>“%1” に合わせています: モデルが絵と重なるまでカメラを動かしてください（Alt+ドラッグ、ホイール、Alt+Shift+ドラッグで回転、Ctrl を加えると 15° 刻み。テンキー 1/3/7 で軸方向の視点。O: 輪郭線のみ）。Esc で終了。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::AxisGizmo</name>
+    <message>
+        <source>Click an axis to look at the model from that side (numeric keypad 1, 3, 7; Ctrl for the opposite side)</source>
+        <translation>軸をクリックすると、その方向からモデルを見ます（テンキー 1、3、7。Ctrl で反対側）</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::BrushTool</name>
     <message>
         <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
         <translation>先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
+    </message>
+    <message>
+        <source>Hold the cursor over the model to resize the brush there.</source>
+        <translation>ブラシの大きさを変えるには、カーソルをモデルの上に置いてください。</translation>
+    </message>
+    <message>
+        <source>Move the mouse to resize the brush; click or Enter to keep, Esc to cancel.</source>
+        <translation>マウスを動かしてブラシの大きさを変えます。クリックか Enter で確定、Esc で取り消し。</translation>
     </message>
 </context>
 <context>
@@ -3235,6 +3519,66 @@ Size %4 × %5 × %6</source>
         <source>&amp;Time:</source>
         <translation>時間(&amp;T):</translation>
     </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>The brush circle&apos;s radius on screen; the world radius follows the zoom at the picked point. [ and ] in the viewport, F to resize by dragging</source>
+        <translation>画面上でのブラシの円の半径です。ワールドでの半径は、選んだ点でのズームに従います。ビューポートで [ と ]、F でドラッグして大きさを変えます</translation>
+    </message>
+    <message>
+        <source>World units</source>
+        <translation>ワールド単位</translation>
+    </message>
+    <message>
+        <source>Screen pixels</source>
+        <translation>画面ピクセル</translation>
+    </message>
+    <message>
+        <source>World: the radius stays the same on the model whatever the zoom. Screen: the circle stays the same on screen (Blender&apos;s View radius)</source>
+        <translation>ワールド: ズームにかかわらずモデル上で同じ半径。画面: 画面上で円の大きさが同じ（Blender の「ビュー」半径）</translation>
+    </message>
+    <message>
+        <source>Radius &amp;in:</source>
+        <translation>半径の単位(&amp;I):</translation>
+    </message>
+    <message>
+        <source>Paper (1 − d/r)²</source>
+        <translation>論文 (1 − d/r)²</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>球</translation>
+    </message>
+    <message>
+        <source>How the pull fades from the picked vertex to the radius. Paper: (1 − d/r)², sharp at the centre. Smooth: flat at the centre, no spikes from small radii. Sphere: a dome</source>
+        <translation>選んだ頂点から半径まで、引っ張りがどう弱まるか。論文: (1 − d/r)²、中心が鋭い。スムーズ: 中心が平らで、小さな半径でもとがらない。球: ドーム状</translation>
+    </message>
+    <message>
+        <source>&amp;Falloff:</source>
+        <translation>減衰(&amp;F):</translation>
+    </message>
+    <message>
+        <source>Share of the cursor&apos;s motion the picked vertex follows (1: all of it)</source>
+        <translation>選んだ頂点がカーソルの動きについて行く割合（1: すべて）</translation>
+    </message>
+    <message>
+        <source>S&amp;trength:</source>
+        <translation>強さ(&amp;T):</translation>
+    </message>
+    <message>
+        <source>Last solve: %1 px reprojection error (RMS)</source>
+        <translation>前回の解: 再投影誤差 %1 px（RMS）</translation>
+    </message>
+    <message>
+        <source>Match Points: click a feature on the model (pair %1)</source>
+        <translation>点の対応付け: モデル上の特徴をクリックしてください（%1 組目）</translation>
+    </message>
+    <message>
+        <source>Match Points: Shift+click the same feature on the drawing (pair %1)</source>
+        <translation>点の対応付け: 絵の上で同じ特徴を Shift+クリックしてください（%1 組目）</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::ScenePanel</name>
@@ -3377,6 +3721,10 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
     <message>
         <source>&lt;p&gt;The 3D view of the model.&lt;/p&gt;&lt;p&gt;Alt+left drag or middle drag: orbit. Alt+middle drag or Shift+middle drag: pan. Alt+right drag, Ctrl+middle drag or the mouse wheel: dolly. F: frame the model. Home: front view.&lt;/p&gt;&lt;p&gt;Ctrl+left drag on the light gizmo (the yellow arrow or sphere): move the key light around the model.&lt;/p&gt;</source>
         <translation>&lt;p&gt;モデルの 3D ビューです。&lt;/p&gt;&lt;p&gt;Alt + 左ボタンドラッグまたは中ボタンドラッグ: 回転（オービット）。Alt + 中ボタンドラッグまたは Shift + 中ボタンドラッグ: パン。Alt + 右ボタンドラッグ、Ctrl + 中ボタンドラッグ、またはマウスホイール: ドリー。F: モデル全体を表示。Home: 正面ビュー。&lt;/p&gt;&lt;p&gt;ライトのギズモ（黄色の矢印または球）上で Ctrl + 左ボタンドラッグ: モデルの周りでキーライトを移動。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Brush radius %1 px</source>
+        <translation>ブラシ半径 %1 px</translation>
     </message>
 </context>
 <context>

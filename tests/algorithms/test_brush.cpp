@@ -118,6 +118,31 @@ private slots:
         QCOMPARE(brushFalloff(d, 3.0), expected);
     }
 
+    // The falloff choices (issue 10): at d = r/2, t = 1/2: smooth 3t^2 - 2t^3 = 0.5, sphere
+    // sqrt(1 - 1/4) = 0.8660..., the paper's 0.25; all 1 at the centre and 0 at the radius.
+    void falloffCurves()
+    {
+        QCOMPARE(brushFalloff(1.5, 3.0, BrushFalloff::Paper), 0.25);
+        QCOMPARE(brushFalloff(1.5, 3.0, BrushFalloff::Smooth), 0.5);
+        QVERIFY(std::abs(brushFalloff(1.5, 3.0, BrushFalloff::Sphere) - std::sqrt(0.75)) < 1e-15);
+        QCOMPARE(brushFalloff(0.75, 3.0, BrushFalloff::Smooth), 0.84375); // t = 3/4: 27/16 - 27/32
+        for (const auto curve : {BrushFalloff::Paper, BrushFalloff::Smooth, BrushFalloff::Sphere}) {
+            QCOMPARE(brushFalloff(0.0, 3.0, curve), 1.0);
+            QCOMPARE(brushFalloff(3.0, 3.0, curve), 0.0);
+            QCOMPARE(brushFalloff(4.0, 3.0, curve), 0.0);
+        }
+        // The profile: weights are strength times the curve, the picked vertex at the strength.
+        const Positions p = randomPoints(2000, 4);
+        const VertexGrid grid(p);
+        const BrushSelection s = selectForBrush(p, grid, 3, 0.4, {BrushFalloff::Sphere, 0.5});
+        QVERIFY(s.indices.size() > 5);
+        for (std::size_t k = 0; k < s.indices.size(); ++k) {
+            const double d = (p.row(s.indices[k]) - p.row(3)).cast<double>().norm();
+            const double expected = s.indices[k] == 3 ? 0.5 : 0.5 * brushFalloff(d, 0.4, BrushFalloff::Sphere);
+            QVERIFY(std::abs(s.weights[k] - expected) < 1e-6);
+        }
+    }
+
     void selectionWeightsFollowFalloff()
     {
         const Positions p = randomPoints(5000, 3);

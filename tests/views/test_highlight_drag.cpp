@@ -112,6 +112,72 @@ private slots:
         QCOMPARE(view.tool(), Viewport::Tool::Navigate);
     }
 
+    /// Centroid and count of the pure-green pixels (the layer's colour in the test below).
+    static std::pair<QPointF, int> greenSpot(Viewport& view)
+    {
+        const QImage image = view.renderedImage();
+        const double dpr = view.devicePixelRatioF();
+        double sx = 0.0, sy = 0.0;
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor p = image.pixelColor(x, y);
+                if (p.green() > 200 && p.red() < 80 && p.blue() < 80) {
+                    sx += x;
+                    sy += y;
+                    ++n;
+                }
+            }
+        return {n ? QPointF(sx / n / dpr, sy / n / dpr) : QPointF(), n};
+    }
+
+    // Issue 10, bug 7: the grabbed point of the highlight stays under the cursor, for small and
+    // large drags alike (a 15 px drag used to make it vanish, a 60 px one to leave the model).
+    void dragKeepsTheHighlightUnderTheCursor()
+    {
+        Document doc;
+        Viewport view(&doc);
+        showSphereWithLayer(doc, view, {0.0});
+        if (QTest::currentTestFailed())
+            return;
+        celform::algo::HighlightLayer green;
+        green.color = {0.0f, 1.0f, 0.0f};
+        doc.setHighlightKey(doc.data().look.highlights.front().id, 0, green);
+        HighlightPanel panel(&doc);
+        panel.setViewport(&view);
+        panel.selectLayer(0);
+        panel.findChild<QPushButton*>(QStringLiteral("highlightEditInViewport"))->click();
+        QCOMPARE(view.tool(), Viewport::Tool::Highlight);
+
+        auto render = [&view] {
+            const int drawn = view.renderCount();
+            view.update();
+            QTRY_VERIFY(view.renderCount() > drawn);
+        };
+        render();
+        const auto [start, count] = greenSpot(view);
+        QVERIFY2(count > 20, qPrintable(QString::number(count)));
+        const int steps = doc.undoStack()->index();
+        for (const QPoint shift : {QPoint(15, 0), QPoint(-20, 60)}) {
+            const auto [from, n] = greenSpot(view);
+            QVERIFY(n > 20);
+            drag(&view, from.toPoint(), from.toPoint() + shift);
+            render();
+            const auto [to, m] = greenSpot(view);
+            QVERIFY2(m > 20,
+                qPrintable(
+                    QStringLiteral("the highlight vanished after a drag of (%1, %2)").arg(shift.x()).arg(shift.y())));
+            const QPointF expected = from + QPointF(shift);
+            QVERIFY2(QLineF(to, expected).length() < 0.25 * std::hypot(shift.x(), shift.y()) + 3.0,
+                qPrintable(QStringLiteral("centre at (%1, %2), cursor at (%3, %4)")
+                               .arg(to.x())
+                               .arg(to.y())
+                               .arg(expected.x())
+                               .arg(expected.y())));
+        }
+        QCOMPARE(doc.undoStack()->index(), steps + 2); // one step per drag
+    }
+
     void paintPatchFromTheDock()
     {
         Document doc;

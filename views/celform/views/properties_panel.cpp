@@ -155,9 +155,9 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     radiusLayout->setContentsMargins(0, 0, 0, 0);
     radiusLayout->addWidget(m_radius, 1);
     radiusLayout->addWidget(m_pixelRadius, 1);
-    radiusLayout->addWidget(m_radiusUnit);
     m_pixelRadius->hide();
     brushForm->addRow(tr("&Radius:"), radiusRow);
+    brushForm->addRow(tr("Radius &in:"), m_radiusUnit);
     m_falloff = new QComboBox(m_brushBox);
     m_falloff->addItem(tr("Paper (1 − d/r)²"), int(algo::BrushFalloff::Paper));
     m_falloff->addItem(tr("Smooth"), int(algo::BrushFalloff::Smooth));
@@ -262,6 +262,7 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         }
         emit message(tr("Camera solved: the points are %1 drawing pixels off on average. Refine by hand if needed.")
                          .arg(*rms, 0, 'f', 1));
+        m_lastSolveError = *rms;
         refreshMatching();
     });
     connect(m_clearPoints, &QPushButton::clicked, this, [this] {
@@ -338,8 +339,7 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     });
     auto applyProfile = [this] {
         if (m_viewport)
-            m_viewport->setBrushProfile(
-                {algo::BrushFalloff(m_falloff->currentData().toInt()), m_strength->value()});
+            m_viewport->setBrushProfile({algo::BrushFalloff(m_falloff->currentData().toInt()), m_strength->value()});
     };
     connect(m_falloff, qOverload<int>(&QComboBox::currentIndexChanged), this, applyProfile);
     connect(m_strength, qOverload<double>(&QDoubleSpinBox::valueChanged), this, applyProfile);
@@ -486,8 +486,19 @@ void PropertiesPanel::refreshMatching()
     const size_t models = m_viewport->matchedModelPoints().size();
     const size_t drawings = m_viewport->matchedDrawingPoints().size();
     const size_t pairs = std::min(models, drawings);
-    m_matchStatus->setText(
-        tr("%1 model points, %2 drawing points: %3 pairs (six or more needed)").arg(models).arg(drawings).arg(pairs));
+    QString status
+        = tr("%1 model points, %2 drawing points: %3 pairs (six or more needed)").arg(models).arg(drawings).arg(pairs);
+    if (m_lastSolveError)
+        status
+            += QLatin1Char('\n') + tr("Last solve: %1 px reprojection error (RMS)").arg(*m_lastSolveError, 0, 'f', 1);
+    m_matchStatus->setText(status);
+    // The next click, in the status bar where the eyes are.
+    if (m_viewport->isPointMatching()) {
+        if (models <= drawings)
+            emit message(tr("Match Points: click a feature on the model (pair %1)").arg(models + 1));
+        else
+            emit message(tr("Match Points: Shift+click the same feature on the drawing (pair %1)").arg(models));
+    }
     m_solve->setEnabled(pairs >= 6);
     m_clearPoints->setEnabled(models + drawings > 0);
 }

@@ -10,6 +10,8 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <optional>
+
 #include <functional>
 
 class QCheckBox;
@@ -83,6 +85,7 @@ private:
     QPushButton* m_solve;
     QPushButton* m_clearPoints;
     QLabel* m_matchStatus;
+    std::optional<double> m_lastSolveError; ///< RMS reprojection error of the last Solve Camera, pixels
     QCheckBox* m_enabled;
     QComboBox* m_linkedDrawing;
     QPushButton* m_editKey;

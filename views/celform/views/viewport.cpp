@@ -13,6 +13,7 @@
 #include "celform/views/tools/light_tool.h"
 #include "celform/views/tools/patch_tool.h"
 #include "celform/views/axis_gizmo.h"
+#include "celform/views/drawing_outline.h"
 #include "celform/views/viewport_camera.h"
 #include "celform/views/viewport_compositor.h"
 #include "celform/views/viewport_scene.h"
@@ -423,9 +424,27 @@ void Viewport::updateOverlay()
         if (m_tool == Tool::Align)
             setTool(Tool::Navigate);
     }
-    m_scene->setDrawing(drawing ? &drawing->image : nullptr, m_overlayOnTop, drawing ? drawing->opacity : 1.0);
+    const QImage* image = drawing ? &drawing->image : nullptr;
+    if (drawing && m_overlayOutline) {
+        if (m_outlineSource != drawing->image.cacheKey() || m_outline.isNull()) {
+            m_outline = drawingOutline(drawing->image);
+            m_outlineSource = drawing->image.cacheKey();
+        }
+        image = &m_outline;
+    }
+    // The outline is drawn over the model at full strength: it is thin.
+    m_scene->setDrawing(
+        image, m_overlayOnTop || m_overlayOutline, drawing ? (m_overlayOutline ? 1.0 : drawing->opacity) : 1.0);
     refreshFrameScale();
     update();
+}
+
+void Viewport::setOverlayOutline(bool on)
+{
+    if (on == m_overlayOutline)
+        return;
+    m_overlayOutline = on;
+    updateOverlay();
 }
 
 double Viewport::wantedFrameScale() const

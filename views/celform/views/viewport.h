@@ -136,6 +136,9 @@ public:
     /// Over the model (with the drawing's opacity) or under it, as a backdrop.
     void setOverlayOnTop(bool onTop);
     [[nodiscard]] bool overlayOnTop() const { return m_overlayOnTop; }
+    /// Only the drawing's lines and silhouette edge, in magenta, for checking contours meet.
+    void setOverlayOutline(bool on);
+    [[nodiscard]] bool overlayOutline() const { return m_overlayOutline; }
 
     // --- tools (views/tools/, one file each) ---------------------------------------------------
     enum class Tool {
@@ -297,6 +300,7 @@ private:
     ViewportTool* m_dragTool = nullptr;
     Qt::MouseButton m_dragButton = Qt::NoButton;
     QPointF m_lastPos;
+    double m_rollDragged = 0.0, m_rollApplied = 0.0; ///< degrees, this roll drag (Ctrl snaps)
     int m_renderCount = 0;
     int m_shapeUpdates = 0;
     bool m_initialized = false;
@@ -306,6 +310,9 @@ private:
     QPointer<Viewport> m_observed;
     model::ObjectId m_overlayDrawing = 0;
     bool m_overlayOnTop = true;
+    bool m_overlayOutline = false;
+    QImage m_outline; ///< the overlay drawing's outline, made when first shown
+    qint64 m_outlineSource = 0; ///< cacheKey of the image m_outline was made from
     bool m_lookStale = true; ///< the look's per-vertex data needs refreshing before a paint
     bool m_patchStale = true;
     std::uint64_t m_uploadedGeneration = 0; ///< of the shape in the VTK arrays

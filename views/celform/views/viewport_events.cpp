@@ -1,6 +1,6 @@
 // The viewport's pointer and key events: Maya-style navigation (Alt+left orbit, Alt+middle pan,
-// Alt+right dolly) or Blender's (middle orbit, Shift+middle pan, Ctrl+middle dolly), the wheel, the light gizmo's Ctrl+drag,
-// and every other left-button drag handed to the active tool.
+// Alt+right dolly) or Blender's (middle orbit, Shift+middle pan, Ctrl+middle dolly), the wheel, the light gizmo's
+// Ctrl+drag, and every other left-button drag handed to the active tool.
 #include "celform/views/viewport.h"
 
 #include "celform/views/tools/viewport_tool.h"
@@ -17,6 +17,7 @@ namespace celform::views {
 namespace {
 
 constexpr double kOrbitDegreesPerPixel = 0.4;
+constexpr double kRollSnapDegrees = 15.0;
 constexpr double kDollyPerPixel = 0.005; // exp(-kDollyPerPixel * pixels)
 constexpr double kDollyPerWheelNotch = 0.85; // factor per 120 units of wheel angle
 
@@ -68,6 +69,7 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     m_dragTool = tool;
     m_dragButton = button;
     m_lastPos = event->position();
+    m_rollDragged = m_rollApplied = 0.0;
     if (drag == Drag::Orbit && m_orbitAroundCursor) {
         if (const auto hit = pickSurface(event->position()))
             m_camera->setPivot(hit->second);
@@ -132,8 +134,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         return;
     switch (m_drag) {
     case Drag::Orbit:
-        m_camera->orbit(delta.x() * kOrbitDegreesPerPixel * m_orbitSpeed,
-            delta.y() * kOrbitDegreesPerPixel * m_orbitSpeed);
+        m_camera->orbit(
+            delta.x() * kOrbitDegreesPerPixel * m_orbitSpeed, delta.y() * kOrbitDegreesPerPixel * m_orbitSpeed);
         cameraEdited();
         break;
     case Drag::Pan:
@@ -145,10 +147,19 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         m_camera->dolly(std::exp(-kDollyPerPixel * (delta.x() - delta.y())));
         cameraEdited();
         break;
-    case Drag::Roll:
-        m_camera->roll(delta.x() * kOrbitDegreesPerPixel);
-        cameraEdited();
+    case Drag::Roll: {
+        // Ctrl snaps the drag's roll to 15 degree steps (Blender's and Maya's snapping key).
+        m_rollDragged += delta.x() * kOrbitDegreesPerPixel;
+        const double wanted = (event->modifiers() & Qt::ControlModifier)
+            ? kRollSnapDegrees * std::round(m_rollDragged / kRollSnapDegrees)
+            : m_rollDragged;
+        if (wanted != m_rollApplied) {
+            m_camera->roll(wanted - m_rollApplied);
+            m_rollApplied = wanted;
+            cameraEdited();
+        }
         break;
+    }
     case Drag::Tool:
         if (m_dragTool)
             m_dragTool->move({event->position(), delta, event->modifiers()});
@@ -198,7 +209,8 @@ bool Viewport::event(QEvent* event)
     // Keys the tool wants come here before the window's shortcuts (the brush's F, Esc while resizing).
     if (event->type() == QEvent::ShortcutOverride) {
         auto* key = static_cast<QKeyEvent*>(event);
-        if (ViewportTool* tool = activeTool(); tool && m_drag == Drag::None && tool->wantsKey(key->key(), key->modifiers())) {
+        if (ViewportTool* tool = activeTool();
+            tool && m_drag == Drag::None && tool->wantsKey(key->key(), key->modifiers())) {
             event->accept();
             return true;
         }

@@ -105,7 +105,8 @@ void AlignTool::activate()
         m_viewport->setCamera(drawing->camera);
     m_stored = m_viewport->camera();
     m_banner->setText(tr("Aligning to “%1”: move the camera until the model matches the drawing "
-                         "(Alt+drag, the wheel, Alt+Shift+drag rolls). Esc finishes.")
+                         "(Alt+drag, the wheel, Alt+Shift+drag rolls, add Ctrl to snap to 15°; numpad 1/3/7 "
+                         "for the axis views; O: outline only). Esc finishes.")
                           .arg(drawing->name));
     placeBanner();
     m_banner->show();
