@@ -28,11 +28,19 @@ const std::vector<SubCommand>& table()
     return commands;
 }
 
+/// The sub-commands nobody types (importCommands()): dispatched, never listed.
+const std::vector<SubCommand>& hiddenTable()
+{
+    static const std::vector<SubCommand> commands = importCommands();
+    return commands;
+}
+
 const SubCommand* find(const QString& name)
 {
-    for (const SubCommand& c : table())
-        if (name == QLatin1String(c.name))
-            return &c;
+    for (const auto* commands : {&table(), &hiddenTable()})
+        for (const SubCommand& c : *commands)
+            if (name == QLatin1String(c.name))
+                return &c;
     return nullptr;
 }
 

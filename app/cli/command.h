@@ -67,6 +67,8 @@ std::vector<SubCommand> projectCommands(); // new, info
 std::vector<SubCommand> keyCommands(); // key, brush, eval
 std::vector<SubCommand> lookCommands(); // set, render
 std::vector<SubCommand> highlightCommands(); // highlight, patch
+/// The hidden ones: run by the model as its child processes, left out of help and the README.
+std::vector<SubCommand> importCommands(); // import-mesh, import-image
 
 /// A sub-command's parsed command line: options by name, positional arguments by index.
 class Invocation {

@@ -308,6 +308,34 @@ private slots:
         QVERIFY(still.col(2).cwiseAbs().maxCoeff() < 1e-7);
     }
 
+    // Relax (issue 10): the smoothing step in each vertex's tangent plane. A vertex pushed
+    // sideways in a flat grid goes back towards the average of its ring and stays in the plane;
+    // the spike of the test above is left alone (its move is along its normal), so the shape and
+    // the silhouette are kept.
+    void relaxMovesAlongTheSurface()
+    {
+        TriMesh m = planeGrid(5);
+        const std::uint32_t centre = 5 * 11 + 5;
+        const Eigen::RowVector3f rest = m.vertices.row(centre);
+        m.vertices(centre, 0) += 0.3f; // off-centre in the plane
+        const BrushSelection s = selectForBrush(m.vertices, VertexGrid(m.vertices), centre, 2.5);
+        Positions out;
+        std::vector<std::int32_t> scratch;
+        brushSmooth(s, m.vertices, m.faces, m.vertexFaces(), 1.0, out, scratch, true);
+        const Positions moved = applied(m.vertices, s, out);
+        QVERIFY(std::abs(moved(centre, 0) - rest.x()) < 0.05f); // back near the ring's average
+        QVERIFY(moved.col(2).cwiseAbs().maxCoeff() < 1e-7f); // nothing left the plane
+
+        TriMesh spike = planeGrid(5);
+        spike.vertices(centre, 2) = 2.0f;
+        brushSmooth(s, spike.vertices, spike.faces, spike.vertexFaces(), 1.0, out, scratch, true);
+        const Positions relaxed = applied(spike.vertices, s, out);
+        // The tip's normal is +z: its move to the ring's average is all normal, so it stays.
+        QVERIFY(std::abs(relaxed(centre, 2) - 2.0f) < 1e-6f);
+        brushSmooth(s, spike.vertices, spike.faces, spike.vertexFaces(), 1.0, out, scratch, false);
+        QVERIFY(std::abs(applied(spike.vertices, s, out)(centre, 2)) < 1e-6f); // Smooth flattens it
+    }
+
     void radiusQueryMatchesBruteForce()
     {
         Positions p = randomPoints(20000, 21);

@@ -304,6 +304,52 @@ private slots:
         QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("fuzz.celform"))));
     }
 
+    // Issue 14, defects 3, 5 and 13: meshes that crashed Assimp (a glTF nested 30,000 nodes deep),
+    // made it allocate 3.2 GB (a 91-byte GLB) or loop without end (a DAE) are read in a child
+    // process: bad input, one line naming the file, in bounded time; the editor's import is the
+    // same model function.
+    void assimpRegressionsAreOneLineRefusals_data()
+    {
+        QTest::addColumn<QString>("path");
+        QTest::addColumn<QString>("expected");
+        const QString root = celform::test::testDataPath(QStringLiteral("fuzz-regressions/mesh/"));
+        QTest::newRow("stack overflow") << root + "gltf-30000-nested-nodes-stack-overflow.gltf"
+                                        << "the importer crashed on it (signal 11, Segmentation fault)";
+        QTest::newRow("3.2 GB chunk") << root + "glb-91-bytes-json-chunk-3.2-gb.glb"
+                                      << "its first chunk states";
+        QTest::newRow("endless loop") << root + "dae-comment-in-index-list-endless-loop.dae"
+                                      << "and was stopped";
+    }
+    void assimpRegressionsAreOneLineRefusals()
+    {
+        QFETCH(QString, path);
+        QFETCH(QString, expected);
+        const QString out = m_dir.filePath(QStringLiteral("assimp.celform"));
+        QElapsedTimer timer;
+        timer.start();
+        const Run r = runCelformLimited({"new", path, "--out", out}, 3ll << 30, 40000);
+        QVERIFY2(r.status == QProcess::NormalExit, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 3, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.startsWith(QStringLiteral("celform: ") + path + QStringLiteral(": ")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(expected), qPrintable(r.err));
+        QVERIFY2(r.err.trimmed().count(QLatin1Char('\n')) == 0, qPrintable(r.err));
+        QVERIFY(!QFileInfo::exists(out));
+        qInfo("%s: %lld ms", qPrintable(QFileInfo(path).fileName()), timer.elapsed());
+    }
+
+    // The importer's sub-commands are run by the model, not typed: they answer, but no help lists them.
+    void importCommandsAreHidden()
+    {
+        const Run help = runCelform({"--help"});
+        QCOMPARE(help.exitCode, 0);
+        QVERIFY(!help.out.contains(QStringLiteral("import-")));
+        QVERIFY(!celform::app::synopsisLines().join('\n').contains(QStringLiteral("import-")));
+        const Run missing = runCelform(
+            {"import-mesh", "--", m_dir.filePath(QStringLiteral("none.glb")), m_dir.filePath(QStringLiteral("out"))});
+        QCOMPARE(missing.exitCode, 3);
+        QCOMPARE(missing.err.trimmed(), QStringLiteral("the file does not exist"));
+    }
+
     // Issue 14: a named pipe or a folder given as a project or a drawing blocked for ever; both are
     // bad input, refused before they are opened.
     void pipesAndFoldersAreRefused_data()

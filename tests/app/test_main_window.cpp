@@ -168,6 +168,20 @@ private slots:
         QVERIFY(window.document()->data() == before);
     }
 
+    // Issue 14: a crash inside Assimp (a glTF nested 30,000 nodes deep overflows its stack) took the
+    // editor and its unsaved edits along. Assimp runs in a child process now: the import fails.
+    void crashingImporterLeavesDocumentAlone()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(window.openFile(test::sampleProject()));
+        window.document()->renameDrawing(window.document()->data().drawings.front().id, QStringLiteral("unsaved"));
+        const model::ProjectData before = window.document()->data();
+        QVERIFY(!window.openFile(
+            test::testDataPath(QStringLiteral("fuzz-regressions/mesh/gltf-30000-nested-nodes-stack-overflow.gltf"))));
+        QVERIFY(window.document()->data() == before);
+        QVERIFY(window.document()->isModified());
+    }
+
     void autosaveAndRecovery()
     {
         QTemporaryDir dir;

@@ -5,6 +5,7 @@
 #include "test_support.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtEndian>
@@ -177,6 +178,13 @@ constexpr RegressionExpectation kMeshRegressions[] = {
         "60000000 vertices and 1 faces, more than the file holds and more than the 50000000 vertices Celform can load"},
     {"off-header-only-60m-faces.off", false,
         "60000000 faces, more than the file holds and more than the 50000000 triangles Celform can load"},
+    // Read by Assimp in a child process (model/import_process.h): its crash, its allocation or its
+    // endless loop ends the child, and the test process lives on to see a one-line refusal.
+    {"gltf-30000-nested-nodes-stack-overflow.gltf", false, "the importer crashed on it (signal 11"},
+    {"glb-91-bytes-json-chunk-3.2-gb.glb", false,
+        "its first chunk states 3200000000 bytes, but the file holds 71 bytes after its headers"},
+    // Stopped by the time limit or the memory limit, whichever comes first.
+    {"dae-comment-in-index-list-endless-loop.dae", false, "and was stopped (the limit is CELFORM_IMPORT_"},
 };
 
 void verifyQuad(const MeshImport& result)
@@ -219,6 +227,8 @@ private slots:
     void notRegularFile();
     void objMaterialLibraries_data();
     void objMaterialLibraries();
+    void gltfBuffersAreRegularFiles_data();
+    void gltfBuffersAreRegularFiles();
 };
 
 void TestMeshIo::offVertexOrderAndFan_data()
@@ -767,6 +777,45 @@ void TestMeshIo::objMaterialLibraries()
         QVERIFY(r.mesh.materials.empty()); // default materials
         for (const QString& w : r.warnings)
             QVERIFY2(!w.contains(QLatin1Char('\n')), qPrintable(w));
+    }
+}
+
+void TestMeshIo::gltfBuffersAreRegularFiles_data()
+{
+    QTest::addColumn<QString>("uri");
+    QTest::newRow("fifo") << "pipe.bin";
+    QTest::newRow("device") << "/dev/zero";
+    QTest::newRow("folder") << "folder";
+}
+
+// Issue 14: a glTF buffer whose uri names a FIFO blocked Assimp's open for ever (/dev/zero, with a
+// byteLength of 4 GB, read without end). Assimp opens only regular files now, and a hang would be
+// stopped by the child's time limit in any case.
+void TestMeshIo::gltfBuffersAreRegularFiles()
+{
+    QFETCH(QString, uri);
+    QTemporaryDir dir;
+    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath(QStringLiteral("pipe.bin"))).constData(), 0600) == 0);
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("folder")));
+    const QByteArray json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],
+      "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36}],
+      "buffers":[{"byteLength":4000000000,"uri":")"
+        + uri.toUtf8() + R"("}]})";
+    const QString path = writeFile(dir, QStringLiteral("buffer.gltf"), json);
+    const Watchdog watchdog(path, kImportTimeLimit);
+    QElapsedTimer timer;
+    timer.start();
+    try {
+        importMesh(path);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), path);
+        QVERIFY2(
+            !e.problem().contains(QStringLiteral("was stopped")), qPrintable(e.message())); // refused, not timed out
+        QVERIFY2(!e.problem().contains(QLatin1Char('\n')), qPrintable(e.message()));
+        qInfo("%s -> %s (%lld ms)", qPrintable(uri), qPrintable(e.problem()), timer.elapsed());
     }
 }
 

@@ -229,7 +229,7 @@ public:
     [[nodiscard]] int finalDepth() const { return m_finalDepth; }
     [[nodiscard]] int emptySteps() const { return m_emptySteps; }
     /// Brush steps by BrushMotion.
-    [[nodiscard]] const std::array<int, 5>& motions() const { return m_motions; }
+    [[nodiscard]] const std::array<int, 6>& motions() const { return m_motions; }
 
 private:
     struct Operation {
@@ -567,7 +567,7 @@ private:
         });
         add("brushStep", 0, Kind::Stroke, [this, &d, &r](Rng&) {
             BrushStep step;
-            step.motion = BrushMotion(below(r, 5));
+            step.motion = BrushMotion(below(r, 6));
             switch (step.motion) {
             case BrushMotion::Drag:
                 step.a = uniform(r, -0.05, 0.05);
@@ -583,6 +583,7 @@ private:
                 step.a = uniform(r, 0.9, 1.1);
                 break;
             case BrushMotion::Smooth:
+            case BrushMotion::Relax:
                 step.a = uniform(r, 0, 1);
                 break;
             }
@@ -1044,7 +1045,7 @@ private:
     QString m_current;
     QString m_failure;
     std::map<QString, Tally> m_tallies;
-    std::array<int, 5> m_motions{};
+    std::array<int, 6> m_motions{};
     int m_saves = 0;
     int m_maxDepth = 0;
     int m_finalDepth = 0;

@@ -354,7 +354,8 @@ BrushSelection selectForBrush(
     selection.weights.resize(selection.indices.size());
     for (std::size_t k = 0; k < selection.indices.size(); ++k) {
         const std::uint32_t v = selection.indices[k];
-        const double w = strength * (v == picked ? 1.0 : brushFalloff(double(distances[k]), selection.radius, profile.falloff));
+        const double w
+            = strength * (v == picked ? 1.0 : brushFalloff(double(distances[k]), selection.radius, profile.falloff));
         if (w <= 0.0)
             continue;
         hasPicked = hasPicked || v == picked;
@@ -482,7 +483,7 @@ Positions brushScale(const BrushSelection& selection, const Positions& shape, co
 }
 
 void brushSmooth(const BrushSelection& selection, const Positions& shape, const Faces& faces, const VertexFaces& around,
-    double strength, Positions& out, std::vector<std::int32_t>& scratch)
+    double strength, Positions& out, std::vector<std::int32_t>& scratch, bool tangential)
 {
     assert(around.start.size() == std::size_t(shape.rows()) + 1);
     out.resize(Eigen::Index(selection.indices.size()), 3);
@@ -507,7 +508,23 @@ void brushSmooth(const BrushSelection& selection, const Positions& shape, const 
             average += shape.row(n).transpose().cast<double>();
         average /= double(scratch.size());
         const Eigen::Vector3d p = shape.row(v).transpose().cast<double>();
-        out.row(Eigen::Index(k)) = (strength * double(selection.weights[k]) * (average - p)).transpose().cast<float>();
+        Eigen::Vector3d move = average - p;
+        if (tangential) {
+            // Twice the area-weighted normal: the sum of the faces' cross products.
+            Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+            for (auto i = around.start[v]; i < around.start[v + 1]; ++i) {
+                const std::int32_t f = around.faces[std::size_t(i)];
+                const Eigen::Vector3d a = shape.row(faces(f, 0)).transpose().cast<double>();
+                const Eigen::Vector3d b = shape.row(faces(f, 1)).transpose().cast<double>();
+                const Eigen::Vector3d c = shape.row(faces(f, 2)).transpose().cast<double>();
+                normal += (b - a).cross(c - a);
+            }
+            if (normal.squaredNorm() > 0.0) {
+                normal.normalize();
+                move -= move.dot(normal) * normal;
+            }
+        }
+        out.row(Eigen::Index(k)) = (strength * double(selection.weights[k]) * move).transpose().cast<float>();
     }
 }
 

@@ -123,9 +123,11 @@ void brushScale(
 Positions brushSmooth(const BrushSelection& selection, const Positions& shape, const Faces& faces, double strength);
 /// The same with the mesh's faces-around-vertex table (TriMesh::vertexFaces()): O(selection)
 /// instead of a pass over every face, the stroke's steps after the first allocate nothing.
-/// scratch is working memory kept by the caller.
+/// scratch is working memory kept by the caller. With tangential (Blender's Relax), the step
+/// keeps only its part in the vertex's tangent plane (normal: the area-weighted normals of its
+/// faces): the vertices spread evenly over the surface and its shape, so the silhouette, stays.
 void brushSmooth(const BrushSelection& selection, const Positions& shape, const Faces& faces, const VertexFaces& around,
-    double strength, Positions& out, std::vector<std::int32_t>& scratch);
+    double strength, Positions& out, std::vector<std::int32_t>& scratch, bool tangential = false);
 
 /// For X-mirror editing: for each vertex the index of its mirror across x = 0 in the base shape
 /// (nearest vertex to (-x, y, z) within tolerance, world units), or -1. A vertex on the plane maps

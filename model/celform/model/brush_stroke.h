@@ -20,6 +20,7 @@ enum class BrushMotion {
     Rotate, ///< a: angle in the image plane about the picked vertex, counter-clockwise on screen
     Scale, ///< a: factor in the image plane about the picked vertex
     Smooth, ///< a: strength in [0, 1] of a step towards the one-ring average
+    Relax, ///< as Smooth, in each vertex's tangent plane only: the shape (and silhouette) stays
 };
 
 struct BrushStep {

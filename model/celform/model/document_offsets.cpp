@@ -321,8 +321,9 @@ void Document::applyBrushStroke(BrushStroke& stroke, const BrushStep& step)
             algo::brushScale(selection, stroke.shape, f, step.a, out);
             break;
         case BrushMotion::Smooth:
+        case BrushMotion::Relax:
             algo::brushSmooth(selection, stroke.shape, mesh.faces, mesh.vertexFaces(), std::clamp(step.a, 0.0, 1.0),
-                out, stroke.scratch);
+                out, stroke.scratch, step.motion == BrushMotion::Relax);
             break;
         }
     };

@@ -6,10 +6,12 @@
 #include "celform/model/raster_codec.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QPainter>
 #include <QSvgRenderer>
+#include <QTemporaryDir>
 #include <QtEndian>
 
 #include <algorithm>
@@ -60,7 +62,7 @@ quint32 bigEndian32(const uchar* p)
     return quint32(p[0]) << 24 | quint32(p[1]) << 16 | quint32(p[2]) << 8 | p[3];
 }
 
-/// Width and height from a PNG's IHDR, a JPEG's frame header or a BMP's info header, read here
+/// Width and height from a PNG's IHDR, a JPEG's frame header, a BMP's info header or a PSD's, read here
 /// rather than by Qt's readers (which print libpng's and libjpeg's complaints about a damaged file
 /// on standard error) or OpenImageIO (which needs loading). Nothing for other formats or a header
 /// that cannot be read: the decoder then judges the file.
@@ -123,7 +125,110 @@ std::optional<QSize> headerSize(const QByteArray& data, const QString& format)
             return std::nullopt;
         return QSize(int(w), int(std::abs(h)));
     }
+    if (format == QLatin1String("psd")) {
+        // "8BPS", version, 6 reserved bytes, channels, then height and width (big-endian): the
+        // composite's size, which is what is decoded. Read here, `celform info` starts no child.
+        if (n < 26 || std::memcmp(p, "8BPS", 4) != 0)
+            return std::nullopt;
+        const quint32 h = bigEndian32(p + 14), w = bigEndian32(p + 18);
+        return inRange(w, h) ? std::optional<QSize>(QSize(int(w), int(h))) : std::nullopt;
+    }
     return std::nullopt;
+}
+
+/// Whether a format's decoder runs in a child process: OpenImageIO's own parsers (PSD, TGA, HDR, BMP)
+/// and the libraries behind TIFF, EXR, WebP and GIF are not ours to fix. PNG and JPEG stay here: the
+/// most exercised decoders there are (libpng, libjpeg-turbo), and headerSize() checks their headers
+/// before they decode; SVG is Qt's.
+bool decodedInChild(const QString& format)
+{
+    return format != QLatin1String("png") && format != QLatin1String("jpg") && format != QLatin1String("svg");
+}
+
+// The pixels a child hands back, a file per image: this magic, width and height (native 32-bit),
+// then RGBA8888 rows.
+constexpr char kTransferMagic[8] = {'C', 'E', 'L', 'F', 'R', 'G', 'B', 'A'};
+constexpr qint64 kTransferHeader = sizeof kTransferMagic + 2 * sizeof(qint32);
+
+QString transferName(const QString& inputName)
+{
+    return QFileInfo(inputName).completeBaseName() + QStringLiteral(".pixels");
+}
+
+void writeTransfer(const QImage& decoded, const QString& path)
+{
+    const QImage image = decoded.convertToFormat(QImage::Format_RGBA8888);
+    QFile out(path);
+    const qint32 size[2] = {image.width(), image.height()};
+    bool written = out.open(QIODevice::WriteOnly | QIODevice::Truncate)
+        && out.write(kTransferMagic, sizeof kTransferMagic) == qint64(sizeof kTransferMagic)
+        && out.write(reinterpret_cast<const char*>(size), sizeof size) == qint64(sizeof size);
+    const qint64 rowBytes = qint64(image.width()) * 4;
+    for (int y = 0; written && y < image.height(); ++y)
+        written = out.write(reinterpret_cast<const char*>(image.constScanLine(y)), rowBytes) == rowBytes;
+    if (!written || !out.flush())
+        throw IoError(path, ImageIo::tr("the file cannot be written: %1").arg(out.errorString()));
+}
+
+QImage readTransfer(const QString& path, const EncodedImage& source)
+{
+    QFile file(path);
+    char magic[sizeof kTransferMagic] = {};
+    qint32 size[2] = {};
+    if (!file.open(QIODevice::ReadOnly) || file.read(magic, sizeof magic) != qint64(sizeof magic)
+        || file.read(reinterpret_cast<char*>(size), sizeof size) != qint64(sizeof size)
+        || std::memcmp(magic, kTransferMagic, sizeof magic) != 0)
+        throw IoError(source.label, ImageIo::tr("the importer's result is damaged"));
+    // The child checked the size before decoding; its answer is checked again before allocating.
+    if (!imageSizeProblem(size[0], size[1], source.data.size()).isEmpty()
+        || file.size() != kTransferHeader + qint64(size[0]) * size[1] * 4)
+        throw IoError(source.label, ImageIo::tr("the importer's result is damaged"));
+    QImage image(size[0], size[1], QImage::Format_RGBA8888);
+    if (image.isNull())
+        throw IoError(source.label, ImageIo::tr("the image is too large (%1 x %2 pixels)").arg(size[0]).arg(size[1]));
+    const qint64 rowBytes = qint64(size[0]) * 4;
+    for (int y = 0; y < image.height(); ++y)
+        if (file.read(reinterpret_cast<char*>(image.scanLine(y)), rowBytes) != rowBytes)
+            throw IoError(source.label, ImageIo::tr("the importer's result is damaged"));
+    return image;
+}
+
+/// Decodes the images (formats normalised and checked) in one child process: `celform
+/// import-image IN OUT` decodes each file of the folder IN into OUT. When that fails, each image
+/// is decoded in a child of its own, so that the error names the image that fails.
+std::vector<QImage> decodeInChild(const std::vector<EncodedImage>& images)
+{
+    if (images.empty())
+        return {};
+    const QTemporaryDir folder;
+    const QString in = folder.filePath(QStringLiteral("in")), out = folder.filePath(QStringLiteral("out"));
+    if (!folder.isValid() || !QDir(folder.path()).mkdir(QStringLiteral("in"))
+        || !QDir(folder.path()).mkdir(QStringLiteral("out")))
+        throw IoError(images.front().label,
+            ImageIo::tr("a temporary folder for the importer cannot be made: %1").arg(folder.errorString()));
+    QStringList inputs;
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        inputs << QDir(in).filePath(QString::number(i) + QLatin1Char('.') + images[i].format);
+        QFile file(inputs.constLast());
+        if (!file.open(QIODevice::WriteOnly) || file.write(images[i].data) != images[i].data.size() || !file.flush())
+            throw IoError(images[i].label, ImageIo::tr("a temporary copy of the image cannot be written"));
+    }
+    try {
+        // "--": a folder name starting with a dash is not an option.
+        runImportChild(
+            {QStringLiteral("import-image"), QStringLiteral("--"), in, out}, images.front().label, int(images.size()));
+    } catch (const IoError&) {
+        if (images.size() == 1)
+            throw;
+        std::vector<QImage> decoded;
+        for (const EncodedImage& image : images)
+            decoded.push_back(decodeInChild({image}).front());
+        return decoded;
+    }
+    std::vector<QImage> decoded;
+    for (std::size_t i = 0; i < images.size(); ++i)
+        decoded.push_back(readTransfer(QDir(out).filePath(transferName(inputs[int(i)])), images[i]));
+    return decoded;
 }
 
 QImage renderSvg(const QByteArray& data, const QString& fileLabel)
@@ -143,15 +248,15 @@ QImage renderSvg(const QByteArray& data, const QString& fileLabel)
     return image.convertToFormat(QImage::Format_RGBA8888);
 }
 
-} // namespace
-
-QImage decodeImage(const QByteArray& data, const QString& format, const QString& fileLabel)
+/// The checks decodeImage() makes before any decoder runs (an empty file, an unknown format, a header
+/// stating too many pixels). Returns the normalised format.
+QString checkedFormat(const QByteArray& data, const QString& format, const QString& fileLabel)
 {
     if (data.isEmpty())
         throw IoError(fileLabel, ImageIo::tr("the file is empty"));
     const QString f = normalisedFormat(format);
     if (f == QLatin1String("svg"))
-        return renderSvg(data, fileLabel);
+        return f;
     if (!imageSuffixes().contains(f))
         throw IoError(fileLabel, ImageIo::tr("unknown image format \"%1\"").arg(format));
     // The header first: a bomb is refused before OpenImageIO is even loaded. The module checks the
@@ -160,11 +265,46 @@ QImage decodeImage(const QByteArray& data, const QString& format, const QString&
         if (const QString problem = imageSizeProblem(size->width(), size->height(), data.size()); !problem.isEmpty())
             throw IoError(fileLabel, problem);
     }
+    return f;
+}
+
+/// Decodes checked bytes in this process.
+QImage decodeHere(const QByteArray& data, const QString& format, const QString& fileLabel)
+{
+    if (format == QLatin1String("svg"))
+        return renderSvg(data, fileLabel);
     QString problem;
-    QImage image = rasterCodec(fileLabel).decode(data, f, fileLabel, &problem);
+    QImage image = rasterCodec(fileLabel).decode(data, format, fileLabel, &problem);
     if (image.isNull())
         throw IoError(fileLabel, problem);
     return image;
+}
+
+} // namespace
+
+QImage decodeImage(const QByteArray& data, const QString& format, const QString& fileLabel, ImportIsolation isolation)
+{
+    const QString f = checkedFormat(data, format, fileLabel);
+    if (isolation == ImportIsolation::ChildProcess && decodedInChild(f))
+        return decodeInChild({{data, f, fileLabel}}).front();
+    return decodeHere(data, f, fileLabel);
+}
+
+std::vector<QImage> decodeImages(const std::vector<EncodedImage>& images)
+{
+    std::vector<EncodedImage> checked;
+    for (const EncodedImage& image : images)
+        checked.push_back({image.data, checkedFormat(image.data, image.format, image.label), image.label});
+    std::vector<EncodedImage> forChild;
+    for (const EncodedImage& image : checked)
+        if (decodedInChild(image.format))
+            forChild.push_back(image);
+    const std::vector<QImage> fromChild = decodeInChild(forChild);
+    std::vector<QImage> decoded;
+    auto next = fromChild.cbegin();
+    for (const EncodedImage& image : checked)
+        decoded.push_back(decodedInChild(image.format) ? *next++ : decodeHere(image.data, image.format, image.label));
+    return decoded;
 }
 
 QSize decodedImageSize(const QByteArray& data, const QString& format, const QString& fileLabel)
@@ -206,6 +346,22 @@ Drawing importDrawing(const QString& path)
     drawing.image = decodeImage(drawing.imageData, drawing.imageFormat, path);
     drawing.name = info.completeBaseName();
     return drawing;
+}
+
+void decodeImagesForParent(const QString& inFolder, const QString& outFolder)
+{
+    for (const QFileInfo& input : QDir(inFolder).entryInfoList(QDir::Files, QDir::Name)) {
+        QFile file(input.filePath());
+        if (!file.open(QIODevice::ReadOnly))
+            throw IoError(inFolder, ImageIo::tr("the file cannot be opened: %1").arg(file.errorString()));
+        QImage image;
+        try {
+            image = decodeImage(file.readAll(), input.suffix(), input.filePath(), ImportIsolation::ThisProcess);
+        } catch (const IoError& e) {
+            throw IoError(inFolder, e.problem()); // the parent names the image
+        }
+        writeTransfer(image, QDir(outFolder).filePath(transferName(input.fileName())));
+    }
 }
 
 QStringList imageSuffixes()

@@ -17,33 +17,45 @@ namespace {
 
 using meshio::kMaxIndex;
 
-/// One importable suffix: the reader for it, and whether that reader keeps the file's vertex
-/// order (key deformations made in other tools are matched by vertex index).
+/// One importable suffix: the reader for it, whether that reader keeps the file's vertex order
+/// (key deformations made in other tools are matched by vertex index), and whether it runs in a
+/// child process (a third-party library: its crashes, hangs and allocations are not ours to fix).
 struct MeshReader {
     const char* suffix; ///< lower case, without the dot
     void (*read)(const QString& path, MeshImport& out);
     bool keepsVertexOrder;
+    bool inChild;
 };
 
 /// The reader table, in the order meshSuffixes() lists the suffixes. STL is welded and the other
-/// Assimp formats are rebuilt from its meshes, so only OBJ, PLY and OFF keep vertex order.
+/// Assimp formats are rebuilt from its meshes, so only OBJ, PLY and OFF keep vertex order; those
+/// three readers are our own and run in this process.
 constexpr MeshReader kReaders[] = {
-    {"obj", meshio::readObj, true},
-    {"ply", meshio::readPly, true},
-    {"off", meshio::readOff, true},
-    {"stl", meshio::readWithAssimp, false},
-    {"gltf", meshio::readWithAssimp, false},
-    {"glb", meshio::readWithAssimp, false},
-    {"fbx", meshio::readWithAssimp, false},
-    {"dae", meshio::readWithAssimp, false},
-    {"3ds", meshio::readWithAssimp, false},
+    {"obj", meshio::readObj, true, false},
+    {"ply", meshio::readPly, true, false},
+    {"off", meshio::readOff, true, false},
+    {"stl", meshio::readWithAssimp, false, true},
+    {"gltf", meshio::readWithAssimp, false, true},
+    {"glb", meshio::readWithAssimp, false, true},
+    {"fbx", meshio::readWithAssimp, false, true},
+    {"dae", meshio::readWithAssimp, false, true},
+    {"3ds", meshio::readWithAssimp, false, true},
 };
 
-const MeshReader* findReader(const QString& suffix)
+/// The reader for the file's suffix. Throws IoError for an unknown suffix or anything but a regular file.
+const MeshReader& readerFor(const QString& path)
 {
+    const QString suffix = QFileInfo(path).suffix().toLower();
     const auto it = std::find_if(std::begin(kReaders), std::end(kReaders),
         [&](const MeshReader& r) { return suffix == QLatin1String(r.suffix); });
-    return it == std::end(kReaders) ? nullptr : it;
+    if (it == std::end(kReaders))
+        throw IoError(path,
+            MeshIo::tr("unknown mesh format \"%1\"; use one of: %2")
+                .arg(suffix, meshSuffixes().join(QStringLiteral(", "))));
+    // Before any reader (or Assimp, or tinyobjloader) opens it: a FIFO would block the open for
+    // ever, a directory or device would be read without end.
+    meshio::requireRegularFile(path);
+    return *it;
 }
 
 /// Translated counterpart of algo::findFatalDefect(), which the readers mostly pre-empt.
@@ -91,25 +103,27 @@ QString topologyWarning(const algo::TopologyReport& r)
 
 } // namespace
 
-MeshImport importMesh(const QString& path)
+MeshImport importMesh(const QString& path, ImportIsolation isolation)
 {
     MeshImport out;
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    const MeshReader* reader = findReader(suffix);
-    if (!reader)
-        throw IoError(path,
-            MeshIo::tr("unknown mesh format \"%1\"; use one of: %2")
-                .arg(suffix, meshSuffixes().join(QStringLiteral(", "))));
-    // Before any reader (or Assimp, or tinyobjloader) opens it: a FIFO would block the open for
-    // ever, a directory or device would be read without end.
-    meshio::requireRegularFile(path);
-    reader->read(path, out);
+    const MeshReader& reader = readerFor(path);
+    if (reader.inChild && isolation == ImportIsolation::ChildProcess)
+        meshio::readInChild(path, out);
+    else
+        reader.read(path, out);
 
     throwIfUnusable(path, out.mesh);
     out.topology = algo::analyzeTopology(out.mesh);
     if (!out.topology.isClean())
         out.warnings.prepend(topologyWarning(out.topology));
     return out;
+}
+
+void importMeshForParent(const QString& path, const QString& transferPath)
+{
+    MeshImport out;
+    readerFor(path).read(path, out);
+    meshio::writeTransfer(out, transferPath);
 }
 
 QStringList meshSuffixes()

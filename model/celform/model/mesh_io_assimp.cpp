@@ -1,19 +1,59 @@
 // Import of every other format through Assimp (STL, glTF/GLB, FBX, COLLADA, 3DS): one TriMesh from
-// all meshes with node transforms applied, identical corners welded.
+// all meshes with node transforms applied, identical corners welded. importMesh() runs it in a
+// child process (import_process.h); the checks here refuse what is cheap to recognise first.
 #include "celform/model/mesh_io_common.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QtEndian>
 
 #include <vector>
+
+#include <sys/stat.h>
 
 namespace celform::model::meshio {
 
 namespace {
+
+/// Assimp's file access, opening regular files only: a glTF buffer, an FBX texture or a COLLADA
+/// reference naming a FIFO would block the open for ever, /dev/zero would be read without end.
+/// (DefaultIOSystem::Exists() opens the file too, to see whether it can.)
+class RegularFilesOnly : public Assimp::DefaultIOSystem {
+public:
+    bool Exists(const char* file) const override { return isRegular(file) && DefaultIOSystem::Exists(file); }
+    Assimp::IOStream* Open(const char* file, const char* mode) override
+    {
+        return isRegular(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
+    }
+
+private:
+    static bool isRegular(const char* file)
+    {
+        struct stat info { };
+        return ::stat(file, &info) == 0 && S_ISREG(info.st_mode);
+    }
+};
+
+/// A binary glTF states the length of its JSON chunk, which Assimp allocates (and zeroes) before it
+/// reads a byte of it: a 91-byte file stating 3.3 GB took 3.3 GB and 12 s to be refused.
+void checkGlbHeader(const QString& path, const FileBytes& bytes)
+{
+    constexpr std::size_t kHeaders = 12 + 8; // file header, then the first chunk's
+    if (bytes.size() < kHeaders || std::memcmp(bytes.data(), "glTF", 4) != 0)
+        return;
+    // glTF 2.0's JSON chunk length and glTF 1.0's content length are both at byte 12.
+    const auto chunk = qFromLittleEndian<quint32>(bytes.data() + 12);
+    if (chunk > bytes.size() - kHeaders)
+        throw IoError(path,
+            MeshIo::tr("its first chunk states %1 bytes, but the file holds %2 bytes after its headers")
+                .arg(chunk)
+                .arg(bytes.size() - kHeaders));
+}
 
 QString readableAssimpError(const char* message)
 {
@@ -65,9 +105,11 @@ void readWithAssimp(const QString& path, MeshImport& out)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     {
-        const FileBytes check(path);
+        const FileBytes bytes(path);
+        checkGlbHeader(path, bytes);
     }
     Assimp::Importer importer;
+    importer.SetIOHandler(new RegularFilesOnly); // the importer owns it
     // STL repeats each corner with the facet normal; without removing normals the welding
     // below would keep every triangle separate.
     importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,

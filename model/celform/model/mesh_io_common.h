@@ -268,6 +268,12 @@ void readPly(const QString& path, MeshImport& out); // mesh_io_ply.cpp
 void readObj(const QString& path, MeshImport& out); // mesh_io_obj.cpp
 void readWithAssimp(const QString& path, MeshImport& out); // mesh_io_assimp.cpp: STL, glTF/GLB, FBX, ...
 
+// The two ends of an import in a child process (mesh_io_transfer.cpp): readInChild() runs
+// `celform import-mesh` on the file and reads what its importMeshForParent() wrote with
+// writeTransfer(): the mesh (with its materials and UVs) and the reader's warnings.
+void readInChild(const QString& path, MeshImport& out);
+void writeTransfer(const MeshImport& in, const QString& transferPath);
+
 // The writers behind exportMesh() (mesh_io_write.cpp): positions and faces in vertex order.
 void writeObj(const algo::TriMesh& mesh, QSaveFile& file);
 void writePly(const algo::TriMesh& mesh, QSaveFile& file);

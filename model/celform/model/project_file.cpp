@@ -706,8 +706,6 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         d.aligned = r.boolean(o, "aligned");
         d.opacity = r.number(o, "opacity");
         d.frame = r.frame(o, "frame");
-        if (images == DrawingImages::Decode)
-            d.image = decodeImage(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
         data.drawings.push_back(std::move(d));
     }
 
@@ -783,6 +781,16 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         if (frame != std::floor(frame) || std::abs(frame) > double(kMaxFrame))
             r.corrupt(ProjectFile::tr("the current frame is not a frame number"));
         data.currentFrame = int(frame);
+    }
+    // Last, once the rest is known to be sound, and together: the drawings decoded in a child
+    // process (PSD, TIFF, ...) share one, which loads OpenImageIO once.
+    if (images == DrawingImages::Decode) {
+        std::vector<EncodedImage> encoded;
+        for (const Drawing& d : data.drawings)
+            encoded.push_back({d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name)});
+        std::vector<QImage> decoded = decodeImages(encoded);
+        for (std::size_t i = 0; i < decoded.size(); ++i)
+            data.drawings[i].image = std::move(decoded[i]);
     }
     return data;
 }

@@ -163,6 +163,55 @@ def image_fixtures(folder):
         f.write(png(1000, 1000, 8, 0, b"\0" * 64))
 
 
+def glb_json_chunk_3_3_gb():
+    """91 bytes: a GLB header whose JSON chunk states 3.2e9 bytes. Assimp allocated and zeroed all of
+    them (3.3 GB, 12 s) before it found the file too short."""
+    body = b'{"asset":{"version":"2.0"}}' + b" " * 44
+    return b"glTF" + struct.pack("<II", 2, 12 + 8 + len(body)) + struct.pack("<I", 3200000000) + b"JSON" + body
+
+
+def gltf_nested_nodes(depth):
+    """A glTF scene whose nodes nest depth deep (each the only child of the one before): Assimp walks
+    them recursively and overflows the stack (SIGSEGV) near 20,000."""
+    nodes = ",".join('{"children":[%d]}' % (i + 1) for i in range(depth - 1)) + ",{}"
+    return ('{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[%s]}\n' % nodes).encode()
+
+
+def dae_comment_in_index_list():
+    """A valid one-triangle COLLADA file, but for a comment line inside its <p> index list: Assimp's
+    index loop stops advancing at the first character that is not a digit and appends for ever
+    (3 GB in 15 s, until memory runs out)."""
+    return b"""<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+<asset><unit name="meter" meter="1"/><up_axis>Y_UP</up_axis></asset>
+<library_geometries><geometry id="g" name="g"><mesh>
+<source id="p"><float_array id="pa" count="9">0 0 0 1 0 0 0 1 0</float_array>
+<technique_common><accessor source="#pa" count="3" stride="3"><param name="X" type="float"/>
+<param name="Y" type="float"/><param name="Z" type="float"/></accessor></technique_common></source>
+<vertices id="v"><input semantic="POSITION" source="#p"/></vertices>
+<triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2
+// one triangle
+</p></triangles>
+</mesh></geometry></library_geometries>
+<library_visual_scenes><visual_scene id="s"><node id="n"><instance_geometry url="#g"/></node></visual_scene>
+</library_visual_scenes>
+<scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+"""
+
+
+def mesh_fixtures(folder):
+    # Issue 14, defects 3, 5 and 13: inputs that crash, exhaust or hang Assimp. importMesh() reads
+    # them in a child process (model/import_process.h); the parent refuses them in one line.
+    # (The other files of mesh/ were written by hand.)
+    with open(os.path.join(folder, "glb-91-bytes-json-chunk-3.2-gb.glb"), "wb") as f:
+        f.write(glb_json_chunk_3_3_gb())
+    with open(os.path.join(folder, "gltf-30000-nested-nodes-stack-overflow.gltf"), "wb") as f:
+        f.write(gltf_nested_nodes(30000))
+    with open(os.path.join(folder, "dae-comment-in-index-list-endless-loop.dae"), "wb") as f:
+        f.write(dae_comment_in_index_list())
+
+
 def cli_fixtures(folder):
     with open(os.path.join(folder, "tetrahedron.off"), "w") as f:
         f.write("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
@@ -171,4 +220,5 @@ def cli_fixtures(folder):
 if __name__ == "__main__":
     project_fixtures(os.path.join(HERE, "project"))
     image_fixtures(os.path.join(HERE, "image"))
+    mesh_fixtures(os.path.join(HERE, "mesh"))
     cli_fixtures(os.path.join(HERE, "cli"))

@@ -175,7 +175,10 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_brushMode = new QComboBox(m_brushBox);
     m_brushMode->addItem(tr("Move"), int(Viewport::BrushMode::Move));
     m_brushMode->addItem(tr("Smooth"), int(Viewport::BrushMode::Smooth));
-    m_brushMode->setToolTip(tr("Move drags the selection; Smooth relaxes it toward its neighbours while you drag"));
+    m_brushMode->addItem(tr("Relax"), int(Viewport::BrushMode::Relax));
+    m_brushMode->setToolTip(tr("Move drags the selection; Smooth pulls it toward its neighbours while you drag (it "
+                               "flattens spikes); Relax evens the vertices out along the surface and keeps the "
+                               "shape and its silhouette"));
     brushForm->addRow(tr("&Mode:"), m_brushMode);
     m_mirror = new QCheckBox(tr("&X mirror"), m_brushBox);
     m_mirror->setToolTip(tr("Apply every stroke to the mirrored side too (x → −x), for symmetric characters"));

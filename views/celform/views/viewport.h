@@ -148,7 +148,7 @@ public:
         Highlight, ///< left drag moves, rotates or scales the highlight target (one undo step)
         Patch, ///< left drag paints faces into the patch target (Ctrl+drag removes them)
     };
-    enum class BrushMode { Move, Smooth };
+    enum class BrushMode { Move, Smooth, Relax };
     void setTool(Tool tool);
     [[nodiscard]] Tool tool() const { return m_tool; }
     void setBrushRadius(double radius);

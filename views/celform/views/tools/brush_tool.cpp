@@ -104,8 +104,7 @@ bool BrushTool::keyPress(int key, Qt::KeyboardModifiers modifiers)
     if (!wantsKey(key, modifiers))
         return false;
     if (key == viewportKey(ViewportKeyCommand::BrushResize) && !m_resizing) {
-        if (m_hoverUnitsPerPixel <= 0.0
-            && m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::World) {
+        if (m_hoverUnitsPerPixel <= 0.0 && m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::World) {
             emit m_viewport->message(Brush::tr("Hold the cursor over the model to resize the brush there."));
             return true;
         }
@@ -186,6 +185,8 @@ void BrushTool::move(const ToolEvent& event)
     const bool ctrl = event.modifiers & Qt::ControlModifier, shift = event.modifiers & Qt::ShiftModifier;
     if (m_viewport->brushMode() == Viewport::BrushMode::Smooth)
         step = {model::BrushMotion::Smooth, kSmoothStrength, 0.0};
+    else if (m_viewport->brushMode() == Viewport::BrushMode::Relax)
+        step = {model::BrushMotion::Relax, kSmoothStrength, 0.0};
     else if (ctrl && shift)
         step = {model::BrushMotion::Scale, std::exp(kScalePerPixel * d.x()), 0.0};
     else if (shift)
