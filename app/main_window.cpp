@@ -1,8 +1,10 @@
 // The editor window and its file handling.
 #include "main_window.h"
 
+#include "editor_dialogs.h"
 #include "first_steps_hint.h"
 #include "getting_started.h"
+#include "preferences.h"
 #include "recovery.h"
 #include "review_window.h"
 
@@ -195,6 +197,7 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
     updateTitle();
     updateStatistics();
     updateRecentMenu();
+    installEditorDialogs(this); // render, preferences, keyboard shortcuts (editor_dialogs.cpp)
 }
 
 MainWindow::~MainWindow() = default;
@@ -674,7 +677,9 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
     }
     auto mesh = std::make_shared<const algo::TriMesh>(std::move(outcome.value->mesh));
     if (asNewProject) {
-        m_document->reset(model::newProject(std::move(mesh), QFileInfo(path).fileName()));
+        model::ProjectData data = model::newProject(std::move(mesh), QFileInfo(path).fileName());
+        data.look.style = Preferences::load().newProjectStyle; // Edit > Preferences
+        m_document->reset(std::move(data));
     } else {
         try {
             m_document->setBaseMesh(std::move(mesh), QFileInfo(path).fileName());

@@ -35,6 +35,7 @@ public:
     explicit MainWindow(Mode mode = Mode::Interactive, QWidget* parent = nullptr);
     ~MainWindow() override;
 
+    [[nodiscard]] Mode mode() const { return m_mode; }
     [[nodiscard]] model::Document* document() const { return m_document; }
     [[nodiscard]] views::Viewport* viewport() const { return m_viewport; }
     [[nodiscard]] views::ScenePanel* scenePanel() const { return m_scene; }
