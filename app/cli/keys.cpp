@@ -194,8 +194,8 @@ std::vector<SubCommand> keyCommands()
                     QT_TRANSLATE_NOOP("celform::app::Cli",
                         "Move along the viewing direction (away from the camera), in world units.")},
                 {"falloff", "C",
-                    QT_TRANSLATE_NOOP("celform::app::Cli",
-                        "Falloff curve: paper ((1 - d/r)^2, the default), smooth or sphere.")},
+                    QT_TRANSLATE_NOOP(
+                        "celform::app::Cli", "Falloff curve: paper ((1 - d/r)^2, the default), smooth or sphere.")},
                 {"strength", "S", QT_TRANSLATE_NOOP("celform::app::Cli", "Strength in (0, 1], 1 by default.")},
                 {"frame", "F", kFrameOption},
                 {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print what moved as JSON.")}},

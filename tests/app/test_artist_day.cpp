@@ -261,8 +261,7 @@ private slots:
                 QString part = parts[k];
                 part.replace(QLatin1Char('('), QLatin1Char(',')).remove(QLatin1Char(')'));
                 // A comma after "+" is the key itself (Ctrl+,), not a separator.
-                for (QString key :
-                    part.split(QRegularExpression(QStringLiteral("(?<!\\+),")), Qt::SkipEmptyParts)) {
+                for (QString key : part.split(QRegularExpression(QStringLiteral("(?<!\\+),")), Qt::SkipEmptyParts)) {
                     key = key.trimmed();
                     const QKeySequence documented = QKeySequence::fromString(key, QKeySequence::PortableText);
                     QVERIFY2(!documented.isEmpty(), qPrintable(key));

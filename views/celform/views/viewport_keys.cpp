@@ -27,8 +27,8 @@ const std::vector<ViewportKeyBinding>& viewportKeyBindings()
             QT_TRANSLATE_NOOP("celform::views::Viewport", "Brush radius larger (× 1.25)")},
         // Blender's F: the circle follows the mouse; click or Enter keeps the radius, Esc cancels.
         {ViewportKeyCommand::BrushResize, Scope::BrushTool, Qt::Key_F,
-            QT_TRANSLATE_NOOP("celform::views::Viewport",
-                "Resize the brush with the mouse (click or Enter keeps, Esc cancels)")},
+            QT_TRANSLATE_NOOP(
+                "celform::views::Viewport", "Resize the brush with the mouse (click or Enter keeps, Esc cancels)")},
     };
     return bindings;
 }
