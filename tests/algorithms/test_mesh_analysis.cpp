@@ -69,6 +69,18 @@ private slots:
         QCOMPARE(analyzeTopology(m).degenerateFaces, 1);
     }
 
+    // Found by fuzz_off and fuzz_ply: with no face of three distinct corners there is no edge, and
+    // the edge buckets were walked from a null pointer (UBSan: non-zero offset to null pointer).
+    void noFaceWithThreeCorners()
+    {
+        TriMesh m = tetrahedron();
+        for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
+            m.faces(f, 1) = m.faces(f, 0);
+        const TopologyReport r = analyzeTopology(m);
+        QCOMPARE(r.boundaryEdges, 0);
+        QCOMPARE(r.nonManifoldEdges, 0);
+    }
+
     void fatalDefects()
     {
         TriMesh m = tetrahedron();

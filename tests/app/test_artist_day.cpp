@@ -147,7 +147,7 @@ private slots:
             QWheelEvent wheel(c, viewport->mapToGlobal(c), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
                 Qt::NoScrollPhase, false);
             QApplication::sendEvent(viewport, &wheel);
-            QTest::qWait(20);
+            QApplication::processEvents(); // ticks well inside the 400 ms pause, even on a busy machine
         }
         QTest::qWait(600); // the pause that ends the burst
         QCOMPARE(doc->undoStack()->index(), steps + 1);

@@ -382,6 +382,22 @@ private slots:
         QVERIFY(loadProject(path) == ProjectData{});
     }
 
+    // A key frame that moves no vertex (a key just added, or one whose offsets were all undone) is
+    // stored as empty blocks; reading them copied zero bytes into a null vector (undefined
+    // behaviour that the sanitize preset's UBSan stopped at, in every command opening such a file).
+    void emptyKeyFrameRoundTrip()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("empty_key.celform"));
+        ProjectData data = richProject();
+        data.keys.front().offsetsByFrame[48] = SparseOffsets{};
+        data.faceSets.push_back({"nothing yet", {}});
+        saveProject(data, path);
+        const ProjectData loaded = loadProject(path);
+        QVERIFY(loaded == data);
+        QVERIFY(loaded.keys.front().offsetsByFrame.at(48).indices.empty());
+    }
+
     void realMeshRoundTrip()
     {
         CELFORM_REQUIRE_SHARED(meshPath, QStringLiteral("meshes/cgal_elephant.off"));

@@ -117,6 +117,8 @@ TopologyReport analyzeTopology(const TriMesh& mesh)
     DisjointSets boundaryVerts(std::size_t(std::max(nv, 1)));
     std::vector<char> onBoundary(std::size_t(nv), 0);
     for (std::int32_t lo = 0; lo < nv; ++lo) {
+        if (bucketStart[lo] == bucketStart[lo + 1])
+            continue; // no edge here (when no face has three distinct corners, data() is null)
         auto* first = halfEdges.data() + bucketStart[lo];
         auto* last = halfEdges.data() + bucketStart[lo + 1];
         // Buckets hold about six entries: insertion sort beats std::sort here.

@@ -454,14 +454,16 @@ public:
         constexpr qint64 rowBytes = qint64(Matrix::ColsAtCompileTime) * qint64(sizeof(typename Matrix::Scalar));
         const auto [p, size] = chunk(o, name, qint64(rows) * rowBytes);
         m.resize(rows, Matrix::ColsAtCompileTime);
-        std::memcpy(m.data(), p, std::size_t(size));
+        if (size > 0) // an empty matrix has no data pointer, and memcpy's may not be null even for 0 bytes
+            std::memcpy(m.data(), p, std::size_t(size));
     }
     /// The same for a vector of n items.
     template <typename T> void readVector(const QJsonObject& o, const char* name, qint64 n, std::vector<T>& v) const
     {
         const auto [p, size] = chunk(o, name, n * qint64(sizeof(T)));
         v.resize(std::size_t(n));
-        std::memcpy(static_cast<void*>(v.data()), p, std::size_t(size));
+        if (size > 0) // a key frame that moves no vertex: v.data() is null (see readMatrix)
+            std::memcpy(static_cast<void*>(v.data()), p, std::size_t(size));
     }
 
 private:
