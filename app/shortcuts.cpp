@@ -8,6 +8,7 @@
 #include <QAction>
 #include <QCoreApplication>
 #include <QMenu>
+#include <QRegularExpression>
 #include <QVariant>
 #include <QWidget>
 
@@ -23,19 +24,20 @@ struct ShortcutText {
     Q_DECLARE_TR_FUNCTIONS(celform::app::Shortcuts)
 };
 
-/// A menu's or an action's text as shown: & marks removed (&& is a literal &), no ellipsis.
+/// A menu's or an action's text as shown: & marks removed (&& is a literal &), and with them
+/// the "(&N)" mnemonics of Japanese menus; no ellipsis.
 QString plainText(QString text)
 {
+    static const QRegularExpression mnemonic(QStringLiteral("\\(&[^&]\\)"));
+    text.remove(mnemonic);
     QString out;
     for (int i = 0; i < text.size(); ++i) {
-        if (text[i] == QLatin1Char('&')) {
-            if (i + 1 < text.size() && text[i + 1] == QLatin1Char('&'))
-                out += QLatin1Char('&');
+        if (text[i] != QLatin1Char('&')) {
+            out += text[i];
+        } else if (i + 1 < text.size() && text[i + 1] == QLatin1Char('&')) {
+            out += QLatin1Char('&');
             ++i;
-            if (i >= text.size())
-                break;
         }
-        out += text[i];
     }
     if (out.endsWith(QChar(0x2026)))
         out.chop(1);

@@ -1245,16 +1245,677 @@ Recover it now?</source>
         <source>&amp;Stereo Preview</source>
         <translation>ステレオプレビュー(&amp;S)</translation>
     </message>
+    <message>
+        <source>Untitled project</source>
+        <translation>無題のプロジェクト</translation>
+    </message>
+    <message>
+        <source>&amp;Render Image…</source>
+        <translation>画像をレンダー(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Render the current frame to an image file, as celform render does</source>
+        <translation>現在のフレームを画像ファイルにレンダーします（celform render と同じ処理）</translation>
+    </message>
+    <message>
+        <source>Render Se&amp;quence…</source>
+        <translation>連番をレンダー(&amp;Q)…</translation>
+    </message>
+    <message>
+        <source>Render a range of frames to numbered image files</source>
+        <translation>フレーム範囲を連番の画像ファイルにレンダーします</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>キーボードショートカット(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Every keyboard shortcut of the editor, searchable</source>
+        <translation>エディターのすべてのキーボードショートカット（検索できます）</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>環境設定(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Navigation, autosave, undo steps, language, new projects&apos; look and keyboard shortcuts</source>
+        <translation>ナビゲーション、自動保存、取り消しの回数、言語、新規プロジェクトのルック、キーボードショートカット</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>元に戻す</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>やり直し</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>環境設定</translation>
+    </message>
+    <message>
+        <source>&amp;Navigation</source>
+        <translation>ナビゲーション(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;General</source>
+        <translation>一般(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;Shortcuts</source>
+        <translation>ショートカット(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Store and apply the preferences, keep the dialog open</source>
+        <translation>設定を保存して適用します。ダイアログは開いたままです</translation>
+    </message>
+    <message>
+        <source>Put every preference and key back to Celform&apos;s default (stored on OK or Apply)</source>
+        <translation>すべての設定とキーを Celform の既定に戻します（OK か適用で保存されます）</translation>
+    </message>
+    <message>
+        <source>Maya</source>
+        <translation>Maya</translation>
+    </message>
+    <message>
+        <source>Blender</source>
+        <translation>Blender</translation>
+    </message>
+    <message>
+        <source>Which mouse buttons and keys move the viewport&apos;s camera</source>
+        <translation>ビューポートのカメラを動かすマウスボタンとキー</translation>
+    </message>
+    <message>
+        <source>Navigation &amp;style:</source>
+        <translation>ナビゲーション方式(&amp;S):</translation>
+    </message>
+    <message>
+        <source>Turntable (around the up axis)</source>
+        <translation>ターンテーブル（上方向の軸の周り）</translation>
+    </message>
+    <message>
+        <source>Trackball (free, can roll over)</source>
+        <translation>トラックボール（自由回転、裏返しも可）</translation>
+    </message>
+    <message>
+        <source>Turntable keeps the model upright as Maya and Blender do by default; trackball turns freely about the view&apos;s axes</source>
+        <translation>ターンテーブルは Maya や Blender の既定と同じくモデルを立てたまま回します。トラックボールは視点の軸の周りに自由に回します</translation>
+    </message>
+    <message>
+        <source>&amp;Orbit:</source>
+        <translation>回転(&amp;O):</translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation> 倍</translation>
+    </message>
+    <message>
+        <source>How fast the camera turns for a drag: 1 is 0.4 degrees per pixel</source>
+        <translation>ドラッグに対するカメラの回転の速さ: 1 で 1 ピクセルあたり 0.4 度</translation>
+    </message>
+    <message>
+        <source>Orbit s&amp;peed:</source>
+        <translation>回転の速さ(&amp;P):</translation>
+    </message>
+    <message>
+        <source>Orbit around the point under the &amp;cursor</source>
+        <translation>カーソル位置の点を中心に回転(&amp;C)</translation>
+    </message>
+    <message>
+        <source>An orbit turns around the surface point where the drag starts (Maya&apos;s tumble pivot); elsewhere around the framed centre</source>
+        <translation>ドラッグを始めた位置の面上の点を中心に回転します（Maya のタンブルピボット）。モデル外では表示範囲の中心の周りに回転します</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>オフ</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> 分</translation>
+    </message>
+    <message>
+        <source>How often unsaved work is copied to a recovery file, offered after a crash; 0 turns autosave off</source>
+        <translation>未保存の作業を復旧ファイルにコピーする間隔です（クラッシュ後に復旧を提案します）。0 で自動保存をオフにします</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>自動保存の間隔(&amp;A):</translation>
+    </message>
+    <message>
+        <source>Unlimited</source>
+        <translation>無制限</translation>
+    </message>
+    <message>
+        <source>How many steps Undo can go back; older steps are forgotten</source>
+        <translation>元に戻せるステップ数です。それより古いステップは破棄されます</translation>
+    </message>
+    <message>
+        <source>&amp;Undo steps kept:</source>
+        <translation>取り消し履歴の数(&amp;U):</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>システム</translation>
+    </message>
+    <message>
+        <source>System (%1)</source>
+        <translation>システム（%1）</translation>
+    </message>
+    <message>
+        <source>The language of the editor&apos;s menus, panels and messages</source>
+        <translation>エディターのメニュー、パネル、メッセージの言語</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>言語(&amp;L):</translation>
+    </message>
+    <message>
+        <source>Toon</source>
+        <translation>トゥーン</translation>
+    </message>
+    <message>
+        <source>Gooch</source>
+        <translation>Gooch</translation>
+    </message>
+    <message>
+        <source>Comic</source>
+        <translation>コミック</translation>
+    </message>
+    <message>
+        <source>Lambert</source>
+        <translation>ランバート</translation>
+    </message>
+    <message>
+        <source>The shading style a project started from a mesh begins with (File ▸ New from Mesh); the rest of its look has Celform&apos;s defaults</source>
+        <translation>メッシュから始めたプロジェクト（ファイル ▸ メッシュから新規作成）のシェーディング方式です。ルックのほかの設定は Celform の既定になります</translation>
+    </message>
+    <message>
+        <source>New projects&apos; &amp;shading:</source>
+        <translation>新規プロジェクトのシェーディング(&amp;S):</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>コマンド</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>ショートカット</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>既定</translation>
+    </message>
+    <message>
+        <source>Filter by name, menu or key</source>
+        <translation>名前、メニュー、キーで絞り込み</translation>
+    </message>
+    <message>
+        <source>Click and press the new key for “%1”; the clear button removes it. Tab moves on.</source>
+        <translation>クリックして「%1」の新しいキーを押してください。クリアボタンで削除します。Tab で次へ移動します。</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to Default</source>
+        <translation>既定に戻す(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Give the selected command its default key again</source>
+        <translation>選択したコマンドのキーを既定に戻します</translation>
+    </message>
+    <message>
+        <source>Commands with several keys keep their other defaults (the view presets&apos; keypad keys, Redo&apos;s Ctrl+Y). The viewport&apos;s own keys are listed in Help ▸ Keyboard Shortcuts.</source>
+        <translation>複数のキーを持つコマンドは、ほかの既定のキーを保ちます（視点プリセットのテンキー、やり直しの Ctrl+Y）。ビューポート固有のキーはヘルプ ▸ キーボードショートカットにあります。</translation>
+    </message>
+    <message>
+        <source>Alt + left drag orbits, Alt + middle drag pans, Alt + right drag dollies; the middle button alone (with Shift: pan, Ctrl: dolly) and the wheel work too.</source>
+        <translation>Alt + 左ドラッグで回転、Alt + 中ドラッグでパン、Alt + 右ドラッグでドリー。中ボタンのみ（Shift でパン、Ctrl でドリー）とホイールも使えます。</translation>
+    </message>
+    <message>
+        <source>Middle drag orbits, Shift + middle drag pans, Ctrl + middle drag dollies, the wheel dollies; Alt + left drag goes to the tool.</source>
+        <translation>中ドラッグで回転、Shift + 中ドラッグでパン、Ctrl + 中ドラッグとホイールでドリー。Alt + 左ドラッグはツールに渡ります。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Restart Celform to use the new language.&lt;/b&gt;</source>
+        <translation>&lt;b&gt;新しい言語は Celform を再起動すると使われます。&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>A new language applies the next time Celform starts.</source>
+        <translation>言語の変更は次に Celform を起動したときに反映されます。</translation>
+    </message>
+    <message>
+        <source>The history holds steps now: the new limit applies when it is next empty (a project opened or started).</source>
+        <translation>履歴にステップがあるため、新しい上限は履歴が次に空になったとき（プロジェクトを開くか新規作成したとき）に反映されます。</translation>
+    </message>
+    <message>
+        <source>Fewer steps use less memory after long brushing sessions.</source>
+        <translation>ステップ数を減らすと、長いブラシ作業の後のメモリ使用量が減ります。</translation>
+    </message>
+    <message>
+        <source>Give each key to one command first</source>
+        <translation>先に各キーを 1 つのコマンドだけに割り当ててください</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::RenderDialog</name>
+    <message>
+        <source>Render Image</source>
+        <translation>画像をレンダー</translation>
+    </message>
+    <message>
+        <source>Render Sequence</source>
+        <translation>連番をレンダー</translation>
+    </message>
+    <message>
+        <source>The image to write: .png, .tif or .jpg (8-bit sRGB) or .exr (linear float; every pass as channels unless a pass is chosen)</source>
+        <translation>書き出す画像: .png、.tif、.jpg（8 ビット sRGB）または .exr（リニア浮動小数点。パスを選ばなければ全パスをチャンネルとして保存）</translation>
+    </message>
+    <message>
+        <source>The frames to write: a run of # becomes the zero-padded frame number (shot_####.png); without one, _0001 and so on go before the suffix</source>
+        <translation>書き出すフレーム: 連続した # はゼロ埋めのフレーム番号になります（shot_####.png）。# がなければ拡張子の前に _0001 などが付きます</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>参照…</translation>
+    </message>
+    <message>
+        <source>Choose the output file and its format</source>
+        <translation>出力ファイルと形式を選びます</translation>
+    </message>
+    <message>
+        <source>&amp;Output file:</source>
+        <translation>出力ファイル(&amp;O):</translation>
+    </message>
+    <message>
+        <source>&amp;Output files:</source>
+        <translation>出力ファイル(&amp;O):</translation>
+    </message>
+    <message>
+        <source>The camera the render looks through; the shape is the view-dependent blend for it</source>
+        <translation>レンダーに使うカメラです。形状はこのカメラに対する視点依存ブレンドになります</translation>
+    </message>
+    <message>
+        <source>&amp;Camera:</source>
+        <translation>カメラ(&amp;C):</translation>
+    </message>
+    <message>
+        <source>The frame to render: the animated base model, the keys&apos; deformations and the highlights at it</source>
+        <translation>レンダーするフレーム: そのフレームでのアニメーションするベースモデル、キー変形、ハイライト</translation>
+    </message>
+    <message>
+        <source>&amp;Frame:</source>
+        <translation>フレーム(&amp;F):</translation>
+    </message>
+    <message>
+        <source>The first frame of the sequence</source>
+        <translation>連番の最初のフレーム</translation>
+    </message>
+    <message>
+        <source>The last frame of the sequence (included)</source>
+        <translation>連番の最後のフレーム（含む）</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>～</translation>
+    </message>
+    <message>
+        <source>&amp;Frames:</source>
+        <translation>フレーム(&amp;F):</translation>
+    </message>
+    <message>
+        <source>Common image sizes; editing the width or height makes it a custom size</source>
+        <translation>よく使う画像サイズです。幅か高さを変えるとカスタムになります</translation>
+    </message>
+    <message>
+        <source>HD 720p</source>
+        <translation>HD 720p</translation>
+    </message>
+    <message>
+        <source>Full HD 1080p</source>
+        <translation>フル HD 1080p</translation>
+    </message>
+    <message>
+        <source>UHD 4K</source>
+        <translation>UHD 4K</translation>
+    </message>
+    <message>
+        <source>2K scope (2.39:1)</source>
+        <translation>2K スコープ（2.39:1）</translation>
+    </message>
+    <message>
+        <source>Square 1024</source>
+        <translation>正方形 1024</translation>
+    </message>
+    <message>
+        <source>%1 (%2 × %3)</source>
+        <translation>%1（%2 × %3）</translation>
+    </message>
+    <message>
+        <source>Viewport (%1 × %2)</source>
+        <translation>ビューポート（%1 × %2）</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>カスタム</translation>
+    </message>
+    <message>
+        <source>Si&amp;ze:</source>
+        <translation>サイズ(&amp;Z):</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Image width in pixels (at most 16384)</source>
+        <translation>画像の幅（ピクセル、最大 16384）</translation>
+    </message>
+    <message>
+        <source>Image height in pixels (at most 16384)</source>
+        <translation>画像の高さ（ピクセル、最大 16384）</translation>
+    </message>
+    <message>
+        <source>&amp;Width × height:</source>
+        <translation>幅 × 高さ(&amp;W):</translation>
+    </message>
+    <message>
+        <source>What to write: the finished picture (beauty) or one of the renderer&apos;s passes; an .exr can hold every pass as named channels</source>
+        <translation>書き出す内容: 完成画像（ビューティー）またはレンダラーのパスの 1 つ。.exr には全パスを名前付きチャンネルとして保存できます</translation>
+    </message>
+    <message>
+        <source>Beauty (the finished picture)</source>
+        <translation>ビューティー（完成画像）</translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation>線</translation>
+    </message>
+    <message>
+        <source>Tone</source>
+        <translation>階調</translation>
+    </message>
+    <message>
+        <source>Highlights</source>
+        <translation>ハイライト</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>深度</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>法線</translation>
+    </message>
+    <message>
+        <source>Object ids</source>
+        <translation>オブジェクト ID</translation>
+    </message>
+    <message>
+        <source>All passes (EXR channels)</source>
+        <translation>全パス（EXR チャンネル）</translation>
+    </message>
+    <message>
+        <source>&amp;Pass:</source>
+        <translation>パス(&amp;P):</translation>
+    </message>
+    <message>
+        <source>Render both eyes and compose them (the look&apos;s stereo settings); a stereo render writes the beauty pass</source>
+        <translation>両眼をレンダーして合成します（ルックのステレオ設定）。ステレオではビューティーパスを書き出します</translation>
+    </message>
+    <message>
+        <source>Off (mono)</source>
+        <translation>オフ（モノ）</translation>
+    </message>
+    <message>
+        <source>Anaglyph</source>
+        <translation>アナグリフ</translation>
+    </message>
+    <message>
+        <source>Dubois anaglyph</source>
+        <translation>Dubois アナグリフ</translation>
+    </message>
+    <message>
+        <source>Half-colour anaglyph</source>
+        <translation>ハーフカラーアナグリフ</translation>
+    </message>
+    <message>
+        <source>Side by side</source>
+        <translation>サイドバイサイド</translation>
+    </message>
+    <message>
+        <source>Top-bottom</source>
+        <translation>トップアンドボトム</translation>
+    </message>
+    <message>
+        <source>&amp;Stereo:</source>
+        <translation>ステレオ(&amp;S):</translation>
+    </message>
+    <message>
+        <source>Shade this render in another style; the project&apos;s look is not changed</source>
+        <translation>このレンダーだけ別の方式でシェーディングします。プロジェクトのルックは変わりません</translation>
+    </message>
+    <message>
+        <source>As in the project</source>
+        <translation>プロジェクトの設定どおり</translation>
+    </message>
+    <message>
+        <source>Toon</source>
+        <translation>トゥーン</translation>
+    </message>
+    <message>
+        <source>Gooch</source>
+        <translation>Gooch</translation>
+    </message>
+    <message>
+        <source>Comic</source>
+        <translation>コミック</translation>
+    </message>
+    <message>
+        <source>Lambert</source>
+        <translation>ランバート</translation>
+    </message>
+    <message>
+        <source>St&amp;yle:</source>
+        <translation>スタイル(&amp;Y):</translation>
+    </message>
+    <message>
+        <source>Draw the lines or not in this render; the project&apos;s look is not changed</source>
+        <translation>このレンダーで線を描くかどうか。プロジェクトのルックは変わりません</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>オン</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>オフ</translation>
+    </message>
+    <message>
+        <source>&amp;Lines:</source>
+        <translation>線(&amp;L):</translation>
+    </message>
+    <message>
+        <source>Open the image when done</source>
+        <translation>完了したら画像を開く</translation>
+    </message>
+    <message>
+        <source>Open the folder when done</source>
+        <translation>完了したらフォルダーを開く</translation>
+    </message>
+    <message>
+        <source>Show the result in the desktop&apos;s image viewer or file manager</source>
+        <translation>結果をデスクトップの画像ビューアーかファイルマネージャーで表示します</translation>
+    </message>
+    <message>
+        <source>&amp;Render</source>
+        <translation>レンダー(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Render with these options; Cancel in the progress window stops between frames</source>
+        <translation>この設定でレンダーします。進行状況ウィンドウのキャンセルでフレームの間で止まります</translation>
+    </message>
+    <message>
+        <source>Render camera (the project&apos;s)</source>
+        <translation>レンダーカメラ（プロジェクト）</translation>
+    </message>
+    <message>
+        <source>Current view</source>
+        <translation>現在の視点</translation>
+    </message>
+    <message>
+        <source>Framed default view</source>
+        <translation>既定の視点（全体表示）</translation>
+    </message>
+    <message>
+        <source>Key: %1</source>
+        <translation>キー: %1</translation>
+    </message>
+    <message>
+        <source>Drawing: %1</source>
+        <translation>参照画: %1</translation>
+    </message>
+    <message>
+        <source>render</source>
+        <translation>render</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 画像 (*.png)</translation>
+    </message>
+    <message>
+        <source>OpenEXR images (*.exr)</source>
+        <translation>OpenEXR 画像 (*.exr)</translation>
+    </message>
+    <message>
+        <source>TIFF images (*.tif *.tiff)</source>
+        <translation>TIFF 画像 (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>JPEG images (*.jpg *.jpeg)</source>
+        <translation>JPEG 画像 (*.jpg *.jpeg)</translation>
+    </message>
+    <message>
+        <source>The project has no base model to render.</source>
+        <translation>プロジェクトにレンダーするベースモデルがありません。</translation>
+    </message>
+    <message>
+        <source>Choose the output file.</source>
+        <translation>出力ファイルを選んでください。</translation>
+    </message>
+    <message>
+        <source>%1: the output must end in .png, .exr, .tif or .jpg.</source>
+        <translation>%1: 出力ファイルの拡張子は .png、.exr、.tif、.jpg のいずれかにしてください。</translation>
+    </message>
+    <message>
+        <source>%1: the folder does not exist.</source>
+        <translation>%1: フォルダーがありません。</translation>
+    </message>
+    <message>
+        <source>%1 is a folder: give a file name.</source>
+        <translation>%1 はフォルダーです。ファイル名を指定してください。</translation>
+    </message>
+    <message>
+        <source>The last frame comes before the first.</source>
+        <translation>最後のフレームが最初のフレームより前です。</translation>
+    </message>
+    <message>
+        <source>At most %L1 frames can be rendered at a time.</source>
+        <translation>一度にレンダーできるのは %L1 フレームまでです。</translation>
+    </message>
+    <message>
+        <source>%1 × %2 is more than 8192 × 8192 pixels, the most the renderer takes.</source>
+        <translation>%1 × %2 はレンダラーの上限 8192 × 8192 ピクセルを超えています。</translation>
+    </message>
+    <message>
+        <source>%1 × %2 needs about %3 GB of memory to render, and %4 GB are available.</source>
+        <translation>%1 × %2 のレンダーには約 %3 GB のメモリが必要ですが、使えるのは %4 GB です。</translation>
+    </message>
+    <message>
+        <source>Writes %1 … %2 (%L3 frames)</source>
+        <translation>%1 … %2 を書き出します（%L3 フレーム）</translation>
+    </message>
+    <message>
+        <source>Writes %1</source>
+        <translation>%1 を書き出します</translation>
+    </message>
+    <message>
+        <source>%L1 of the %L2 files already exist. Replace them?</source>
+        <translation>%L2 個のファイルのうち %L1 個がすでにあります。置き換えますか？</translation>
+    </message>
+    <message>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 はすでにあります。置き換えますか？</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::RenderRunner</name>
+    <message>
+        <source>Render Sequence</source>
+        <translation>連番をレンダー</translation>
+    </message>
+    <message>
+        <source>Render Image</source>
+        <translation>画像をレンダー</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <source>Rendering frame %1 (1 of %2)…</source>
+        <translation>フレーム %1 をレンダー中（1 / %2）…</translation>
+    </message>
+    <message>
+        <source>Rendering %1 (%2 × %3)…</source>
+        <translation>%1 をレンダー中（%2 × %3）…</translation>
+    </message>
+    <message>
+        <source>%1: not enough memory to render %2 × %3 pixels</source>
+        <translation>%1: %2 × %3 ピクセルをレンダーするメモリが足りません</translation>
+    </message>
+    <message>
+        <source>Stopping the render after the frame being drawn…</source>
+        <translation>描画中のフレームの後でレンダーを止めています…</translation>
+    </message>
+    <message>
+        <source>Rendering frame %1 (%2 of %3)…</source>
+        <translation>フレーム %1 をレンダー中（%2 / %3）…</translation>
+    </message>
+    <message>
+        <source>Render Failed</source>
+        <translation>レンダーに失敗しました</translation>
+    </message>
+    <message>
+        <source>The render could not be finished.</source>
+        <translation>レンダーを完了できませんでした。</translation>
+    </message>
+    <message>
+        <source>The frames written before the error are kept (%L1).</source>
+        <translation>エラーの前に書き出したフレームは残してあります（%L1）。</translation>
+    </message>
+    <message>
+        <source>Render failed: %1</source>
+        <translation>レンダーに失敗しました: %1</translation>
+    </message>
+    <message>
+        <source>Render cancelled; the files written are kept (%L1).</source>
+        <translation>レンダーをキャンセルしました。書き出したファイルは残してあります（%L1）。</translation>
+    </message>
+    <message>
+        <source>Rendered %L1 frames to %2</source>
+        <translation>%L1 フレームを %2 にレンダーしました</translation>
+    </message>
+    <message>
+        <source>Rendered %1</source>
+        <translation>%1 をレンダーしました</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ReviewWindow</name>
     <message>
         <source>Stereo Review</source>
         <translation>ステレオレビュー</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Stereo review&lt;/b&gt;&lt;table cellspacing=&apos;4&apos;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;turntable on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left / Right&lt;/b&gt;&lt;/td&gt;&lt;td&gt;previous / next key&apos;s camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;S&lt;/b&gt;&lt;/td&gt;&lt;td&gt;stereo: anaglyph, Dubois, half-colour, side by side, top-bottom, off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;lines on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;view-dependent preview on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;interocular distance -10% / +10%&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt;&lt;/td&gt;&lt;td&gt;this help&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Esc&lt;/b&gt;&lt;/td&gt;&lt;td&gt;close the review&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;b&gt;ステレオレビュー&lt;/b&gt;&lt;table cellspacing=&apos;4&apos;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ターンテーブルのオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;← / →&lt;/b&gt;&lt;/td&gt;&lt;td&gt;前 / 次のキーのカメラ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;S&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ステレオ: アナグリフ、Dubois、ハーフカラー、サイドバイサイド、トップアンドボトム、オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;線のオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;視点依存プレビューのオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;眼間距離 -10% / +10%&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt;&lt;/td&gt;&lt;td&gt;このヘルプ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Esc&lt;/b&gt;&lt;/td&gt;&lt;td&gt;レビューを閉じる&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
     <message>
         <source>Anaglyph</source>
@@ -1315,6 +1976,128 @@ Recover it now?</source>
     <message>
         <source>Idle (last frame %1 ms)</source>
         <translation>待機中（直前のフレーム %1 ms）</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Stereo review&lt;/b&gt;</source>
+        <translation>&lt;b&gt;ステレオレビュー&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>turntable on / off</source>
+        <translation>ターンテーブルのオン / オフ</translation>
+    </message>
+    <message>
+        <source>previous key&apos;s camera</source>
+        <translation>前のキーのカメラ</translation>
+    </message>
+    <message>
+        <source>next key&apos;s camera</source>
+        <translation>次のキーのカメラ</translation>
+    </message>
+    <message>
+        <source>stereo: anaglyph, Dubois, half-colour, side by side, top-bottom, off</source>
+        <translation>ステレオ: アナグリフ、Dubois、ハーフカラー、サイドバイサイド、トップアンドボトム、オフ</translation>
+    </message>
+    <message>
+        <source>lines on / off</source>
+        <translation>線のオン / オフ</translation>
+    </message>
+    <message>
+        <source>view-dependent preview on / off</source>
+        <translation>視点依存プレビューのオン / オフ</translation>
+    </message>
+    <message>
+        <source>interocular distance -10%</source>
+        <translation>眼間距離 -10%</translation>
+    </message>
+    <message>
+        <source>interocular distance +10%</source>
+        <translation>眼間距離 +10%</translation>
+    </message>
+    <message>
+        <source>this help</source>
+        <translation>このヘルプ</translation>
+    </message>
+    <message>
+        <source>close the review</source>
+        <translation>レビューを閉じる</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::ShortcutList</name>
+    <message>
+        <source>&amp;Filter:</source>
+        <translation>絞り込み(&amp;F):</translation>
+    </message>
+    <message>
+        <source>No command matches “%1”.</source>
+        <translation>「%1」に一致するコマンドはありません。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::Shortcuts</name>
+    <message>
+        <source>Other</source>
+        <translation>その他</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>ビューポート</translation>
+    </message>
+    <message>
+        <source>Viewport ▸ Brush tool</source>
+        <translation>ビューポート ▸ ブラシツール</translation>
+    </message>
+    <message>
+        <source>Stereo Review</source>
+        <translation>ステレオレビュー</translation>
+    </message>
+    <message>
+        <source>%1 is given to “%2” and to %3.</source>
+        <translation>%1 が「%2」と %3 の両方に割り当てられています。</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <comment>between action names</comment>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>%1 is the viewport&apos;s key for “%2”: “%3” takes it first.</source>
+        <translation>%1 はビューポートの「%2」のキーです。「%3」が先に受け取ります。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>キーボードショートカット</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>コマンド</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>ショートカット</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>説明</translation>
+    </message>
+    <message>
+        <source>Filter by name, menu or key (save, view, ctrl+s)</source>
+        <translation>名前、メニュー、キーで絞り込み（保存、表示、ctrl+s）</translation>
+    </message>
+    <message>
+        <source>Shows the shortcuts whose name, menu, key or description contains the text</source>
+        <translation>名前、メニュー、キー、説明にこの文字列を含むショートカットを表示します</translation>
+    </message>
+    <message>
+        <source>Change the keys in Edit ▸ Preferences ▸ Shortcuts</source>
+        <translation>キーは 編集 ▸ 環境設定 ▸ ショートカット で変更できます</translation>
+    </message>
+    <message>
+        <source>Keys of menu commands can be changed in Edit ▸ Preferences ▸ Shortcuts. The viewport&apos;s and the stereo review&apos;s own keys are fixed; Help ▸ Navigation shows the mouse.</source>
+        <translation>メニューコマンドのキーは 編集 ▸ 環境設定 ▸ ショートカット で変更できます。ビューポートとステレオレビュー固有のキーは固定です。マウス操作はヘルプ ▸ ナビゲーションにあります。</translation>
     </message>
 </context>
 <context>
@@ -2371,6 +3154,13 @@ Recover it now?</source>
     <message>
         <source>raster images cannot be read or written: the OpenImageIO module cannot be loaded (%1)</source>
         <translation>ラスター画像を読み書きできません: OpenImageIO モジュールを読み込めません（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::RenderJob</name>
+    <message>
+        <source>has no base model</source>
+        <translation>ベースモデルがありません</translation>
     </message>
 </context>
 <context>
@@ -3725,6 +4515,26 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
     <message>
         <source>Brush radius %1 px</source>
         <translation>ブラシ半径 %1 px</translation>
+    </message>
+    <message>
+        <source>Frame all</source>
+        <translation>全体を表示</translation>
+    </message>
+    <message>
+        <source>Front view, framed</source>
+        <translation>正面から全体を表示</translation>
+    </message>
+    <message>
+        <source>Brush radius smaller (× 0.8)</source>
+        <translation>ブラシの半径を小さく（× 0.8）</translation>
+    </message>
+    <message>
+        <source>Brush radius larger (× 1.25)</source>
+        <translation>ブラシの半径を大きく（× 1.25）</translation>
+    </message>
+    <message>
+        <source>Resize the brush with the mouse (click or Enter keeps, Esc cancels)</source>
+        <translation>マウスでブラシのサイズを変更（クリックか Enter で確定、Esc で取り消し）</translation>
     </message>
 </context>
 <context>

@@ -359,6 +359,17 @@ private slots:
         QCOMPARE(dialog->visibleEntries(), all);
     }
 
+    void actionNamesDropMnemonicsAndEllipses()
+    {
+        QAction action(QStringLiteral("Save &As…"));
+        QCOMPARE(app::actionName(&action), QStringLiteral("Save As"));
+        action.setText(QStringLiteral("Fish && &Chips..."));
+        QCOMPARE(app::actionName(&action), QStringLiteral("Fish & Chips"));
+        // Japanese menus put the mnemonic in brackets after the text.
+        action.setText(QStringLiteral("名前を付けて保存(&A)…"));
+        QCOMPARE(app::actionName(&action), QStringLiteral("名前を付けて保存"));
+    }
+
     void viewportKeysAreTheTablesKeys()
     {
         // The viewport's keyPressEvent and the help read one table: each key does what it says.
