@@ -12,6 +12,7 @@
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
 #include "celform/model/project_file.h"
+#include "celform/views/depth_panel.h"
 #include "celform/views/highlight_panel.h"
 #include "celform/views/look_panel.h"
 #include "celform/views/properties_panel.h"
@@ -246,6 +247,11 @@ void MainWindow::createDocks()
     makeDock(tr("Highlights"), QStringLiteral("highlightsDock"), highlights, Qt::RightDockWidgetArea);
     tabifyDockWidget(
         findChild<QDockWidget*>(QStringLiteral("lookDock")), findChild<QDockWidget*>(QStringLiteral("highlightsDock")));
+    // Stereo depth analysis (paper 3, chapter 4): overlays, segment ratios and the depth error.
+    m_depth = new views::DepthPanel(m_document, m_viewport, this);
+    makeDock(tr("Depth"), QStringLiteral("depthDock"), m_depth, Qt::RightDockWidgetArea);
+    tabifyDockWidget(
+        findChild<QDockWidget*>(QStringLiteral("highlightsDock")), findChild<QDockWidget*>(QStringLiteral("depthDock")));
     findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
 
     // Paper 1, figure 4: the key directions on the viewing sphere and the facet of this view.

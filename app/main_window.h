@@ -20,6 +20,7 @@ class ScenePanel;
 class PropertiesPanel;
 class ViewSpherePanel;
 class LookPanel;
+class DepthPanel;
 } // namespace celform::views
 
 namespace celform::app {
@@ -93,6 +94,7 @@ private:
     views::PropertiesPanel* m_properties = nullptr;
     views::ViewSpherePanel* m_sphere = nullptr;
     views::LookPanel* m_look = nullptr;
+    views::DepthPanel* m_depth = nullptr;
     views::Viewport* m_observer = nullptr;
     QUndoView* m_history = nullptr;
     RecoveryManager* m_recovery = nullptr;

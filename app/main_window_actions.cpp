@@ -8,6 +8,7 @@
 #include "review_window.h"
 
 #include "celform/model/io_error.h"
+#include "celform/views/depth_panel.h"
 #include "celform/views/highlight_panel.h"
 #include "celform/views/look_panel.h"
 #include "celform/views/properties_panel.h"
@@ -172,6 +173,35 @@ void MainWindow::createActions()
         a->setChecked(mode.output == algo::StereoOutput::Off);
         stereoGroup->addAction(a);
     }
+    // The depth analysis overlays (paper 3, chapter 4), one at a time, as the Depth dock's buttons.
+    auto* depthGroup = new QActionGroup(this);
+    const struct {
+        const char* name;
+        QString text;
+        views::DepthOverlay::Kind kind;
+    } depthKinds[] = {{"actionDepthOverlayNone", tr("&None"), views::DepthOverlay::Kind::None},
+        {"actionDepthOverlaySegments", tr("&Segments"), views::DepthOverlay::Kind::Segments},
+        {"actionDepthOverlayCurvature", tr("Gaussian &Curvature"), views::DepthOverlay::Kind::Curvature},
+        {"actionDepthOverlayError", tr("&Depth Error"), views::DepthOverlay::Kind::DepthError}};
+    for (const auto& k : depthKinds) {
+        QAction* a = make(QString::fromLatin1(k.name), k.text, QKeySequence(),
+            tr("Show this depth analysis over the viewport (Depth dock)"),
+            [this, kind = k.kind] { m_depth->setOverlayKind(kind); });
+        a->setCheckable(true);
+        a->setChecked(k.kind == views::DepthOverlay::Kind::None);
+        a->setData(int(k.kind));
+        depthGroup->addAction(a);
+    }
+    connect(m_depth, &views::DepthPanel::overlayKindChanged, this, [this](views::DepthOverlay::Kind kind) {
+        for (QAction* a : findChildren<QAction*>())
+            if (a->objectName().startsWith(QLatin1String("actionDepthOverlay")) && a->isCheckable()
+                && a->data().toInt() == int(kind))
+                a->setChecked(true);
+    });
+    make(QStringLiteral("actionDepthOverlayNext"), tr("Next Depth &Overlay"), QKeySequence(Qt::SHIFT | Qt::Key_D),
+        tr("Cycle the viewport's depth overlay: none, segments, Gaussian curvature, depth error"), [this] {
+            m_depth->setOverlayKind(views::DepthOverlay::Kind((int(m_depth->overlay()->kind()) + 1) % 4));
+        });
     make(QStringLiteral("actionStereoToggle"), tr("Toggle Stereo &Preview"), QKeySequence(Qt::CTRL | Qt::Key_3),
         tr("Switch the viewport between mono and the last stereo mode (anaglyph at first)"), [this] {
             const bool on = m_viewport->stereo() == algo::StereoOutput::Off;
@@ -267,6 +297,13 @@ void MainWindow::createMenus()
     for (const char* name : {"actionStereoOff", "actionStereoAnaglyph", "actionStereoDubois", "actionStereoHalfColor",
              "actionStereoSideBySide", "actionStereoTopBottom"})
         stereo->addAction(action(QString::fromLatin1(name)));
+    QMenu* depth = m_viewMenu->addMenu(tr("&Depth Overlay"));
+    depth->setObjectName(QStringLiteral("menuDepthOverlay"));
+    depth->addAction(action(QStringLiteral("actionDepthOverlayNext")));
+    depth->addSeparator();
+    for (const char* name : {"actionDepthOverlayNone", "actionDepthOverlaySegments", "actionDepthOverlayCurvature",
+             "actionDepthOverlayError"})
+        depth->addAction(action(QString::fromLatin1(name)));
     m_viewMenu->addAction(action(QStringLiteral("actionStereoReview")));
     m_viewMenu->addAction(action(QStringLiteral("actionShowLook")));
     m_viewMenu->addAction(action(QStringLiteral("actionDrawingOutline")));

@@ -2,6 +2,8 @@
 #include "celform/model/render_job.h"
 
 #include "celform/algorithms/tri_mesh.h"
+#include "celform/model/depth_analysis.h"
+#include "celform/model/depth_analysis_output.h"
 #include "celform/model/io_error.h"
 #include "celform/model/render_output.h"
 #include "celform/model/view_blend.h"
@@ -52,8 +54,8 @@ QString RenderJob::framePath(int frame) const
 
 qint64 RenderJob::bytesNeeded() const
 {
-    const qint64 perPixel
-        = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2) + (writesAllPasses() ? 32 : 0);
+    const qint64 perPixel = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2)
+        + (writesAllPasses() ? 32 : 0) + (analysisPictureFromName(pass) ? kAnalysisBytesPerPixel : 0);
     return qint64(size.width()) * size.height() * perPixel;
 }
 
@@ -101,6 +103,20 @@ Camera cameraFromView(const ProjectData& data, const Eigen::Vector3d& view, doub
     return camera;
 }
 
+Look renderJobLook(const ProjectData& data, const RenderJob& job)
+{
+    Look look = data.look;
+    if (job.style) {
+        look.style = *job.style;
+        look.materialStyles.clear();
+    }
+    if (job.lines)
+        look.showLines = *job.lines;
+    if (job.light)
+        look.light = *job.light;
+    return look;
+}
+
 Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job)
 {
     if (job.camera)
@@ -116,15 +132,7 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
     if (!data.baseMesh)
         throw IoError(source, RenderJobText::tr("has no base model"));
     // The overrides apply to this render only.
-    Look look = data.look;
-    if (job.style) {
-        look.style = *job.style;
-        look.materialStyles.clear();
-    }
-    if (job.lines)
-        look.showLines = *job.lines;
-    if (job.light)
-        look.light = *job.light;
+    const Look look = renderJobLook(data, job);
     const Camera camera = renderJobCamera(data, look, job);
 
     BlendEvaluator blender;
@@ -136,6 +144,11 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
     const bool floatFile = QFileInfo(job.output).suffix().toLower() == QLatin1String("exr");
     auto cancelled = [&callbacks] { return callbacks.cancelled && callbacks.cancelled(); };
     algo::RenderCache cache;
+    // The analysis passes (segments, curvature, depth error) come from the depth analysis of the
+    // centre eye's picture; the analyser keeps the curvature while the shape is still.
+    const std::optional<AnalysisPicture> analysisPicture = analysisPictureFromName(job.pass);
+    DepthAnalyzer analyzer;
+    FrameAnalysis analysed;
     // The shape keeps its generation while frames leave it still, so highlight geometry is reused.
     algo::Shape shape;
     algo::Positions next;
@@ -146,11 +159,22 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
             shape.positions.swap(next);
             shape.touch();
         }
+        const QString target = job.framePath(f);
+        if (analysisPicture) {
+            analyzer.analyze(data, look, shape.positions, shape.generation, f, camera, job.size.width(),
+                job.size.height(), AnalysisSettings{}, analysed);
+            if (cancelled())
+                break;
+            writeImage(analysisImage(analysed.analysis, *analysisPicture, floatFile), target);
+            ++written;
+            if (callbacks.written)
+                callbacks.written(f, target, written);
+            continue;
+        }
         const algo::RenderPasses passes = renderShape(data, look, shape.positions, f, camera, job.size.width(),
             job.size.height(), job.stereo, cache, shape.generation);
         if (cancelled())
             break;
-        const QString target = job.framePath(f);
         if (allPasses)
             writePassesExr(passes, target);
         else

@@ -26,6 +26,8 @@ constexpr qint64 kMaxRenderPixels = qint64(8192) * 8192;
 /// What the renderer holds per pixel (G-buffer, passes and the beauty image, measured); a stereo
 /// render holds two eyes.
 constexpr qint64 kRenderBytesPerPixel = 88;
+/// What the depth analysis adds per pixel (its G-buffer, labels, features, distance transform).
+constexpr qint64 kAnalysisBytesPerPixel = 64;
 
 /// The default camera's view direction when the project has no render camera.
 inline Eigen::Vector3d defaultRenderView()
@@ -74,6 +76,9 @@ qint64 availableRenderMemory();
 /// A camera looking at the base centroid from a view direction, far enough back that the model
 /// fits an image of the given aspect ratio. Needs a base mesh.
 Camera cameraFromView(const ProjectData& data, const Eigen::Vector3d& view, double aspect = 1.0);
+
+/// The project's look with the job's overrides (style, lines, light) applied.
+Look renderJobLook(const ProjectData& data, const RenderJob& job);
 
 /// The camera a job looks through for a project (see RenderJob::camera). Needs a base mesh.
 Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job);
