@@ -40,6 +40,7 @@ public:
     [[nodiscard]] model::Document* document() const { return m_document; }
     [[nodiscard]] views::Viewport* viewport() const { return m_viewport; }
     [[nodiscard]] views::ScenePanel* scenePanel() const { return m_scene; }
+    [[nodiscard]] views::DepthPanel* depthPanel() const { return m_depth; }
     [[nodiscard]] views::PropertiesPanel* propertiesPanel() const { return m_properties; }
     [[nodiscard]] views::Viewport* observer() const { return m_observer; }
     [[nodiscard]] RecoveryManager* recovery() const { return m_recovery; }

@@ -65,8 +65,8 @@ int runAnalyze(const Invocation& in)
     if (in.isSet("min-pixels")) {
         settings.minSegmentPixels = parseInt("min-pixels", in.value("min-pixels"));
         if (settings.minSegmentPixels < 1)
-            throw UsageError{Cli::tr("--min-pixels takes a whole number of at least 1, not “%1”")
-                                 .arg(in.value("min-pixels"))};
+            throw UsageError{
+                Cli::tr("--min-pixels takes a whole number of at least 1, not “%1”").arg(in.value("min-pixels"))};
     }
     const QString out = in.value("out");
     if (in.isSet("out") && QFileInfo(out).suffix().toLower() != QLatin1String("exr"))
@@ -95,7 +95,10 @@ int runAnalyze(const Invocation& in)
             {"camera",
                 QJsonObject{{"eye", model::vec3Json(camera.eye)}, {"target", model::vec3Json(camera.target)},
                     {"up", model::vec3Json(camera.up)}}},
-            {"window", QJsonArray{double(settings.window.low), double(settings.window.high)}},
+            // The window as given (floats printed without their binary tails).
+            {"window",
+                QJsonArray{QString::number(double(settings.window.low), 'g', 6).toDouble(),
+                    QString::number(double(settings.window.high), 'g', 6).toDouble()}},
             {"depth_threshold", frame.depthThreshold}, {"segments", segments},
             {"depth_error",
                 QJsonObject{{"mse", a.meanSquaredError}, {"rmse", std::sqrt(a.meanSquaredError)},
@@ -126,7 +129,9 @@ int runAnalyze(const Invocation& in)
                 .arg(a.featurePixels)
                 .arg(a.modelPixels)
         + QLatin1Char('\n');
-    text += Cli::tr("time: %1 ms (curvature %2 ms)").arg(frame.milliseconds, 0, 'f', 1).arg(frame.curvatureMilliseconds, 0, 'f', 1)
+    text += Cli::tr("time: %1 ms (curvature %2 ms)")
+                .arg(frame.milliseconds, 0, 'f', 1)
+                .arg(frame.curvatureMilliseconds, 0, 'f', 1)
         + QLatin1Char('\n');
     printOut(text);
     return kExitOk;
@@ -165,8 +170,8 @@ int runCurvature(const Invocation& in)
             kMin = i == 0 ? curvature.gaussian[i] : std::min(kMin, double(curvature.gaussian[i]));
             kMax = i == 0 ? curvature.gaussian[i] : std::max(kMax, double(curvature.gaussian[i]));
         }
-        printJson({{"vertices", double(shape.rows())}, {"frame", frame}, {"out", out},
-            {"gaussian_min", kMin}, {"gaussian_max", kMax}});
+        printJson({{"vertices", double(shape.rows())}, {"frame", frame}, {"out", out}, {"gaussian_min", kMin},
+            {"gaussian_max", kMax}});
     }
     return kExitOk;
 }

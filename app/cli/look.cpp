@@ -180,7 +180,8 @@ std::vector<SubCommand> lookCommands()
             {"celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
              "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] "
              "[--light point:X,Y,Z|directional:X,Y,Z] [--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
-             "[--pass beauty|lines|tone|highlights|depth|normal|id] [--out FILE.png|.exr|.tif|.jpg]"},
+             "[--pass beauty|lines|tone|highlights|depth|normal|id|segments|curvature|depth-error] [--out "
+             "FILE.png|.exr|.tif|.jpg]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Renders the project's look without a display (CPU renderer)."),
             {{"P", kProjectArgument}}, renderOptions, runRender},
     };

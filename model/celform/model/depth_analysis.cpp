@@ -58,7 +58,8 @@ void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const alg
     s.pointLight = renderLook.pointLight;
     s.light = renderLook.light;
     s.shadingOffsets = renderLook.shadingOffsets;
-    algo::analyzeDepth(m_gbuffer, out.passes.normal, out.passes.beauty, mesh.faces, curvature.gaussian, s, out.analysis);
+    algo::analyzeDepth(
+        m_gbuffer, out.passes.normal, out.passes.beauty, mesh.faces, curvature.gaussian, s, out.analysis);
     out.milliseconds = double(timer.nsecsElapsed()) / 1e6;
 }
 
@@ -77,8 +78,7 @@ FrameAnalysis analyzeProject(
     blender.shape(data, blender.viewDirection(data, camera.eye), job.firstFrame, shape);
     DepthAnalyzer analyzer;
     FrameAnalysis out;
-    analyzer.analyze(
-        data, look, shape, 0, job.firstFrame, camera, job.size.width(), job.size.height(), settings, out);
+    analyzer.analyze(data, look, shape, 0, job.firstFrame, camera, job.size.width(), job.size.height(), settings, out);
     return out;
 }
 

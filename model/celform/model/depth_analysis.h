@@ -44,7 +44,8 @@ class DepthAnalyzer {
 public:
     /// The curvature of a shape of mesh's topology; computed when the generation differs from the
     /// last call's (or is 0, "unknown"), else the cached one.
-    const algo::Curvatures& curvatures(const algo::TriMesh& mesh, const algo::Positions& shape, std::uint64_t generation);
+    const algo::Curvatures& curvatures(
+        const algo::TriMesh& mesh, const algo::Positions& shape, std::uint64_t generation);
 
     /// Analyses the picture of shape (#V by 3, the view-dependent blend at the frame) through camera
     /// at width x height with look (the project's, or one with a render's overrides). Throws

@@ -33,12 +33,14 @@ float robustScale(const std::vector<float>& values, const std::vector<float>& de
     return *at;
 }
 
-/// White at zero, towards positive at +1 and negative at -1 (linear RGB).
+/// Light grey at zero (sRGB 0.86, so the model stays apart from a white page), towards positive at
+/// +1 and negative at -1 (linear RGB).
 Eigen::Vector3f diverging(float t, const Eigen::Vector3f& positive, const Eigen::Vector3f& negative)
 {
     const float a = std::clamp(std::abs(t), 0.f, 1.f);
     const Eigen::Vector3f& end = t >= 0.f ? positive : negative;
-    return Eigen::Vector3f::Ones() * (1.f - a) + end * a;
+    const float neutral = 0.7157f; // srgbToLinear(0.86)
+    return Eigen::Vector3f::Constant(neutral) * (1.f - a) + end * a;
 }
 
 } // namespace
@@ -71,18 +73,29 @@ Eigen::Vector3f segmentColor(int id)
                 t = value * (1.f - saturation * (1.f - f));
     Eigen::Vector3f srgb;
     switch (sector) {
-    case 0: srgb = {value, t, p}; break;
-    case 1: srgb = {q, value, p}; break;
-    case 2: srgb = {p, value, t}; break;
-    case 3: srgb = {p, q, value}; break;
-    case 4: srgb = {t, p, value}; break;
-    default: srgb = {value, p, q}; break;
+    case 0:
+        srgb = {value, t, p};
+        break;
+    case 1:
+        srgb = {q, value, p};
+        break;
+    case 2:
+        srgb = {p, value, t};
+        break;
+    case 3:
+        srgb = {p, q, value};
+        break;
+    case 4:
+        srgb = {t, p, value};
+        break;
+    default:
+        srgb = {value, p, q};
+        break;
     }
     return {algo::srgbToLinear(srgb.x()), algo::srgbToLinear(srgb.y()), algo::srgbToLinear(srgb.z())};
 }
 
-algo::ImageRGBA analysisImage(
-    const algo::DepthAnalysis& a, AnalysisPicture picture, bool forFloatFile, float* scaleOut)
+algo::ImageRGBA analysisImage(const algo::DepthAnalysis& a, AnalysisPicture picture, bool forFloatFile, float* scaleOut)
 {
     const int w = a.width, h = a.height;
     const std::size_t count = std::size_t(w) * std::size_t(h);
@@ -144,7 +157,8 @@ void writeAnalysisExr(const FrameAnalysis& frame, const QString& path)
     const algo::DepthAnalysis& a = frame.analysis;
     const algo::ImageRGBA& beauty = frame.passes.beauty;
     if (QFileInfo(path).suffix().toLower() != QLatin1String("exr"))
-        throw IoError(path, QCoreApplication::translate("celform::model::RenderOutput", "the analysis needs an .exr file"));
+        throw IoError(
+            path, QCoreApplication::translate("celform::model::RenderOutput", "the analysis needs an .exr file"));
     const int w = a.width, h = a.height;
     const std::vector<std::string> names
         = {"R", "G", "B", "A", "curvature.K", "segment.ID", "depth.Z", "depth_error.Z", "feature.Y"};
@@ -169,7 +183,8 @@ void writeCurvaturePly(
 {
     const std::size_t vertices = std::size_t(shape.rows());
     if (curvature.k1.size() != vertices || curvature.k2.size() != vertices || curvature.gaussian.size() != vertices)
-        throw IoError(path, QCoreApplication::translate("celform::model::RenderOutput", "the curvature does not match the shape"));
+        throw IoError(path,
+            QCoreApplication::translate("celform::model::RenderOutput", "the curvature does not match the shape"));
     const std::string header = "ply\nformat binary_little_endian 1.0\ncomment Written by Celform: principal curvatures "
                                "(Rusinkiewicz 2004)\nelement vertex "
         + std::to_string(vertices)

@@ -30,7 +30,7 @@ Eigen::Vector3f segmentColor(int id);
 
 /// A picture of the analysis, width x height. For 8-bit files and overlays: colours over
 /// transparent pixels (alpha 0) off the model and, for segments, on dropped pixels; the diverging
-/// pictures are white at zero and saturate at *scale, the 98th percentile of |value| over the model
+/// pictures are light grey at zero and saturate at *scale, the 98th percentile of |value| over the model
 /// (returned in scale when not null). For float files (forFloatFile): the raw values in R, G and B
 /// (segment ids, -1 where transparent; curvature; depth error), alpha 1 on the model.
 algo::ImageRGBA analysisImage(

@@ -13,6 +13,12 @@
 #include <exception>
 #include <new>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace celform::views {
 
 /// What the worker needs, copied on the GUI thread: the parts of the document the renderer
@@ -137,7 +143,8 @@ void DepthAnalysisRunner::submit()
     job->generation = m_viewport->displayedShapeGeneration();
     job->camera = m_viewport->camera();
     job->frame = data.currentFrame;
-    const double scale = std::min(1.0, double(m_maximumSide) / std::max(1, std::max(m_viewport->width(), m_viewport->height())));
+    const double scale
+        = std::min(1.0, double(m_maximumSide) / std::max(1, std::max(m_viewport->width(), m_viewport->height())));
     job->width = std::max(1, int(std::lround(m_viewport->width() * scale)));
     job->height = std::max(1, int(std::lround(m_viewport->height() * scale)));
     job->settings = m_settings;
@@ -154,6 +161,11 @@ void DepthAnalysisRunner::submit()
 
 void DepthAnalysisRunner::workerLoop()
 {
+#ifdef __linux__
+    // Below the GUI and the GL threads: on a machine with few cores (farm nodes, software GL) the
+    // picture on screen keeps its frame rate and the analysis takes what is left.
+    ::setpriority(PRIO_PROCESS, pid_t(::syscall(SYS_gettid)), 10);
+#endif
     model::DepthAnalyzer analyzer; // keeps the curvature of a still shape and the buffers
     model::FrameAnalysis frame;
     for (;;) {

@@ -19,7 +19,7 @@
 namespace celform::model {
 class Document;
 struct ChangeSet;
-}
+} // namespace celform::model
 
 namespace celform::views {
 

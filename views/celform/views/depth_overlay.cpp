@@ -53,9 +53,11 @@ void DepthOverlay::drawLegend(QPainter& painter, const QString& positive, const 
     const QFontMetrics metrics(painter.font());
     const int line = metrics.height();
     const QString range = tr("saturates at ±%1").arg(double(scale), 0, 'g', 3);
-    const int textWidth = std::max({metrics.horizontalAdvance(positive), metrics.horizontalAdvance(negative),
-        metrics.horizontalAdvance(range)});
-    const QRect box(8, height() - 8 - 3 * line - 12, textWidth + line + 22, 3 * line + 12);
+    const int textWidth = std::max(
+        {metrics.horizontalAdvance(positive), metrics.horizontalAdvance(negative), metrics.horizontalAdvance(range)});
+    // Bottom right: the axis triad has the bottom left, hints the bottom centre.
+    const QSize size(textWidth + line + 22, 3 * line + 12);
+    const QRect box(QPoint(width() - 8 - size.width(), height() - 8 - size.height()), size);
     painter.setOpacity(1.0);
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(255, 255, 255, 215));

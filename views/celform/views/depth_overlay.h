@@ -21,7 +21,7 @@ public:
     /// None hides the overlay (the analysis may still run for the panel's figures).
     void setKind(Kind kind);
     [[nodiscard]] Kind kind() const { return m_kind; }
-    /// 0..1, how much of the analysis covers the model (0.65 by default).
+    /// 0..1, how much of the analysis covers the model (0.8 by default).
     void setOpacity(double opacity);
     [[nodiscard]] double opacity() const { return m_opacity; }
 
@@ -36,7 +36,7 @@ private:
     QPointer<Viewport> m_viewport;
     DepthAnalysisRunner* m_runner;
     Kind m_kind = Kind::None;
-    double m_opacity = 0.65;
+    double m_opacity = 0.8;
 };
 
 } // namespace celform::views

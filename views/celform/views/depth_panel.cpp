@@ -29,8 +29,8 @@ namespace {
 QIcon swatch(const Eigen::Vector3f& linear)
 {
     QPixmap pixmap(12, 12);
-    pixmap.fill(QColor::fromRgbF(algo::linearToSrgb(linear.x()), algo::linearToSrgb(linear.y()),
-        algo::linearToSrgb(linear.z())));
+    pixmap.fill(QColor::fromRgbF(
+        algo::linearToSrgb(linear.x()), algo::linearToSrgb(linear.y()), algo::linearToSrgb(linear.z())));
     QPainter painter(&pixmap);
     painter.setPen(QColor(60, 60, 60));
     painter.drawRect(0, 0, 11, 11);
@@ -79,7 +79,7 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     m_opacity = new QSlider(Qt::Horizontal, overlayBox);
     m_opacity->setObjectName(QStringLiteral("depthOverlayOpacity"));
     m_opacity->setRange(0, 100);
-    m_opacity->setValue(65);
+    m_opacity->setValue(80);
     m_opacity->setToolTip(tr("How much the overlay covers the model"));
     connect(m_opacity, &QSlider::valueChanged, this, [this](int v) { m_overlay->setOpacity(v / 100.0); });
     opacityRow->addWidget(m_opacity);
@@ -154,6 +154,7 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
                                     "bounding-box diagonal or more belong to different segments"));
     form->addRow(tr("Depth step"), m_depthThreshold);
     m_minPixels = new QSpinBox(settingsBox);
+    m_minPixels->setObjectName(QStringLiteral("minSegmentPixels"));
     m_minPixels->setRange(1, 100000);
     m_minPixels->setValue(algo::kMinSegmentPixels);
     m_minPixels->setSuffix(tr(" px"));
@@ -260,8 +261,8 @@ void DepthPanel::showResult()
             .arg(std::sqrt(result->meanSquaredError), 0, 'g', 3)
             .arg(inside)
             .arg(result->segmentStats.size())
-            .arg(result->modelPixels > 0 ? 100.0 * double(result->featurePixels) / double(result->modelPixels) : 0.0,
-                0, 'f', 1)
+            .arg(result->modelPixels > 0 ? 100.0 * double(result->featurePixels) / double(result->modelPixels) : 0.0, 0,
+                'f', 1)
             .arg(result->modelPixels)
             .arg(result->width)
             .arg(result->height)
