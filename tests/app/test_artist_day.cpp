@@ -226,6 +226,7 @@ private slots:
             {QStringLiteral("cartoon look on/off"), {"actionShowLook"}},
             {QStringLiteral("drawing outline only (aligning)"), {"actionDrawingOutline"}},
             {QStringLiteral("stereo preview in the viewport on/off"), {"actionStereoToggle"}},
+            {QStringLiteral("next depth overlay (none, segments, curvature, depth error)"), {"actionDepthOverlayNext"}},
             {QStringLiteral("set the render camera / look through it"),
                 {"actionSetRenderCamera", "actionViewRenderCamera"}},
             {QStringLiteral("stereo review (full screen)"), {"actionStereoReview"}},

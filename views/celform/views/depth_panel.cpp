@@ -3,6 +3,7 @@
 
 #include "celform/model/depth_analysis_output.h"
 #include "celform/views/depth_analysis_runner.h"
+#include "celform/views/scrolling_panel.h"
 #include "celform/views/viewport.h"
 
 #include <QButtonGroup>
@@ -45,10 +46,12 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     , m_overlay(new DepthOverlay(viewport, m_runner))
 {
     setObjectName(QStringLiteral("depthPanel"));
-    auto* layout = new QVBoxLayout(this);
+    // Scrolls rather than growing the dock column taller than a 1366x768 screen.
+    QVBoxLayout* layout = scrollingPanelLayout(this);
+    QWidget* body = layout->parentWidget();
 
     // The overlays, one at a time, as the thesis shows them.
-    auto* overlayBox = new QGroupBox(tr("Overlay"), this);
+    auto* overlayBox = new QGroupBox(tr("Overlay"), body);
     auto* overlayLayout = new QVBoxLayout(overlayBox);
     m_kinds = new QButtonGroup(this);
     const std::tuple<DepthOverlay::Kind, QString, QString, const char*> kinds[] = {
@@ -87,7 +90,7 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     layout->addWidget(overlayBox);
 
     // The figure of merit (thesis 4.4.1): one number, live.
-    m_mse = new QLabel(this);
+    m_mse = new QLabel(body);
     m_mse->setObjectName(QStringLiteral("depthErrorLabel"));
     QFont big = m_mse->font();
     big.setPointSizeF(big.pointSizeF() * 1.5);
@@ -97,15 +100,15 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     m_mse->setToolTip(tr("Mean squared difference between perceived and real depth over the model's pixels "
                          "(model units squared): lower reads better in stereo"));
     layout->addWidget(m_mse);
-    m_details = new QLabel(this);
+    m_details = new QLabel(body);
     m_details->setWordWrap(true);
     layout->addWidget(m_details);
-    m_status = new QLabel(this);
+    m_status = new QLabel(body);
     m_status->setObjectName(QStringLiteral("depthStatus"));
     layout->addWidget(m_status);
 
     // The segments and their bright/dark ratios against the window (thesis 4.1.3, 5.0.3).
-    m_table = new QTableWidget(0, 4, this);
+    m_table = new QTableWidget(0, 4, body);
     m_table->setObjectName(QStringLiteral("segmentTable"));
     m_table->setHorizontalHeaderLabels({tr("Segment"), tr("Pixels"), tr("Bright ratio"), tr("In window")});
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -118,7 +121,7 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
                            "threshold); the shading line reads best when it is inside the window"));
     layout->addWidget(m_table, 1);
 
-    auto* settingsBox = new QGroupBox(tr("Analysis"), this);
+    auto* settingsBox = new QGroupBox(tr("Analysis"), body);
     auto* form = new QFormLayout(settingsBox);
     m_window = new QComboBox(settingsBox);
     m_window->setObjectName(QStringLiteral("ratioWindow"));
