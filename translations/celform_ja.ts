@@ -696,6 +696,112 @@
         <source>--out must end in .celform, not “%1”</source>
         <translation>--out は .celform で終わる必要があります（“%1” ではなく）</translation>
     </message>
+    <message>
+        <source>--window takes LO,HI with 0 &lt;= LO &lt;= HI &lt;= 1, or lenient, medium or strict, not “%1”</source>
+        <translation>--window には 0 &lt;= LO &lt;= HI &lt;= 1 の LO,HI、または lenient、medium、strict を指定します（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--depth-threshold takes a fraction of the model&apos;s size in (0, 1], not “%1”</source>
+        <translation>--depth-threshold にはモデルの大きさに対する割合 (0, 1] を指定します（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--min-pixels takes a whole number of at least 1, not “%1”</source>
+        <translation>--min-pixels には 1 以上の整数を指定します（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--out must end in .exr, not “%1”</source>
+        <translation>--out は .exr で終わる必要があります（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>segment	pixels	ratio	in window</source>
+        <translation>セグメント	ピクセル	比率	範囲内</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>はい</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>いいえ</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n segment(s), %1 inside the window %2-%3</source>
+        <translation>
+            <numerusform>%n 個のセグメント、範囲 %2-%3 の内側に %1 個</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>depth error: MSE %1, RMSE %2 (model units; %3 of %4 model pixels are features)</source>
+        <translation>奥行き誤差: MSE %1、RMSE %2（モデル単位。モデルの %4 ピクセル中 %3 ピクセルが特徴ピクセル）</translation>
+    </message>
+    <message>
+        <source>time: %1 ms (curvature %2 ms)</source>
+        <translation>時間: %1 ms（曲率 %2 ms）</translation>
+    </message>
+    <message>
+        <source>--out must end in .ply, not “%1”</source>
+        <translation>--out は .ply で終わる必要があります（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--out would overwrite the project</source>
+        <translation>--out がプロジェクトを上書きしてしまいます</translation>
+    </message>
+    <message>
+        <source>Frame to analyse (default 0).</source>
+        <translation>解析するフレーム（既定値 0）。</translation>
+    </message>
+    <message>
+        <source>Picture size (default 1280x720).</source>
+        <translation>画像サイズ（既定値 1280x720）。</translation>
+    </message>
+    <message>
+        <source>Shading style of the analysed picture.</source>
+        <translation>解析する画像のシェーディングスタイル。</translation>
+    </message>
+    <message>
+        <source>Lines in the analysed picture (on) or not (off).</source>
+        <translation>解析する画像に線を描く（on）か描かない（off）か。</translation>
+    </message>
+    <message>
+        <source>Key light for this analysis.</source>
+        <translation>この解析のキーライト。</translation>
+    </message>
+    <message>
+        <source>Bright/dark ratio window a segment should be in: LO,HI, lenient (0.2-0.8), medium (0.35-0.65, the default) or strict (0.5).</source>
+        <translation>セグメントの明暗比が収まるべき範囲: LO,HI、lenient（0.2-0.8）、medium（0.35-0.65、既定）、strict（0.5）。</translation>
+    </message>
+    <message>
+        <source>Neighbouring pixels whose depths differ by this fraction of the model&apos;s bounding-box diagonal or more are in different segments (default 0.02).</source>
+        <translation>奥行きの差がモデルのバウンディングボックス対角線のこの割合以上ある隣接ピクセルは別のセグメントになります（既定値 0.02）。</translation>
+    </message>
+    <message>
+        <source>Segments smaller than this are dropped as noise (default 64).</source>
+        <translation>これより小さいセグメントはノイズとして除きます（既定値 64）。</translation>
+    </message>
+    <message>
+        <source>Write the picture and the buffers (curvature, segment ids, depth, depth error, features) as EXR channels.</source>
+        <translation>画像とバッファ（曲率、セグメント番号、奥行き、奥行き誤差、特徴）を EXR のチャンネルとして書き出します。</translation>
+    </message>
+    <message>
+        <source>Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error.</source>
+        <translation>画像の立体視奥行き解析: セグメントとその明暗比、および奥行き誤差。</translation>
+    </message>
+    <message>
+        <source>Writes the per-vertex principal curvatures k1, k2 and the Gaussian curvature K as PLY properties.</source>
+        <translation>頂点ごとの主曲率 k1、k2 とガウス曲率 K を PLY のプロパティとして書き出します。</translation>
+    </message>
+    <message>
+        <source>Frame of the shape (default 0).</source>
+        <translation>形状のフレーム（既定値 0）。</translation>
+    </message>
+    <message>
+        <source>The view-dependent shape seen from this direction (default: the base model).</source>
+        <translation>この方向から見たビュー依存形状（既定: ベースモデル）。</translation>
+    </message>
+    <message>
+        <source>The PLY file to write.</source>
+        <translation>書き出す PLY ファイル。</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::FirstStepsHint</name>
@@ -1288,6 +1394,42 @@ Recover it now?</source>
     <message>
         <source>Redo</source>
         <translation>やり直し</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>奥行き</translation>
+    </message>
+    <message>
+        <source>&amp;None</source>
+        <translation>なし(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Segments</source>
+        <translation>セグメント(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Gaussian &amp;Curvature</source>
+        <translation>ガウス曲率(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Depth Error</source>
+        <translation>奥行き誤差(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Show this depth analysis over the viewport (Depth dock)</source>
+        <translation>この奥行き解析をビューポートに重ねて表示します（奥行きドック）</translation>
+    </message>
+    <message>
+        <source>Next Depth &amp;Overlay</source>
+        <translation>次の奥行きオーバーレイ(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Cycle the viewport&apos;s depth overlay: none, segments, Gaussian curvature, depth error</source>
+        <translation>ビューポートの奥行きオーバーレイを切り替えます: なし、セグメント、ガウス曲率、奥行き誤差</translation>
+    </message>
+    <message>
+        <source>&amp;Depth Overlay</source>
+        <translation>奥行きオーバーレイ(&amp;D)</translation>
     </message>
 </context>
 <context>
@@ -2600,6 +2742,61 @@ Recover it now?</source>
         <source>the image is too large for its file (%1 x %2 pixels from %3 bytes): the file is damaged</source>
         <translation>ファイルの大きさに対して画像が大きすぎます（%3 バイトから %1 x %2 ピクセル）。ファイルが壊れています</translation>
     </message>
+    <message>
+        <source>the file cannot be written: %1</source>
+        <translation>ファイルを書き込めません: %1</translation>
+    </message>
+    <message>
+        <source>the importer&apos;s result is damaged</source>
+        <translation>インポーターの結果が壊れています</translation>
+    </message>
+    <message>
+        <source>a temporary folder for the importer cannot be made: %1</source>
+        <translation>インポーター用の一時フォルダーを作成できません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::ImportProcess</name>
+    <message>
+        <source>%1 GB</source>
+        <translation>%1 GB</translation>
+    </message>
+    <message>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
+    </message>
+    <message>
+        <source>cannot be read: the importer (the celform program) was not found; set CELFORM_EXECUTABLE</source>
+        <translation>読み込めません: インポーター（celform プログラム）が見つかりません。CELFORM_EXECUTABLE を設定してください</translation>
+    </message>
+    <message>
+        <source>cannot be read: the importer (%1) cannot be started: %2</source>
+        <translation>読み込めません: インポーター（%1）を起動できません: %2</translation>
+    </message>
+    <message>
+        <source>the importer took longer than %1 s and was stopped (the limit is CELFORM_IMPORT_SECONDS)</source>
+        <translation>インポーターが %1 秒を超えたため停止しました（上限は CELFORM_IMPORT_SECONDS）</translation>
+    </message>
+    <message>
+        <source>the importer used more than %1 s of processor time and was stopped</source>
+        <translation>インポーターが %1 秒を超える CPU 時間を使ったため停止しました</translation>
+    </message>
+    <message>
+        <source>the importer crashed on it (signal %1, %2)</source>
+        <translation>インポーターがこのファイルでクラッシュしました（シグナル %1、%2）</translation>
+    </message>
+    <message>
+        <source>the importer refused it</source>
+        <translation>インポーターが読み込みを拒否しました</translation>
+    </message>
+    <message>
+        <source>the importer needs more than %1 of memory for it and was stopped (the limit is CELFORM_IMPORT_MEMORY_MB)</source>
+        <translation>インポーターが %1 を超えるメモリを必要としたため停止しました（上限は CELFORM_IMPORT_MEMORY_MB）</translation>
+    </message>
+    <message>
+        <source>the importer failed on it (exit code %1): %2</source>
+        <translation>インポーターが失敗しました（終了コード %1）: %2</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::MeshIo</name>
@@ -2937,6 +3134,22 @@ Recover it now?</source>
         <source>element &quot;%1&quot; has %2 rows but no properties</source>
         <translation>要素 &quot;%1&quot; は %2 行ありますが、プロパティがありません</translation>
     </message>
+    <message>
+        <source>its first chunk states %1 bytes, but the file holds %2 bytes after its headers</source>
+        <translation>最初のチャンクは %1 バイトとしていますが、ヘッダーの後には %2 バイトしかありません</translation>
+    </message>
+    <message>
+        <source>the importer&apos;s result is damaged</source>
+        <translation>インポーターの結果が壊れています</translation>
+    </message>
+    <message>
+        <source>a temporary folder for the importer cannot be made: %1</source>
+        <translation>インポーター用の一時フォルダーを作成できません: %1</translation>
+    </message>
+    <message>
+        <source>the importer&apos;s result cannot be read: %1</source>
+        <translation>インポーターの結果を読み込めません: %1</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ProjectFile</name>
@@ -3181,6 +3394,14 @@ Recover it now?</source>
         <source>all passes together need an .exr file</source>
         <translation>すべてのパスをまとめて書き出すには .exr ファイルが必要です</translation>
     </message>
+    <message>
+        <source>the analysis needs an .exr file</source>
+        <translation>解析結果には .exr ファイルが必要です</translation>
+    </message>
+    <message>
+        <source>the curvature does not match the shape</source>
+        <translation>曲率が形状と一致しません</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::AlignTool</name>
@@ -3233,6 +3454,207 @@ Recover it now?</source>
     <message>
         <source>Move the mouse to resize the brush; click or Enter to keep, Esc to cancel.</source>
         <translation>マウスを動かしてブラシの大きさを変えます。クリックか Enter で確定、Esc で取り消し。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::DepthAnalysisRunner</name>
+    <message>
+        <source>No base model to analyse</source>
+        <translation>解析するベースモデルがありません</translation>
+    </message>
+    <message>
+        <source>Not enough memory for the analysis at %1 x %2</source>
+        <translation>%1 x %2 の解析に必要なメモリが足りません</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::DepthOverlay</name>
+    <message>
+        <source>saturates at ±%1</source>
+        <translation>±%1 で飽和</translation>
+    </message>
+    <message>
+        <source>K &gt; 0 (dome)</source>
+        <translation>K &gt; 0（ドーム状）</translation>
+    </message>
+    <message>
+        <source>K &lt; 0 (saddle)</source>
+        <translation>K &lt; 0（鞍状）</translation>
+    </message>
+    <message>
+        <source>seen farther than it is</source>
+        <translation>実際より遠くに見える</translation>
+    </message>
+    <message>
+        <source>seen nearer than it is</source>
+        <translation>実際より近くに見える</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::DepthPanel</name>
+    <message>
+        <source>Overlay</source>
+        <translation>オーバーレイ</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <source>Show the picture without an overlay</source>
+        <translation>オーバーレイなしで画像を表示します</translation>
+    </message>
+    <message>
+        <source>Segments</source>
+        <translation>セグメント</translation>
+    </message>
+    <message>
+        <source>Parts of salient shape: neighbouring pixels with the same sign of Gaussian curvature and close depths, one colour each (segments under the minimum size are left out)</source>
+        <translation>形状の目立つ部分: ガウス曲率の符号が同じで奥行きが近い隣接ピクセルのまとまりを 1 色ずつで表示します（最小サイズ未満のセグメントは除きます）</translation>
+    </message>
+    <message>
+        <source>Gaussian curvature</source>
+        <translation>ガウス曲率</translation>
+    </message>
+    <message>
+        <source>Orange where the surface is dome-like (K &gt; 0), blue where it is saddle-like (K &lt; 0)</source>
+        <translation>面がドーム状（K &gt; 0）の所はオレンジ、鞍状（K &lt; 0）の所は青</translation>
+    </message>
+    <message>
+        <source>Depth error</source>
+        <translation>奥行き誤差</translation>
+    </message>
+    <message>
+        <source>How far the depth a viewer perceives (that of the nearest colour edge) is from the real depth: blue where the surface is seen farther than it is, orange where it is seen nearer</source>
+        <translation>見る人が感じる奥行き（最も近い色の境界の奥行き）と実際の奥行きの差: 実際より遠くに見える所は青、近くに見える所はオレンジ</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>不透明度</translation>
+    </message>
+    <message>
+        <source>How much the overlay covers the model</source>
+        <translation>オーバーレイがモデルをどれだけ覆うか</translation>
+    </message>
+    <message>
+        <source>Mean squared difference between perceived and real depth over the model&apos;s pixels (model units squared): lower reads better in stereo</source>
+        <translation>モデルのピクセル全体での、感じる奥行きと実際の奥行きの差の二乗平均（モデル単位の二乗）: 小さいほど立体視で形が読み取りやすくなります</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>セグメント</translation>
+    </message>
+    <message>
+        <source>Pixels</source>
+        <translation>ピクセル</translation>
+    </message>
+    <message>
+        <source>Bright ratio</source>
+        <translation>明部の比率</translation>
+    </message>
+    <message>
+        <source>In window</source>
+        <translation>範囲内</translation>
+    </message>
+    <message>
+        <source>Each segment&apos;s share of pixels shaded bright (N·L plus offset above the toon threshold); the shading line reads best when it is inside the window</source>
+        <translation>各セグメントで明るく塗られたピクセルの割合（N·L とオフセットの和がトゥーンのしきい値以上）。範囲内にあるとき陰影の境界線が最も読み取りやすくなります</translation>
+    </message>
+    <message>
+        <source>Analysis</source>
+        <translation>解析</translation>
+    </message>
+    <message>
+        <source>Lenient (0.20–0.80)</source>
+        <translation>緩い（0.20–0.80）</translation>
+    </message>
+    <message>
+        <source>Medium (0.35–0.65)</source>
+        <translation>中程度（0.35–0.65）</translation>
+    </message>
+    <message>
+        <source>Strict (0.50)</source>
+        <translation>厳しい（0.50）</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>カスタム</translation>
+    </message>
+    <message>
+        <source>The bright/dark ratios a segment should have (thesis 5.0.3)</source>
+        <translation>セグメントが持つべき明暗比（論文 5.0.3）</translation>
+    </message>
+    <message>
+        <source>Ratio window</source>
+        <translation>比率の範囲</translation>
+    </message>
+    <message>
+        <source>Lowest acceptable bright ratio</source>
+        <translation>許容する明部比率の下限</translation>
+    </message>
+    <message>
+        <source>Highest acceptable bright ratio</source>
+        <translation>許容する明部比率の上限</translation>
+    </message>
+    <message>
+        <source>From, to</source>
+        <translation>下限、上限</translation>
+    </message>
+    <message>
+        <source> % of size</source>
+        <translation> %（サイズ比）</translation>
+    </message>
+    <message>
+        <source>Neighbouring pixels whose depths differ by this share of the model&apos;s bounding-box diagonal or more belong to different segments</source>
+        <translation>奥行きの差がモデルのバウンディングボックス対角線のこの割合以上ある隣接ピクセルは別のセグメントになります</translation>
+    </message>
+    <message>
+        <source>Depth step</source>
+        <translation>奥行きの段差</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Smaller segments are dropped as noise (the thesis uses 64 pixels)</source>
+        <translation>これより小さいセグメントはノイズとして除きます（論文では 64 ピクセル）</translation>
+    </message>
+    <message>
+        <source>Smallest segment</source>
+        <translation>最小セグメント</translation>
+    </message>
+    <message>
+        <source>Depth error: —</source>
+        <translation>奥行き誤差: —</translation>
+    </message>
+    <message>
+        <source>Analysing…</source>
+        <translation>解析中…</translation>
+    </message>
+    <message>
+        <source>Depth error MSE: %1</source>
+        <translation>奥行き誤差 MSE: %1</translation>
+    </message>
+    <message>
+        <source>RMSE %1 model units · %2 of %3 segments inside the window · features on %4% of %5 model pixels · %6 x %7 px in %8 ms</source>
+        <translation>RMSE %1 モデル単位 · %3 セグメント中 %2 が範囲内 · 特徴ピクセルはモデルの %5 ピクセルの %4% · %6 x %7 px を %8 ms で解析</translation>
+    </message>
+    <message>
+        <source>Dome-like (K &gt; 0)</source>
+        <translation>ドーム状（K &gt; 0）</translation>
+    </message>
+    <message>
+        <source>Saddle-like (K &lt; 0)</source>
+        <translation>鞍状（K &lt; 0）</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>はい</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>いいえ</translation>
     </message>
 </context>
 <context>
@@ -4242,10 +4664,6 @@ Size %4 × %5 × %6</source>
         <translation>スムーズ</translation>
     </message>
     <message>
-        <source>Move drags the selection; Smooth relaxes it toward its neighbours while you drag</source>
-        <translation>「移動」はドラッグで選択範囲を動かします。「スムーズ」はドラッグ中に選択範囲を周囲の頂点になじませます</translation>
-    </message>
-    <message>
         <source>&amp;Mode:</source>
         <translation>モード(&amp;M):</translation>
     </message>
@@ -4368,6 +4786,14 @@ Size %4 × %5 × %6</source>
     <message>
         <source>Match Points: Shift+click the same feature on the drawing (pair %1)</source>
         <translation>点の対応付け: 絵の上で同じ特徴を Shift+クリックしてください（%1 組目）</translation>
+    </message>
+    <message>
+        <source>Relax</source>
+        <translation>リラックス</translation>
+    </message>
+    <message>
+        <source>Move drags the selection; Smooth pulls it toward its neighbours while you drag (it flattens spikes); Relax evens the vertices out along the surface and keeps the shape and its silhouette</source>
+        <translation>移動は選択部分をドラッグします。スムーズはドラッグ中に隣接頂点の方へ引き寄せます（とがりを平らにします）。リラックスは形とシルエットを保ったまま面に沿って頂点の間隔をそろえます</translation>
     </message>
 </context>
 <context>
