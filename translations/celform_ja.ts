@@ -3549,7 +3549,7 @@ Recover it now?</source>
         <translation>ピクセル</translation>
     </message>
     <message>
-        <source>Bright ratio</source>
+        <source>Ratio</source>
         <translation>明部の比率</translation>
     </message>
     <message>

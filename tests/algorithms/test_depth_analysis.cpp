@@ -5,10 +5,13 @@
 #include "test_meshes.h"
 #include "test_support.h"
 
+#include "celform/algorithms/curvature.h"
 #include "celform/algorithms/depth_analysis.h"
 #include "celform/algorithms/distance_transform.h"
 #include "celform/algorithms/render.h"
 #include "celform/algorithms/segments.h"
+#include "celform/model/depth_analysis_output.h"
+#include "celform/model/render_output.h"
 
 #include <limits>
 #include <random>
@@ -206,6 +209,58 @@ private slots:
         // With a threshold larger than any step between them, they merge into one.
         analyse(scene, camera(240), Eigen::Vector3f(0, 0, 1), 4.f, 10.f, a);
         QCOMPARE(int(a.stats.size()), 1);
+    }
+
+    void dentedSphereSegmentsItsDent()
+    {
+        // Figure 4.5: a sphere with a smooth inward dent facing the camera. The dent's floor is
+        // still dome-like (both principal curvatures flip sign: K > 0), its rim is a saddle ring
+        // (K < 0), the rest of the sphere K > 0: three segments, the middle one of negative
+        // curvature around the floor's.
+        auto mesh = celform::test::icosphere(5);
+        const Eigen::Vector3f axis(0.f, 0.f, 1.f);
+        for (Eigen::Index v = 0; v < mesh->vertices.rows(); ++v) {
+            const Eigen::Vector3f p = mesh->vertices.row(v);
+            const float angle = std::acos(std::clamp(p.dot(axis), -1.f, 1.f));
+            const float depth = 0.35f * std::exp(-(angle * angle) / (2.f * 0.28f * 0.28f));
+            mesh->vertices.row(v) = p * (1.f - depth);
+        }
+        Curvatures k;
+        computeCurvatures(mesh->vertices, mesh->faces, k);
+        RenderLook look;
+        look.light = Eigen::Vector3f(0.3f, 0.5f, 1.f);
+        RenderCache cache;
+        RenderPasses passes;
+        GBuffer g;
+        const RasterCamera cam = camera(240);
+        renderFrame(mesh->vertices, *mesh, cam, look, cache, passes, nullptr, &g);
+        DepthAnalysisSettings settings;
+        settings.depthThreshold = 0.04f;
+        settings.light = look.light;
+        DepthAnalysis a;
+        analyzeDepth(g, passes.normal, passes.beauty, mesh->faces, k.gaussian, settings, a);
+        int positive = 0, negative = 0;
+        for (const SegmentStats& s : a.stats)
+            (s.meanCurvature > 0.f ? positive : negative) += 1;
+        QVERIFY2(positive >= 2 && negative >= 1,
+            qPrintable(QStringLiteral("%1 positive, %2 negative segments").arg(positive).arg(negative)));
+        // The picture's centre (the dent's floor) and a point on the rim differ in sign.
+        const int centre = 120 * 240 + 120;
+        QVERIFY(a.curvature[std::size_t(centre)] > 0.f);
+        QVERIFY(a.segments.labels[std::size_t(centre)] >= 0);
+        // The depth error is not zero: the dent's inside has few colour edges.
+        QVERIFY(a.meanSquaredError > 0.0);
+        // Pictures to hold beside the thesis's figures 4.5 and 4.17 (CELFORM_SCREENSHOT_DIR).
+        const QString dir = qEnvironmentVariable("CELFORM_SCREENSHOT_DIR");
+        if (!dir.isEmpty()) {
+            using celform::model::AnalysisPicture;
+            celform::model::writeImage(passes.beauty, dir + QStringLiteral("/dented-beauty.png"));
+            for (const auto& [picture, name] : {std::pair{AnalysisPicture::Segments, "segments"},
+                     std::pair{AnalysisPicture::Curvature, "curvature"},
+                     std::pair{AnalysisPicture::DepthError, "depth-error"}})
+                celform::model::writeImage(celform::model::analysisImage(a, picture, false),
+                    dir + QStringLiteral("/dented-%1.png").arg(QLatin1String(name)));
+        }
     }
 
     void sphereRatiosFollowTheLight_data()

@@ -96,6 +96,7 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     big.setPointSizeF(big.pointSizeF() * 1.5);
     big.setBold(true);
     m_mse->setFont(big);
+    m_mse->setWordWrap(true); // a narrow dock wraps it instead of clipping the panel
     m_mse->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_mse->setToolTip(tr("Mean squared difference between perceived and real depth over the model's pixels "
                          "(model units squared): lower reads better in stereo"));
@@ -110,9 +111,11 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     // The segments and their bright/dark ratios against the window (thesis 4.1.3, 5.0.3).
     m_table = new QTableWidget(0, 4, body);
     m_table->setObjectName(QStringLiteral("segmentTable"));
-    m_table->setHorizontalHeaderLabels({tr("Segment"), tr("Pixels"), tr("Bright ratio"), tr("In window")});
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setHorizontalHeaderLabels({tr("Segment"), tr("Pixels"), tr("Ratio"), tr("In window")});
+    // The columns share the dock's width (no horizontal scrolling in a narrow dock).
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setMinimumSectionSize(40);
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
@@ -123,6 +126,7 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
 
     auto* settingsBox = new QGroupBox(tr("Analysis"), body);
     auto* form = new QFormLayout(settingsBox);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows); // narrow docks put a field under its label
     m_window = new QComboBox(settingsBox);
     m_window->setObjectName(QStringLiteral("ratioWindow"));
     m_window->addItem(tr("Lenient (0.20–0.80)"));
@@ -130,6 +134,8 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     m_window->addItem(tr("Strict (0.50)"));
     m_window->addItem(tr("Custom"));
     m_window->setCurrentIndex(1);
+    m_window->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_window->setMinimumContentsLength(8);
     m_window->setToolTip(tr("The bright/dark ratios a segment should have (thesis 5.0.3)"));
     form->addRow(tr("Ratio window"), m_window);
     auto* range = new QHBoxLayout;
