@@ -250,8 +250,8 @@ void MainWindow::createDocks()
     // Stereo depth analysis (paper 3, chapter 4): overlays, segment ratios and the depth error.
     m_depth = new views::DepthPanel(m_document, m_viewport, this);
     makeDock(tr("Depth"), QStringLiteral("depthDock"), m_depth, Qt::RightDockWidgetArea);
-    tabifyDockWidget(
-        findChild<QDockWidget*>(QStringLiteral("highlightsDock")), findChild<QDockWidget*>(QStringLiteral("depthDock")));
+    tabifyDockWidget(findChild<QDockWidget*>(QStringLiteral("highlightsDock")),
+        findChild<QDockWidget*>(QStringLiteral("depthDock")));
     findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
 
     // Paper 1, figure 4: the key directions on the viewing sphere and the facet of this view.

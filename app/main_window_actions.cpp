@@ -199,9 +199,8 @@ void MainWindow::createActions()
                 a->setChecked(true);
     });
     make(QStringLiteral("actionDepthOverlayNext"), tr("Next Depth &Overlay"), QKeySequence(Qt::SHIFT | Qt::Key_D),
-        tr("Cycle the viewport's depth overlay: none, segments, Gaussian curvature, depth error"), [this] {
-            m_depth->setOverlayKind(views::DepthOverlay::Kind((int(m_depth->overlay()->kind()) + 1) % 4));
-        });
+        tr("Cycle the viewport's depth overlay: none, segments, Gaussian curvature, depth error"),
+        [this] { m_depth->setOverlayKind(views::DepthOverlay::Kind((int(m_depth->overlay()->kind()) + 1) % 4)); });
     make(QStringLiteral("actionStereoToggle"), tr("Toggle Stereo &Preview"), QKeySequence(Qt::CTRL | Qt::Key_3),
         tr("Switch the viewport between mono and the last stereo mode (anaglyph at first)"), [this] {
             const bool on = m_viewport->stereo() == algo::StereoOutput::Off;

@@ -40,19 +40,8 @@ RatioWindow parseWindow(const QString& text)
 
 int runAnalyze(const Invocation& in)
 {
-    camera_options::checkCombination(in, false);
     model::RenderJob job;
-    if (camera_options::byCamera(in))
-        job.camera = camera_options::explicitCamera(in);
-    if (camera_options::byView(in))
-        job.view = camera_options::view(in);
-    job.firstFrame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
-    job.lastFrame = job.firstFrame;
-    if (in.isSet("size"))
-        job.size = parseSize("size", in.value("size"));
-    job.style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
-    job.lines = optionalValue(in, "lines", [](const QString& v) { return parseOnOff("lines", v); });
-    job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
+    readPictureOptions(in, job);
     model::AnalysisSettings settings;
     if (in.isSet("window"))
         settings.window = parseWindow(in.value("window"));

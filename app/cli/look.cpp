@@ -102,23 +102,12 @@ int runSet(const Invocation& in)
 int runRender(const Invocation& in)
 {
     // Every option is checked before any work: a usage error renders nothing.
-    camera_options::checkCombination(in, false);
-    model::RenderJob job;
-    if (camera_options::byCamera(in))
-        job.camera = camera_options::explicitCamera(in);
-    if (camera_options::byView(in))
-        job.view = camera_options::view(in);
     if (in.isSet("frame") && in.isSet("frames"))
         throw UsageError{Cli::tr("give either --frame or --frames")};
-    job.firstFrame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
-    job.lastFrame = job.firstFrame;
+    model::RenderJob job;
+    readPictureOptions(in, job);
     if (in.isSet("frames"))
         std::tie(job.firstFrame, job.lastFrame) = parseFrameRange("frames", in.value("frames"));
-    if (in.isSet("size"))
-        job.size = parseSize("size", in.value("size"));
-    job.style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
-    job.lines = optionalValue(in, "lines", [](const QString& v) { return parseOnOff("lines", v); });
-    job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
     job.stereo = in.isSet("stereo") ? parseStereo(in.value("stereo")) : algo::StereoOutput::Off;
     job.pass = in.value("pass");
     if (in.isSet("pass") && !model::renderPassNames().contains(job.pass))

@@ -281,4 +281,20 @@ Vector3 view(const Invocation& in)
 
 } // namespace camera_options
 
+void readPictureOptions(const Invocation& in, model::RenderJob& job)
+{
+    camera_options::checkCombination(in, false);
+    if (camera_options::byCamera(in))
+        job.camera = camera_options::explicitCamera(in);
+    if (camera_options::byView(in))
+        job.view = camera_options::view(in);
+    job.firstFrame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    job.lastFrame = job.firstFrame;
+    if (in.isSet("size"))
+        job.size = parseSize("size", in.value("size"));
+    job.style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
+    job.lines = optionalValue(in, "lines", [](const QString& v) { return parseOnOff("lines", v); });
+    job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
+}
+
 } // namespace celform::app

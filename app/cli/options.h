@@ -87,4 +87,8 @@ void checkCombination(const Invocation& in, bool required);
 [[nodiscard]] Eigen::Vector3d view(const Invocation& in);
 } // namespace camera_options
 
+/// The picture options `render` and `analyze` share, read into job: the camera (--view, or --eye,
+/// --target and --up), --frame, --size, and the look overrides --style, --lines and --light.
+void readPictureOptions(const Invocation& in, model::RenderJob& job);
+
 } // namespace celform::app

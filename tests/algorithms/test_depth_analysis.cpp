@@ -255,9 +255,9 @@ private slots:
         if (!dir.isEmpty()) {
             using celform::model::AnalysisPicture;
             celform::model::writeImage(passes.beauty, dir + QStringLiteral("/dented-beauty.png"));
-            for (const auto& [picture, name] : {std::pair{AnalysisPicture::Segments, "segments"},
-                     std::pair{AnalysisPicture::Curvature, "curvature"},
-                     std::pair{AnalysisPicture::DepthError, "depth-error"}})
+            for (const auto& [picture, name] :
+                {std::pair{AnalysisPicture::Segments, "segments"}, std::pair{AnalysisPicture::Curvature, "curvature"},
+                    std::pair{AnalysisPicture::DepthError, "depth-error"}})
                 celform::model::writeImage(celform::model::analysisImage(a, picture, false),
                     dir + QStringLiteral("/dented-%1.png").arg(QLatin1String(name)));
         }

@@ -127,19 +127,28 @@ Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJo
         data, job.view.value_or(defaultRenderView()), double(job.size.width()) / std::max(1, job.size.height()));
 }
 
-int renderFrames(const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks)
+ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job)
 {
     if (!data.baseMesh)
         throw IoError(source, RenderJobText::tr("has no base model"));
-    // The overrides apply to this render only.
-    const Look look = renderJobLook(data, job);
-    const Camera camera = renderJobCamera(data, look, job);
-
-    BlendEvaluator blender;
+    ResolvedRenderJob resolved;
+    // The overrides apply to this job only.
+    resolved.look = renderJobLook(data, job);
+    resolved.camera = renderJobCamera(data, resolved.look, job);
     QString error;
-    if (!blender.update(data, &error))
+    if (!resolved.blender.update(data, &error))
         throw IoError(source, error);
-    const Eigen::Vector3d direction = blender.viewDirection(data, camera.eye);
+    resolved.direction = BlendEvaluator::viewDirection(data, resolved.camera.eye);
+    return resolved;
+}
+
+int renderFrames(const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks)
+{
+    const ResolvedRenderJob resolved = resolveRenderJob(data, source, job);
+    const Look& look = resolved.look;
+    const Camera& camera = resolved.camera;
+    const BlendEvaluator& blender = resolved.blender;
+    const Eigen::Vector3d& direction = resolved.direction;
     const bool allPasses = job.writesAllPasses();
     const bool floatFile = QFileInfo(job.output).suffix().toLower() == QLatin1String("exr");
     auto cancelled = [&callbacks] { return callbacks.cancelled && callbacks.cancelled(); };

@@ -6,6 +6,7 @@
 #include "celform/algorithms/stereo.h"
 #include "celform/model/camera.h"
 #include "celform/model/project_data.h"
+#include "celform/model/view_blend.h"
 
 #include <Eigen/Core>
 
@@ -82,6 +83,19 @@ Look renderJobLook(const ProjectData& data, const RenderJob& job);
 
 /// The camera a job looks through for a project (see RenderJob::camera). Needs a base mesh.
 Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job);
+
+/// What a job looks at and through, resolved once: the look with the job's overrides, the camera,
+/// and the blend evaluator built for the project's keys with the camera's view direction.
+struct ResolvedRenderJob {
+    Look look;
+    Camera camera;
+    BlendEvaluator blender;
+    Eigen::Vector3d direction;
+};
+
+/// Resolves a job for a project; throws IoError naming source when there is no base model or the
+/// keys cannot be blended.
+ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job);
 
 /// What a running render reports and asks. Both are called on the rendering thread.
 struct RenderCallbacks {
