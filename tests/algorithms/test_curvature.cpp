@@ -1,13 +1,14 @@
 // Per-vertex curvature (Rusinkiewicz 2004) on surfaces whose curvature is known in closed form:
 // sphere, torus, saddle, plane; degenerate input; Gauss-Bonnet on the shared genus-0 meshes.
+#include "test_meshes.h"
 #include "test_support.h"
 
 #include "celform/algorithms/curvature.h"
 #include "celform/algorithms/mesh_analysis.h"
 #include "celform/algorithms/tri_mesh.h"
+#include "celform/model/mesh_io.h"
 
 #include <QFile>
-#include <QTextStream>
 
 #include <cmath>
 #include <map>
@@ -20,41 +21,11 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-/// Icosahedron split `levels` times (each triangle into four), vertices pushed onto the sphere.
+/// The shared unit icosphere (test_meshes.h) split `levels` times, scaled to radius.
 TriMesh icosphere(int levels, float radius)
 {
-    const float g = (1.f + std::sqrt(5.f)) / 2.f;
-    std::vector<Eigen::Vector3f> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-        {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    std::vector<Eigen::Vector3i> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-        {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5},
-        {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-    for (Eigen::Vector3f& v : p)
-        v.normalize();
-    for (int level = 0; level < levels; ++level) {
-        std::map<std::pair<int, int>, int> midpoints;
-        auto mid = [&](int a, int b) {
-            const auto key = std::minmax(a, b);
-            const auto it = midpoints.find(key);
-            if (it != midpoints.end())
-                return it->second;
-            p.push_back((p[std::size_t(a)] + p[std::size_t(b)]).normalized());
-            return midpoints[key] = int(p.size()) - 1;
-        };
-        std::vector<Eigen::Vector3i> next;
-        for (const Eigen::Vector3i& t : f) {
-            const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
-            next.insert(next.end(), {{t[0], ab, ca}, {t[1], bc, ab}, {t[2], ca, bc}, {ab, bc, ca}});
-        }
-        f = std::move(next);
-    }
-    TriMesh m;
-    m.vertices.resize(Eigen::Index(p.size()), 3);
-    for (std::size_t i = 0; i < p.size(); ++i)
-        m.vertices.row(Eigen::Index(i)) = radius * p[i].transpose();
-    m.faces.resize(Eigen::Index(f.size()), 3);
-    for (std::size_t i = 0; i < f.size(); ++i)
-        m.faces.row(Eigen::Index(i)) = f[i].transpose();
+    TriMesh m = *celform::test::icosphere(levels);
+    m.vertices *= radius;
     return m;
 }
 
@@ -99,31 +70,6 @@ template <typename Height> TriMesh heightField(int n, Height height)
             m.faces.row(f++) << a, c, d;
         }
     return m;
-}
-
-/// Minimal OFF reader (triangles only) so that this suite needs no model library.
-bool readOff(const QString& path, TriMesh& m)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return false;
-    QTextStream in(&file);
-    QString magic;
-    qint64 nv = 0, nf = 0, ne = 0;
-    in >> magic >> nv >> nf >> ne;
-    if (magic != QStringLiteral("OFF") || nv <= 0 || nf <= 0)
-        return false;
-    m.vertices.resize(nv, 3);
-    for (qint64 i = 0; i < nv; ++i)
-        in >> m.vertices(i, 0) >> m.vertices(i, 1) >> m.vertices(i, 2);
-    m.faces.resize(nf, 3);
-    for (qint64 i = 0; i < nf; ++i) {
-        int corners = 0;
-        in >> corners >> m.faces(i, 0) >> m.faces(i, 1) >> m.faces(i, 2);
-        if (corners != 3)
-            return false;
-    }
-    return in.status() == QTextStream::Ok;
 }
 
 bool allFinite(const Curvatures& c)
@@ -449,8 +395,7 @@ private slots:
         QFETCH(double, rawTolerance);
         QFETCH(double, smoothedTolerance);
         CELFORM_REQUIRE_SHARED(path, file);
-        TriMesh m;
-        QVERIFY2(readOff(path, m), qPrintable(path));
+        const TriMesh m = celform::model::importMesh(path).mesh;
         QVERIFY(!findFatalDefect(m));
         Curvatures c;
         computeCurvatures(m.vertices, m.faces, Positions(), c);
