@@ -107,7 +107,7 @@ algo::ImageRGBA analysisImage(const algo::DepthAnalysis& a, AnalysisPicture pict
     const Eigen::Vector3f blue(algo::srgbToLinear(0.10f), algo::srgbToLinear(0.35f), algo::srgbToLinear(0.95f));
     float scale = 0.f;
     if (picture == AnalysisPicture::Curvature)
-        scale = robustScale(a.curvature, a.depth);
+        scale = a.curvatureScale > 0.f ? a.curvatureScale : robustScale(a.curvature, a.depth);
     else if (picture == AnalysisPicture::DepthError)
         scale = robustScale(a.depthError, a.depth);
     if (scaleOut)

@@ -30,8 +30,9 @@ Eigen::Vector3f segmentColor(int id);
 
 /// A picture of the analysis, width x height. For 8-bit files and overlays: colours over
 /// transparent pixels (alpha 0) off the model and, for segments, on dropped pixels; the diverging
-/// pictures are light grey at zero and saturate at *scale, the 98th percentile of |value| over the model
-/// (returned in scale when not null). For float files (forFloatFile): the raw values in R, G and B
+/// pictures are light grey at zero and saturate at *scale (returned when not null): for curvature
+/// the shape's (DepthAnalysis::curvatureScale), for the depth error the 98th percentile of |error|
+/// over the model's pixels. For float files (forFloatFile): the raw values in R, G and B
 /// (segment ids, -1 where transparent; curvature; depth error), alpha 1 on the model.
 algo::ImageRGBA analysisImage(
     const algo::DepthAnalysis& analysis, AnalysisPicture picture, bool forFloatFile, float* scale = nullptr);
