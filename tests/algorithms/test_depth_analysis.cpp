@@ -197,7 +197,6 @@ private slots:
         DepthAnalysis a;
         analyse(scene, camera(240), Eigen::Vector3f(0, 0, 1), 4.f, 0.05f, a);
         QCOMPARE(int(a.stats.size()), 3);
-        QCOMPARE(a.curvatureScale, 4.f); // every vertex's |K|: the shape's scale for pictures
         // Left to right in the picture, each segment's centroid over its own sphere.
         std::vector<float> xs;
         for (const SegmentStats& s : a.stats) {

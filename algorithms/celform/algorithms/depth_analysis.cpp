@@ -135,16 +135,6 @@ void analyzeDepth(const GBuffer& g, const std::vector<Eigen::Vector3f>& normals,
         }
     }
 
-    out.magnitudes.resize(vertexCurvature.size());
-    for (std::size_t v = 0; v < vertexCurvature.size(); ++v)
-        out.magnitudes[v] = std::isfinite(vertexCurvature[v]) ? std::abs(vertexCurvature[v]) : 0.f;
-    out.curvatureScale = 0.f;
-    if (!out.magnitudes.empty()) {
-        const auto at = out.magnitudes.begin() + std::ptrdiff_t(double(out.magnitudes.size() - 1) * 0.98);
-        std::nth_element(out.magnitudes.begin(), at, out.magnitudes.end());
-        out.curvatureScale = *at;
-    }
-
     // Segments (4.1.3) and their bright/dark ratios under the look.
     labelSegments(covered.data(), out.curvature.data(), out.depth.data(), w, h, settings.depthThreshold,
         settings.minSegmentPixels, out.segments);

@@ -58,8 +58,9 @@ struct DepthAnalysis {
     std::vector<float> depth; ///< distance along the view axis, +infinity off the model
     std::vector<float> lambert; ///< N.L + shading offset (N facing the viewer), 0 off the model
     std::vector<Eigen::Vector3f> lightGradient; ///< eq. 4.2 per pixel, zero off the model
-    /// The 98th percentile of |K| over the shape's vertices: a scale for curvature pictures that
-    /// belongs to the shape, not to the view, so colours keep their meaning while orbiting.
+    /// A scale for curvature pictures that belongs to the shape, not to the view, so colours keep
+    /// their meaning while orbiting; 0: none (pictures take one from their own pixels). Set by the
+    /// caller (model::DepthAnalyzer: the |K| below which 98% of the surface's area lies).
     float curvatureScale = 0.f;
     // Segments (4.1.3).
     SegmentLabels segments;
@@ -73,7 +74,6 @@ struct DepthAnalysis {
     double meanSquaredError = 0.0; ///< over model pixels, model units squared
     double maxAbsError = 0.0;
     DistanceTransformScratch scratch;
-    std::vector<float> magnitudes; ///< working memory of curvatureScale
 };
 
 /// Equation 4.2 (listing 4.5): d(l.n/|l|)/dl = (-(l.n)/(l.l) l + n) / |l|, with l the vector from

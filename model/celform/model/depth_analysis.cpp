@@ -10,6 +10,7 @@
 #include <QElapsedTimer>
 
 #include <algorithm>
+#include <cmath>
 
 namespace celform::model {
 
@@ -20,6 +21,25 @@ const algo::Curvatures& DepthAnalyzer::curvatures(
         || std::size_t(shape.rows()) != m_curvatures.gaussian.size()) {
         // Max's normals, computed inside: the area-weighted ones put curvature several percent off.
         algo::computeCurvatures(shape, mesh.faces, m_curvatures);
+        // The pictures' scale: the |K| below which 98% of the surface's area lies. Weighting by
+        // area keeps small, finely meshed, sharply curved parts (a trunk's tip) from setting it.
+        m_byMagnitude.resize(m_curvatures.gaussian.size());
+        double total = 0.0;
+        for (std::size_t v = 0; v < m_byMagnitude.size(); ++v) {
+            const float k = m_curvatures.gaussian[v];
+            const float area = v < m_curvatures.pointArea.size() ? m_curvatures.pointArea[v] : 0.f;
+            m_byMagnitude[v] = {std::isfinite(k) ? std::abs(k) : 0.f, std::isfinite(area) ? area : 0.f};
+            total += m_byMagnitude[v].second;
+        }
+        std::sort(m_byMagnitude.begin(), m_byMagnitude.end());
+        m_curvatureScale = 0.f;
+        double below = 0.0;
+        for (const auto& [magnitude, area] : m_byMagnitude) {
+            below += area;
+            m_curvatureScale = magnitude;
+            if (below >= 0.98 * total)
+                break;
+        }
         m_mesh = &mesh;
         m_generation = generation;
     }
@@ -60,6 +80,7 @@ void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const alg
     s.shadingOffsets = renderLook.shadingOffsets;
     algo::analyzeDepth(
         m_gbuffer, out.passes.normal, out.passes.beauty, mesh.faces, curvature.gaussian, s, out.analysis);
+    out.analysis.curvatureScale = m_curvatureScale;
     out.milliseconds = double(timer.nsecsElapsed()) / 1e6;
 }
 

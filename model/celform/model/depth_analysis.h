@@ -15,6 +15,8 @@
 #include <QStringList>
 
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace celform::model {
 
@@ -57,6 +59,8 @@ private:
     const algo::TriMesh* m_mesh = nullptr;
     std::uint64_t m_generation = 0;
     algo::Curvatures m_curvatures;
+    float m_curvatureScale = 0.f; ///< of m_curvatures (DepthAnalysis::curvatureScale)
+    std::vector<std::pair<float, float>> m_byMagnitude; ///< (|K|, area) working memory
     algo::RenderCache m_cache;
     algo::GBuffer m_gbuffer;
 };
