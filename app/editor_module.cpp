@@ -4,6 +4,7 @@
 #include "cli.h"
 #include "cli/launch.h"
 #include "main_window.h"
+#include "preferences.h"
 
 #include "celform/views/viewport.h"
 
@@ -19,7 +20,8 @@ extern "C" Q_DECL_EXPORT int celform_editor_main(int argc, char** argv)
     // The viewport's GL format must be the default before QApplication exists (STACK.md).
     QSurfaceFormat::setDefaultFormat(celform::views::Viewport::defaultFormat());
     QApplication app(argc, argv);
-    celform::app::installTranslations(app);
+    // The language of Edit > Preferences (the system's unless chosen there), read at start only.
+    celform::app::installTranslations(app, celform::app::Preferences::load().locale());
 
     celform::app::EditorArguments parsed;
     QString message;

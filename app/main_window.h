@@ -20,6 +20,7 @@ class ScenePanel;
 class PropertiesPanel;
 class ViewSpherePanel;
 class LookPanel;
+class DepthPanel;
 } // namespace celform::views
 
 namespace celform::app {
@@ -35,9 +36,11 @@ public:
     explicit MainWindow(Mode mode = Mode::Interactive, QWidget* parent = nullptr);
     ~MainWindow() override;
 
+    [[nodiscard]] Mode mode() const { return m_mode; }
     [[nodiscard]] model::Document* document() const { return m_document; }
     [[nodiscard]] views::Viewport* viewport() const { return m_viewport; }
     [[nodiscard]] views::ScenePanel* scenePanel() const { return m_scene; }
+    [[nodiscard]] views::DepthPanel* depthPanel() const { return m_depth; }
     [[nodiscard]] views::PropertiesPanel* propertiesPanel() const { return m_properties; }
     [[nodiscard]] views::Viewport* observer() const { return m_observer; }
     [[nodiscard]] RecoveryManager* recovery() const { return m_recovery; }
@@ -92,6 +95,7 @@ private:
     views::PropertiesPanel* m_properties = nullptr;
     views::ViewSpherePanel* m_sphere = nullptr;
     views::LookPanel* m_look = nullptr;
+    views::DepthPanel* m_depth = nullptr;
     views::Viewport* m_observer = nullptr;
     QUndoView* m_history = nullptr;
     RecoveryManager* m_recovery = nullptr;

@@ -33,6 +33,8 @@ public:
 
     /// Autosave period; 0 disables the timer.
     void setInterval(int milliseconds);
+    /// The autosave period, 0 when off.
+    [[nodiscard]] int interval() const { return m_timer.isActive() ? m_timer.interval() : 0; }
     /// Writes the recovery file now if the document changed since the last autosave.
     /// Returns false on a write error (reported through the autosaveFailed signal).
     bool autosaveNow();

@@ -13,6 +13,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 namespace celform::app {
@@ -51,16 +52,12 @@ ReviewWindow::ReviewWindow(model::Document* document, const model::Camera& camer
     m_help->setStyleSheet(QString::fromLatin1(kOverlayStyle));
     m_help->setAttribute(Qt::WA_TransparentForMouseEvents);
     m_help->setTextFormat(Qt::RichText);
-    m_help->setText(tr("<b>Stereo review</b><table cellspacing='4'>"
-                       "<tr><td><b>Space</b></td><td>turntable on / off</td></tr>"
-                       "<tr><td><b>Left / Right</b></td><td>previous / next key's camera</td></tr>"
-                       "<tr><td><b>S</b></td><td>stereo: anaglyph, Dubois, half-colour, side by side, "
-                       "top-bottom, off</td></tr>"
-                       "<tr><td><b>L</b></td><td>lines on / off</td></tr>"
-                       "<tr><td><b>P</b></td><td>view-dependent preview on / off</td></tr>"
-                       "<tr><td><b>[ ]</b></td><td>interocular distance -10% / +10%</td></tr>"
-                       "<tr><td><b>H</b></td><td>this help</td></tr>"
-                       "<tr><td><b>Esc</b></td><td>close the review</td></tr></table>"));
+    QString help = tr("<b>Stereo review</b>") + QStringLiteral("<table cellspacing='4'>");
+    for (const KeyBinding& binding : keyBindings())
+        help += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>")
+                    .arg(QKeySequence(binding.key).toString(QKeySequence::NativeText).toHtmlEscaped(),
+                        binding.description().toHtmlEscaped());
+    m_help->setText(help + QStringLiteral("</table>"));
     m_help->adjustSize();
     m_help->hide();
 
@@ -135,6 +132,29 @@ QString ReviewWindow::outputName(algo::StereoOutput output)
     return tr("Mono");
 }
 
+QString ReviewWindow::KeyBinding::description() const
+{
+    return QCoreApplication::translate("celform::app::ReviewWindow", text);
+}
+
+const std::vector<ReviewWindow::KeyBinding>& ReviewWindow::keyBindings()
+{
+    static const std::vector<KeyBinding> bindings = {
+        {Command::Turntable, Qt::Key_Space, QT_TR_NOOP("turntable on / off")},
+        {Command::PreviousKey, Qt::Key_Left, QT_TR_NOOP("previous key's camera")},
+        {Command::NextKey, Qt::Key_Right, QT_TR_NOOP("next key's camera")},
+        {Command::NextStereo, Qt::Key_S,
+            QT_TR_NOOP("stereo: anaglyph, Dubois, half-colour, side by side, top-bottom, off")},
+        {Command::Lines, Qt::Key_L, QT_TR_NOOP("lines on / off")},
+        {Command::Preview, Qt::Key_P, QT_TR_NOOP("view-dependent preview on / off")},
+        {Command::NarrowerEyes, Qt::Key_BracketLeft, QT_TR_NOOP("interocular distance -10%")},
+        {Command::WiderEyes, Qt::Key_BracketRight, QT_TR_NOOP("interocular distance +10%")},
+        {Command::Help, Qt::Key_H, QT_TR_NOOP("this help")},
+        {Command::Close, Qt::Key_Escape, QT_TR_NOOP("close the review")},
+    };
+    return bindings;
+}
+
 bool ReviewWindow::isHelpShown() const
 {
     return m_help->isVisible();
@@ -148,10 +168,8 @@ bool ReviewWindow::eventFilter(QObject* watched, QEvent* event)
             return QWidget::eventFilter(watched, event);
         if (event->type() == QEvent::ShortcutOverride) {
             // Claim the review's keys before any application shortcut sees them.
-            static const int keys[] = {Qt::Key_Escape, Qt::Key_Space, Qt::Key_Left, Qt::Key_Right, Qt::Key_S, Qt::Key_L,
-                Qt::Key_P, Qt::Key_BracketLeft, Qt::Key_BracketRight, Qt::Key_H};
-            for (int k : keys)
-                if (key->key() == k) {
+            for (const KeyBinding& binding : keyBindings())
+                if (key->key() == binding.key) {
                     event->accept();
                     return true;
                 }
@@ -174,40 +192,43 @@ void ReviewWindow::keyPressEvent(QKeyEvent* event)
 
 bool ReviewWindow::handleKey(int key)
 {
-    switch (key) {
-    case Qt::Key_Escape:
+    const auto& bindings = keyBindings();
+    const auto binding
+        = std::find_if(bindings.begin(), bindings.end(), [key](const KeyBinding& b) { return b.key == key; });
+    if (binding == bindings.end())
+        return false;
+    switch (binding->command) {
+    case Command::Close:
         close();
         return true;
-    case Qt::Key_Space:
+    case Command::Turntable:
         setTurntable(!m_turntable.isActive());
         break;
-    case Qt::Key_Left:
+    case Command::PreviousKey:
         stepKey(-1);
         break;
-    case Qt::Key_Right:
+    case Command::NextKey:
         stepKey(1);
         break;
-    case Qt::Key_S:
+    case Command::NextStereo:
         m_viewport->setStereo(nextOutput(m_viewport->stereo()));
         break;
-    case Qt::Key_L:
+    case Command::Lines:
         m_viewport->setLinesOverride(!m_viewport->linesShown());
         break;
-    case Qt::Key_P:
+    case Command::Preview:
         m_viewport->setPreview(!m_viewport->isPreview());
         break;
-    case Qt::Key_BracketLeft:
+    case Command::NarrowerEyes:
         scaleInterocular(1.0 / 1.1);
         break;
-    case Qt::Key_BracketRight:
+    case Command::WiderEyes:
         scaleInterocular(1.1);
         break;
-    case Qt::Key_H:
+    case Command::Help:
         m_help->setVisible(!m_help->isVisible());
         placeOverlays();
         break;
-    default:
-        return false;
     }
     refreshStatus();
     return true;

@@ -9,6 +9,8 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <vector>
+
 class QLabel;
 
 namespace celform::model {
@@ -38,6 +40,28 @@ public:
     [[nodiscard]] int keyIndex() const { return m_keyIndex; }
     [[nodiscard]] QString statusText() const;
     [[nodiscard]] bool isHelpShown() const;
+
+    /// What the review's keys do. One table (keyBindings()) drives the keys, the help overlay and
+    /// Help > Keyboard Shortcuts.
+    enum class Command {
+        Close,
+        Turntable,
+        PreviousKey,
+        NextKey,
+        NextStereo,
+        Lines,
+        Preview,
+        NarrowerEyes,
+        WiderEyes,
+        Help
+    };
+    struct KeyBinding {
+        Command command;
+        Qt::Key key; ///< pressed without Ctrl, Alt or Meta
+        const char* text; ///< untranslated (context celform::app::ReviewWindow): see description()
+        [[nodiscard]] QString description() const;
+    };
+    [[nodiscard]] static const std::vector<KeyBinding>& keyBindings();
 
     /// The order S steps through.
     static algo::StereoOutput nextOutput(algo::StereoOutput output);

@@ -12,6 +12,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   libassimp-dev libtinyobjloader-dev zlib1g-dev
   libbenchmark-dev glslang-tools
+  libopencv-imgproc-dev
   xvfb xauth libgl1-mesa-dri
   # The sanitize preset and the fuzz targets: Clang with its sanitizer and libFuzzer runtimes
   # (LeakSanitizer needs libclang-rt-14-dev), and llvm-symbolizer for readable stacks.

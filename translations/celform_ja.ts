@@ -696,6 +696,112 @@
         <source>--out must end in .celform, not “%1”</source>
         <translation>--out は .celform で終わる必要があります（“%1” ではなく）</translation>
     </message>
+    <message>
+        <source>--window takes LO,HI with 0 &lt;= LO &lt;= HI &lt;= 1, or lenient, medium or strict, not “%1”</source>
+        <translation>--window には 0 &lt;= LO &lt;= HI &lt;= 1 の LO,HI、または lenient、medium、strict を指定します（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--depth-threshold takes a fraction of the model&apos;s size in (0, 1], not “%1”</source>
+        <translation>--depth-threshold にはモデルの大きさに対する割合 (0, 1] を指定します（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--min-pixels takes a whole number of at least 1, not “%1”</source>
+        <translation>--min-pixels には 1 以上の整数を指定します（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--out must end in .exr, not “%1”</source>
+        <translation>--out は .exr で終わる必要があります（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>segment	pixels	ratio	in window</source>
+        <translation>セグメント	ピクセル	比率	範囲内</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>はい</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>いいえ</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n segment(s), %1 inside the window %2-%3</source>
+        <translation>
+            <numerusform>%n 個のセグメント、範囲 %2-%3 の内側に %1 個</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>depth error: MSE %1, RMSE %2 (model units; %3 of %4 model pixels are features)</source>
+        <translation>奥行き誤差: MSE %1、RMSE %2（モデル単位。モデルの %4 ピクセル中 %3 ピクセルが特徴ピクセル）</translation>
+    </message>
+    <message>
+        <source>time: %1 ms (curvature %2 ms)</source>
+        <translation>時間: %1 ms（曲率 %2 ms）</translation>
+    </message>
+    <message>
+        <source>--out must end in .ply, not “%1”</source>
+        <translation>--out は .ply で終わる必要があります（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--out would overwrite the project</source>
+        <translation>--out がプロジェクトを上書きしてしまいます</translation>
+    </message>
+    <message>
+        <source>Frame to analyse (default 0).</source>
+        <translation>解析するフレーム（既定値 0）。</translation>
+    </message>
+    <message>
+        <source>Picture size (default 1280x720).</source>
+        <translation>画像サイズ（既定値 1280x720）。</translation>
+    </message>
+    <message>
+        <source>Shading style of the analysed picture.</source>
+        <translation>解析する画像のシェーディングスタイル。</translation>
+    </message>
+    <message>
+        <source>Lines in the analysed picture (on) or not (off).</source>
+        <translation>解析する画像に線を描く（on）か描かない（off）か。</translation>
+    </message>
+    <message>
+        <source>Key light for this analysis.</source>
+        <translation>この解析のキーライト。</translation>
+    </message>
+    <message>
+        <source>Bright/dark ratio window a segment should be in: LO,HI, lenient (0.2-0.8), medium (0.35-0.65, the default) or strict (0.5).</source>
+        <translation>セグメントの明暗比が収まるべき範囲: LO,HI、lenient（0.2-0.8）、medium（0.35-0.65、既定）、strict（0.5）。</translation>
+    </message>
+    <message>
+        <source>Neighbouring pixels whose depths differ by this fraction of the model&apos;s bounding-box diagonal or more are in different segments (default 0.02).</source>
+        <translation>奥行きの差がモデルのバウンディングボックス対角線のこの割合以上ある隣接ピクセルは別のセグメントになります（既定値 0.02）。</translation>
+    </message>
+    <message>
+        <source>Segments smaller than this are dropped as noise (default 64).</source>
+        <translation>これより小さいセグメントはノイズとして除きます（既定値 64）。</translation>
+    </message>
+    <message>
+        <source>Write the picture and the buffers (curvature, segment ids, depth, depth error, features) as EXR channels.</source>
+        <translation>画像とバッファ（曲率、セグメント番号、奥行き、奥行き誤差、特徴）を EXR のチャンネルとして書き出します。</translation>
+    </message>
+    <message>
+        <source>Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error.</source>
+        <translation>画像の立体視奥行き解析: セグメントとその明暗比、および奥行き誤差。</translation>
+    </message>
+    <message>
+        <source>Writes the per-vertex principal curvatures k1, k2 and the Gaussian curvature K as PLY properties.</source>
+        <translation>頂点ごとの主曲率 k1、k2 とガウス曲率 K を PLY のプロパティとして書き出します。</translation>
+    </message>
+    <message>
+        <source>Frame of the shape (default 0).</source>
+        <translation>形状のフレーム（既定値 0）。</translation>
+    </message>
+    <message>
+        <source>The view-dependent shape seen from this direction (default: the base model).</source>
+        <translation>この方向から見たビュー依存形状（既定: ベースモデル）。</translation>
+    </message>
+    <message>
+        <source>The PLY file to write.</source>
+        <translation>書き出す PLY ファイル。</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::FirstStepsHint</name>
@@ -1245,16 +1351,713 @@ Recover it now?</source>
         <source>&amp;Stereo Preview</source>
         <translation>ステレオプレビュー(&amp;S)</translation>
     </message>
+    <message>
+        <source>Untitled project</source>
+        <translation>無題のプロジェクト</translation>
+    </message>
+    <message>
+        <source>&amp;Render Image…</source>
+        <translation>画像をレンダー(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Render the current frame to an image file, as celform render does</source>
+        <translation>現在のフレームを画像ファイルにレンダーします（celform render と同じ処理）</translation>
+    </message>
+    <message>
+        <source>Render Se&amp;quence…</source>
+        <translation>連番をレンダー(&amp;Q)…</translation>
+    </message>
+    <message>
+        <source>Render a range of frames to numbered image files</source>
+        <translation>フレーム範囲を連番の画像ファイルにレンダーします</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>キーボードショートカット(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Every keyboard shortcut of the editor, searchable</source>
+        <translation>エディターのすべてのキーボードショートカット（検索できます）</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>環境設定(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Navigation, autosave, undo steps, language, new projects&apos; look and keyboard shortcuts</source>
+        <translation>ナビゲーション、自動保存、取り消しの回数、言語、新規プロジェクトのルック、キーボードショートカット</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>元に戻す</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>やり直し</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>奥行き</translation>
+    </message>
+    <message>
+        <source>&amp;None</source>
+        <translation>なし(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Segments</source>
+        <translation>セグメント(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Gaussian &amp;Curvature</source>
+        <translation>ガウス曲率(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Depth Error</source>
+        <translation>奥行き誤差(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Show this depth analysis over the viewport (Depth dock)</source>
+        <translation>この奥行き解析をビューポートに重ねて表示します（奥行きドック）</translation>
+    </message>
+    <message>
+        <source>Next Depth &amp;Overlay</source>
+        <translation>次の奥行きオーバーレイ(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Cycle the viewport&apos;s depth overlay: none, segments, Gaussian curvature, depth error</source>
+        <translation>ビューポートの奥行きオーバーレイを切り替えます: なし、セグメント、ガウス曲率、奥行き誤差</translation>
+    </message>
+    <message>
+        <source>&amp;Depth Overlay</source>
+        <translation>奥行きオーバーレイ(&amp;D)</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>環境設定</translation>
+    </message>
+    <message>
+        <source>&amp;Navigation</source>
+        <translation>ナビゲーション(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;General</source>
+        <translation>一般(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;Shortcuts</source>
+        <translation>ショートカット(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Store and apply the preferences, keep the dialog open</source>
+        <translation>設定を保存して適用します。ダイアログは開いたままです</translation>
+    </message>
+    <message>
+        <source>Put every preference and key back to Celform&apos;s default (stored on OK or Apply)</source>
+        <translation>すべての設定とキーを Celform の既定に戻します（OK か適用で保存されます）</translation>
+    </message>
+    <message>
+        <source>Maya</source>
+        <translation>Maya</translation>
+    </message>
+    <message>
+        <source>Blender</source>
+        <translation>Blender</translation>
+    </message>
+    <message>
+        <source>Which mouse buttons and keys move the viewport&apos;s camera</source>
+        <translation>ビューポートのカメラを動かすマウスボタンとキー</translation>
+    </message>
+    <message>
+        <source>Navigation &amp;style:</source>
+        <translation>ナビゲーション方式(&amp;S):</translation>
+    </message>
+    <message>
+        <source>Turntable (around the up axis)</source>
+        <translation>ターンテーブル（上方向の軸の周り）</translation>
+    </message>
+    <message>
+        <source>Trackball (free, can roll over)</source>
+        <translation>トラックボール（自由回転、裏返しも可）</translation>
+    </message>
+    <message>
+        <source>Turntable keeps the model upright as Maya and Blender do by default; trackball turns freely about the view&apos;s axes</source>
+        <translation>ターンテーブルは Maya や Blender の既定と同じくモデルを立てたまま回します。トラックボールは視点の軸の周りに自由に回します</translation>
+    </message>
+    <message>
+        <source>&amp;Orbit:</source>
+        <translation>回転(&amp;O):</translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation> 倍</translation>
+    </message>
+    <message>
+        <source>How fast the camera turns for a drag: 1 is 0.4 degrees per pixel</source>
+        <translation>ドラッグに対するカメラの回転の速さ: 1 で 1 ピクセルあたり 0.4 度</translation>
+    </message>
+    <message>
+        <source>Orbit s&amp;peed:</source>
+        <translation>回転の速さ(&amp;P):</translation>
+    </message>
+    <message>
+        <source>Orbit around the point under the &amp;cursor</source>
+        <translation>カーソル位置の点を中心に回転(&amp;C)</translation>
+    </message>
+    <message>
+        <source>An orbit turns around the surface point where the drag starts (Maya&apos;s tumble pivot); elsewhere around the framed centre</source>
+        <translation>ドラッグを始めた位置の面上の点を中心に回転します（Maya のタンブルピボット）。モデル外では表示範囲の中心の周りに回転します</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>オフ</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> 分</translation>
+    </message>
+    <message>
+        <source>How often unsaved work is copied to a recovery file, offered after a crash; 0 turns autosave off</source>
+        <translation>未保存の作業を復旧ファイルにコピーする間隔です（クラッシュ後に復旧を提案します）。0 で自動保存をオフにします</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>自動保存の間隔(&amp;A):</translation>
+    </message>
+    <message>
+        <source>Unlimited</source>
+        <translation>無制限</translation>
+    </message>
+    <message>
+        <source>How many steps Undo can go back; older steps are forgotten</source>
+        <translation>元に戻せるステップ数です。それより古いステップは破棄されます</translation>
+    </message>
+    <message>
+        <source>&amp;Undo steps kept:</source>
+        <translation>取り消し履歴の数(&amp;U):</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>システム</translation>
+    </message>
+    <message>
+        <source>System (%1)</source>
+        <translation>システム（%1）</translation>
+    </message>
+    <message>
+        <source>The language of the editor&apos;s menus, panels and messages</source>
+        <translation>エディターのメニュー、パネル、メッセージの言語</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>言語(&amp;L):</translation>
+    </message>
+    <message>
+        <source>Toon</source>
+        <translation>トゥーン</translation>
+    </message>
+    <message>
+        <source>Gooch</source>
+        <translation>Gooch</translation>
+    </message>
+    <message>
+        <source>Comic</source>
+        <translation>コミック</translation>
+    </message>
+    <message>
+        <source>Lambert</source>
+        <translation>ランバート</translation>
+    </message>
+    <message>
+        <source>The shading style a project started from a mesh begins with (File ▸ New from Mesh); the rest of its look has Celform&apos;s defaults</source>
+        <translation>メッシュから始めたプロジェクト（ファイル ▸ メッシュから新規作成）のシェーディング方式です。ルックのほかの設定は Celform の既定になります</translation>
+    </message>
+    <message>
+        <source>New projects&apos; &amp;shading:</source>
+        <translation>新規プロジェクトのシェーディング(&amp;S):</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>コマンド</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>ショートカット</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>既定</translation>
+    </message>
+    <message>
+        <source>Filter by name, menu or key</source>
+        <translation>名前、メニュー、キーで絞り込み</translation>
+    </message>
+    <message>
+        <source>Click and press the new key for “%1”; the clear button removes it. Tab moves on.</source>
+        <translation>クリックして「%1」の新しいキーを押してください。クリアボタンで削除します。Tab で次へ移動します。</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to Default</source>
+        <translation>既定に戻す(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Give the selected command its default key again</source>
+        <translation>選択したコマンドのキーを既定に戻します</translation>
+    </message>
+    <message>
+        <source>Commands with several keys keep their other defaults (the view presets&apos; keypad keys, Redo&apos;s Ctrl+Y). The viewport&apos;s own keys are listed in Help ▸ Keyboard Shortcuts.</source>
+        <translation>複数のキーを持つコマンドは、ほかの既定のキーを保ちます（視点プリセットのテンキー、やり直しの Ctrl+Y）。ビューポート固有のキーはヘルプ ▸ キーボードショートカットにあります。</translation>
+    </message>
+    <message>
+        <source>Alt + left drag orbits, Alt + middle drag pans, Alt + right drag dollies; the middle button alone (with Shift: pan, Ctrl: dolly) and the wheel work too.</source>
+        <translation>Alt + 左ドラッグで回転、Alt + 中ドラッグでパン、Alt + 右ドラッグでドリー。中ボタンのみ（Shift でパン、Ctrl でドリー）とホイールも使えます。</translation>
+    </message>
+    <message>
+        <source>Middle drag orbits, Shift + middle drag pans, Ctrl + middle drag dollies, the wheel dollies; Alt + left drag goes to the tool.</source>
+        <translation>中ドラッグで回転、Shift + 中ドラッグでパン、Ctrl + 中ドラッグとホイールでドリー。Alt + 左ドラッグはツールに渡ります。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Restart Celform to use the new language.&lt;/b&gt;</source>
+        <translation>&lt;b&gt;新しい言語は Celform を再起動すると使われます。&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>A new language applies the next time Celform starts.</source>
+        <translation>言語の変更は次に Celform を起動したときに反映されます。</translation>
+    </message>
+    <message>
+        <source>The history holds steps now: the new limit applies when it is next empty (a project opened or started).</source>
+        <translation>履歴にステップがあるため、新しい上限は履歴が次に空になったとき（プロジェクトを開くか新規作成したとき）に反映されます。</translation>
+    </message>
+    <message>
+        <source>Fewer steps use less memory after long brushing sessions.</source>
+        <translation>ステップ数を減らすと、長いブラシ作業の後のメモリ使用量が減ります。</translation>
+    </message>
+    <message>
+        <source>Give each key to one command first</source>
+        <translation>先に各キーを 1 つのコマンドだけに割り当ててください</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::RenderDialog</name>
+    <message>
+        <source>Render Image</source>
+        <translation>画像をレンダー</translation>
+    </message>
+    <message>
+        <source>Render Sequence</source>
+        <translation>連番をレンダー</translation>
+    </message>
+    <message>
+        <source>The image to write: .png, .tif or .jpg (8-bit sRGB) or .exr (linear float; every pass as channels unless a pass is chosen)</source>
+        <translation>書き出す画像: .png、.tif、.jpg（8 ビット sRGB）または .exr（リニア浮動小数点。パスを選ばなければ全パスをチャンネルとして保存）</translation>
+    </message>
+    <message>
+        <source>The frames to write: a run of # becomes the zero-padded frame number (shot_####.png); without one, _0001 and so on go before the suffix</source>
+        <translation>書き出すフレーム: 連続した # はゼロ埋めのフレーム番号になります（shot_####.png）。# がなければ拡張子の前に _0001 などが付きます</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>参照…</translation>
+    </message>
+    <message>
+        <source>Choose the output file and its format</source>
+        <translation>出力ファイルと形式を選びます</translation>
+    </message>
+    <message>
+        <source>&amp;Output file:</source>
+        <translation>出力ファイル(&amp;O):</translation>
+    </message>
+    <message>
+        <source>&amp;Output files:</source>
+        <translation>出力ファイル(&amp;O):</translation>
+    </message>
+    <message>
+        <source>The camera the render looks through; the shape is the view-dependent blend for it</source>
+        <translation>レンダーに使うカメラです。形状はこのカメラに対する視点依存ブレンドになります</translation>
+    </message>
+    <message>
+        <source>&amp;Camera:</source>
+        <translation>カメラ(&amp;C):</translation>
+    </message>
+    <message>
+        <source>The frame to render: the animated base model, the keys&apos; deformations and the highlights at it</source>
+        <translation>レンダーするフレーム: そのフレームでのアニメーションするベースモデル、キー変形、ハイライト</translation>
+    </message>
+    <message>
+        <source>&amp;Frame:</source>
+        <translation>フレーム(&amp;F):</translation>
+    </message>
+    <message>
+        <source>The first frame of the sequence</source>
+        <translation>連番の最初のフレーム</translation>
+    </message>
+    <message>
+        <source>The last frame of the sequence (included)</source>
+        <translation>連番の最後のフレーム（含む）</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>～</translation>
+    </message>
+    <message>
+        <source>&amp;Frames:</source>
+        <translation>フレーム(&amp;F):</translation>
+    </message>
+    <message>
+        <source>Common image sizes; editing the width or height makes it a custom size</source>
+        <translation>よく使う画像サイズです。幅か高さを変えるとカスタムになります</translation>
+    </message>
+    <message>
+        <source>HD 720p</source>
+        <translation>HD 720p</translation>
+    </message>
+    <message>
+        <source>Full HD 1080p</source>
+        <translation>フル HD 1080p</translation>
+    </message>
+    <message>
+        <source>UHD 4K</source>
+        <translation>UHD 4K</translation>
+    </message>
+    <message>
+        <source>2K scope (2.39:1)</source>
+        <translation>2K スコープ（2.39:1）</translation>
+    </message>
+    <message>
+        <source>Square 1024</source>
+        <translation>正方形 1024</translation>
+    </message>
+    <message>
+        <source>%1 (%2 × %3)</source>
+        <translation>%1（%2 × %3）</translation>
+    </message>
+    <message>
+        <source>Viewport (%1 × %2)</source>
+        <translation>ビューポート（%1 × %2）</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>カスタム</translation>
+    </message>
+    <message>
+        <source>Si&amp;ze:</source>
+        <translation>サイズ(&amp;Z):</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Image width in pixels (at most 16384)</source>
+        <translation>画像の幅（ピクセル、最大 16384）</translation>
+    </message>
+    <message>
+        <source>Image height in pixels (at most 16384)</source>
+        <translation>画像の高さ（ピクセル、最大 16384）</translation>
+    </message>
+    <message>
+        <source>&amp;Width × height:</source>
+        <translation>幅 × 高さ(&amp;W):</translation>
+    </message>
+    <message>
+        <source>What to write: the finished picture (beauty) or one of the renderer&apos;s passes; an .exr can hold every pass as named channels</source>
+        <translation>書き出す内容: 完成画像（ビューティー）またはレンダラーのパスの 1 つ。.exr には全パスを名前付きチャンネルとして保存できます</translation>
+    </message>
+    <message>
+        <source>Beauty (the finished picture)</source>
+        <translation>ビューティー（完成画像）</translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation>線</translation>
+    </message>
+    <message>
+        <source>Tone</source>
+        <translation>階調</translation>
+    </message>
+    <message>
+        <source>Highlights</source>
+        <translation>ハイライト</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>深度</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>法線</translation>
+    </message>
+    <message>
+        <source>Object ids</source>
+        <translation>オブジェクト ID</translation>
+    </message>
+    <message>
+        <source>All passes (EXR channels)</source>
+        <translation>全パス（EXR チャンネル）</translation>
+    </message>
+    <message>
+        <source>&amp;Pass:</source>
+        <translation>パス(&amp;P):</translation>
+    </message>
+    <message>
+        <source>Render both eyes and compose them (the look&apos;s stereo settings); a stereo render writes the beauty pass</source>
+        <translation>両眼をレンダーして合成します（ルックのステレオ設定）。ステレオではビューティーパスを書き出します</translation>
+    </message>
+    <message>
+        <source>Off (mono)</source>
+        <translation>オフ（モノ）</translation>
+    </message>
+    <message>
+        <source>Anaglyph</source>
+        <translation>アナグリフ</translation>
+    </message>
+    <message>
+        <source>Dubois anaglyph</source>
+        <translation>Dubois アナグリフ</translation>
+    </message>
+    <message>
+        <source>Half-colour anaglyph</source>
+        <translation>ハーフカラーアナグリフ</translation>
+    </message>
+    <message>
+        <source>Side by side</source>
+        <translation>サイドバイサイド</translation>
+    </message>
+    <message>
+        <source>Top-bottom</source>
+        <translation>トップアンドボトム</translation>
+    </message>
+    <message>
+        <source>&amp;Stereo:</source>
+        <translation>ステレオ(&amp;S):</translation>
+    </message>
+    <message>
+        <source>Shade this render in another style; the project&apos;s look is not changed</source>
+        <translation>このレンダーだけ別の方式でシェーディングします。プロジェクトのルックは変わりません</translation>
+    </message>
+    <message>
+        <source>As in the project</source>
+        <translation>プロジェクトの設定どおり</translation>
+    </message>
+    <message>
+        <source>Toon</source>
+        <translation>トゥーン</translation>
+    </message>
+    <message>
+        <source>Gooch</source>
+        <translation>Gooch</translation>
+    </message>
+    <message>
+        <source>Comic</source>
+        <translation>コミック</translation>
+    </message>
+    <message>
+        <source>Lambert</source>
+        <translation>ランバート</translation>
+    </message>
+    <message>
+        <source>St&amp;yle:</source>
+        <translation>スタイル(&amp;Y):</translation>
+    </message>
+    <message>
+        <source>Draw the lines or not in this render; the project&apos;s look is not changed</source>
+        <translation>このレンダーで線を描くかどうか。プロジェクトのルックは変わりません</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>オン</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>オフ</translation>
+    </message>
+    <message>
+        <source>&amp;Lines:</source>
+        <translation>線(&amp;L):</translation>
+    </message>
+    <message>
+        <source>Open the image when done</source>
+        <translation>完了したら画像を開く</translation>
+    </message>
+    <message>
+        <source>Open the folder when done</source>
+        <translation>完了したらフォルダーを開く</translation>
+    </message>
+    <message>
+        <source>Show the result in the desktop&apos;s image viewer or file manager</source>
+        <translation>結果をデスクトップの画像ビューアーかファイルマネージャーで表示します</translation>
+    </message>
+    <message>
+        <source>&amp;Render</source>
+        <translation>レンダー(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Render with these options; Cancel in the progress window stops between frames</source>
+        <translation>この設定でレンダーします。進行状況ウィンドウのキャンセルでフレームの間で止まります</translation>
+    </message>
+    <message>
+        <source>Render camera (the project&apos;s)</source>
+        <translation>レンダーカメラ（プロジェクト）</translation>
+    </message>
+    <message>
+        <source>Current view</source>
+        <translation>現在の視点</translation>
+    </message>
+    <message>
+        <source>Framed default view</source>
+        <translation>既定の視点（全体表示）</translation>
+    </message>
+    <message>
+        <source>Key: %1</source>
+        <translation>キー: %1</translation>
+    </message>
+    <message>
+        <source>Drawing: %1</source>
+        <translation>参照画: %1</translation>
+    </message>
+    <message>
+        <source>render</source>
+        <translation>render</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 画像 (*.png)</translation>
+    </message>
+    <message>
+        <source>OpenEXR images (*.exr)</source>
+        <translation>OpenEXR 画像 (*.exr)</translation>
+    </message>
+    <message>
+        <source>TIFF images (*.tif *.tiff)</source>
+        <translation>TIFF 画像 (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>JPEG images (*.jpg *.jpeg)</source>
+        <translation>JPEG 画像 (*.jpg *.jpeg)</translation>
+    </message>
+    <message>
+        <source>The project has no base model to render.</source>
+        <translation>プロジェクトにレンダーするベースモデルがありません。</translation>
+    </message>
+    <message>
+        <source>Choose the output file.</source>
+        <translation>出力ファイルを選んでください。</translation>
+    </message>
+    <message>
+        <source>%1: the output must end in .png, .exr, .tif or .jpg.</source>
+        <translation>%1: 出力ファイルの拡張子は .png、.exr、.tif、.jpg のいずれかにしてください。</translation>
+    </message>
+    <message>
+        <source>%1: the folder does not exist.</source>
+        <translation>%1: フォルダーがありません。</translation>
+    </message>
+    <message>
+        <source>%1 is a folder: give a file name.</source>
+        <translation>%1 はフォルダーです。ファイル名を指定してください。</translation>
+    </message>
+    <message>
+        <source>The last frame comes before the first.</source>
+        <translation>最後のフレームが最初のフレームより前です。</translation>
+    </message>
+    <message>
+        <source>At most %L1 frames can be rendered at a time.</source>
+        <translation>一度にレンダーできるのは %L1 フレームまでです。</translation>
+    </message>
+    <message>
+        <source>%1 × %2 is more than 8192 × 8192 pixels, the most the renderer takes.</source>
+        <translation>%1 × %2 はレンダラーの上限 8192 × 8192 ピクセルを超えています。</translation>
+    </message>
+    <message>
+        <source>%1 × %2 needs about %3 GB of memory to render, and %4 GB are available.</source>
+        <translation>%1 × %2 のレンダーには約 %3 GB のメモリが必要ですが、使えるのは %4 GB です。</translation>
+    </message>
+    <message>
+        <source>Writes %1 … %2 (%L3 frames)</source>
+        <translation>%1 … %2 を書き出します（%L3 フレーム）</translation>
+    </message>
+    <message>
+        <source>Writes %1</source>
+        <translation>%1 を書き出します</translation>
+    </message>
+    <message>
+        <source>%L1 of the %L2 files already exist. Replace them?</source>
+        <translation>%L2 個のファイルのうち %L1 個がすでにあります。置き換えますか？</translation>
+    </message>
+    <message>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 はすでにあります。置き換えますか？</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::RenderRunner</name>
+    <message>
+        <source>Render Sequence</source>
+        <translation>連番をレンダー</translation>
+    </message>
+    <message>
+        <source>Render Image</source>
+        <translation>画像をレンダー</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <source>Rendering frame %1 (1 of %2)…</source>
+        <translation>フレーム %1 をレンダー中（1 / %2）…</translation>
+    </message>
+    <message>
+        <source>Rendering %1 (%2 × %3)…</source>
+        <translation>%1 をレンダー中（%2 × %3）…</translation>
+    </message>
+    <message>
+        <source>%1: not enough memory to render %2 × %3 pixels</source>
+        <translation>%1: %2 × %3 ピクセルをレンダーするメモリが足りません</translation>
+    </message>
+    <message>
+        <source>Stopping the render after the frame being drawn…</source>
+        <translation>描画中のフレームの後でレンダーを止めています…</translation>
+    </message>
+    <message>
+        <source>Rendering frame %1 (%2 of %3)…</source>
+        <translation>フレーム %1 をレンダー中（%2 / %3）…</translation>
+    </message>
+    <message>
+        <source>Render Failed</source>
+        <translation>レンダーに失敗しました</translation>
+    </message>
+    <message>
+        <source>The render could not be finished.</source>
+        <translation>レンダーを完了できませんでした。</translation>
+    </message>
+    <message>
+        <source>The frames written before the error are kept (%L1).</source>
+        <translation>エラーの前に書き出したフレームは残してあります（%L1）。</translation>
+    </message>
+    <message>
+        <source>Render failed: %1</source>
+        <translation>レンダーに失敗しました: %1</translation>
+    </message>
+    <message>
+        <source>Render cancelled; the files written are kept (%L1).</source>
+        <translation>レンダーをキャンセルしました。書き出したファイルは残してあります（%L1）。</translation>
+    </message>
+    <message>
+        <source>Rendered %L1 frames to %2</source>
+        <translation>%L1 フレームを %2 にレンダーしました</translation>
+    </message>
+    <message>
+        <source>Rendered %1</source>
+        <translation>%1 をレンダーしました</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ReviewWindow</name>
     <message>
         <source>Stereo Review</source>
         <translation>ステレオレビュー</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Stereo review&lt;/b&gt;&lt;table cellspacing=&apos;4&apos;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;turntable on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left / Right&lt;/b&gt;&lt;/td&gt;&lt;td&gt;previous / next key&apos;s camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;S&lt;/b&gt;&lt;/td&gt;&lt;td&gt;stereo: anaglyph, Dubois, half-colour, side by side, top-bottom, off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;lines on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;view-dependent preview on / off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;interocular distance -10% / +10%&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt;&lt;/td&gt;&lt;td&gt;this help&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Esc&lt;/b&gt;&lt;/td&gt;&lt;td&gt;close the review&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;b&gt;ステレオレビュー&lt;/b&gt;&lt;table cellspacing=&apos;4&apos;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ターンテーブルのオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;← / →&lt;/b&gt;&lt;/td&gt;&lt;td&gt;前 / 次のキーのカメラ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;S&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ステレオ: アナグリフ、Dubois、ハーフカラー、サイドバイサイド、トップアンドボトム、オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;線のオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;視点依存プレビューのオン / オフ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;眼間距離 -10% / +10%&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt;&lt;/td&gt;&lt;td&gt;このヘルプ&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Esc&lt;/b&gt;&lt;/td&gt;&lt;td&gt;レビューを閉じる&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
     <message>
         <source>Anaglyph</source>
@@ -1315,6 +2118,128 @@ Recover it now?</source>
     <message>
         <source>Idle (last frame %1 ms)</source>
         <translation>待機中（直前のフレーム %1 ms）</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Stereo review&lt;/b&gt;</source>
+        <translation>&lt;b&gt;ステレオレビュー&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>turntable on / off</source>
+        <translation>ターンテーブルのオン / オフ</translation>
+    </message>
+    <message>
+        <source>previous key&apos;s camera</source>
+        <translation>前のキーのカメラ</translation>
+    </message>
+    <message>
+        <source>next key&apos;s camera</source>
+        <translation>次のキーのカメラ</translation>
+    </message>
+    <message>
+        <source>stereo: anaglyph, Dubois, half-colour, side by side, top-bottom, off</source>
+        <translation>ステレオ: アナグリフ、Dubois、ハーフカラー、サイドバイサイド、トップアンドボトム、オフ</translation>
+    </message>
+    <message>
+        <source>lines on / off</source>
+        <translation>線のオン / オフ</translation>
+    </message>
+    <message>
+        <source>view-dependent preview on / off</source>
+        <translation>視点依存プレビューのオン / オフ</translation>
+    </message>
+    <message>
+        <source>interocular distance -10%</source>
+        <translation>眼間距離 -10%</translation>
+    </message>
+    <message>
+        <source>interocular distance +10%</source>
+        <translation>眼間距離 +10%</translation>
+    </message>
+    <message>
+        <source>this help</source>
+        <translation>このヘルプ</translation>
+    </message>
+    <message>
+        <source>close the review</source>
+        <translation>レビューを閉じる</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::ShortcutList</name>
+    <message>
+        <source>&amp;Filter:</source>
+        <translation>絞り込み(&amp;F):</translation>
+    </message>
+    <message>
+        <source>No command matches “%1”.</source>
+        <translation>「%1」に一致するコマンドはありません。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::Shortcuts</name>
+    <message>
+        <source>Other</source>
+        <translation>その他</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>ビューポート</translation>
+    </message>
+    <message>
+        <source>Viewport ▸ Brush tool</source>
+        <translation>ビューポート ▸ ブラシツール</translation>
+    </message>
+    <message>
+        <source>Stereo Review</source>
+        <translation>ステレオレビュー</translation>
+    </message>
+    <message>
+        <source>%1 is given to “%2” and to %3.</source>
+        <translation>%1 が「%2」と %3 の両方に割り当てられています。</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <comment>between action names</comment>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>%1 is the viewport&apos;s key for “%2”: “%3” takes it first.</source>
+        <translation>%1 はビューポートの「%2」のキーです。「%3」が先に受け取ります。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>キーボードショートカット</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>コマンド</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>ショートカット</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>説明</translation>
+    </message>
+    <message>
+        <source>Filter by name, menu or key (save, view, ctrl+s)</source>
+        <translation>名前、メニュー、キーで絞り込み（保存、表示、ctrl+s）</translation>
+    </message>
+    <message>
+        <source>Shows the shortcuts whose name, menu, key or description contains the text</source>
+        <translation>名前、メニュー、キー、説明にこの文字列を含むショートカットを表示します</translation>
+    </message>
+    <message>
+        <source>Change the keys in Edit ▸ Preferences ▸ Shortcuts</source>
+        <translation>キーは 編集 ▸ 環境設定 ▸ ショートカット で変更できます</translation>
+    </message>
+    <message>
+        <source>Keys of menu commands can be changed in Edit ▸ Preferences ▸ Shortcuts. The viewport&apos;s and the stereo review&apos;s own keys are fixed; Help ▸ Navigation shows the mouse.</source>
+        <translation>メニューコマンドのキーは 編集 ▸ 環境設定 ▸ ショートカット で変更できます。ビューポートとステレオレビュー固有のキーは固定です。マウス操作はヘルプ ▸ ナビゲーションにあります。</translation>
     </message>
 </context>
 <context>
@@ -1817,6 +2742,61 @@ Recover it now?</source>
         <source>the image is too large for its file (%1 x %2 pixels from %3 bytes): the file is damaged</source>
         <translation>ファイルの大きさに対して画像が大きすぎます（%3 バイトから %1 x %2 ピクセル）。ファイルが壊れています</translation>
     </message>
+    <message>
+        <source>the file cannot be written: %1</source>
+        <translation>ファイルを書き込めません: %1</translation>
+    </message>
+    <message>
+        <source>the importer&apos;s result is damaged</source>
+        <translation>インポーターの結果が壊れています</translation>
+    </message>
+    <message>
+        <source>a temporary folder for the importer cannot be made: %1</source>
+        <translation>インポーター用の一時フォルダーを作成できません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::ImportProcess</name>
+    <message>
+        <source>%1 GB</source>
+        <translation>%1 GB</translation>
+    </message>
+    <message>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
+    </message>
+    <message>
+        <source>cannot be read: the importer (the celform program) was not found; set CELFORM_EXECUTABLE</source>
+        <translation>読み込めません: インポーター（celform プログラム）が見つかりません。CELFORM_EXECUTABLE を設定してください</translation>
+    </message>
+    <message>
+        <source>cannot be read: the importer (%1) cannot be started: %2</source>
+        <translation>読み込めません: インポーター（%1）を起動できません: %2</translation>
+    </message>
+    <message>
+        <source>the importer took longer than %1 s and was stopped (the limit is CELFORM_IMPORT_SECONDS)</source>
+        <translation>インポーターが %1 秒を超えたため停止しました（上限は CELFORM_IMPORT_SECONDS）</translation>
+    </message>
+    <message>
+        <source>the importer used more than %1 s of processor time and was stopped</source>
+        <translation>インポーターが %1 秒を超える CPU 時間を使ったため停止しました</translation>
+    </message>
+    <message>
+        <source>the importer crashed on it (signal %1, %2)</source>
+        <translation>インポーターがこのファイルでクラッシュしました（シグナル %1、%2）</translation>
+    </message>
+    <message>
+        <source>the importer refused it</source>
+        <translation>インポーターが読み込みを拒否しました</translation>
+    </message>
+    <message>
+        <source>the importer needs more than %1 of memory for it and was stopped (the limit is CELFORM_IMPORT_MEMORY_MB)</source>
+        <translation>インポーターが %1 を超えるメモリを必要としたため停止しました（上限は CELFORM_IMPORT_MEMORY_MB）</translation>
+    </message>
+    <message>
+        <source>the importer failed on it (exit code %1): %2</source>
+        <translation>インポーターが失敗しました（終了コード %1）: %2</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::MeshIo</name>
@@ -2154,6 +3134,22 @@ Recover it now?</source>
         <source>element &quot;%1&quot; has %2 rows but no properties</source>
         <translation>要素 &quot;%1&quot; は %2 行ありますが、プロパティがありません</translation>
     </message>
+    <message>
+        <source>its first chunk states %1 bytes, but the file holds %2 bytes after its headers</source>
+        <translation>最初のチャンクは %1 バイトとしていますが、ヘッダーの後には %2 バイトしかありません</translation>
+    </message>
+    <message>
+        <source>the importer&apos;s result is damaged</source>
+        <translation>インポーターの結果が壊れています</translation>
+    </message>
+    <message>
+        <source>a temporary folder for the importer cannot be made: %1</source>
+        <translation>インポーター用の一時フォルダーを作成できません: %1</translation>
+    </message>
+    <message>
+        <source>the importer&apos;s result cannot be read: %1</source>
+        <translation>インポーターの結果を読み込めません: %1</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ProjectFile</name>
@@ -2374,6 +3370,13 @@ Recover it now?</source>
     </message>
 </context>
 <context>
+    <name>celform::model::RenderJob</name>
+    <message>
+        <source>has no base model</source>
+        <translation>ベースモデルがありません</translation>
+    </message>
+</context>
+<context>
     <name>celform::model::RenderOutput</name>
     <message>
         <source>could not be written (the folder refused the new file)</source>
@@ -2390,6 +3393,14 @@ Recover it now?</source>
     <message>
         <source>all passes together need an .exr file</source>
         <translation>すべてのパスをまとめて書き出すには .exr ファイルが必要です</translation>
+    </message>
+    <message>
+        <source>the analysis needs an .exr file</source>
+        <translation>解析結果には .exr ファイルが必要です</translation>
+    </message>
+    <message>
+        <source>the curvature does not match the shape</source>
+        <translation>曲率が形状と一致しません</translation>
     </message>
 </context>
 <context>
@@ -2443,6 +3454,207 @@ Recover it now?</source>
     <message>
         <source>Move the mouse to resize the brush; click or Enter to keep, Esc to cancel.</source>
         <translation>マウスを動かしてブラシの大きさを変えます。クリックか Enter で確定、Esc で取り消し。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::DepthAnalysisRunner</name>
+    <message>
+        <source>No base model to analyse</source>
+        <translation>解析するベースモデルがありません</translation>
+    </message>
+    <message>
+        <source>Not enough memory for the analysis at %1 x %2</source>
+        <translation>%1 x %2 の解析に必要なメモリが足りません</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::DepthOverlay</name>
+    <message>
+        <source>saturates at ±%1</source>
+        <translation>±%1 で飽和</translation>
+    </message>
+    <message>
+        <source>K &gt; 0 (dome)</source>
+        <translation>K &gt; 0（ドーム状）</translation>
+    </message>
+    <message>
+        <source>K &lt; 0 (saddle)</source>
+        <translation>K &lt; 0（鞍状）</translation>
+    </message>
+    <message>
+        <source>seen farther than it is</source>
+        <translation>実際より遠くに見える</translation>
+    </message>
+    <message>
+        <source>seen nearer than it is</source>
+        <translation>実際より近くに見える</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::DepthPanel</name>
+    <message>
+        <source>Overlay</source>
+        <translation>オーバーレイ</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <source>Show the picture without an overlay</source>
+        <translation>オーバーレイなしで画像を表示します</translation>
+    </message>
+    <message>
+        <source>Segments</source>
+        <translation>セグメント</translation>
+    </message>
+    <message>
+        <source>Parts of salient shape: neighbouring pixels with the same sign of Gaussian curvature and close depths, one colour each (segments under the minimum size are left out)</source>
+        <translation>形状の目立つ部分: ガウス曲率の符号が同じで奥行きが近い隣接ピクセルのまとまりを 1 色ずつで表示します（最小サイズ未満のセグメントは除きます）</translation>
+    </message>
+    <message>
+        <source>Gaussian curvature</source>
+        <translation>ガウス曲率</translation>
+    </message>
+    <message>
+        <source>Orange where the surface is dome-like (K &gt; 0), blue where it is saddle-like (K &lt; 0)</source>
+        <translation>面がドーム状（K &gt; 0）の所はオレンジ、鞍状（K &lt; 0）の所は青</translation>
+    </message>
+    <message>
+        <source>Depth error</source>
+        <translation>奥行き誤差</translation>
+    </message>
+    <message>
+        <source>How far the depth a viewer perceives (that of the nearest colour edge) is from the real depth: blue where the surface is seen farther than it is, orange where it is seen nearer</source>
+        <translation>見る人が感じる奥行き（最も近い色の境界の奥行き）と実際の奥行きの差: 実際より遠くに見える所は青、近くに見える所はオレンジ</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>不透明度</translation>
+    </message>
+    <message>
+        <source>How much the overlay covers the model</source>
+        <translation>オーバーレイがモデルをどれだけ覆うか</translation>
+    </message>
+    <message>
+        <source>Mean squared difference between perceived and real depth over the model&apos;s pixels (model units squared): lower reads better in stereo</source>
+        <translation>モデルのピクセル全体での、感じる奥行きと実際の奥行きの差の二乗平均（モデル単位の二乗）: 小さいほど立体視で形が読み取りやすくなります</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>セグメント</translation>
+    </message>
+    <message>
+        <source>Pixels</source>
+        <translation>ピクセル</translation>
+    </message>
+    <message>
+        <source>Ratio</source>
+        <translation>明部の比率</translation>
+    </message>
+    <message>
+        <source>In window</source>
+        <translation>範囲内</translation>
+    </message>
+    <message>
+        <source>Each segment&apos;s share of pixels shaded bright (N·L plus offset above the toon threshold); the shading line reads best when it is inside the window</source>
+        <translation>各セグメントで明るく塗られたピクセルの割合（N·L とオフセットの和がトゥーンのしきい値以上）。範囲内にあるとき陰影の境界線が最も読み取りやすくなります</translation>
+    </message>
+    <message>
+        <source>Analysis</source>
+        <translation>解析</translation>
+    </message>
+    <message>
+        <source>Lenient (0.20–0.80)</source>
+        <translation>緩い（0.20–0.80）</translation>
+    </message>
+    <message>
+        <source>Medium (0.35–0.65)</source>
+        <translation>中程度（0.35–0.65）</translation>
+    </message>
+    <message>
+        <source>Strict (0.50)</source>
+        <translation>厳しい（0.50）</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>カスタム</translation>
+    </message>
+    <message>
+        <source>The bright/dark ratios a segment should have (thesis 5.0.3)</source>
+        <translation>セグメントが持つべき明暗比（論文 5.0.3）</translation>
+    </message>
+    <message>
+        <source>Ratio window</source>
+        <translation>比率の範囲</translation>
+    </message>
+    <message>
+        <source>Lowest acceptable bright ratio</source>
+        <translation>許容する明部比率の下限</translation>
+    </message>
+    <message>
+        <source>Highest acceptable bright ratio</source>
+        <translation>許容する明部比率の上限</translation>
+    </message>
+    <message>
+        <source>From, to</source>
+        <translation>下限、上限</translation>
+    </message>
+    <message>
+        <source> % of size</source>
+        <translation> %（サイズ比）</translation>
+    </message>
+    <message>
+        <source>Neighbouring pixels whose depths differ by this share of the model&apos;s bounding-box diagonal or more belong to different segments</source>
+        <translation>奥行きの差がモデルのバウンディングボックス対角線のこの割合以上ある隣接ピクセルは別のセグメントになります</translation>
+    </message>
+    <message>
+        <source>Depth step</source>
+        <translation>奥行きの段差</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Smaller segments are dropped as noise (the thesis uses 64 pixels)</source>
+        <translation>これより小さいセグメントはノイズとして除きます（論文では 64 ピクセル）</translation>
+    </message>
+    <message>
+        <source>Smallest segment</source>
+        <translation>最小セグメント</translation>
+    </message>
+    <message>
+        <source>Depth error: —</source>
+        <translation>奥行き誤差: —</translation>
+    </message>
+    <message>
+        <source>Analysing…</source>
+        <translation>解析中…</translation>
+    </message>
+    <message>
+        <source>Depth error MSE: %1</source>
+        <translation>奥行き誤差 MSE: %1</translation>
+    </message>
+    <message>
+        <source>RMSE %1 model units · %2 of %3 segments inside the window · features on %4% of %5 model pixels · %6 x %7 px in %8 ms</source>
+        <translation>RMSE %1 モデル単位 · %3 セグメント中 %2 が範囲内 · 特徴ピクセルはモデルの %5 ピクセルの %4% · %6 x %7 px を %8 ms で解析</translation>
+    </message>
+    <message>
+        <source>Dome-like (K &gt; 0)</source>
+        <translation>ドーム状（K &gt; 0）</translation>
+    </message>
+    <message>
+        <source>Saddle-like (K &lt; 0)</source>
+        <translation>鞍状（K &lt; 0）</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>はい</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>いいえ</translation>
     </message>
 </context>
 <context>
@@ -3452,10 +4664,6 @@ Size %4 × %5 × %6</source>
         <translation>スムーズ</translation>
     </message>
     <message>
-        <source>Move drags the selection; Smooth relaxes it toward its neighbours while you drag</source>
-        <translation>「移動」はドラッグで選択範囲を動かします。「スムーズ」はドラッグ中に選択範囲を周囲の頂点になじませます</translation>
-    </message>
-    <message>
         <source>&amp;Mode:</source>
         <translation>モード(&amp;M):</translation>
     </message>
@@ -3578,6 +4786,14 @@ Size %4 × %5 × %6</source>
     <message>
         <source>Match Points: Shift+click the same feature on the drawing (pair %1)</source>
         <translation>点の対応付け: 絵の上で同じ特徴を Shift+クリックしてください（%1 組目）</translation>
+    </message>
+    <message>
+        <source>Relax</source>
+        <translation>リラックス</translation>
+    </message>
+    <message>
+        <source>Move drags the selection; Smooth pulls it toward its neighbours while you drag (it flattens spikes); Relax evens the vertices out along the surface and keeps the shape and its silhouette</source>
+        <translation>移動は選択部分をドラッグします。スムーズはドラッグ中に隣接頂点の方へ引き寄せます（とがりを平らにします）。リラックスは形とシルエットを保ったまま面に沿って頂点の間隔をそろえます</translation>
     </message>
 </context>
 <context>
@@ -3725,6 +4941,26 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
     <message>
         <source>Brush radius %1 px</source>
         <translation>ブラシ半径 %1 px</translation>
+    </message>
+    <message>
+        <source>Frame all</source>
+        <translation>全体を表示</translation>
+    </message>
+    <message>
+        <source>Front view, framed</source>
+        <translation>正面から全体を表示</translation>
+    </message>
+    <message>
+        <source>Brush radius smaller (× 0.8)</source>
+        <translation>ブラシの半径を小さく（× 0.8）</translation>
+    </message>
+    <message>
+        <source>Brush radius larger (× 1.25)</source>
+        <translation>ブラシの半径を大きく（× 1.25）</translation>
+    </message>
+    <message>
+        <source>Resize the brush with the mouse (click or Enter keeps, Esc cancels)</source>
+        <translation>マウスでブラシのサイズを変更（クリックか Enter で確定、Esc で取り消し）</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,7 @@
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
 #include "celform/model/project_file.h"
+#include "celform/model/render_job.h"
 
 #include <QJsonArray>
 
@@ -34,7 +35,7 @@ int runKey(const Invocation& in)
     auto doc = openProject(path);
     if (!doc->hasMesh())
         throw model::IoError(path, Cli::tr("has no base model"));
-    const model::Camera camera = byView ? cameraFromView(doc->data(), view) : explicitCamera;
+    const model::Camera camera = byView ? model::cameraFromView(doc->data(), view) : explicitCamera;
     std::vector<model::ObjectId> drawingIds;
     if (in.isSet("drawing")) {
         const model::ObjectId drawing = doc->importDrawing(in.value("drawing"));
@@ -193,8 +194,8 @@ std::vector<SubCommand> keyCommands()
                     QT_TRANSLATE_NOOP("celform::app::Cli",
                         "Move along the viewing direction (away from the camera), in world units.")},
                 {"falloff", "C",
-                    QT_TRANSLATE_NOOP("celform::app::Cli",
-                        "Falloff curve: paper ((1 - d/r)^2, the default), smooth or sphere.")},
+                    QT_TRANSLATE_NOOP(
+                        "celform::app::Cli", "Falloff curve: paper ((1 - d/r)^2, the default), smooth or sphere.")},
                 {"strength", "S", QT_TRANSLATE_NOOP("celform::app::Cli", "Strength in (0, 1], 1 by default.")},
                 {"frame", "F", kFrameOption},
                 {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print what moved as JSON.")}},

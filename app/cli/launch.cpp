@@ -87,7 +87,11 @@ void setApplicationIdentity()
 
 void installTranslations(QCoreApplication& app)
 {
-    const QLocale locale;
+    installTranslations(app, QLocale());
+}
+
+void installTranslations(QCoreApplication& app, const QLocale& locale)
+{
     auto* qt = new QTranslator(&app);
     if (qt->load(
             locale, QStringLiteral("qtbase"), QStringLiteral("_"), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))

@@ -7,6 +7,7 @@
 #include <QStringList>
 
 class QCoreApplication;
+class QLocale;
 
 namespace celform::app {
 
@@ -15,6 +16,8 @@ void setApplicationIdentity();
 
 /// Loads Qt's own strings and ours for the system locale; English needs none.
 void installTranslations(QCoreApplication& app);
+/// The same for a given locale (the editor's language preference).
+void installTranslations(QCoreApplication& app, const QLocale& locale);
 
 /// The editor's command line: celform [PROJECT] [--screenshot FILE.png].
 struct EditorArguments {

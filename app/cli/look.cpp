@@ -6,8 +6,8 @@
 #include "celform/model/document.h"
 #include "celform/model/io_error.h"
 #include "celform/model/project_file.h"
+#include "celform/model/render_job.h"
 #include "celform/model/render_output.h"
-#include "celform/model/view_blend.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -93,120 +93,38 @@ int runSet(const Invocation& in)
         if (!doc->hasMesh())
             throw model::IoError(path, Cli::tr("has no base model to frame a render camera on"));
         // Framed for the widest 16:9 shot; narrower ones fit too with the vertical fit.
-        doc->setRenderCamera(cameraFromView(doc->data(), *renderView, 16.0 / 9.0));
+        doc->setRenderCamera(model::cameraFromView(doc->data(), *renderView, 16.0 / 9.0));
     }
     doc->saveAs(path);
     return kExitOk;
 }
 
-/// The frame's file name: a run of # in the name becomes the zero-padded frame number; without
-/// one, "_FFFF" goes before the suffix when several frames are rendered.
-QString framePath(const QString& pattern, int frame, bool sequence)
-{
-    const int first = int(pattern.indexOf(QLatin1Char('#')));
-    if (first >= 0) {
-        int last = first;
-        while (last + 1 < pattern.size() && pattern[last + 1] == QLatin1Char('#'))
-            ++last;
-        return pattern.left(first) + QStringLiteral("%1").arg(frame, last - first + 1, 10, QLatin1Char('0'))
-            + pattern.mid(last + 1);
-    }
-    if (!sequence)
-        return pattern;
-    const QFileInfo info(pattern);
-    return info.dir().filePath(
-        QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(frame, 4, 10, QLatin1Char('0')).arg(info.suffix()));
-}
-
 int runRender(const Invocation& in)
 {
     // Every option is checked before any work: a usage error renders nothing.
-    camera_options::checkCombination(in, false);
-    const bool byCamera = camera_options::byCamera(in);
-    std::optional<model::Camera> explicitCamera;
-    if (byCamera)
-        explicitCamera = camera_options::explicitCamera(in);
-    std::optional<Eigen::Vector3d> view;
-    if (camera_options::byView(in))
-        view = camera_options::view(in);
     if (in.isSet("frame") && in.isSet("frames"))
         throw UsageError{Cli::tr("give either --frame or --frames")};
-    int firstFrame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
-    int lastFrame = firstFrame;
+    model::RenderJob job;
+    readPictureOptions(in, job);
     if (in.isSet("frames"))
-        std::tie(firstFrame, lastFrame) = parseFrameRange("frames", in.value("frames"));
-    const QSize imageSize = in.isSet("size") ? parseSize("size", in.value("size")) : QSize(1280, 720);
-    const auto style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
-    const auto lines = optionalValue(in, "lines", [](const QString& v) { return parseOnOff("lines", v); });
-    const auto light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
-    const algo::StereoOutput stereo = in.isSet("stereo") ? parseStereo(in.value("stereo")) : algo::StereoOutput::Off;
-    const QString pass = in.value("pass");
-    if (in.isSet("pass") && !model::renderPassNames().contains(pass))
-        throw UsageError{
-            Cli::tr("--pass takes one of %1, not “%2”").arg(model::renderPassNames().join(QStringLiteral(", ")), pass)};
-    if (stereo != algo::StereoOutput::Off && in.isSet("pass") && pass != QLatin1String("beauty"))
+        std::tie(job.firstFrame, job.lastFrame) = parseFrameRange("frames", in.value("frames"));
+    job.stereo = in.isSet("stereo") ? parseStereo(in.value("stereo")) : algo::StereoOutput::Off;
+    job.pass = in.value("pass");
+    if (in.isSet("pass") && !model::renderPassNames().contains(job.pass))
+        throw UsageError{Cli::tr("--pass takes one of %1, not “%2”")
+                             .arg(model::renderPassNames().join(QStringLiteral(", ")), job.pass)};
+    if (job.stereo != algo::StereoOutput::Off && in.isSet("pass") && job.pass != QLatin1String("beauty"))
         throw UsageError{Cli::tr("a stereo render writes the beauty pass only")};
     const QString path = in.argument(0);
-    const QString outPattern = in.isSet("out")
+    job.output = in.isSet("out")
         ? in.value("out")
         : QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".png"));
-    const QString suffix = QFileInfo(outPattern).suffix().toLower();
-    if (!QStringList{QStringLiteral("png"), QStringLiteral("exr"), QStringLiteral("tif"), QStringLiteral("tiff"),
-            QStringLiteral("jpg"), QStringLiteral("jpeg")}
-             .contains(suffix))
-        throw UsageError{Cli::tr("--out must end in .png, .exr, .tif or .jpg, not “%1”").arg(outPattern)};
-    // Two eyes in stereo; an EXR of every pass adds a float copy of the passes (measured).
-    const bool allPasses = suffix == QLatin1String("exr") && !in.isSet("pass") && stereo == algo::StereoOutput::Off;
-    const qint64 bytesPerPixel
-        = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2) + (allPasses ? 32 : 0);
-    checkRenderMemory("size", QStringLiteral("%1x%2").arg(imageSize.width()).arg(imageSize.height()),
-        qint64(imageSize.width()) * imageSize.height() * bytesPerPixel);
+    if (!model::renderSuffixes().contains(QFileInfo(job.output).suffix().toLower()))
+        throw UsageError{Cli::tr("--out must end in .png, .exr, .tif or .jpg, not “%1”").arg(job.output)};
+    checkRenderMemory("size", QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height()), job.bytesNeeded());
 
     // A render reads the project and writes pictures; the overrides apply to this render only.
-    const model::ProjectData data = model::loadProject(path);
-    if (!data.baseMesh)
-        throw model::IoError(path, Cli::tr("has no base model"));
-    model::Look look = data.look;
-    if (style) {
-        look.style = *style;
-        look.materialStyles.clear();
-    }
-    if (lines)
-        look.showLines = *lines;
-    if (light)
-        look.light = *light;
-    // Without camera options: the project's render camera, else a framed view from (0.35, 0.25, 1).
-    const model::Camera camera = explicitCamera ? *explicitCamera
-        : !view && look.renderCamera            ? *look.renderCamera
-                                                : cameraFromView(data, view.value_or(Eigen::Vector3d(0.35, 0.25, 1.0)),
-                                                    double(imageSize.width()) / imageSize.height());
-
-    model::BlendEvaluator blender;
-    QString error;
-    if (!blender.update(data, &error))
-        throw model::IoError(path, error);
-    const Eigen::Vector3d direction = blender.viewDirection(data, camera.eye);
-    algo::RenderCache cache;
-    const bool sequence = lastFrame > firstFrame;
-    // The shape keeps its generation while frames leave it still, so highlight geometry is reused.
-    algo::Shape shape;
-    algo::Positions next;
-    for (int f = firstFrame; f <= lastFrame; ++f) {
-        blender.shape(data, direction, f, next);
-        if (shape.generation == 0 || next.rows() != shape.positions.rows() || next != shape.positions) {
-            shape.positions.swap(next);
-            shape.touch();
-        }
-        const algo::RenderPasses passes = model::renderShape(data, look, shape.positions, f, camera, imageSize.width(),
-            imageSize.height(), stereo, cache, shape.generation);
-        const QString target = framePath(outPattern, f, sequence);
-        if (allPasses)
-            model::writePassesExr(passes, target);
-        else
-            model::writeImage(model::passImage(passes, in.isSet("pass") ? pass : QStringLiteral("beauty"),
-                                  suffix == QLatin1String("exr")),
-                target);
-    }
+    model::renderFrames(model::loadProject(path), path, job);
     return kExitOk;
 }
 
@@ -251,7 +169,8 @@ std::vector<SubCommand> lookCommands()
             {"celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
              "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] "
              "[--light point:X,Y,Z|directional:X,Y,Z] [--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
-             "[--pass beauty|lines|tone|highlights|depth|normal|id] [--out FILE.png|.exr|.tif|.jpg]"},
+             "[--pass beauty|lines|tone|highlights|depth|normal|id|segments|curvature|depth-error] [--out "
+             "FILE.png|.exr|.tif|.jpg]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Renders the project's look without a display (CPU renderer)."),
             {{"P", kProjectArgument}}, renderOptions, runRender},
     };

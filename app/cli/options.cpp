@@ -3,8 +3,6 @@
 // raised here rather than a file written that cannot be opened.
 #include "cli/options.h"
 
-#include "celform/algorithms/tri_mesh.h"
-
 #include <QFile>
 #include <QRegularExpression>
 
@@ -12,9 +10,7 @@
 #include <cmath>
 #include <limits>
 
-#include <sys/resource.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 namespace celform::app {
 
@@ -155,21 +151,7 @@ QSize parseSize(const char* option, const QString& text)
 
 void checkRenderMemory(const char* option, const QString& text, qint64 bytes)
 {
-    qint64 available = std::numeric_limits<qint64>::max();
-    QFile meminfo(QStringLiteral("/proc/meminfo"));
-    if (meminfo.open(QIODevice::ReadOnly)) {
-        for (const QByteArray& line : meminfo.readAll().split('\n'))
-            if (line.startsWith("MemAvailable:"))
-                available = line.mid(13).trimmed().split(' ').value(0).toLongLong() * 1024;
-    }
-    rlimit limit{};
-    if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-        QFile statm(QStringLiteral("/proc/self/statm"));
-        const qint64 used = statm.open(QIODevice::ReadOnly)
-            ? statm.readAll().split(' ').value(0).toLongLong() * ::sysconf(_SC_PAGESIZE)
-            : 0;
-        available = std::min(available, qint64(limit.rlim_cur) - used);
-    }
+    const qint64 available = model::availableRenderMemory();
     if (bytes > available)
         throw UsageError{Cli::tr("%1 %2 needs about %3 GB of memory to render, and %4 GB are available")
                              .arg(dashed(option), text)
@@ -247,24 +229,6 @@ bool sameFile(const QString& a, const QString& b)
         && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
-Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector3d& view, double aspect)
-{
-    model::Camera camera;
-    const Eigen::Vector3d centre = algo::centroid(data.baseMesh->vertices);
-    // The sphere around the centroid holding every vertex fits the narrower field of view.
-    const double radius = std::max(
-        std::sqrt(
-            (data.baseMesh->vertices.cast<double>().rowwise() - centre.transpose()).rowwise().squaredNorm().maxCoeff()),
-        1e-6);
-    const double halfY = camera.fovYDegrees * M_PI / 360.0;
-    const double halfMin = std::min(halfY, std::atan(std::tan(halfY) * aspect));
-    const Eigen::Vector3d direction = view.normalized();
-    camera.target = centre;
-    camera.eye = centre + direction * (1.05 * radius / std::sin(halfMin));
-    camera.up = std::abs(direction.y()) > 0.99 ? Eigen::Vector3d(0, 0, -1) : Eigen::Vector3d(0, 1, 0);
-    return camera;
-}
-
 namespace camera_options {
 
 std::vector<OptionSpec> specs()
@@ -316,5 +280,21 @@ Vector3 view(const Invocation& in)
 }
 
 } // namespace camera_options
+
+void readPictureOptions(const Invocation& in, model::RenderJob& job)
+{
+    camera_options::checkCombination(in, false);
+    if (camera_options::byCamera(in))
+        job.camera = camera_options::explicitCamera(in);
+    if (camera_options::byView(in))
+        job.view = camera_options::view(in);
+    job.firstFrame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    job.lastFrame = job.firstFrame;
+    if (in.isSet("size"))
+        job.size = parseSize("size", in.value("size"));
+    job.style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
+    job.lines = optionalValue(in, "lines", [](const QString& v) { return parseOnOff("lines", v); });
+    job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
+}
 
 } // namespace celform::app

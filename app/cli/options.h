@@ -7,6 +7,7 @@
 
 #include "celform/model/camera.h"
 #include "celform/model/project_data.h"
+#include "celform/model/render_job.h"
 
 #include <Eigen/Core>
 
@@ -17,15 +18,12 @@
 
 namespace celform::app {
 
+// The render limits are the renderer's (model/render_job.h), shared with the editor's render dialog.
 /// The most frames one `render --frames` run writes.
-constexpr int kMaxFramesPerRun = 100'000;
-/// The widest or tallest `render --size`.
-constexpr int kMaxRenderSide = 16384;
-/// The most pixels of one `render --size`: 8192 x 8192, about 5.9 GB for the renderer's passes.
-constexpr qint64 kMaxRenderPixels = qint64(8192) * 8192;
-/// What the renderer holds per pixel (G-buffer, passes and the beauty image, measured); a stereo
-/// render holds two eyes.
-constexpr qint64 kRenderBytesPerPixel = 88;
+constexpr int kMaxFramesPerRun = model::kMaxFramesPerRender;
+using model::kMaxRenderPixels;
+using model::kMaxRenderSide;
+using model::kRenderBytesPerPixel;
 
 /// count comma-separated finite numbers ("X,Y,Z", "DX,DY", "X,Y,Z,R").
 Eigen::VectorXd parseNumbers(const char* option, const QString& text, int count);
@@ -75,10 +73,6 @@ auto optionalValue(const Invocation& in, const char* option, Parse parse) -> std
     return value;
 }
 
-/// A camera looking at the base centroid from a view direction, far enough back that the model
-/// fits an image of the given aspect ratio. Needs a base mesh.
-model::Camera cameraFromView(const model::ProjectData& data, const Eigen::Vector3d& view, double aspect = 1.0);
-
 /// The camera options of `key add` and `render`: --view, or --eye, --target and --up together.
 namespace camera_options {
 /// Their entries for a sub-command's option list.
@@ -92,5 +86,9 @@ void checkCombination(const Invocation& in, bool required);
 /// The --view direction.
 [[nodiscard]] Eigen::Vector3d view(const Invocation& in);
 } // namespace camera_options
+
+/// The picture options `render` and `analyze` share, read into job: the camera (--view, or --eye,
+/// --target and --up), --frame, --size, and the look overrides --style, --lines and --light.
+void readPictureOptions(const Invocation& in, model::RenderJob& job);
 
 } // namespace celform::app

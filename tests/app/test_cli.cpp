@@ -1,5 +1,6 @@
 // The `celform` command line run as a process: exit codes 0 / 2 / 3, one-line errors naming the
 // file, JSON output, and no crash on any file of ../shared/data/bad.
+#include "cli_run.h"
 #include "test_support.h"
 
 #include "cli.h"
@@ -19,37 +20,6 @@
 #include <sys/stat.h>
 
 namespace {
-
-struct Run {
-    int exitCode = -1;
-    QProcess::ExitStatus status = QProcess::CrashExit;
-    QString out;
-    QString err;
-};
-
-/// Runs celform without a display. environment: NAME=VALUE sets a variable, NAME alone removes it.
-Run runCelform(const QStringList& args, const QStringList& environment = {},
-    const QString& program = QStringLiteral(CELFORM_EXECUTABLE))
-{
-    QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.remove(QStringLiteral("DISPLAY")); // sub-commands must not need a display
-    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-    for (const QString& e : environment) {
-        const qsizetype equals = e.indexOf(QLatin1Char('='));
-        if (equals < 0)
-            env.remove(e);
-        else
-            env.insert(e.left(equals), e.mid(equals + 1));
-    }
-    p.setProcessEnvironment(env);
-    p.start(program, args);
-    if (!p.waitForFinished(120000))
-        p.kill();
-    return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
-        QString::fromUtf8(p.readAllStandardError())};
-}
 
 /// Runs celform as runCelform does, with its address space capped at addressSpace bytes and
 /// killed after timeoutMs: a regression that allocates gigabytes or blocks fails its test.

@@ -1,13 +1,16 @@
 // Interactive speed of the viewport. Needs an X server: run under xvfb-run (Mesa llvmpipe there,
 // so the figures are a software-GL floor).
 // - orbiting the armadillo (52k triangles) with and without the view-dependent preview (paper 1,
-//   section 3.2), frames per second as a rate counter;
+//   section 3.2), and with the Depth dock's segment overlay following the camera (issue 11),
+//   frames per second as a rate counter;
 // - a large mesh: the dragon (871k triangles) in a 400x300 viewport, as test_viewport shows it:
 //   a document reset to it (the viewport rebuilds its polydata and frames it), the same until the
 //   first frame is drawn, and a mesh edit alone (meshChanged: the polydata is rebuilt). The aim
 //   for the mesh edit is well under 200 ms.
 #include "celform/model/document.h"
 #include "celform/model/mesh_io.h"
+#include "celform/views/depth_analysis_runner.h"
+#include "celform/views/depth_overlay.h"
 #include "celform/views/viewport.h"
 
 #include "bench_data.h"
@@ -73,7 +76,7 @@ Scene& scene()
     return scene;
 }
 
-void orbitFrames(benchmark::State& state, bool preview)
+void orbitFrames(benchmark::State& state, bool preview, bool depthOverlay = false)
 {
     Scene& s = scene();
     if (!s.ok) {
@@ -81,6 +84,18 @@ void orbitFrames(benchmark::State& state, bool preview)
         return;
     }
     s.viewport->setPreview(preview);
+    // The Depth dock's analysis (issue 11) following the camera on its worker thread, with the
+    // segment overlay drawn over the viewport.
+    std::unique_ptr<views::DepthAnalysisRunner> runner;
+    std::unique_ptr<views::DepthOverlay> overlay;
+    int analyses = 0;
+    if (depthOverlay) {
+        runner = std::make_unique<views::DepthAnalysisRunner>(&s.document, s.viewport.get());
+        overlay = std::make_unique<views::DepthOverlay>(s.viewport.get(), runner.get());
+        overlay->setKind(views::DepthOverlay::Kind::Segments);
+        QObject::connect(runner.get(), &views::DepthAnalysisRunner::analysed, [&analyses] { ++analyses; });
+        runner->setActive(true);
+    }
     model::Camera camera = s.viewport->camera();
     const Eigen::Vector3d pivot = s.viewport->pivot();
     const int before = s.viewport->renderCount();
@@ -95,6 +110,8 @@ void orbitFrames(benchmark::State& state, bool preview)
     }
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["frames"] = double(s.viewport->renderCount() - before);
+    if (depthOverlay)
+        state.counters["analyses"] = double(analyses);
 }
 
 struct DragonScene {
@@ -214,6 +231,10 @@ void BM_OrbitArmadilloPreview(benchmark::State& state)
 {
     orbitFrames(state, true);
 }
+void BM_OrbitArmadilloDepthOverlay(benchmark::State& state)
+{
+    orbitFrames(state, false, true);
+}
 
 } // namespace
 
@@ -224,6 +245,12 @@ BENCHMARK(BM_OrbitArmadillo)
     ->Repetitions(3)
     ->ReportAggregatesOnly(true);
 BENCHMARK(BM_OrbitArmadilloPreview)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_OrbitArmadilloDepthOverlay)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace celform::algo {
 namespace {
@@ -114,7 +115,7 @@ HighlightSample highlightAt(const RenderLook& look, const GBuffer& g, const Face
 } // namespace
 
 void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera& camera, const RenderLook& look,
-    RenderCache& cache, RenderPasses& out, const RasterCamera* lineView)
+    RenderCache& cache, RenderPasses& out, const RasterCamera* lineView, GBuffer* gbuffer)
 {
     const int width = camera.width, height = camera.height;
     const auto pixelCount = std::size_t(width) * std::size_t(height);
@@ -250,6 +251,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
             px[3] = 1.f;
         }
     }
+    if (gbuffer)
+        *gbuffer = std::move(g);
 }
 
 } // namespace celform::algo

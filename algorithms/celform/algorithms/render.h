@@ -80,8 +80,9 @@ struct RenderCache {
 
 /// Renders shape (the view-dependent blend for this camera, #V by 3) with mesh's faces and
 /// materials. lineView lets stereo pairs take their lines from the centre eye (paper 3, section
-/// 4.2.2); null uses camera itself. Deterministic.
+/// 4.2.2); null uses camera itself. gbuffer, when not null, receives the frame's G-buffer (the
+/// depth analysis reads it). Deterministic.
 void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera& camera, const RenderLook& look,
-    RenderCache& cache, RenderPasses& out, const RasterCamera* lineView = nullptr);
+    RenderCache& cache, RenderPasses& out, const RasterCamera* lineView = nullptr, GBuffer* gbuffer = nullptr);
 
 } // namespace celform::algo

@@ -1,6 +1,7 @@
 // Render output through OpenImageIO (the module of raster_codec.h).
 #include "celform/model/render_output.h"
 
+#include "celform/model/depth_analysis_output.h"
 #include "celform/model/io_error.h"
 #include "celform/model/raster_codec.h"
 
@@ -296,8 +297,9 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
 
 QStringList renderPassNames()
 {
-    return {QStringLiteral("beauty"), QStringLiteral("lines"), QStringLiteral("tone"), QStringLiteral("highlights"),
-        QStringLiteral("depth"), QStringLiteral("normal"), QStringLiteral("id")};
+    return QStringList{QStringLiteral("beauty"), QStringLiteral("lines"), QStringLiteral("tone"),
+               QStringLiteral("highlights"), QStringLiteral("depth"), QStringLiteral("normal"), QStringLiteral("id")}
+    + analysisPassNames();
 }
 
 algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile)
@@ -367,6 +369,12 @@ algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass,
 void writeImage(const algo::ImageRGBA& image, const QString& path)
 {
     writeChannels(path, image.width, image.height, {"R", "G", "B", "A"}, image.pixels, true);
+}
+
+void writeImageChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const std::vector<float>& data, bool encodeSrgb)
+{
+    writeChannels(path, width, height, names, data, encodeSrgb);
 }
 
 void writePassesExr(const algo::RenderPasses& passes, const QString& path)

@@ -9,6 +9,9 @@
 #include <QString>
 #include <QStringList>
 
+#include <string>
+#include <vector>
+
 namespace celform::model {
 
 /// The renderer's view of the document's look (styles per material, light, tones, lines).
@@ -51,6 +54,12 @@ algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass,
 /// Writes an image by suffix (png, tif, tiff, jpg, jpeg, exr), atomically (temporary file beside
 /// it, then a rename). Throws IoError naming the file.
 void writeImage(const algo::ImageRGBA& image, const QString& path);
+
+/// Writes width x height pixels of the named channels (interleaved floats) by suffix, atomically;
+/// 8-bit formats take values in [0, 1], sRGB-encoded in the colour channels when encodeSrgb.
+/// Throws IoError naming the file.
+void writeImageChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const std::vector<float>& data, bool encodeSrgb);
 
 /// Writes every pass into one EXR with named channels: R G B A (beauty), lines.Y, tone.Y,
 /// highlights.Y, depth.Z, normal.X normal.Y normal.Z, id.ID. Throws IoError.

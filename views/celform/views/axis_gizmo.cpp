@@ -24,9 +24,9 @@ const std::array<QColor, 3> kColours = {QColor(230, 72, 84), QColor(120, 190, 40
 Viewport::ViewPreset presetOf(int axis)
 {
     // Clicking an axis end looks at the model from that side.
-    constexpr std::array<Viewport::ViewPreset, 6> presets = {Viewport::ViewPreset::Right, Viewport::ViewPreset::Left,
-        Viewport::ViewPreset::Top, Viewport::ViewPreset::Bottom, Viewport::ViewPreset::Front,
-        Viewport::ViewPreset::Back};
+    constexpr std::array<Viewport::ViewPreset, 6> presets
+        = {Viewport::ViewPreset::Right, Viewport::ViewPreset::Left, Viewport::ViewPreset::Top,
+            Viewport::ViewPreset::Bottom, Viewport::ViewPreset::Front, Viewport::ViewPreset::Back};
     return presets[std::size_t(axis)];
 }
 

@@ -221,6 +221,12 @@ const algo::Positions& Viewport::displayedShape()
     return m_shape->positions();
 }
 
+std::uint64_t Viewport::displayedShapeGeneration()
+{
+    syncScene();
+    return m_shape->shape().generation;
+}
+
 // --- camera -----------------------------------------------------------------------------------
 
 model::Camera Viewport::camera() const

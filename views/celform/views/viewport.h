@@ -128,6 +128,8 @@ public:
     [[nodiscard]] Eigen::Vector3d viewDirection() const;
     /// The vertex positions on screen (#V by 3): base, key or blend, brought up to date first.
     [[nodiscard]] const algo::Positions& displayedShape();
+    /// The generation of the shape displayedShape() returns (algo::Shape): caches compare it.
+    [[nodiscard]] std::uint64_t displayedShapeGeneration();
 
     /// A reference drawing fixed in the viewport (0: none), its height filling the view, so a
     /// camera aligned here matches the drawing (paper 1, section 3.1.1).

@@ -176,9 +176,9 @@ void ViewportCamera::orbit(double yawDegrees, double pitchDegrees)
     if (m_trackball) {
         const Eigen::Vector3d right = forward.cross(up).normalized();
         const Eigen::Vector3d trueUp = right.cross(forward);
-        const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(radians(-pitchDegrees), right)
-            * Eigen::AngleAxisd(radians(-yawDegrees), trueUp))
-                                             .toRotationMatrix();
+        const Eigen::Matrix3d rotation
+            = (Eigen::AngleAxisd(radians(-pitchDegrees), right) * Eigen::AngleAxisd(radians(-yawDegrees), trueUp))
+                  .toRotationMatrix();
         const Eigen::Vector3d newEye = m_pivot + rotation * (eye - m_pivot);
         const Eigen::Vector3d newTarget = m_pivot + rotation * (target - m_pivot);
         const Eigen::Vector3d newUp = rotation * trueUp;

@@ -5,6 +5,7 @@
 
 #include "celform/views/tools/viewport_tool.h"
 #include "celform/views/viewport_camera.h"
+#include "celform/views/viewport_keys.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -224,19 +225,25 @@ void Viewport::keyPressEvent(QKeyEvent* event)
         event->accept();
         return;
     }
-    if (event->key() == Qt::Key_F && !(event->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
+    // The keys and what they do are listed in one table (viewport_keys.h) for the help too.
+    const auto command = viewportKeyCommand(*event);
+    if (!command) {
+        QOpenGLWidget::keyPressEvent(event);
+        return;
+    }
+    switch (*command) {
+    case ViewportKeyCommand::FrameAll:
         frameAll();
-        event->accept();
-        return;
-    }
-    if (event->key() == Qt::Key_Home) {
+        break;
+    case ViewportKeyCommand::FrontView:
         resetView();
-        event->accept();
-        return;
-    }
-    // Krita's and Photoshop's brush-size keys.
-    if (event->key() == Qt::Key_BracketLeft || event->key() == Qt::Key_BracketRight) {
-        const double factor = event->key() == Qt::Key_BracketRight ? 1.25 : 0.8;
+        break;
+    case ViewportKeyCommand::BrushResize: // the brush tool's own (viewportKeyCommand never gives it)
+        break;
+    case ViewportKeyCommand::BrushSmaller:
+    case ViewportKeyCommand::BrushLarger: {
+        // Krita's and Photoshop's brush-size keys.
+        const double factor = *command == ViewportKeyCommand::BrushLarger ? 1.25 : 0.8;
         if (m_brushRadiusUnit == BrushRadiusUnit::Pixels) {
             setBrushPixelRadius(m_brushPixelRadius * factor);
             emit message(tr("Brush radius %1 px").arg(m_brushPixelRadius, 0, 'f', 0));
@@ -246,10 +253,10 @@ void Viewport::keyPressEvent(QKeyEvent* event)
         }
         if (ViewportTool* tool = activeTool())
             tool->hover(mapFromGlobal(QCursor::pos()));
-        event->accept();
-        return;
+        break;
     }
-    QOpenGLWidget::keyPressEvent(event);
+    }
+    event->accept();
 }
 
 } // namespace celform::views

@@ -5,6 +5,7 @@
 #include "celform/model/io_error.h"
 #include "celform/views/tools/brush_cursor.h"
 #include "celform/views/viewport.h"
+#include "celform/views/viewport_keys.h"
 
 #include <QCoreApplication>
 #include <QTimer>
@@ -93,7 +94,7 @@ bool BrushTool::wantsKey(int key, Qt::KeyboardModifiers modifiers) const
 {
     if (modifiers & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
         return false;
-    if (key == Qt::Key_F)
+    if (key == viewportKey(ViewportKeyCommand::BrushResize)) // F, listed in Help > Keyboard Shortcuts
         return !m_stroke.active();
     return m_resizing && (key == Qt::Key_Escape || key == Qt::Key_Return || key == Qt::Key_Enter);
 }
@@ -102,7 +103,7 @@ bool BrushTool::keyPress(int key, Qt::KeyboardModifiers modifiers)
 {
     if (!wantsKey(key, modifiers))
         return false;
-    if (key == Qt::Key_F && !m_resizing) {
+    if (key == viewportKey(ViewportKeyCommand::BrushResize) && !m_resizing) {
         if (m_hoverUnitsPerPixel <= 0.0 && m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::World) {
             emit m_viewport->message(Brush::tr("Hold the cursor over the model to resize the brush there."));
             return true;

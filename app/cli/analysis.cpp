@@ -1,0 +1,218 @@
+// `celform analyze` and `celform curvature`: the stereo depth analysis of a project's picture
+// (paper 3, chapter 4) and the per-vertex curvature it starts from, for scripts and for checking
+// against other tools.
+#include "cli/command.h"
+#include "cli/options.h"
+
+#include "celform/model/depth_analysis.h"
+#include "celform/model/depth_analysis_output.h"
+#include "celform/model/io_error.h"
+#include "celform/model/project_file.h"
+#include "celform/model/render_job.h"
+#include "celform/model/view_blend.h"
+
+#include <QFileInfo>
+#include <QJsonArray>
+
+namespace celform::app {
+namespace {
+
+using RatioWindow = algo::RatioWindow;
+
+/// --window: LO,HI or one of the thesis's presets (5.0.3).
+RatioWindow parseWindow(const QString& text)
+{
+    if (text == QLatin1String("lenient"))
+        return {0.2f, 0.8f};
+    if (text == QLatin1String("medium"))
+        return {0.35f, 0.65f};
+    if (text == QLatin1String("strict"))
+        return {0.5f, 0.5f};
+    const QStringList parts = text.split(QLatin1Char(','));
+    bool okLow = false, okHigh = false;
+    const double low = parts.size() == 2 ? parts[0].toDouble(&okLow) : 0.0;
+    const double high = parts.size() == 2 ? parts[1].toDouble(&okHigh) : 0.0;
+    if (!okLow || !okHigh || !(low >= 0.0) || !(high <= 1.0) || !(low <= high))
+        throw UsageError{
+            Cli::tr("--window takes LO,HI with 0 <= LO <= HI <= 1, or lenient, medium or strict, not “%1”").arg(text)};
+    return {float(low), float(high)};
+}
+
+int runAnalyze(const Invocation& in)
+{
+    model::RenderJob job;
+    readPictureOptions(in, job);
+    model::AnalysisSettings settings;
+    if (in.isSet("window"))
+        settings.window = parseWindow(in.value("window"));
+    if (in.isSet("depth-threshold")) {
+        settings.depthThreshold = parseNumber("depth-threshold", in.value("depth-threshold"));
+        if (!(settings.depthThreshold > 0.0) || settings.depthThreshold > 1.0)
+            throw UsageError{Cli::tr("--depth-threshold takes a fraction of the model's size in (0, 1], not “%1”")
+                                 .arg(in.value("depth-threshold"))};
+    }
+    if (in.isSet("min-pixels")) {
+        settings.minSegmentPixels = parseInt("min-pixels", in.value("min-pixels"));
+        if (settings.minSegmentPixels < 1)
+            throw UsageError{
+                Cli::tr("--min-pixels takes a whole number of at least 1, not “%1”").arg(in.value("min-pixels"))};
+    }
+    const QString out = in.value("out");
+    if (in.isSet("out") && QFileInfo(out).suffix().toLower() != QLatin1String("exr"))
+        throw UsageError{Cli::tr("--out must end in .exr, not “%1”").arg(out)};
+    job.pass = QStringLiteral("segments");
+    checkRenderMemory("size", QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height()), job.bytesNeeded());
+
+    const QString path = in.argument(0);
+    const model::ProjectData data = model::loadProject(path);
+    const model::FrameAnalysis frame = model::analyzeProject(data, path, job, settings);
+    if (in.isSet("out"))
+        model::writeAnalysisExr(frame, out);
+
+    const algo::DepthAnalysis& a = frame.analysis;
+    if (in.isSet("json")) {
+        QJsonArray segments;
+        for (std::size_t i = 0; i < a.stats.size(); ++i) {
+            const algo::SegmentStats& s = a.stats[i];
+            segments.append(QJsonObject{{"id", int(i)}, {"pixels", s.pixels}, {"bright", s.bright},
+                {"ratio", double(s.ratio)}, {"in_window", s.inWindow},
+                {"curvature", s.meanCurvature > 0.f ? "positive" : (s.meanCurvature < 0.f ? "negative" : "flat")},
+                {"centroid", QJsonArray{double(s.centroid.x()), double(s.centroid.y())}}});
+        }
+        const model::Camera camera = model::renderJobCamera(data, model::renderJobLook(data, job), job);
+        printJson({{"frame", job.firstFrame}, {"size", QJsonArray{job.size.width(), job.size.height()}},
+            {"camera",
+                QJsonObject{{"eye", model::vec3Json(camera.eye)}, {"target", model::vec3Json(camera.target)},
+                    {"up", model::vec3Json(camera.up)}}},
+            // The window as given (floats printed without their binary tails).
+            {"window",
+                QJsonArray{QString::number(double(settings.window.low), 'g', 6).toDouble(),
+                    QString::number(double(settings.window.high), 'g', 6).toDouble()}},
+            {"depth_threshold", frame.depthThreshold}, {"segments", segments},
+            {"depth_error",
+                QJsonObject{{"mse", a.meanSquaredError}, {"rmse", std::sqrt(a.meanSquaredError)},
+                    {"max", a.maxAbsError}, {"model_pixels", double(a.modelPixels)},
+                    {"feature_pixels", double(a.featurePixels)}}},
+            {"milliseconds", frame.milliseconds}, {"curvature_milliseconds", frame.curvatureMilliseconds}});
+        return kExitOk;
+    }
+    int inside = 0;
+    QString text = Cli::tr("segment\tpixels\tratio\tin window") + QLatin1Char('\n');
+    for (std::size_t i = 0; i < a.stats.size(); ++i) {
+        const algo::SegmentStats& s = a.stats[i];
+        inside += s.inWindow ? 1 : 0;
+        text += QStringLiteral("%1\t%2\t%3\t%4\n")
+                    .arg(i)
+                    .arg(s.pixels)
+                    .arg(double(s.ratio), 0, 'f', 3)
+                    .arg(s.inWindow ? Cli::tr("yes") : Cli::tr("no"));
+    }
+    text += Cli::tr("%n segment(s), %1 inside the window %2-%3", nullptr, int(a.stats.size()))
+                .arg(inside)
+                .arg(double(settings.window.low), 0, 'f', 2)
+                .arg(double(settings.window.high), 0, 'f', 2)
+        + QLatin1Char('\n');
+    text += Cli::tr("depth error: MSE %1, RMSE %2 (model units; %3 of %4 model pixels are features)")
+                .arg(a.meanSquaredError, 0, 'g', 6)
+                .arg(std::sqrt(a.meanSquaredError), 0, 'g', 6)
+                .arg(a.featurePixels)
+                .arg(a.modelPixels)
+        + QLatin1Char('\n');
+    text += Cli::tr("time: %1 ms (curvature %2 ms)")
+                .arg(frame.milliseconds, 0, 'f', 1)
+                .arg(frame.curvatureMilliseconds, 0, 'f', 1)
+        + QLatin1Char('\n');
+    printOut(text);
+    return kExitOk;
+}
+
+int runCurvature(const Invocation& in)
+{
+    if (!in.isSet("out"))
+        throw UsageError{Cli::tr("--out is required")};
+    const QString out = in.value("out");
+    if (QFileInfo(out).suffix().toLower() != QLatin1String("ply"))
+        throw UsageError{Cli::tr("--out must end in .ply, not “%1”").arg(out)};
+    const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    const auto view = optionalValue(in, "view", [](const QString& v) { return parseDirection("view", v); });
+    const QString path = in.argument(0);
+    if (sameFile(path, out))
+        throw UsageError{Cli::tr("--out would overwrite the project")};
+    const model::ProjectData data = model::loadProject(path);
+    if (!data.baseMesh)
+        throw model::IoError(path, Cli::tr("has no base model"));
+    // The base model, or the view-dependent shape seen from --view at the frame.
+    algo::Positions shape = data.baseMesh->vertices;
+    if (view) {
+        model::BlendEvaluator blender;
+        QString error;
+        if (!blender.update(data, &error))
+            throw model::IoError(path, error);
+        blender.shape(data, view->normalized(), frame, shape);
+    }
+    model::DepthAnalyzer analyzer;
+    const algo::Curvatures& curvature = analyzer.curvatures(*data.baseMesh, shape, 0);
+    model::writeCurvaturePly(shape, data.baseMesh->faces, curvature, out);
+    if (in.isSet("json")) {
+        double kMin = 0, kMax = 0;
+        for (std::size_t i = 0; i < curvature.gaussian.size(); ++i) {
+            kMin = i == 0 ? curvature.gaussian[i] : std::min(kMin, double(curvature.gaussian[i]));
+            kMax = i == 0 ? curvature.gaussian[i] : std::max(kMax, double(curvature.gaussian[i]));
+        }
+        printJson({{"vertices", double(shape.rows())}, {"frame", frame}, {"out", out}, {"gaussian_min", kMin},
+            {"gaussian_max", kMax}});
+    }
+    return kExitOk;
+}
+
+} // namespace
+
+std::vector<SubCommand> analysisCommands()
+{
+    std::vector<OptionSpec> analyzeOptions = camera_options::specs();
+    const std::vector<OptionSpec> more = {
+        {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to analyse (default 0).")},
+        {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Picture size (default 1280x720).")},
+        {"style", "STYLE", QT_TRANSLATE_NOOP("celform::app::Cli", "Shading style of the analysed picture.")},
+        {"lines", "on|off", QT_TRANSLATE_NOOP("celform::app::Cli", "Lines in the analysed picture (on) or not (off).")},
+        {"light", "TYPE:X,Y,Z", QT_TRANSLATE_NOOP("celform::app::Cli", "Key light for this analysis.")},
+        {"window", "LO,HI",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Bright/dark ratio window a segment should be in: LO,HI, lenient (0.2-0.8), medium (0.35-0.65, "
+                "the default) or strict (0.5).")},
+        {"depth-threshold", "FRACTION",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Neighbouring pixels whose depths differ by this fraction of the model's bounding-box diagonal "
+                "or more are in different segments (default 0.02).")},
+        {"min-pixels", "N",
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Segments smaller than this are dropped as noise (default 64).")},
+        {"json", nullptr, kJsonOption},
+        {"out", "FILE.exr",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Write the picture and the buffers (curvature, segment ids, depth, depth error, features) as EXR "
+                "channels.")}};
+    analyzeOptions.insert(analyzeOptions.end(), more.begin(), more.end());
+    return {
+        {"analyze",
+            {"celform analyze P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] [--size WxH] "
+             "[--style toon|gooch|comic|lambert] [--lines on|off] [--light point:X,Y,Z|directional:X,Y,Z] "
+             "[--window LO,HI|lenient|medium|strict] [--depth-threshold FRACTION] [--min-pixels N] [--json] "
+             "[--out FILE.exr]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error."),
+            {{"P", kProjectArgument}}, analyzeOptions, runAnalyze},
+        {"curvature", {"celform curvature P [--frame F] [--view X,Y,Z] [--json] --out FILE.ply"},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Writes the per-vertex principal curvatures k1, k2 and the Gaussian curvature K as PLY properties."),
+            {{"P", kProjectArgument}},
+            {{"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame of the shape (default 0).")},
+                {"view", "X,Y,Z",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "The view-dependent shape seen from this direction (default: the base model).")},
+                {"json", nullptr, kJsonOption},
+                {"out", "FILE.ply", QT_TRANSLATE_NOOP("celform::app::Cli", "The PLY file to write.")}},
+            runCurvature},
+    };
+}
+
+} // namespace celform::app

@@ -1,0 +1,116 @@
+// Rendering a project's frames to files: the one code path of `celform render` and of the
+// editor's File > Render Image and Render Sequence (DESIGN.md, "Rendering"). The settings are
+// those of the command line; the camera, the view-dependent shape and the look are resolved here.
+#pragma once
+
+#include "celform/algorithms/stereo.h"
+#include "celform/model/camera.h"
+#include "celform/model/project_data.h"
+#include "celform/model/view_blend.h"
+
+#include <Eigen/Core>
+
+#include <QSize>
+#include <QString>
+
+#include <functional>
+#include <optional>
+
+namespace celform::model {
+
+/// The most frames one render writes.
+constexpr int kMaxFramesPerRender = 100'000;
+/// The widest or tallest image.
+constexpr int kMaxRenderSide = 16384;
+/// The most pixels of one image: 8192 x 8192, about 5.9 GB for the renderer's passes.
+constexpr qint64 kMaxRenderPixels = qint64(8192) * 8192;
+/// What the renderer holds per pixel (G-buffer, passes and the beauty image, measured); a stereo
+/// render holds two eyes.
+constexpr qint64 kRenderBytesPerPixel = 88;
+/// What the depth analysis adds per pixel (its G-buffer, labels, features, distance transform).
+constexpr qint64 kAnalysisBytesPerPixel = 64;
+
+/// The default camera's view direction when the project has no render camera.
+inline Eigen::Vector3d defaultRenderView()
+{
+    return {0.35, 0.25, 1.0};
+}
+
+/// What to render and where: the options of `celform render`.
+struct RenderJob {
+    /// The camera: this one when set, else one framed from view, else the look's render camera,
+    /// else one framed from defaultRenderView().
+    std::optional<Camera> camera;
+    std::optional<Eigen::Vector3d> view; ///< from the centroid towards the eye; not zero
+    int firstFrame = 0;
+    int lastFrame = 0; ///< >= firstFrame; several frames make a sequence
+    QSize size{1280, 720};
+    /// Overrides of the project's look for this render only.
+    std::optional<ShadingStyle> style;
+    std::optional<bool> lines;
+    std::optional<Light> light;
+    algo::StereoOutput stereo = algo::StereoOutput::Off;
+    /// One of renderPassNames(); empty: the beauty pass, or every pass as channels of an .exr.
+    QString pass;
+    /// The file, or for a sequence a pattern: a run of # is the zero-padded frame number;
+    /// without one, "_FFFF" goes before the suffix.
+    QString output;
+
+    [[nodiscard]] bool isSequence() const { return lastFrame > firstFrame; }
+    [[nodiscard]] int frameCount() const { return lastFrame - firstFrame + 1; }
+    /// An .exr without a pass, in mono: every pass as named channels.
+    [[nodiscard]] bool writesAllPasses() const;
+    /// The file frame f goes to.
+    [[nodiscard]] QString framePath(int frame) const;
+    /// About how many bytes the renderer holds for one frame (two eyes in stereo, a float copy of
+    /// the passes for an EXR of every pass).
+    [[nodiscard]] qint64 bytesNeeded() const;
+};
+
+/// The image suffixes a render writes (lower case): png, exr, tif, tiff, jpg, jpeg.
+QStringList renderSuffixes();
+
+/// The memory a render may use now: the system's available memory, and the address-space limit
+/// (ulimit -v) less what this process uses, if one is set.
+qint64 availableRenderMemory();
+
+/// A camera looking at the base centroid from a view direction, far enough back that the model
+/// fits an image of the given aspect ratio. Needs a base mesh.
+Camera cameraFromView(const ProjectData& data, const Eigen::Vector3d& view, double aspect = 1.0);
+
+/// The project's look with the job's overrides (style, lines, light) applied.
+Look renderJobLook(const ProjectData& data, const RenderJob& job);
+
+/// The camera a job looks through for a project (see RenderJob::camera). Needs a base mesh.
+Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job);
+
+/// What a job looks at and through, resolved once: the look with the job's overrides, the camera,
+/// and the blend evaluator built for the project's keys with the camera's view direction.
+struct ResolvedRenderJob {
+    Look look;
+    Camera camera;
+    BlendEvaluator blender;
+    Eigen::Vector3d direction;
+};
+
+/// Resolves a job for a project; throws IoError naming source when there is no base model or the
+/// keys cannot be blended.
+ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job);
+
+/// What a running render reports and asks. Both are called on the rendering thread.
+struct RenderCallbacks {
+    /// After each frame's file is written: the frame, the file and how many frames are done.
+    std::function<void(int frame, const QString& file, int done)> written;
+    /// Asked before each frame and before each write: true stops the render there (a frame
+    /// rendered but not yet written is dropped; the files written so far stay).
+    std::function<bool()> cancelled;
+};
+
+/// Renders the job's frames of a project and writes one file per frame (atomically). source
+/// names the project in errors. Returns how many frames were written (fewer when cancelled).
+/// Throws IoError naming the project (no base model, keys that cannot be blended) or the file
+/// that could not be written; std::bad_alloc when the images do not fit in memory.
+int renderFrames(
+    const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks = {});
+
+} // namespace celform::model

@@ -1,0 +1,196 @@
+// `celform analyze`, `celform curvature` and the analysis passes of `celform render` run as a
+// script runs them (issue 11): the JSON's shape and figures, the EXR's channels, the PLY's
+// properties, determinism, and usage errors before any work.
+#include "cli_run.h"
+#include "test_support.h"
+
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <cmath>
+#include <cstring>
+
+namespace {
+
+QString sample()
+{
+    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+}
+
+QJsonObject analyzeJson(const QStringList& extra = {})
+{
+    const Run r = runCelform(QStringList{QStringLiteral("analyze"), sample(), QStringLiteral("--size"),
+                                 QStringLiteral("480x360"), QStringLiteral("--json")}
+        + extra);
+    if (r.exitCode != 0)
+        qWarning("%s", qPrintable(r.err));
+    return QJsonDocument::fromJson(r.out.toUtf8()).object();
+}
+
+} // namespace
+
+class TestCliAnalysis : public QObject {
+    Q_OBJECT
+
+private slots:
+    void analyzePrintsSegmentsAndTheError()
+    {
+        const QJsonObject json = analyzeJson();
+        const QJsonArray segments = json.value(QStringLiteral("segments")).toArray();
+        QVERIFY(segments.size() >= 3);
+        qint64 pixels = 0;
+        for (qsizetype i = 0; i < segments.size(); ++i) {
+            const QJsonObject s = segments[i].toObject();
+            QCOMPARE(s.value(QStringLiteral("id")).toInt(), int(i)); // compact labels 0..k-1
+            QVERIFY(s.value(QStringLiteral("pixels")).toInt() >= 64); // smaller ones are dropped
+            const double ratio = s.value(QStringLiteral("ratio")).toDouble();
+            QVERIFY(ratio >= 0.0 && ratio <= 1.0);
+            QCOMPARE(s.value(QStringLiteral("bright")).toInt(),
+                int(std::lround(ratio * s.value(QStringLiteral("pixels")).toInt())));
+            QCOMPARE(s.value(QStringLiteral("in_window")).toBool(), ratio >= 0.35 && ratio <= 0.65);
+            pixels += s.value(QStringLiteral("pixels")).toInt();
+        }
+        const QJsonObject error = json.value(QStringLiteral("depth_error")).toObject();
+        const double mse = error.value(QStringLiteral("mse")).toDouble();
+        QVERIFY(mse > 0.0 && std::isfinite(mse));
+        QCOMPARE(error.value(QStringLiteral("rmse")).toDouble(), std::sqrt(mse));
+        QVERIFY(error.value(QStringLiteral("max")).toDouble() * error.value(QStringLiteral("max")).toDouble() >= mse);
+        const double model = error.value(QStringLiteral("model_pixels")).toDouble();
+        QVERIFY(model >= double(pixels)); // segments cover model pixels only
+        QVERIFY(error.value(QStringLiteral("feature_pixels")).toDouble() > 0.0);
+        QVERIFY(json.value(QStringLiteral("milliseconds")).toDouble() > 0.0);
+        QCOMPARE(json.value(QStringLiteral("window")).toArray(), QJsonArray({0.35, 0.65}));
+
+        // The same command gives the same figures.
+        QJsonObject again = analyzeJson();
+        QCOMPARE(again.value(QStringLiteral("segments")), json.value(QStringLiteral("segments")));
+        QCOMPARE(again.value(QStringLiteral("depth_error")), json.value(QStringLiteral("depth_error")));
+
+        // A stricter window keeps the ratios and changes only what is inside it; a larger
+        // smallest segment drops segments.
+        const QJsonObject strict = analyzeJson({QStringLiteral("--window"), QStringLiteral("strict")});
+        QCOMPARE(strict.value(QStringLiteral("segments")).toArray().size(), segments.size());
+        const QJsonObject fewer = analyzeJson({QStringLiteral("--min-pixels"), QStringLiteral("2000")});
+        QVERIFY(fewer.value(QStringLiteral("segments")).toArray().size() < segments.size());
+        // Lines off: fewer colour edges, so fewer features.
+        const QJsonObject flat = analyzeJson({QStringLiteral("--lines"), QStringLiteral("off")});
+        QVERIFY(flat.value(QStringLiteral("depth_error")).toObject().value(QStringLiteral("feature_pixels")).toDouble()
+            < error.value(QStringLiteral("feature_pixels")).toDouble());
+    }
+
+    void analyzeWritesTheBuffersAsExr()
+    {
+        QTemporaryDir dir;
+        const QString exr = dir.filePath(QStringLiteral("analysis.exr"));
+        const Run r = runCelform({QStringLiteral("analyze"), sample(), QStringLiteral("--size"),
+            QStringLiteral("320x240"), QStringLiteral("--out"), exr});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains(QStringLiteral("depth error: MSE")));
+        QVERIFY(QFile::exists(exr));
+        const QString iinfo = QStandardPaths::findExecutable(QStringLiteral("iinfo"));
+        if (iinfo.isEmpty())
+            QSKIP("OpenImageIO's iinfo is not installed (openimageio-tools)");
+        QProcess p;
+        p.start(iinfo, {QStringLiteral("-v"), exr});
+        QVERIFY(p.waitForFinished(60000));
+        const QString info = QString::fromUtf8(p.readAllStandardOutput());
+        QVERIFY2(info.contains(QStringLiteral("320 x  240")) || info.contains(QStringLiteral("320 x 240")),
+            qPrintable(info));
+        for (const char* channel : {"curvature.K", "segment.ID", "depth.Z", "depth_error.Z", "feature.Y"})
+            QVERIFY2(info.contains(QLatin1String(channel)), channel);
+    }
+
+    void renderWritesTheAnalysisPasses()
+    {
+        QTemporaryDir dir;
+        for (const char* pass : {"segments", "curvature", "depth-error"}) {
+            const QString png = dir.filePath(QStringLiteral("%1.png").arg(QLatin1String(pass)));
+            const Run r
+                = runCelform({QStringLiteral("render"), sample(), QStringLiteral("--size"), QStringLiteral("320x240"),
+                    QStringLiteral("--pass"), QLatin1String(pass), QStringLiteral("--out"), png});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const QImage image(png);
+            QCOMPARE(image.size(), QSize(320, 240));
+            // Colour on the model, transparent around it.
+            int opaque = 0, coloured = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    opaque += c.alpha() == 255 ? 1 : 0;
+                    coloured += c.alpha() == 255 && c.hsvSaturation() > 60 ? 1 : 0;
+                }
+            QVERIFY2(opaque > 2000 && opaque < 320 * 240 / 2, pass);
+            QVERIFY2(coloured > opaque / 20, pass);
+        }
+        // A stereo render has no analysis pass.
+        const Run stereo = runCelform({QStringLiteral("render"), sample(), QStringLiteral("--pass"),
+            QStringLiteral("segments"), QStringLiteral("--stereo"), QStringLiteral("anaglyph"), QStringLiteral("--out"),
+            dir.filePath(QStringLiteral("s.png"))});
+        QCOMPARE(stereo.exitCode, 2);
+    }
+
+    void curvatureWritesPlyProperties()
+    {
+        QTemporaryDir dir;
+        const QString ply = dir.filePath(QStringLiteral("k.ply"));
+        const Run r = runCelform({QStringLiteral("curvature"), sample(), QStringLiteral("--out"), ply});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile file(ply);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray bytes = file.readAll();
+        const qsizetype end = bytes.indexOf("end_header\n");
+        QVERIFY(end > 0);
+        const QByteArray header = bytes.left(end);
+        QVERIFY(header.contains("element vertex 2775"));
+        for (const char* p :
+            {"property float k1", "property float k2", "property float K\n", "property float K_smooth"})
+            QVERIFY2(header.contains(p), p);
+        // Every vertex: 7 floats, k1 >= k2 and K = k1 k2, all finite.
+        const char* data = bytes.constData() + end + 11;
+        for (int v = 0; v < 2775; ++v) {
+            float row[7];
+            std::memcpy(row, data + std::size_t(v) * sizeof(row), sizeof(row));
+            for (float x : row)
+                QVERIFY(std::isfinite(x));
+            QVERIFY(row[3] >= row[4]);
+            QCOMPARE(row[5], row[3] * row[4]);
+        }
+    }
+
+    void usageErrorsComeFirst()
+    {
+        QTemporaryDir dir;
+        const QString missing = dir.filePath(QStringLiteral("missing.celform"));
+        const struct {
+            QStringList args;
+            int exit;
+        } cases[] = {
+            {{QStringLiteral("analyze"), sample(), QStringLiteral("--window"), QStringLiteral("0.7,0.3")}, 2},
+            {{QStringLiteral("analyze"), sample(), QStringLiteral("--window"), QStringLiteral("wide")}, 2},
+            {{QStringLiteral("analyze"), sample(), QStringLiteral("--depth-threshold"), QStringLiteral("0")}, 2},
+            {{QStringLiteral("analyze"), sample(), QStringLiteral("--depth-threshold"), QStringLiteral("nan")}, 2},
+            {{QStringLiteral("analyze"), sample(), QStringLiteral("--min-pixels"), QStringLiteral("0")}, 2},
+            {{QStringLiteral("analyze"), sample(), QStringLiteral("--out"), dir.filePath(QStringLiteral("a.png"))}, 2},
+            {{QStringLiteral("analyze"), sample(), QStringLiteral("--view"), QStringLiteral("0,0,0")}, 2},
+            {{QStringLiteral("analyze"), missing}, 3},
+            {{QStringLiteral("curvature"), sample()}, 2},
+            {{QStringLiteral("curvature"), sample(), QStringLiteral("--out"), dir.filePath(QStringLiteral("k.obj"))},
+                2},
+            {{QStringLiteral("curvature"), missing, QStringLiteral("--out"), dir.filePath(QStringLiteral("k.ply"))}, 3},
+        };
+        for (const auto& c : cases) {
+            const Run r = runCelform(c.args);
+            QVERIFY2(r.exitCode == c.exit, qPrintable(c.args.join(QLatin1Char(' ')) + QStringLiteral(" -> ") + r.err));
+            QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')) <= 2, true);
+        }
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("a.png"))));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliAnalysis)
+#include "test_cli_analysis.moc"
