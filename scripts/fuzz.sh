@@ -98,13 +98,54 @@ done <"$list"
 echo
 echo "fuzz: per target (corpora in $out/corpus):"
 printf '  %s\n' "${summary[@]}"
+# A finding in a format the product reads in a child process (Assimp's meshes, OpenImageIO's
+# TIFF, EXR and PSD: model/import_process.h) is contained when the product, given the same bytes,
+# refuses them in one line (exit 3) or loads them (exit 0) without dying itself: the defect is in the
+# third-party reader and cannot take an open document along. Such findings are listed and kept in
+# FUZZ_OUT/contained/ for an upstream report, and do not fail the run; every other finding does.
+contained() {
+  local kind=$1 file=$2 suffix=$1 celform=$root/build/sanitize/app/celform tmp status
+  case $kind in
+    stl | gltf | glb | fbx | tif | exr | psd) ;;
+    *) return 1 ;;
+  esac
+  [ -x "$celform" ] || return 1
+  tmp=$(mktemp -d)
+  cp "$file" "$tmp/input.$suffix"
+  status=0
+  case $kind in
+    stl | gltf | glb | fbx)
+      "$celform" new "$tmp/input.$suffix" --out "$tmp/p.celform" >/dev/null 2>"$tmp/err" || status=$? ;;
+    *)
+      "$celform" new "$root/tests/data/fuzz-regressions/cli/tetrahedron.off" --drawing "$tmp/input.$suffix" \
+        --out "$tmp/p.celform" >/dev/null 2>"$tmp/err" || status=$? ;;
+  esac
+  local lines
+  lines=$(grep -vc '^warning:' "$tmp/err" || true)
+  rm -rf "$tmp"
+  [ "$status" -eq 0 ] || { [ "$status" -eq 3 ] && [ "$lines" -le 1 ]; }
+}
+
 findings=$(newFindings "$out/crashes" | sort)
-if [ -n "$findings" ]; then
+failing=()
+for finding in $findings; do
+  kind=$(basename "$(dirname "$finding")")
+  if contained "$kind" "$finding"; then
+    mkdir -p "$out/contained/$kind"
+    cp "$finding" "$out/contained/$kind/"
+    echo "fuzz: contained (a third-party reader's defect, read in a child process): $finding"
+  else
+    failing+=("$finding")
+  fi
+done
+if [ ${#failing[@]} -gt 0 ]; then
   echo
   echo "fuzz: findings (replay one with: build/sanitize/tests/fuzz/fuzz_KIND FILE):"
-  printf '  %s\n' $findings
+  printf '  %s\n' "${failing[@]}"
   exit 1
 fi
-failed=$(printf '%s\n' "${summary[@]}" | grep -vc 'exit 0$' || true)
+# A target that stopped with an error and saved nothing is a failure; one whose findings were all
+# contained is not.
+failed=$(printf '%s\n' "${summary[@]}" | grep -v 'exit 0$' | grep -vc '[1-9][0-9]* findings' || true)
 [ "$failed" -eq 0 ] || { echo "fuzz: $failed target(s) stopped with an error" >&2; exit 1; }
 echo "fuzz: no findings"

@@ -7,6 +7,7 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QProcess>
+#include <QProcessEnvironment>
 
 #include <algorithm>
 #include <csignal>
@@ -17,6 +18,18 @@
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <unistd.h>
+
+// Whether this build runs under AddressSanitizer (GCC defines the first, Clang answers the second).
+#if defined(__SANITIZE_ADDRESS__)
+#define CELFORM_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CELFORM_ADDRESS_SANITIZER 1
+#endif
+#endif
+#ifndef CELFORM_ADDRESS_SANITIZER
+#define CELFORM_ADDRESS_SANITIZER 0
+#endif
 
 namespace celform::model {
 namespace {
@@ -107,14 +120,33 @@ void runImportChild(const QStringList& arguments, const QString& fileLabel, int 
     process.setArguments(arguments);
     process.setStandardInputFile(QProcess::nullDevice());
     process.setStandardOutputFile(QProcess::nullDevice());
+#if CELFORM_ADDRESS_SANITIZER
+    // AddressSanitizer reserves terabytes of address space for its shadow memory, so a child
+    // under RLIMIT_AS cannot even start: the sanitizer's own allocator enforces the limit instead,
+    // failing an allocation beyond it (std::bad_alloc, then kExitOutOfMemory as without ASan).
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    const QString megabytes = QString::number(limits.memoryBytes / kMegabyte);
+    QString asanOptions = environment.value(QStringLiteral("ASAN_OPTIONS"));
+    if (!asanOptions.isEmpty())
+        asanOptions += QLatin1Char(':');
+    asanOptions
+        += QStringLiteral("allocator_may_return_null=1:max_allocation_size_mb=%1:soft_rss_limit_mb=%1").arg(megabytes);
+    environment.insert(QStringLiteral("ASAN_OPTIONS"), asanOptions);
+    process.setProcessEnvironment(environment);
+    constexpr bool limitAddressSpace = false;
+#else
+    constexpr bool limitAddressSpace = true;
+#endif
     // Runs in the child between fork and exec: only system calls here.
     process.setChildProcessModifier([limits] {
         // Never above a limit this process was given (raising a hard limit fails).
-        rlimit memory{};
-        ::getrlimit(RLIMIT_AS, &memory);
-        memory.rlim_cur = std::min(memory.rlim_max, rlim_t(limits.memoryBytes));
-        memory.rlim_max = memory.rlim_cur;
-        ::setrlimit(RLIMIT_AS, &memory);
+        if (limitAddressSpace) {
+            rlimit memory{};
+            ::getrlimit(RLIMIT_AS, &memory);
+            memory.rlim_cur = std::min(memory.rlim_max, rlim_t(limits.memoryBytes));
+            memory.rlim_max = memory.rlim_cur;
+            ::setrlimit(RLIMIT_AS, &memory);
+        }
         // A backstop should the parent be stopped: the parent's clock is the real bound (threads
         // may spend CPU time faster than wall-clock time passes).
         const rlim_t cpu = rlim_t(limits.seconds) * 2 + 5;
@@ -136,6 +168,17 @@ void runImportChild(const QStringList& arguments, const QString& fileLabel, int 
                 .arg(limits.seconds));
     }
     if (process.exitStatus() == QProcess::CrashExit) {
+#if CELFORM_ADDRESS_SANITIZER
+        // Under AddressSanitizer, operator new beyond the limit ends the child with a fatal report
+        // (it never throws std::bad_alloc): the report says which.
+        const QByteArray report = process.readAllStandardError();
+        if (report.contains("AddressSanitizer: out-of-memory") || report.contains("allocator is out of memory")
+            || report.contains("allocation-size-too-big") || report.contains("rss limit"))
+            throw IoError(fileLabel,
+                ImportProcess::tr("the importer needs more than %1 of memory for it and was stopped (the limit is "
+                                  "CELFORM_IMPORT_MEMORY_MB)")
+                    .arg(memoryText(limits.memoryBytes)));
+#endif
         // On Unix a crashed child's exit code is the signal that ended it.
         const int signal = process.exitCode();
         if (signal == SIGXCPU)
