@@ -7,6 +7,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <QBuffer>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest/QtTest>
@@ -174,6 +175,7 @@ private slots:
     void suffixesAndFilter();
     void refusesFuzzRegressions_data();
     void refusesFuzzRegressions();
+    void psdSectionsAreCheckedBeforeDecoding();
     void decoderMessagesStayQuiet();
     void mostCompressiblePngIsRead();
     void refusesPipesAndFolders_data();
@@ -307,6 +309,33 @@ void TestImageIo::damaged()
     }
 }
 
+// Issue 14, found by fuzz_psd: an 8x8 PSD of 207 bytes stating 4.2 GB of colour mode data made
+// OpenImageIO allocate the 4.2 GB (stopped only by the import child's memory limit). Section
+// lengths beyond the end of the file are refused before any decoder runs, in this process; real
+// PSDs still decode.
+void TestImageIo::psdSectionsAreCheckedBeforeDecoding()
+{
+    const QString bomb
+        = celform::test::testDataPath(QStringLiteral("fuzz-regressions/image/psd-8x8-colour-mode-4.2-gb.psd"));
+    QElapsedTimer timer;
+    timer.start();
+    try {
+        importDrawing(bomb);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), bomb);
+        QCOMPARE(e.problem(),
+            QStringLiteral("the PSD file states 4194303999 bytes of colour mode data, but holds 177 bytes after that "
+                           "point"));
+    }
+    QVERIFY2(timer.elapsed() < 2000, qPrintable(QString::number(timer.elapsed())));
+    for (const char* name : {"rgb_raw.psd", "rgba_rle.psd"}) {
+        const QString path = celform::test::testDataPath(QStringLiteral("fuzz-corpus/psd/%1").arg(QLatin1String(name)));
+        const Drawing d = importDrawing(path);
+        QVERIFY2(!d.image.isNull(), name);
+    }
+}
+
 void TestImageIo::suffixesAndFilter()
 {
     const QStringList s = celform::model::imageSuffixes();
@@ -322,6 +351,7 @@ void TestImageIo::refusesFuzzRegressions_data()
     const QDir dir(celform::test::testDataPath(QStringLiteral("fuzz-regressions/image")));
     QStringList files = dir.entryList(QDir::Files, QDir::Name);
     files.removeAll(QStringLiteral("png-1000x1000-libpng-error-line.png")); // decoderMessagesStayQuiet
+    files.removeAll(QStringLiteral("psd-8x8-colour-mode-4.2-gb.psd")); // psdSectionsAreCheckedBeforeDecoding
     QVERIFY(!files.isEmpty());
     for (const QString& name : files)
         QTest::newRow(qPrintable(name)) << dir.filePath(name);

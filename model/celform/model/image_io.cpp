@@ -160,6 +160,37 @@ bool pngIsTruncated(const QByteArray& data)
     return true;
 }
 
+/// Why a PSD's sections cannot be what their lengths say, or nothing. After the 26-byte header come
+/// the colour mode data, the image resources and the layer and mask information, each behind a
+/// big-endian 32-bit length. OpenImageIO's PSD reader allocates each section as stated before it
+/// reads it: a 207-byte file stating 4.2 GB of colour mode data (found by fuzz_psd) cost 4.2 GB,
+/// contained only by the import child's memory limit. A length beyond the end of the file is
+/// refused here, before any decoder runs.
+QString psdSectionProblem(const QByteArray& data)
+{
+    const auto* p = reinterpret_cast<const uchar*>(data.constData());
+    const qsizetype n = data.size();
+    if (n < 26 || std::memcmp(p, "8BPS", 4) != 0)
+        return {}; // not a PSD: the decoder says so
+    const char* const names[] = {QT_TRANSLATE_NOOP("celform::model::ImageIo", "colour mode data"),
+        QT_TRANSLATE_NOOP("celform::model::ImageIo", "image resources"),
+        QT_TRANSLATE_NOOP("celform::model::ImageIo", "layer and mask information")};
+    qsizetype at = 26;
+    for (const char* name : names) {
+        if (n - at < 4)
+            return ImageIo::tr("the PSD file is truncated (it ends before its %1)").arg(ImageIo::tr(name));
+        const quint32 length = bigEndian32(p + at);
+        at += 4;
+        if (qint64(length) > qint64(n - at))
+            return ImageIo::tr("the PSD file states %1 bytes of %2, but holds %3 bytes after that point")
+                .arg(length)
+                .arg(ImageIo::tr(name))
+                .arg(n - at);
+        at += qsizetype(length);
+    }
+    return {};
+}
+
 /// Whether a format's decoder runs in a child process: OpenImageIO's own parsers (PSD, TGA, HDR, BMP)
 /// and the libraries behind TIFF, EXR, WebP and GIF are not ours to fix. PNG and JPEG stay here: the
 /// most exercised decoders there are (libpng, libjpeg-turbo), and headerSize() checks their headers
@@ -291,6 +322,9 @@ QString checkedFormat(const QByteArray& data, const QString& format, const QStri
     }
     if (f == QLatin1String("png") && pngIsTruncated(data))
         throw IoError(fileLabel, ImageIo::tr("the PNG file is truncated (it ends before its last chunk)"));
+    if (f == QLatin1String("psd"))
+        if (const QString problem = psdSectionProblem(data); !problem.isEmpty())
+            throw IoError(fileLabel, problem);
     return f;
 }
 

@@ -142,6 +142,16 @@ double loadBinary(PlyType t, const char* p, bool swap)
     return 0.0;
 }
 
+/// A count or an index stored as a float (the format allows it): its whole part, or -1 (which every
+/// caller refuses) when it is negative, not a number or beyond 2^53. Converting 6.75e25 to an
+/// integer is undefined behaviour (found by fuzz_ply under UBSan).
+template <typename Float> std::int64_t floatIndex(Float value)
+{
+    if (!(value >= Float(0) && value < Float(std::int64_t(1) << 53)))
+        return -1;
+    return static_cast<std::int64_t>(value);
+}
+
 std::int64_t loadBinaryIndex(PlyType t, const char* p, bool swap)
 {
     switch (t) {
@@ -158,9 +168,9 @@ std::int64_t loadBinaryIndex(PlyType t, const char* p, bool swap)
     case PlyType::UInt32:
         return loadRaw<std::uint32_t>(p, swap);
     case PlyType::Float32:
-        return static_cast<std::int64_t>(loadRaw<float>(p, swap));
+        return floatIndex(loadRaw<float>(p, swap));
     case PlyType::Float64:
-        return static_cast<std::int64_t>(loadRaw<double>(p, swap));
+        return floatIndex(loadRaw<double>(p, swap));
     case PlyType::Invalid:
         break;
     }
