@@ -2754,6 +2754,30 @@ Recover it now?</source>
         <source>a temporary folder for the importer cannot be made: %1</source>
         <translation>インポーター用の一時フォルダーを作成できません: %1</translation>
     </message>
+    <message>
+        <source>colour mode data</source>
+        <translation>カラーモードデータ</translation>
+    </message>
+    <message>
+        <source>image resources</source>
+        <translation>画像リソース</translation>
+    </message>
+    <message>
+        <source>layer and mask information</source>
+        <translation>レイヤーとマスクの情報</translation>
+    </message>
+    <message>
+        <source>the PSD file is truncated (it ends before its %1)</source>
+        <translation>PSD ファイルが途中で切れています（%1 の前で終わっています）</translation>
+    </message>
+    <message>
+        <source>the PSD file states %1 bytes of %2, but holds %3 bytes after that point</source>
+        <translation>PSD ファイルは %2 が %1 バイトあるとしていますが、その位置以降には %3 バイトしかありません</translation>
+    </message>
+    <message>
+        <source>the PNG file is truncated (it ends before its last chunk)</source>
+        <translation>PNG ファイルが途中で切れています（最後のチャンクの前で終わっています）</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ImportProcess</name>
