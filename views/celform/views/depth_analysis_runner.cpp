@@ -4,6 +4,7 @@
 #include "celform/model/change_set.h"
 #include "celform/model/depth_analysis_output.h"
 #include "celform/model/document.h"
+#include "celform/views/srgb_bytes.h"
 #include "celform/views/viewport.h"
 
 #include <QMetaObject>
@@ -36,17 +37,19 @@ struct DepthAnalysisRunner::Job {
 
 namespace {
 
+/// The overlay as the screen shows it: sRGB, premultiplied; off-model pixels stay transparent.
 QImage toImage(const algo::ImageRGBA& image)
 {
     QImage out(image.width, image.height, QImage::Format_ARGB32_Premultiplied);
+    out.fill(Qt::transparent);
     for (int y = 0; y < image.height; ++y) {
         auto* line = reinterpret_cast<QRgb*>(out.scanLine(y));
         for (int x = 0; x < image.width; ++x) {
             const float* p = image.at(x, y);
             const float a = std::clamp(p[3], 0.f, 1.f);
-            auto channel = [a](float linear) {
-                return int(std::lround(std::clamp(algo::linearToSrgb(linear), 0.f, 1.f) * a * 255.f));
-            };
+            if (a <= 0.f)
+                continue;
+            auto channel = [a](float linear) { return int(std::lround(float(srgbByte(linear)) * a)); };
             line[x] = qRgba(channel(p[0]), channel(p[1]), channel(p[2]), int(std::lround(a * 255.f)));
         }
     }

@@ -2,6 +2,7 @@
 #include "celform/views/depth_panel.h"
 
 #include "celform/model/depth_analysis_output.h"
+#include "celform/views/color_swatch.h"
 #include "celform/views/depth_analysis_runner.h"
 #include "celform/views/scrolling_panel.h"
 #include "celform/views/viewport.h"
@@ -30,8 +31,7 @@ namespace {
 QIcon swatch(const Eigen::Vector3f& linear)
 {
     QPixmap pixmap(12, 12);
-    pixmap.fill(QColor::fromRgbF(
-        algo::linearToSrgb(linear.x()), algo::linearToSrgb(linear.y()), algo::linearToSrgb(linear.z())));
+    pixmap.fill(toQColor(linear));
     QPainter painter(&pixmap);
     painter.setPen(QColor(60, 60, 60));
     painter.drawRect(0, 0, 11, 11);

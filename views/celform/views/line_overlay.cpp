@@ -2,6 +2,8 @@
 // styleStrokes, drawStrokes) run against depth read back from GL instead of a CPU G-buffer.
 #include "celform/views/line_overlay.h"
 
+#include "celform/views/srgb_bytes.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,8 +12,6 @@
 namespace celform::views {
 
 namespace {
-
-constexpr int kEncodeTableSize = 16384;
 
 const std::array<float, 256>& decodeTable()
 {
@@ -22,29 +22,6 @@ const std::array<float, 256>& decodeTable()
         return t;
     }();
     return table;
-}
-
-/// Linear [0, 1] sampled finely enough that every 8-bit value decoded by decodeTable() encodes
-/// back to itself (the steepest step of the sRGB curve is 12.92, a sixth of a code value here).
-const std::vector<std::uint8_t>& encodeTable()
-{
-    static const std::vector<std::uint8_t> table = [] {
-        std::vector<std::uint8_t> t(kEncodeTableSize);
-        for (int i = 0; i < kEncodeTableSize; ++i) {
-            const float v = algo::linearToSrgb(float(i) / float(kEncodeTableSize - 1));
-            t[std::size_t(i)] = static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.f, 1.f) * 255.f));
-        }
-        return t;
-    }();
-    return table;
-}
-
-std::uint8_t encode(float linear)
-{
-    const float clamped = std::clamp(linear, 0.f, 1.f);
-    if (!(clamped == clamped))
-        return 0;
-    return encodeTable()[std::size_t(std::lround(clamped * float(kEncodeTableSize - 1)))];
 }
 
 } // namespace
@@ -161,7 +138,7 @@ void blendLines(QImage& image, const QPoint& origin, const std::vector<float>& c
                 continue;
             uchar* p = row + 4 * (x - origin.x());
             for (int c = 0; c < 3; ++c)
-                p[c] = encode(decode[p[c]] * (1.f - alpha) + lineColor[c] * alpha);
+                p[c] = srgbByte(decode[p[c]] * (1.f - alpha) + lineColor[c] * alpha);
         }
     }
 }
@@ -192,7 +169,7 @@ QImage toSrgb(const algo::ImageRGBA& image)
         const float* source = image.at(0, y);
         for (int x = 0; x < image.width; ++x) {
             for (int c = 0; c < 3; ++c)
-                row[4 * x + c] = encode(source[4 * x + c]);
+                row[4 * x + c] = srgbByte(source[4 * x + c]);
             row[4 * x + 3] = 255; // the viewport is opaque
         }
     }
