@@ -26,6 +26,7 @@ class DepthPanel;
 namespace celform::app {
 
 class RecoveryManager;
+class LightOptimisationRunner;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -87,6 +88,8 @@ private:
     void importDrawingDialog();
     void updateStatistics();
     void processDropQueue();
+    /// Optimise Light for Stereo through the viewport's camera at the Depth tab's analysis size.
+    void optimiseLightForStereo();
 
     Mode m_mode;
     model::Document* m_document;
@@ -106,6 +109,7 @@ private:
     QPlainTextEdit* m_log = nullptr;
     QStringList m_dropQueue;
     bool m_processingDrops = false;
+    QPointer<LightOptimisationRunner> m_lightRunner;
 };
 
 } // namespace celform::app

@@ -4,10 +4,12 @@
 
 #include "editor_dialogs.h"
 #include "getting_started.h"
+#include "light_optimisation_runner.h"
 #include "preferences.h"
 #include "review_window.h"
 
 #include "celform/model/io_error.h"
+#include "celform/views/depth_analysis_runner.h"
 #include "celform/views/depth_panel.h"
 #include "celform/views/highlight_panel.h"
 #include "celform/views/look_panel.h"
@@ -201,6 +203,11 @@ void MainWindow::createActions()
     make(QStringLiteral("actionDepthOverlayNext"), tr("Next Depth &Overlay"), QKeySequence(Qt::SHIFT | Qt::Key_D),
         tr("Cycle the viewport's depth overlay: none, segments, Gaussian curvature, depth error"),
         [this] { m_depth->setOverlayKind(views::DepthOverlay::Kind((int(m_depth->overlay()->kind()) + 1) % 4)); });
+    m_depth->setOptimiseLightAction(make(QStringLiteral("actionOptimiseLight"), tr("Optimise &Light for Stereo"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+        tr("Move the key light so that every segment of the Depth tab gets a shading line across it: the depth "
+           "error falls (one undo step; method in the Depth tab)"),
+        [this] { optimiseLightForStereo(); }));
     make(QStringLiteral("actionStereoToggle"), tr("Toggle Stereo &Preview"), QKeySequence(Qt::CTRL | Qt::Key_3),
         tr("Switch the viewport between mono and the last stereo mode (anaglyph at first)"), [this] {
             const bool on = m_viewport->stereo() == algo::StereoOutput::Off;
@@ -278,6 +285,9 @@ void MainWindow::createMenus()
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionCreateKeyFromView")));
 
+    QMenu* look = menuBar()->addMenu(tr("&Look"));
+    look->setObjectName(QStringLiteral("menuLook"));
+    look->addAction(action(QStringLiteral("actionOptimiseLight")));
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("actionFrameAll")));
     QMenu* presets = m_viewMenu->addMenu(tr("View &From"));
@@ -343,5 +353,76 @@ void MainWindow::createMenus()
 }
 
 // --- state shown in the window -----------------------------------------------------------------
+
+void MainWindow::optimiseLightForStereo()
+{
+    if (m_lightRunner && m_lightRunner->isRunning())
+        return;
+    const model::ProjectData& data = m_document->data();
+    if (!data.baseMesh) {
+        showError(tr("Open a model first: the light is optimised for the picture of a model."));
+        return;
+    }
+    LightOptimisationJob job;
+    // What the analysis reads; keys and drawings stay behind (the shape on screen is given).
+    job.data.baseMesh = data.baseMesh;
+    job.data.faceSets = data.faceSets;
+    job.data.shadingOffsets = data.shadingOffsets;
+    job.data.look = data.look;
+    job.data.currentFrame = data.currentFrame;
+    job.shape = m_viewport->displayedShape();
+    job.generation = m_viewport->displayedShapeGeneration();
+    job.frame = data.currentFrame;
+    job.camera = m_viewport->camera();
+    const QSize size = m_depth->runner()->analysisSize();
+    job.width = size.width();
+    job.height = size.height();
+    job.request.analysis = m_depth->runner()->settings();
+    job.request.optimiser = m_depth->lightSettings();
+    auto* runner = new LightOptimisationRunner(std::move(job), this);
+    m_lightRunner = runner;
+    connect(runner, &LightOptimisationRunner::finished, this,
+        [this, runner](const std::shared_ptr<const model::LightOptimisationReport>& report) {
+            runner->deleteLater();
+            if (report->cancelled()) {
+                statusBar()->showMessage(tr("Light optimisation cancelled: the light is unchanged."), 4000);
+                return;
+            }
+            int before = 0, after = 0;
+            for (const algo::SegmentStats& s : report->segmentsBefore)
+                before += s.inWindow ? 1 : 0;
+            for (const algo::SegmentStats& s : report->segmentsAfter)
+                after += s.inWindow ? 1 : 0;
+            if (report->after == report->before) {
+                statusBar()->showMessage(
+                    tr("The light already suits the analysis (%1 of %2 segments inside the window).")
+                        .arg(before)
+                        .arg(report->segmentsBefore.size()),
+                    6000);
+                return;
+            }
+            try {
+                m_document->applyLightOptimisation(*report);
+            } catch (const model::EditRefused& e) {
+                showError(e.message());
+                return;
+            }
+            const QString text = tr("Light optimised: depth error MSE %1 → %2, %3 → %4 of %5 segments inside the "
+                                    "window (%6 ms)")
+                                     .arg(report->mseBefore, 0, 'g', 4)
+                                     .arg(report->mseAfter, 0, 'g', 4)
+                                     .arg(before)
+                                     .arg(after)
+                                     .arg(report->segmentsBefore.size())
+                                     .arg(report->milliseconds, 0, 'f', 0);
+            statusBar()->showMessage(text, 10000);
+            log(LogLevel::Info, text);
+        });
+    connect(runner, &LightOptimisationRunner::failed, this, [this, runner](const QString& message) {
+        runner->deleteLater();
+        showError(message);
+    });
+    runner->start();
+}
 
 } // namespace celform::app

@@ -1,11 +1,13 @@
-// `celform analyze` and `celform curvature`: the stereo depth analysis of a project's picture
-// (paper 3, chapter 4) and the per-vertex curvature it starts from, for scripts and for checking
-// against other tools.
+// `celform analyze`, `celform curvature` and `celform optimize-light`: the stereo depth analysis
+// of a project's picture (paper 3, chapter 4), the per-vertex curvature it starts from, and the
+// light moved so that the analysis's segments get shading lines (4.1, 5.0).
 #include "cli/command.h"
 #include "cli/options.h"
 
 #include "celform/model/depth_analysis.h"
 #include "celform/model/depth_analysis_output.h"
+#include "celform/model/document.h"
+#include "celform/model/light_optimisation.h"
 #include "celform/model/io_error.h"
 #include "celform/model/project_file.h"
 #include "celform/model/render_job.h"
@@ -38,10 +40,9 @@ RatioWindow parseWindow(const QString& text)
     return {float(low), float(high)};
 }
 
-int runAnalyze(const Invocation& in)
+/// --window, --depth-threshold and --min-pixels.
+model::AnalysisSettings readAnalysisSettings(const Invocation& in)
 {
-    model::RenderJob job;
-    readPictureOptions(in, job);
     model::AnalysisSettings settings;
     if (in.isSet("window"))
         settings.window = parseWindow(in.value("window"));
@@ -57,6 +58,14 @@ int runAnalyze(const Invocation& in)
             throw UsageError{
                 Cli::tr("--min-pixels takes a whole number of at least 1, not “%1”").arg(in.value("min-pixels"))};
     }
+    return settings;
+}
+
+int runAnalyze(const Invocation& in)
+{
+    model::RenderJob job;
+    readPictureOptions(in, job);
+    const model::AnalysisSettings settings = readAnalysisSettings(in);
     const QString out = in.value("out");
     if (in.isSet("out") && QFileInfo(out).suffix().toLower() != QLatin1String("exr"))
         throw UsageError{Cli::tr("--out must end in .exr, not “%1”").arg(out)};
@@ -165,6 +174,116 @@ int runCurvature(const Invocation& in)
     return kExitOk;
 }
 
+QJsonObject lightJson(const model::Light& light)
+{
+    return {{"type", light.type == model::LightType::Point ? "point" : "directional"},
+        {"vector", model::vec3Json(light.vector)}};
+}
+
+int runOptimizeLight(const Invocation& in)
+{
+    model::RenderJob job;
+    camera_options::checkCombination(in, false);
+    if (camera_options::byCamera(in))
+        job.camera = camera_options::explicitCamera(in);
+    if (camera_options::byView(in))
+        job.view = camera_options::view(in);
+    job.firstFrame = job.lastFrame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    if (in.isSet("size"))
+        job.size = parseSize("size", in.value("size"));
+    checkRenderMemory("size", QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height()), job.bytesNeeded());
+
+    model::LightOptimisationRequest request;
+    request.analysis = readAnalysisSettings(in);
+    if (in.isSet("method") && !model::lightMethodFromName(in.value("method"), request.optimiser.method))
+        throw UsageError{Cli::tr("--method must be gradient, annealing or random, not “%1”").arg(in.value("method"))};
+    if (in.isSet("weight") && !model::segmentWeightFromName(in.value("weight"), request.optimiser.weight))
+        throw UsageError{Cli::tr("--weight must be constant or area, not “%1”").arg(in.value("weight"))};
+    if (in.isSet("iterations")) {
+        request.optimiser.iterations = parseInt("iterations", in.value("iterations"));
+        if (request.optimiser.iterations < 1 || request.optimiser.iterations > 100000)
+            throw UsageError{
+                Cli::tr("--iterations takes a whole number from 1 to 100000, not “%1”").arg(in.value("iterations"))};
+    }
+    if (in.isSet("seed")) {
+        bool ok = false;
+        request.optimiser.seed = in.value("seed").toULongLong(&ok);
+        if (!ok)
+            throw UsageError{Cli::tr("--seed takes a whole number of at least 0, not “%1”").arg(in.value("seed"))};
+    }
+
+    const QString path = in.argument(0);
+    auto doc = openProject(path);
+    const model::LightOptimisationReport report = model::optimiseLightForJob(doc->data(), path, job, request);
+    const bool save = !in.isSet("dry-run") && !(report.after == report.before);
+    if (save) {
+        doc->applyLightOptimisation(report);
+        doc->saveAs(path);
+    }
+
+    auto inWindow = [&](const std::vector<algo::SegmentStats>& stats) {
+        int n = 0;
+        for (const algo::SegmentStats& st : stats)
+            n += st.inWindow ? 1 : 0;
+        return n;
+    };
+    if (in.isSet("json")) {
+        QJsonArray segments;
+        for (std::size_t i = 0; i < report.segmentsBefore.size(); ++i) {
+            const algo::SegmentStats& b = report.segmentsBefore[i];
+            const algo::SegmentStats& a = i < report.segmentsAfter.size() ? report.segmentsAfter[i] : b;
+            segments.append(QJsonObject{{"id", int(i)}, {"pixels", b.pixels}, {"ratio_before", double(b.ratio)},
+                {"ratio_after", double(a.ratio)}, {"in_window_before", b.inWindow}, {"in_window_after", a.inWindow}});
+        }
+        QJsonArray iterations;
+        for (const algo::LightIteration& it : report.run.iterations)
+            iterations.append(QJsonObject{{"tried", it.tried}, {"objective", it.objective},
+                {"light", model::vec3Json(it.light)}, {"step", it.step}, {"accepted", it.accepted}});
+        printJson({{"frame", report.frame}, {"size", QJsonArray{report.width, report.height}},
+            {"camera",
+                QJsonObject{{"eye", model::vec3Json(report.camera.eye)},
+                    {"target", model::vec3Json(report.camera.target)}, {"up", model::vec3Json(report.camera.up)}}},
+            {"method", model::lightMethodName(request.optimiser.method)},
+            {"weight", model::segmentWeightName(request.optimiser.weight)},
+            {"window",
+                QJsonArray{QString::number(double(request.analysis.window.low), 'g', 6).toDouble(),
+                    QString::number(double(request.analysis.window.high), 'g', 6).toDouble()}},
+            {"seed", QString::number(request.optimiser.seed)}, {"light_before", lightJson(report.before)},
+            {"light_after", lightJson(report.after)}, {"objective_before", report.run.objectiveBefore},
+            {"objective_after", report.run.objectiveAfter}, {"iterations", iterations}, {"segments", segments},
+            {"segments_in_window", QJsonArray{inWindow(report.segmentsBefore), inWindow(report.segmentsAfter)}},
+            {"depth_error", QJsonObject{{"mse_before", report.mseBefore}, {"mse_after", report.mseAfter}}},
+            {"saved", save}, {"milliseconds", report.milliseconds},
+            {"optimise_milliseconds", report.optimiseMilliseconds}});
+        return kExitOk;
+    }
+    auto lightText = [](const model::Light& l) {
+        return QStringLiteral("%1 (%2, %3, %4)")
+            .arg(l.type == model::LightType::Point ? Cli::tr("point") : Cli::tr("directional"))
+            .arg(l.vector.x(), 0, 'g', 4)
+            .arg(l.vector.y(), 0, 'g', 4)
+            .arg(l.vector.z(), 0, 'g', 4);
+    };
+    QString text
+        = Cli::tr("light: %1 -> %2").arg(lightText(report.before), lightText(report.after)) + QLatin1Char('\n');
+    text += Cli::tr("segments inside the window: %1 -> %2 of %3")
+                .arg(inWindow(report.segmentsBefore))
+                .arg(inWindow(report.segmentsAfter))
+                .arg(report.segmentsBefore.size())
+        + QLatin1Char('\n');
+    text += Cli::tr("depth error MSE: %1 -> %2").arg(report.mseBefore, 0, 'g', 6).arg(report.mseAfter, 0, 'g', 6)
+        + QLatin1Char('\n');
+    text += Cli::tr("time: %1 ms (iterations %2 ms)")
+                .arg(report.milliseconds, 0, 'f', 1)
+                .arg(report.optimiseMilliseconds, 0, 'f', 1)
+        + QLatin1Char('\n');
+    if (!save)
+        text += (in.isSet("dry-run") ? Cli::tr("not saved (--dry-run)") : Cli::tr("the light stays where it is"))
+            + QLatin1Char('\n');
+    printOut(text);
+    return kExitOk;
+}
+
 } // namespace
 
 std::vector<SubCommand> analysisCommands()
@@ -192,6 +311,26 @@ std::vector<SubCommand> analysisCommands()
                 "Write the picture and the buffers (curvature, segment ids, depth, depth error, features) as EXR "
                 "channels.")}};
     analyzeOptions.insert(analyzeOptions.end(), more.begin(), more.end());
+    std::vector<OptionSpec> optimizeOptions = camera_options::specs();
+    const std::vector<OptionSpec> optimizeMore = {
+        {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to optimise for (default 0).")},
+        {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Size of the analysed picture (default 1280x720).")},
+        more[5], // --window
+        {"weight", "constant|area",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "How much each segment counts: all alike (constant, the default: small dents count as much as the "
+                "body) or by its size (area).")},
+        {"method", "gradient|annealing|random",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "gradient (the default: moves the light from where it is along the shading's derivative), "
+                "annealing (shrinking random steps) or random (independent random lights, the best kept).")},
+        {"iterations", "N", QT_TRANSLATE_NOOP("celform::app::Cli", "Iterations (default 64).")},
+        {"seed", "S", QT_TRANSLATE_NOOP("celform::app::Cli", "Seed of the annealing and random methods (default 1).")},
+        more[6], // --depth-threshold
+        more[7], // --min-pixels
+        {"dry-run", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Report the light found without saving it.")},
+        {"json", nullptr, kJsonOption}};
+    optimizeOptions.insert(optimizeOptions.end(), optimizeMore.begin(), optimizeMore.end());
     return {
         {"analyze",
             {"celform analyze P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] [--size WxH] "
@@ -212,6 +351,15 @@ std::vector<SubCommand> analysisCommands()
                 {"json", nullptr, kJsonOption},
                 {"out", "FILE.ply", QT_TRANSLATE_NOOP("celform::app::Cli", "The PLY file to write.")}},
             runCurvature},
+        {"optimize-light",
+            {"celform optimize-light P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] "
+             "[--size WxH] [--window LO,HI|lenient|medium|strict] [--weight constant|area] "
+             "[--method gradient|annealing|random] [--iterations N] [--seed S] [--depth-threshold FRACTION] "
+             "[--min-pixels N] [--dry-run] [--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Moves the key light so that every segment's bright/dark ratio gets into the window, and saves "
+                "the project."),
+            {{"P", kProjectArgument}}, optimizeOptions, runOptimizeLight},
     };
 }
 

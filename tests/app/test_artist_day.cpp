@@ -227,6 +227,7 @@ private slots:
             {QStringLiteral("drawing outline only (aligning)"), {"actionDrawingOutline"}},
             {QStringLiteral("stereo preview in the viewport on/off"), {"actionStereoToggle"}},
             {QStringLiteral("next depth overlay (none, segments, curvature, depth error)"), {"actionDepthOverlayNext"}},
+            {QStringLiteral("optimise the light for stereo (Look menu, Depth tab)"), {"actionOptimiseLight"}},
             {QStringLiteral("set the render camera / look through it"),
                 {"actionSetRenderCamera", "actionViewRenderCamera"}},
             {QStringLiteral("stereo review (full screen)"), {"actionStereoReview"}},

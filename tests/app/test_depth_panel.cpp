@@ -18,6 +18,9 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QProcess>
+#include <QProgressDialog>
+#include <QToolButton>
+#include <QUndoStack>
 #include <QSpinBox>
 #include <QTableWidget>
 
@@ -204,6 +207,46 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!runner->isBusy() && runner->result()->segmentStats.empty(), 60000);
         minimum->setValue(algo::kMinSegmentPixels);
         QTRY_VERIFY_WITH_TIMEOUT(!runner->isBusy() && runner->result()->segmentStats.size() == before, 60000);
+    }
+
+    void optimiseLightForStereoLowersTheError()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(showDepthDock(window));
+        views::DepthAnalysisRunner* runner = window.depthPanel()->runner();
+        model::Document* doc = window.document();
+        QVERIFY(waitForCurrent(runner));
+        const double mseBefore = runner->result()->meanSquaredError;
+        const model::Light start = doc->data().look.light;
+        const int steps = doc->undoStack()->count();
+
+        // Cancel straight away: the first analysis is still running, nothing changes.
+        QAction* optimise = window.action(QStringLiteral("actionOptimiseLight"));
+        QVERIFY(optimise);
+        QCOMPARE(optimise->shortcut(), QKeySequence(QStringLiteral("Ctrl+Shift+L")));
+        optimise->trigger();
+        auto* progress = window.findChild<QProgressDialog*>(QStringLiteral("lightOptimisationProgress"));
+        QVERIFY(progress);
+        emit progress->canceled(); // what its Cancel button sends
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !window.findChild<QProgressDialog*>(QStringLiteral("lightOptimisationProgress")), 60000);
+        QCOMPARE(doc->data().look.light, start);
+        QCOMPARE(doc->undoStack()->count(), steps);
+
+        // The Depth tab's button runs the action: one undo step, and the live error falls.
+        auto* button = window.depthPanel()->findChild<QToolButton*>(QStringLiteral("optimiseLightButton"));
+        QVERIFY(button);
+        QCOMPARE(button->defaultAction(), optimise);
+        QTest::mouseClick(button, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(doc->undoStack()->count() == steps + 1, 60000);
+        QCOMPARE(doc->undoStack()->text(steps), QStringLiteral("Optimise Light for Stereo"));
+        QVERIFY(!(doc->data().look.light == start));
+        QVERIFY(waitForCurrent(runner));
+        const double mseAfter = runner->result()->meanSquaredError;
+        QVERIFY2(mseAfter < mseBefore, qPrintable(QStringLiteral("%1 -> %2").arg(mseBefore).arg(mseAfter)));
+        test::keepScreenshot(&window, "depth-optimised-light");
+        doc->undoStack()->undo();
+        QCOMPARE(doc->data().look.light, start);
     }
 };
 

@@ -54,6 +54,24 @@ inline std::shared_ptr<algo::TriMesh> icosphere(int subdivisions)
     return mesh;
 }
 
+/// The thesis's dented sphere (paper 3, figures 4.4, 4.5 and 5.6): a unit icosphere pushed in
+/// smoothly around axis, by depth at the centre of the dent and a Gaussian fall-off of angular
+/// width sigma (radians): r = 1 - depth * exp(-(angle / sigma)^2). The bowl of the dent has
+/// positive Gaussian curvature, the ring where it meets the sphere negative.
+inline std::shared_ptr<algo::TriMesh> dentedSphere(
+    int subdivisions, Eigen::Vector3f axis, float depth = 0.25f, float sigma = 0.35f)
+{
+    auto mesh = icosphere(subdivisions);
+    axis.normalize();
+    for (Eigen::Index i = 0; i < mesh->vertices.rows(); ++i) {
+        const Eigen::Vector3f p = mesh->vertices.row(i).transpose().normalized();
+        const float angle = std::acos(std::clamp(p.dot(axis), -1.f, 1.f));
+        const float r = 1.f - depth * std::exp(-(angle / sigma) * (angle / sigma));
+        mesh->vertices.row(i) = (r * p).transpose();
+    }
+    return mesh;
+}
+
 /// A copy of mesh with one material per colour, assigned face by face: the angle of the face's
 /// centre about the Z axis (turned by 0.3 radians so no boundary follows a symmetry plane) picks
 /// one of colors.size() equal sectors. The materials meet along zigzags of edges, where vertices

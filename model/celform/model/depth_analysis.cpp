@@ -65,7 +65,8 @@ void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const alg
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::renderFrame(shape, mesh, centre, renderLook, m_cache, out.passes, nullptr, &m_gbuffer);
 
-    algo::DepthAnalysisSettings s;
+    algo::DepthAnalysisSettings& s = m_settings;
+    s = algo::DepthAnalysisSettings{};
     const Eigen::AlignedBox3d box = algo::boundingBox(shape);
     const double diagonal = box.isEmpty() ? 1.0 : box.diagonal().norm();
     out.depthThreshold = settings.depthThreshold * diagonal;

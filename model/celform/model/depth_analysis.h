@@ -55,6 +55,10 @@ public:
     void analyze(const ProjectData& data, const Look& look, const algo::Positions& shape, std::uint64_t generation,
         int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings, FrameAnalysis& out);
 
+    /// The last analysis's G-buffer (the centre eye's) and the settings it was analysed with.
+    [[nodiscard]] const algo::GBuffer& gbuffer() const { return m_gbuffer; }
+    [[nodiscard]] const algo::DepthAnalysisSettings& lastSettings() const { return m_settings; }
+
 private:
     const algo::TriMesh* m_mesh = nullptr;
     std::uint64_t m_generation = 0;
@@ -63,6 +67,7 @@ private:
     std::vector<std::pair<float, float>> m_byMagnitude; ///< (|K|, area) working memory
     algo::RenderCache m_cache;
     algo::GBuffer m_gbuffer;
+    algo::DepthAnalysisSettings m_settings;
 };
 
 /// `celform analyze`: the job's camera, frame and look overrides resolved as `celform render`

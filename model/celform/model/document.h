@@ -20,6 +20,7 @@
 namespace celform::model {
 
 class KeyOffsetsCommand;
+struct LightOptimisationReport;
 
 class Document : public QObject {
     Q_OBJECT
@@ -134,6 +135,10 @@ public:
     void setShadingStyle(ShadingStyle style, int material = -1);
     /// The key light; a change of vector is "Move Light", of type "Change Light Type".
     void setLight(const Light& light);
+    /// Optimise Light for Stereo (paper 3, 4.1): stores the light a run of model::optimiseLight
+    /// found as one undo step. Nothing happens for a cancelled run or one that kept the light.
+    /// Throws EditRefused when the light is no longer the one the run started from.
+    void applyLightOptimisation(const LightOptimisationReport& report);
     void setBackgroundColor(const Eigen::Vector3f& color);
     /// Refused (no change) when the ramp is not valid.
     void setToonRamp(const algo::ToonRamp& ramp);

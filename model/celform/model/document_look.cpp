@@ -5,6 +5,7 @@
 
 #include "celform/model/document_commands.h"
 #include "celform/model/io_error.h"
+#include "celform/model/light_optimisation.h"
 
 #include <cmath>
 
@@ -97,6 +98,19 @@ void Document::setLight(const Light& light)
     const QString text = light.type != m_data.look.light.type ? tr("Change Light Type") : tr("Move Light");
     push(new PropertyCommand<Light>(
         this, text, Property::Light, {}, lookField(&Look::light), light, ChangeSet::of(Part::Look), m_gesture));
+}
+
+void Document::applyLightOptimisation(const LightOptimisationReport& report)
+{
+    if (report.cancelled() || report.after == report.before)
+        return;
+    if (!(report.before == m_data.look.light))
+        throw EditRefused(tr("The light changed while it was being optimised; run Optimise Light for Stereo again."));
+    const Light& light = report.after;
+    if (!light.vector.allFinite() || (light.type == LightType::Directional && light.vector.norm() == 0.0))
+        throw EditRefused(tr("The optimised light is not usable."));
+    push(new PropertyCommand<Light>(this, tr("Optimise Light for Stereo"), Property::Light, {}, lookField(&Look::light),
+        light, ChangeSet::of(Part::Look), 0));
 }
 
 void Document::setBackgroundColor(const Eigen::Vector3f& color)

@@ -146,10 +146,9 @@ void DepthAnalysisRunner::submit()
     job->generation = m_viewport->displayedShapeGeneration();
     job->camera = m_viewport->camera();
     job->frame = data.currentFrame;
-    const double scale
-        = std::min(1.0, double(m_maximumSide) / std::max(1, std::max(m_viewport->width(), m_viewport->height())));
-    job->width = std::max(1, int(std::lround(m_viewport->width() * scale)));
-    job->height = std::max(1, int(std::lround(m_viewport->height() * scale)));
+    const QSize size = analysisSize();
+    job->width = size.width();
+    job->height = size.height();
     job->settings = m_settings;
     {
         std::lock_guard<std::mutex> lock(m_mutex);
@@ -160,6 +159,16 @@ void DepthAnalysisRunner::submit()
         m_busy = true;
         emit busyChanged(true);
     }
+}
+
+QSize DepthAnalysisRunner::analysisSize() const
+{
+    if (!m_viewport)
+        return {1, 1};
+    const double scale
+        = std::min(1.0, double(m_maximumSide) / std::max(1, std::max(m_viewport->width(), m_viewport->height())));
+    return {std::max(1, int(std::lround(m_viewport->width() * scale))),
+        std::max(1, int(std::lround(m_viewport->height() * scale)))};
 }
 
 void DepthAnalysisRunner::workerLoop()

@@ -9,6 +9,7 @@
 #include <QImage>
 #include <QObject>
 #include <QPointer>
+#include <QSize>
 #include <QTimer>
 
 #include <condition_variable>
@@ -63,6 +64,8 @@ public:
     /// The longest side of the analysed picture (the viewport's size scaled down to it, 1024 by
     /// default; pixels are logical).
     void setMaximumSide(int pixels);
+    /// The size the viewport's picture is analysed at (its size scaled down to the longest side).
+    [[nodiscard]] QSize analysisSize() const;
 
     /// The newest result, or null before the first.
     [[nodiscard]] std::shared_ptr<const DepthAnalysisResult> result() const { return m_result; }

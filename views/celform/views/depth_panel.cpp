@@ -21,8 +21,10 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace celform::views {
@@ -107,6 +109,42 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     m_status = new QLabel(body);
     m_status->setObjectName(QStringLiteral("depthStatus"));
     layout->addWidget(m_status);
+
+    // Optimise Light for Stereo (thesis 4.1, 5.0.2-5.0.3): the method and how segments count.
+    auto* lightBox = new QGroupBox(tr("Light for Stereo"), body);
+    auto* lightForm = new QFormLayout(lightBox);
+    lightForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    m_method = new QComboBox(lightBox);
+    m_method->setObjectName(QStringLiteral("lightMethod"));
+    m_method->addItem(tr("Gradient"), int(algo::LightMethod::Gradient));
+    m_method->addItem(tr("Annealing"), int(algo::LightMethod::Annealing));
+    m_method->addItem(tr("Random"), int(algo::LightMethod::Random));
+    m_method->setToolTip(tr("Gradient moves the light from where you put it along the shading's derivative "
+                            "(predictable); annealing tries shrinking random moves; random tries independent "
+                            "lights and keeps the best"));
+    lightForm->addRow(tr("Method"), m_method);
+    m_weight = new QComboBox(lightBox);
+    m_weight->setObjectName(QStringLiteral("lightWeight"));
+    m_weight->addItem(tr("Every segment alike"), int(algo::SegmentWeight::Constant));
+    m_weight->addItem(tr("By segment size"), int(algo::SegmentWeight::Area));
+    m_weight->setToolTip(tr("Alike: small features such as dents count as much as the body (thesis figure 5.9); "
+                            "by size: large parts count more"));
+    lightForm->addRow(tr("Segments count"), m_weight);
+    m_optimise = new QToolButton(lightBox);
+    m_optimise->setObjectName(QStringLiteral("optimiseLightButton"));
+    m_optimise->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_optimise->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    lightForm->addRow(m_optimise);
+    layout->addWidget(lightBox);
+    {
+        QSettings stored;
+        m_method->setCurrentIndex(std::clamp(stored.value(QStringLiteral("depth/lightMethod"), 0).toInt(), 0, 2));
+        m_weight->setCurrentIndex(std::clamp(stored.value(QStringLiteral("depth/lightWeight"), 0).toInt(), 0, 1));
+    }
+    connect(m_method, qOverload<int>(&QComboBox::currentIndexChanged), this,
+        [](int index) { QSettings().setValue(QStringLiteral("depth/lightMethod"), index); });
+    connect(m_weight, qOverload<int>(&QComboBox::currentIndexChanged), this,
+        [](int index) { QSettings().setValue(QStringLiteral("depth/lightWeight"), index); });
 
     // The segments and their bright/dark ratios against the window (thesis 4.1.3, 5.0.3).
     m_table = new QTableWidget(0, 4, body);
@@ -242,6 +280,20 @@ void DepthPanel::applySettings()
     settings.setValue(QStringLiteral("depth/threshold"), m_depthThreshold->value());
     settings.setValue(QStringLiteral("depth/minPixels"), m_minPixels->value());
     m_runner->setSettings(s);
+}
+
+void DepthPanel::setOptimiseLightAction(QAction* action)
+{
+    m_optimise->setDefaultAction(action);
+}
+
+algo::LightOptimisationSettings DepthPanel::lightSettings() const
+{
+    algo::LightOptimisationSettings s;
+    s.method = algo::LightMethod(m_method->currentData().toInt());
+    s.weight = algo::SegmentWeight(m_weight->currentData().toInt());
+    s.window = m_runner->settings().window;
+    return s;
 }
 
 void DepthPanel::showBusy(bool busy)

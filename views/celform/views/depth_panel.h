@@ -4,6 +4,7 @@
 // runs off the GUI thread (DepthAnalysisRunner) while the dock is shown or an overlay is on.
 #pragma once
 
+#include "celform/algorithms/light_optimisation.h"
 #include "celform/views/depth_overlay.h"
 
 #include <QWidget>
@@ -15,6 +16,8 @@ class QLabel;
 class QSlider;
 class QSpinBox;
 class QTableWidget;
+class QToolButton;
+class QAction;
 
 namespace celform::model {
 class Document;
@@ -36,6 +39,11 @@ public:
     void setOverlayKind(DepthOverlay::Kind kind);
     [[nodiscard]] QTableWidget* segmentTable() const { return m_table; }
     [[nodiscard]] QLabel* errorLabel() const { return m_mse; }
+    /// The button of the Optimise Light for Stereo action (the window owns the action).
+    void setOptimiseLightAction(QAction* action);
+    /// The method, weight and iterations chosen in the panel (the window and the scale come from
+    /// the analysis settings and the shape).
+    [[nodiscard]] algo::LightOptimisationSettings lightSettings() const;
 
 signals:
     void overlayKindChanged(celform::views::DepthOverlay::Kind kind);
@@ -64,6 +72,9 @@ private:
     QLabel* m_details;
     QLabel* m_status;
     QTableWidget* m_table;
+    QComboBox* m_method;
+    QComboBox* m_weight;
+    QToolButton* m_optimise;
 };
 
 } // namespace celform::views
