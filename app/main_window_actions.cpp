@@ -417,6 +417,10 @@ void MainWindow::optimiseLightForStereo()
                                      .arg(report->milliseconds, 0, 'f', 0);
             statusBar()->showMessage(text, 10000);
             log(LogLevel::Info, text);
+            if (report->mseAfter > report->mseBefore)
+                log(LogLevel::Warning,
+                    tr("The segments' ratios improved but the depth error rose: try another start light (move it, "
+                       "then optimise again) or a more lenient window in the Depth tab."));
         });
     connect(runner, &LightOptimisationRunner::failed, this, [this, runner](const QString& message) {
         runner->deleteLater();

@@ -80,13 +80,20 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
         report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
         return report;
     }
-    report.after = lightOf(report.run.after);
-    if (report.after.type == LightType::Directional && report.after == report.before) {
+    // The lights the search accepted, the best (by the ratios) last.
+    std::vector<Eigen::Vector3d> accepted;
+    for (const algo::LightIteration& it : report.run.iterations)
+        if (it.accepted)
+            accepted.push_back(it.light);
+    if (accepted.empty()) { // nothing better than the artist's light: it stays as it is
         report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
         return report;
     }
 
-    // The analysis with the new light: the depth error the artist will see.
+    // The analysis with the new light: the depth error the artist will see. The ratios are the
+    // search's objective; the depth error (4.4) is reported beside them and may rise where the
+    // start light's rim of shadow along the outline gave more features than the new shading line.
+    report.after = lightOf({report.before.type == LightType::Point, accepted.back()});
     Look moved = look;
     moved.light = report.after;
     analyzer.analyze(data, moved, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis);

@@ -42,7 +42,8 @@ struct LightOptimisationReport {
 };
 
 /// Analyses the picture of shape (#V by 3, the blend at frame for camera) at width x height with
-/// look, moves look's light by the request's method, and analyses again with the new light.
+/// look, moves look's light by the request's method, and analyses again with the new light. When
+/// no light is better by the ratios, after == before.
 /// progress is called after each iteration and may cancel (then after == before and nothing is
 /// analysed again). Reads data only: safe on a worker thread with a copy of the project. Throws
 /// std::bad_alloc when the buffers do not fit.
