@@ -4,6 +4,7 @@
 
 #include "editor_dialogs.h"
 #include "getting_started.h"
+#include "offset_actions.h"
 #include "preferences.h"
 #include "review_window.h"
 
@@ -277,6 +278,8 @@ void MainWindow::createMenus()
     edit->addAction(action(QStringLiteral("actionDelete")));
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionCreateKeyFromView")));
+    edit->addSeparator();
+    installOffsetActions(this, edit);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("actionFrameAll")));
