@@ -33,15 +33,7 @@ int runOffsets(const Invocation& in)
         throw UsageError{Cli::tr("camera, picture and solve options go with --auto only")};
     // The camera and picture as `celform analyze` takes them; the look is the project's own.
     model::RenderJob job;
-    camera_options::checkCombination(in, false);
-    if (camera_options::byCamera(in))
-        job.camera = camera_options::explicitCamera(in);
-    if (camera_options::byView(in))
-        job.view = camera_options::view(in);
-    job.firstFrame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
-    job.lastFrame = job.firstFrame;
-    if (in.isSet("size"))
-        job.size = parseSize("size", in.value("size"));
+    readCameraOptions(in, job);
     model::AutoOffsetsRequest request;
     if (in.isSet("aggressiveness")) {
         request.aggressiveness = float(parseNumber("aggressiveness", in.value("aggressiveness")));

@@ -5,6 +5,7 @@
 #include "test_meshes.h"
 #include "test_support.h"
 
+#include "celform/model/depth_analysis.h"
 #include "celform/model/document.h"
 #include "celform/model/io_error.h"
 #include "celform/model/project_file.h"
@@ -86,6 +87,29 @@ private slots:
         effectiveShadingOffsets(m_doc.data(), blender, Eigen::Vector3d(0, 0, 1), 5, out);
         for (std::size_t v = 0; v < m_n; ++v)
             QVERIFY(std::abs(out[v] - (base[v] + 0.5f * (a[v] + 1.f))) < 1e-5f);
+    }
+
+    void renderAndAnalysisSeeTheKeyLayer()
+    {
+        // celform render / analyze at a key's own view: the picture of base + the key's layer is
+        // the picture of a project whose base layer holds that sum.
+        const ObjectId front = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const std::vector<float> a = ramp(m_n, 0.4f);
+        m_doc.setShadingOffsets({front, 0}, a);
+        RenderJob job;
+        job.view = Eigen::Vector3d(0, 0, 1);
+        job.size = QSize(96, 96);
+        const FrameAnalysis withKey = analyzeProject(m_doc.data(), QStringLiteral("k"), job, AnalysisSettings{});
+        ProjectData flat = m_doc.data();
+        flat.keys.front().shadingOffsetsByFrame.clear();
+        flat.shadingOffsets = a;
+        const FrameAnalysis withBase = analyzeProject(flat, QStringLiteral("b"), job, AnalysisSettings{});
+        QVERIFY(withKey.analysis.lambert == withBase.analysis.lambert);
+        QVERIFY(withKey.passes.beauty.pixels == withBase.passes.beauty.pixels);
+        // Without the layer the picture differs.
+        flat.shadingOffsets.clear();
+        const FrameAnalysis none = analyzeProject(flat, QStringLiteral("n"), job, AnalysisSettings{});
+        QVERIFY(none.analysis.lambert != withKey.analysis.lambert);
     }
 
     void everyOperationUndoesExactly()

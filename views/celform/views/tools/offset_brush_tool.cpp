@@ -5,10 +5,8 @@
 #include "celform/model/io_error.h"
 #include "celform/views/tools/brush_cursor.h"
 #include "celform/views/viewport.h"
-#include "celform/views/viewport_keys.h"
 
 #include <QCoreApplication>
-#include <QTimer>
 
 #include <algorithm>
 #include <cmath>
@@ -24,14 +22,8 @@ struct OffsetBrush {
 
 OffsetBrushTool::OffsetBrushTool(Viewport* viewport)
     : ViewportTool(viewport)
-    , m_circle(new BrushCursor(viewport))
-    , m_hoverTimer(new QTimer(viewport))
-{
-    m_circle->hide();
-    m_hoverTimer->setSingleShot(true);
-    m_hoverTimer->setInterval(16);
-    QObject::connect(m_hoverTimer, &QTimer::timeout, viewport, [this] { updateCircle(); });
-}
+    , m_hover(viewport, [] { return algo::BrushFalloff::Paper; }) // (1 - d/r)^2, as the dabs
+{ }
 
 OffsetBrushTool::~OffsetBrushTool() = default; // the circle and the timer belong to the viewport
 
@@ -66,102 +58,37 @@ void OffsetBrushTool::activate()
                                  .arg(targetText()));
 }
 
-double OffsetBrushTool::radiusPixels(double unitsPerPixel) const
-{
-    if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-        return m_viewport->brushPixelRadius();
-    return unitsPerPixel > 0.0 ? m_viewport->brushRadius() / unitsPerPixel : 0.0;
-}
-
-void OffsetBrushTool::updateCircle()
-{
-    if (m_resizing)
-        return;
-    const auto hit = m_viewport->pickSurface(m_hoverPos);
-    if (!hit) {
-        m_hoverUnitsPerPixel = 0.0;
-        m_circle->hide();
-        return;
-    }
-    m_hoverUnitsPerPixel = m_viewport->worldUnitsPerPixel(hit->second);
-    m_circle->showCircle(m_hoverPos, radiusPixels(m_hoverUnitsPerPixel), algo::BrushFalloff::Paper);
-}
-
 void OffsetBrushTool::hover(const QPointF& position)
 {
-    m_hoverPos = position;
-    if (m_resizing) {
-        const QPointF d = position - m_resizeCentre;
-        const double pixels = std::max(std::sqrt(QPointF::dotProduct(d, d)), 2.0);
-        if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-            m_viewport->setBrushPixelRadius(pixels);
-        else if (m_hoverUnitsPerPixel > 0.0)
-            m_viewport->setBrushRadius(pixels * m_hoverUnitsPerPixel);
-        m_circle->showCircle(m_resizeCentre, pixels, algo::BrushFalloff::Paper, true);
-        return;
-    }
-    if (!m_hoverTimer->isActive())
-        m_hoverTimer->start();
+    m_hover.hover(position);
 }
 
 void OffsetBrushTool::leave()
 {
-    m_hoverTimer->stop();
-    if (!m_resizing && !m_stroke.active())
-        m_circle->hide();
+    m_hover.leave(m_stroke.active());
 }
 
 void OffsetBrushTool::cameraChanged()
 {
-    if (m_circle->isVisible() && !m_resizing && !m_stroke.active())
-        hover(m_hoverPos);
+    m_hover.cameraChanged(m_stroke.active());
 }
 
 bool OffsetBrushTool::wantsKey(int key, Qt::KeyboardModifiers modifiers) const
 {
-    if (modifiers & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
-        return false;
-    if (key == viewportKey(ViewportKeyCommand::BrushResize))
-        return !m_stroke.active();
-    return m_resizing && (key == Qt::Key_Escape || key == Qt::Key_Return || key == Qt::Key_Enter);
+    return m_hover.wantsKey(key, modifiers, m_stroke.active());
 }
 
 bool OffsetBrushTool::keyPress(int key, Qt::KeyboardModifiers modifiers)
 {
-    if (!wantsKey(key, modifiers))
-        return false;
-    if (key == viewportKey(ViewportKeyCommand::BrushResize) && !m_resizing) {
-        if (m_hoverUnitsPerPixel <= 0.0 && m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::World) {
-            emit m_viewport->message(OffsetBrush::tr("Hold the cursor over the model to resize the brush there."));
-            return true;
-        }
-        m_resizing = true;
-        m_radiusBeforeResize = m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels
-            ? m_viewport->brushPixelRadius()
-            : m_viewport->brushRadius();
-        const double pixels = radiusPixels(m_hoverUnitsPerPixel);
-        m_resizeCentre = m_hoverPos - QPointF(pixels, 0.0);
-        m_circle->showCircle(m_resizeCentre, pixels, algo::BrushFalloff::Paper, true);
-        emit m_viewport->message(
-            OffsetBrush::tr("Move the mouse to resize the brush; click or Enter to keep, Esc to cancel."));
-        return true;
-    }
-    m_resizing = false;
-    if (key == Qt::Key_Escape) {
-        if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-            m_viewport->setBrushPixelRadius(m_radiusBeforeResize);
-        else
-            m_viewport->setBrushRadius(m_radiusBeforeResize);
-    }
-    updateCircle();
-    return true;
+    return m_hover.keyPress(key, modifiers, m_stroke.active(),
+        OffsetBrush::tr("Hold the cursor over the model to resize the brush there."),
+        OffsetBrush::tr("Move the mouse to resize the brush; click or Enter to keep, Esc to cancel."));
 }
 
 bool OffsetBrushTool::press(const ToolEvent& event)
 {
-    if (m_resizing) {
-        m_resizing = false; // a click keeps the new size
-        updateCircle();
+    if (m_hover.isResizing()) {
+        m_hover.endResize(true); // a click keeps the new size
         return false;
     }
     model::Document* document = m_viewport->document();
@@ -188,8 +115,7 @@ bool OffsetBrushTool::press(const ToolEvent& event)
         emit m_viewport->message(e.message());
         return true;
     }
-    m_hoverTimer->stop();
-    m_circle->showCircle(event.position, brush.radius / std::max(unitsPerPixel, 1e-12), algo::BrushFalloff::Paper);
+    m_hover.showAt(event.position, brush.radius / std::max(unitsPerPixel, 1e-12));
     document->applyOffsetStroke(m_stroke, hit->second);
     return true;
 }
@@ -201,7 +127,7 @@ void OffsetBrushTool::dab(const QPointF& position)
         return;
     if (const auto hit = m_viewport->pickSurface(position))
         document->applyOffsetStroke(m_stroke, hit->second);
-    m_circle->showCircle(position, m_circle->radiusPixels(), algo::BrushFalloff::Paper);
+    m_hover.showAt(position, m_hover.circle()->radiusPixels());
 }
 
 void OffsetBrushTool::move(const ToolEvent& event)
@@ -219,8 +145,8 @@ void OffsetBrushTool::finish()
 void OffsetBrushTool::release(const ToolEvent& event)
 {
     finish();
-    m_hoverPos = event.position;
-    updateCircle();
+    m_hover.hover(event.position);
+    m_hover.updateCircle();
 }
 
 void OffsetBrushTool::cancel()
@@ -230,9 +156,7 @@ void OffsetBrushTool::cancel()
 
 void OffsetBrushTool::deactivate()
 {
-    m_resizing = false;
-    m_hoverTimer->stop();
-    m_circle->hide();
+    m_hover.stop();
     finish();
 }
 

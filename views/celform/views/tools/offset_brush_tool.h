@@ -6,13 +6,10 @@
 #pragma once
 
 #include "celform/model/shading_stroke.h"
+#include "celform/views/tools/brush_hover.h"
 #include "celform/views/tools/viewport_tool.h"
 
-class QTimer;
-
 namespace celform::views {
-
-class BrushCursor;
 
 class OffsetBrushTool : public ViewportTool {
 public:
@@ -46,26 +43,18 @@ public:
     [[nodiscard]] bool wantsKey(int key, Qt::KeyboardModifiers modifiers) const override;
     bool keyPress(int key, Qt::KeyboardModifiers modifiers) override;
 
-    [[nodiscard]] const BrushCursor* cursorCircle() const { return m_circle; }
+    [[nodiscard]] const BrushCursor* cursorCircle() const { return m_hover.circle(); }
 
 private:
     void dab(const QPointF& position);
     void finish();
-    void updateCircle();
-    [[nodiscard]] double radiusPixels(double unitsPerPixel) const;
 
     model::OffsetPaintMode m_mode = model::OffsetPaintMode::Add;
     double m_strength = 0.05;
     bool m_mirrorX = false;
     model::ObjectId m_targetKey = 0;
     model::OffsetStroke m_stroke;
-    BrushCursor* m_circle; ///< child of the viewport
-    QTimer* m_hoverTimer; ///< coalesces hover picks to one per frame
-    QPointF m_hoverPos;
-    double m_hoverUnitsPerPixel = 0.0;
-    bool m_resizing = false;
-    QPointF m_resizeCentre;
-    double m_radiusBeforeResize = 0.0;
+    BrushHover m_hover; ///< the circle under the cursor and F-resize, as the geometry brush's
 };
 
 } // namespace celform::views
