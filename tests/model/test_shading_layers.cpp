@@ -187,7 +187,13 @@ private slots:
     {
         QTemporaryDir dir;
         const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
-        // An "old" file: no layers anywhere; it loads with none.
+        // Files written before key layers (the bundled samples) load unchanged, without layers.
+        const ProjectData sample
+            = loadProject(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-highlights.celform"));
+        QVERIFY(sample.shadingOffsets.empty());
+        for (const KeyViewpoint& k : sample.keys)
+            QVERIFY(k.shadingOffsetsByFrame.empty());
+        // A file without layers written now: it loads with none.
         const QString old = dir.filePath(QStringLiteral("old.celform"));
         m_doc.saveAs(old);
         const ProjectData oldData = loadProject(old);
