@@ -20,8 +20,9 @@ namespace celform::app {
 
 /// Everything a run reads, copied from the document and the viewport when it starts.
 struct LightOptimisationJob {
-    model::ProjectData data; ///< the mesh (shared), face sets, offsets and look
+    model::ProjectData data; ///< the mesh (shared), face sets and look
     algo::Positions shape; ///< the shape on screen
+    std::vector<float> offsets; ///< the shading offsets in effect for it (Viewport::displayedShadingOffsets)
     std::uint64_t generation = 0;
     int frame = 0;
     model::Camera camera;

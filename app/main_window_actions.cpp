@@ -5,6 +5,7 @@
 #include "editor_dialogs.h"
 #include "getting_started.h"
 #include "light_optimisation_runner.h"
+#include "offset_actions.h"
 #include "preferences.h"
 #include "review_window.h"
 
@@ -284,6 +285,8 @@ void MainWindow::createMenus()
     edit->addAction(action(QStringLiteral("actionDelete")));
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionCreateKeyFromView")));
+    edit->addSeparator();
+    installOffsetActions(this, edit);
 
     QMenu* look = menuBar()->addMenu(tr("&Look"));
     look->setObjectName(QStringLiteral("menuLook"));
@@ -367,7 +370,7 @@ void MainWindow::optimiseLightForStereo()
     // What the analysis reads; keys and drawings stay behind (the shape on screen is given).
     job.data.baseMesh = data.baseMesh;
     job.data.faceSets = data.faceSets;
-    job.data.shadingOffsets = data.shadingOffsets;
+    job.offsets = m_viewport->displayedShadingOffsets();
     job.data.look = data.look;
     job.data.currentFrame = data.currentFrame;
     job.shape = m_viewport->displayedShape();

@@ -68,6 +68,7 @@ std::vector<SubCommand> keyCommands(); // key, brush, eval
 std::vector<SubCommand> lookCommands(); // set, render
 std::vector<SubCommand> highlightCommands(); // highlight, patch
 std::vector<SubCommand> analysisCommands(); // analyze, curvature, optimize-light
+std::vector<SubCommand> offsetsCommands(); // offsets
 /// The hidden ones: run by the model as its child processes, left out of help and the README.
 std::vector<SubCommand> importCommands(); // import-mesh, import-image
 

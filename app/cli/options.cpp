@@ -281,7 +281,7 @@ Vector3 view(const Invocation& in)
 
 } // namespace camera_options
 
-void readPictureOptions(const Invocation& in, model::RenderJob& job)
+void readCameraOptions(const Invocation& in, model::RenderJob& job)
 {
     camera_options::checkCombination(in, false);
     if (camera_options::byCamera(in))
@@ -292,6 +292,11 @@ void readPictureOptions(const Invocation& in, model::RenderJob& job)
     job.lastFrame = job.firstFrame;
     if (in.isSet("size"))
         job.size = parseSize("size", in.value("size"));
+}
+
+void readPictureOptions(const Invocation& in, model::RenderJob& job)
+{
+    readCameraOptions(in, job);
     job.style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
     job.lines = optionalValue(in, "lines", [](const QString& v) { return parseOnOff("lines", v); });
     job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });

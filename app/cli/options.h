@@ -87,6 +87,8 @@ void checkCombination(const Invocation& in, bool required);
 [[nodiscard]] Eigen::Vector3d view(const Invocation& in);
 } // namespace camera_options
 
+/// The camera (--view, or --eye, --target and --up), --frame and --size, read into job.
+void readCameraOptions(const Invocation& in, model::RenderJob& job);
 /// The picture options `render` and `analyze` share, read into job: the camera (--view, or --eye,
 /// --target and --up), --frame, --size, and the look overrides --style, --lines and --light.
 void readPictureOptions(const Invocation& in, model::RenderJob& job);

@@ -223,6 +223,7 @@ private slots:
             {QStringLiteral("preview the view-dependent shape"), {"actionPreview"}},
             {QStringLiteral("new key from the current view"), {"actionCreateKeyFromView"}},
             {QStringLiteral("leave a tool"), {"actionNavigate"}},
+            {QStringLiteral("paint shading offsets (tool)"), {"actionOffsetBrush"}},
             {QStringLiteral("cartoon look on/off"), {"actionShowLook"}},
             {QStringLiteral("drawing outline only (aligning)"), {"actionDrawingOutline"}},
             {QStringLiteral("stereo preview in the viewport on/off"), {"actionStereoToggle"}},

@@ -20,6 +20,7 @@
 #include <csignal>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <new>
 
 #include <sys/ptrace.h>
@@ -794,6 +795,50 @@ private slots:
         Document other;
         other.open(path);
         QVERIFY(other.data() == doc.data());
+    }
+
+    // Key layers of shading offsets (issue 12): kept through a save, refused with the file's
+    // name when a count or a value is wrong.
+    void keyShadingOffsetsRoundTripAndRefusals_data()
+    {
+        QTest::addColumn<QString>("damage");
+        QTest::newRow("intact") << QString();
+        QTest::newRow("count") << QStringLiteral("count");
+        QTest::newRow("not finite") << QStringLiteral("nan");
+    }
+    void keyShadingOffsetsRoundTripAndRefusals()
+    {
+        QFETCH(QString, damage);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("layers.celform"));
+        ProjectData data = richProject();
+        const std::size_t n = std::size_t(data.baseMesh->vertexCount());
+        data.keys.front().shadingOffsetsByFrame[0] = std::vector<float>(n, 0.25f);
+        data.keys.front().shadingOffsetsByFrame[7] = std::vector<float>(n, -0.5f);
+        if (damage == QLatin1String("nan"))
+            data.keys.front().shadingOffsetsByFrame[7][1] = std::numeric_limits<float>::quiet_NaN();
+        saveProject(data, path);
+        if (damage == QLatin1String("count")) {
+            editManifest(path, [&](QJsonObject& m) {
+                QJsonArray keys = m.value("keys").toArray();
+                QJsonObject key = keys.first().toObject();
+                QJsonArray layers = key.value("shading_offsets").toArray();
+                QJsonObject layer = layers.first().toObject();
+                layer.insert("count", double(n - 1));
+                layers.replace(0, layer);
+                key.insert("shading_offsets", layers);
+                keys.replace(0, key);
+                m.insert("keys", keys);
+            });
+        }
+        if (damage.isEmpty()) {
+            QVERIFY(loadProject(path) == data);
+            return;
+        }
+        const ChildOutcome outcome = runInChild([&] { loadProject(path); });
+        QVERIFY2(outcome.kind == ChildOutcome::IoErrorThrown, qPrintable(outcome.describe()));
+        QVERIFY2(outcome.message.contains(QStringLiteral("shading offset")), qPrintable(outcome.message));
+        QVERIFY2(outcome.message.contains(QStringLiteral("layers.celform")), qPrintable(outcome.message));
     }
 };
 

@@ -4,6 +4,7 @@
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/io_error.h"
 #include "celform/model/render_output.h"
+#include "celform/model/shading_layers.h"
 #include "celform/model/view_blend.h"
 
 #include <QCoreApplication>
@@ -48,7 +49,7 @@ const algo::Curvatures& DepthAnalyzer::curvatures(
 
 void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings,
-    FrameAnalysis& out)
+    FrameAnalysis& out, const std::vector<float>* shadingOffsets)
 {
     QElapsedTimer timer;
     timer.start();
@@ -60,7 +61,7 @@ void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const alg
 
     // The centre eye's picture with its G-buffer (thesis 4.5.2: "the camera position when
     // rendering to this G-buffer is in the middle of the two eyes").
-    algo::RenderLook renderLook = renderLookFor(data, look);
+    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets);
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &m_cache, generation);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::renderFrame(shape, mesh, centre, renderLook, m_cache, out.passes, nullptr, &m_gbuffer);
@@ -85,22 +86,32 @@ void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const alg
     out.milliseconds = double(timer.nsecsElapsed()) / 1e6;
 }
 
-FrameAnalysis analyzeProject(
-    const ProjectData& data, const QString& source, const RenderJob& job, const AnalysisSettings& settings)
+AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source, const RenderJob& job)
 {
     if (!data.baseMesh)
         throw IoError(source, QCoreApplication::translate("celform::model::RenderJob", "has no base model"));
-    const Look look = renderJobLook(data, job);
-    const Camera camera = renderJobCamera(data, look, job);
+    AnalysisView view;
+    view.look = renderJobLook(data, job);
+    view.camera = renderJobCamera(data, view.look, job);
     BlendEvaluator blender;
     QString error;
     if (!blender.update(data, &error))
         throw IoError(source, error);
-    algo::Positions shape;
-    blender.shape(data, blender.viewDirection(data, camera.eye), job.firstFrame, shape);
+    view.direction = blender.viewDirection(data, view.camera.eye);
+    view.blend = blender.weights(data, view.direction);
+    blender.shape(data, view.direction, job.firstFrame, view.shape);
+    effectiveShadingOffsets(data, blender, view.direction, job.firstFrame, view.offsets);
+    return view;
+}
+
+FrameAnalysis analyzeProject(
+    const ProjectData& data, const QString& source, const RenderJob& job, const AnalysisSettings& settings)
+{
+    const AnalysisView view = resolveAnalysisView(data, source, job);
     DepthAnalyzer analyzer;
     FrameAnalysis out;
-    analyzer.analyze(data, look, shape, 0, job.firstFrame, camera, job.size.width(), job.size.height(), settings, out);
+    analyzer.analyze(data, view.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(), job.size.height(),
+        settings, out, &view.offsets);
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include "celform/model/camera.h"
 #include "celform/model/project_data.h"
 #include "celform/model/render_job.h"
+#include "celform/model/view_blend.h"
 
 #include <QString>
 #include <QStringList>
@@ -50,13 +51,17 @@ public:
         const algo::TriMesh& mesh, const algo::Positions& shape, std::uint64_t generation);
 
     /// Analyses the picture of shape (#V by 3, the view-dependent blend at the frame) through camera
-    /// at width x height with look (the project's, or one with a render's overrides). Throws
+    /// at width x height with look (the project's, or one with a render's overrides).
+    /// shadingOffsets: the offsets in effect (shading_layers.h; null: the base layer alone). Throws
     /// std::bad_alloc when the buffers do not fit.
     void analyze(const ProjectData& data, const Look& look, const algo::Positions& shape, std::uint64_t generation,
-        int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings, FrameAnalysis& out);
+        int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings, FrameAnalysis& out,
+        const std::vector<float>* shadingOffsets = nullptr);
 
-    /// The last analysis's G-buffer (the centre eye's) and the settings it was analysed with.
+    /// The G-buffer of the last analysis (face ids, barycentric coordinates, depth, position).
     [[nodiscard]] const algo::GBuffer& gbuffer() const { return m_gbuffer; }
+
+    /// The settings the last analysis was made with (light, toon threshold, offsets).
     [[nodiscard]] const algo::DepthAnalysisSettings& lastSettings() const { return m_settings; }
 
 private:
@@ -75,5 +80,17 @@ private:
 /// naming source (no base model, keys that cannot be blended).
 FrameAnalysis analyzeProject(
     const ProjectData& data, const QString& source, const RenderJob& job, const AnalysisSettings& settings);
+
+/// What analyzeProject resolves before analysing: the look, camera, blended shape and the
+/// shading offsets in effect there (shading_layers.h). Throws IoError as analyzeProject does.
+struct AnalysisView {
+    Look look;
+    Camera camera;
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
+    BlendResult blend;
+    algo::Positions shape;
+    std::vector<float> offsets;
+};
+AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source, const RenderJob& job);
 
 } // namespace celform::model

@@ -8,6 +8,7 @@
 #include "celform/model/change_set.h"
 #include "celform/model/highlight_presets.h"
 #include "celform/model/project_data.h"
+#include "celform/model/shading_stroke.h"
 #include "celform/model/view_blend.h"
 
 #include <QObject>
@@ -124,6 +125,30 @@ public:
 
     /// The view-dependent blend of the current keys, up to date.
     BlendEvaluator& blender();
+
+    // --- shading offsets (paper 3, section 4.3): the base layer, or a key's layer at a frame ---
+    /// Replaces a target's values (#V, finite) in one undo step. Throws EditRefused (no base
+    /// model, no such key, wrong count, a value not finite) and changes nothing then.
+    void setShadingOffsets(const ShadingTarget& target, const std::vector<float>& values, const QString& undoText = {});
+    /// Removes a target's layer: the base layer, or the key's layer at target.frame (allFrames:
+    /// at every frame). One undo step; nothing when there is nothing to clear.
+    void clearShadingOffsets(const ShadingTarget& target, bool allFrames = false);
+    /// rounds (1 .. kMaxOffsetRounds) of Laplacian smoothing over the mesh's vertex neighbours of
+    /// a target's values as seen at its frame. One undo step. Throws EditRefused.
+    void smoothShadingOffsets(const ShadingTarget& target, int rounds);
+    /// Automatic per-segment offsets (algo::solveSegmentOffsets) into the target for the view of
+    /// request.camera at the target's frame: the offsets in effect there give each segment of the
+    /// depth analysis the ratio 1 - Q (aggressiveness 1). One undo step. Throws EditRefused (no
+    /// base model or key, settings out of range, a key without weight in that view) and
+    /// changes nothing then.
+    AutoOffsetsResult autoShadingOffsets(const AutoOffsetsRequest& request);
+    /// Starts painting a target on shape (the shape shown, #V by 3) and opens a gesture; all dabs
+    /// of the stroke are one undo step. Throws EditRefused (no base model or key, bad brush).
+    OffsetStroke beginOffsetStroke(const ShadingTarget& target, const OffsetBrush& brush, const algo::Positions& shape);
+    /// One dab centred at a point of the shape (model space), with the falloff (1 - d/r)^2 and,
+    /// with mirrorX, at its mirror image too. Returns the vertices changed (0: none in reach).
+    std::size_t applyOffsetStroke(OffsetStroke& stroke, const Eigen::Vector3d& centre);
+    void endOffsetStroke(OffsetStroke& stroke);
 
     // --- blend settings (paper 1, sections 3.2-3.3 and 4.2) -----------------------------------
     void setSharpness(double alpha);

@@ -52,7 +52,7 @@ enum class Property {
 };
 
 /// QUndoCommand::id() of the commands that may merge (within a gesture).
-enum CommandId { kPropertyMergeId = 1001, kKeyOffsetsMergeId = 1002 };
+enum CommandId { kPropertyMergeId = 1001, kKeyOffsetsMergeId = 1002, kShadingOffsetsMergeId = 1003 };
 
 /// Base of every document command: its redo and undo run inside one Document::Batch, so the
 /// document emits one changed() for the command and all its children.
@@ -264,6 +264,34 @@ private:
     ChangeSet m_note; ///< reused for every notification
     /// absorb()'s working memory: each step index's slot in m_change and in the stored offsets.
     std::vector<std::pair<std::size_t, std::size_t>> m_slots;
+};
+
+/// Changes some values of a layer of shading offsets (the base, or a key's at a frame), storing
+/// before and after values of just those vertices (sparse), and whether the layer existed before
+/// and exists after (a layer made here is stored whole: the command then holds every vertex).
+/// Steps of one gesture on the same target merge: the union of the vertices, the first "before"
+/// and the last "after" of each.
+class ShadingOffsetsCommand : public DocumentCommand {
+public:
+    struct Change {
+        std::vector<std::uint32_t> indices; ///< ascending
+        std::vector<float> before, after;
+        bool existedBefore = false;
+        bool existsAfter = true;
+    };
+    ShadingOffsetsCommand(Document* doc, const QString& text, ShadingTarget target, Change change, int gesture,
+        QUndoCommand* parent = nullptr);
+
+    int id() const override { return m_gesture != 0 ? kShadingOffsetsMergeId : -1; }
+    bool mergeWith(const QUndoCommand* other) override;
+
+protected:
+    void apply(bool forward) override;
+
+private:
+    ShadingTarget m_target;
+    Change m_change;
+    int m_gesture;
 };
 
 } // namespace celform::model

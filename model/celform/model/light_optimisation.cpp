@@ -38,7 +38,8 @@ std::uint64_t privateGeneration()
 
 LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height,
-    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, const algo::LightProgress& progress)
+    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, const algo::LightProgress& progress,
+    const std::vector<float>* shadingOffsets)
 {
     QElapsedTimer timer;
     timer.start();
@@ -53,7 +54,8 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
         generation = privateGeneration();
 
     FrameAnalysis frameAnalysis;
-    analyzer.analyze(data, look, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis);
+    analyzer.analyze(
+        data, look, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis, shadingOffsets);
     const algo::DepthAnalysis& before = frameAnalysis.analysis;
     report.segmentsBefore = before.stats;
     report.segmentsAfter = before.stats;
@@ -96,7 +98,8 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     report.after = lightOf({report.before.type == LightType::Point, accepted.back()});
     Look moved = look;
     moved.light = report.after;
-    analyzer.analyze(data, moved, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis);
+    analyzer.analyze(
+        data, moved, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis, shadingOffsets);
     report.segmentsAfter = frameAnalysis.analysis.stats;
     report.mseAfter = frameAnalysis.analysis.meanSquaredError;
     report.featuresAfter = frameAnalysis.analysis.featurePixels;
@@ -107,18 +110,11 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
 LightOptimisationReport optimiseLightForJob(
     const ProjectData& data, const QString& source, const RenderJob& job, const LightOptimisationRequest& request)
 {
-    if (!data.baseMesh)
-        throw IoError(source, QCoreApplication::translate("celform::model::RenderJob", "has no base model"));
-    const Camera camera = renderJobCamera(data, data.look, job);
-    BlendEvaluator blender;
-    QString error;
-    if (!blender.update(data, &error))
-        throw IoError(source, error);
-    algo::Positions shape;
-    blender.shape(data, blender.viewDirection(data, camera.eye), job.firstFrame, shape);
+    // The project's look: optimize-light takes no look overrides, and the light found is its own.
+    const AnalysisView view = resolveAnalysisView(data, source, job);
     DepthAnalyzer analyzer;
-    return optimiseLight(
-        data, data.look, shape, 0, job.firstFrame, camera, job.size.width(), job.size.height(), request, analyzer);
+    return optimiseLight(data, data.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(),
+        job.size.height(), request, analyzer, {}, &view.offsets);
 }
 
 QString lightMethodName(algo::LightMethod method)

@@ -46,10 +46,12 @@ struct LightOptimisationReport {
 /// no light is better by the ratios, after == before.
 /// progress is called after each iteration and may cancel (then after == before and nothing is
 /// analysed again). Reads data only: safe on a worker thread with a copy of the project. Throws
-/// std::bad_alloc when the buffers do not fit.
+/// std::bad_alloc when the buffers do not fit. shadingOffsets: the offsets in effect for the shape
+/// (shading_layers.h; null: the base layer alone).
 LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height,
-    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, const algo::LightProgress& progress = {});
+    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, const algo::LightProgress& progress = {},
+    const std::vector<float>* shadingOffsets = nullptr);
 
 /// `celform optimize-light`: the job's camera, frame and size resolved as `celform analyze`
 /// resolves them; the project's look (the job's look overrides do not apply: the light found

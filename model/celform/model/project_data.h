@@ -66,12 +66,16 @@ struct KeyViewpoint {
     Camera camera;
     std::vector<ObjectId> drawingIds;
     std::map<int, SparseOffsets> offsetsByFrame; ///< key deformation per frame
+    /// The key's layer of shading offsets (paper 3, eq. 4.3) per keyed frame, dense per vertex:
+    /// added to the base layer with the key's blend weight (shading_layers.h).
+    std::map<int, std::vector<float>> shadingOffsetsByFrame;
     bool enabled = true;
 
     bool operator==(const KeyViewpoint& o) const
     {
         return id == o.id && name == o.name && direction == o.direction && camera == o.camera
-            && drawingIds == o.drawingIds && offsetsByFrame == o.offsetsByFrame && enabled == o.enabled;
+            && drawingIds == o.drawingIds && offsetsByFrame == o.offsetsByFrame
+            && shadingOffsetsByFrame == o.shadingOffsetsByFrame && enabled == o.enabled;
     }
 };
 
@@ -230,7 +234,8 @@ struct ProjectData {
     BlendSettings blend;
     Look look;
     /// Per-vertex shading offsets O_v added to N.L before the toon tones (paper 3, equation 4.3);
-    /// empty means all zero.
+    /// empty means all zero. The base layer: every view and frame; keys add their own layers
+    /// (KeyViewpoint::shadingOffsetsByFrame, combined by shading_layers.h).
     std::vector<float> shadingOffsets;
     ObjectId nextId = 1;
     /// The playhead (DESIGN.md, "The document"): the frame every view shows. Saved with the

@@ -228,8 +228,18 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
         QJsonArray linked;
         for (ObjectId id : k.drawingIds)
             linked.append(double(id));
-        keys.append(QJsonObject{{"id", double(k.id)}, {"name", k.name}, {"direction", vec3(k.direction)},
-            {"camera", cameraJson(k.camera)}, {"drawings", linked}, {"enabled", k.enabled}, {"frames", frames}});
+        QJsonObject key{{"id", double(k.id)}, {"name", k.name}, {"direction", vec3(k.direction)},
+            {"camera", cameraJson(k.camera)}, {"drawings", linked}, {"enabled", k.enabled}, {"frames", frames}};
+        // The key's layer of shading offsets (paper 3, eq. 4.3), dense per vertex per keyed frame.
+        if (!k.shadingOffsetsByFrame.empty()) {
+            QJsonArray shading;
+            for (const auto& [frame, values] : k.shadingOffsetsByFrame)
+                shading.append(QJsonObject{{"frame", frame}, {"count", double(values.size())},
+                    {"values",
+                        chunks.addVector(QStringLiteral("keys/%1/shading_offsets/%2").arg(k.id).arg(frame), values)}});
+            key.insert("shading_offsets", shading);
+        }
+        keys.append(key);
     }
     root.insert("keys", keys);
 

@@ -458,6 +458,24 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
             }
             k.offsetsByFrame.emplace(r.frame(f, "frame"), std::move(offsets));
         }
+        // Optional (absent in files written before key layers of shading offsets).
+        if (o.contains("shading_offsets")) {
+            for (const QJsonValue& sv : r.array(o, "shading_offsets")) {
+                const QJsonObject f = sv.toObject();
+                const qint64 n = r.count(f, "count");
+                if (n != vertexCount)
+                    r.corrupt(
+                        ProjectFile::tr("key “%1” has shading offsets that do not match the vertex count").arg(k.name));
+                std::vector<float> values;
+                r.readVector(f, "values", n, values);
+                for (float value : values)
+                    if (!std::isfinite(value))
+                        r.corrupt(ProjectFile::tr("key “%1” has a shading offset that is not finite").arg(k.name));
+                const int frame = r.frame(f, "frame");
+                if (!k.shadingOffsetsByFrame.emplace(frame, std::move(values)).second)
+                    r.corrupt(ProjectFile::tr("key “%1” has shading offsets twice at frame %2").arg(k.name).arg(frame));
+            }
+        }
         data.keys.push_back(std::move(k));
     }
 

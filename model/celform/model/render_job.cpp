@@ -6,6 +6,7 @@
 #include "celform/model/depth_analysis_output.h"
 #include "celform/model/io_error.h"
 #include "celform/model/render_output.h"
+#include "celform/model/shading_layers.h"
 #include "celform/model/view_blend.h"
 
 #include <QCoreApplication>
@@ -161,6 +162,7 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
     // The shape keeps its generation while frames leave it still, so highlight geometry is reused.
     algo::Shape shape;
     algo::Positions next;
+    std::vector<float> offsets; // in effect at the camera's view and the frame (shading_layers.h)
     int written = 0;
     for (int f = job.firstFrame; f <= job.lastFrame && !cancelled(); ++f) {
         blender.shape(data, direction, f, next);
@@ -168,10 +170,11 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
             shape.positions.swap(next);
             shape.touch();
         }
+        effectiveShadingOffsets(data, blender, direction, f, offsets);
         const QString target = job.framePath(f);
         if (analysisPicture) {
             analyzer.analyze(data, look, shape.positions, shape.generation, f, camera, job.size.width(),
-                job.size.height(), AnalysisSettings{}, analysed);
+                job.size.height(), AnalysisSettings{}, analysed, &offsets);
             if (cancelled())
                 break;
             writeImage(analysisImage(analysed.analysis, *analysisPicture, floatFile), target);
@@ -181,7 +184,7 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
             continue;
         }
         const algo::RenderPasses passes = renderShape(data, look, shape.positions, f, camera, job.size.width(),
-            job.size.height(), job.stereo, cache, shape.generation);
+            job.size.height(), job.stereo, cache, shape.generation, &offsets);
         if (cancelled())
             break;
         if (allPasses)

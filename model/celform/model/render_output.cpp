@@ -77,7 +77,7 @@ void writeChannels(const QString& path, int width, int height, const std::vector
 
 } // namespace
 
-algo::RenderLook renderLookFor(const ProjectData& data, const Look& look)
+algo::RenderLook renderLookFor(const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets)
 {
     algo::RenderLook r;
     auto toAlgo = [](ShadingStyle s) {
@@ -120,7 +120,8 @@ algo::RenderLook renderLookFor(const ProjectData& data, const Look& look)
     r.lines = look.showLines;
     r.lineSettings = look.lines;
     r.lineStyle = look.lineStyle;
-    r.shadingOffsets = data.shadingOffsets.empty() ? nullptr : &data.shadingOffsets;
+    const std::vector<float>& offsets = shadingOffsets ? *shadingOffsets : data.shadingOffsets;
+    r.shadingOffsets = offsets.empty() ? nullptr : &offsets;
     return r;
 }
 
@@ -260,9 +261,9 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
-    std::uint64_t shapeGeneration)
+    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
 {
-    algo::RenderLook renderLook = renderLookFor(data, look);
+    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets);
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::RenderPasses passes;

@@ -15,8 +15,11 @@
 namespace celform::model {
 
 /// The renderer's view of the document's look (styles per material, light, tones, lines).
-/// look may override the document's (a render with --style or --light).
-algo::RenderLook renderLookFor(const ProjectData& data, const Look& look);
+/// look may override the document's (a render with --style or --light). shadingOffsets: the
+/// offsets in effect at the view and frame (shading_layers.h, effectiveShadingOffsets; kept by the
+/// caller, empty for none); null means the base layer alone.
+algo::RenderLook renderLookFor(
+    const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets = nullptr);
 
 /// The look's visible highlight tracks resolved at a frame for the renderer: keys interpolated,
 /// combinations by name replaced by the other tracks' shapes at the same frame, patch face
@@ -38,10 +41,11 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 
 /// Renders a frame of the shape, mono or as a stereo composition (lines from the centre eye,
 /// paper 3, section 4.2.2). For stereo only the beauty pass is composed; the other passes are
-/// the centre eye's. frame selects the highlight keys; shapeGeneration as in renderHighlightsFor.
+/// the centre eye's. frame selects the highlight keys; shapeGeneration as in renderHighlightsFor;
+/// shadingOffsets as in renderLookFor.
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
-    std::uint64_t shapeGeneration = 0);
+    std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr);
 
 /// The pass names of `celform render --pass`.
 QStringList renderPassNames();

@@ -28,6 +28,7 @@ struct DepthAnalysisRunner::Job {
     model::ProjectData data;
     algo::Positions shape;
     std::uint64_t generation = 0;
+    std::vector<float> offsets; ///< in effect for the shape shown (Viewport::displayedShadingOffsets)
     model::Camera camera;
     int frame = 0;
     int width = 0;
@@ -136,10 +137,11 @@ void DepthAnalysisRunner::submit()
         deliver(result);
         return;
     }
-    // The renderer reads the mesh, its face sets, the offsets and the look; keys and drawings stay.
+    // The renderer reads the mesh, its face sets, the offsets in effect and the look; keys and
+    // drawings stay.
     job->data.baseMesh = data.baseMesh;
     job->data.faceSets = data.faceSets;
-    job->data.shadingOffsets = data.shadingOffsets;
+    job->offsets = m_viewport->displayedShadingOffsets();
     job->data.look = data.look;
     job->data.currentFrame = data.currentFrame;
     job->shape = m_viewport->displayedShape();
@@ -198,7 +200,7 @@ void DepthAnalysisRunner::workerLoop()
         result->window = job->settings.window;
         try {
             analyzer.analyze(job->data, job->data.look, job->shape, job->generation, job->frame, job->camera,
-                job->width, job->height, job->settings, frame);
+                job->width, job->height, job->settings, frame, &job->offsets);
             const algo::DepthAnalysis& a = frame.analysis;
             result->segments = toImage(model::analysisImage(a, model::AnalysisPicture::Segments, false));
             result->curvature

@@ -2,9 +2,11 @@
 #include "celform/views/depth_panel.h"
 
 #include "celform/model/depth_analysis_output.h"
+#include "celform/model/document.h"
 #include "celform/views/color_swatch.h"
 #include "celform/views/depth_analysis_runner.h"
 #include "celform/views/scrolling_panel.h"
+#include "celform/views/tools/offset_brush_tool.h"
 #include "celform/views/viewport.h"
 
 #include <QButtonGroup>
@@ -161,6 +163,21 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     m_table->setToolTip(tr("Each segment's share of pixels shaded bright (N·L plus offset above the toon "
                            "threshold); the shading line reads best when it is inside the window"));
     layout->addWidget(m_table, 1);
+
+    // Where the offset brush and the automatic offsets write (paper 3, section 4.3): the base
+    // layer, or a key's layer at the playhead (Edit > Shading Offsets).
+    m_offsetTarget = new QLabel(body);
+    m_offsetTarget->setObjectName(QStringLiteral("offsetTargetLabel"));
+    m_offsetTarget->setWordWrap(true);
+    m_offsetTarget->setToolTip(tr("The layer of shading offsets the offset brush (Shift+O) and Edit > Shading "
+                                  "Offsets > Automatic Shading Offsets write into"));
+    layout->addWidget(m_offsetTarget);
+    auto showTarget = [this, viewport] {
+        m_offsetTarget->setText(tr("Shading offsets go into the %1.").arg(viewport->offsetBrushTool()->targetText()));
+    };
+    connect(viewport, &Viewport::toolChanged, this, showTarget);
+    connect(document, &model::Document::changed, this, showTarget);
+    showTarget();
 
     auto* settingsBox = new QGroupBox(tr("Analysis"), body);
     auto* form = new QFormLayout(settingsBox);

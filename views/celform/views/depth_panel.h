@@ -71,6 +71,7 @@ private:
     QLabel* m_mse;
     QLabel* m_details;
     QLabel* m_status;
+    QLabel* m_offsetTarget; ///< the shading-offset layer edits go into
     QTableWidget* m_table;
     QComboBox* m_method;
     QComboBox* m_weight;

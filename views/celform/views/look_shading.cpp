@@ -510,11 +510,12 @@ void LookShading::setActive(bool active)
 }
 
 void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame,
-    std::uint64_t shapeGeneration)
+    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
 {
     // The renderer's own resolution of the look (styles, colours and Gooch presets per material),
     // so the two paths cannot disagree on what the document means.
-    const algo::RenderLook look = model::renderLookFor(data, data.look);
+    const algo::RenderLook look = model::renderLookFor(data, data.look, shadingOffsets);
+    const std::vector<float>& offsets = shadingOffsets ? *shadingOffsets : data.shadingOffsets;
     const algo::TriMesh* mesh = data.baseMesh.get();
     const Eigen::Index count = shape.rows();
     if (!mesh || !normals || mesh->vertexCount() != count)
@@ -545,12 +546,11 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
     // resolves them.
     const std::vector<algo::RenderHighlight> layers
         = updateHighlights(data, shape, normals, frame, count, shapeGeneration);
-    m->faceTable.update(look, *mesh, shape, data.shadingOffsets, layers);
+    m->faceTable.update(look, *mesh, shape, offsets, layers);
 
     // Per vertex: the shading offset and the PerVertexLut intensity.
-    const auto offsetAt = [&](Eigen::Index v) {
-        return std::size_t(v) < data.shadingOffsets.size() ? data.shadingOffsets[std::size_t(v)] : 0.f;
-    };
+    const auto offsetAt
+        = [&](Eigen::Index v) { return std::size_t(v) < offsets.size() ? offsets[std::size_t(v)] : 0.f; };
     m->offsets->SetNumberOfTuples(count);
     m->lut->SetNumberOfTuples(count);
     float* offset = m->offsets->GetPointer(0);

@@ -60,8 +60,10 @@ public:
     /// (#V by 3, with its vertex normals, row-major #V by 3 floats).
     /// frame selects the highlight tracks' keys (model::renderHighlightsFor at that frame).
     /// shapeGeneration (algo::Shape) lets the highlight geometry be reused while the shape is still.
+    /// shadingOffsets: the offsets in effect for the shape shown (model::effectiveShadingOffsets;
+    /// empty for none); null means the base layer alone.
     void update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame = 0,
-        std::uint64_t shapeGeneration = 0);
+        std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr);
     /// On: the look's shader; off: VTK's own lighting (the viewport's clay look) as configured
     /// before. Rebuilds the shaders only when the state changes.
     void setActive(bool active);

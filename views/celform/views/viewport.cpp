@@ -5,12 +5,14 @@
 #include "celform/views/viewport.h"
 
 #include "celform/model/document.h"
+#include "celform/model/shading_layers.h"
 #include "celform/model/render_output.h"
 #include "celform/views/look_shading.h"
 #include "celform/views/tools/align_tool.h"
 #include "celform/views/tools/brush_tool.h"
 #include "celform/views/tools/highlight_tool.h"
 #include "celform/views/tools/light_tool.h"
+#include "celform/views/tools/offset_brush_tool.h"
 #include "celform/views/tools/patch_tool.h"
 #include "celform/views/axis_gizmo.h"
 #include "celform/views/drawing_outline.h"
@@ -72,6 +74,7 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     m_tools[Tool::Brush] = std::make_unique<BrushTool>(this);
     m_tools[Tool::Patch] = std::make_unique<PatchTool>(this);
     m_tools[Tool::Highlight] = std::make_unique<HighlightTool>(this);
+    m_tools[Tool::OffsetBrush] = std::make_unique<OffsetBrushTool>(this);
     m_lightTool = std::make_unique<LightTool>(this);
 
     if (m_document)
@@ -201,8 +204,9 @@ void Viewport::syncScene()
     }
     // The look's per-vertex data only when the look is drawn (the brush's clay look skips it).
     if (m_lookStale && m_shadingEnabled && !m_scene->selectionShown()) {
-        m_scene->look().update(
-            data, shape.positions, m_shape->normals().data(), m_document->currentFrame(), shape.generation);
+        updateShadingOffsets(direction);
+        m_scene->look().update(data, shape.positions, m_shape->normals().data(), m_document->currentFrame(),
+            shape.generation, &m_shadingOffsets);
         m_lookStale = false;
     }
     if (m_patchStale) {
@@ -219,6 +223,33 @@ const algo::Positions& Viewport::displayedShape()
 {
     syncScene();
     return m_shape->positions();
+}
+
+void Viewport::updateShadingOffsets(const Eigen::Vector3d& direction)
+{
+    // The layers that belong to the shape shown: a key's shape carries its own layer whole, the
+    // blend the key layers with the blend's weights (paper 3, eq. 4.3 per layer).
+    const model::ProjectData& data = m_document->data();
+    const int frame = m_document->currentFrame();
+    switch (m_shape->source()) {
+    case DisplayedShape::Source::Base:
+        model::effectiveShadingOffsets(data, {}, frame, m_shadingOffsets);
+        break;
+    case DisplayedShape::Source::Key:
+        model::effectiveShadingOffsets(data, {{m_shape->key(), 1.0}}, frame, m_shadingOffsets);
+        break;
+    case DisplayedShape::Source::Blend:
+        model::effectiveShadingOffsets(data, m_document->blender(), direction, frame, m_shadingOffsets);
+        break;
+    }
+}
+
+const std::vector<float>& Viewport::displayedShadingOffsets()
+{
+    syncScene();
+    if (m_document && m_document->hasMesh())
+        updateShadingOffsets(m_observed ? m_observed->viewDirection() : viewDirection());
+    return m_shadingOffsets;
 }
 
 std::uint64_t Viewport::displayedShapeGeneration()
@@ -549,6 +580,11 @@ void Viewport::setBrushPixelRadius(double pixels)
         return;
     m_brushPixelRadius = std::clamp(pixels, 1.0, 4096.0);
     emit brushPixelRadiusChanged(m_brushPixelRadius);
+}
+
+OffsetBrushTool* Viewport::offsetBrushTool() const
+{
+    return static_cast<OffsetBrushTool*>(m_tools.at(Tool::OffsetBrush).get());
 }
 
 BrushTool* Viewport::brushTool() const

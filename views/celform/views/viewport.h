@@ -35,6 +35,7 @@ namespace celform::views {
 class AlignTool;
 class AxisGizmo;
 class BrushTool;
+class OffsetBrushTool;
 class DisplayedShape;
 class ViewportCamera;
 class ViewportCompositor;
@@ -124,12 +125,18 @@ public:
     /// Observer mode: shows the blend for another viewport's camera from this one's (paper 1,
     /// figure 6, bottom row). Null ends it.
     void setObserved(Viewport* driver);
+    /// The shading-offset brush (its mode, strength and target live in the tool).
+    [[nodiscard]] OffsetBrushTool* offsetBrushTool() const;
     /// The view direction of this camera, from the base centroid towards the eye (DESIGN.md).
     [[nodiscard]] Eigen::Vector3d viewDirection() const;
     /// The vertex positions on screen (#V by 3): base, key or blend, brought up to date first.
     [[nodiscard]] const algo::Positions& displayedShape();
     /// The generation of the shape displayedShape() returns (algo::Shape): caches compare it.
     [[nodiscard]] std::uint64_t displayedShapeGeneration();
+    /// The shading offsets in effect for the shape shown (model::effectiveShadingOffsets: the base
+    /// layer, plus the key's layer for a key's shape, plus the blended key layers for the blend);
+    /// empty for none. Brought up to date first.
+    [[nodiscard]] const std::vector<float>& displayedShadingOffsets();
 
     /// A reference drawing fixed in the viewport (0: none), its height filling the view, so a
     /// camera aligned here matches the drawing (paper 1, section 3.1.1).
@@ -149,6 +156,7 @@ public:
         Brush, ///< left drag deforms the displayed key at the playhead (paper 1, section 3.1.2)
         Highlight, ///< left drag moves, rotates or scales the highlight target (one undo step)
         Patch, ///< left drag paints faces into the patch target (Ctrl+drag removes them)
+        OffsetBrush, ///< left drag paints shading offsets into the tool's target (paper 3, 4.3)
     };
     enum class BrushMode { Move, Smooth, Relax };
     void setTool(Tool tool);
@@ -285,6 +293,8 @@ private:
     void endDrag(bool cancelled);
     [[nodiscard]] ViewportTool* activeTool() const;
     [[nodiscard]] AlignTool* alignTool() const;
+    /// Recomputes m_shadingOffsets for the displayed shape's source at the playhead.
+    void updateShadingOffsets(const Eigen::Vector3d& direction);
     /// The document's look, or the default one without a document.
     [[nodiscard]] const model::Look& currentLook() const;
 
@@ -293,6 +303,7 @@ private:
     std::unique_ptr<ViewportCamera> m_camera;
     std::unique_ptr<ViewportCompositor> m_compositor;
     std::unique_ptr<DisplayedShape> m_shape;
+    std::vector<float> m_shadingOffsets; ///< in effect for m_shape (displayedShadingOffsets)
     std::map<Tool, std::unique_ptr<ViewportTool>> m_tools;
     std::unique_ptr<ViewportTool> m_lightTool; ///< Ctrl+drag on the gizmo, whatever the tool
     AxisGizmo* m_axisGizmo = nullptr; ///< child widget, top right

@@ -8,7 +8,6 @@
 #include "celform/views/viewport_keys.h"
 
 #include <QCoreApplication>
-#include <QTimer>
 
 #include <cmath>
 
@@ -27,121 +26,42 @@ constexpr double kSmoothStrength = 0.25;
 
 BrushTool::BrushTool(Viewport* viewport)
     : ViewportTool(viewport)
-    , m_circle(new BrushCursor(viewport))
-    , m_hoverTimer(new QTimer(viewport))
-{
-    m_hoverTimer->setSingleShot(true);
-    m_hoverTimer->setInterval(16);
-    QObject::connect(m_hoverTimer, &QTimer::timeout, viewport, [this] { updateCircle(); });
-}
+    , m_hover(viewport, [viewport] { return viewport->brushProfile().falloff; })
+{ }
 
 BrushTool::~BrushTool() = default; // the circle and the timer belong to the viewport
 
-double BrushTool::radiusPixels(double unitsPerPixel) const
-{
-    if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-        return m_viewport->brushPixelRadius();
-    return unitsPerPixel > 0.0 ? m_viewport->brushRadius() / unitsPerPixel : 0.0;
-}
-
-void BrushTool::updateCircle()
-{
-    if (m_resizing)
-        return;
-    const auto hit = m_viewport->pickSurface(m_hoverPos);
-    if (!hit) {
-        m_hoverUnitsPerPixel = 0.0;
-        m_circle->hide();
-        return;
-    }
-    m_hoverUnitsPerPixel = m_viewport->worldUnitsPerPixel(hit->second);
-    m_circle->showCircle(m_hoverPos, radiusPixels(m_hoverUnitsPerPixel), m_viewport->brushProfile().falloff);
-}
-
 void BrushTool::hover(const QPointF& position)
 {
-    m_hoverPos = position;
-    if (m_resizing) {
-        // The radius is the cursor's distance from the circle's centre.
-        const QPointF d = position - m_resizeCentre;
-        const double pixels = std::max(std::sqrt(QPointF::dotProduct(d, d)), 2.0);
-        if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-            m_viewport->setBrushPixelRadius(pixels);
-        else if (m_hoverUnitsPerPixel > 0.0)
-            m_viewport->setBrushRadius(pixels * m_hoverUnitsPerPixel);
-        m_circle->showCircle(m_resizeCentre, pixels, m_viewport->brushProfile().falloff, true);
-        return;
-    }
-    if (!m_hoverTimer->isActive())
-        m_hoverTimer->start();
+    m_hover.hover(position);
 }
 
 void BrushTool::leave()
 {
-    m_hoverTimer->stop();
-    if (!m_resizing && !m_stroke.active())
-        m_circle->hide();
+    m_hover.leave(m_stroke.active());
 }
 
 void BrushTool::cameraChanged()
 {
-    // The surface under the cursor moved: its scale (world units per pixel) changed.
-    if (m_circle->isVisible() && !m_resizing && !m_stroke.active())
-        hover(m_hoverPos);
+    m_hover.cameraChanged(m_stroke.active());
 }
 
 bool BrushTool::wantsKey(int key, Qt::KeyboardModifiers modifiers) const
 {
-    if (modifiers & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
-        return false;
-    if (key == viewportKey(ViewportKeyCommand::BrushResize)) // F, listed in Help > Keyboard Shortcuts
-        return !m_stroke.active();
-    return m_resizing && (key == Qt::Key_Escape || key == Qt::Key_Return || key == Qt::Key_Enter);
+    return m_hover.wantsKey(key, modifiers, m_stroke.active());
 }
 
 bool BrushTool::keyPress(int key, Qt::KeyboardModifiers modifiers)
 {
-    if (!wantsKey(key, modifiers))
-        return false;
-    if (key == viewportKey(ViewportKeyCommand::BrushResize) && !m_resizing) {
-        if (m_hoverUnitsPerPixel <= 0.0 && m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::World) {
-            emit m_viewport->message(Brush::tr("Hold the cursor over the model to resize the brush there."));
-            return true;
-        }
-        m_resizing = true;
-        m_radiusBeforeResize = m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels
-            ? m_viewport->brushPixelRadius()
-            : m_viewport->brushRadius();
-        // The circle stays where it is; moving the cursor away from its centre sizes it.
-        const double pixels = radiusPixels(m_hoverUnitsPerPixel);
-        m_resizeCentre = m_hoverPos - QPointF(pixels, 0.0);
-        m_circle->showCircle(m_resizeCentre, pixels, m_viewport->brushProfile().falloff, true);
-        emit m_viewport->message(
-            Brush::tr("Move the mouse to resize the brush; click or Enter to keep, Esc to cancel."));
-        return true;
-    }
-    endResize(key != Qt::Key_Escape);
-    return true;
-}
-
-void BrushTool::endResize(bool keep)
-{
-    if (!m_resizing)
-        return;
-    m_resizing = false;
-    if (!keep) {
-        if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-            m_viewport->setBrushPixelRadius(m_radiusBeforeResize);
-        else
-            m_viewport->setBrushRadius(m_radiusBeforeResize);
-    }
-    updateCircle();
+    return m_hover.keyPress(key, modifiers, m_stroke.active(),
+        Brush::tr("Hold the cursor over the model to resize the brush there."),
+        Brush::tr("Move the mouse to resize the brush; click or Enter to keep, Esc to cancel."));
 }
 
 bool BrushTool::press(const ToolEvent& event)
 {
-    if (m_resizing) {
-        endResize(true); // Blender: a click keeps the new size
+    if (m_hover.isResizing()) {
+        m_hover.endResize(true); // Blender: a click keeps the new size
         return false;
     }
     model::Document* document = m_viewport->document();
@@ -170,8 +90,7 @@ bool BrushTool::press(const ToolEvent& event)
     }
     m_unitsPerPixel = unitsPerPixel;
     m_viewport->showBrushSelection(&m_stroke.selection, &m_stroke.mirrorSelection);
-    m_hoverTimer->stop();
-    m_circle->showCircle(event.position, radius / std::max(unitsPerPixel, 1e-12), m_viewport->brushProfile().falloff);
+    m_hover.showAt(event.position, radius / std::max(unitsPerPixel, 1e-12));
     return true;
 }
 
@@ -197,7 +116,7 @@ void BrushTool::move(const ToolEvent& event)
         step = {model::BrushMotion::Drag, d.x() * m_unitsPerPixel, -d.y() * m_unitsPerPixel};
     document->applyBrushStroke(m_stroke, step);
     // The circle follows the cursor with the stroke's radius.
-    m_circle->showCircle(event.position, m_circle->radiusPixels(), m_viewport->brushProfile().falloff);
+    m_hover.showAt(event.position, m_hover.circle()->radiusPixels());
 }
 
 void BrushTool::finish()
@@ -212,8 +131,8 @@ void BrushTool::release(const ToolEvent& event)
     // The selection is shown during the stroke only: afterwards (and after an undo) the model
     // shows its look again.
     m_viewport->showBrushSelection(nullptr, nullptr);
-    m_hoverPos = event.position;
-    updateCircle();
+    m_hover.hover(event.position);
+    m_hover.updateCircle();
 }
 
 void BrushTool::cancel()
@@ -224,9 +143,7 @@ void BrushTool::cancel()
 
 void BrushTool::deactivate()
 {
-    m_resizing = false;
-    m_hoverTimer->stop();
-    m_circle->hide();
+    m_hover.stop();
     finish();
     m_stroke = {};
     m_viewport->showBrushSelection(nullptr, nullptr);

@@ -1,0 +1,244 @@
+// Layers of shading offsets in the document (paper 3, section 4.3): effective offsets = base +
+// blended key layers (exactly a key's layer at its own view), each operation one undo step that
+// undo and redo restore exactly, refusals that change nothing, the file round trip, old files,
+// and automatic offsets through the document.
+#include "test_meshes.h"
+#include "test_support.h"
+
+#include "celform/model/depth_analysis.h"
+#include "celform/model/document.h"
+#include "celform/model/io_error.h"
+#include "celform/model/project_file.h"
+#include "celform/model/shading_layers.h"
+
+#include <QTemporaryDir>
+
+#include <cmath>
+#include <limits>
+
+using namespace celform;
+using namespace celform::model;
+
+namespace {
+
+Camera cameraAt(const Eigen::Vector3d& eye)
+{
+    Camera c;
+    c.eye = eye;
+    c.target = Eigen::Vector3d::Zero();
+    c.up = std::abs(eye.normalized().y()) > 0.99 ? Eigen::Vector3d(0, 0, -1) : Eigen::Vector3d(0, 1, 0);
+    return c;
+}
+
+std::vector<float> ramp(std::size_t n, float scale)
+{
+    std::vector<float> v(n);
+    for (std::size_t i = 0; i < n; ++i)
+        v[i] = scale * std::sin(0.37f * float(i));
+    return v;
+}
+
+} // namespace
+
+class TestShadingLayers : public QObject {
+    Q_OBJECT
+
+private:
+    Document m_doc;
+    std::size_t m_n = 0;
+
+private slots:
+    void init()
+    {
+        ProjectData data;
+        data.baseMesh = test::icosphere(3);
+        data.baseMeshName = QStringLiteral("sphere");
+        m_n = std::size_t(data.baseMesh->vertexCount());
+        m_doc.reset(std::move(data));
+    }
+
+    void effectiveIsBasePlusBlendedKeys()
+    {
+        const ObjectId front = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId side = m_doc.createKey(QStringLiteral("side"), cameraAt({5, 0, 0}));
+        const std::vector<float> base = ramp(m_n, 0.1f), a = ramp(m_n, -0.3f), b = ramp(m_n, 0.2f);
+        m_doc.setShadingOffsets({0, 0}, base);
+        m_doc.setShadingOffsets({front, 0}, a);
+        m_doc.setShadingOffsets({side, 0}, b);
+        BlendEvaluator& blender = m_doc.blender();
+        std::vector<float> out;
+        // At a key's exact view: base + that key's layer.
+        effectiveShadingOffsets(m_doc.data(), blender, Eigen::Vector3d(0, 0, 1), 0, out);
+        QCOMPARE(out.size(), m_n);
+        for (std::size_t v = 0; v < m_n; ++v)
+            QVERIFY(std::abs(out[v] - (base[v] + a[v])) < 1e-6f);
+        // Between the keys: base + the blend's weights times the layers.
+        const Eigen::Vector3d between = Eigen::Vector3d(1, 0, 1).normalized();
+        const BlendResult w = blender.weights(m_doc.data(), between);
+        double wa = 0, wb = 0;
+        for (const KeyShare& s : w.shares)
+            (s.key == front ? wa : wb) += s.key == front || s.key == side ? s.weight : 0.0;
+        QVERIFY(wa > 0.1 && wb > 0.1);
+        effectiveShadingOffsets(m_doc.data(), blender, between, 0, out);
+        for (std::size_t v = 0; v < m_n; ++v)
+            QVERIFY(std::abs(out[v] - float(base[v] + wa * a[v] + wb * b[v])) < 1e-5f);
+        // Over time: a key layer keyed at 0 and 10 is halfway at 5 (two knots: linear).
+        m_doc.setShadingOffsets({front, 10}, std::vector<float>(m_n, 1.f));
+        effectiveShadingOffsets(m_doc.data(), blender, Eigen::Vector3d(0, 0, 1), 5, out);
+        for (std::size_t v = 0; v < m_n; ++v)
+            QVERIFY(std::abs(out[v] - (base[v] + 0.5f * (a[v] + 1.f))) < 1e-5f);
+    }
+
+    void renderAndAnalysisSeeTheKeyLayer()
+    {
+        // celform render / analyze at a key's own view: the picture of base + the key's layer is
+        // the picture of a project whose base layer holds that sum.
+        const ObjectId front = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const std::vector<float> a = ramp(m_n, 0.4f);
+        m_doc.setShadingOffsets({front, 0}, a);
+        RenderJob job;
+        job.view = Eigen::Vector3d(0, 0, 1);
+        job.size = QSize(96, 96);
+        const FrameAnalysis withKey = analyzeProject(m_doc.data(), QStringLiteral("k"), job, AnalysisSettings{});
+        ProjectData flat = m_doc.data();
+        flat.keys.front().shadingOffsetsByFrame.clear();
+        flat.shadingOffsets = a;
+        const FrameAnalysis withBase = analyzeProject(flat, QStringLiteral("b"), job, AnalysisSettings{});
+        QVERIFY(withKey.analysis.lambert == withBase.analysis.lambert);
+        QVERIFY(withKey.passes.beauty.pixels == withBase.passes.beauty.pixels);
+        // Without the layer the picture differs.
+        flat.shadingOffsets.clear();
+        const FrameAnalysis none = analyzeProject(flat, QStringLiteral("n"), job, AnalysisSettings{});
+        QVERIFY(none.analysis.lambert != withKey.analysis.lambert);
+    }
+
+    void everyOperationUndoesExactly()
+    {
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ProjectData start = m_doc.data();
+        const int steps = m_doc.undoStack()->count();
+        auto check = [&](const char* what) {
+            const ProjectData after = m_doc.data();
+            QVERIFY2(!(after == start), what);
+            QCOMPARE(m_doc.undoStack()->count(), steps + 1);
+            m_doc.undoStack()->undo();
+            QVERIFY2(m_doc.data() == start, what);
+            m_doc.undoStack()->redo();
+            QVERIFY2(m_doc.data() == after, what);
+            m_doc.undoStack()->undo();
+            QVERIFY(m_doc.data() == start);
+        };
+        m_doc.setShadingOffsets({0, 0}, ramp(m_n, 0.2f));
+        check("set base");
+        m_doc.setShadingOffsets({key, 3}, ramp(m_n, 0.2f));
+        check("set key");
+        // Smooth and clear on a layer that exists (set first, so count one more step).
+        m_doc.setShadingOffsets({0, 0}, ramp(m_n, 0.2f));
+        const ProjectData withBase = m_doc.data();
+        m_doc.smoothShadingOffsets({0, 0}, 3);
+        QCOMPARE(m_doc.undoStack()->count(), steps + 2);
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data() == withBase);
+        m_doc.clearShadingOffsets({0, 0});
+        QVERIFY(m_doc.data().shadingOffsets.empty());
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data() == withBase);
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data() == start);
+
+        // A paint stroke of many dabs is one step.
+        OffsetBrush brush;
+        brush.radius = 0.5;
+        brush.strength = 0.1;
+        brush.mirrorX = true;
+        OffsetStroke stroke = m_doc.beginOffsetStroke({key, 0}, brush, m_doc.data().baseMesh->vertices);
+        std::size_t touched = 0;
+        for (int i = 0; i < 5; ++i)
+            touched += m_doc.applyOffsetStroke(stroke, Eigen::Vector3d(0.2 * i, 0.0, 1.0).normalized());
+        m_doc.endOffsetStroke(stroke);
+        QVERIFY(touched > 0);
+        const auto& layer = m_doc.data().key(key)->shadingOffsetsByFrame.at(0);
+        // Mirror: a vertex near (x, 0, z) and its twin near (-x, 0, z) both got paint.
+        QVERIFY(*std::max_element(layer.begin(), layer.end()) > 0.05f);
+        check("paint stroke");
+    }
+
+    void refusalsChangeNothing()
+    {
+        const ProjectData start = m_doc.data();
+        std::vector<float> bad = ramp(m_n, 0.1f);
+        bad[2] = std::numeric_limits<float>::quiet_NaN();
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setShadingOffsets({0, 0}, bad));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setShadingOffsets({0, 0}, ramp(m_n + 1, 0.1f)));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setShadingOffsets({999, 0}, ramp(m_n, 0.1f)));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.smoothShadingOffsets({0, 0}, 0));
+        AutoOffsetsRequest request;
+        request.camera = cameraAt({0, 0, 5});
+        request.aggressiveness = 2.f;
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.autoShadingOffsets(request));
+        request.aggressiveness = 1.f;
+        request.percentile = -0.5f;
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.autoShadingOffsets(request));
+        QVERIFY(m_doc.data() == start);
+        QCOMPARE(m_doc.undoStack()->count(), 0);
+    }
+
+    void fileRoundTripAndOldFiles()
+    {
+        QTemporaryDir dir;
+        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        // Files written before key layers (the bundled samples) load unchanged, without layers.
+        const ProjectData sample
+            = loadProject(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-highlights.celform"));
+        QVERIFY(sample.shadingOffsets.empty());
+        for (const KeyViewpoint& k : sample.keys)
+            QVERIFY(k.shadingOffsetsByFrame.empty());
+        // A file without layers written now: it loads with none.
+        const QString old = dir.filePath(QStringLiteral("old.celform"));
+        m_doc.saveAs(old);
+        const ProjectData oldData = loadProject(old);
+        QVERIFY(oldData.shadingOffsets.empty());
+        QVERIFY(oldData.keys.front().shadingOffsetsByFrame.empty());
+
+        m_doc.setShadingOffsets({0, 0}, ramp(m_n, 0.1f));
+        m_doc.setShadingOffsets({key, 0}, ramp(m_n, 0.3f));
+        m_doc.setShadingOffsets({key, 12}, ramp(m_n, -0.2f));
+        const QString path = dir.filePath(QStringLiteral("layers.celform"));
+        m_doc.saveAs(path);
+        const ProjectData loaded = loadProject(path);
+        QVERIFY(loaded == m_doc.data());
+        QCOMPARE(loaded.keys.front().shadingOffsetsByFrame.size(), std::size_t(2));
+    }
+
+    void automaticOffsetsThroughTheDocument()
+    {
+        // A lit sphere seen from the side of the light: one segment, its ratio goes to 1 - Q.
+        ProjectData data;
+        data.baseMesh = test::icosphere(4);
+        data.look.light.vector = Eigen::Vector3d(1.0, 0.2, 0.3);
+        m_doc.reset(std::move(data));
+        AutoOffsetsRequest request;
+        request.camera = cameraAt({0, 0, 5});
+        request.width = 160;
+        request.height = 160;
+        request.percentile = 0.5f;
+        const AutoOffsetsResult result = m_doc.autoShadingOffsets(request);
+        QVERIFY(!result.after.empty());
+        QCOMPARE(m_doc.undoStack()->count(), 1);
+        for (std::size_t s = 0; s < result.after.size(); ++s) {
+            if (!result.report.covered[s])
+                continue;
+            QVERIFY2(std::abs(result.after[s].ratio - 0.5f) <= 1.f / float(result.after[s].pixels) + 1e-6f,
+                qPrintable(QStringLiteral("segment %1: %2 -> %3")
+                               .arg(s)
+                               .arg(double(result.before[s].ratio))
+                               .arg(double(result.after[s].ratio))));
+        }
+        QCOMPARE(m_doc.data().shadingOffsets.size(), std::size_t(m_doc.data().baseMesh->vertexCount()));
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data().shadingOffsets.empty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestShadingLayers)
+#include "test_shading_layers.moc"

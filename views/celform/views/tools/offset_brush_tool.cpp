@@ -1,0 +1,163 @@
+// Mouse motion to shading-offset dabs; the document does the painting (Document::applyOffsetStroke).
+#include "celform/views/tools/offset_brush_tool.h"
+
+#include "celform/model/document.h"
+#include "celform/model/io_error.h"
+#include "celform/views/tools/brush_cursor.h"
+#include "celform/views/viewport.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace celform::views {
+namespace {
+
+struct OffsetBrush {
+    Q_DECLARE_TR_FUNCTIONS(celform::views::OffsetBrushTool)
+};
+
+} // namespace
+
+OffsetBrushTool::OffsetBrushTool(Viewport* viewport)
+    : ViewportTool(viewport)
+    , m_hover(viewport, [] { return algo::BrushFalloff::Paper; }) // (1 - d/r)^2, as the dabs
+{ }
+
+OffsetBrushTool::~OffsetBrushTool() = default; // the circle and the timer belong to the viewport
+
+void OffsetBrushTool::setStrength(double strength)
+{
+    if (std::isfinite(strength) && strength >= 0.0)
+        m_strength = strength;
+}
+
+model::ShadingTarget OffsetBrushTool::target() const
+{
+    const model::Document* document = m_viewport->document();
+    const int frame = document ? document->currentFrame() : 0;
+    if (m_targetKey != 0 && document && document->data().key(m_targetKey))
+        return {m_targetKey, frame};
+    return {0, frame};
+}
+
+QString OffsetBrushTool::targetText() const
+{
+    const model::ShadingTarget t = target();
+    if (t.isBase())
+        return OffsetBrush::tr("base layer (every view and frame)");
+    const model::KeyViewpoint* key = m_viewport->document()->data().key(t.key);
+    return OffsetBrush::tr("key “%1” at frame %2").arg(key ? key->name : QString()).arg(t.frame);
+}
+
+void OffsetBrushTool::activate()
+{
+    emit m_viewport->message(OffsetBrush::tr("Paint shading offsets into the %1: drag adds, Ctrl+drag subtracts, "
+                                             "Shift+drag smooths; F resizes the brush.")
+                                 .arg(targetText()));
+}
+
+void OffsetBrushTool::hover(const QPointF& position)
+{
+    m_hover.hover(position);
+}
+
+void OffsetBrushTool::leave()
+{
+    m_hover.leave(m_stroke.active());
+}
+
+void OffsetBrushTool::cameraChanged()
+{
+    m_hover.cameraChanged(m_stroke.active());
+}
+
+bool OffsetBrushTool::wantsKey(int key, Qt::KeyboardModifiers modifiers) const
+{
+    return m_hover.wantsKey(key, modifiers, m_stroke.active());
+}
+
+bool OffsetBrushTool::keyPress(int key, Qt::KeyboardModifiers modifiers)
+{
+    return m_hover.keyPress(key, modifiers, m_stroke.active(),
+        OffsetBrush::tr("Hold the cursor over the model to resize the brush there."),
+        OffsetBrush::tr("Move the mouse to resize the brush; click or Enter to keep, Esc to cancel."));
+}
+
+bool OffsetBrushTool::press(const ToolEvent& event)
+{
+    if (m_hover.isResizing()) {
+        m_hover.endResize(true); // a click keeps the new size
+        return false;
+    }
+    model::Document* document = m_viewport->document();
+    if (!document || !document->hasMesh())
+        return false;
+    const auto hit = m_viewport->pickSurface(event.position);
+    if (!hit)
+        return true; // a drag that starts off the model paints nothing
+    const double unitsPerPixel = m_viewport->worldUnitsPerPixel(hit->second);
+    model::OffsetBrush brush;
+    brush.radius = m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels
+        ? m_viewport->brushPixelRadius() * unitsPerPixel
+        : m_viewport->brushRadius();
+    brush.strength = m_strength;
+    brush.mirrorX = m_mirrorX;
+    brush.mode = m_mode;
+    if (event.modifiers & Qt::ShiftModifier)
+        brush.mode = model::OffsetPaintMode::Smooth;
+    else if (event.modifiers & Qt::ControlModifier)
+        brush.mode = model::OffsetPaintMode::Subtract;
+    try {
+        m_stroke = document->beginOffsetStroke(target(), brush, m_viewport->displayedShape());
+    } catch (const model::EditRefused& e) {
+        emit m_viewport->message(e.message());
+        return true;
+    }
+    m_hover.showAt(event.position, brush.radius / std::max(unitsPerPixel, 1e-12));
+    document->applyOffsetStroke(m_stroke, hit->second);
+    return true;
+}
+
+void OffsetBrushTool::dab(const QPointF& position)
+{
+    model::Document* document = m_viewport->document();
+    if (!document || !m_stroke.active())
+        return;
+    if (const auto hit = m_viewport->pickSurface(position))
+        document->applyOffsetStroke(m_stroke, hit->second);
+    m_hover.showAt(position, m_hover.circle()->radiusPixels());
+}
+
+void OffsetBrushTool::move(const ToolEvent& event)
+{
+    dab(event.position);
+}
+
+void OffsetBrushTool::finish()
+{
+    if (model::Document* document = m_viewport->document())
+        document->endOffsetStroke(m_stroke);
+    m_stroke = {};
+}
+
+void OffsetBrushTool::release(const ToolEvent& event)
+{
+    finish();
+    m_hover.hover(event.position);
+    m_hover.updateCircle();
+}
+
+void OffsetBrushTool::cancel()
+{
+    finish();
+}
+
+void OffsetBrushTool::deactivate()
+{
+    m_hover.stop();
+    finish();
+}
+
+} // namespace celform::views
