@@ -64,7 +64,10 @@ inline Vec3 towardsViewer(const LineView& view, const Vec3& p)
 /// component of the view vector, by cos(theta) = n.v, so P^-1 = I + (sec(theta) - 1) w w^T.
 /// q1 is the largest singular value of Q; t1 the screen step that reaches it, carried back onto
 /// the surface (T1 = P^-1 t1, normalised) so that the derivative is taken along the surface.
-void viewDependentCurvature(float k1, float k2, float u, float v, float ndotv, float& q1, Vec2& surfaceDir)
+/// Returns q1; with kDirection also sets surfaceDir (pass 1 needs q1 everywhere, the direction
+/// only where the derivative is taken, a minority of the vertices).
+template <bool kDirection>
+float viewDependentCurvature(float k1, float k2, float u, float v, float ndotv, Vec2* surfaceDir)
 {
     // Only products of w's components appear (aa = a^2, ab, bb with w = (a, b) = (u, v) / |(u, v)|),
     // so w itself is never normalised: one square root fewer per vertex.
@@ -83,7 +86,9 @@ void viewDependentCurvature(float k1, float k2, float u, float v, float ndotv, f
     const float m11 = q11 * q11 + q21 * q21, m12 = q11 * q12 + q21 * q22, m22 = q12 * q12 + q22 * q22;
     const float half = 0.5f * (m11 - m22);
     const float lambda = 0.5f * (m11 + m22) + std::sqrt(m12 * m12 + half * half);
-    q1 = std::sqrt(std::max(lambda, 0.f));
+    const float q1 = std::sqrt(std::max(lambda, 0.f));
+    if (!kDirection)
+        return q1;
     const Vec2 e1(m12, lambda - m11), e2(lambda - m22, m12);
     Vec2 t = e1.squaredNorm() >= e2.squaredNorm() ? e1 : e2;
     if (!(t.squaredNorm() > 1e-30f))
@@ -91,7 +96,8 @@ void viewDependentCurvature(float k1, float k2, float u, float v, float ndotv, f
     // T1 = P^-1 t1 = t1 + s (w.t1) w, normalised once at the end (P^-1 is linear).
     const Vec2 surface(t.x() + s * (aa * t.x() + ab * t.y()), t.y() + s * (ab * t.x() + bb * t.y()));
     const float len2 = surface.squaredNorm();
-    surfaceDir = len2 > 0.f ? Vec2(surface * (1.f / std::sqrt(len2))) : Vec2(1.f, 0.f);
+    *surfaceDir = len2 > 0.f ? Vec2(surface * (1.f / std::sqrt(len2))) : Vec2(1.f, 0.f);
+    return q1;
 }
 
 /// A point's noise key from the edge it lies on. Not mixed: the line style hashes keys itself.
@@ -148,6 +154,9 @@ void emitSegment(const Positions& shape, const Record* rec, std::int32_t a, std:
     out.keys.push_back(p.key);
     out.keys.push_back(q.key);
 }
+
+/// Per-vertex flags of pass 1: n.v > 0, q1 above the threshold.
+constexpr std::uint8_t kFacing = 1, kAbove = 2;
 
 /// Whether a face can hold a ridge: not turned away at all three corners (paper 3, section 4.2
 /// and JDA07: faces just past the contour still take part, the ridges near contours run over
@@ -241,26 +250,30 @@ void computeApparentRidges(const Positions& shape, const Faces& faces, const Ver
     float* q1 = workspace.q1.data();
     Vec3* t1 = workspace.t1.data();
 
-    // Pass 1, per vertex: q1, the surface direction T1 (JDA07, section 3), n.v and the excess of
-    // q1 over the threshold.
+    // Pass 1, per vertex: q1 (JDA07, section 3), n.v and the excess of q1 over the threshold.
     const float baseThreshold = options.threshold / options.featureSize;
     Record* rec = workspace.records.data();
+    // Face blocks of passes 1b and 3; marks holds one array per block and, last, the flags.
+    const int blocks = blockCount(nf, options.threads);
+    if (workspace.marks.size() < std::size_t(blocks) + 1)
+        workspace.marks.resize(std::size_t(blocks) + 1);
+    std::vector<std::uint8_t>& flagArray = workspace.marks[std::size_t(blocks)];
+    flagArray.resize(nv);
+    std::uint8_t* flags = flagArray.data();
     parallelBlocks(nv, options.threads, [&](std::size_t begin, std::size_t end, int) {
         for (std::size_t i = begin; i < end; ++i) {
             const auto v = std::int32_t(i);
             const Vec3 p = row(shape, v), n = row(normals, v);
-            const Vec3 d1 = row(curvatures.dir1, v), d2 = row(curvatures.dir2, v);
             const Vec3 toViewer = towardsViewer(view, p);
-            Vec2 dir;
             const float ndotv = toViewer.dot(n);
-            viewDependentCurvature(
-                curvatures.k1[i], curvatures.k2[i], toViewer.dot(d1), toViewer.dot(d2), ndotv, q1[i], dir);
-            t1[i] = dir.x() * d1 + dir.y() * d2;
+            q1[i] = viewDependentCurvature<false>(curvatures.k1[i], curvatures.k2[i],
+                toViewer.dot(row(curvatures.dir1, v)), toViewer.dot(row(curvatures.dir2, v)), ndotv, nullptr);
             Record& r = rec[i];
             r.gx = r.gy = r.gz = 0.f;
             r.slope = 0.f;
             r.excess = q1[i] - baseThreshold * (scale ? (*scale)[i] : 1.f);
             r.ndotv = ndotv;
+            flags[i] = std::uint8_t((ndotv > 0.f ? kFacing : 0) | (r.excess > 0.f ? kAbove : 0));
         }
     });
 
@@ -268,11 +281,8 @@ void computeApparentRidges(const Positions& shape, const Faces& faces, const Ver
     // the threshold somewhere). Only those need the derivative, the costly part: on the dragon
     // seen whole at the default threshold, a small fraction of the vertices. One mark array per
     // block, so the blocks never write the same bytes.
-    const int blocks = blockCount(nf, options.threads);
     if (workspace.perThread.size() < std::size_t(blocks))
         workspace.perThread.resize(std::size_t(blocks));
-    if (workspace.marks.size() < std::size_t(blocks))
-        workspace.marks.resize(std::size_t(blocks));
     if (workspace.candidates.size() < std::size_t(blocks))
         workspace.candidates.resize(std::size_t(blocks));
     parallelBlocks(nf, options.threads, [&](std::size_t begin, std::size_t end, int block) {
@@ -283,15 +293,16 @@ void computeApparentRidges(const Positions& shape, const Faces& faces, const Ver
         const std::int32_t* tri = faces.data();
         for (std::size_t f = begin; f < end; ++f) {
             const std::int32_t v0 = tri[3 * f], v1 = tri[3 * f + 1], v2 = tri[3 * f + 2];
-            if (candidate(rec[v0], rec[v1], rec[v2])) {
+            // The same test as candidate() on one byte per corner instead of a record.
+            if ((flags[v0] | flags[v1] | flags[v2]) == (kFacing | kAbove)) {
                 mark[std::size_t(v0)] = mark[std::size_t(v1)] = mark[std::size_t(v2)] = 1;
                 list.push_back(std::int32_t(f));
             }
         }
     });
 
-    // Pass 2, per vertex: Dt1q1 by finite differences over the one-ring (JDA07, section 4): the
-    // line through the vertex along T1 leaves it through one face forwards and one backwards; q1
+    // Pass 2, per marked vertex: T1, then Dt1q1 by finite differences over the one-ring (JDA07,
+    // section 4): the line through the vertex along T1 leaves it through one face forwards and one backwards; q1
     // is interpolated where it crosses the far edge, and the difference is divided by the
     // screen-plane length of the step. dcurv is not used: q1 depends on the view through P as
     // well as on S, and the differences capture both, the change of the projection included.
@@ -302,13 +313,19 @@ void computeApparentRidges(const Positions& shape, const Faces& faces, const Ver
                 needed = needed || workspace.marks[std::size_t(b)][i] != 0;
             if (!needed) {
                 workspace.dt1q1[i] = 0.f;
+                t1[i].setZero();
                 continue;
             }
             const auto v = std::int32_t(i);
             const Vec3 p = row(shape, v), n = row(normals, v);
-            const Vec3 t = t1[i];
-            const Vec3 side = n.cross(t);
+            const Vec3 d1 = row(curvatures.dir1, v), d2 = row(curvatures.dir2, v);
             const Vec3 toViewer = towardsViewer(view, p);
+            Vec2 dir;
+            viewDependentCurvature<true>(
+                curvatures.k1[i], curvatures.k2[i], toViewer.dot(d1), toViewer.dot(d2), toViewer.dot(n), &dir);
+            const Vec3 t = dir.x() * d1 + dir.y() * d2;
+            t1[i] = t;
+            const Vec3 side = n.cross(t);
             float forward = 0.f, backward = 0.f;
             bool haveForward = false, haveBackward = false;
             for (std::int32_t k = around.start[i]; k < around.start[i + 1] && !(haveForward && haveBackward); ++k) {

@@ -64,11 +64,11 @@ struct ApparentRidgeWorkspace {
     };
     std::vector<VertexRecord> records;
     std::vector<float> q1;
-    std::vector<Eigen::Vector3f> t1; ///< unit surface direction of maximum view-dependent curvature
+    std::vector<Eigen::Vector3f> t1; ///< unit surface direction of q1 where dt1q1 is taken, else 0
     /// Derivative of q1 along t1 per unit of screen-plane distance; computed only at the corners
     /// of faces that can hold a ridge (see computeApparentRidges), 0 elsewhere.
     std::vector<float> dt1q1;
-    std::vector<std::vector<std::uint8_t>> marks; ///< per face block: vertices that need dt1q1
+    std::vector<std::vector<std::uint8_t>> marks; ///< per face block: vertices needing dt1q1; last: flags
     std::vector<std::vector<std::int32_t>> candidates; ///< per face block: faces that may hold a ridge
     std::vector<RidgeSegments> perThread;
 };
