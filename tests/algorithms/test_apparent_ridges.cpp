@@ -229,6 +229,38 @@ private slots:
         QCOMPARE(counts.back(), std::size_t(0));
     }
 
+    // Paper 3, section 4.4: a per-vertex factor on the threshold. Lowered on one half of the
+    // cylinder, lines appear there and only there; a factor of 1 everywhere changes nothing.
+    void perVertexThresholdScale()
+    {
+        const TriMesh m = cappedCylinder(1.f, 2.f, 96, 24);
+        const RasterCamera camera = orthoCamera({0, -8.66, 6}, {0, 0, 1}, 5.0, 400);
+        RidgeShapeData data;
+        computeRidgeShapeData(m.vertices, m.faces, data);
+        auto run = [&](const std::vector<float>* scale) {
+            ApparentRidgeOptions options;
+            options.threshold = 1e9f; // far above every q1 * featureSize of this mesh
+            options.featureSize = data.featureSize;
+            options.thresholdScale = scale;
+            ApparentRidgeWorkspace ws;
+            RidgeSegments out;
+            computeApparentRidges(
+                m.vertices, m.faces, m.vertexFaces(), data.curvatures, lineView(camera), options, ws, out);
+            return out;
+        };
+        QVERIFY(run(nullptr).points.empty());
+        const std::vector<float> ones(std::size_t(m.vertexCount()), 1.f);
+        QVERIFY(run(&ones).points.empty());
+        std::vector<float> leftLow(std::size_t(m.vertexCount()), 1.f);
+        for (Eigen::Index v = 0; v < m.vertexCount(); ++v)
+            if (m.vertices(v, 0) < -0.2f)
+                leftLow[std::size_t(v)] = 0.f;
+        const RidgeSegments left = run(&leftLow);
+        QVERIFY(left.points.size() > 20);
+        for (const Eigen::Vector3f& p : left.points)
+            QVERIFY2(p.x() < 0.f, qPrintable(QString::number(p.x())));
+    }
+
     // The result does not depend on the number of threads.
     void deterministicAcrossThreads()
     {
