@@ -110,7 +110,7 @@ LineView lineView(const RasterCamera& c)
 
 /// Segments of mesh seen from camera with the given threshold (and the workspace after the call).
 RidgeSegments ridges(const TriMesh& mesh, const RasterCamera& camera, float threshold,
-    ApparentRidgeWorkspace* keep = nullptr, int threads = 2)
+    ApparentRidgeWorkspace* keep = nullptr, int threads = 2, const std::vector<float>* thresholdScale = nullptr)
 {
     RidgeShapeData data;
     computeRidgeShapeData(mesh.vertices, mesh.faces, data);
@@ -118,6 +118,7 @@ RidgeSegments ridges(const TriMesh& mesh, const RasterCamera& camera, float thre
     options.threshold = threshold;
     options.featureSize = data.featureSize;
     options.threads = threads;
+    options.thresholdScale = thresholdScale;
     ApparentRidgeWorkspace ws;
     RidgeSegments out;
     computeApparentRidges(
@@ -235,19 +236,8 @@ private slots:
     {
         const TriMesh m = cappedCylinder(1.f, 2.f, 96, 24);
         const RasterCamera camera = orthoCamera({0, -8.66, 6}, {0, 0, 1}, 5.0, 400);
-        RidgeShapeData data;
-        computeRidgeShapeData(m.vertices, m.faces, data);
-        auto run = [&](const std::vector<float>* scale) {
-            ApparentRidgeOptions options;
-            options.threshold = 1e9f; // far above every q1 * featureSize of this mesh
-            options.featureSize = data.featureSize;
-            options.thresholdScale = scale;
-            ApparentRidgeWorkspace ws;
-            RidgeSegments out;
-            computeApparentRidges(
-                m.vertices, m.faces, m.vertexFaces(), data.curvatures, lineView(camera), options, ws, out);
-            return out;
-        };
+        // A threshold far above every q1 * featureSize of this mesh.
+        auto run = [&](const std::vector<float>* scale) { return ridges(m, camera, 1e9f, nullptr, 2, scale); };
         QVERIFY(run(nullptr).points.empty());
         const std::vector<float> ones(std::size_t(m.vertexCount()), 1.f);
         QVERIFY(run(&ones).points.empty());
