@@ -293,7 +293,10 @@ std::vector<SubCommand> analysisCommands()
         {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to analyse (default 0).")},
         {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Picture size (default 1280x720).")},
         {"style", "STYLE", QT_TRANSLATE_NOOP("celform::app::Cli", "Shading style of the analysed picture.")},
-        {"lines", "on|off", QT_TRANSLATE_NOOP("celform::app::Cli", "Lines in the analysed picture (on) or not (off).")},
+        {"lines", "on|off|KIND,...",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Lines in the analysed picture (on) or not (off), or only these kinds: silhouette, crease, "
+                "border, material, ridge, comma-separated.")},
         {"light", "TYPE:X,Y,Z", QT_TRANSLATE_NOOP("celform::app::Cli", "Key light for this analysis.")},
         {"window", "LO,HI",
             QT_TRANSLATE_NOOP("celform::app::Cli",
@@ -334,7 +337,7 @@ std::vector<SubCommand> analysisCommands()
     return {
         {"analyze",
             {"celform analyze P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] [--size WxH] "
-             "[--style toon|gooch|comic|lambert] [--lines on|off] [--light point:X,Y,Z|directional:X,Y,Z] "
+             "[--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] [--light point:X,Y,Z|directional:X,Y,Z] "
              "[--window LO,HI|lenient|medium|strict] [--depth-threshold FRACTION] [--min-pixels N] [--json] "
              "[--out FILE.exr]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",

@@ -106,6 +106,13 @@ int runRender(const Invocation& in)
         throw UsageError{Cli::tr("give either --frame or --frames")};
     model::RenderJob job;
     readPictureOptions(in, job);
+    if (in.isSet("ridge-threshold")) {
+        const double t = parseFloat("ridge-threshold", in.value("ridge-threshold"));
+        if (t < 0)
+            throw UsageError{
+                Cli::tr("--ridge-threshold takes a number >= 0, not “%1”").arg(in.value("ridge-threshold"))};
+        job.ridgeThreshold = float(t);
+    }
     if (in.isSet("frames"))
         std::tie(job.firstFrame, job.lastFrame) = parseFrameRange("frames", in.value("frames"));
     job.stereo = in.isSet("stereo") ? parseStereo(in.value("stereo")) : algo::StereoOutput::Off;
@@ -140,7 +147,14 @@ std::vector<SubCommand> lookCommands()
             {"frames", "A-B", QT_TRANSLATE_NOOP("celform::app::Cli", "Frames to render, A-B inclusive.")},
             {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Image size (default 1280x720).")},
             {"style", "STYLE", QT_TRANSLATE_NOOP("celform::app::Cli", "Shading style for this render.")},
-            {"lines", "on|off", QT_TRANSLATE_NOOP("celform::app::Cli", "Draw the lines (on) or not (off).")},
+            {"lines", "on|off|KIND,...",
+                QT_TRANSLATE_NOOP("celform::app::Cli",
+                    "Draw the lines (on) or not (off), or only these kinds: silhouette, crease, border, material, "
+                    "ridge (apparent ridges), comma-separated.")},
+            {"ridge-threshold", "T",
+                QT_TRANSLATE_NOOP("celform::app::Cli",
+                    "Apparent-ridge threshold for this render: view-dependent curvature times the median edge "
+                    "length (default: the project's, 0.3 in new projects; lower draws more).")},
             {"light", "TYPE:X,Y,Z", QT_TRANSLATE_NOOP("celform::app::Cli", "Key light for this render.")},
             {"stereo", "MODE", QT_TRANSLATE_NOOP("celform::app::Cli", "Stereo output.")},
             {"pass", "NAME", QT_TRANSLATE_NOOP("celform::app::Cli", "Write one render pass.")},
@@ -167,7 +181,7 @@ std::vector<SubCommand> lookCommands()
             runSet},
         {"render",
             {"celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
-             "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off] "
+             "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] [--ridge-threshold T] "
              "[--light point:X,Y,Z|directional:X,Y,Z] [--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
              "[--pass beauty|lines|tone|highlights|depth|normal|id|segments|curvature|depth-error] [--out "
              "FILE.png|.exr|.tif|.jpg]"},

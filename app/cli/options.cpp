@@ -3,10 +3,14 @@
 // raised here rather than a file written that cannot be opened.
 #include "cli/options.h"
 
+#include "celform/algorithms/lines.h"
+
 #include <QFile>
 #include <QRegularExpression>
 
 #include <algorithm>
+#include <iterator>
+#include <utility>
 #include <cmath>
 #include <limits>
 
@@ -166,6 +170,25 @@ bool parseOnOff(const char* option, const QString& text)
     return text == QLatin1String("on");
 }
 
+std::uint8_t parseLineKinds(const char* option, const QString& text)
+{
+    static const std::pair<const char*, std::uint8_t> kinds[]
+        = {{"silhouette", algo::kSilhouette}, {"crease", algo::kCrease}, {"border", algo::kBorder},
+            {"material", algo::kMaterialBoundary}, {"ridge", algo::kRidge}};
+    std::uint8_t bits = 0;
+    const QStringList words = text.split(QLatin1Char(','));
+    for (const QString& word : words) {
+        const auto hit = std::find_if(std::begin(kinds), std::end(kinds),
+            [&](const auto& k) { return word.trimmed() == QLatin1String(k.first); });
+        if (hit == std::end(kinds))
+            throw UsageError{Cli::tr("%1 takes on, off or a comma-separated list of silhouette, crease, border, "
+                                     "material and ridge, not “%2”")
+                                 .arg(dashed(option), text)};
+        bits |= hit->second;
+    }
+    return bits;
+}
+
 Vector3 parsePoint(const char* option, const QString& text)
 {
     return parseNumbers(option, text, 3);
@@ -298,7 +321,14 @@ void readPictureOptions(const Invocation& in, model::RenderJob& job)
 {
     readCameraOptions(in, job);
     job.style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
-    job.lines = optionalValue(in, "lines", [](const QString& v) { return parseOnOff("lines", v); });
+    // --lines: on, off, or the kinds to draw (silhouette,crease,border,material,ridge).
+    if (in.isSet("lines")) {
+        const QString v = in.value("lines");
+        if (v == QLatin1String("on") || v == QLatin1String("off"))
+            job.lines = parseOnOff("lines", v);
+        else
+            job.lineKinds = parseLineKinds("lines", v);
+    }
     job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
 }
 

@@ -46,6 +46,9 @@ QSize parseSize(const char* option, const QString& text);
 /// read rather than ending in "out of memory" or the kernel's OOM killer.
 void checkRenderMemory(const char* option, const QString& text, qint64 bytes);
 bool parseOnOff(const char* option, const QString& text);
+/// A comma-separated list of line kinds (silhouette, crease, border, material, ridge) as
+/// algo::LineKind bits; at least one, no repeats needed.
+std::uint8_t parseLineKinds(const char* option, const QString& text);
 
 /// A position: three finite numbers.
 Eigen::Vector3d parsePoint(const char* option, const QString& text);

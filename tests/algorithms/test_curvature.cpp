@@ -29,26 +29,10 @@ TriMesh icosphere(int levels, float radius)
     return m;
 }
 
-/// Torus around z: ((R + r cos v) cos u, (R + r cos v) sin u, r sin v), nu by nv quads, outward normals.
+/// Torus around z (test_meshes.h): outward normals.
 TriMesh torus(float R, float r, int nu, int nv)
 {
-    TriMesh m;
-    m.vertices.resize(nu * nv, 3);
-    for (int j = 0; j < nv; ++j)
-        for (int i = 0; i < nu; ++i) {
-            const double u = 2 * pi * i / nu, v = 2 * pi * j / nv;
-            m.vertices.row(j * nu + i) << float((R + r * std::cos(v)) * std::cos(u)),
-                float((R + r * std::cos(v)) * std::sin(u)), float(r * std::sin(v));
-        }
-    m.faces.resize(2 * nu * nv, 3);
-    for (int j = 0; j < nv; ++j)
-        for (int i = 0; i < nu; ++i) {
-            const int a = j * nu + i, b = j * nu + (i + 1) % nu, c = ((j + 1) % nv) * nu + (i + 1) % nu,
-                      d = ((j + 1) % nv) * nu + i;
-            m.faces.row(2 * a) << a, b, c;
-            m.faces.row(2 * a + 1) << a, c, d;
-        }
-    return m;
+    return celform::test::torus(R, r, nu, nv);
 }
 
 /// n by n grid over [-1, 1]^2 with z = height(x, y), faces counter-clockwise seen from +z.

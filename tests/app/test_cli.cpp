@@ -651,6 +651,47 @@ private slots:
         QCOMPARE(fa.readAll(), fb.readAll());
     }
 
+    void renderLineKinds()
+    {
+        // --lines takes a list of kinds; ridges (apparent ridges) add lines inside the silhouette,
+        // a threshold above every view-dependent curvature removes them again.
+        const QString project = bunnyProject();
+        if (project.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        auto linePixels = [&](const QStringList& extra, const char* name) {
+            const QString png = m_dir.filePath(QLatin1String(name));
+            const Run r = runCelform(
+                QStringList{"render", project, "--size", "320x240", "--pass", "lines", "--out", png} + extra);
+            [&] { QVERIFY2(r.exitCode == 0, qPrintable(r.err)); }();
+            const QImage image(png);
+            int count = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    count += qGray(image.pixel(x, y)) > 128;
+            return count;
+        };
+        const int silhouette = linePixels({"--lines", "silhouette"}, "kinds_silhouette.png");
+        const int withRidges = linePixels({"--lines", "silhouette,ridge"}, "kinds_ridges.png");
+        const int highThreshold
+            = linePixels({"--lines", "silhouette,ridge", "--ridge-threshold", "1000"}, "kinds_high.png");
+        const int ridgesOnly = linePixels({"--lines", "ridge", "--ridge-threshold", "0.2"}, "kinds_only.png");
+        QVERIFY(silhouette > 100);
+        QVERIFY2(withRidges > silhouette + 50, qPrintable(QStringLiteral("%1 %2").arg(silhouette).arg(withRidges)));
+        QCOMPARE(highThreshold, silhouette);
+        QVERIFY(ridgesOnly > 50);
+        for (const QStringList& bad :
+            {QStringList{"--lines", "bogus"}, QStringList{"--lines", "silhouette,bogus"}, QStringList{"--lines", ""},
+                QStringList{"--ridge-threshold", "-1"}, QStringList{"--ridge-threshold", "x"}}) {
+            const Run r = runCelform(
+                QStringList{"render", project, "--size", "32x32", "--out", m_dir.filePath(QStringLiteral("bad.png"))}
+                + bad);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY(!r.err.isEmpty());
+        }
+        const Run bogus = runCelform({"render", project, "--lines", "bogus"});
+        QVERIFY2(bogus.err.contains(QStringLiteral("ridge")), qPrintable(bogus.err));
+    }
+
     void highlightLayers()
     {
         const QString bunny = bunnyProject();

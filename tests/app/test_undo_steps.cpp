@@ -13,6 +13,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -125,6 +126,45 @@ private slots:
         undo();
         QCOMPARE(doc->data().look.style, model::ShadingStyle::Toon);
         QCOMPARE(stack->index(), start);
+    }
+
+    void ridgeControlsAreOneStepEach()
+    {
+        // The Look panel's apparent-ridge controls: the checkbox is one step, a held key on the
+        // threshold is one step, and undo restores what the file had.
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window));
+        model::Document* doc = window.document();
+        QUndoStack* stack = doc->undoStack();
+        const int start = stack->count();
+        window.findChild<QDockWidget*>(QStringLiteral("lookDock"))->raise();
+        auto* look = window.findChild<views::LookPanel*>();
+        QVERIFY(look);
+        QCheckBox* ridges = nullptr;
+        for (auto* check : look->findChildren<QCheckBox*>())
+            if (check->text() == QStringLiteral("Apparent ridges"))
+                ridges = check;
+        QVERIFY(ridges);
+        QVERIFY(!ridges->isChecked());
+        QDoubleSpinBox* threshold = nullptr;
+        for (auto* spin : look->findChildren<QDoubleSpinBox*>())
+            if (spin->toolTip().startsWith(QStringLiteral("Apparent ridges are drawn")))
+                threshold = spin;
+        QVERIFY(threshold);
+        QVERIFY(!threshold->isEnabled()); // until ridges are on
+        const algo::LineSettings before = doc->data().look.lines;
+        ridges->click();
+        QVERIFY(doc->data().look.lines.ridges);
+        QVERIFY(threshold->isEnabled());
+        celform::test::holdKey(threshold, Qt::Key_Up, 3);
+        QVERIFY(doc->data().look.lines.ridgeThreshold > before.ridgeThreshold + 0.1f);
+        QCOMPARE(stack->count() - start, 2);
+        stack->undo();
+        QVERIFY(doc->data().look.lines.ridges);
+        QCOMPARE(doc->data().look.lines.ridgeThreshold, before.ridgeThreshold);
+        stack->undo();
+        QVERIFY(doc->data().look.lines == before);
+        QVERIFY(!ridges->isChecked());
     }
 };
 

@@ -108,6 +108,8 @@ ProjectData richProject()
     data.look.hatch.spacing = 0.0123f;
     data.look.hatch.angleDegrees = -30.f;
     data.look.lines.creaseAngleDegrees = 33.f;
+    data.look.lines.ridges = true;
+    data.look.lines.ridgeThreshold = 0.45f;
     data.look.lines.borders = false;
     data.look.lineStyle.jitter = 1.25f;
     data.look.lineStyle.seed = 77;
@@ -326,6 +328,37 @@ private slots:
         data = richProject();
         data.look.highlights.back().combineWith = {{algo::HighlightBoolean::Union, QStringLiteral("ghost")}};
         saveProject(data, path);
+        QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
+    }
+
+    void ridgeSettingsAreStoredAndOptional()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("ridges.celform"));
+        saveProject(richProject(), path);
+        QVERIFY(loadProject(path).look.lines.ridges);
+        QCOMPARE(loadProject(path).look.lines.ridgeThreshold, 0.45f);
+        // Files from before apparent ridges open with ridges off and the default threshold.
+        editManifest(path, [](QJsonObject& m) {
+            QJsonObject look = m.value(QStringLiteral("look")).toObject();
+            QJsonObject kinds = look.value(QStringLiteral("line_kinds")).toObject();
+            kinds.remove(QStringLiteral("ridges"));
+            kinds.remove(QStringLiteral("ridge_threshold"));
+            look.insert(QStringLiteral("line_kinds"), kinds);
+            m.insert(QStringLiteral("look"), look);
+        });
+        const ProjectData old = loadProject(path);
+        QVERIFY(!old.look.lines.ridges);
+        QCOMPARE(old.look.lines.ridgeThreshold, algo::LineSettings().ridgeThreshold);
+        QCOMPARE(old.look.lines.creaseAngleDegrees, 33.f);
+        // A negative threshold is damage.
+        editManifest(path, [](QJsonObject& m) {
+            QJsonObject look = m.value(QStringLiteral("look")).toObject();
+            QJsonObject kinds = look.value(QStringLiteral("line_kinds")).toObject();
+            kinds.insert(QStringLiteral("ridge_threshold"), -1);
+            look.insert(QStringLiteral("line_kinds"), kinds);
+            m.insert(QStringLiteral("look"), look);
+        });
         QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
     }
 

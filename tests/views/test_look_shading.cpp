@@ -743,6 +743,66 @@ private slots:
         m_doc->setCurrentFrame(0);
     }
 
+    // Apparent ridges (paper 3, section 4.2) in the viewport: the same snakes as the offline
+    // renderer, through the same camera. A torus seen obliquely has ridges along its inner and
+    // outer contours; the line pixels of the two pictures lie within a pixel of each other.
+    void ridgesInTheViewportMatchTheRenderer()
+    {
+        auto torus = std::make_shared<TriMesh>(celform::test::torus(1.f, 0.4f, 120, 48));
+        Camera camera = sphereCamera();
+        camera.eye = Eigen::Vector3d(0.0, -3.2, 4.5);
+        useMesh(torus, camera);
+        Look look = baseLook();
+        look.showLines = true;
+        look.lines.silhouettes = look.lines.creases = look.lines.borders = look.lines.materialBoundaries = false;
+        look.lines.ridges = true;
+        look.lines.ridgeThreshold = 0.1f;
+        setLook(look);
+        const QImage gpu = frame();
+        const QImage cpu = cpuImage();
+        gpu.save(QStringLiteral("/tmp/look_ridges_viewport.png"));
+        cpu.save(QStringLiteral("/tmp/look_ridges_cpu.png"));
+        // Line pixels: darker than every toon tone of the default colour.
+        auto lineMask = [](const QImage& image) {
+            std::vector<char> mask(std::size_t(kSize * kSize));
+            for (int y = 0; y < kSize; ++y)
+                for (int x = 0; x < kSize; ++x)
+                    mask[std::size_t(y * kSize + x)] = qGray(image.pixel(x, y)) < 80;
+            return mask;
+        };
+        const std::vector<char> a = lineMask(gpu), b = lineMask(cpu);
+        // The share of one mask's pixels with a pixel of the other within one pixel.
+        auto covered = [](const std::vector<char>& from, const std::vector<char>& to) {
+            int n = 0, hit = 0;
+            for (int y = 1; y < kSize - 1; ++y)
+                for (int x = 1; x < kSize - 1; ++x) {
+                    if (!from[std::size_t(y * kSize + x)])
+                        continue;
+                    ++n;
+                    bool near = false;
+                    for (int dy = -1; dy <= 1 && !near; ++dy)
+                        for (int dx = -1; dx <= 1 && !near; ++dx)
+                            near = to[std::size_t((y + dy) * kSize + x + dx)] != 0;
+                    hit += near;
+                }
+            return std::make_pair(n, n > 0 ? double(hit) / n : 0.0);
+        };
+        const auto [cpuLines, cpuInGpu] = covered(b, a);
+        const auto [gpuLines, gpuInCpu] = covered(a, b);
+        QVERIFY2(cpuLines > 200, qPrintable(QString::number(cpuLines)));
+        QVERIFY2(cpuInGpu > 0.95 && gpuInCpu > 0.95,
+            qPrintable(QStringLiteral("line pixels %1 / %2, matched %3 / %4")
+                           .arg(cpuLines)
+                           .arg(gpuLines)
+                           .arg(cpuInGpu)
+                           .arg(gpuInCpu)));
+        // Off again: the lines go (what stays dark is the axis gizmo in the corner).
+        look.lines.ridges = false;
+        setLook(look);
+        const int left = covered(lineMask(frame()), a).first;
+        QVERIFY2(left < gpuLines / 10, qPrintable(QStringLiteral("%1 of %2").arg(left).arg(gpuLines)));
+    }
+
     void lightGizmoDragMovesTheLight()
     {
         // A light in front, so its handle is on screen.

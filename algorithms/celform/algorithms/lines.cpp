@@ -67,8 +67,10 @@ constexpr float kOvershootTaper = 0.6f;
 /// Styles one run of projected vertices (depth > 0 everywhere). A closed run is emitted with its
 /// first point repeated at the end so the polyline closes; only open runs overshoot.
 void styleRun(const std::vector<std::int32_t>& ids, bool closed, std::uint8_t kinds,
-    const std::vector<Eigen::Vector3f>& projected, const LineStyle& style, std::vector<StyledStroke>& out)
+    const std::vector<Eigen::Vector3f>& projected, const LineStyle& style, const std::vector<std::uint32_t>* noiseKeys,
+    std::vector<StyledStroke>& out)
 {
+    auto noiseId = [&](std::size_t i) { return noiseKeys ? std::int32_t((*noiseKeys)[std::size_t(ids[i])]) : ids[i]; };
     const std::size_t m = ids.size();
     if (m < 2)
         return;
@@ -91,7 +93,7 @@ void styleRun(const std::vector<std::int32_t>& ids, bool closed, std::uint8_t ki
         // [1 2 1] kernel along the stroke so adjacent points do not alternate thick/thin.
         std::vector<float> noise(m);
         for (std::size_t i = 0; i < m; ++i)
-            noise[i] = vertexNoise(ids[i], style.seed, kWidthSalt);
+            noise[i] = vertexNoise(noiseId(i), style.seed, kWidthSalt);
         for (std::size_t i = 0; i < m; ++i) {
             const std::size_t a = prevIndex(i), b = nextIndex(i);
             float sum = 2.0f * noise[i], weight = 2.0f;
@@ -117,7 +119,7 @@ void styleRun(const std::vector<std::int32_t>& ids, bool closed, std::uint8_t ki
             const float len = t.norm();
             t = len > 0.0f ? Eigen::Vector2f(t / len) : Eigen::Vector2f(1.0f, 0.0f);
             const Eigen::Vector2f normal(-t.y(), t.x());
-            jittered[i] = s.points[i] + style.jitter * vertexNoise(ids[i], style.seed, kJitterSalt) * normal;
+            jittered[i] = s.points[i] + style.jitter * vertexNoise(noiseId(i), style.seed, kJitterSalt) * normal;
         }
         s.points.swap(jittered);
     }
@@ -390,9 +392,10 @@ std::vector<Stroke> chainStrokes(const EdgeTopology& topology, const FeatureEdge
     return strokes;
 }
 
-std::vector<StyledStroke> styleProjectedStrokes(
-    const std::vector<Stroke>& strokes, const std::vector<Eigen::Vector3f>& projected, const LineStyle& style)
+std::vector<StyledStroke> styleProjectedStrokes(const std::vector<Stroke>& strokes,
+    const std::vector<Eigen::Vector3f>& projected, const LineStyle& style, const std::vector<std::uint32_t>* noiseKeys)
 {
+    assert(!noiseKeys || noiseKeys->size() == projected.size());
     std::vector<StyledStroke> out;
     out.reserve(strokes.size());
     std::vector<std::int32_t> run;
@@ -410,7 +413,7 @@ std::vector<StyledStroke> styleProjectedStrokes(
             if (!visible(i))
                 firstHidden = i;
         if (firstHidden == m) {
-            styleRun(stroke.vertices, stroke.closed, stroke.kinds, projected, style, out);
+            styleRun(stroke.vertices, stroke.closed, stroke.kinds, projected, style, noiseKeys, out);
             continue;
         }
         // Points behind the camera split the stroke into open runs. A closed stroke is walked
@@ -423,11 +426,11 @@ std::vector<StyledStroke> styleProjectedStrokes(
             if (visible(i)) {
                 run.push_back(stroke.vertices[i]);
             } else {
-                styleRun(run, false, stroke.kinds, projected, style, out);
+                styleRun(run, false, stroke.kinds, projected, style, noiseKeys, out);
                 run.clear();
             }
         }
-        styleRun(run, false, stroke.kinds, projected, style, out);
+        styleRun(run, false, stroke.kinds, projected, style, noiseKeys, out);
     }
     return out;
 }

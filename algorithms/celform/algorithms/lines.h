@@ -16,6 +16,7 @@ enum LineKind : std::uint8_t {
     kCrease = 2, ///< dihedral angle above the threshold
     kBorder = 4, ///< open edge
     kMaterialBoundary = 8, ///< between two materials
+    kRidge = 16, ///< apparent ridge (paper 3, section 4.2; apparent_ridges.h), drawn as an inner line
 };
 
 struct LineSettings {
@@ -24,10 +25,16 @@ struct LineSettings {
     bool borders = true;
     bool materialBoundaries = true;
     float creaseAngleDegrees = 45.0f; ///< angle between the two face normals
+    /// Apparent ridges (paper 3, section 4.2), off by default: they cost a curvature pass per shape.
+    bool ridges = false;
+    /// Scale-free ridge threshold: view-dependent curvature times the median edge length
+    /// (ApparentRidgeOptions::threshold).
+    float ridgeThreshold = 0.3f;
     bool operator==(const LineSettings& o) const
     {
         return silhouettes == o.silhouettes && creases == o.creases && borders == o.borders
-            && materialBoundaries == o.materialBoundaries && creaseAngleDegrees == o.creaseAngleDegrees;
+            && materialBoundaries == o.materialBoundaries && creaseAngleDegrees == o.creaseAngleDegrees
+            && ridges == o.ridges && ridgeThreshold == o.ridgeThreshold;
     }
 };
 
@@ -98,8 +105,11 @@ std::vector<StyledStroke> styleStrokes(
     const std::vector<Stroke>& strokes, const Positions& shape, const LineStyle& style, Project project);
 
 /// Non-template core of styleStrokes: strokes already projected (xyz = pixel x, pixel y, depth).
-std::vector<StyledStroke> styleProjectedStrokes(
-    const std::vector<Stroke>& strokes, const std::vector<Eigen::Vector3f>& projected, const LineStyle& style);
+/// noiseKeys, when given (one per projected point), anchors the hand-drawn noise of each point
+/// instead of its index (ridge points lie on edges and are renumbered every frame).
+std::vector<StyledStroke> styleProjectedStrokes(const std::vector<Stroke>& strokes,
+    const std::vector<Eigen::Vector3f>& projected, const LineStyle& style,
+    const std::vector<std::uint32_t>* noiseKeys = nullptr);
 
 template <typename Project>
 std::vector<StyledStroke> styleStrokes(

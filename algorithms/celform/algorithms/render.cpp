@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <iterator>
 #include <limits>
 #include <utility>
 
@@ -112,7 +114,39 @@ HighlightSample highlightAt(const RenderLook& look, const GBuffer& g, const Face
     return sample;
 }
 
+bool sameCamera(const RasterCamera& a, const RasterCamera& b)
+{
+    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.orthographic == b.orthographic
+        && a.fovYDegrees == b.fovYDegrees && a.orthoHeight == b.orthoHeight && a.width == b.width
+        && a.height == b.height && a.horizontalShift == b.horizontalShift;
+}
+
+template <typename Matrix> bool sameArray(const Matrix& a, const Matrix& b)
+{
+    return a.rows() == b.rows()
+        && (a.size() == 0 || std::memcmp(a.data(), b.data(), sizeof(*a.data()) * std::size_t(a.size())) == 0);
+}
+
 } // namespace
+
+const RidgeSnakes& cachedRidgeSnakes(const Positions& shape, const TriMesh& mesh, const RasterCamera& lineCamera,
+    float threshold, RidgeRenderCache& cache)
+{
+    if (!sameArray(shape, cache.shape) || !sameArray(mesh.faces, cache.faces) || cache.data.featureSize <= 0.f) {
+        computeRidgeShapeData(shape, mesh.faces, cache.data);
+        cache.shape = shape;
+        cache.faces = mesh.faces;
+        cache.snakesValid = false;
+    }
+    if (!cache.snakesValid || !sameCamera(cache.snakeCamera, lineCamera) || cache.snakeThreshold != threshold) {
+        extractRidgeSnakes(
+            shape, mesh.faces, mesh.vertexFaces(), cache.data, lineCamera, threshold, cache.scratch, cache.snakes);
+        cache.snakeCamera = lineCamera;
+        cache.snakeThreshold = threshold;
+        cache.snakesValid = true;
+    }
+    return cache.snakes;
+}
 
 void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera& camera, const RenderLook& look,
     RenderCache& cache, RenderPasses& out, const RasterCamera* lineView, GBuffer* gbuffer)
@@ -138,8 +172,16 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         FeatureEdges features;
         extractFeatureEdges(shape, faces, topology, mesh.faceMaterials, view, look.lineSettings, features);
         const std::vector<Stroke> strokes = chainStrokes(topology, features);
-        const std::vector<StyledStroke> styled = styleStrokes(strokes, shape, look.lineStyle,
-            [&](const Eigen::Vector3f& p) { return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>()); });
+        auto project
+            = [&](const Eigen::Vector3f& p) { return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>()); };
+        std::vector<StyledStroke> styled = styleStrokes(strokes, shape, look.lineStyle, project);
+        if (look.lineSettings.ridges) {
+            // Apparent ridges from the line view's eye, clustered in its pixels (paper 3, 4.2.1).
+            const RidgeSnakes& snakes
+                = cachedRidgeSnakes(shape, mesh, lv, look.lineSettings.ridgeThreshold, cache.ridges);
+            std::vector<StyledStroke> ridges = styleSnakes(snakes, look.lineStyle, project);
+            styled.insert(styled.end(), std::make_move_iterator(ridges.begin()), std::make_move_iterator(ridges.end()));
+        }
         drawStrokes(styled, g, out.lines);
     }
 

@@ -6,6 +6,7 @@
 #include "celform/algorithms/image.h"
 #include "celform/algorithms/lines.h"
 #include "celform/algorithms/raster.h"
+#include "celform/algorithms/ridge_snakes.h"
 #include "celform/algorithms/shading.h"
 #include "celform/algorithms/tri_mesh.h"
 
@@ -72,11 +73,30 @@ struct HighlightGeometry {
     Positions normals, du, dv;
 };
 
+/// Apparent ridges between renderFrame calls: the curvature of the last shape (recomputed only when
+/// the positions differ, compared byte for byte) and the snakes of the last line camera and
+/// threshold (a stereo pair's two eyes share the centre eye's snakes, paper 3, section 4.2).
+struct RidgeRenderCache {
+    Positions shape; ///< the positions data was computed for
+    Faces faces;
+    RidgeShapeData data;
+    RidgeScratch scratch;
+    bool snakesValid = false;
+    RasterCamera snakeCamera;
+    float snakeThreshold = 0.f;
+    RidgeSnakes snakes;
+};
+
 /// What renderFrame keeps between frames (the edge topology is the mesh's own, TriMesh::
 /// edgeTopology()).
 struct RenderCache {
     std::vector<HighlightGeometry> highlights; ///< most recently used last, a few entries
+    RidgeRenderCache ridges;
 };
+
+/// The ridge snakes of shape seen from lineCamera, through cache (curvature once per shape).
+const RidgeSnakes& cachedRidgeSnakes(const Positions& shape, const TriMesh& mesh, const RasterCamera& lineCamera,
+    float threshold, RidgeRenderCache& cache);
 
 /// Renders shape (the view-dependent blend for this camera, #V by 3) with mesh's faces and
 /// materials. lineView lets stereo pairs take their lines from the centre eye (paper 3, section

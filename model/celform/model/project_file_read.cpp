@@ -331,6 +331,14 @@ Look readLook(const Reader& r, const QJsonObject& look)
         out.lines.borders = r.boolean(k, "borders");
         out.lines.materialBoundaries = r.boolean(k, "material_boundaries");
         out.lines.creaseAngleDegrees = float(r.number(k, "crease_angle_degrees"));
+        // Apparent ridges came later: files without them load with ridges off.
+        if (k.contains(QLatin1String("ridges")))
+            out.lines.ridges = r.boolean(k, "ridges");
+        if (k.contains(QLatin1String("ridge_threshold"))) {
+            out.lines.ridgeThreshold = float(r.number(k, "ridge_threshold"));
+            if (!(out.lines.ridgeThreshold >= 0.f))
+                r.corrupt(ProjectFile::tr("the ridge threshold is negative"));
+        }
     }
     if (look.contains("line_style")) {
         const QJsonObject l = r.object(look, "line_style");

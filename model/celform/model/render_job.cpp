@@ -113,6 +113,17 @@ Look renderJobLook(const ProjectData& data, const RenderJob& job)
     }
     if (job.lines)
         look.showLines = *job.lines;
+    if (job.lineKinds) {
+        const std::uint8_t k = *job.lineKinds;
+        look.showLines = true;
+        look.lines.silhouettes = (k & algo::kSilhouette) != 0;
+        look.lines.creases = (k & algo::kCrease) != 0;
+        look.lines.borders = (k & algo::kBorder) != 0;
+        look.lines.materialBoundaries = (k & algo::kMaterialBoundary) != 0;
+        look.lines.ridges = (k & algo::kRidge) != 0;
+    }
+    if (job.ridgeThreshold)
+        look.lines.ridgeThreshold = *job.ridgeThreshold;
     if (job.light)
         look.light = *job.light;
     return look;

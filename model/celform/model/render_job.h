@@ -48,6 +48,9 @@ struct RenderJob {
     /// Overrides of the project's look for this render only.
     std::optional<ShadingStyle> style;
     std::optional<bool> lines;
+    /// `--lines KIND,...`: lines on with exactly these algo::LineKind bits (ridges included).
+    std::optional<std::uint8_t> lineKinds;
+    std::optional<float> ridgeThreshold; ///< `--ridge-threshold T`, >= 0
     std::optional<Light> light;
     algo::StereoOutput stereo = algo::StereoOutput::Off;
     /// One of renderPassNames(); empty: the beauty pass, or every pass as channels of an .exr.

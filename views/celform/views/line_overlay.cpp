@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace celform::views {
@@ -59,21 +60,42 @@ void LineOverlay::clear()
     m_generation = 0;
     m_valid = false;
     m_strokes.clear();
+    m_ridgeGeneration = 0;
+    m_snakes.clear();
 }
 
-void LineOverlay::update(
-    const algo::Shape& shape, const algo::TriMesh& mesh, const algo::LineView& view, const algo::LineSettings& settings)
+void LineOverlay::update(const algo::Shape& shape, const algo::TriMesh& mesh, const algo::LineView& view,
+    const algo::LineSettings& settings, const algo::RasterCamera& lineCamera)
 {
     const bool sameView
         = view.eye == m_view.eye && view.direction == m_view.direction && view.orthographic == m_view.orthographic;
+    // Snakes are clustered in the line camera's pixels: its size and lens matter too.
+    const bool sameRidgeCamera = !settings.ridges
+        || (lineCamera.width == m_ridgeCamera.width && lineCamera.height == m_ridgeCamera.height
+            && lineCamera.fovYDegrees == m_ridgeCamera.fovYDegrees
+            && lineCamera.orthoHeight == m_ridgeCamera.orthoHeight && lineCamera.eye == m_ridgeCamera.eye
+            && lineCamera.target == m_ridgeCamera.target && lineCamera.up == m_ridgeCamera.up
+            && lineCamera.orthographic == m_ridgeCamera.orthographic);
     // A generation is never reused, and a new mesh comes with a new shape: it alone says whether
     // the positions (and so the strokes) can have changed.
-    if (m_valid && sameView && shape.generation != 0 && shape.generation == m_generation && settings == m_settings)
+    if (m_valid && sameView && sameRidgeCamera && shape.generation != 0 && shape.generation == m_generation
+        && settings == m_settings)
         return;
     const algo::EdgeTopology& topology = mesh.edgeTopology();
     algo::FeatureEdges features;
     algo::extractFeatureEdges(shape.positions, mesh.faces, topology, mesh.faceMaterials, view, settings, features);
     m_strokes = algo::chainStrokes(topology, features);
+    m_snakes.clear();
+    if (settings.ridges) {
+        // Curvature once per shape (generation), the view-dependent part per view.
+        if (shape.generation == 0 || shape.generation != m_ridgeGeneration || m_mesh != &mesh) {
+            algo::computeRidgeShapeData(shape.positions, mesh.faces, m_ridgeData);
+            m_ridgeGeneration = shape.generation;
+        }
+        algo::extractRidgeSnakes(shape.positions, mesh.faces, mesh.vertexFaces(), m_ridgeData, lineCamera,
+            settings.ridgeThreshold, m_ridgeScratch, m_snakes);
+    }
+    m_ridgeCamera = lineCamera;
     m_mesh = &mesh;
     m_generation = shape.generation;
     m_view = view;
@@ -86,13 +108,17 @@ QRect LineOverlay::draw(const algo::Positions& shape, const algo::LineStyle& sty
 {
     const int w = camera.width, h = camera.height;
     coverage.assign(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)), 0.f);
-    if (!m_valid || m_strokes.empty() || w <= 0 || h <= 0 || depth.size() != coverage.size() || !m_mesh
-        || shape.rows() != m_mesh->vertexCount())
+    if (!m_valid || (m_strokes.empty() && m_snakes.strokes.empty()) || w <= 0 || h <= 0
+        || depth.size() != coverage.size() || !m_mesh || shape.rows() != m_mesh->vertexCount())
         return {};
-    const std::vector<algo::StyledStroke> styled
-        = algo::styleStrokes(m_strokes, shape, style, [&camera](const Eigen::Vector3f& p) {
-              return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>());
-          });
+    auto project = [&camera](const Eigen::Vector3f& p) {
+        return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>());
+    };
+    std::vector<algo::StyledStroke> styled = algo::styleStrokes(m_strokes, shape, style, project);
+    if (!m_snakes.strokes.empty()) {
+        std::vector<algo::StyledStroke> ridges = algo::styleSnakes(m_snakes, style, project);
+        styled.insert(styled.end(), std::make_move_iterator(ridges.begin()), std::make_move_iterator(ridges.end()));
+    }
     // drawStrokes reads only depth and face id: a face id of 0 marks "on the model".
     algo::GBuffer g;
     g.width = w;

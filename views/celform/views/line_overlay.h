@@ -5,6 +5,7 @@
 #include "celform/algorithms/image.h"
 #include "celform/algorithms/lines.h"
 #include "celform/algorithms/raster.h"
+#include "celform/algorithms/ridge_snakes.h"
 #include "celform/algorithms/stereo.h"
 #include "celform/algorithms/tri_mesh.h"
 
@@ -35,15 +36,17 @@ class LineOverlay {
 public:
     /// Extracts the feature strokes of shape seen from view (the centre eye in stereo, paper 3,
     /// section 4.2.2). Cheap when nothing changed since the last call.
+    /// Apparent ridges (settings.ridges) come from lineCamera, the camera whose eye view is, and
+    /// are clustered into snakes in its pixels, as the offline renderer does.
     void update(const algo::Shape& shape, const algo::TriMesh& mesh, const algo::LineView& view,
-        const algo::LineSettings& settings);
+        const algo::LineSettings& settings, const algo::RasterCamera& lineCamera);
     /// The strokes projected with camera and styled (pixels), drawn anti-aliased into coverage
     /// (camera.width x camera.height), hidden where depth (view-axis, top-down) is nearer.
     /// Returns the bounding box of the covered pixels (empty when no line is visible).
     QRect draw(const algo::Positions& shape, const algo::LineStyle& style, const algo::RasterCamera& camera,
         const std::vector<float>& depth, std::vector<float>& coverage) const;
 
-    [[nodiscard]] std::size_t strokeCount() const { return m_strokes.size(); }
+    [[nodiscard]] std::size_t strokeCount() const { return m_strokes.size() + m_snakes.strokes.size(); }
     /// Drops every cache (a new mesh).
     void clear();
 
@@ -54,6 +57,13 @@ private:
     algo::LineSettings m_settings;
     bool m_valid = false;
     std::vector<algo::Stroke> m_strokes;
+    /// Apparent ridges: the curvature of the shape of generation m_ridgeGeneration, and the
+    /// snakes of the last line camera (kept in m_ridgeCache, whose shape copy is not used here).
+    algo::RasterCamera m_ridgeCamera;
+    std::uint64_t m_ridgeGeneration = 0;
+    algo::RidgeShapeData m_ridgeData;
+    algo::RidgeScratch m_ridgeScratch;
+    algo::RidgeSnakes m_snakes;
 };
 
 /// Blends line coverage (coverageWidth pixels a row) over an 8-bit sRGB image whose top-left

@@ -239,7 +239,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     // --- lines ----------------------------------------------------------------------------------------
     auto* linesBox = new QGroupBox(tr("Lines"), content);
     linesBox->setCheckable(true);
-    linesBox->setToolTip(tr("Silhouettes, creases, borders and material boundaries"));
+    linesBox->setToolTip(tr("Silhouettes, creases, borders, material boundaries and apparent ridges"));
     auto* linesForm = new QFormLayout(linesBox);
     connect(linesBox, &QGroupBox::toggled, this, [this](bool on) {
         if (!m_updating)
@@ -268,6 +268,28 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
             [v](algo::LineSettings& s) { s.creaseAngleDegrees = float(v); });
     });
     m_refreshers.push_back([this, crease] { crease->setValue(m_document->data().look.lines.creaseAngleDegrees); });
+    // Apparent ridges (paper 3, section 4.2): view-dependent lines, off by default.
+    auto* ridges = new QCheckBox(tr("Apparent ridges"), linesBox);
+    ridges->setToolTip(tr("Lines where the surface, as seen from the camera, bends most sharply (Judd et al. "
+                          "2007): folds and bulges that are neither silhouettes nor creases. Drawn with the inner "
+                          "width; they help depth perception in stereo"));
+    linesForm->addRow(ridges);
+    connect(ridges, &QCheckBox::toggled, this, [this](bool on) {
+        edit(&model::Look::lines, &model::Document::setLineSettings, [on](algo::LineSettings& s) { s.ridges = on; });
+    });
+    m_refreshers.push_back([this, ridges] { ridges->setChecked(m_document->data().look.lines.ridges); });
+    QDoubleSpinBox* ridgeThreshold = makeSpin(0, 10, 0.05, 2,
+        tr("Apparent ridges are drawn where the view-dependent curvature times the median edge length exceeds "
+           "this: lower draws more (and noisier) lines, higher only the sharpest folds"));
+    linesForm->addRow(tr("Ridge &threshold:"), ridgeThreshold);
+    connect(ridgeThreshold, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        edit(&model::Look::lines, &model::Document::setLineSettings,
+            [v](algo::LineSettings& s) { s.ridgeThreshold = float(v); });
+    });
+    m_refreshers.push_back([this, ridgeThreshold] {
+        ridgeThreshold->setValue(m_document->data().look.lines.ridgeThreshold);
+        ridgeThreshold->setEnabled(m_document->data().look.lines.ridges);
+    });
     linesForm->addRow(tr("C&olour:"),
         makeColorButton(
             tr("Line colour"), [](const model::Look& l) { return l.lineStyle.color; },

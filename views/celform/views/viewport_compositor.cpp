@@ -100,7 +100,7 @@ QRect ViewportCompositor::lineCoverage(const Frame& frame, const algo::RasterCam
     view.eye = lineEye.eye.cast<float>();
     view.direction = lineEye.forward().cast<float>();
     view.orthographic = lineEye.orthographic;
-    m_lines.update(*frame.shape, *frame.mesh, view, frame.look->lines);
+    m_lines.update(*frame.shape, *frame.mesh, view, frame.look->lines, lineEye);
     return m_lines.draw(frame.shape->positions, frame.look->lineStyle, camera, depth, m_coverage);
 }
 
