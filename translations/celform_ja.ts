@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
 <context>
+    <name>Cli</name>
+    <message>
+        <source>--depth-threshold takes a fraction of the model&apos;s size in (0, 1], not “%1”</source>
+        <translation type="unfinished">--depth-threshold にはモデルの大きさに対する割合 (0, 1] を指定します（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>--min-pixels takes a whole number of at least 1, not “%1”</source>
+        <translation type="unfinished">--min-pixels には 1 以上の整数を指定します（“%1” ではありません）</translation>
+    </message>
+    <message>
+        <source>has no key named “%1”</source>
+        <translation type="unfinished">「%1」という名前のキーがありません</translation>
+    </message>
+    <message>
+        <source>%1 takes on, off or a comma-separated list of silhouette, crease, border, material and ridge, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>MeshIo</name>
     <message>
         <source>line %1: face %2 has the index %3, which is too large</source>
@@ -255,10 +274,6 @@
     <message>
         <source>Shading style for this render.</source>
         <translation>このレンダリングで使用するシェーディングスタイル。</translation>
-    </message>
-    <message>
-        <source>Draw the lines (on) or not (off).</source>
-        <translation>線を描画するかどうか（on: 描画する、off: 描画しない）。</translation>
     </message>
     <message>
         <source>Key light for this render.</source>
@@ -701,14 +716,6 @@
         <translation>--window には 0 &lt;= LO &lt;= HI &lt;= 1 の LO,HI、または lenient、medium、strict を指定します（“%1” ではありません）</translation>
     </message>
     <message>
-        <source>--depth-threshold takes a fraction of the model&apos;s size in (0, 1], not “%1”</source>
-        <translation>--depth-threshold にはモデルの大きさに対する割合 (0, 1] を指定します（“%1” ではありません）</translation>
-    </message>
-    <message>
-        <source>--min-pixels takes a whole number of at least 1, not “%1”</source>
-        <translation>--min-pixels には 1 以上の整数を指定します（“%1” ではありません）</translation>
-    </message>
-    <message>
         <source>--out must end in .exr, not “%1”</source>
         <translation>--out は .exr で終わる必要があります（“%1” ではありません）</translation>
     </message>
@@ -759,10 +766,6 @@
         <translation>解析する画像のシェーディングスタイル。</translation>
     </message>
     <message>
-        <source>Lines in the analysed picture (on) or not (off).</source>
-        <translation>解析する画像に線を描く（on）か描かない（off）か。</translation>
-    </message>
-    <message>
         <source>Key light for this analysis.</source>
         <translation>この解析のキーライト。</translation>
     </message>
@@ -802,6 +805,170 @@
         <source>The PLY file to write.</source>
         <translation>書き出す PLY ファイル。</translation>
     </message>
+    <message>
+        <source>--method must be gradient, annealing or random, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--weight must be constant or area, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--iterations takes a whole number from 1 to 100000, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--seed takes a whole number of at least 0, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>directional</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>light: %1 -&gt; %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>segments inside the window: %1 -&gt; %2 of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>depth error MSE: %1 -&gt; %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>time: %1 ms (iterations %2 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not saved (--dry-run)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the light stays where it is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lines in the analysed picture (on) or not (off), or only these kinds: silhouette, crease, border, material, ridge, comma-separated.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame to optimise for (default 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Size of the analysed picture (default 1280x720).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How much each segment counts: all alike (constant, the default: small dents count as much as the body) or by its size (area).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gradient (the default: moves the light from where it is along the shading&apos;s derivative), annealing (shrinking random steps) or random (independent random lights, the best kept).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Iterations (default 64).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed of the annealing and random methods (default 1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Report the light found without saving it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves the key light so that every segment&apos;s bright/dark ratio gets into the window, and saves the project.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--ridge-threshold takes a number &gt;= 0, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw the lines (on) or not (off), or only these kinds: silhouette, crease, border, material, ridge (apparent ridges), comma-separated.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apparent-ridge threshold for this render: view-dependent curvature times the median edge length (default: the project&apos;s, 0.3 in new projects; lower draws more).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>exactly one of --auto, --clear or --smooth is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>camera, picture and solve options go with --auto only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--aggressiveness must be in [0, 1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--percentile must be in [0, 1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--bleed must be a whole number from 0 to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--smooth must be a whole number from 1 to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 segments, %2 inside the ratio window before, %3 after; depth error MSE %4 before, %5 after (%6 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic per-segment offsets for the view: each segment of the depth analysis gets the ratio 1 - Q.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the target&apos;s offsets.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>N rounds of smoothing over the mesh&apos;s vertex neighbours.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame analysed, and the key layer&apos;s frame (default 0; --clear on a key without it clears every frame).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analysed picture size (default 1280x720).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far towards the solved offsets, in [0, 1] (default 1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fraction of each segment left dark, in [0, 1] (default 0.5).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rounds the offsets bleed to neighbouring vertices (default 2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit this key&apos;s layer instead of the base layer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading offsets (paper 3, section 4.3): automatic per segment, cleared or smoothed; saved in the project.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::app::FirstStepsHint</name>
@@ -823,6 +990,33 @@
     <message>
         <source>Getting Started</source>
         <translation>はじめに</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::LightOptimisationRunner</name>
+    <message>
+        <source>Optimise Light for Stereo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analysing the picture (%1 × %2)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished">キャンセル</translation>
+    </message>
+    <message>
+        <source>Not enough memory to analyse %1 × %2 pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moving the light: iteration %1 of %2…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analysing the picture with the new light…</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1430,6 +1624,185 @@ Recover it now?</source>
     <message>
         <source>&amp;Depth Overlay</source>
         <translation>奥行きオーバーレイ(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Optimise &amp;Light for Stereo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the key light so that every segment of the Depth tab gets a shading line across it: the depth error falls (one undo step; method in the Depth tab)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Look</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a model first: the light is optimised for the picture of a model.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Light optimisation cancelled: the light is unchanged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The light already suits the analysis (%1 of %2 segments inside the window).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Light optimised: depth error MSE %1 → %2, %3 → %4 of %5 segments inside the window (%6 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The segments&apos; ratios improved but the depth error rose: try another start light (move it, then optimise again) or a more lenient window in the Depth tab.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::OffsetActions</name>
+    <message>
+        <source>Automatic Shading Offsets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far towards the solved offsets: 0 % changes nothing, 100 % gives every segment the wanted ratio (thesis figure 4.16).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fraction of each segment left dark: 0.5 puts the shading line through the middle of every segment.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rounds the offsets bleed to neighbouring vertices, so the edges between segments do not show (thesis figure 4.15).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Base layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The layer that receives the offsets (the offset brush&apos;s target).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Aggressiveness:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Percentile:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bleeding rounds:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic shading offsets: %1 segments; depth error MSE %2 before, %3 after.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading &amp;Offsets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Paint Shading Offsets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset brush: drag adds to N·L, Ctrl+drag subtracts, Shift+drag smooths (thesis 4.3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush &amp;Mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation type="unfinished">追加(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Subtract</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;mooth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Erase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What a plain drag of the offset brush does</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush S&amp;trength…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The offset one dab adds at the brush&apos;s centre</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset Brush Strength</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset added at the centre by one dab:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mirror across &amp;X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint the mirror image across x = 0 too</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint into the Displayed &amp;Key&apos;s Layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On: the key shown in the viewport (Edit Key) at the playhead&apos;s frame; off: the base layer, every view and frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No key is shown: choose Edit Key in the Scene panel first; painting the base layer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading offsets go into the %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Automatic Shading Offsets…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give every segment of the depth analysis its shading line, seen from the current view (thesis 4.3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;mooth Shading Offsets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Four rounds of smoothing of the target layer over the mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Clear Shading Offsets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the target layer&apos;s offsets</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2608,6 +2981,110 @@ Recover it now?</source>
         <source>Brush “%1”</source>
         <translation>ブラシ「%1」</translation>
     </message>
+    <message>
+        <source>The light changed while it was being optimised; run Optimise Light for Stereo again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The optimised light is not usable.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Optimise Light for Stereo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>base</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading offsets need a base model.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no key to hold these shading offsets.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading offsets refused: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Shading Offsets (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no key to clear shading offsets from.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear Shading Offsets (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no key whose shading offsets to smooth.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Smoothing takes 1 to %1 rounds, not %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Smooth Shading Offsets (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a key to paint shading offsets into first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The brush needs a positive radius and a strength of zero or more.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The shape painted on does not have the base model&apos;s vertices.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint Shading Offsets (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no key to hold the automatic shading offsets.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The aggressiveness must be between 0 and 1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The percentile must be between 0 and 1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bleeding takes 0 to %1 rounds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The analysis size must be between 16 and 8192 pixels a side.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The analysis needs a valid camera (eye, target and up must differ).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The key “%1” plays no part in this view: look from nearer its direction.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The automatic shading offsets could not be solved for this picture.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic Shading Offsets (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::model::Highlights</name>
@@ -3381,6 +3858,22 @@ Recover it now?</source>
         <source>cannot be opened: not enough memory</source>
         <translation>開けません: メモリが足りません</translation>
     </message>
+    <message>
+        <source>the ridge threshold is negative</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key “%1” has shading offsets that do not match the vertex count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key “%1” has a shading offset that is not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key “%1” has shading offsets twice at frame %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
@@ -3425,6 +3918,17 @@ Recover it now?</source>
     <message>
         <source>the curvature does not match the shape</source>
         <translation>曲率が形状と一致しません</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::ShadingLayers</name>
+    <message>
+        <source>%1 shading offsets for %2 vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a shading offset is not finite</source>
+        <translation type="unfinished">有限でないシェーディングオフセットがあります</translation>
     </message>
 </context>
 <context>
@@ -3679,6 +4183,54 @@ Recover it now?</source>
     <message>
         <source>No</source>
         <translation>いいえ</translation>
+    </message>
+    <message>
+        <source>Light for Stereo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gradient</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Annealing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Random</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gradient moves the light from where you put it along the shading&apos;s derivative (predictable); annealing tries shrinking random moves; random tries independent lights and keeps the best</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every segment alike</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>By segment size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Alike: small features such as dents count as much as the body (thesis figure 5.9); by size: large parts count more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Segments count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The layer of shading offsets the offset brush (Shift+O) and Edit &gt; Shading Offsets &gt; Automatic Shading Offsets write into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading offsets go into the %1.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4250,10 +4802,6 @@ Recover it now?</source>
         <translation>線</translation>
     </message>
     <message>
-        <source>Silhouettes, creases, borders and material boundaries</source>
-        <translation>シルエット、折り目、境界、マテリアル境界</translation>
-    </message>
-    <message>
         <source>Silhouettes</source>
         <translation>シルエット</translation>
     </message>
@@ -4444,6 +4992,49 @@ Recover it now?</source>
     <message>
         <source>B out</source>
         <translation>出力 B</translation>
+    </message>
+    <message>
+        <source>Silhouettes, creases, borders, material boundaries and apparent ridges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apparent ridges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lines where the surface, as seen from the camera, bends most sharply (Judd et al. 2007): folds and bulges that are neither silhouettes nor creases. Drawn with the inner width; they help depth perception in stereo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apparent ridges are drawn where the view-dependent curvature times the median edge length exceeds this: lower draws more (and noisier) lines, higher only the sharpest folds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ridge &amp;threshold:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::OffsetBrushTool</name>
+    <message>
+        <source>base layer (every view and frame)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key “%1” at frame %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint shading offsets into the %1: drag adds, Ctrl+drag subtracts, Shift+drag smooths; F resizes the brush.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hold the cursor over the model to resize the brush there.</source>
+        <translation type="unfinished">ブラシの大きさを変えるには、カーソルをモデルの上に置いてください。</translation>
+    </message>
+    <message>
+        <source>Move the mouse to resize the brush; click or Enter to keep, Esc to cancel.</source>
+        <translation type="unfinished">マウスを動かしてブラシの大きさを変えます。クリックか Enter で確定、Esc で取り消し。</translation>
     </message>
 </context>
 <context>
