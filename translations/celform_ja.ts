@@ -5,19 +5,19 @@
     <name>Cli</name>
     <message>
         <source>--depth-threshold takes a fraction of the model&apos;s size in (0, 1], not “%1”</source>
-        <translation type="unfinished">--depth-threshold にはモデルの大きさに対する割合 (0, 1] を指定します（“%1” ではありません）</translation>
+        <translation>--depth-threshold にはモデルの大きさに対する割合 (0, 1] を指定します（“%1” ではありません）</translation>
     </message>
     <message>
         <source>--min-pixels takes a whole number of at least 1, not “%1”</source>
-        <translation type="unfinished">--min-pixels には 1 以上の整数を指定します（“%1” ではありません）</translation>
+        <translation>--min-pixels には 1 以上の整数を指定します（“%1” ではありません）</translation>
     </message>
     <message>
         <source>has no key named “%1”</source>
-        <translation type="unfinished">「%1」という名前のキーがありません</translation>
+        <translation>「%1」という名前のキーがありません</translation>
     </message>
     <message>
         <source>%1 takes on, off or a comma-separated list of silhouette, crease, border, material and ridge, not “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 には on、off、または silhouette、crease、border、material、ridge をカンマ区切りで指定してください（「%2」は無効です）</translation>
     </message>
 </context>
 <context>
@@ -807,167 +807,167 @@
     </message>
     <message>
         <source>--method must be gradient, annealing or random, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--method には gradient、annealing、random のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--weight must be constant or area, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--weight には constant または area を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--iterations takes a whole number from 1 to 100000, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--iterations には 1～100000 の整数を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--seed takes a whole number of at least 0, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--seed には 0 以上の整数を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>point</source>
-        <translation type="unfinished"></translation>
+        <translation>点光源</translation>
     </message>
     <message>
         <source>directional</source>
-        <translation type="unfinished"></translation>
+        <translation>平行光源</translation>
     </message>
     <message>
         <source>light: %1 -&gt; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>ライト: %1 -&gt; %2</translation>
     </message>
     <message>
         <source>segments inside the window: %1 -&gt; %2 of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>範囲内のセグメント: %1 -&gt; %2（%3 個中）</translation>
     </message>
     <message>
         <source>depth error MSE: %1 -&gt; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>奥行き誤差 MSE: %1 -&gt; %2</translation>
     </message>
     <message>
         <source>time: %1 ms (iterations %2 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>時間: %1 ms（反復 %2 ms）</translation>
     </message>
     <message>
         <source>not saved (--dry-run)</source>
-        <translation type="unfinished"></translation>
+        <translation>保存していません（--dry-run）</translation>
     </message>
     <message>
         <source>the light stays where it is</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトは移動しません</translation>
     </message>
     <message>
         <source>Lines in the analysed picture (on) or not (off), or only these kinds: silhouette, crease, border, material, ridge, comma-separated.</source>
-        <translation type="unfinished"></translation>
+        <translation>解析する画像に線を描くか（on）描かないか（off）、または描く線の種類だけをカンマ区切りで指定: silhouette、crease、border、material、ridge。</translation>
     </message>
     <message>
         <source>Frame to optimise for (default 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>最適化の対象フレーム（既定値 0）。</translation>
     </message>
     <message>
         <source>Size of the analysed picture (default 1280x720).</source>
-        <translation type="unfinished"></translation>
+        <translation>解析する画像のサイズ（既定値 1280x720）。</translation>
     </message>
     <message>
         <source>How much each segment counts: all alike (constant, the default: small dents count as much as the body) or by its size (area).</source>
-        <translation type="unfinished"></translation>
+        <translation>各セグメントの重み: すべて同等（constant、既定: 小さなくぼみも本体と同じだけ重視）または大きさに応じる（area）。</translation>
     </message>
     <message>
         <source>gradient (the default: moves the light from where it is along the shading&apos;s derivative), annealing (shrinking random steps) or random (independent random lights, the best kept).</source>
-        <translation type="unfinished"></translation>
+        <translation>gradient（既定: シェーディングの微分に沿って現在の位置からライトを動かす）、annealing（幅を狭めていくランダムな移動）、random（独立したランダムなライトを試し、最良のものを残す）。</translation>
     </message>
     <message>
         <source>Iterations (default 64).</source>
-        <translation type="unfinished"></translation>
+        <translation>反復回数（既定値 64）。</translation>
     </message>
     <message>
         <source>Seed of the annealing and random methods (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>annealing と random の手法で使う乱数シード（既定値 1）。</translation>
     </message>
     <message>
         <source>Report the light found without saving it.</source>
-        <translation type="unfinished"></translation>
+        <translation>見つかったライトを保存せずに表示します。</translation>
     </message>
     <message>
         <source>Moves the key light so that every segment&apos;s bright/dark ratio gets into the window, and saves the project.</source>
-        <translation type="unfinished"></translation>
+        <translation>すべてのセグメントの明暗比が範囲内に収まるようにキーライトを動かし、プロジェクトを保存します。</translation>
     </message>
     <message>
         <source>--ridge-threshold takes a number &gt;= 0, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--ridge-threshold には 0 以上の数値を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>Draw the lines (on) or not (off), or only these kinds: silhouette, crease, border, material, ridge (apparent ridges), comma-separated.</source>
-        <translation type="unfinished"></translation>
+        <translation>線を描くか（on）描かないか（off）、または描く線の種類だけをカンマ区切りで指定: silhouette、crease、border、material、ridge（見かけの稜線）。</translation>
     </message>
     <message>
         <source>Apparent-ridge threshold for this render: view-dependent curvature times the median edge length (default: the project&apos;s, 0.3 in new projects; lower draws more).</source>
-        <translation type="unfinished"></translation>
+        <translation>このレンダリングでの見かけの稜線のしきい値: 視点依存の曲率 × エッジ長の中央値（既定: プロジェクトの値、新規プロジェクトでは 0.3。小さいほど多く描きます）。</translation>
     </message>
     <message>
         <source>exactly one of --auto, --clear or --smooth is required</source>
-        <translation type="unfinished"></translation>
+        <translation>--auto、--clear、--smooth のいずれか 1 つだけを指定してください</translation>
     </message>
     <message>
         <source>camera, picture and solve options go with --auto only</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラ、画像、求解のオプションは --auto と一緒にしか使えません</translation>
     </message>
     <message>
         <source>--aggressiveness must be in [0, 1]</source>
-        <translation type="unfinished"></translation>
+        <translation>--aggressiveness は [0, 1] の範囲で指定してください</translation>
     </message>
     <message>
         <source>--percentile must be in [0, 1]</source>
-        <translation type="unfinished"></translation>
+        <translation>--percentile は [0, 1] の範囲で指定してください</translation>
     </message>
     <message>
         <source>--bleed must be a whole number from 0 to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--bleed には 0～%1 の整数を指定してください</translation>
     </message>
     <message>
         <source>--smooth must be a whole number from 1 to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--smooth には 1～%1 の整数を指定してください</translation>
     </message>
     <message>
         <source>%1 segments, %2 inside the ratio window before, %3 after; depth error MSE %4 before, %5 after (%6 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>セグメント %1 個、比率の範囲内: 適用前 %2 個、適用後 %3 個。奥行き誤差 MSE: 適用前 %4、適用後 %5（%6 ms）</translation>
     </message>
     <message>
         <source>Automatic per-segment offsets for the view: each segment of the depth analysis gets the ratio 1 - Q.</source>
-        <translation type="unfinished"></translation>
+        <translation>視点に合わせたセグメントごとの自動オフセット: 奥行き解析の各セグメントの比率を 1 - Q にします。</translation>
     </message>
     <message>
         <source>Remove the target&apos;s offsets.</source>
-        <translation type="unfinished"></translation>
+        <translation>対象のオフセットを削除します。</translation>
     </message>
     <message>
         <source>N rounds of smoothing over the mesh&apos;s vertex neighbours.</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュの隣接頂点間で N 回平滑化します。</translation>
     </message>
     <message>
         <source>Frame analysed, and the key layer&apos;s frame (default 0; --clear on a key without it clears every frame).</source>
-        <translation type="unfinished"></translation>
+        <translation>解析するフレーム、およびキーのレイヤーのフレーム（既定値 0。キーに対してこのオプションなしで --clear を使うと、すべてのフレームを消去します）。</translation>
     </message>
     <message>
         <source>Analysed picture size (default 1280x720).</source>
-        <translation type="unfinished"></translation>
+        <translation>解析する画像のサイズ（既定値 1280x720）。</translation>
     </message>
     <message>
         <source>How far towards the solved offsets, in [0, 1] (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>求めたオフセットにどこまで近づけるか、[0, 1]（既定値 1）。</translation>
     </message>
     <message>
         <source>Fraction of each segment left dark, in [0, 1] (default 0.5).</source>
-        <translation type="unfinished"></translation>
+        <translation>各セグメントで暗部として残す割合、[0, 1]（既定値 0.5）。</translation>
     </message>
     <message>
         <source>Rounds the offsets bleed to neighbouring vertices (default 2).</source>
-        <translation type="unfinished"></translation>
+        <translation>オフセットを隣接頂点ににじませる回数（既定値 2）。</translation>
     </message>
     <message>
         <source>Edit this key&apos;s layer instead of the base layer.</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースレイヤーではなく、このキーのレイヤーを編集します。</translation>
     </message>
     <message>
         <source>Shading offsets (paper 3, section 4.3): automatic per segment, cleared or smoothed; saved in the project.</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセット（論文 3、4.3 節）: セグメントごとの自動設定、消去、平滑化を行い、プロジェクトに保存します。</translation>
     </message>
 </context>
 <context>
@@ -996,27 +996,27 @@
     <name>celform::app::LightOptimisationRunner</name>
     <message>
         <source>Optimise Light for Stereo</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオ用にライトを最適化</translation>
     </message>
     <message>
         <source>Analysing the picture (%1 × %2)…</source>
-        <translation type="unfinished"></translation>
+        <translation>画像を解析中（%1 × %2）…</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished">キャンセル</translation>
+        <translation>キャンセル</translation>
     </message>
     <message>
         <source>Not enough memory to analyse %1 × %2 pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 × %2 ピクセルを解析するメモリが足りません</translation>
     </message>
     <message>
         <source>Moving the light: iteration %1 of %2…</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトを移動中: 反復 %1 / %2…</translation>
     </message>
     <message>
         <source>Analysing the picture with the new light…</source>
-        <translation type="unfinished"></translation>
+        <translation>新しいライトで画像を解析中…</translation>
     </message>
 </context>
 <context>
@@ -1627,182 +1627,182 @@ Recover it now?</source>
     </message>
     <message>
         <source>Optimise &amp;Light for Stereo</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオ用にライトを最適化(&amp;L)</translation>
     </message>
     <message>
         <source>Move the key light so that every segment of the Depth tab gets a shading line across it: the depth error falls (one undo step; method in the Depth tab)</source>
-        <translation type="unfinished"></translation>
+        <translation>「奥行き」タブの各セグメントに陰影の境界線がかかるようにキーライトを動かし、奥行き誤差を減らします（1 回の「元に戻す」で戻せます。手法は「奥行き」タブで選びます）</translation>
     </message>
     <message>
         <source>&amp;Look</source>
-        <translation type="unfinished"></translation>
+        <translation>ルック(&amp;L)</translation>
     </message>
     <message>
         <source>Open a model first: the light is optimised for the picture of a model.</source>
-        <translation type="unfinished"></translation>
+        <translation>先にモデルを開いてください。ライトはモデルの画像に対して最適化されます。</translation>
     </message>
     <message>
         <source>Light optimisation cancelled: the light is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトの最適化をキャンセルしました。ライトは変更されていません。</translation>
     </message>
     <message>
         <source>The light already suits the analysis (%1 of %2 segments inside the window).</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトはすでに解析結果に合っています（%2 セグメント中 %1 が範囲内）。</translation>
     </message>
     <message>
         <source>Light optimised: depth error MSE %1 → %2, %3 → %4 of %5 segments inside the window (%6 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>ライトを最適化しました: 奥行き誤差 MSE %1 → %2、範囲内のセグメント %3 → %4 / %5（%6 ms）</translation>
     </message>
     <message>
         <source>The segments&apos; ratios improved but the depth error rose: try another start light (move it, then optimise again) or a more lenient window in the Depth tab.</source>
-        <translation type="unfinished"></translation>
+        <translation>セグメントの比率は改善しましたが、奥行き誤差が増えました。別の開始位置のライトを試す（ライトを動かしてから再度最適化する）か、「奥行き」タブでより緩い範囲を選んでください。</translation>
     </message>
 </context>
 <context>
     <name>celform::app::OffsetActions</name>
     <message>
         <source>Automatic Shading Offsets</source>
-        <translation type="unfinished"></translation>
+        <translation>自動シェーディングオフセット</translation>
     </message>
     <message>
         <source>How far towards the solved offsets: 0 % changes nothing, 100 % gives every segment the wanted ratio (thesis figure 4.16).</source>
-        <translation type="unfinished"></translation>
+        <translation>求めたオフセットにどこまで近づけるか: 0 % では何も変わらず、100 % ではすべてのセグメントが目標の比率になります（論文の図 4.16）。</translation>
     </message>
     <message>
         <source>Fraction of each segment left dark: 0.5 puts the shading line through the middle of every segment.</source>
-        <translation type="unfinished"></translation>
+        <translation>各セグメントで暗部として残す割合: 0.5 ではすべてのセグメントの中央を陰影の境界線が通ります。</translation>
     </message>
     <message>
         <source>Rounds the offsets bleed to neighbouring vertices, so the edges between segments do not show (thesis figure 4.15).</source>
-        <translation type="unfinished"></translation>
+        <translation>オフセットを隣接頂点ににじませる回数。セグメント間の境目が目立たなくなります（論文の図 4.15）。</translation>
     </message>
     <message>
         <source>Base layer</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースレイヤー</translation>
     </message>
     <message>
         <source>The layer that receives the offsets (the offset brush&apos;s target).</source>
-        <translation type="unfinished"></translation>
+        <translation>オフセットを書き込むレイヤー（オフセットブラシの対象）。</translation>
     </message>
     <message>
         <source>Aggressiveness:</source>
-        <translation type="unfinished"></translation>
+        <translation>適用度:</translation>
     </message>
     <message>
         <source>Percentile:</source>
-        <translation type="unfinished"></translation>
+        <translation>パーセンタイル:</translation>
     </message>
     <message>
         <source>Bleeding rounds:</source>
-        <translation type="unfinished"></translation>
+        <translation>にじみの回数:</translation>
     </message>
     <message>
         <source>Target:</source>
-        <translation type="unfinished"></translation>
+        <translation>対象:</translation>
     </message>
     <message>
         <source>Automatic shading offsets: %1 segments; depth error MSE %2 before, %3 after.</source>
-        <translation type="unfinished"></translation>
+        <translation>自動シェーディングオフセット: セグメント %1 個。奥行き誤差 MSE: 適用前 %2、適用後 %3。</translation>
     </message>
     <message>
         <source>Shading &amp;Offsets</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセット(&amp;O)</translation>
     </message>
     <message>
         <source>&amp;Paint Shading Offsets</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットをペイント(&amp;P)</translation>
     </message>
     <message>
         <source>Offset brush: drag adds to N·L, Ctrl+drag subtracts, Shift+drag smooths (thesis 4.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>オフセットブラシ: ドラッグで N·L に加算、Ctrl + ドラッグで減算、Shift + ドラッグで平滑化（論文 4.3）</translation>
     </message>
     <message>
         <source>Brush &amp;Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシモード(&amp;M)</translation>
     </message>
     <message>
         <source>&amp;Add</source>
-        <translation type="unfinished">追加(&amp;A)</translation>
+        <translation>加算(&amp;A)</translation>
     </message>
     <message>
         <source>&amp;Subtract</source>
-        <translation type="unfinished"></translation>
+        <translation>減算(&amp;S)</translation>
     </message>
     <message>
         <source>S&amp;mooth</source>
-        <translation type="unfinished"></translation>
+        <translation>平滑化(&amp;M)</translation>
     </message>
     <message>
         <source>&amp;Erase</source>
-        <translation type="unfinished"></translation>
+        <translation>消去(&amp;E)</translation>
     </message>
     <message>
         <source>What a plain drag of the offset brush does</source>
-        <translation type="unfinished"></translation>
+        <translation>オフセットブラシを修飾キーなしでドラッグしたときの動作</translation>
     </message>
     <message>
         <source>Brush S&amp;trength…</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシの強さ(&amp;T)…</translation>
     </message>
     <message>
         <source>The offset one dab adds at the brush&apos;s centre</source>
-        <translation type="unfinished"></translation>
+        <translation>1 回の打点でブラシの中心に加わるオフセット</translation>
     </message>
     <message>
         <source>Offset Brush Strength</source>
-        <translation type="unfinished"></translation>
+        <translation>オフセットブラシの強さ</translation>
     </message>
     <message>
         <source>Offset added at the centre by one dab:</source>
-        <translation type="unfinished"></translation>
+        <translation>1 回の打点で中心に加わるオフセット:</translation>
     </message>
     <message>
         <source>Mirror across &amp;X</source>
-        <translation type="unfinished"></translation>
+        <translation>X 方向にミラー(&amp;X)</translation>
     </message>
     <message>
         <source>Paint the mirror image across x = 0 too</source>
-        <translation type="unfinished"></translation>
+        <translation>x = 0 を挟んだ反対側にも鏡像を描きます</translation>
     </message>
     <message>
         <source>Paint into the Displayed &amp;Key&apos;s Layer</source>
-        <translation type="unfinished"></translation>
+        <translation>表示中のキーのレイヤーに描く(&amp;K)</translation>
     </message>
     <message>
         <source>On: the key shown in the viewport (Edit Key) at the playhead&apos;s frame; off: the base layer, every view and frame</source>
-        <translation type="unfinished"></translation>
+        <translation>オン: ビューポートに表示中のキー（「ブラシでキーを編集」）の現在のフレームに描きます。オフ: ベースレイヤー（すべての視点とフレーム）に描きます</translation>
     </message>
     <message>
         <source>No key is shown: choose Edit Key in the Scene panel first; painting the base layer.</source>
-        <translation type="unfinished"></translation>
+        <translation>表示中のキーがありません。先に「シーン」パネルで「ブラシでキーを編集」を選んでください。ベースレイヤーに描きます。</translation>
     </message>
     <message>
         <source>Shading offsets go into the %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットの書き込み先: %1。</translation>
     </message>
     <message>
         <source>&amp;Automatic Shading Offsets…</source>
-        <translation type="unfinished"></translation>
+        <translation>自動シェーディングオフセット(&amp;A)…</translation>
     </message>
     <message>
         <source>Give every segment of the depth analysis its shading line, seen from the current view (thesis 4.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>現在の視点から見て、奥行き解析のすべてのセグメントに陰影の境界線が入るようにします（論文 4.3）</translation>
     </message>
     <message>
         <source>S&amp;mooth Shading Offsets</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットを平滑化(&amp;M)</translation>
     </message>
     <message>
         <source>Four rounds of smoothing of the target layer over the mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>対象レイヤーをメッシュ上で 4 回平滑化します</translation>
     </message>
     <message>
         <source>&amp;Clear Shading Offsets</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットを消去(&amp;C)</translation>
     </message>
     <message>
         <source>Remove the target layer&apos;s offsets</source>
-        <translation type="unfinished"></translation>
+        <translation>対象レイヤーのオフセットを削除します</translation>
     </message>
 </context>
 <context>
@@ -2983,107 +2983,107 @@ Recover it now?</source>
     </message>
     <message>
         <source>The light changed while it was being optimised; run Optimise Light for Stereo again.</source>
-        <translation type="unfinished"></translation>
+        <translation>最適化の途中でライトが変更されました。もう一度「ステレオ用にライトを最適化」を実行してください。</translation>
     </message>
     <message>
         <source>The optimised light is not usable.</source>
-        <translation type="unfinished"></translation>
+        <translation>最適化したライトは使用できません。</translation>
     </message>
     <message>
         <source>Optimise Light for Stereo</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオ用にライトを最適化</translation>
     </message>
     <message>
         <source>base</source>
-        <translation type="unfinished"></translation>
+        <translation>ベース</translation>
     </message>
     <message>
         <source>Shading offsets need a base model.</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットにはベースモデルが必要です。</translation>
     </message>
     <message>
         <source>There is no key to hold these shading offsets.</source>
-        <translation type="unfinished"></translation>
+        <translation>このシェーディングオフセットを保持するキーがありません。</translation>
     </message>
     <message>
         <source>Shading offsets refused: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットを適用できません: %1。</translation>
     </message>
     <message>
         <source>Set Shading Offsets (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットを設定（%1）</translation>
     </message>
     <message>
         <source>There is no key to clear shading offsets from.</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットを消去するキーがありません。</translation>
     </message>
     <message>
         <source>Clear Shading Offsets (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットを消去（%1）</translation>
     </message>
     <message>
         <source>There is no key whose shading offsets to smooth.</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットを平滑化するキーがありません。</translation>
     </message>
     <message>
         <source>Smoothing takes 1 to %1 rounds, not %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>平滑化の回数は 1～%1 の範囲で指定してください（%2 は無効です）。</translation>
     </message>
     <message>
         <source>Smooth Shading Offsets (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットを平滑化（%1）</translation>
     </message>
     <message>
         <source>Choose a key to paint shading offsets into first.</source>
-        <translation type="unfinished"></translation>
+        <translation>先にシェーディングオフセットを描くキーを選んでください。</translation>
     </message>
     <message>
         <source>The brush needs a positive radius and a strength of zero or more.</source>
-        <translation type="unfinished"></translation>
+        <translation>ブラシには正の半径と 0 以上の強さが必要です。</translation>
     </message>
     <message>
         <source>The shape painted on does not have the base model&apos;s vertices.</source>
-        <translation type="unfinished"></translation>
+        <translation>描画先の形状の頂点がベースモデルと一致しません。</translation>
     </message>
     <message>
         <source>Paint Shading Offsets (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットをペイント（%1）</translation>
     </message>
     <message>
         <source>There is no key to hold the automatic shading offsets.</source>
-        <translation type="unfinished"></translation>
+        <translation>自動シェーディングオフセットを保持するキーがありません。</translation>
     </message>
     <message>
         <source>The aggressiveness must be between 0 and 1.</source>
-        <translation type="unfinished"></translation>
+        <translation>適用度は 0～1 の範囲で指定してください。</translation>
     </message>
     <message>
         <source>The percentile must be between 0 and 1.</source>
-        <translation type="unfinished"></translation>
+        <translation>パーセンタイルは 0～1 の範囲で指定してください。</translation>
     </message>
     <message>
         <source>Bleeding takes 0 to %1 rounds.</source>
-        <translation type="unfinished"></translation>
+        <translation>にじみの回数は 0～%1 の範囲で指定してください。</translation>
     </message>
     <message>
         <source>The analysis size must be between 16 and 8192 pixels a side.</source>
-        <translation type="unfinished"></translation>
+        <translation>解析サイズは一辺 16～8192 ピクセルの範囲で指定してください。</translation>
     </message>
     <message>
         <source>The analysis needs a valid camera (eye, target and up must differ).</source>
-        <translation type="unfinished"></translation>
+        <translation>解析には有効なカメラが必要です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
     </message>
     <message>
         <source>The key “%1” plays no part in this view: look from nearer its direction.</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」はこの視点では使われていません。キーの方向にもっと近い視点から見てください。</translation>
     </message>
     <message>
         <source>The automatic shading offsets could not be solved for this picture.</source>
-        <translation type="unfinished"></translation>
+        <translation>この画像では自動シェーディングオフセットを求められませんでした。</translation>
     </message>
     <message>
         <source>Automatic Shading Offsets (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>自動シェーディングオフセット（%1）</translation>
     </message>
 </context>
 <context>
@@ -3860,19 +3860,19 @@ Recover it now?</source>
     </message>
     <message>
         <source>the ridge threshold is negative</source>
-        <translation type="unfinished"></translation>
+        <translation>稜線のしきい値が負の値です</translation>
     </message>
     <message>
         <source>key “%1” has shading offsets that do not match the vertex count</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」のシェーディングオフセットの数が頂点数と一致しません</translation>
     </message>
     <message>
         <source>key “%1” has a shading offset that is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」に有限でないシェーディングオフセットがあります</translation>
     </message>
     <message>
         <source>key “%1” has shading offsets twice at frame %2</source>
-        <translation type="unfinished"></translation>
+        <translation>キー「%1」のフレーム %2 にシェーディングオフセットが重複しています</translation>
     </message>
 </context>
 <context>
@@ -3924,11 +3924,11 @@ Recover it now?</source>
     <name>celform::model::ShadingLayers</name>
     <message>
         <source>%1 shading offsets for %2 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点 %2 個に対してシェーディングオフセットが %1 個あります</translation>
     </message>
     <message>
         <source>a shading offset is not finite</source>
-        <translation type="unfinished">有限でないシェーディングオフセットがあります</translation>
+        <translation>有限でないシェーディングオフセットがあります</translation>
     </message>
 </context>
 <context>
@@ -4186,51 +4186,51 @@ Recover it now?</source>
     </message>
     <message>
         <source>Light for Stereo</source>
-        <translation type="unfinished"></translation>
+        <translation>ステレオ用ライト</translation>
     </message>
     <message>
         <source>Gradient</source>
-        <translation type="unfinished"></translation>
+        <translation>勾配法</translation>
     </message>
     <message>
         <source>Annealing</source>
-        <translation type="unfinished"></translation>
+        <translation>アニーリング</translation>
     </message>
     <message>
         <source>Random</source>
-        <translation type="unfinished"></translation>
+        <translation>ランダム</translation>
     </message>
     <message>
         <source>Gradient moves the light from where you put it along the shading&apos;s derivative (predictable); annealing tries shrinking random moves; random tries independent lights and keeps the best</source>
-        <translation type="unfinished"></translation>
+        <translation>勾配法: 置いた位置からシェーディングの微分に沿ってライトを動かします（結果を予測しやすい）。アニーリング: 幅を狭めながらランダムに動かします。ランダム: 独立したライトを試して最良のものを残します</translation>
     </message>
     <message>
         <source>Method</source>
-        <translation type="unfinished"></translation>
+        <translation>手法</translation>
     </message>
     <message>
         <source>Every segment alike</source>
-        <translation type="unfinished"></translation>
+        <translation>すべてのセグメントを同等に</translation>
     </message>
     <message>
         <source>By segment size</source>
-        <translation type="unfinished"></translation>
+        <translation>セグメントの大きさに応じて</translation>
     </message>
     <message>
         <source>Alike: small features such as dents count as much as the body (thesis figure 5.9); by size: large parts count more</source>
-        <translation type="unfinished"></translation>
+        <translation>同等: くぼみのような小さな部分も本体と同じだけ重視します（論文の図 5.9）。大きさに応じて: 大きな部分ほど重視します</translation>
     </message>
     <message>
         <source>Segments count</source>
-        <translation type="unfinished"></translation>
+        <translation>セグメントの重み</translation>
     </message>
     <message>
         <source>The layer of shading offsets the offset brush (Shift+O) and Edit &gt; Shading Offsets &gt; Automatic Shading Offsets write into</source>
-        <translation type="unfinished"></translation>
+        <translation>オフセットブラシ（Shift+O）と「編集」&gt;「シェーディングオフセット」&gt;「自動シェーディングオフセット」が書き込む、シェーディングオフセットのレイヤー</translation>
     </message>
     <message>
         <source>Shading offsets go into the %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>シェーディングオフセットの書き込み先: %1。</translation>
     </message>
 </context>
 <context>
@@ -4995,46 +4995,46 @@ Recover it now?</source>
     </message>
     <message>
         <source>Silhouettes, creases, borders, material boundaries and apparent ridges</source>
-        <translation type="unfinished"></translation>
+        <translation>シルエット、折り目、境界、マテリアル境界、見かけの稜線</translation>
     </message>
     <message>
         <source>Apparent ridges</source>
-        <translation type="unfinished"></translation>
+        <translation>見かけの稜線</translation>
     </message>
     <message>
         <source>Lines where the surface, as seen from the camera, bends most sharply (Judd et al. 2007): folds and bulges that are neither silhouettes nor creases. Drawn with the inner width; they help depth perception in stereo</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラから見て面が最も急に曲がっているところの線（Judd ほか 2007）: シルエットでも折り目でもない、しわやふくらみです。内側の線の太さで描画され、ステレオでの奥行き知覚を助けます</translation>
     </message>
     <message>
         <source>Apparent ridges are drawn where the view-dependent curvature times the median edge length exceeds this: lower draws more (and noisier) lines, higher only the sharpest folds</source>
-        <translation type="unfinished"></translation>
+        <translation>視点依存の曲率 × エッジ長の中央値がこの値を超えるところに見かけの稜線を描画します。小さくすると線が増え（ノイズも増えます）、大きくすると最も鋭いしわだけを描きます</translation>
     </message>
     <message>
         <source>Ridge &amp;threshold:</source>
-        <translation type="unfinished"></translation>
+        <translation>稜線のしきい値(&amp;T):</translation>
     </message>
 </context>
 <context>
     <name>celform::views::OffsetBrushTool</name>
     <message>
         <source>base layer (every view and frame)</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースレイヤー（すべての視点とフレーム）</translation>
     </message>
     <message>
         <source>key “%1” at frame %2</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %2 のキー「%1」</translation>
     </message>
     <message>
         <source>Paint shading offsets into the %1: drag adds, Ctrl+drag subtracts, Shift+drag smooths; F resizes the brush.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 にシェーディングオフセットを描きます: ドラッグで加算、Ctrl + ドラッグで減算、Shift + ドラッグで平滑化。F でブラシの大きさを変更します。</translation>
     </message>
     <message>
         <source>Hold the cursor over the model to resize the brush there.</source>
-        <translation type="unfinished">ブラシの大きさを変えるには、カーソルをモデルの上に置いてください。</translation>
+        <translation>ブラシの大きさを変えるには、カーソルをモデルの上に置いてください。</translation>
     </message>
     <message>
         <source>Move the mouse to resize the brush; click or Enter to keep, Esc to cancel.</source>
-        <translation type="unfinished">マウスを動かしてブラシの大きさを変えます。クリックか Enter で確定、Esc で取り消し。</translation>
+        <translation>マウスを動かしてブラシの大きさを変えます。クリックか Enter で確定、Esc で取り消し。</translation>
     </message>
 </context>
 <context>
