@@ -43,7 +43,7 @@ void LightOptimisationRunner::start()
     connect(m_progress, &QProgressDialog::canceled, this, &LightOptimisationRunner::cancel);
     m_progress->setValue(0);
 
-    m_future = QtConcurrent::run([this, iterations] {
+    m_future = QtConcurrent::run([this] {
         std::shared_ptr<model::LightOptimisationReport> report;
         QString error;
         try {
@@ -62,7 +62,6 @@ void LightOptimisationRunner::start()
         } catch (const std::bad_alloc&) {
             error = tr("Not enough memory to analyse %1 × %2 pixels").arg(m_job.width).arg(m_job.height);
         }
-        Q_UNUSED(iterations)
         QMetaObject::invokeMethod(
             this, [this, report, error] { workerFinished(report, error); }, Qt::QueuedConnection);
     });
