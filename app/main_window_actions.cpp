@@ -391,11 +391,8 @@ void MainWindow::optimiseLightForStereo()
                 statusBar()->showMessage(tr("Light optimisation cancelled: the light is unchanged."), 4000);
                 return;
             }
-            int before = 0, after = 0;
-            for (const algo::SegmentStats& s : report->segmentsBefore)
-                before += s.inWindow ? 1 : 0;
-            for (const algo::SegmentStats& s : report->segmentsAfter)
-                after += s.inWindow ? 1 : 0;
+            const int before = algo::segmentsInWindow(report->segmentsBefore);
+            const int after = algo::segmentsInWindow(report->segmentsAfter);
             if (report->after == report->before) {
                 statusBar()->showMessage(
                     tr("The light already suits the analysis (%1 of %2 segments inside the window).")

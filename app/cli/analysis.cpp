@@ -105,11 +105,10 @@ int runAnalyze(const Invocation& in)
             {"milliseconds", frame.milliseconds}, {"curvature_milliseconds", frame.curvatureMilliseconds}});
         return kExitOk;
     }
-    int inside = 0;
+    const int inside = algo::segmentsInWindow(a.stats);
     QString text = Cli::tr("segment\tpixels\tratio\tin window") + QLatin1Char('\n');
     for (std::size_t i = 0; i < a.stats.size(); ++i) {
         const algo::SegmentStats& s = a.stats[i];
-        inside += s.inWindow ? 1 : 0;
         text += QStringLiteral("%1\t%2\t%3\t%4\n")
                     .arg(i)
                     .arg(s.pixels)
@@ -183,14 +182,7 @@ QJsonObject lightJson(const model::Light& light)
 int runOptimizeLight(const Invocation& in)
 {
     model::RenderJob job;
-    camera_options::checkCombination(in, false);
-    if (camera_options::byCamera(in))
-        job.camera = camera_options::explicitCamera(in);
-    if (camera_options::byView(in))
-        job.view = camera_options::view(in);
-    job.firstFrame = job.lastFrame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
-    if (in.isSet("size"))
-        job.size = parseSize("size", in.value("size"));
+    readCameraOptions(in, job);
     checkRenderMemory("size", QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height()), job.bytesNeeded());
 
     model::LightOptimisationRequest request;
@@ -221,12 +213,6 @@ int runOptimizeLight(const Invocation& in)
         doc->saveAs(path);
     }
 
-    auto inWindow = [&](const std::vector<algo::SegmentStats>& stats) {
-        int n = 0;
-        for (const algo::SegmentStats& st : stats)
-            n += st.inWindow ? 1 : 0;
-        return n;
-    };
     if (in.isSet("json")) {
         QJsonArray segments;
         for (std::size_t i = 0; i < report.segmentsBefore.size(); ++i) {
@@ -251,7 +237,9 @@ int runOptimizeLight(const Invocation& in)
             {"seed", QString::number(request.optimiser.seed)}, {"light_before", lightJson(report.before)},
             {"light_after", lightJson(report.after)}, {"objective_before", report.run.objectiveBefore},
             {"objective_after", report.run.objectiveAfter}, {"iterations", iterations}, {"segments", segments},
-            {"segments_in_window", QJsonArray{inWindow(report.segmentsBefore), inWindow(report.segmentsAfter)}},
+            {"segments_in_window",
+                QJsonArray{
+                    algo::segmentsInWindow(report.segmentsBefore), algo::segmentsInWindow(report.segmentsAfter)}},
             {"depth_error", QJsonObject{{"mse_before", report.mseBefore}, {"mse_after", report.mseAfter}}},
             {"saved", save}, {"milliseconds", report.milliseconds},
             {"optimise_milliseconds", report.optimiseMilliseconds}});
@@ -267,8 +255,8 @@ int runOptimizeLight(const Invocation& in)
     QString text
         = Cli::tr("light: %1 -> %2").arg(lightText(report.before), lightText(report.after)) + QLatin1Char('\n');
     text += Cli::tr("segments inside the window: %1 -> %2 of %3")
-                .arg(inWindow(report.segmentsBefore))
-                .arg(inWindow(report.segmentsAfter))
+                .arg(algo::segmentsInWindow(report.segmentsBefore))
+                .arg(algo::segmentsInWindow(report.segmentsAfter))
                 .arg(report.segmentsBefore.size())
         + QLatin1Char('\n');
     text += Cli::tr("depth error MSE: %1 -> %2").arg(report.mseBefore, 0, 'g', 6).arg(report.mseAfter, 0, 'g', 6)

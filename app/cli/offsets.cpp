@@ -90,11 +90,8 @@ int runOffsets(const Invocation& in)
         json.insert("converged", result.report.converged);
         json.insert("milliseconds", result.milliseconds);
         if (!in.isSet("json")) {
-            int inWindowBefore = 0, inWindowAfter = 0;
-            for (const auto& s : result.before)
-                inWindowBefore += s.inWindow ? 1 : 0;
-            for (const auto& s : result.after)
-                inWindowAfter += s.inWindow ? 1 : 0;
+            const int inWindowBefore = algo::segmentsInWindow(result.before);
+            const int inWindowAfter = algo::segmentsInWindow(result.after);
             printOut(Cli::tr("%1 segments, %2 inside the ratio window before, %3 after; depth error MSE %4 before, "
                              "%5 after (%6 ms)")
                          .arg(result.after.size())

@@ -4,6 +4,7 @@
 // its renders; so does the "WholeRun" case here: the analysis before, the iterations and the
 // analysis after, with the curvature cached as the editor has it, or computed.
 #include "bench_data.h"
+#include "test_meshes.h"
 
 #include "celform/algorithms/light_optimisation.h"
 #include "celform/model/depth_analysis.h"
@@ -11,51 +12,16 @@
 
 #include <benchmark/benchmark.h>
 
-#include <map>
-
 using namespace celform;
 
 namespace {
 
-/// The mesh with every triangle split in four at its edges' midpoints (the refined elephant,
-/// 88,928 triangles, becomes 355,712: about the 338k of the thesis's model).
-std::shared_ptr<algo::TriMesh> subdivided(const algo::TriMesh& mesh)
-{
-    auto out = std::make_shared<algo::TriMesh>();
-    std::vector<Eigen::Vector3d> v;
-    v.reserve(std::size_t(mesh.vertices.rows()) * 4);
-    for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i)
-        v.emplace_back(mesh.vertices.row(i).transpose().cast<double>());
-    std::map<std::pair<int, int>, int> middle;
-    auto split = [&](int a, int b) {
-        const auto key = std::minmax(a, b);
-        const auto found = middle.find(key);
-        if (found != middle.end())
-            return found->second;
-        v.push_back(0.5 * (v[std::size_t(a)] + v[std::size_t(b)]));
-        return middle[key] = int(v.size()) - 1;
-    };
-    out->faces.resize(mesh.faces.rows() * 4, 3);
-    for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
-        const int a = mesh.faces(f, 0), b = mesh.faces(f, 1), c = mesh.faces(f, 2);
-        const int ab = split(a, b), bc = split(b, c), ca = split(c, a);
-        out->faces.row(4 * f + 0) << a, ab, ca;
-        out->faces.row(4 * f + 1) << b, bc, ab;
-        out->faces.row(4 * f + 2) << c, ca, bc;
-        out->faces.row(4 * f + 3) << ab, bc, ca;
-    }
-    out->vertices.resize(Eigen::Index(v.size()), 3);
-    for (std::size_t i = 0; i < v.size(); ++i)
-        out->vertices.row(Eigen::Index(i)) = v[i].transpose().cast<float>();
-    return out;
-}
-
 std::shared_ptr<const algo::TriMesh> model338k()
 {
-    static std::shared_ptr<algo::TriMesh> mesh;
+    static std::shared_ptr<const algo::TriMesh> mesh;
     if (!mesh)
         if (const algo::TriMesh* elephant = bench::sharedMesh("meshes/cgal_refined_elephant.off"))
-            mesh = subdivided(*elephant);
+            mesh = test::subdivided(*elephant); // 88,928 triangles become 355,712: about the thesis's 338k
     return mesh;
 }
 

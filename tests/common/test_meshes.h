@@ -13,44 +13,58 @@
 
 namespace celform::test {
 
+/// The mesh with every triangle split in four at its edges' midpoints (corner triangles first, the
+/// middle one last); onSphere puts the new vertices on the unit sphere (for icosphere).
+inline std::shared_ptr<algo::TriMesh> subdivided(const algo::TriMesh& mesh, bool onSphere = false)
+{
+    std::vector<Eigen::Vector3f> v;
+    v.reserve(std::size_t(mesh.vertices.rows()) * 4);
+    for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i)
+        v.emplace_back(mesh.vertices.row(i).transpose());
+    std::map<std::pair<int, int>, int> middle;
+    auto split = [&](int a, int b) {
+        const auto key = std::minmax(a, b);
+        const auto found = middle.find(key);
+        if (found != middle.end())
+            return found->second;
+        const Eigen::Vector3f sum = v[std::size_t(a)] + v[std::size_t(b)];
+        v.push_back(onSphere ? Eigen::Vector3f(sum.normalized()) : Eigen::Vector3f(0.5f * sum));
+        return middle[key] = int(v.size()) - 1;
+    };
+    auto out = std::make_shared<algo::TriMesh>();
+    out->faces.resize(mesh.faces.rows() * 4, 3);
+    for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
+        const int t0 = mesh.faces(f, 0), t1 = mesh.faces(f, 1), t2 = mesh.faces(f, 2);
+        const int a = split(t0, t1), b = split(t1, t2), c = split(t2, t0);
+        out->faces.row(4 * f + 0) << t0, a, c;
+        out->faces.row(4 * f + 1) << t1, b, a;
+        out->faces.row(4 * f + 2) << t2, c, b;
+        out->faces.row(4 * f + 3) << a, b, c;
+    }
+    out->vertices.resize(Eigen::Index(v.size()), 3);
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out->vertices.row(Eigen::Index(i)) = v[i].transpose();
+    return out;
+}
+
 /// A unit icosphere with 10 * 4^s + 2 vertices (2562 for s = 4).
 inline std::shared_ptr<algo::TriMesh> icosphere(int subdivisions)
 {
     const float t = (1.f + std::sqrt(5.f)) / 2.f;
-    std::vector<Eigen::Vector3f> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-        {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9},
-        {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
-        {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-    for (auto& p : v)
-        p.normalize();
-    for (int s = 0; s < subdivisions; ++s) {
-        std::map<std::pair<int, int>, int> middle;
-        auto split = [&](int a, int b) {
-            const auto key = std::minmax(a, b);
-            const auto found = middle.find(key);
-            if (found != middle.end())
-                return found->second;
-            v.push_back((v[std::size_t(a)] + v[std::size_t(b)]).normalized());
-            return middle[key] = int(v.size()) - 1;
-        };
-        std::vector<std::array<int, 3>> finer;
-        for (const auto& tri : f) {
-            const int a = split(tri[0], tri[1]), b = split(tri[1], tri[2]), c = split(tri[2], tri[0]);
-            finer.push_back({tri[0], a, c});
-            finer.push_back({tri[1], b, a});
-            finer.push_back({tri[2], c, b});
-            finer.push_back({a, b, c});
-        }
-        f = std::move(finer);
-    }
+    const std::array<Eigen::Vector3f, 12> v = {{{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+        {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}}};
+    const int f[20][3] = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4}, {11, 10, 2},
+        {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10},
+        {8, 6, 7}, {9, 8, 1}};
     auto mesh = std::make_shared<algo::TriMesh>();
-    mesh->vertices.resize(Eigen::Index(v.size()), 3);
+    mesh->vertices.resize(12, 3);
     for (std::size_t i = 0; i < v.size(); ++i)
-        mesh->vertices.row(Eigen::Index(i)) = v[i];
-    mesh->faces.resize(Eigen::Index(f.size()), 3);
-    for (std::size_t i = 0; i < f.size(); ++i)
-        mesh->faces.row(Eigen::Index(i)) << f[i][0], f[i][1], f[i][2];
+        mesh->vertices.row(Eigen::Index(i)) = v[i].normalized().transpose();
+    mesh->faces.resize(20, 3);
+    for (int i = 0; i < 20; ++i)
+        mesh->faces.row(i) << f[i][0], f[i][1], f[i][2];
+    for (int s = 0; s < subdivisions; ++s)
+        mesh = subdivided(*mesh, true);
     return mesh;
 }
 

@@ -34,14 +34,6 @@ model::LightOptimisationReport run(
     return model::optimiseLightForJob(data, QStringLiteral("test.celform"), job, {});
 }
 
-int inWindow(const std::vector<algo::SegmentStats>& stats)
-{
-    int n = 0;
-    for (const algo::SegmentStats& s : stats)
-        n += s.inWindow ? 1 : 0;
-    return n;
-}
-
 } // namespace
 
 class TestLightOptimisationModel : public QObject {
@@ -99,11 +91,12 @@ private slots:
             QVERIFY(std::abs(report.run.ratioAfter[s] - after.analysis.stats[s].ratio) <= 5e-4f);
         }
         qInfo("dented sphere: MSE %.6g -> %.6g, %d -> %d of %d segments, light (%.3f %.3f %.3f) -> (%.3f %.3f %.3f)",
-            report.mseBefore, report.mseAfter, inWindow(report.segmentsBefore), inWindow(report.segmentsAfter),
-            int(report.segmentsBefore.size()), report.before.vector.x(), report.before.vector.y(),
-            report.before.vector.z(), report.after.vector.x(), report.after.vector.y(), report.after.vector.z());
+            report.mseBefore, report.mseAfter, algo::segmentsInWindow(report.segmentsBefore),
+            algo::segmentsInWindow(report.segmentsAfter), int(report.segmentsBefore.size()), report.before.vector.x(),
+            report.before.vector.y(), report.before.vector.z(), report.after.vector.x(), report.after.vector.y(),
+            report.after.vector.z());
         QVERIFY(report.mseAfter < report.mseBefore);
-        QVERIFY(inWindow(report.segmentsAfter) > inWindow(report.segmentsBefore));
+        QVERIFY(algo::segmentsInWindow(report.segmentsAfter) > algo::segmentsInWindow(report.segmentsBefore));
     }
 
     void lowersTheDepthErrorOfRealModels_data()
@@ -123,8 +116,8 @@ private slots:
         const model::LightOptimisationReport report = run(data, {480, 360});
         qInfo("%s: MSE %.6g -> %.6g, %d -> %d of %d segments in the window, light (%.3f %.3f %.3f), %.0f ms "
               "(iterations %.1f ms)",
-            qPrintable(file), report.mseBefore, report.mseAfter, inWindow(report.segmentsBefore),
-            inWindow(report.segmentsAfter), int(report.segmentsBefore.size()), report.after.vector.x(),
+            qPrintable(file), report.mseBefore, report.mseAfter, algo::segmentsInWindow(report.segmentsBefore),
+            algo::segmentsInWindow(report.segmentsAfter), int(report.segmentsBefore.size()), report.after.vector.x(),
             report.after.vector.y(), report.after.vector.z(), report.milliseconds, report.optimiseMilliseconds);
         QVERIFY(report.run.objectiveAfter < report.run.objectiveBefore);
         QVERIFY2(report.mseAfter < report.mseBefore,

@@ -89,6 +89,14 @@ void computeDepthError(const std::vector<float>& depth, const ImageRGBA& beauty,
     out.maxAbsError = maxAbs;
 }
 
+int segmentsInWindow(const std::vector<SegmentStats>& stats)
+{
+    int n = 0;
+    for (const SegmentStats& s : stats)
+        n += s.inWindow ? 1 : 0;
+    return n;
+}
+
 void analyzeDepth(const GBuffer& g, const std::vector<Eigen::Vector3f>& normals, const ImageRGBA& beauty,
     const Faces& faces, const std::vector<float>& vertexCurvature, const DepthAnalysisSettings& settings,
     DepthAnalysis& out)

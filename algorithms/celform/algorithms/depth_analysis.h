@@ -76,6 +76,9 @@ struct DepthAnalysis {
     DistanceTransformScratch scratch;
 };
 
+/// How many segments have their ratio inside the window.
+[[nodiscard]] int segmentsInWindow(const std::vector<SegmentStats>& stats);
+
 /// Equation 4.2 (listing 4.5): d(l.n/|l|)/dl = (-(l.n)/(l.l) l + n) / |l|, with l the vector from
 /// the surface point to the light. Zero when l is zero.
 Eigen::Vector3f shadingLightDerivative(const Eigen::Vector3f& l, const Eigen::Vector3f& n);

@@ -126,7 +126,8 @@ void gatherShadingSamples(const GBuffer& g, const std::vector<Eigen::Vector3f>& 
         resizeTo(*v, total);
     if (!sized)
         return;
-    std::vector<std::int32_t> cursor(out.segmentStart.begin(), out.segmentStart.end() - 1);
+    std::vector<std::int32_t>& cursor = out.cursor;
+    cursor.assign(out.segmentStart.begin(), out.segmentStart.end() - 1);
     auto vertexOffset = [offsets](std::int32_t v) {
         return offsets && std::size_t(v) < offsets->size() ? (*offsets)[std::size_t(v)] : 0.f;
     };

@@ -65,6 +65,7 @@ struct ShadingSamples {
     /// Per segment the sum of its normals. For a directional light eq. 4.2 is linear in n, so the
     /// segment's gradient needs no pass over its pixels.
     std::vector<Eigen::Vector3d> normalSum;
+    std::vector<std::int32_t> cursor; ///< working memory of gatherShadingSamples
     [[nodiscard]] int segmentCount() const { return int(segmentStart.empty() ? 0 : segmentStart.size() - 1); }
     [[nodiscard]] std::int32_t pixels(int s) const
     {

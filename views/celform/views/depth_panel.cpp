@@ -309,7 +309,6 @@ algo::LightOptimisationSettings DepthPanel::lightSettings() const
     algo::LightOptimisationSettings s;
     s.method = algo::LightMethod(m_method->currentData().toInt());
     s.weight = algo::SegmentWeight(m_weight->currentData().toInt());
-    s.window = m_runner->settings().window;
     return s;
 }
 
@@ -330,9 +329,7 @@ void DepthPanel::showResult()
         return;
     }
     m_mse->setText(tr("Depth error MSE: %1").arg(result->meanSquaredError, 0, 'g', 4));
-    int inside = 0;
-    for (const algo::SegmentStats& s : result->segmentStats)
-        inside += s.inWindow ? 1 : 0;
+    const int inside = algo::segmentsInWindow(result->segmentStats);
     m_details->setText(
         tr("RMSE %1 model units · %2 of %3 segments inside the window · features on %4% of %5 model pixels · "
            "%6 x %7 px in %8 ms")

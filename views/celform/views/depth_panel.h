@@ -41,8 +41,8 @@ public:
     [[nodiscard]] QLabel* errorLabel() const { return m_mse; }
     /// The button of the Optimise Light for Stereo action (the window owns the action).
     void setOptimiseLightAction(QAction* action);
-    /// The method, weight and iterations chosen in the panel (the window and the scale come from
-    /// the analysis settings and the shape).
+    /// The method and weight chosen in the panel (the window, the scale and the centre come from
+    /// the analysis settings and the shape: model::optimiseLight fills them in).
     [[nodiscard]] algo::LightOptimisationSettings lightSettings() const;
 
 signals:
