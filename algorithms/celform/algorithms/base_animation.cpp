@@ -1,0 +1,116 @@
+// Evaluation of an animated base model: morph targets, then linear blend skinning (paper 1,
+// section 4.1 takes the animated base as given; glTF 2.0's skinning and morph-target sections fix
+// the order: targets displace the rest positions, then the joints move the result).
+#include "celform/algorithms/base_animation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace celform::algo {
+
+int BaseAnimation::sampleOf(int frame) const
+{
+    if (frameCount <= 0)
+        return 0;
+    return std::clamp(frame - firstFrame, 0, frameCount - 1);
+}
+
+std::string BaseAnimation::problem(Eigen::Index vertexCount) const
+{
+    if (frameCount <= 0)
+        return "the animation has no frames";
+    for (std::size_t t = 0; t < morphTargets.size(); ++t) {
+        if (morphTargets[t].rows() != vertexCount)
+            return "morph target " + std::to_string(t) + " has " + std::to_string(morphTargets[t].rows())
+                + " vertices, the base model " + std::to_string(vertexCount);
+        if (!morphTargets[t].allFinite())
+            return "morph target " + std::to_string(t) + " has a coordinate that is not a finite number";
+    }
+    if (morphWeights.size() != morphTargets.size() * std::size_t(frameCount))
+        return "the morph weights do not cover every target at every frame";
+    if (!std::all_of(morphWeights.begin(), morphWeights.end(), [](float w) { return std::isfinite(w); }))
+        return "a morph weight is not a finite number";
+    if (jointCount < 0)
+        return "negative joint count";
+    if (jointCount > 0 || !joints.empty()) {
+        if (joints.size() != std::size_t(vertexCount) || jointWeights.size() != std::size_t(vertexCount))
+            return "the skin does not give joints and weights for every vertex";
+        if (skinMatrices.size() != std::size_t(jointCount) * std::size_t(frameCount))
+            return "the skin does not give every joint's matrix at every frame";
+        for (std::size_t v = 0; v < joints.size(); ++v)
+            for (int i = 0; i < 4; ++i)
+                if (jointWeights[v][i] != 0.0f && joints[v][std::size_t(i)] >= jointCount)
+                    return "vertex " + std::to_string(v) + " names joint " + std::to_string(joints[v][std::size_t(i)])
+                        + " of " + std::to_string(jointCount);
+        for (const SkinMatrix& m : skinMatrices)
+            if (!m.allFinite())
+                return "a joint matrix is not finite";
+        for (const Eigen::Vector4f& w : jointWeights)
+            if (!w.allFinite())
+                return "a joint weight is not a finite number";
+    }
+    return {};
+}
+
+void BaseAnimation::evaluate(const Positions& rest, int frame, Positions& out) const
+{
+    if (out.rows() != rest.rows())
+        out.resize(rest.rows(), 3);
+    if (frameCount <= 0) {
+        out = rest;
+        return;
+    }
+    const std::size_t s = std::size_t(sampleOf(frame));
+    const std::size_t targets = morphTargets.size();
+    const Eigen::Index n = rest.rows();
+    if (!skinned()) {
+        out = rest;
+        for (std::size_t t = 0; t < targets; ++t) {
+            const float w = morphWeights[s * targets + t];
+            if (w == 0.0f)
+                continue;
+            if (w == 1.0f)
+                out.noalias() += morphTargets[t];
+            else
+                out.noalias() += w * morphTargets[t];
+        }
+        return;
+    }
+    // Skinned: morph each vertex, then blend its joints' matrices and move it. One pass over the
+    // vertices, the weighted targets gathered first so that the inner loop only reads.
+    std::vector<std::pair<const float*, float>> active;
+    active.reserve(targets);
+    for (std::size_t t = 0; t < targets; ++t)
+        if (const float w = morphWeights[s * targets + t]; w != 0.0f)
+            active.emplace_back(morphTargets[t].data(), w);
+    const SkinMatrix* matrices = skinMatrices.data() + s * std::size_t(jointCount);
+    const float* restData = rest.data();
+    float* outData = out.data();
+    for (Eigen::Index v = 0; v < n; ++v) {
+        Eigen::Vector4f p(restData[3 * v], restData[3 * v + 1], restData[3 * v + 2], 1.0f);
+        for (const auto& [delta, w] : active) {
+            p[0] += w * delta[3 * v];
+            p[1] += w * delta[3 * v + 1];
+            p[2] += w * delta[3 * v + 2];
+        }
+        const Eigen::Vector4f& jw = jointWeights[std::size_t(v)];
+        const auto& ji = joints[std::size_t(v)];
+        SkinMatrix m = jw[0] * matrices[ji[0]];
+        for (int i = 1; i < 4; ++i)
+            if (jw[i] != 0.0f)
+                m.noalias() += jw[i] * matrices[ji[std::size_t(i)]];
+        const Eigen::Vector3f q = m * p;
+        outData[3 * v] = q[0];
+        outData[3 * v + 1] = q[1];
+        outData[3 * v + 2] = q[2];
+    }
+}
+
+bool BaseAnimation::operator==(const BaseAnimation& o) const
+{
+    return firstFrame == o.firstFrame && frameCount == o.frameCount && morphTargets == o.morphTargets
+        && morphWeights == o.morphWeights && joints == o.joints && jointWeights == o.jointWeights
+        && jointCount == o.jointCount && skinMatrices == o.skinMatrices;
+}
+
+} // namespace celform::algo

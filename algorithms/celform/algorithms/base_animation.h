@@ -1,0 +1,55 @@
+// An animated base model (paper 1, section 4.1): the base mesh's vertices moved over time by
+// morph targets and linear blend skinning, sampled at whole frames. A vertex sequence (OBJ/PLY
+// frames) is stored as one morph target per frame with a one-hot weight.
+#pragma once
+
+#include "celform/algorithms/tri_mesh.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace celform::algo {
+
+/// A joint's skinning matrix at a frame: its global transform times its inverse bind matrix, in
+/// the base model's space (3 rows by 4 columns; the last row of the affine matrix is implied).
+using SkinMatrix = Eigen::Matrix<float, 3, 4>;
+
+struct BaseAnimation {
+    int firstFrame = 0; ///< the project frame of sample 0
+    int frameCount = 0; ///< samples; frames outside [firstFrame, firstFrame + frameCount) hold the ends
+
+    /// Dense per-vertex deltas of each morph target (#V by 3 each).
+    std::vector<Positions> morphTargets;
+    /// Weights per sample, sample-major: morphWeights[s * morphTargets.size() + t].
+    std::vector<float> morphWeights;
+
+    /// Linear blend skinning: up to four influences per vertex (weights summing to 1; unused
+    /// influences have weight 0). Empty when the base is not skinned.
+    std::vector<std::array<std::uint16_t, 4>> joints;
+    std::vector<Eigen::Vector4f> jointWeights;
+    int jointCount = 0;
+    /// Skinning matrices per sample, sample-major: skinMatrices[s * jointCount + j].
+    std::vector<SkinMatrix, Eigen::aligned_allocator<SkinMatrix>> skinMatrices;
+
+    [[nodiscard]] bool empty() const { return frameCount <= 0; }
+    [[nodiscard]] int lastFrame() const { return firstFrame + frameCount - 1; }
+    [[nodiscard]] bool skinned() const { return jointCount > 0 && !joints.empty(); }
+    /// The sample a frame reads (held at the ends).
+    [[nodiscard]] int sampleOf(int frame) const;
+
+    /// The first inconsistency for a base of vertexCount vertices, empty when valid: sizes,
+    /// finite values, joint indices below jointCount.
+    [[nodiscard]] std::string problem(Eigen::Index vertexCount) const;
+
+    /// The base's vertices at a frame: (rest + sum_t w_t * delta_t), then skinned. out is resized
+    /// only when its size differs (no allocation per frame otherwise).
+    void evaluate(const Positions& rest, int frame, Positions& out) const;
+
+    bool operator==(const BaseAnimation& o) const;
+};
+
+} // namespace celform::algo
