@@ -28,3 +28,5 @@ endif()
 find_package(assimp REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(tinyobjloader REQUIRED)
+# glTF 2.0 animated bases (skins, morph targets) and export (Debian: libtinygltf-dev).
+find_package(TinyGLTF REQUIRED)
