@@ -76,27 +76,29 @@ void BaseAnimation::evaluate(const Positions& rest, int frame, Positions& out) c
         }
         return;
     }
-    // Skinned: morph each vertex, then blend its joints' matrices and move it. One pass over the
-    // vertices, the weighted targets gathered first so that the inner loop only reads.
-    std::vector<std::pair<const float*, float>> active;
-    active.reserve(targets);
-    for (std::size_t t = 0; t < targets; ++t)
-        if (const float w = morphWeights[s * targets + t]; w != 0.0f)
-            active.emplace_back(morphTargets[t].data(), w);
+    // Skinned: morph each vertex, then blend its joints' matrices and move it, in one pass over the
+    // vertices. Nothing is allocated: the weights are read in place, zero ones skipped. An unused
+    // influence (weight 0) may name any joint, even one past jointCount (problem() allows it), so
+    // its matrix is never read.
+    const float* weights = morphWeights.data() + s * targets;
     const SkinMatrix* matrices = skinMatrices.data() + s * std::size_t(jointCount);
     const float* restData = rest.data();
     float* outData = out.data();
     for (Eigen::Index v = 0; v < n; ++v) {
         Eigen::Vector4f p(restData[3 * v], restData[3 * v + 1], restData[3 * v + 2], 1.0f);
-        for (const auto& [delta, w] : active) {
-            p[0] += w * delta[3 * v];
-            p[1] += w * delta[3 * v + 1];
-            p[2] += w * delta[3 * v + 2];
+        for (std::size_t t = 0; t < targets; ++t) {
+            const float w = weights[t];
+            if (w == 0.0f)
+                continue;
+            const float* delta = morphTargets[t].data() + 3 * v;
+            p[0] += w * delta[0];
+            p[1] += w * delta[1];
+            p[2] += w * delta[2];
         }
         const Eigen::Vector4f& jw = jointWeights[std::size_t(v)];
         const auto& ji = joints[std::size_t(v)];
-        SkinMatrix m = jw[0] * matrices[ji[0]];
-        for (int i = 1; i < 4; ++i)
+        SkinMatrix m = SkinMatrix::Zero();
+        for (int i = 0; i < 4; ++i)
             if (jw[i] != 0.0f)
                 m.noalias() += jw[i] * matrices[ji[std::size_t(i)]];
         const Eigen::Vector3f q = m * p;
