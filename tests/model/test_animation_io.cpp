@@ -15,6 +15,8 @@
 #include <cstring>
 #include <limits>
 
+#include <sys/stat.h> // mkfifo
+
 using celform::algo::Positions;
 using celform::model::AnimatedImport;
 using celform::model::IoError;
@@ -276,6 +278,8 @@ private slots:
     void sequenceMismatch();
     void badFiles_data();
     void badFiles();
+    void buffersAreRegularFiles_data();
+    void buffersAreRegularFiles();
     void realFiles();
 };
 
@@ -563,6 +567,17 @@ void TestAnimationIo::badFiles_data()
 
     GltfBuilder endless = movingTriangle({0, 1e30f}, {0, 0, 0, 1, 0, 0}, "LINEAR");
     QTest::newRow("endless animation") << "forever.gltf" << bytesOf(endless, "f.gltf") << "frames Celform can load";
+    GltfBuilder draco = morphTriangle();
+    draco.m.extensionsUsed = {"KHR_draco_mesh_compression"};
+    draco.m.extensionsRequired = {"KHR_draco_mesh_compression"};
+    QTest::newRow("compressed") << "draco.gltf" << bytesOf(draco, "d.gltf") << "KHR_draco_mesh_compression";
+    QTest::newRow("deeply nested JSON") << "deep.gltf" << QByteArray(200000, '[') << "nested more than 100 levels";
+    QTest::newRow("deep balanced JSON") << "deep2.gltf" << QByteArray(100000, '[') + QByteArray(100000, ']')
+                                        << "nested more than 100 levels";
+    QTest::newRow("deep extras") << "extras.gltf"
+                                 << R"({"asset":{"version":"2.0","extras":)" + QByteArray(100000, '[')
+            + QByteArray(100000, ']') + "}}"
+                                 << "nested more than 100 levels";
     QTest::newRow("no numbered file") << "plain.obj" << QByteArray("v 0 0 0\n") << "not an animated base";
 }
 
@@ -586,6 +601,39 @@ void TestAnimationIo::badFiles()
     const QString missing = dir.filePath(QStringLiteral("missing.glb"));
     QVERIFY(!isAnimatedBaseFile(missing));
     QVERIFY_THROWS_EXCEPTION(IoError, readAnimatedBase(missing));
+}
+
+void TestAnimationIo::buffersAreRegularFiles_data()
+{
+    QTest::addColumn<QString>("uri");
+    QTest::newRow("fifo") << "pipe.bin";
+    QTest::newRow("device") << "/dev/zero";
+    QTest::newRow("folder") << "folder";
+    QTest::newRow("missing") << "absent.bin";
+}
+
+// As for importMesh (issue 14): a buffer naming a FIFO would block the read for ever, /dev/zero
+// would be read without end. Only regular files are opened.
+void TestAnimationIo::buffersAreRegularFiles()
+{
+    QFETCH(QString, uri);
+    QTemporaryDir dir;
+    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath(QStringLiteral("pipe.bin"))).constData(), 0600) == 0);
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("folder")));
+    const QByteArray json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],
+      "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36}],
+      "buffers":[{"byteLength":4000000000,"uri":")"
+        + uri.toUtf8() + R"("}]})";
+    const QString path = writeFile(dir, QStringLiteral("buffer.gltf"), json);
+    try {
+        readAnimatedBase(path);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), path);
+        QVERIFY2(e.problem().contains(QStringLiteral("not a readable glTF file")), qPrintable(e.message()));
+    }
 }
 
 // The glTF files the repository holds (static ones: one sample, no joints), and the fuzz

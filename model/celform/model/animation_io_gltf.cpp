@@ -1,16 +1,10 @@
 // glTF 2.0 / GLB as an animated base: the scene's triangles merged into one rest mesh, skins as
 // linear blend skinning, morph targets as dense deltas, the first animation sampled at whole
-// frames. tinygltf parses; every index and count it hands over is checked here before use.
+// frames. tinygltf parses (animation_io_gltf_load.cpp); every index and count it hands over is
+// checked here before use.
 #include "celform/model/animation_io_gltf.h"
 
 #include "celform/model/mesh_io_common.h"
-
-#include <QFile>
-#include <QFileInfo>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
-#include <QtEndian>
 
 #include <Eigen/LU>
 
@@ -20,103 +14,6 @@
 #include <map>
 
 namespace celform::model::animio {
-
-namespace gltf {
-
-namespace {
-
-// tinygltf's file access, confined like mesh_io's Assimp reader: regular files only (a buffer
-// naming a FIFO would block for ever, /dev/zero be read without end), no shell expansion of
-// paths, no writing, and no image files (Celform takes only the base colour of a material).
-bool fileExists(const std::string& file, void*)
-{
-    return QFileInfo(QString::fromStdString(file)).isFile();
-}
-
-std::string expandPath(const std::string& file, void*)
-{
-    return file;
-}
-
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& file, void*)
-{
-    const QString path = QString::fromStdString(file);
-    static const QStringList kImages = {QStringLiteral("png"), QStringLiteral("jpg"), QStringLiteral("jpeg"),
-        QStringLiteral("webp"), QStringLiteral("ktx2"), QStringLiteral("dds"), QStringLiteral("bmp")};
-    const QFileInfo info(path);
-    if (kImages.contains(info.suffix().toLower())) {
-        *err = "images are not read";
-        return false;
-    }
-    QFile f(path);
-    if (!info.isFile() || !f.open(QIODevice::ReadOnly) || f.isSequential()) {
-        *err = "not a readable regular file";
-        return false;
-    }
-    if (f.size() > qint64(std::numeric_limits<std::uint32_t>::max())) {
-        *err = "larger than 4 GB";
-        return false;
-    }
-    out->resize(std::size_t(f.size()));
-    if (f.read(reinterpret_cast<char*>(out->data()), f.size()) != f.size()) {
-        *err = f.errorString().toStdString();
-        return false;
-    }
-    return true;
-}
-
-bool refuseWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*)
-{
-    return false;
-}
-
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*)
-{
-    return true;
-}
-
-/// tinygltf's error text on one line, shortened.
-QString readableError(const std::string& err)
-{
-    QString text = QString::fromStdString(err).simplified();
-    if (text.isEmpty())
-        text = AnimationIo::tr("unknown error");
-    if (text.size() > 200)
-        text = text.left(197) + QStringLiteral("...");
-    return text;
-}
-
-bool isGlb(const char* data, std::size_t size)
-{
-    return size >= 4 && std::memcmp(data, "glTF", 4) == 0;
-}
-
-} // namespace
-
-Source load(const QString& path)
-{
-    const meshio::FileBytes bytes(path); // missing, empty, not a regular file: refused here
-    if (bytes.size() > std::numeric_limits<unsigned int>::max())
-        throw IoError(path, AnimationIo::tr("the file is larger than the 4 GB glTF allows"));
-    Source src;
-    src.path = path;
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skipImage, nullptr);
-    loader.SetFsCallbacks({&fileExists, &expandPath, &readWholeFile, &refuseWrite, nullptr});
-    std::string err;
-    std::string warn;
-    const std::string folder = QFile::encodeName(QFileInfo(path).absolutePath()).toStdString();
-    const auto size = static_cast<unsigned int>(bytes.size());
-    const bool ok = isGlb(bytes.data(), bytes.size())
-        ? loader.LoadBinaryFromMemory(
-            &src.model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, folder)
-        : loader.LoadASCIIFromString(&src.model, &err, &warn, bytes.data(), size, folder);
-    if (!ok)
-        throw IoError(path, AnimationIo::tr("not a readable glTF file: %1").arg(readableError(err)));
-    return src;
-}
-
-} // namespace gltf
 
 namespace {
 
@@ -491,11 +388,14 @@ AnimatedImport readGltfAnimation(const QString& path, double fps)
                 const Eigen::Vector4d q = transform * p4;
                 merged.positions.insert(merged.positions.end(), {float(q[0]), float(q[1]), float(q[2])});
             }
-            appendTriangles(mode, list, base, merged);
-            if (std::int64_t(merged.indices.size() / 3) > meshio::kMaxMeshTriangles)
+            // Checked before appending: a list of a billion indices into one vertex is short to store.
+            const std::size_t added
+                = mode == TINYGLTF_MODE_TRIANGLES ? list.size() / 3 : std::max<std::size_t>(list.size(), 2) - 2;
+            if (std::int64_t(merged.indices.size() / 3 + added) > meshio::kMaxMeshTriangles)
                 throw IoError(path,
                     AnimationIo::tr("the scene has more than the %1 triangles Celform can load")
                         .arg(meshio::kMaxMeshTriangles));
+            appendTriangles(mode, list, base, merged);
             if (!materials.empty()) {
                 int material = prim.material;
                 if (material >= int(materials.size()))
@@ -654,31 +554,6 @@ AnimatedImport readGltfAnimation(const QString& path, double fps)
     }
     out.mesh = std::move(mesh);
     return out;
-}
-
-bool gltfIsAnimated(const QString& path)
-{
-    const meshio::FileBytes bytes(path);
-    QByteArray json;
-    if (gltf::isGlb(bytes.data(), bytes.size())) {
-        if (bytes.size() < 20)
-            return false;
-        const auto length = qFromLittleEndian<quint32>(bytes.data() + 12);
-        if (length > bytes.size() - 20)
-            return false;
-        json = QByteArray::fromRawData(bytes.data() + 20, qsizetype(length));
-    } else {
-        json = QByteArray::fromRawData(bytes.data(), qsizetype(bytes.size()));
-    }
-    const QJsonObject root = QJsonDocument::fromJson(json).object();
-    if (!root.value(QStringLiteral("animations")).toArray().isEmpty()
-        || !root.value(QStringLiteral("skins")).toArray().isEmpty())
-        return true;
-    for (const QJsonValue mesh : root.value(QStringLiteral("meshes")).toArray())
-        for (const QJsonValue prim : mesh.toObject().value(QStringLiteral("primitives")).toArray())
-            if (!prim.toObject().value(QStringLiteral("targets")).toArray().isEmpty())
-                return true;
-    return false;
 }
 
 } // namespace celform::model::animio

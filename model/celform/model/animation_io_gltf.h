@@ -20,8 +20,8 @@ struct Source {
     tinygltf::Model model;
 };
 
-/// Parses the .gltf or .glb file (external buffers from regular files only, images not decoded).
-/// Throws IoError for a missing, empty, truncated or malformed file.
+/// animation_io_gltf_load.cpp: parses the .gltf or .glb file (external buffers from regular files
+/// only, images not decoded). Throws IoError for a missing, empty, truncated or malformed file.
 Source load(const QString& path);
 
 /// animation_io_gltf_accessor.cpp: the elements of accessor `index`, which must have the glTF
