@@ -3,6 +3,8 @@
 // with the file named. The glTF files are built here with tinygltf's writer.
 #include "celform/model/animation_io.h"
 #include "celform/model/io_error.h"
+#include "gltf_buffer_fixture.h"
+#include "io_test_support.h"
 #include "test_support.h"
 
 #include <tiny_gltf.h>
@@ -15,35 +17,17 @@
 #include <cstring>
 #include <limits>
 
-#include <sys/stat.h> // mkfifo
-
 using celform::algo::Positions;
 using celform::model::AnimatedImport;
 using celform::model::IoError;
 using celform::model::isAnimatedBaseFile;
 using celform::model::readAnimatedBase;
 
-/// Runs a read expected to succeed; an IoError fails the test instead of aborting the run.
-#define CELFORM_READ_OR_FAIL(var, expr)                                                                                \
-    AnimatedImport var;                                                                                                \
-    try {                                                                                                              \
-        var = (expr);                                                                                                  \
-    } catch (const IoError& e) {                                                                                       \
-        QFAIL(qPrintable(e.message()));                                                                                \
-    }
-
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
-{
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size())
-        qFatal("cannot write %s", qPrintable(path));
-    return path;
-}
+using celform::test::writeFile;
 
 QByteArray readBytes(const QString& path)
 {
@@ -217,6 +201,20 @@ QByteArray rowsText(const Positions& p)
     return s;
 }
 
+/// Whether reading `read` is refused with an IoError naming `named` whose problem, on one line,
+/// contains `problem`; message gets the error's one-line message (or says there was none).
+bool refused(const QString& read, const QString& named, const QString& problem, QString& message)
+{
+    try {
+        readAnimatedBase(read);
+        message = QStringLiteral("no IoError");
+        return false;
+    } catch (const IoError& e) {
+        message = e.message();
+        return e.file() == named && e.problem().contains(problem) && !e.problem().contains(QLatin1Char('\n'));
+    }
+}
+
 #define CELFORM_COMPARE_POSITIONS(got, expected)                                                                       \
     QVERIFY2(near(got, expected), ("got " + rowsText(got) + "expected " + rowsText(expected)).constData())
 
@@ -272,6 +270,7 @@ private slots:
     void stepAndCubicSpline_data();
     void stepAndCubicSpline();
     void sparseAndStride();
+    void mergeOrder();
     void sequence_data();
     void sequence();
     void sequenceMismatch_data();
@@ -296,7 +295,7 @@ void TestAnimationIo::skinnedStripRotatingJoint()
     QTemporaryDir dir;
     const QString path = skinnedStrip(shortJoints).write(dir, QStringLiteral("strip.gltf"));
     QVERIFY(isAnimatedBaseFile(path));
-    CELFORM_READ_OR_FAIL(r, readAnimatedBase(path, 24.0))
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(path, 24.0))
     QCOMPARE(r.fps, 24.0);
     QCOMPARE(r.animation.firstFrame, 0);
     QCOMPARE(r.animation.frameCount, 25); // t = 0 .. 1 s at 24 fps, both ends included
@@ -317,11 +316,11 @@ void TestAnimationIo::glbRoundTrip()
 {
     QTemporaryDir dir;
     const GltfBuilder b = skinnedStrip(false);
-    CELFORM_READ_OR_FAIL(text, readAnimatedBase(b.write(dir, QStringLiteral("strip.gltf")), 30.0))
+    CELFORM_IMPORT_OR_FAIL(text, readAnimatedBase(b.write(dir, QStringLiteral("strip.gltf")), 30.0))
     const QString glb = b.write(dir, QStringLiteral("strip.glb"));
     QVERIFY(readBytes(glb).startsWith("glTF"));
     QVERIFY(isAnimatedBaseFile(glb));
-    CELFORM_READ_OR_FAIL(binary, readAnimatedBase(glb, 30.0))
+    CELFORM_IMPORT_OR_FAIL(binary, readAnimatedBase(glb, 30.0))
     QCOMPARE(binary.animation.frameCount, 31);
     QVERIFY(*binary.mesh == *text.mesh);
     QVERIFY(binary.animation == text.animation);
@@ -334,7 +333,7 @@ void TestAnimationIo::morphWeightsLinear()
     b.channel(0, "weights", {0, 1}, {0, 1}, TINYGLTF_TYPE_SCALAR);
     const QString path = b.write(dir, QStringLiteral("morph.gltf"));
     QVERIFY(isAnimatedBaseFile(path));
-    CELFORM_READ_OR_FAIL(r, readAnimatedBase(path))
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(path))
     QCOMPARE(r.animation.frameCount, 25);
     QCOMPARE(r.animation.morphTargets.size(), std::size_t(1));
     QVERIFY(!r.animation.skinned()); // a morph alone needs no joints
@@ -351,7 +350,7 @@ void TestAnimationIo::morphWeightsLinear()
     // Without a channel the mesh's default weight holds at the one sample.
     GltfBuilder still = morphTriangle();
     still.m.meshes[0].weights = {0.25};
-    CELFORM_READ_OR_FAIL(s, readAnimatedBase(still.write(dir, QStringLiteral("still.gltf"))))
+    CELFORM_IMPORT_OR_FAIL(s, readAnimatedBase(still.write(dir, QStringLiteral("still.gltf"))))
     QCOMPARE(s.animation.frameCount, 1);
     s.animation.evaluate(s.mesh->vertices, 0, out);
     expected.col(2).setConstant(0.25f);
@@ -383,7 +382,7 @@ void TestAnimationIo::stepAndCubicSpline()
     const QString path
         = movingTriangle({0, 1}, std::vector<float>(values.begin(), values.end()), interpolation.toLatin1().constData())
               .write(dir, QStringLiteral("moving.gltf"));
-    CELFORM_READ_OR_FAIL(r, readAnimatedBase(path))
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(path))
     QCOMPARE(r.animation.frameCount, 25);
     QVERIFY(r.animation.skinned()); // a moving unskinned node is one joint
     Positions out;
@@ -420,13 +419,62 @@ void TestAnimationIo::sparseAndStride()
     b.m.meshes[std::size_t(mesh)].weights = {1.0};
     b.m.scenes[0].nodes = {b.node(mesh)};
     QTemporaryDir dir;
-    CELFORM_READ_OR_FAIL(r, readAnimatedBase(b.write(dir, QStringLiteral("sparse.gltf"))))
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(b.write(dir, QStringLiteral("sparse.gltf"))))
     CELFORM_COMPARE_POSITIONS(r.mesh->vertices, triangleAt(0));
     Positions out;
     r.animation.evaluate(r.mesh->vertices, 0, out);
     Positions expected = triangleAt(0);
     expected(2, 2) = 3;
     CELFORM_COMPARE_POSITIONS(out, expected);
+}
+
+// The documented vertex order: the scene's nodes depth first (the root's child before the next
+// root), each node's primitives in order; strips and fans triangulated with glTF's winding;
+// materials with a default one appended for a primitive without; UVs flipped to v up.
+void TestAnimationIo::mergeOrder()
+{
+    GltfBuilder b;
+    const int a = b.mesh(b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, TINYGLTF_TYPE_VEC3), b.indices({0, 1, 2}));
+    tinygltf::Primitive& first = b.m.meshes[std::size_t(a)].primitives[0];
+    first.material = 1;
+    first.attributes["TEXCOORD_0"] = b.floats({0, 0, 1, 0, 0, 1}, TINYGLTF_TYPE_VEC2);
+    tinygltf::Primitive strip;
+    strip.attributes["POSITION"] = b.floats({0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1}, TINYGLTF_TYPE_VEC3);
+    strip.mode = TINYGLTF_MODE_TRIANGLE_STRIP;
+    b.m.meshes[std::size_t(a)].primitives.push_back(strip);
+    const int fan = b.mesh(b.floats({0, 0, 2, 1, 0, 2, 1, 1, 2, 0, 1, 2}, TINYGLTF_TYPE_VEC3), -1);
+    b.m.meshes[std::size_t(fan)].primitives[0].mode = TINYGLTF_MODE_TRIANGLE_FAN;
+    b.m.meshes[std::size_t(fan)].primitives[0].material = 0;
+    const int nodeB = b.node(fan);
+    const int root = b.node();
+    const int nodeA = b.node(a);
+    b.m.nodes[std::size_t(root)].children = {nodeA};
+    b.m.nodes[std::size_t(root)].translation = {0, 0, 5};
+    b.m.scenes[0].nodes = {root, nodeB};
+    b.m.materials.resize(2);
+    b.m.materials[0].pbrMetallicRoughness.baseColorFactor = {1, 0, 0, 1};
+    b.m.materials[1].pbrMetallicRoughness.baseColorFactor = {0, 0.5, 1, 1};
+    QTemporaryDir dir;
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(b.write(dir, QStringLiteral("merge.gltf"))))
+    QVERIFY(!isAnimatedBaseFile(dir.filePath(QStringLiteral("merge.gltf"))));
+    Positions expected(11, 3);
+    expected << 0, 0, 5, 1, 0, 5, 0, 1, 5, // node A, primitive 0, moved by the root
+        0, 0, 6, 1, 0, 6, 0, 1, 6, 1, 1, 6, // node A, the strip
+        0, 0, 2, 1, 0, 2, 1, 1, 2, 0, 1, 2; // node B, the fan
+    CELFORM_COMPARE_POSITIONS(r.mesh->vertices, expected);
+    celform::algo::Faces faces(5, 3);
+    faces << 0, 1, 2, 3, 4, 5, 4, 6, 5, 8, 9, 7, 9, 10, 7;
+    QCOMPARE(r.mesh->faces, faces);
+    QCOMPARE(r.mesh->faceMaterials, (std::vector<std::int32_t>{1, 2, 2, 0, 0}));
+    QCOMPARE(r.mesh->materials.size(), std::size_t(3));
+    QCOMPARE(r.mesh->materials[1].baseColor, Eigen::Vector3f(0, 0.5f, 1));
+    QVERIFY(r.mesh->hasUvs());
+    QCOMPARE(r.mesh->uvs.rows(), 11);
+    QCOMPARE(r.mesh->uvs.row(0), Eigen::RowVector2f(0, 1));
+    QCOMPARE(r.mesh->uvs.row(2), Eigen::RowVector2f(0, 0));
+    QCOMPARE(r.mesh->uvFaces, r.mesh->faces);
+    QCOMPARE(r.animation.frameCount, 1);
+    QVERIFY(!r.animation.skinned());
 }
 
 void TestAnimationIo::sequence_data()
@@ -456,7 +504,7 @@ void TestAnimationIo::sequence()
     writeFile(dir, QStringLiteral("walk_notes.txt"), "not a frame");
     const QString path = dir.filePath(given);
     QVERIFY(isAnimatedBaseFile(path));
-    CELFORM_READ_OR_FAIL(r, readAnimatedBase(path, 12.0))
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(path, 12.0))
     QCOMPARE(r.fps, 12.0);
     QCOMPARE(r.animation.frameCount, 3);
     QCOMPARE(r.mesh->faceCount(), 2);
@@ -493,13 +541,8 @@ void TestAnimationIo::sequenceMismatch()
     writeFile(dir, QStringLiteral("walk_0002.obj"), square);
     const QString bad = writeFile(dir, QStringLiteral("walk_0003.obj"), third);
     writeFile(dir, QStringLiteral("walk_0004.obj"), square);
-    try {
-        readAnimatedBase(dir.filePath(QStringLiteral("walk_####.obj")));
-        QFAIL("no IoError");
-    } catch (const IoError& e) {
-        QCOMPARE(e.file(), bad);
-        QVERIFY2(e.problem().contains(problem), qPrintable(e.message()));
-    }
+    QString message;
+    QVERIFY2(refused(dir.filePath(QStringLiteral("walk_####.obj")), bad, problem, message), qPrintable(message));
 }
 
 void TestAnimationIo::badFiles_data()
@@ -588,15 +631,9 @@ void TestAnimationIo::badFiles()
     QFETCH(QString, problem);
     QTemporaryDir dir;
     const QString path = writeFile(dir, name, bytes);
-    try {
-        readAnimatedBase(path);
-        QFAIL("no IoError");
-    } catch (const IoError& e) {
-        QCOMPARE(e.file(), path);
-        QVERIFY2(e.problem().contains(problem), qPrintable(e.message()));
-        QVERIFY2(!e.problem().contains(QLatin1Char('\n')), qPrintable(e.message()));
-        qInfo("%s", qPrintable(e.problem()));
-    }
+    QString message;
+    QVERIFY2(refused(path, path, problem, message), qPrintable(message));
+    qInfo("%s", qPrintable(message));
     // A missing file is named too.
     const QString missing = dir.filePath(QStringLiteral("missing.glb"));
     QVERIFY(!isAnimatedBaseFile(missing));
@@ -605,10 +642,7 @@ void TestAnimationIo::badFiles()
 
 void TestAnimationIo::buffersAreRegularFiles_data()
 {
-    QTest::addColumn<QString>("uri");
-    QTest::newRow("fifo") << "pipe.bin";
-    QTest::newRow("device") << "/dev/zero";
-    QTest::newRow("folder") << "folder";
+    celform::test::addBufferUriRows();
     QTest::newRow("missing") << "absent.bin";
 }
 
@@ -618,22 +652,11 @@ void TestAnimationIo::buffersAreRegularFiles()
 {
     QFETCH(QString, uri);
     QTemporaryDir dir;
-    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath(QStringLiteral("pipe.bin"))).constData(), 0600) == 0);
-    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("folder")));
-    const QByteArray json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
-      "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
-      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],
-      "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36}],
-      "buffers":[{"byteLength":4000000000,"uri":")"
-        + uri.toUtf8() + R"("}]})";
+    QVERIFY(celform::test::makeBufferTargets(dir));
+    const QByteArray json = celform::test::gltfWithBufferUri(uri);
     const QString path = writeFile(dir, QStringLiteral("buffer.gltf"), json);
-    try {
-        readAnimatedBase(path);
-        QFAIL("no IoError");
-    } catch (const IoError& e) {
-        QCOMPARE(e.file(), path);
-        QVERIFY2(e.problem().contains(QStringLiteral("not a readable glTF file")), qPrintable(e.message()));
-    }
+    QString message;
+    QVERIFY2(refused(path, path, QStringLiteral("not a readable glTF file"), message), qPrintable(message));
 }
 
 // The glTF files the repository holds (static ones: one sample, no joints), and the fuzz
@@ -643,7 +666,7 @@ void TestAnimationIo::realFiles()
     for (const char* relative : {"fuzz-corpus/glb/cube.glb", "fuzz-corpus/gltf/cube.gltf"}) {
         const QString path = celform::test::testDataPath(QLatin1String(relative));
         QVERIFY(!isAnimatedBaseFile(path));
-        CELFORM_READ_OR_FAIL(r, readAnimatedBase(path))
+        CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(path))
         QCOMPARE(r.animation.frameCount, 1);
         QVERIFY(r.mesh->faceCount() >= 12);
         QVERIFY(r.animation.problem(r.mesh->vertexCount()).empty());

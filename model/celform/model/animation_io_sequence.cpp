@@ -37,26 +37,18 @@ bool isSequenceSuffix(const QString& suffix)
     return s == QLatin1String("obj") || s == QLatin1String("ply") || s == QLatin1String("off");
 }
 
-/// "walk_####.obj": the last run of '#' in the file name stands for the frame number.
-std::optional<SequenceName> parsePattern(const QString& path)
+/// "walk_####.obj": the last run of '#' in the file name stands for the frame number;
+/// "walk_0001.obj": the last run of digits is the frame number.
+std::optional<SequenceName> parseSequenceName(const QString& path)
 {
     const QFileInfo info(path);
     static const QRegularExpression kPattern(QStringLiteral("^(.*[^#])?(#+)([^#]*)$"));
-    const auto m = kPattern.match(info.fileName());
-    if (!m.hasMatch() || !isSequenceSuffix(info.suffix()))
-        return std::nullopt;
-    return SequenceName{info.absoluteDir(), m.captured(1), m.captured(3), int(m.capturedLength(2))};
-}
-
-/// "walk_0001.obj": the last run of digits in the file name is the frame number.
-std::optional<SequenceName> parseNumbered(const QString& path)
-{
-    const QFileInfo info(path);
     static const QRegularExpression kNumbered(QStringLiteral("^(.*\\D)?(\\d+)(\\D*)$"));
-    const auto m = kNumbered.match(info.fileName());
+    const bool pattern = info.fileName().contains(QLatin1Char('#'));
+    const auto m = (pattern ? kPattern : kNumbered).match(info.fileName());
     if (!m.hasMatch() || !isSequenceSuffix(info.suffix()))
         return std::nullopt;
-    return SequenceName{info.absoluteDir(), m.captured(1), m.captured(3), 0};
+    return SequenceName{info.absoluteDir(), m.captured(1), m.captured(3), pattern ? int(m.capturedLength(2)) : 0};
 }
 
 /// The sequence's files in numeric order. Throws IoError naming path for two files with one
@@ -117,14 +109,9 @@ QString faceDifference(const algo::Faces& faces, const algo::Faces& first, const
 
 AnimatedImport readMeshSequence(const QString& path, double fps)
 {
-    const QString fileName = QFileInfo(path).fileName();
-    std::optional<SequenceName> name;
-    if (fileName.contains(QLatin1Char('#'))) {
-        name = parsePattern(path);
-    } else {
+    if (!QFileInfo(path).fileName().contains(QLatin1Char('#')))
         meshio::requireRegularFile(path);
-        name = parseNumbered(path);
-    }
+    const std::optional<SequenceName> name = parseSequenceName(path);
     if (!name)
         throw IoError(path,
             AnimationIo::tr("not an animated base: use a .gltf or .glb file, or a numbered .obj, .ply or .off "
@@ -174,15 +161,12 @@ AnimatedImport readMeshSequence(const QString& path, double fps)
 
 bool isMeshSequence(const QString& path)
 {
-    const QString fileName = QFileInfo(path).fileName();
-    if (fileName.contains(QLatin1Char('#'))) {
-        const auto name = parsePattern(path);
-        return name && !listFrames(path, *name).empty();
-    }
-    if (!QFileInfo(path).isFile())
+    const auto name = parseSequenceName(path);
+    if (!name)
         return false;
-    const auto name = parseNumbered(path);
-    return name && listFrames(path, *name).size() >= 2;
+    if (name->digits > 0) // a pattern
+        return !listFrames(path, *name).empty();
+    return QFileInfo(path).isFile() && listFrames(path, *name).size() >= 2;
 }
 
 } // namespace celform::model::animio
