@@ -249,13 +249,17 @@ Positions triangleAt(float x)
     return p;
 }
 
-QByteArray objFrame(const Positions& v, const QByteArray& faces)
+/// A frame of the square sequence as OBJ, or as ASCII PLY when the name ends in .ply: one quad.
+QByteArray squareFrame(const QString& name, const Positions& v)
 {
-    QByteArray s;
+    const bool ply = name.endsWith(QLatin1String(".ply"));
+    QByteArray s = ply ? "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                       : "";
     for (Eigen::Index i = 0; i < v.rows(); ++i)
-        s += "v " + QByteArray::number(v(i, 0)) + ' ' + QByteArray::number(v(i, 1)) + ' ' + QByteArray::number(v(i, 2))
-            + '\n';
-    return s + faces;
+        s += (ply ? "" : "v ") + QByteArray::number(v(i, 0)) + ' ' + QByteArray::number(v(i, 1)) + ' '
+            + QByteArray::number(v(i, 2)) + '\n';
+    return s + (ply ? "4 0 1 2 3\n" : "f 1 2 3 4\n");
 }
 
 } // namespace
@@ -271,6 +275,7 @@ private slots:
     void stepAndCubicSpline();
     void sparseAndStride();
     void mergeOrder();
+    void animatedParentMovesChild();
     void sequence_data();
     void sequence();
     void sequenceMismatch_data();
@@ -477,6 +482,30 @@ void TestAnimationIo::mergeOrder()
     QVERIFY(!r.animation.skinned());
 }
 
+// An unskinned mesh under an animated node: its rest positions have the rest transforms applied,
+// and it follows its parent (one joint: the global transform now times the inverse of the rest).
+void TestAnimationIo::animatedParentMovesChild()
+{
+    GltfBuilder b;
+    const int child = b.node(b.mesh(b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, TINYGLTF_TYPE_VEC3), b.indices({0, 1, 2})));
+    b.m.nodes[std::size_t(child)].translation = {1, 0, 0};
+    const int parent = b.node();
+    b.m.nodes[std::size_t(parent)].children = {child};
+    b.m.nodes[std::size_t(parent)].scale = {2, 2, 2};
+    b.m.scenes[0].nodes = {parent};
+    b.channel(parent, "translation", {0, 1}, {0, 0, 0, 0, 0, 3}, TINYGLTF_TYPE_VEC3);
+    QTemporaryDir dir;
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(b.write(dir, QStringLiteral("parent.gltf"))))
+    Positions rest(3, 3);
+    rest << 2, 0, 0, 4, 0, 0, 2, 2, 0; // scaled by 2 after the child's translation
+    CELFORM_COMPARE_POSITIONS(r.mesh->vertices, rest);
+    Positions out;
+    r.animation.evaluate(r.mesh->vertices, 12, out);
+    Positions expected = rest;
+    expected.col(2).setConstant(1.5f);
+    CELFORM_COMPARE_POSITIONS(out, expected);
+}
+
 void TestAnimationIo::sequence_data()
 {
     QTest::addColumn<QStringList>("files");
@@ -484,6 +513,7 @@ void TestAnimationIo::sequence_data()
     QTest::newRow("pattern") << QStringList{"walk_0001.obj", "walk_0002.obj", "walk_0003.obj"} << "walk_####.obj";
     QTest::newRow("middle file") << QStringList{"walk_0001.obj", "walk_0002.obj", "walk_0003.obj"} << "walk_0002.obj";
     QTest::newRow("unpadded, numeric order") << QStringList{"run9.obj", "run10.obj", "run11.obj"} << "run10.obj";
+    QTest::newRow("PLY") << QStringList{"f.000.ply", "f.001.ply", "f.002.ply"} << "f.###.ply";
 }
 
 void TestAnimationIo::sequence()
@@ -497,10 +527,9 @@ void TestAnimationIo::sequence()
     frame1(2, 1) += 1.0f;
     Positions frame2 = frame0;
     frame2.col(2).array() += 0.5f;
-    const QByteArray faces = "f 1 2 3 4\n";
-    writeFile(dir, files[0], objFrame(frame0, faces));
-    writeFile(dir, files[1], objFrame(frame1, faces));
-    writeFile(dir, files[2], objFrame(frame2, faces));
+    writeFile(dir, files[0], squareFrame(files[0], frame0));
+    writeFile(dir, files[1], squareFrame(files[1], frame1));
+    writeFile(dir, files[2], squareFrame(files[2], frame2));
     writeFile(dir, QStringLiteral("walk_notes.txt"), "not a frame");
     const QString path = dir.filePath(given);
     QVERIFY(isAnimatedBaseFile(path));
@@ -518,6 +547,7 @@ void TestAnimationIo::sequence()
     CELFORM_COMPARE_POSITIONS(out, frame1);
     r.animation.evaluate(r.mesh->vertices, 2, out);
     CELFORM_COMPARE_POSITIONS(out, frame2);
+    QVERIFY_THROWS_EXCEPTION(IoError, readAnimatedBase(path, 0.0)); // no frame rate
 }
 
 void TestAnimationIo::sequenceMismatch_data()
