@@ -269,6 +269,9 @@ AnimatedImport readGltfAnimation(const QString& path, double fps)
         inst.targets = morphTargetCount(src, n.mesh);
         inst.firstTarget = targetTotal;
         targetTotal += inst.targets;
+        // Each target takes at least a float per vertex: far fewer than this fit (and an int holds it).
+        if (targetTotal > kMaxAnimationFloats / 3)
+            throw IoError(path, AnimationIo::tr("the scene has more morph targets than Celform can hold"));
         // Default weights: the node's, else the mesh's, else zero.
         const tinygltf::Mesh& mesh = model.meshes[std::size_t(n.mesh)];
         const std::vector<double>& given = !n.weights.empty() ? n.weights : mesh.weights;
