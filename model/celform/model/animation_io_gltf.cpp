@@ -389,7 +389,14 @@ AnimatedImport readGltfAnimation(const QString& path, double fps)
                             .arg(where)
                             .arg(v));
                 const Eigen::Vector4d q = transform * p4;
-                merged.positions.insert(merged.positions.end(), {float(q[0]), float(q[1]), float(q[2])});
+                const Eigen::Vector3f f = q.head<3>().cast<float>();
+                if (!f.allFinite()) // a huge scale takes a finite coordinate beyond float's range
+                    throw IoError(path,
+                        AnimationIo::tr("%1: vertex %2 is beyond the range of a float once its node's transform is "
+                                        "applied")
+                            .arg(where)
+                            .arg(v));
+                merged.positions.insert(merged.positions.end(), {f[0], f[1], f[2]});
             }
             // Checked before appending: a list of a billion indices into one vertex is short to store.
             const std::size_t added
@@ -516,7 +523,14 @@ AnimatedImport readGltfAnimation(const QString& path, double fps)
                             AnimationIo::tr("%1: vertex %2 has a coordinate that is not a finite number")
                                 .arg(where)
                                 .arg(v));
-                    dst.row(Eigen::Index(first + v)) = (linear * d).cast<float>().transpose();
+                    const Eigen::Vector3f moved = (linear * d).cast<float>();
+                    if (!moved.allFinite())
+                        throw IoError(path,
+                            AnimationIo::tr("%1: vertex %2 is beyond the range of a float once its node's transform is "
+                                            "applied")
+                                .arg(where)
+                                .arg(v));
+                    dst.row(Eigen::Index(first + v)) = moved.transpose();
                 }
             }
         }
