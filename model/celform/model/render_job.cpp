@@ -1,6 +1,8 @@
 // Rendering a project's frames to files (render_job.h).
 #include "celform/model/render_job.h"
 
+#include "celform/model/frame_evaluation.h"
+
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/depth_analysis.h"
 #include "celform/model/depth_analysis_output.h"
@@ -129,14 +131,14 @@ Look renderJobLook(const ProjectData& data, const RenderJob& job)
     return look;
 }
 
-Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job)
+Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job, int frame)
 {
     if (job.camera)
         return *job.camera;
-    if (!job.view && look.renderCamera)
-        return *look.renderCamera;
-    return cameraFromView(
-        data, job.view.value_or(defaultRenderView()), double(job.size.width()) / std::max(1, job.size.height()));
+    const double aspect = double(job.size.width()) / std::max(1, job.size.height());
+    if (job.view)
+        return cameraFromView(data, *job.view, aspect);
+    return cameraAtFrame(data, look, frame, aspect);
 }
 
 ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job)
@@ -146,11 +148,11 @@ ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& sourc
     ResolvedRenderJob resolved;
     // The overrides apply to this job only.
     resolved.look = renderJobLook(data, job);
-    resolved.camera = renderJobCamera(data, resolved.look, job);
+    resolved.camera = renderJobCamera(data, resolved.look, job, job.firstFrame);
     QString error;
     if (!resolved.blender.update(data, &error))
         throw IoError(source, error);
-    resolved.direction = BlendEvaluator::viewDirection(data, resolved.camera.eye);
+    resolved.direction = BlendEvaluator::viewDirection(data, resolved.camera.eye, job.firstFrame);
     return resolved;
 }
 
@@ -158,9 +160,11 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
 {
     const ResolvedRenderJob resolved = resolveRenderJob(data, source, job);
     const Look& look = resolved.look;
-    const Camera& camera = resolved.camera;
-    const BlendEvaluator& blender = resolved.blender;
-    const Eigen::Vector3d& direction = resolved.direction;
+    // The one evaluation of a frame (frame_evaluation.h): the camera at the frame (the path's when
+    // the project has one), the animated base there, the view direction and the blended shape.
+    FrameEvaluator evaluator;
+    evaluator.prepare(data);
+    const BlendEvaluator& blender = evaluator.blender();
     const bool allPasses = job.writesAllPasses();
     const bool floatFile = QFileInfo(job.output).suffix().toLower() == QLatin1String("exr");
     auto cancelled = [&callbacks] { return callbacks.cancelled && callbacks.cancelled(); };
@@ -172,13 +176,15 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
     FrameAnalysis analysed;
     // The shape keeps its generation while frames leave it still, so highlight geometry is reused.
     algo::Shape shape;
-    algo::Positions next;
     std::vector<float> offsets; // in effect at the camera's view and the frame (shading_layers.h)
     int written = 0;
     for (int f = job.firstFrame; f <= job.lastFrame && !cancelled(); ++f) {
-        blender.shape(data, direction, f, next);
+        const Camera camera = renderJobCamera(data, look, job, f);
+        evaluator.evaluate(data, f, camera.eye);
+        const Eigen::Vector3d& direction = evaluator.direction();
+        const algo::Positions& next = evaluator.shape();
         if (shape.generation == 0 || next.rows() != shape.positions.rows() || next != shape.positions) {
-            shape.positions.swap(next);
+            shape.positions = next;
             shape.touch();
         }
         effectiveShadingOffsets(data, blender, direction, f, offsets);
