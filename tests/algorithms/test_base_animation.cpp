@@ -49,6 +49,8 @@ void TestBaseAnimation::morphThenSkin()
     Positions expected(2, 3);
     expected << 5, 0.5f, 2, 1, 1, 4;
     QCOMPARE(out, expected);
+    for (Eigen::Index v = 0; v < 2; ++v) // the same floats, vertex by vertex
+        QCOMPARE(a.evaluateVertex(rest, 5, v), Eigen::Vector3f(out.row(v).transpose()));
 }
 
 // The first influence used to be read whatever its weight: joint 7 of 1 read past the matrices.
@@ -68,6 +70,7 @@ void TestBaseAnimation::unusedInfluenceNamesAnyJoint()
     Positions expected(1, 3);
     expected << 2, 3, 4;
     QCOMPARE(out, expected);
+    QCOMPARE(a.evaluateVertex(rest, 0, 0), Eigen::Vector3f(2, 3, 4));
 }
 
 QTEST_APPLESS_MAIN(TestBaseAnimation)

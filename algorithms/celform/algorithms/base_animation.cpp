@@ -119,11 +119,12 @@ Eigen::Vector3f BaseAnimation::evaluateVertex(const Positions& rest, int frame, 
             q[1] += w * delta[3 * v + 1];
             q[2] += w * delta[3 * v + 2];
         }
+    // As evaluate(): an unused influence's joint (which may be past jointCount) is never read.
     const SkinMatrix* matrices = skinMatrices.data() + s * std::size_t(jointCount);
     const Eigen::Vector4f& jw = jointWeights[std::size_t(v)];
     const auto& ji = joints[std::size_t(v)];
-    SkinMatrix m = jw[0] * matrices[ji[0]];
-    for (int i = 1; i < 4; ++i)
+    SkinMatrix m = SkinMatrix::Zero();
+    for (int i = 0; i < 4; ++i)
         if (jw[i] != 0.0f)
             m.noalias() += jw[i] * matrices[ji[std::size_t(i)]];
     return m * q;
