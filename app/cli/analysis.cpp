@@ -88,7 +88,7 @@ int runAnalyze(const Invocation& in)
                 {"curvature", s.meanCurvature > 0.f ? "positive" : (s.meanCurvature < 0.f ? "negative" : "flat")},
                 {"centroid", QJsonArray{double(s.centroid.x()), double(s.centroid.y())}}});
         }
-        const model::Camera camera = model::renderJobCamera(data, model::renderJobLook(data, job), job);
+        const model::Camera camera = model::renderJobCamera(data, model::renderJobLook(data, job), job, job.firstFrame);
         printJson({{"frame", job.firstFrame}, {"size", QJsonArray{job.size.width(), job.size.height()}},
             {"camera",
                 QJsonObject{{"eye", model::vec3Json(camera.eye)}, {"target", model::vec3Json(camera.target)},
@@ -150,7 +150,8 @@ int runCurvature(const Invocation& in)
     if (!data.baseMesh)
         throw model::IoError(path, Cli::tr("has no base model"));
     // The base model, or the view-dependent shape seen from --view at the frame.
-    algo::Positions shape = data.baseMesh->vertices;
+    algo::Positions scratch;
+    algo::Positions shape = data.basePositions(frame, scratch);
     if (view) {
         model::BlendEvaluator blender;
         QString error;

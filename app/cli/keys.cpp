@@ -6,6 +6,7 @@
 #include "celform/model/document.h"
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
+#include "celform/model/frame_evaluation.h"
 #include "celform/model/project_file.h"
 #include "celform/model/render_job.h"
 
@@ -119,24 +120,34 @@ int runBrush(const Invocation& in)
 
 int runEval(const Invocation& in)
 {
-    if (!in.isSet("view"))
-        throw UsageError{Cli::tr("--view is required")};
-    const Eigen::Vector3d view = parseDirection("view", in.value("view"));
+    model::RenderJob job;
+    camera_options::checkCombination(in, false);
+    if (camera_options::byCamera(in))
+        job.camera = camera_options::explicitCamera(in);
+    if (camera_options::byView(in))
+        job.view = camera_options::view(in);
     const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
 
     const QString path = in.argument(0);
     const model::ProjectData data = model::loadProject(path);
     if (!data.baseMesh)
         throw model::IoError(path, Cli::tr("has no base model"));
-    model::BlendEvaluator blender;
+    // The renderer's own evaluation (frame_evaluation.h): without camera options, the camera path
+    // (or the render camera) at the frame, and the animated base there.
+    model::FrameEvaluator evaluator;
     QString error;
-    if (!blender.update(data, &error))
+    if (!evaluator.prepare(data, &error))
         throw model::IoError(path, error);
-    const model::BlendResult blend = blender.weights(data, view);
+    if (job.view)
+        evaluator.evaluateDirection(data, frame, job.view->normalized());
+    else
+        evaluator.evaluate(data, frame, model::renderJobCamera(data, data.look, job, frame).eye);
+    const model::BlendResult& blend = evaluator.blend();
+    const Eigen::Vector3d view = evaluator.direction();
     if (in.isSet("out")) {
         algo::TriMesh mesh;
         mesh.faces = data.baseMesh->faces;
-        blender.shape(data, view, frame, mesh.vertices);
+        mesh.vertices = evaluator.shape();
         model::exportMesh(mesh, in.value("out"));
     }
     if (in.isSet("json")) {
@@ -154,6 +165,17 @@ int runEval(const Invocation& in)
     text += QStringLiteral("(base)\t%1\n").arg(blend.baseShare, 0, 'g', 10);
     printOut(text);
     return kExitOk;
+}
+
+std::vector<OptionSpec> evalOptions()
+{
+    std::vector<OptionSpec> options = camera_options::specs();
+    options.push_back({"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame (default 0).")});
+    options.push_back({"out", "MESH",
+        QT_TRANSLATE_NOOP("celform::app::Cli", "Write the blended mesh (OBJ or PLY, base vertex order).")});
+    options.push_back(
+        {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print the camera, keys and weights as JSON.")});
+    return options;
 }
 
 } // namespace
@@ -200,16 +222,13 @@ std::vector<SubCommand> keyCommands()
                 {"frame", "F", kFrameOption},
                 {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print what moved as JSON.")}},
             runBrush},
-        {"eval", {"celform eval P --view X,Y,Z [--frame F] [--out MESH] [--json]"},
-            QT_TRANSLATE_NOOP("celform::app::Cli", "Evaluates the view-dependent shape for a view direction."),
-            {{"P", kProjectArgument}},
-            {{"view", "X,Y,Z",
-                 QT_TRANSLATE_NOOP("celform::app::Cli", "View direction from the model's centroid towards the eye.")},
-                {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame (default 0).")},
-                {"out", "MESH",
-                    QT_TRANSLATE_NOOP("celform::app::Cli", "Write the blended mesh (OBJ or PLY, base vertex order).")},
-                {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print the keys and weights as JSON.")}},
-            runEval},
+        {"eval",
+            {"celform eval P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] [--out MESH] "
+             "[--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Evaluates the view-dependent shape at a frame: for a view direction or a camera, else through the "
+                "camera path (or the render camera) at that frame."),
+            {{"P", kProjectArgument}}, evalOptions(), runEval},
     };
 }
 

@@ -70,7 +70,7 @@ int runOffsets(const Invocation& in)
     if (automatic) {
         const model::Look look = model::renderJobLook(doc->data(), job);
         request.target = target;
-        request.camera = model::renderJobCamera(doc->data(), look, job);
+        request.camera = model::renderJobCamera(doc->data(), look, job, job.firstFrame);
         request.width = job.size.width();
         request.height = job.size.height();
         const model::AutoOffsetsResult result = doc->autoShadingOffsets(request);

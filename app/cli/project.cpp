@@ -89,6 +89,19 @@ int runInfo(const Invocation& in)
             {"time", data.blend.time == model::TimeInterpolation::PeriodicSpline ? "periodic" : "natural"}});
     if (data.look.renderCamera)
         root.insert("render_camera", model::cameraJson(*data.look.renderCamera));
+    // The scene's time (issue 13): frame F is the animation at time F / fps.
+    root.insert("fps", data.time.fps);
+    root.insert("frame_range", QJsonArray{data.time.firstFrame, data.time.lastFrame});
+    root.insert("current_frame", data.currentFrame);
+    root.insert("camera_keys", int(data.look.cameraPath.keys.size()));
+    if (data.animated()) {
+        const algo::BaseAnimation& a = *data.baseAnimation;
+        root.insert("base_animation",
+            QJsonObject{{"first_frame", a.firstFrame}, {"frame_count", a.frameCount},
+                {"morph_targets", int(a.morphTargets.size())}, {"joints", a.jointCount}});
+    } else {
+        root.insert("base_animation", QJsonValue::Null);
+    }
 
     if (in.isSet("json")) {
         printJson(root);
@@ -109,6 +122,15 @@ int runInfo(const Invocation& in)
     for (std::size_t i = 0; i < data.drawings.size(); ++i)
         s << "  " << data.drawings[i].name << " (" << sizes[i].width() << "x" << sizes[i].height() << ' '
           << data.drawings[i].imageFormat << ")\n";
+    s << Cli::tr("Frames: %1-%2 at %3 fps").arg(data.time.firstFrame).arg(data.time.lastFrame).arg(data.time.fps)
+      << '\n';
+    if (data.animated())
+        s << Cli::tr("Animated base: %1 frames from frame %2")
+                 .arg(data.baseAnimation->frameCount)
+                 .arg(data.baseAnimation->firstFrame)
+          << '\n';
+    if (!data.look.cameraPath.empty())
+        s << Cli::tr("Camera path: %1 keys").arg(data.look.cameraPath.keys.size()) << '\n';
     s << Cli::tr("Key viewpoints: %1").arg(data.keys.size()) << '\n';
     for (const auto& k : data.keys)
         s << "  " << k.name << " (" << k.direction.x() << ", " << k.direction.y() << ", " << k.direction.z() << ")\n";

@@ -66,7 +66,7 @@ private slots:
         props->createKeyButton()->click();
         QCOMPARE(doc->data().keys.size(), std::size_t(1));
         const model::KeyViewpoint key = doc->data().keys.front();
-        QVERIFY(key.direction.isApprox(doc->blender().viewDirection(doc->data(), vp->camera().eye)));
+        QVERIFY(key.direction.isApprox(doc->blender().viewDirection(doc->data(), vp->camera().eye, 0)));
         QCOMPARE(window.scenePanel()->selection().kind, views::ScenePanel::ItemKind::Key);
 
         // 3. Deform with the brush in the key's camera: the picked vertex follows the cursor in

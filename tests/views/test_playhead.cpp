@@ -104,7 +104,7 @@ class TestPlayhead : public QObject {
         blender.update(data);
         const Camera camera = m_view->camera();
         Positions shape;
-        blender.shape(data, blender.viewDirection(data, camera.eye), frameNumber, shape);
+        blender.shape(data, blender.viewDirection(data, camera.eye, frameNumber), frameNumber, shape);
         celform::algo::RenderCache cache;
         const auto passes = celform::model::renderShape(
             data, data.look, shape, frameNumber, camera, kSize, kSize, celform::algo::StereoOutput::Off, cache);

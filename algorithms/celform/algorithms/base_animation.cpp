@@ -106,6 +106,39 @@ void BaseAnimation::evaluate(const Positions& rest, int frame, Positions& out) c
     }
 }
 
+Eigen::Vector3f BaseAnimation::evaluateVertex(const Positions& rest, int frame, Eigen::Index v) const
+{
+    Eigen::Vector3f p = rest.row(v).transpose();
+    if (frameCount <= 0)
+        return p;
+    const std::size_t s = std::size_t(sampleOf(frame));
+    const std::size_t targets = morphTargets.size();
+    if (!skinned()) {
+        // In evaluate()'s order: the targets added one after another.
+        for (std::size_t t = 0; t < targets; ++t)
+            if (const float w = morphWeights[s * targets + t]; w != 0.0f)
+                p += w == 1.0f ? Eigen::Vector3f(morphTargets[t].row(v).transpose())
+                               : Eigen::Vector3f(w * morphTargets[t].row(v).transpose());
+        return p;
+    }
+    Eigen::Vector4f q(p[0], p[1], p[2], 1.0f);
+    for (std::size_t t = 0; t < targets; ++t)
+        if (const float w = morphWeights[s * targets + t]; w != 0.0f) {
+            const float* delta = morphTargets[t].data();
+            q[0] += w * delta[3 * v];
+            q[1] += w * delta[3 * v + 1];
+            q[2] += w * delta[3 * v + 2];
+        }
+    const SkinMatrix* matrices = skinMatrices.data() + s * std::size_t(jointCount);
+    const Eigen::Vector4f& jw = jointWeights[std::size_t(v)];
+    const auto& ji = joints[std::size_t(v)];
+    SkinMatrix m = jw[0] * matrices[ji[0]];
+    for (int i = 1; i < 4; ++i)
+        if (jw[i] != 0.0f)
+            m.noalias() += jw[i] * matrices[ji[std::size_t(i)]];
+    return m * q;
+}
+
 bool BaseAnimation::operator==(const BaseAnimation& o) const
 {
     return firstFrame == o.firstFrame && frameCount == o.frameCount && morphTargets == o.morphTargets

@@ -48,6 +48,8 @@ struct BaseAnimation {
     /// The base's vertices at a frame: (rest + sum_t w_t * delta_t), then skinned. out is resized
     /// only when its size differs (no allocation per frame otherwise).
     void evaluate(const Positions& rest, int frame, Positions& out) const;
+    /// One vertex of evaluate()'s result, computed alone (the same floats).
+    [[nodiscard]] Eigen::Vector3f evaluateVertex(const Positions& rest, int frame, Eigen::Index vertex) const;
 
     bool operator==(const BaseAnimation& o) const;
 };

@@ -21,6 +21,8 @@ enum class Part : std::uint32_t {
     FaceSets = 1u << 6, ///< the named face sets (highlight patches)
     ShadingOffsets = 1u << 7, ///< per-vertex shading offsets
     Playhead = 1u << 8, ///< the current frame (not undoable)
+    CameraPath = 1u << 9, ///< the keyed render cameras (look.cameraPath)
+    SceneTime = 1u << 10, ///< frames per second and the frame range
 };
 
 struct ChangeSet {

@@ -92,12 +92,12 @@ AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source,
         throw IoError(source, QCoreApplication::translate("celform::model::RenderJob", "has no base model"));
     AnalysisView view;
     view.look = renderJobLook(data, job);
-    view.camera = renderJobCamera(data, view.look, job);
+    view.camera = renderJobCamera(data, view.look, job, job.firstFrame);
     BlendEvaluator blender;
     QString error;
     if (!blender.update(data, &error))
         throw IoError(source, error);
-    view.direction = blender.viewDirection(data, view.camera.eye);
+    view.direction = blender.viewDirection(data, view.camera.eye, job.firstFrame);
     view.blend = blender.weights(data, view.direction);
     blender.shape(data, view.direction, job.firstFrame, view.shape);
     effectiveShadingOffsets(data, blender, view.direction, job.firstFrame, view.offsets);

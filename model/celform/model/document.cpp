@@ -376,7 +376,7 @@ ObjectId Document::createKey(
     KeyViewpoint key;
     key.name = name;
     key.camera = camera;
-    key.direction = m_blender.viewDirection(m_data, camera.eye);
+    key.direction = m_blender.viewDirection(m_data, camera.eye, frame);
     if (key.direction.norm() == 0.0)
         throw EditRefused(tr("The key's camera sits at the centre of the model; move it away first."));
     key.drawingIds = std::move(drawingIds);
@@ -400,7 +400,7 @@ void Document::setKeyCamera(ObjectId id, const Camera& camera)
     const KeyViewpoint* key = m_data.key(id);
     if (!key || !camera.isValid() || key->camera == camera)
         return;
-    const Eigen::Vector3d direction = m_blender.viewDirection(m_data, camera.eye);
+    const Eigen::Vector3d direction = m_blender.viewDirection(m_data, camera.eye, m_data.currentFrame);
     if (direction.norm() == 0.0)
         throw EditRefused(tr("The key's camera sits at the centre of the model; move it away first."));
     refuseDuplicateDirection(direction, id);

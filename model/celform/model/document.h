@@ -180,6 +180,29 @@ public:
     /// never merges.
     void setLook(const Look& look);
 
+    // --- animation (issue 13; paper 1, section 4 and figures 10-12): document_animation.cpp -----
+    /// Frames per second and the frame range. Throws EditRefused (sceneTimeProblem).
+    void setSceneTime(const SceneTime& time);
+    /// Replaces the camera path (one undo step named undoText). Throws EditRefused
+    /// (cameraPathProblem).
+    void setCameraPath(const CameraPath& path, const QString& undoText);
+    /// Keys the render camera at a frame (replacing a key there).
+    void setCameraKey(int frame, const Camera& camera);
+    /// Removes the camera key at a frame (nothing when there is none).
+    void removeCameraKey(int frame);
+    /// Clears the camera path (the render camera applies again).
+    void clearCameraPath();
+    /// A turntable path around the base model's centre at the start frame, at the distance that
+    /// frames the whole model for an image of the given aspect ratio, through the render camera's
+    /// lens; the frame range becomes the revolution's frames. One undo step. Throws EditRefused.
+    void makeTurntable(const Turntable& turntable, double aspect = 16.0 / 9.0);
+    /// Replaces the base model by an animated one (one undo step): the rest mesh, its animation
+    /// (null: a still base) and the scene's frames per second and range taken from it. Throws
+    /// IoError naming sourceName when the keys' offsets do not fit, EditRefused for an
+    /// inconsistent animation.
+    void setAnimatedBase(std::shared_ptr<const algo::TriMesh> mesh,
+        std::shared_ptr<const algo::BaseAnimation> animation, double fps, const QString& sourceName);
+
     // --- stylized highlights (Anjyo & Hiramitsu 2003), by layer id ----------------------------
     /// Adds layers in one undo step (undoText), after the others; gives each a new id. Names must
     /// be unique and the tracks valid (highlightTracksProblem), else EditRefused and no change.

@@ -356,8 +356,8 @@ AutoOffsetsResult Document::autoShadingOffsets(const AutoOffsetsRequest& request
     if (!request.camera.isValid())
         throw EditRefused(tr("The analysis needs a valid camera (eye, target and up must differ)."));
     BlendEvaluator& blend = blender();
-    const Eigen::Vector3d direction = BlendEvaluator::viewDirection(m_data, request.camera.eye);
     const int frame = target.frame;
+    const Eigen::Vector3d direction = BlendEvaluator::viewDirection(m_data, request.camera.eye, frame);
     // The target's weight in this view: 1 for the base, the key's blend weight for a key layer.
     double weight = 1.0;
     if (!target.isBase()) {

@@ -177,10 +177,53 @@ ProjectData::FrameOffsets ProjectData::offsetsAt(const KeyViewpoint& key, int fr
     return result;
 }
 
+QString sceneTimeProblem(const SceneTime& time)
+{
+    if (!std::isfinite(time.fps) || time.fps <= 0.0 || time.fps > kMaxFps)
+        return QCoreApplication::translate("SceneTime", "frames per second must lie in (0, %1], not %2")
+            .arg(kMaxFps)
+            .arg(time.fps);
+    if (std::abs(time.firstFrame) > kMaxFrame || std::abs(time.lastFrame) > kMaxFrame)
+        return QCoreApplication::translate("SceneTime", "the frame range must lie within ±%1").arg(kMaxFrame);
+    if (time.lastFrame < time.firstFrame)
+        return QCoreApplication::translate("SceneTime", "the frame range ends (%1) before it starts (%2)")
+            .arg(time.lastFrame)
+            .arg(time.firstFrame);
+    return {};
+}
+
+const algo::Positions& ProjectData::basePositions(int frame, algo::Positions& scratch) const
+{
+    Q_ASSERT(baseMesh);
+    if (!animated())
+        return baseMesh->vertices;
+    baseAnimation->evaluate(baseMesh->vertices, frame, scratch);
+    return scratch;
+}
+
+Eigen::Vector3f ProjectData::baseVertex(int frame, Eigen::Index vertex) const
+{
+    Q_ASSERT(baseMesh);
+    if (!animated())
+        return baseMesh->vertices.row(vertex).transpose();
+    return baseAnimation->evaluateVertex(baseMesh->vertices, frame, vertex);
+}
+
+Eigen::Vector3d ProjectData::baseCentre(int frame) const
+{
+    if (!baseMesh)
+        return Eigen::Vector3d::Zero();
+    if (!animated())
+        return baseMesh->centre();
+    algo::Positions scratch;
+    return algo::centroid(basePositions(frame, scratch));
+}
+
 algo::Positions ProjectData::keyShape(const KeyViewpoint& key, int frame) const
 {
     Q_ASSERT(baseMesh);
-    algo::Positions shape = baseMesh->vertices;
+    algo::Positions scratch;
+    algo::Positions shape = basePositions(frame, scratch);
     const FrameOffsets offsets = offsetsAt(key, frame, blend.time);
     if (const SparseOffsets* o = offsets.get())
         for (std::size_t i = 0; i < o->indices.size(); ++i)
@@ -216,7 +259,7 @@ void ProjectData::updateKeyShape(
             if (w != 0.0)
                 offset += float(w) * entry.second.at(v);
         }
-        shape.row(v) = baseMesh->vertices.row(v) + offset.transpose();
+        shape.row(v) = baseVertex(frame, Eigen::Index(v)).transpose() + offset.transpose();
     }
 }
 
@@ -237,9 +280,10 @@ ProjectData newProject(std::shared_ptr<const algo::TriMesh> mesh, const QString&
 bool ProjectData::operator==(const ProjectData& o) const
 {
     const bool meshEqual = (!baseMesh && !o.baseMesh) || (baseMesh && o.baseMesh && *baseMesh == *o.baseMesh);
+    const bool animationEqual = animated() == o.animated() && (!animated() || *baseAnimation == *o.baseAnimation);
     return meshEqual && baseMeshName == o.baseMeshName && faceSets == o.faceSets && drawings == o.drawings
         && keys == o.keys && blend == o.blend && look == o.look && shadingOffsets == o.shadingOffsets
-        && nextId == o.nextId && currentFrame == o.currentFrame;
+        && nextId == o.nextId && currentFrame == o.currentFrame && time == o.time && animationEqual;
 }
 
 const algo::FaceSet* ProjectData::faceSet(const QString& name) const

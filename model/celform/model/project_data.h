@@ -2,12 +2,14 @@
 // owns one ProjectData and changes it only through undo commands; file I/O reads and writes it.
 #pragma once
 
+#include "celform/algorithms/base_animation.h"
 #include "celform/algorithms/highlights.h"
 #include "celform/algorithms/lines.h"
 #include "celform/algorithms/shading.h"
 #include "celform/algorithms/stereo.h"
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/camera.h"
+#include "celform/model/camera_path.h"
 #include "celform/model/object_id.h"
 
 #include <QByteArray>
@@ -206,6 +208,9 @@ struct Look {
     /// The shot's camera: `celform render` looks through it unless told otherwise; none means a
     /// framed default view. Set from the editor's view (View menu) or `celform set --render-view`.
     std::optional<Camera> renderCamera;
+    /// The shot's camera over time (camera_path.h); when it has keys, it is the render camera at
+    /// every frame and renderCamera is not used.
+    CameraPath cameraPath;
 
     [[nodiscard]] ShadingStyle styleOf(int material) const
     {
@@ -218,13 +223,35 @@ struct Look {
             && backgroundColor == o.backgroundColor && toon == o.toon && toonEvaluation == o.toonEvaluation
             && gooch == o.gooch && hatch == o.hatch && showLines == o.showLines && lines == o.lines
             && lineStyle == o.lineStyle && stereo == o.stereo && highlights == o.highlights
-            && renderCamera == o.renderCamera;
+            && renderCamera == o.renderCamera && cameraPath == o.cameraPath;
     }
     bool operator!=(const Look& o) const { return !(*this == o); }
 };
 
+/// The scene's time (issue 13): frames per second and the frame range the timeline plays and a
+/// sequence render or export covers by default. Frame F is at time F / fps.
+struct SceneTime {
+    double fps = 24.0; ///< in (0, kMaxFps]
+    int firstFrame = 0;
+    int lastFrame = 47; ///< >= firstFrame
+    bool operator==(const SceneTime& o) const
+    {
+        return fps == o.fps && firstFrame == o.firstFrame && lastFrame == o.lastFrame;
+    }
+    bool operator!=(const SceneTime& o) const { return !(*this == o); }
+};
+
+/// The highest frame rate a project accepts.
+constexpr double kMaxFps = 1000.0;
+
+/// The first problem of a scene time, empty when valid.
+[[nodiscard]] QString sceneTimeProblem(const SceneTime& time);
+
 struct ProjectData {
     std::shared_ptr<const algo::TriMesh> baseMesh; ///< shared, immutable: edits replace it whole
+    /// The animated base (paper 1, section 4.1): null for a still base model. Same topology and
+    /// vertex order as baseMesh, whose vertices are the rest pose it moves.
+    std::shared_ptr<const algo::BaseAnimation> baseAnimation;
     QString baseMeshName; ///< file name the base model came from
     /// Named face sets of the base model: the highlight patches (paper 2 works patch by patch).
     /// Faces ascending without repeats, each below the base model's face count; names unique.
@@ -241,6 +268,17 @@ struct ProjectData {
     /// The playhead (DESIGN.md, "The document"): the frame every view shows. Saved with the
     /// project, not undoable.
     int currentFrame = 0;
+    /// Frames per second and the frame range.
+    SceneTime time;
+
+    /// The base model's vertices at a frame: baseMesh's own when the base is still (no copy,
+    /// scratch untouched), else the animation evaluated into scratch. Needs a base mesh.
+    [[nodiscard]] const algo::Positions& basePositions(int frame, algo::Positions& scratch) const;
+    /// One vertex of the base at a frame (cheap: for brushes that touch few vertices).
+    [[nodiscard]] Eigen::Vector3f baseVertex(int frame, Eigen::Index vertex) const;
+    /// Mean of the base's vertex positions at a frame (DESIGN.md, "View direction").
+    [[nodiscard]] Eigen::Vector3d baseCentre(int frame) const;
+    [[nodiscard]] bool animated() const { return baseAnimation && !baseAnimation->empty(); }
 
     [[nodiscard]] const Drawing* drawing(ObjectId id) const;
     [[nodiscard]] Drawing* drawing(ObjectId id);

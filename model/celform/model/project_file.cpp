@@ -171,6 +171,26 @@ QJsonObject lookJson(const Look& look)
         {"highlights", highlightsJson(look.highlights)}};
     if (look.renderCamera)
         out.insert("render_camera", cameraJson(*look.renderCamera));
+    if (!look.cameraPath.empty())
+        out.insert("camera_path", cameraPathJson(look.cameraPath));
+    return out;
+}
+
+/// The animated base (algo::BaseAnimation) as manifest entries and data blocks.
+QJsonObject baseAnimationJson(const algo::BaseAnimation& a, ChunkWriter& chunks)
+{
+    QJsonArray targets;
+    for (std::size_t t = 0; t < a.morphTargets.size(); ++t)
+        targets.append(chunks.addMatrix(QStringLiteral("animation/morph_targets/%1").arg(t), a.morphTargets[t]));
+    QJsonObject out{{"first_frame", a.firstFrame}, {"frame_count", a.frameCount}, {"morph_targets", targets},
+        {"morph_weights", chunks.addVector("animation/morph_weights", a.morphWeights)}, {"joint_count", a.jointCount}};
+    if (a.skinned()) {
+        out.insert("joints", chunks.addVector("animation/joints", a.joints));
+        out.insert("joint_weights", chunks.addVector("animation/joint_weights", a.jointWeights));
+        out.insert("skin_matrices",
+            chunks.add("animation/skin_matrices", a.skinMatrices.data(),
+                qint64(a.skinMatrices.size() * sizeof(algo::SkinMatrix))));
+    }
     return out;
 }
 
@@ -204,6 +224,8 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
         }
         m.insert("face_sets", sets);
         root.insert("base_mesh", m);
+        if (data.animated())
+            root.insert("base_animation", baseAnimationJson(*data.baseAnimation, chunks));
     }
 
     QJsonArray drawings;
@@ -255,6 +277,9 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
     }
     root.insert("next_id", double(data.nextId));
     root.insert("current_frame", data.currentFrame);
+    root.insert("scene",
+        QJsonObject{
+            {"fps", data.time.fps}, {"first_frame", data.time.firstFrame}, {"last_frame", data.time.lastFrame}});
     return root;
 }
 
@@ -287,6 +312,14 @@ QJsonObject cameraJson(const Camera& c)
 {
     return {{"eye", vec3(c.eye)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
         {"projection", enumName(c.projection)}, {"fov_y_degrees", c.fovYDegrees}, {"ortho_height", c.orthoHeight}};
+}
+
+QJsonArray cameraPathJson(const CameraPath& path)
+{
+    QJsonArray keys;
+    for (const CameraKey& k : path.keys)
+        keys.append(QJsonObject{{"frame", k.frame}, {"camera", cameraJson(k.camera)}});
+    return keys;
 }
 
 QJsonObject highlightTrackJson(const HighlightTrack& t)

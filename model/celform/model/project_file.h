@@ -11,7 +11,8 @@
 namespace celform::model {
 
 /// The format version this build writes; it reads this and every older one.
-constexpr int kProjectFormatVersion = 1;
+/// 2: scene time, camera paths and animated bases.
+constexpr int kProjectFormatVersion = 2;
 
 /// A 3D vector as the project file stores it, [x, y, z]; the command line's JSON uses the same form.
 QJsonArray vec3Json(const Eigen::Vector3d& v);
@@ -19,6 +20,10 @@ QJsonArray vec3Json(const Eigen::Vector3d& v);
 /// A camera as the project file stores it (eye, target, up, projection, fov_y_degrees,
 /// ortho_height); `celform info --json` prints the same form.
 QJsonObject cameraJson(const Camera& camera);
+
+/// A camera path as the project file stores it: [{frame, camera}, ...]; `celform camera --list
+/// --json` prints the same form.
+QJsonArray cameraPathJson(const CameraPath& path);
 
 /// A highlight track as the project file stores it (docs/file-format.md); `celform highlight
 /// --list --json` prints the same form.

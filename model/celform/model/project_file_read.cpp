@@ -371,7 +371,49 @@ Look readLook(const Reader& r, const QJsonObject& look)
         if (!out.renderCamera->isValid())
             r.corrupt(ProjectFile::tr("the render camera is not a camera (eye at the target, or up along the view)"));
     }
+    if (look.contains("camera_path")) {
+        for (const QJsonValue& v : r.array(look, "camera_path")) {
+            const QJsonObject k = v.toObject();
+            out.cameraPath.keys.push_back({r.frame(k, "frame"), r.camera(r.object(k, "camera"))});
+        }
+        const QString problem = cameraPathProblem(out.cameraPath);
+        if (!problem.isEmpty())
+            r.corrupt(ProjectFile::tr("the camera path is invalid: %1").arg(problem));
+    }
     return out;
+}
+
+/// The animated base (format 2): sizes checked against the base model and the data blocks before
+/// anything is allocated, then algo::BaseAnimation::problem() as a last check.
+std::shared_ptr<const algo::BaseAnimation> readBaseAnimation(
+    const Reader& r, const QJsonObject& o, const algo::TriMesh& mesh)
+{
+    auto a = std::make_shared<algo::BaseAnimation>();
+    a->firstFrame = r.frame(o, "first_frame");
+    a->frameCount = int(r.count(o, "frame_count"));
+    if (a->frameCount < 1 || qint64(a->firstFrame) + a->frameCount - 1 > kMaxFrame)
+        r.corrupt(ProjectFile::tr("the base animation's frames are out of range"));
+    const QJsonArray targets = r.array(o, "morph_targets");
+    a->morphTargets.resize(std::size_t(targets.size()));
+    for (int t = 0; t < targets.size(); ++t) {
+        QJsonObject entry{{"block", targets[t]}};
+        r.readMatrix(entry, "block", mesh.vertexCount(), a->morphTargets[std::size_t(t)]);
+    }
+    r.readVector(o, "morph_weights", qint64(targets.size()) * a->frameCount, a->morphWeights);
+    a->jointCount = int(r.count(o, "joint_count"));
+    if (a->jointCount > 0) {
+        if (a->jointCount > 65536)
+            r.corrupt(ProjectFile::tr("the base animation has too many joints"));
+        r.readVector(o, "joints", mesh.vertexCount(), a->joints);
+        r.readVector(o, "joint_weights", mesh.vertexCount(), a->jointWeights);
+        std::vector<algo::SkinMatrix> matrices;
+        r.readVector(o, "skin_matrices", qint64(a->jointCount) * a->frameCount, matrices);
+        a->skinMatrices.assign(matrices.begin(), matrices.end());
+    }
+    const std::string problem = a->problem(mesh.vertexCount());
+    if (!problem.empty())
+        r.corrupt(ProjectFile::tr("the base animation is invalid: %1").arg(QString::fromStdString(problem)));
+    return a;
 }
 
 ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QString& path, DrawingImages images)
@@ -529,6 +571,21 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         if (frame != std::floor(frame) || std::abs(frame) > double(kMaxFrame))
             r.corrupt(ProjectFile::tr("the current frame is not a frame number"));
         data.currentFrame = int(frame);
+    }
+    // Format 2: the scene's time and the animated base.
+    if (root.contains(QLatin1String("scene"))) {
+        const QJsonObject scene = r.object(root, "scene");
+        data.time.fps = r.number(scene, "fps");
+        data.time.firstFrame = r.frame(scene, "first_frame");
+        data.time.lastFrame = r.frame(scene, "last_frame");
+        const QString problem = sceneTimeProblem(data.time);
+        if (!problem.isEmpty())
+            r.corrupt(ProjectFile::tr("the scene time is invalid: %1").arg(problem));
+    }
+    if (root.contains(QLatin1String("base_animation"))) {
+        if (!data.baseMesh)
+            r.corrupt(ProjectFile::tr("the base animation has no base model"));
+        data.baseAnimation = readBaseAnimation(r, r.object(root, "base_animation"), *data.baseMesh);
     }
     // Last, once the rest is known to be sound, and together: the drawings decoded in a child
     // process (PSD, TIFF, ...) share one, which loads OpenImageIO once.

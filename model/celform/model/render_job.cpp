@@ -1,6 +1,8 @@
 // Rendering a project's frames to files (render_job.h).
 #include "celform/model/render_job.h"
 
+#include "celform/model/frame_evaluation.h"
+
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/depth_analysis.h"
 #include "celform/model/depth_analysis_output.h"
@@ -131,14 +133,14 @@ Look renderJobLook(const ProjectData& data, const RenderJob& job)
     return look;
 }
 
-Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job)
+Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job, int frame)
 {
     if (job.camera)
         return *job.camera;
-    if (!job.view && look.renderCamera)
-        return *look.renderCamera;
-    return cameraFromView(
-        data, job.view.value_or(defaultRenderView()), double(job.size.width()) / std::max(1, job.size.height()));
+    const double aspect = double(job.size.width()) / std::max(1, job.size.height());
+    if (job.view)
+        return cameraFromView(data, *job.view, aspect);
+    return cameraAtFrame(data, look, frame, aspect);
 }
 
 ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job)
@@ -148,11 +150,11 @@ ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& sourc
     ResolvedRenderJob resolved;
     // The overrides apply to this job only.
     resolved.look = renderJobLook(data, job);
-    resolved.camera = renderJobCamera(data, resolved.look, job);
+    resolved.camera = renderJobCamera(data, resolved.look, job, job.firstFrame);
     QString error;
     if (!resolved.blender.update(data, &error))
         throw IoError(source, error);
-    resolved.direction = BlendEvaluator::viewDirection(data, resolved.camera.eye);
+    resolved.direction = BlendEvaluator::viewDirection(data, resolved.camera.eye, job.firstFrame);
     return resolved;
 }
 
@@ -170,30 +172,35 @@ public:
         , m_allPasses(job.writesAllPasses())
         , m_floatFile(QFileInfo(job.output).suffix().toLower() == QLatin1String("exr"))
         , m_analysisPicture(analysisPictureFromName(job.pass))
-    { }
+    {
+        // resolveRenderJob has built the same sphere already, and thrown if it could not.
+        m_evaluator.prepare(data);
+    }
 
     bool render(int f, const QString& target, const std::function<bool()>& cancelled)
     {
         const ProjectData& data = m_data;
-        const BlendEvaluator& blender = m_resolved.blender;
-        const Eigen::Vector3d& direction = m_resolved.direction;
-        blender.shape(data, direction, f, m_next);
-        if (m_shape.generation == 0 || m_next.rows() != m_shape.positions.rows() || m_next != m_shape.positions) {
-            m_shape.positions.swap(m_next);
+        // The one evaluation of a frame (frame_evaluation.h): the camera at the frame (the path's
+        // when the project has one), the animated base there, the view direction and the shape.
+        const Camera camera = renderJobCamera(data, m_resolved.look, m_job, f);
+        m_evaluator.evaluate(data, f, camera.eye);
+        const algo::Positions& next = m_evaluator.shape();
+        if (m_shape.generation == 0 || next.rows() != m_shape.positions.rows() || next != m_shape.positions) {
+            m_shape.positions = next;
             m_shape.touch();
         }
-        effectiveShadingOffsets(data, blender, direction, f, m_offsets);
+        effectiveShadingOffsets(data, m_evaluator.blender(), m_evaluator.direction(), f, m_offsets);
         // The analysis passes (segments, curvature, depth error) come from the depth analysis of
         // the centre eye's picture.
         if (m_analysisPicture) {
-            m_analyzer.analyze(data, m_resolved.look, m_shape.positions, m_shape.generation, f, m_resolved.camera,
+            m_analyzer.analyze(data, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
                 m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_offsets);
             if (cancelled())
                 return false;
             writeImage(analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile), target);
             return true;
         }
-        const algo::RenderPasses passes = renderShape(data, m_resolved.look, m_shape.positions, f, m_resolved.camera,
+        const algo::RenderPasses passes = renderShape(data, m_resolved.look, m_shape.positions, f, camera,
             m_job.size.width(), m_job.size.height(), m_job.stereo, m_cache, m_shape.generation, &m_offsets);
         if (cancelled())
             return false;
@@ -212,11 +219,11 @@ private:
     const bool m_allPasses;
     const bool m_floatFile;
     const std::optional<AnalysisPicture> m_analysisPicture;
+    FrameEvaluator m_evaluator;
     algo::RenderCache m_cache;
     DepthAnalyzer m_analyzer;
     FrameAnalysis m_analysed;
     algo::Shape m_shape;
-    algo::Positions m_next;
     std::vector<float> m_offsets; // in effect at the camera's view and the frame (shading_layers.h)
 };
 

@@ -40,8 +40,8 @@ inline Eigen::Vector3d defaultRenderView()
 
 /// What to render and where: the options of `celform render`.
 struct RenderJob {
-    /// The camera: this one when set, else one framed from view, else the look's render camera,
-    /// else one framed from defaultRenderView().
+    /// The camera: this one when set, else one framed from view, else the look's camera path at
+    /// each frame, else the look's render camera, else one framed from defaultRenderView().
     std::optional<Camera> camera;
     std::optional<Eigen::Vector3d> view; ///< from the centroid towards the eye; not zero
     int firstFrame = 0;
@@ -94,11 +94,12 @@ Camera cameraFromView(const ProjectData& data, const Eigen::Vector3d& view, doub
 /// The project's look with the job's overrides (style, lines, light) applied.
 Look renderJobLook(const ProjectData& data, const RenderJob& job);
 
-/// The camera a job looks through for a project (see RenderJob::camera). Needs a base mesh.
-Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job);
+/// The camera a job looks through at a frame (see RenderJob::camera). Needs a base mesh.
+Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job, int frame);
 
-/// What a job looks at and through, resolved once: the look with the job's overrides, the camera,
-/// and the blend evaluator built for the project's keys with the camera's view direction.
+/// What a job looks at and through, resolved once: the look with the job's overrides, the camera
+/// at the first frame, and the blend evaluator built for the project's keys with that camera's
+/// view direction. Later frames take their camera from renderJobCamera().
 struct ResolvedRenderJob {
     Look look;
     Camera camera;

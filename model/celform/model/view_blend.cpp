@@ -62,11 +62,17 @@ BlendResult BlendEvaluator::weights(const ProjectData& data, const Eigen::Vector
     return result;
 }
 
-void BlendEvaluator::shape(
-    const ProjectData& data, const Eigen::Vector3d& viewDirection, int frame, algo::Positions& out) const
+void BlendEvaluator::shape(const ProjectData& data, const Eigen::Vector3d& viewDirection, int frame,
+    algo::Positions& out, const algo::Positions* base) const
 {
     Q_ASSERT(data.baseMesh);
-    const BlendResult blend = weights(data, viewDirection);
+    algo::Positions scratch;
+    shapeFor(data, weights(data, viewDirection), frame, base ? *base : data.basePositions(frame, scratch), out);
+}
+
+void BlendEvaluator::shapeFor(const ProjectData& data, const BlendResult& blend, int frame, const algo::Positions& base,
+    algo::Positions& out) const
+{
     std::vector<algo::WeightedOffsets> parts;
     // Each key's offsets at the frame (stored, or interpolated over time and held here).
     std::vector<ProjectData::FrameOffsets> atFrame;
@@ -83,21 +89,25 @@ void BlendEvaluator::shape(
         view.indices = offsets->indices.data();
         view.offsets = offsets->deltas.front().data();
         view.count = offsets->indices.size();
-        view.dense = view.count == std::size_t(data.baseMesh->vertexCount());
+        view.dense = view.count == std::size_t(base.rows());
         parts.push_back({view, float(share.weight)});
     }
-    algo::blendShape(data.baseMesh->vertices, parts, out);
+    algo::blendShape(base, parts, out);
 }
 
-Eigen::Vector3d BlendEvaluator::viewDirection(const ProjectData& data, const Eigen::Vector3d& eye)
+Eigen::Vector3d BlendEvaluator::viewDirection(const ProjectData& data, const Eigen::Vector3d& eye, int frame)
 {
-    return viewDirectionFromEye(data, eye);
+    return viewDirectionFromEye(data, eye, frame);
 }
 
-Eigen::Vector3d viewDirectionFromEye(const ProjectData& data, const Eigen::Vector3d& eye)
+Eigen::Vector3d viewDirectionFromEye(const ProjectData& data, const Eigen::Vector3d& eye, int frame)
 {
-    // The centroid is computed once per base model and kept with it.
-    const Eigen::Vector3d centre = data.baseMesh ? data.baseMesh->centre() : Eigen::Vector3d::Zero();
+    // A still base's centroid is computed once per base model and kept with it.
+    return viewDirectionFromCentre(data.baseCentre(frame), eye);
+}
+
+Eigen::Vector3d viewDirectionFromCentre(const Eigen::Vector3d& centre, const Eigen::Vector3d& eye)
+{
     const Eigen::Vector3d d = eye - centre;
     const double n = d.norm();
     return n > 0 && std::isfinite(n) ? Eigen::Vector3d(d / n) : Eigen::Vector3d::Zero();

@@ -34,11 +34,18 @@ public:
 
     /// View direction convention (DESIGN.md): unit vector from the base centroid towards the eye.
     [[nodiscard]] BlendResult weights(const ProjectData& data, const Eigen::Vector3d& viewDirection) const;
-    /// The blended shape (#V by 3) for a view direction at a frame. Call update() first.
-    void shape(const ProjectData& data, const Eigen::Vector3d& viewDirection, int frame, algo::Positions& out) const;
+    /// The blended shape (#V by 3) for a view direction at a frame. Call update() first. base: the
+    /// base model's vertices at that frame when the caller has them (ProjectData::basePositions);
+    /// null evaluates them here.
+    void shape(const ProjectData& data, const Eigen::Vector3d& viewDirection, int frame, algo::Positions& out,
+        const algo::Positions* base = nullptr) const;
+    /// The blended shape for weights already computed by weights(): base + the keys' offsets at
+    /// the frame, each times its share. base: the base's vertices at the frame.
+    void shapeFor(const ProjectData& data, const BlendResult& blend, int frame, const algo::Positions& base,
+        algo::Positions& out) const;
 
-    /// View direction for an eye point (viewDirectionFromEye).
-    [[nodiscard]] static Eigen::Vector3d viewDirection(const ProjectData& data, const Eigen::Vector3d& eye);
+    /// View direction for an eye point at a frame (viewDirectionFromEye).
+    [[nodiscard]] static Eigen::Vector3d viewDirection(const ProjectData& data, const Eigen::Vector3d& eye, int frame);
 
     /// The sphere for display; null when there is none.
     [[nodiscard]] const algo::ViewSphere* sphere() const { return m_sphere ? &*m_sphere : nullptr; }
@@ -53,8 +60,10 @@ private:
     bool m_built = false;
 };
 
-/// Direction from the centroid of the base model towards an eye point (unit; zero when the eye
-/// is at the centroid).
-Eigen::Vector3d viewDirectionFromEye(const ProjectData& data, const Eigen::Vector3d& eye);
+/// Direction from the centroid of the base model at a frame towards an eye point (unit; zero when
+/// the eye is at the centroid).
+Eigen::Vector3d viewDirectionFromEye(const ProjectData& data, const Eigen::Vector3d& eye, int frame);
+/// The same from a centroid already known.
+Eigen::Vector3d viewDirectionFromCentre(const Eigen::Vector3d& centre, const Eigen::Vector3d& eye);
 
 } // namespace celform::model
