@@ -40,10 +40,11 @@ QStringList filesIn(const QString& dir)
     return QDir(dir).entryList(QDir::Files | QDir::Hidden | QDir::System, QDir::Name);
 }
 
-/// The arguments of a small render of the sample into dir/shot_####.SUFFIX.
-QStringList renderArgs(const QString& dir, const QString& suffix, const QString& frames, const QStringList& extra = {})
+/// The arguments of a small render of a project (the sample) into dir/shot_####.SUFFIX.
+QStringList renderArgs(const QString& dir, const QString& suffix, const QString& frames, const QStringList& extra = {},
+    const QString& project = sample())
 {
-    return QStringList{QStringLiteral("render"), sample(), QStringLiteral("--size"), QStringLiteral("96x54"),
+    return QStringList{QStringLiteral("render"), project, QStringLiteral("--size"), QStringLiteral("96x54"),
                QStringLiteral("--frames"), frames, QStringLiteral("--out"),
                QDir(dir).filePath(QStringLiteral("shot_####.") + suffix)}
     + extra;
@@ -167,6 +168,26 @@ private slots:
             }
             compareFolders(expected, dir);
         }
+    }
+
+    // With a camera path (a turntable) the camera, and with it the view-dependent shape, changes
+    // from frame to frame: strides on several threads still give one process's bytes.
+    void cameraPathSplitsGiveTheSameBytes()
+    {
+        const QString project = m_dir.filePath(QStringLiteral("turntable.celform"));
+        QFile::remove(project);
+        QVERIFY(QFile::copy(sample(), project));
+        const Run turntable = runCelform({"camera", project, "--turntable", "24"});
+        QVERIFY2(turntable.exitCode == 0, qPrintable(turntable.err));
+        const QString whole = folder(QStringLiteral("turntable_whole"));
+        const QString split = folder(QStringLiteral("turntable_split"));
+        const QString exr = QStringLiteral("exr");
+        QCOMPARE(runCelform(renderArgs(whole, exr, QStringLiteral("0-5"), {"--threads", "1"}, project)).exitCode, 0);
+        QCOMPARE(runCelform(renderArgs(split, exr, QStringLiteral("0-5:2"), {"--threads", "2"}, project)).exitCode, 0);
+        QCOMPARE(runCelform(renderArgs(split, exr, QStringLiteral("1-5:2"), {"--threads", "3"}, project)).exitCode, 0);
+        compareFolders(whole, split);
+        QVERIFY(bytesOf(QDir(whole).filePath(QStringLiteral("shot_0001.exr")))
+            != bytesOf(QDir(whole).filePath(QStringLiteral("shot_0002.exr"))));
     }
 
     // Requirement (b): --threads 2 writes what --threads 1 writes; progress goes to standard
