@@ -167,9 +167,9 @@ const std::vector<OptionParser>& optionParsers()
         [](const QString& t) { return (void)parseInt("i", t), QString(); },
         [](const QString& t) { return unless(std::abs(parseFrame("frame", t)) <= model::kMaxFrame, "frame in range"); },
         [](const QString& t) {
-            const auto [a, b] = parseFrameRange("frames", t);
-            return unless(a <= b && std::abs(a) <= model::kMaxFrame && std::abs(b) <= model::kMaxFrame
-                    && qint64(b) - a + 1 <= kMaxFramesPerRun,
+            const auto [a, b, step] = parseFrameRange("frames", t);
+            return unless(a <= b && std::abs(a) <= model::kMaxFrame && std::abs(b) <= model::kMaxFrame && step >= 1
+                    && (qint64(b) - a) / step + 1 <= kMaxFramesPerRun,
                 "frame range in bounds");
         },
         [](const QString& t) {
