@@ -26,8 +26,14 @@ int runNew(const Invocation& in)
             throw UsageError{Cli::tr("--out “%1” is one of the files being read; give a new .celform file").arg(out)};
     if (QFileInfo(out).suffix().compare(QLatin1String("celform"), Qt::CaseInsensitive) != 0)
         throw UsageError{Cli::tr("--out must end in .celform, not “%1”").arg(out)};
+    double fps = 24.0;
+    if (in.isSet("fps")) {
+        fps = parseNumber("fps", in.value("fps"));
+        if (!(fps > 0.0 && fps <= model::kMaxFps))
+            throw UsageError{Cli::tr("--fps must lie in (0, %1]").arg(model::kMaxFps)};
+    }
     model::Document doc;
-    for (const QString& w : doc.newFromMesh(mesh))
+    for (const QString& w : doc.newFromMesh(mesh, fps, in.isSet("sequence")))
         printErr(Cli::tr("warning: %1: %2").arg(mesh, w));
     for (const QString& image : in.values("drawing"))
         doc.importDrawing(image);
@@ -144,10 +150,19 @@ int runInfo(const Invocation& in)
 std::vector<SubCommand> projectCommands()
 {
     return {
-        {"new", {"celform new MESH --out P.celform [--drawing IMAGE]..."},
-            QT_TRANSLATE_NOOP("celform::app::Cli", "Creates a project from a mesh file."),
+        {"new", {"celform new MESH --out P.celform [--drawing IMAGE]... [--fps F] [--sequence]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Creates a project from a mesh file, or from an animated base (a glTF/GLB with skins or morph "
+                "targets, or an OBJ/PLY sequence such as walk_####.obj)."),
             {{"MESH", QT_TRANSLATE_NOOP("celform::app::Cli", "Mesh file (OBJ, PLY, STL, OFF, glTF, GLB).")}},
             {{"out", "P.celform", QT_TRANSLATE_NOOP("celform::app::Cli", "Project file to write.")},
+                {"fps", "F",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "Frames per second an animated base is sampled at (default 24); frame F is time F / fps.")},
+                {"sequence", nullptr,
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "MESH is one numbered file of a sequence (walk_0001.obj): read it with its numbered "
+                        "siblings as frames.")},
                 {"drawing", "IMAGE",
                     QT_TRANSLATE_NOOP("celform::app::Cli", "Reference drawing to embed (repeatable).")}},
             runNew},

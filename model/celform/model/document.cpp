@@ -3,6 +3,7 @@
 // (document_look.cpp, document_highlights.cpp, document_offsets.cpp).
 #include "celform/model/document.h"
 
+#include "celform/model/animation_io.h"
 #include "celform/model/document_commands.h"
 #include "celform/model/image_io.h"
 #include "celform/model/io_error.h"
@@ -168,8 +169,22 @@ void Document::saveCopy(const QString& path) const
     saveProject(m_data, path, /*keepBackup=*/false);
 }
 
-QStringList Document::newFromMesh(const QString& meshPath)
+QStringList Document::newFromMesh(const QString& meshPath, double fps, bool sequence)
 {
+    const QString suffix = QFileInfo(meshPath).suffix().toLower();
+    const bool gltf = suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
+    if (sequence || meshPath.contains(QLatin1Char('#')) || (gltf && isAnimatedBaseFile(meshPath))) {
+        AnimatedImport animated = readAnimatedBase(meshPath, fps);
+        ProjectData data = newProject(std::move(animated.mesh), QFileInfo(meshPath).fileName());
+        if (!animated.animation.empty()) {
+            data.time.fps = animated.fps;
+            data.time.firstFrame = animated.animation.firstFrame;
+            data.time.lastFrame = animated.animation.lastFrame();
+            data.baseAnimation = std::make_shared<const algo::BaseAnimation>(std::move(animated.animation));
+        }
+        reset(std::move(data));
+        return {};
+    }
     MeshImport imported = importMesh(meshPath);
     reset(newProject(std::make_shared<const algo::TriMesh>(std::move(imported.mesh)), QFileInfo(meshPath).fileName()));
     return imported.warnings;
@@ -245,6 +260,15 @@ QStringList Document::importBaseMesh(const QString& path)
     MeshImport imported = importMesh(path);
     setBaseMesh(std::make_shared<const algo::TriMesh>(std::move(imported.mesh)), QFileInfo(path).fileName());
     return imported.warnings;
+}
+
+void Document::importAnimatedBase(const QString& path, double fps)
+{
+    AnimatedImport animated = readAnimatedBase(path, fps);
+    auto animation = animated.animation.empty()
+        ? nullptr
+        : std::make_shared<const algo::BaseAnimation>(std::move(animated.animation));
+    setAnimatedBase(std::move(animated.mesh), std::move(animation), animated.fps, QFileInfo(path).fileName());
 }
 
 // --- drawings ------------------------------------------------------------------------------------

@@ -46,7 +46,10 @@ public:
     void saveCopy(const QString& path) const;
     /// Starts a new project on a mesh file. Throws IoError and leaves the document untouched.
     /// Returns the import warnings.
-    QStringList newFromMesh(const QString& meshPath);
+    /// An animated glTF/GLB, a `#` pattern (walk_####.obj) or, with sequence, a numbered file
+    /// and its numbered siblings start an animated base (animation_io.h) sampled at fps, which
+    /// sets the scene's frame rate and range.
+    QStringList newFromMesh(const QString& meshPath, double fps = 24.0, bool sequence = false);
     /// Replaces everything, clears undo history; for open and tests.
     void reset(ProjectData data, const QString& filePath = {});
 
@@ -68,6 +71,9 @@ public:
     void setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QString& meshName);
     /// Imports a mesh file as the base model; returns the import warnings. Throws IoError.
     QStringList importBaseMesh(const QString& path);
+    /// Imports an animated base (glTF/GLB with skins or morph targets, or an OBJ/PLY sequence)
+    /// sampled at fps in place of the base model (setAnimatedBase). Throws IoError.
+    void importAnimatedBase(const QString& path, double fps = 24.0);
 
     // --- drawings ----------------------------------------------------------------------------
     ObjectId addDrawing(Drawing drawing);
