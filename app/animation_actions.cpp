@@ -20,7 +20,9 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QStatusBar>
+#include <QTimer>
 
+#include <algorithm>
 #include <cmath>
 
 namespace celform::app {
@@ -113,9 +115,13 @@ void frameObserver(MainWindow* window)
     const double radius = std::max(1e-6, 0.5 * box.diagonal().norm());
     model::Camera camera;
     camera.fovYDegrees = 30.0;
+    const views::Viewport* observer = window->observer();
+    const double aspect = observer->height() > 0 ? double(observer->width()) / observer->height() : 1.0;
+    const double halfY = 0.5 * camera.fovYDegrees * M_PI / 180.0;
+    const double halfAngle = std::min(halfY, std::atan(std::tan(halfY) * aspect));
     const Eigen::Vector3d side = Eigen::Vector3d(0.8, 0.9, 1.2).normalized();
     camera.target = centre;
-    camera.eye = centre + side * (1.1 * radius / std::sin(0.5 * camera.fovYDegrees * M_PI / 180.0));
+    camera.eye = centre + side * (1.05 * radius / std::sin(halfAngle));
     camera.up = Eigen::Vector3d::UnitY();
     window->observer()->setCamera(camera);
 }
@@ -203,14 +209,14 @@ void installAnimationActions(MainWindow* window)
             observerDock->hide();
             return;
         }
-        // Beside the main view: the right dock area, split off the panels' column, half the view.
+        // Beside the main view: its own column on the left area's inner side, as wide as half the
+        // main view, next to the panels' columns.
         observerDock->setFloating(false);
-        window->addDockWidget(Qt::RightDockWidgetArea, observerDock, Qt::Horizontal);
-        if (auto* properties = window->findChild<QDockWidget*>(QStringLiteral("propertiesDock")))
-            window->splitDockWidget(observerDock, properties, Qt::Horizontal);
+        window->addDockWidget(Qt::LeftDockWidgetArea, observerDock, Qt::Horizontal);
         observerDock->show();
         window->resizeDocks({observerDock}, {std::max(240, window->viewport()->width() / 2)}, Qt::Horizontal);
-        frameObserver(window);
+        // Framed once the dock has its size (the fit depends on the view's aspect).
+        QTimer::singleShot(0, window, [window] { frameObserver(window); });
     });
     if (observerDock)
         QObject::connect(observerDock, &QDockWidget::visibilityChanged, layout, [layout, observerDock](bool) {

@@ -145,12 +145,12 @@ void CameraPathOverlay::updateGlyph()
         return;
     }
     m_camera = m_driver->camera();
-    // A pyramid: apex at the eye, its base a view rectangle in front of it, a tenth of the
+    // A pyramid: apex at the eye, its base a view rectangle in front of it, a quarter of the
     // model's size away, so it reads at any distance from the model.
     const Eigen::Vector3d forward = m_camera.forward();
     const Eigen::Vector3d right = m_camera.right();
     const Eigen::Vector3d up = m_camera.trueUp();
-    const double length = 0.15 * m_modelSize;
+    const double length = 0.25 * m_modelSize;
     const double aspect = m_driver->height() > 0 ? double(m_driver->width()) / m_driver->height() : 1.0;
     const double halfHeight = m_camera.projection == model::Projection::Perspective
         ? length * std::tan(0.5 * m_camera.fovYDegrees * M_PI / 180.0)
