@@ -169,6 +169,9 @@ private slots:
         // Wraps: some frame follows a later one.
         QTRY_VERIFY_WITH_TIMEOUT(std::adjacent_find(seen.begin(), seen.end(), std::greater<>()) != seen.end(), 5000);
         QVERIFY(std::all_of(seen.begin(), seen.end(), [](int f) { return f >= 0 && f <= 3; }));
+        // The rate reached shows while playing.
+        QTRY_VERIFY_WITH_TIMEOUT(panel->fpsReadout().contains(QStringLiteral("fps")), 5000);
+        QVERIFY(playback->achievedFps() > 0.0);
         QTest::keyClick(window.viewport(), Qt::Key_Space);
         QVERIFY(!playback->isPlaying());
 
