@@ -1,6 +1,8 @@
 // The editor window and its file handling.
 #include "main_window.h"
 
+#include "animation_actions.h"
+
 #include "editor_dialogs.h"
 #include "first_steps_hint.h"
 #include "getting_started.h"
@@ -159,6 +161,7 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
     createDocks();
     createActions();
     createMenus();
+    installAnimationActions(this); // Timeline dock, playback, shot camera, Observer layout
 
     m_statistics = new QLabel(this);
     statusBar()->addPermanentWidget(m_statistics);

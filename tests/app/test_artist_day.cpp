@@ -233,6 +233,11 @@ private slots:
                 {"actionSetRenderCamera", "actionViewRenderCamera"}},
             {QStringLiteral("stereo review (full screen)"), {"actionStereoReview"}},
             {QStringLiteral("render image / render sequence"), {"actionRenderImage", "actionRenderSequence"}},
+            {QStringLiteral("play / pause (viewports, Timeline)"), {"actionPlayPause"}},
+            {QStringLiteral("previous / next frame"), {"actionPreviousFrame", "actionNextFrame"}},
+            {QStringLiteral("first / last frame of the range"), {"actionFirstFrame", "actionLastFrame"}},
+            {QStringLiteral("previous / next key of any kind"), {"actionPreviousKeyFrame", "actionNextKeyFrame"}},
+            {QStringLiteral("key the shot camera at the current frame"), {"actionKeyCamera"}},
             {QStringLiteral("keyboard shortcuts (searchable) / preferences"),
                 {"actionKeyboardShortcuts", "actionPreferences"}},
         };

@@ -429,6 +429,11 @@ void Viewport::setObserved(Viewport* driver)
     update();
 }
 
+vtkRenderer* Viewport::modelRenderer() const
+{
+    return m_scene->renderer();
+}
+
 // --- reference drawing overlay ----------------------------------------------------------------
 
 void Viewport::setOverlayDrawing(model::ObjectId drawing)

@@ -26,6 +26,8 @@
 #include <optional>
 #include <vector>
 
+class vtkRenderer;
+
 namespace celform::model {
 class Document;
 }
@@ -125,6 +127,9 @@ public:
     /// Observer mode: shows the blend for another viewport's camera from this one's (paper 1,
     /// figure 6, bottom row). Null ends it.
     void setObserved(Viewport* driver);
+    /// The model layer's renderer, for props drawn in this view's 3D scene (the Observer's camera
+    /// path overlay); the viewport owns it. Call update() after changing such props.
+    [[nodiscard]] vtkRenderer* modelRenderer() const;
     /// The shading-offset brush (its mode, strength and target live in the tool).
     [[nodiscard]] OffsetBrushTool* offsetBrushTool() const;
     /// The view direction of this camera, from the base centroid towards the eye (DESIGN.md).
