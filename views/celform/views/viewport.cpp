@@ -380,7 +380,7 @@ Eigen::Vector3d Viewport::viewDirection() const
 {
     if (!m_document || !m_document->hasMesh())
         return Eigen::Vector3d::Zero();
-    return model::viewDirectionFromEye(m_document->data(), camera().eye);
+    return model::viewDirectionFromEye(m_document->data(), camera().eye, m_document->currentFrame());
 }
 
 // --- what is shown ----------------------------------------------------------------------------
