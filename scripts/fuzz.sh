@@ -68,12 +68,13 @@ while read -r kind binary; do
   done
   suffix=$kind
   [ "$kind" = project ] && suffix=celform
+  case $kind in animated-*) suffix=${kind#animated-} ;; esac
   for dir in tests/data/fuzz-regressions "$shared"; do
     [ -d "$dir" ] && find "$dir" -path '*/fuzzed' -prune -o -type f -iname "*.$suffix" -size -50k \
       -exec cp -n {} "$corpus/" \;
   done
   dict=tests/fuzz/dict/$kind.dict
-  [ "$kind" = glb ] && dict=tests/fuzz/dict/gltf.dict
+  case $kind in glb | animated-gltf | animated-glb) dict=tests/fuzz/dict/gltf.dict ;; esac
   flags=(-max_total_time="$seconds" -rss_limit_mb="$rss" -malloc_limit_mb="$malloc" -timeout="$timeout"
     -print_final_stats=1
     -artifact_prefix="$crashes/")

@@ -4,6 +4,7 @@
 #include "cli/options.h"
 
 #include "celform/model/document.h"
+#include "celform/model/frame_schedule.h"
 #include "celform/model/io_error.h"
 #include "celform/model/project_file.h"
 #include "celform/model/render_job.h"
@@ -11,7 +12,10 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QThread>
 
+#include <algorithm>
 #include <optional>
 
 namespace celform::app {
@@ -113,8 +117,20 @@ int runRender(const Invocation& in)
                 Cli::tr("--ridge-threshold takes a number >= 0, not “%1”").arg(in.value("ridge-threshold"))};
         job.ridgeThreshold = float(t);
     }
-    if (in.isSet("frames"))
-        std::tie(job.firstFrame, job.lastFrame) = parseFrameRange("frames", in.value("frames"));
+    if (in.isSet("frames")) {
+        const FrameRange range = parseFrameRange("frames", in.value("frames"));
+        job.firstFrame = range.first;
+        job.lastFrame = range.last;
+        job.step = range.step;
+    }
+    job.threads = QThread::idealThreadCount();
+    if (in.isSet("threads")) {
+        job.threads = parseInt("threads", in.value("threads"));
+        if (job.threads < 1)
+            throw UsageError{
+                Cli::tr("--threads takes a whole number of at least 1, not “%1”").arg(in.value("threads"))};
+    }
+    job.skipExisting = in.isSet("skip-existing");
     job.stereo = in.isSet("stereo") ? parseStereo(in.value("stereo")) : algo::StereoOutput::Off;
     job.pass = in.value("pass");
     if (in.isSet("pass") && !model::renderPassNames().contains(job.pass))
@@ -128,10 +144,59 @@ int runRender(const Invocation& in)
         : QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".png"));
     if (!model::renderSuffixes().contains(QFileInfo(job.output).suffix().toLower()))
         throw UsageError{Cli::tr("--out must end in .png, .exr, .tif or .jpg, not “%1”").arg(job.output)};
-    checkRenderMemory("size", QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height()), job.bytesNeeded());
+    // A farm's chunk of one frame (--frames 100-100) is named as the same frame of a longer range.
+    if (in.isSet("frames") && !job.output.contains(QLatin1Char('#'))) {
+        const QFileInfo out(job.output);
+        job.output = out.dir().filePath(out.completeBaseName() + QStringLiteral("_####.") + out.suffix());
+    }
+    const QString size = QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height());
+    checkRenderMemory("size", size, job.bytesNeeded());
+    const int wanted = std::min(job.threads, job.frameCount());
+    const qint64 available = model::availableRenderMemory();
+    job.threads = model::concurrentFrames(job, available);
+    if (job.threads < wanted)
+        printErr(Cli::tr("warning: rendering %1 frames at a time, not %2: each needs about %3 GB of memory at %4, "
+                         "and %5 GB are available")
+                     .arg(job.threads)
+                     .arg(wanted)
+                     .arg(double(job.bytesNeeded() + model::kRenderThreadOverheadBytes) / 1e9, 0, 'f', 2)
+                     .arg(size)
+                     .arg(double(available) / 1e9, 0, 'f', 2));
 
+    // One line per frame on standard error as it is done; the callbacks come one at a time.
+    const int count = job.frameCount();
+    QJsonArray written, skipped;
+    model::RenderCallbacks callbacks;
+    callbacks.written = [&](int frame, const QString& file, int done) {
+        printErr(Cli::tr("frame %1 (%2/%3) -> %4").arg(frame).arg(done).arg(count).arg(file));
+        written.append(QJsonObject{{"frame", frame}, {"file", file}});
+    };
+    callbacks.skipped = [&](int frame, const QString& file, int done) {
+        printErr(Cli::tr("frame %1 (%2/%3) skipped: %4 exists").arg(frame).arg(done).arg(count).arg(file));
+        skipped.append(QJsonObject{{"frame", frame}, {"file", file}});
+    };
     // A render reads the project and writes pictures; the overrides apply to this render only.
-    model::renderFrames(model::loadProject(path), path, job);
+    try {
+        model::renderFrames(model::loadProject(path), path, job, callbacks);
+    } catch (const model::RenderFrameError& e) {
+        printErr(QStringLiteral("celform: ") + Cli::tr("frame %1: %2").arg(e.frame()).arg(e.message()));
+        return kExitBadInput;
+    }
+    if (in.isSet("json")) {
+        // In frame order, whichever thread finished first.
+        auto byFrame = [](QJsonArray frames) {
+            std::vector<QJsonValue> sorted(frames.begin(), frames.end());
+            std::sort(sorted.begin(), sorted.end(),
+                [](const QJsonValue& a, const QJsonValue& b) { return a["frame"].toInt() < b["frame"].toInt(); });
+            QJsonArray out;
+            for (const QJsonValue& v : sorted)
+                out.append(v);
+            return out;
+        };
+        printJson({{"first", job.firstFrame}, {"last", job.lastFrame}, {"step", job.step}, {"count", count},
+            {"size", QJsonArray{job.size.width(), job.size.height()}}, {"threads", job.threads},
+            {"written", byFrame(written)}, {"skipped", byFrame(skipped)}});
+    }
     return kExitOk;
 }
 
@@ -144,7 +209,10 @@ std::vector<SubCommand> lookCommands()
     std::vector<OptionSpec> renderOptions = camera_options::specs();
     const std::vector<OptionSpec> more
         = {{"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to render (default 0).")},
-            {"frames", "A-B", QT_TRANSLATE_NOOP("celform::app::Cli", "Frames to render, A-B inclusive.")},
+            {"frames", "A-B[:STEP]",
+                QT_TRANSLATE_NOOP("celform::app::Cli",
+                    "Frames to render, A-B inclusive, every STEP-th from A (default 1); each to a file of its own "
+                    "(a # in --out, or _####, is the frame number).")},
             {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Image size (default 1280x720).")},
             {"style", "STYLE", QT_TRANSLATE_NOOP("celform::app::Cli", "Shading style for this render.")},
             {"lines", "on|off|KIND,...",
@@ -159,7 +227,15 @@ std::vector<SubCommand> lookCommands()
             {"stereo", "MODE", QT_TRANSLATE_NOOP("celform::app::Cli", "Stereo output.")},
             {"pass", "NAME", QT_TRANSLATE_NOOP("celform::app::Cli", "Write one render pass.")},
             {"out", "FILE",
-                QT_TRANSLATE_NOOP("celform::app::Cli", "Output image (default: the project's name with .png).")}};
+                QT_TRANSLATE_NOOP("celform::app::Cli", "Output image (default: the project's name with .png).")},
+            {"threads", "N",
+                QT_TRANSLATE_NOOP("celform::app::Cli",
+                    "Frames rendered at once (default: one per processor; fewer when memory is short). The "
+                    "files are the same for any N.")},
+            {"skip-existing", nullptr,
+                QT_TRANSLATE_NOOP("celform::app::Cli",
+                    "Leave frames whose file exists as they are (to resume an interrupted render).")},
+            {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print the frames written and skipped as JSON.")}};
     renderOptions.insert(renderOptions.end(), more.begin(), more.end());
     return {
         {"set",
@@ -180,11 +256,12 @@ std::vector<SubCommand> lookCommands()
                         "removes it.")}},
             runSet},
         {"render",
-            {"celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames A-B] "
-             "[--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] [--ridge-threshold T] "
-             "[--light point:X,Y,Z|directional:X,Y,Z] [--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
+            {"celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames "
+             "A-B[:STEP]] [--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] "
+             "[--ridge-threshold T] [--light point:X,Y,Z|directional:X,Y,Z] "
+             "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
              "[--pass beauty|lines|tone|highlights|depth|normal|id|segments|curvature|depth-error] [--out "
-             "FILE.png|.exr|.tif|.jpg]"},
+             "FILE.png|.exr|.tif|.jpg] [--threads N] [--skip-existing] [--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Renders the project's look without a display (CPU renderer)."),
             {{"P", kProjectArgument}}, renderOptions, runRender},
     };

@@ -111,26 +111,29 @@ int parseFrame(const char* option, const QString& text)
     return v;
 }
 
-std::pair<int, int> parseFrameRange(const char* option, const QString& text)
+FrameRange parseFrameRange(const char* option, const QString& text)
 {
-    static const QRegularExpression form(QStringLiteral("^\\s*(-?\\d+)\\s*-\\s*(-?\\d+)\\s*$"));
+    static const QRegularExpression form(QStringLiteral("^\\s*(-?\\d+)\\s*-\\s*(-?\\d+)\\s*(?::\\s*(\\d+)\\s*)?$"));
     const QRegularExpressionMatch m = form.match(text);
-    bool okA = false, okB = false;
+    bool okA = false, okB = false, okStep = true;
     const qint64 first = m.hasMatch() ? m.captured(1).toLongLong(&okA) : 0;
     const qint64 last = m.hasMatch() ? m.captured(2).toLongLong(&okB) : 0;
-    if (!okA || !okB || last < first)
-        throw UsageError{Cli::tr("--frames takes A-B with A <= B, not “%1”").arg(text)};
+    const qint64 step = m.hasMatch() && m.hasCaptured(3) ? m.captured(3).toLongLong(&okStep) : 1;
+    if (!okA || !okB || !okStep || last < first || step < 1)
+        throw UsageError{
+            Cli::tr("%1 takes A-B or A-B:STEP with A <= B and STEP >= 1, not “%2”").arg(dashed(option), text)};
     if (std::abs(first) > model::kMaxFrame || std::abs(last) > model::kMaxFrame)
         throw UsageError{Cli::tr("%1 takes frame numbers between -%2 and %2, not “%3”")
                              .arg(dashed(option))
                              .arg(model::kMaxFrame)
                              .arg(text)};
-    if (last - first + 1 > kMaxFramesPerRun)
+    if ((last - first) / step + 1 > kMaxFramesPerRun)
         throw UsageError{Cli::tr("%1 takes at most %2 frames at a time, not “%3”")
                              .arg(dashed(option))
                              .arg(kMaxFramesPerRun)
                              .arg(text)};
-    return {int(first), int(last)};
+    // A step beyond the range gives its first frame alone, as the range length does (and fits an int).
+    return {int(first), int(last), int(std::min(step, last - first + 1))};
 }
 
 QSize parseSize(const char* option, const QString& text)

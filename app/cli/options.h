@@ -36,9 +36,15 @@ double parseFloat(const char* option, const QString& text);
 int parseInt(const char* option, const QString& text);
 /// A frame number within +-model::kMaxFrame.
 int parseFrame(const char* option, const QString& text);
-/// "A-B" (either may be negative), A <= B, both within +-model::kMaxFrame, at most
-/// kMaxFramesPerRun frames.
-std::pair<int, int> parseFrameRange(const char* option, const QString& text);
+/// The frames of `--frames A-B[:STEP]`: first, first + step, ... up to last.
+struct FrameRange {
+    int first = 0;
+    int last = 0;
+    int step = 1;
+};
+/// "A-B" or "A-B:STEP" (A and B may be negative, STEP >= 1), A <= B, both within
+/// +-model::kMaxFrame, at most kMaxFramesPerRun frames.
+FrameRange parseFrameRange(const char* option, const QString& text);
 /// "WxH", each between 1 and kMaxRenderSide, at most kMaxRenderPixels in all.
 QSize parseSize(const char* option, const QString& text);
 /// A usage error when a render of bytes cannot fit in the memory available now (the system's

@@ -16,46 +16,9 @@
 
 #include <cmath>
 
-#include <sys/resource.h>
 #include <sys/stat.h>
 
 namespace {
-
-/// Runs celform as runCelform does, with its address space capped at addressSpace bytes and
-/// killed after timeoutMs: a regression that allocates gigabytes or blocks fails its test.
-/// Under AddressSanitizer, which cannot start within such a cap, ASan's own limits stand in: one
-/// allocation larger than the cap, or a resident size beyond it and ASan's quarantine (256 MB),
-/// ends celform with a report, a crash that fails the test as running out of memory would.
-Run runCelformLimited(const QStringList& args, qint64 addressSpace, int timeoutMs)
-{
-    QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.remove(QStringLiteral("DISPLAY"));
-    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-    if (celform::test::kAddressSanitizer) {
-        const qint64 mb = addressSpace >> 20;
-        env.insert(QStringLiteral("ASAN_OPTIONS"),
-            env.value(QStringLiteral("ASAN_OPTIONS"))
-                + QStringLiteral(":max_allocation_size_mb=%1:hard_rss_limit_mb=%2").arg(mb).arg(mb + 256));
-    } else {
-        p.setChildProcessModifier([addressSpace] {
-            const rlimit limit{rlim_t(addressSpace), rlim_t(addressSpace)};
-            ::setrlimit(RLIMIT_AS, &limit);
-        });
-    }
-    p.setProcessEnvironment(env);
-    p.start(QStringLiteral(CELFORM_EXECUTABLE), args);
-    Run run;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        run.err = QStringLiteral("(killed after %1 ms)").arg(timeoutMs);
-        return run;
-    }
-    return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
-        QString::fromUtf8(p.readAllStandardError())};
-}
 
 /// Statistics of a highlights-pass PNG: grey (white on black), the lit area and its centroid.
 struct Mask {
@@ -1215,6 +1178,66 @@ private slots:
             for (const char* editorOnly : {"libvtk", "libQt6Widgets", "libQt6OpenGL", "/libGL.so", "libmpi",
                      "libOpenImageIO", "libcelform_editor"})
                 QVERIFY2(!lib.contains(QLatin1String(editorOnly)), qPrintable(lib));
+    }
+
+    // Issue 13: `camera` edits the path; `render` and `eval` without camera options look through
+    // the path's camera at the frame, exactly as with that camera given; info reports the time.
+    void cameraPathDrivesRenderAndEval()
+    {
+        const QString p = tetrahedronProject(QStringLiteral("camera.celform"));
+        QVERIFY(!p.isEmpty());
+        Run r = runCelform({"camera", p, "--turntable", "12", "--elevation", "20", "--start", "4"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = runCelform({"info", p, "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject info = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(info["fps"].toDouble(), 24.0);
+        QCOMPARE(info["frame_range"].toArray(), (QJsonArray{4, 15}));
+        QCOMPARE(info["camera_keys"].toInt(), 12);
+        r = runCelform({"camera", p, "--list", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray keys = QJsonDocument::fromJson(r.out.toUtf8()).object()["keys"].toArray();
+        QCOMPARE(keys.size(), 12);
+        const QJsonObject at7 = keys[3].toObject();
+        QCOMPARE(at7["frame"].toInt(), 7);
+        const celform::model::Camera c = cameraOf(at7["camera"].toObject());
+        auto text = [](const Eigen::Vector3d& v) {
+            return QStringLiteral("%1,%2,%3").arg(v.x(), 0, 'g', 17).arg(v.y(), 0, 'g', 17).arg(v.z(), 0, 'g', 17);
+        };
+        const QString viaPath = m_dir.filePath(QStringLiteral("path7.png"));
+        const QString viaCamera = m_dir.filePath(QStringLiteral("camera7.png"));
+        QCOMPARE(runCelform({"render", p, "--frame", "7", "--size", "96x72", "--out", viaPath}).exitCode, 0);
+        QCOMPARE(runCelform({"render", p, "--frame", "7", "--size", "96x72", "--eye", text(c.eye), "--target",
+                                text(c.target), "--up", text(c.up), "--out", viaCamera})
+                     .exitCode,
+            0);
+        QCOMPARE(fileBytes(viaPath), fileBytes(viaCamera));
+        const QString other = m_dir.filePath(QStringLiteral("path9.png"));
+        QCOMPARE(runCelform({"render", p, "--frame", "9", "--size", "96x72", "--out", other}).exitCode, 0);
+        QVERIFY(fileBytes(other) != fileBytes(viaPath)); // the camera moved
+        // eval: the view direction is the path camera's, from the centroid.
+        r = runCelform({"eval", p, "--frame", "7", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray view = QJsonDocument::fromJson(r.out.toUtf8()).object()["view"].toArray();
+        r = runCelform({"eval", p, "--frame", "7", "--eye", text(c.eye), "--target", text(c.target), "--up", text(c.up),
+            "--json"});
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["view"].toArray(), view);
+        // A key, then clearing; usage errors.
+        QCOMPARE(runCelform({"camera", p, "--key", "30", "--view", "1,0,0"}).exitCode, 0);
+        r = runCelform({"camera", p, "--list", "--json"});
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["keys"].toArray().size(), 13);
+        QCOMPARE(runCelform({"camera", p, "--clear"}).exitCode, 0);
+        r = runCelform({"info", p, "--json"});
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object()["camera_keys"].toInt(), 0);
+        for (const QStringList& bad :
+            {QStringList{}, QStringList{"--turntable", "1"}, QStringList{"--turntable", "12", "--elevation", "90"},
+                QStringList{"--key", "3"}, QStringList{"--clear", "--list"},
+                QStringList{"--turntable", "12", "--axis", "0,0,0"}, QStringList{"--clear", "--view", "1,0,0"}}) {
+            QStringList args{"camera", p};
+            args << bad;
+            QCOMPARE(runCelform(args).exitCode, 2);
+        }
+        QCOMPARE(runCelform({"camera", m_dir.filePath(QStringLiteral("missing.celform")), "--clear"}).exitCode, 3);
     }
 };
 

@@ -2,10 +2,14 @@
 // code, exit status and both outputs.
 #pragma once
 
+#include "test_support.h"
+
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QString>
 #include <QStringList>
+
+#include <sys/resource.h>
 
 namespace {
 
@@ -36,6 +40,42 @@ Run runCelform(const QStringList& args, const QStringList& environment = {},
     p.start(program, args);
     if (!p.waitForFinished(120000))
         p.kill();
+    return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
+        QString::fromUtf8(p.readAllStandardError())};
+}
+
+/// Runs celform as runCelform does, with its address space capped at addressSpace bytes and
+/// killed after timeoutMs: a regression that allocates gigabytes or blocks fails its test.
+/// Under AddressSanitizer, which cannot start within such a cap, ASan's own limits stand in: one
+/// allocation larger than the cap, or a resident size beyond it and ASan's quarantine (256 MB),
+/// ends celform with a report, a crash that fails the test as running out of memory would.
+inline Run runCelformLimited(const QStringList& args, qint64 addressSpace, int timeoutMs)
+{
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("DISPLAY"));
+    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    if (celform::test::kAddressSanitizer) {
+        const qint64 mb = addressSpace >> 20;
+        env.insert(QStringLiteral("ASAN_OPTIONS"),
+            env.value(QStringLiteral("ASAN_OPTIONS"))
+                + QStringLiteral(":max_allocation_size_mb=%1:hard_rss_limit_mb=%2").arg(mb).arg(mb + 256));
+    } else {
+        p.setChildProcessModifier([addressSpace] {
+            const rlimit limit{rlim_t(addressSpace), rlim_t(addressSpace)};
+            ::setrlimit(RLIMIT_AS, &limit);
+        });
+    }
+    p.setProcessEnvironment(env);
+    p.start(QStringLiteral(CELFORM_EXECUTABLE), args);
+    Run run;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        run.err = QStringLiteral("(killed after %1 ms)").arg(timeoutMs);
+        return run;
+    }
     return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
         QString::fromUtf8(p.readAllStandardError())};
 }

@@ -4,6 +4,7 @@
 #include "cli/options.h"
 
 #include "celform/algorithms/mesh_analysis.h"
+#include "celform/model/animation_io.h"
 #include "celform/model/image_io.h"
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
@@ -32,6 +33,8 @@ namespace {
 
 const QStringList kMeshKinds = {"ply", "off", "obj", "stl", "gltf", "glb", "fbx"};
 const QStringList kDrawingKinds = {"png", "jpg", "tif", "exr", "psd", "svg"};
+/// model::readAnimatedBase on glTF (its tinygltf reader runs in the product's own process).
+const QStringList kAnimatedKinds = {"animated-gltf", "animated-glb"};
 
 /// input.SUFFIX in a folder of this process, rewritten for every input. The folder's depth under
 /// the temporary folder is fixed, so relative references in a file (an OBJ's mtllib ../../x)
@@ -164,9 +167,9 @@ const std::vector<OptionParser>& optionParsers()
         [](const QString& t) { return (void)parseInt("i", t), QString(); },
         [](const QString& t) { return unless(std::abs(parseFrame("frame", t)) <= model::kMaxFrame, "frame in range"); },
         [](const QString& t) {
-            const auto [a, b] = parseFrameRange("frames", t);
-            return unless(a <= b && std::abs(a) <= model::kMaxFrame && std::abs(b) <= model::kMaxFrame
-                    && qint64(b) - a + 1 <= kMaxFramesPerRun,
+            const auto [a, b, step] = parseFrameRange("frames", t);
+            return unless(a <= b && std::abs(a) <= model::kMaxFrame && std::abs(b) <= model::kMaxFrame && step >= 1
+                    && (qint64(b) - a) / step + 1 <= kMaxFramesPerRun,
                 "frame range in bounds");
         },
         [](const QString& t) {
@@ -235,7 +238,8 @@ quint32 crc32Of(const char* data, qint64 size)
 
 QStringList kinds()
 {
-    return kMeshKinds + kDrawingKinds + QStringList{QStringLiteral("project"), QStringLiteral("cli-options")};
+    return kMeshKinds + kDrawingKinds + kAnimatedKinds
+        + QStringList{QStringLiteral("project"), QStringLiteral("cli-options")};
 }
 
 Outcome feed(const QString& kind, const QByteArray& bytes)
@@ -251,6 +255,13 @@ Outcome feed(const QString& kind, const QByteArray& bytes)
             const model::MeshImport mesh = model::importMesh(writeInput(kind, bytes), here);
             out.loaded = true;
             out.broken = meshProblem(mesh.mesh);
+        } else if (kAnimatedKinds.contains(kind)) {
+            const QString suffix = kind.mid(kind.indexOf(QLatin1Char('-')) + 1);
+            const model::AnimatedImport anim = model::readAnimatedBase(writeInput(suffix, bytes));
+            out.loaded = true;
+            out.broken = meshProblem(*anim.mesh);
+            if (out.broken.isEmpty())
+                out.broken = QString::fromStdString(anim.animation.problem(anim.mesh->vertexCount()));
         } else if (kDrawingKinds.contains(kind)) {
             const QImage image = model::decodeImage(bytes, kind, QStringLiteral("input.") + kind, here);
             out.loaded = true;

@@ -2,6 +2,8 @@
 // documented counts, every malformed file a clean IoError or a warning, bit-exact round trips.
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
+#include "gltf_buffer_fixture.h"
+#include "io_test_support.h"
 #include "test_support.h"
 
 #include <QDir>
@@ -31,25 +33,9 @@ using celform::model::importMesh;
 using celform::model::IoError;
 using celform::model::MeshImport;
 
-/// Runs an import expected to succeed; an IoError fails the test instead of aborting the run.
-#define CELFORM_IMPORT_OR_FAIL(var, expr)                                                                              \
-    decltype(expr) var;                                                                                                \
-    try {                                                                                                              \
-        var = (expr);                                                                                                  \
-    } catch (const IoError& e) {                                                                                       \
-        QFAIL(qPrintable(e.message()));                                                                                \
-    }
-
 namespace {
 
-QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
-{
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size())
-        qFatal("cannot write %s", qPrintable(path));
-    return path;
-}
+using celform::test::writeFile;
 
 /// Four vertices in a deliberately non-sorted order and one quad: the fan must be (0 1 2), (0 2 3).
 Positions quadPositions()
@@ -785,10 +771,7 @@ void TestMeshIo::objMaterialLibraries()
 
 void TestMeshIo::gltfBuffersAreRegularFiles_data()
 {
-    QTest::addColumn<QString>("uri");
-    QTest::newRow("fifo") << "pipe.bin";
-    QTest::newRow("device") << "/dev/zero";
-    QTest::newRow("folder") << "folder";
+    celform::test::addBufferUriRows();
 }
 
 // Issue 14: a glTF buffer whose uri names a FIFO blocked Assimp's open for ever (/dev/zero, with a
@@ -798,14 +781,8 @@ void TestMeshIo::gltfBuffersAreRegularFiles()
 {
     QFETCH(QString, uri);
     QTemporaryDir dir;
-    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath(QStringLiteral("pipe.bin"))).constData(), 0600) == 0);
-    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("folder")));
-    const QByteArray json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
-      "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
-      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],
-      "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36}],
-      "buffers":[{"byteLength":4000000000,"uri":")"
-        + uri.toUtf8() + R"("}]})";
+    QVERIFY(celform::test::makeBufferTargets(dir));
+    const QByteArray json = celform::test::gltfWithBufferUri(uri);
     const QString path = writeFile(dir, QStringLiteral("buffer.gltf"), json);
     const Watchdog watchdog(path, kImportTimeLimit);
     QElapsedTimer timer;

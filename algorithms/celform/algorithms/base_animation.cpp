@@ -63,46 +63,36 @@ void BaseAnimation::evaluate(const Positions& rest, int frame, Positions& out) c
     const std::size_t s = std::size_t(sampleOf(frame));
     const std::size_t targets = morphTargets.size();
     const Eigen::Index n = rest.rows();
-    if (!skinned()) {
-        out = rest;
-        for (std::size_t t = 0; t < targets; ++t) {
-            const float w = morphWeights[s * targets + t];
-            if (w == 0.0f)
-                continue;
-            if (w == 1.0f)
-                out.noalias() += morphTargets[t];
-            else
-                out.noalias() += w * morphTargets[t];
-        }
-        return;
+    // Morph targets first, whole arrays at a time (only the targets weighted at this sample).
+    out = rest;
+    for (std::size_t t = 0; t < targets; ++t) {
+        const float w = morphWeights[s * targets + t];
+        if (w == 0.0f)
+            continue;
+        if (w == 1.0f)
+            out.noalias() += morphTargets[t];
+        else
+            out.noalias() += w * morphTargets[t];
     }
-    // Skinned: morph each vertex, then blend its joints' matrices and move it. One pass over the
-    // vertices, the weighted targets gathered first so that the inner loop only reads.
-    std::vector<std::pair<const float*, float>> active;
-    active.reserve(targets);
-    for (std::size_t t = 0; t < targets; ++t)
-        if (const float w = morphWeights[s * targets + t]; w != 0.0f)
-            active.emplace_back(morphTargets[t].data(), w);
+    if (!skinned())
+        return;
+    // Then each morphed vertex moved by the blend of its joints' matrices, in place. An unused
+    // influence (weight 0) may name any joint, even one past jointCount (problem() allows it), so
+    // its matrix is never read.
     const SkinMatrix* matrices = skinMatrices.data() + s * std::size_t(jointCount);
-    const float* restData = rest.data();
-    float* outData = out.data();
+    float* data = out.data();
     for (Eigen::Index v = 0; v < n; ++v) {
-        Eigen::Vector4f p(restData[3 * v], restData[3 * v + 1], restData[3 * v + 2], 1.0f);
-        for (const auto& [delta, w] : active) {
-            p[0] += w * delta[3 * v];
-            p[1] += w * delta[3 * v + 1];
-            p[2] += w * delta[3 * v + 2];
-        }
+        const Eigen::Vector4f p(data[3 * v], data[3 * v + 1], data[3 * v + 2], 1.0f);
         const Eigen::Vector4f& jw = jointWeights[std::size_t(v)];
         const auto& ji = joints[std::size_t(v)];
-        SkinMatrix m = jw[0] * matrices[ji[0]];
-        for (int i = 1; i < 4; ++i)
+        SkinMatrix m = SkinMatrix::Zero();
+        for (int i = 0; i < 4; ++i)
             if (jw[i] != 0.0f)
                 m.noalias() += jw[i] * matrices[ji[std::size_t(i)]];
         const Eigen::Vector3f q = m * p;
-        outData[3 * v] = q[0];
-        outData[3 * v + 1] = q[1];
-        outData[3 * v + 2] = q[2];
+        data[3 * v] = q[0];
+        data[3 * v + 1] = q[1];
+        data[3 * v + 2] = q[2];
     }
 }
 
@@ -129,11 +119,12 @@ Eigen::Vector3f BaseAnimation::evaluateVertex(const Positions& rest, int frame, 
             q[1] += w * delta[3 * v + 1];
             q[2] += w * delta[3 * v + 2];
         }
+    // As evaluate(): an unused influence's joint (which may be past jointCount) is never read.
     const SkinMatrix* matrices = skinMatrices.data() + s * std::size_t(jointCount);
     const Eigen::Vector4f& jw = jointWeights[std::size_t(v)];
     const auto& ji = joints[std::size_t(v)];
-    SkinMatrix m = jw[0] * matrices[ji[0]];
-    for (int i = 1; i < 4; ++i)
+    SkinMatrix m = SkinMatrix::Zero();
+    for (int i = 0; i < 4; ++i)
         if (jw[i] != 0.0f)
             m.noalias() += jw[i] * matrices[ji[std::size_t(i)]];
     return m * q;

@@ -39,7 +39,7 @@ void FrameEvaluator::evaluateAt(const ProjectData& data, int frame, const Eigen:
     m_frame = frame;
     m_direction = direction;
     m_blend = m_blender.weights(data, direction);
-    m_blender.shapeFor(data, m_blend, frame, *m_base, m_shape);
+    m_blender.shapeFor(data, m_blend, frame, *m_base, m_shape, &m_blendScratch);
 }
 
 } // namespace celform::model

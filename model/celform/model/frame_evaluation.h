@@ -48,6 +48,7 @@ private:
     void evaluateAt(const ProjectData& data, int frame, const Eigen::Vector3d& direction);
 
     BlendEvaluator m_blender;
+    BlendScratch m_blendScratch;
     algo::Positions m_baseScratch;
     const algo::Positions* m_base = &m_baseScratch;
     algo::Positions m_shape;

@@ -126,6 +126,21 @@ void importMeshForParent(const QString& path, const QString& transferPath)
     meshio::writeTransfer(out, transferPath);
 }
 
+namespace meshio {
+
+void readMeshInOrder(const QString& path, MeshImport& out)
+{
+    const MeshReader& reader = readerFor(path);
+    if (!reader.keepsVertexOrder)
+        throw IoError(path,
+            MeshIo::tr("\"%1\" files do not keep their vertex order; use .obj, .ply or .off")
+                .arg(QFileInfo(path).suffix().toLower()));
+    reader.read(path, out);
+    throwIfUnusable(path, out.mesh);
+}
+
+} // namespace meshio
+
 QStringList meshSuffixes()
 {
     QStringList suffixes;

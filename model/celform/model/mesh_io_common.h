@@ -268,6 +268,11 @@ void readPly(const QString& path, MeshImport& out); // mesh_io_ply.cpp
 void readObj(const QString& path, MeshImport& out); // mesh_io_obj.cpp
 void readWithAssimp(const QString& path, MeshImport& out); // mesh_io_assimp.cpp: STL, glTF/GLB, FBX, ...
 
+// For readers of several files of one topology (the frames of a mesh sequence, animation_io):
+// reads path with its table reader in this process and checks it as importMesh() does, without
+// the topology report. Throws IoError, also for a format whose reader does not keep vertex order.
+void readMeshInOrder(const QString& path, MeshImport& out); // mesh_io.cpp
+
 // The two ends of an import in a child process (mesh_io_transfer.cpp): readInChild() runs
 // `celform import-mesh` on the file and reads what its importMeshForParent() wrote with
 // writeTransfer(): the mesh (with its materials and UVs) and the reader's warnings.

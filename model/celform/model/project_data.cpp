@@ -135,14 +135,25 @@ SparseOffsets SparseOffsets::difference(const algo::Positions& shape, const algo
 ProjectData::FrameOffsets ProjectData::offsetsAt(const KeyViewpoint& key, int frame, TimeInterpolation time)
 {
     FrameOffsets result;
+    offsetsAt(key, frame, time, result);
+    return result;
+}
+
+void ProjectData::offsetsAt(const KeyViewpoint& key, int frame, TimeInterpolation time, FrameOffsets& result)
+{
+    result.stored = nullptr;
+    result.interpolated.indices.clear();
+    result.interpolated.deltas.clear();
     if (key.offsetsByFrame.empty())
-        return result;
+        return;
     if (key.offsetsByFrame.size() == 1) {
         result.stored = &key.offsetsByFrame.begin()->second;
-        return result;
+        return;
     }
     std::vector<double> knots;
     std::vector<const SparseOffsets*> values;
+    knots.reserve(key.offsetsByFrame.size());
+    values.reserve(key.offsetsByFrame.size());
     for (const auto& [f, offsets] : key.offsetsByFrame) {
         knots.push_back(double(f));
         values.push_back(&offsets);
@@ -153,28 +164,48 @@ ProjectData::FrameOffsets ProjectData::offsetsAt(const KeyViewpoint& key, int fr
     if (single != weights.end()
         && std::count_if(weights.begin(), weights.end(), [](double w) { return w != 0.0; }) == 1) {
         result.stored = values[std::size_t(single - weights.begin())];
-        return result;
+        return;
     }
-    // Sum of weighted sparse offsets: every (vertex, weighted delta), sorted, then merged.
-    std::vector<std::pair<std::uint32_t, Eigen::Vector3f>> terms;
-    for (std::size_t k = 0; k < values.size(); ++k) {
-        if (weights[k] == 0.0)
-            continue;
-        const auto w = float(weights[k]);
-        for (std::size_t i = 0; i < values[k]->indices.size(); ++i)
-            terms.emplace_back(values[k]->indices[i], w * values[k]->deltas[i]);
-    }
-    std::stable_sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    // The weighted sum of the keyed frames' sparse offsets: a merge of their ascending index
+    // lists. A vertex's terms are summed in keyed-frame order, the first one assigned.
+    struct Head {
+        const SparseOffsets* offsets;
+        float weight;
+        std::size_t at;
+    };
+    std::vector<Head> heads;
+    heads.reserve(values.size());
+    std::size_t total = 0;
+    for (std::size_t k = 0; k < values.size(); ++k)
+        if (weights[k] != 0.0 && !values[k]->indices.empty()) {
+            heads.push_back({values[k], float(weights[k]), 0});
+            total = std::max(total, values[k]->indices.size());
+        }
     SparseOffsets& out = result.interpolated;
-    for (const auto& [index, delta] : terms) {
-        if (!out.indices.empty() && out.indices.back() == index) {
-            out.deltas.back() += delta;
-        } else {
-            out.indices.push_back(index);
-            out.deltas.push_back(delta);
+    out.indices.reserve(total);
+    out.deltas.reserve(total);
+    constexpr std::uint32_t kDone = std::numeric_limits<std::uint32_t>::max();
+    for (;;) {
+        std::uint32_t next = kDone;
+        for (const Head& h : heads)
+            if (h.at < h.offsets->indices.size())
+                next = std::min(next, h.offsets->indices[h.at]);
+        if (next == kDone)
+            break;
+        bool first = true;
+        for (Head& h : heads) {
+            if (h.at >= h.offsets->indices.size() || h.offsets->indices[h.at] != next)
+                continue;
+            const Eigen::Vector3f term = h.weight * h.offsets->deltas[h.at++];
+            if (first) {
+                out.indices.push_back(next);
+                out.deltas.push_back(term);
+                first = false;
+            } else {
+                out.deltas.back() += term;
+            }
         }
     }
-    return result;
 }
 
 QString sceneTimeProblem(const SceneTime& time)

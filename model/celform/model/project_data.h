@@ -302,6 +302,8 @@ struct ProjectData {
         [[nodiscard]] const SparseOffsets* get() const { return stored ? stored : &interpolated; }
     };
     [[nodiscard]] static FrameOffsets offsetsAt(const KeyViewpoint& key, int frame, TimeInterpolation time);
+    /// The same into out, reusing its storage (no allocation once it has grown).
+    static void offsetsAt(const KeyViewpoint& key, int frame, TimeInterpolation time, FrameOffsets& out);
     /// Base model plus a key's offsets at a frame (#V by 3), with the project's time
     /// interpolation. Needs a base mesh.
     [[nodiscard]] algo::Positions keyShape(const KeyViewpoint& key, int frame) const;

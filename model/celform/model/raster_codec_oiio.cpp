@@ -200,6 +200,10 @@ QString write(const QString& file, int width, int height, const std::vector<std:
             spec.alpha_channel = int(c);
     if (isFloat)
         spec.attribute("compression", "zip");
+    // The EXR and TIFF writers stamp the time of writing unless DateTime is set; an empty one
+    // leaves the field out. A frame then has the same bytes whenever and wherever it is rendered
+    // (farm nodes are compared by checksum).
+    spec.attribute("DateTime", "");
     const std::string name = QFile::encodeName(file).toStdString();
     auto out = OIIO::ImageOutput::create(name);
     if (!out || !out->open(name, spec))

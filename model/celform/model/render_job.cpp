@@ -6,6 +6,7 @@
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/depth_analysis.h"
 #include "celform/model/depth_analysis_output.h"
+#include "celform/model/frame_schedule.h"
 #include "celform/model/io_error.h"
 #include "celform/model/render_output.h"
 #include "celform/model/shading_layers.h"
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -156,63 +158,86 @@ ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& sourc
     return resolved;
 }
 
+namespace {
+
+/// One thread's renderer of a job's frames (a FrameRenderer): its own buffers and caches, which
+/// only spare work whose result they hold exactly (the shape keeps its generation while frames
+/// leave it still, so highlight geometry and the analyser's curvature are reused).
+class FrameWorker {
+public:
+    FrameWorker(const ProjectData& data, const RenderJob& job, const ResolvedRenderJob& resolved)
+        : m_data(data)
+        , m_job(job)
+        , m_resolved(resolved)
+        , m_allPasses(job.writesAllPasses())
+        , m_floatFile(QFileInfo(job.output).suffix().toLower() == QLatin1String("exr"))
+        , m_analysisPicture(analysisPictureFromName(job.pass))
+    {
+        // resolveRenderJob has built the same sphere already, and thrown if it could not.
+        m_evaluator.prepare(data);
+    }
+
+    bool render(int f, const QString& target, const std::function<bool()>& cancelled)
+    {
+        const ProjectData& data = m_data;
+        // The one evaluation of a frame (frame_evaluation.h): the camera at the frame (the path's
+        // when the project has one), the animated base there, the view direction and the shape.
+        const Camera camera = renderJobCamera(data, m_resolved.look, m_job, f);
+        m_evaluator.evaluate(data, f, camera.eye);
+        const algo::Positions& next = m_evaluator.shape();
+        if (m_shape.generation == 0 || next.rows() != m_shape.positions.rows() || next != m_shape.positions) {
+            m_shape.positions = next;
+            m_shape.touch();
+        }
+        effectiveShadingOffsets(data, m_evaluator.blender(), m_evaluator.direction(), f, m_offsets);
+        // The analysis passes (segments, curvature, depth error) come from the depth analysis of
+        // the centre eye's picture.
+        if (m_analysisPicture) {
+            m_analyzer.analyze(data, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
+                m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_offsets);
+            if (cancelled())
+                return false;
+            writeImage(analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile), target);
+            return true;
+        }
+        const algo::RenderPasses passes = renderShape(data, m_resolved.look, m_shape.positions, f, camera,
+            m_job.size.width(), m_job.size.height(), m_job.stereo, m_cache, m_shape.generation, &m_offsets);
+        if (cancelled())
+            return false;
+        if (m_allPasses)
+            writePassesExr(passes, target);
+        else
+            writeImage(
+                passImage(passes, m_job.pass.isEmpty() ? QStringLiteral("beauty") : m_job.pass, m_floatFile), target);
+        return true;
+    }
+
+private:
+    const ProjectData& m_data;
+    const RenderJob& m_job;
+    const ResolvedRenderJob& m_resolved;
+    const bool m_allPasses;
+    const bool m_floatFile;
+    const std::optional<AnalysisPicture> m_analysisPicture;
+    FrameEvaluator m_evaluator;
+    algo::RenderCache m_cache;
+    DepthAnalyzer m_analyzer;
+    FrameAnalysis m_analysed;
+    algo::Shape m_shape;
+    std::vector<float> m_offsets; // in effect at the camera's view and the frame (shading_layers.h)
+};
+
+} // namespace
+
 int renderFrames(const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks)
 {
     const ResolvedRenderJob resolved = resolveRenderJob(data, source, job);
-    const Look& look = resolved.look;
-    // The one evaluation of a frame (frame_evaluation.h): the camera at the frame (the path's when
-    // the project has one), the animated base there, the view direction and the blended shape.
-    FrameEvaluator evaluator;
-    evaluator.prepare(data);
-    const BlendEvaluator& blender = evaluator.blender();
-    const bool allPasses = job.writesAllPasses();
-    const bool floatFile = QFileInfo(job.output).suffix().toLower() == QLatin1String("exr");
-    auto cancelled = [&callbacks] { return callbacks.cancelled && callbacks.cancelled(); };
-    algo::RenderCache cache;
-    // The analysis passes (segments, curvature, depth error) come from the depth analysis of the
-    // centre eye's picture; the analyser keeps the curvature while the shape is still.
-    const std::optional<AnalysisPicture> analysisPicture = analysisPictureFromName(job.pass);
-    DepthAnalyzer analyzer;
-    FrameAnalysis analysed;
-    // The shape keeps its generation while frames leave it still, so highlight geometry is reused.
-    algo::Shape shape;
-    std::vector<float> offsets; // in effect at the camera's view and the frame (shading_layers.h)
-    int written = 0;
-    for (int f = job.firstFrame; f <= job.lastFrame && !cancelled(); ++f) {
-        const Camera camera = renderJobCamera(data, look, job, f);
-        evaluator.evaluate(data, f, camera.eye);
-        const Eigen::Vector3d& direction = evaluator.direction();
-        const algo::Positions& next = evaluator.shape();
-        if (shape.generation == 0 || next.rows() != shape.positions.rows() || next != shape.positions) {
-            shape.positions = next;
-            shape.touch();
-        }
-        effectiveShadingOffsets(data, blender, direction, f, offsets);
-        const QString target = job.framePath(f);
-        if (analysisPicture) {
-            analyzer.analyze(data, look, shape.positions, shape.generation, f, camera, job.size.width(),
-                job.size.height(), AnalysisSettings{}, analysed, &offsets);
-            if (cancelled())
-                break;
-            writeImage(analysisImage(analysed.analysis, *analysisPicture, floatFile), target);
-            ++written;
-            if (callbacks.written)
-                callbacks.written(f, target, written);
-            continue;
-        }
-        const algo::RenderPasses passes = renderShape(data, look, shape.positions, f, camera, job.size.width(),
-            job.size.height(), job.stereo, cache, shape.generation, &offsets);
-        if (cancelled())
-            break;
-        if (allPasses)
-            writePassesExr(passes, target);
-        else
-            writeImage(passImage(passes, job.pass.isEmpty() ? QStringLiteral("beauty") : job.pass, floatFile), target);
-        ++written;
-        if (callbacks.written)
-            callbacks.written(f, target, written);
-    }
-    return written;
+    return scheduleFrames(job, callbacks, [&]() -> FrameRenderer {
+        auto worker = std::make_shared<FrameWorker>(data, job, resolved);
+        return [worker](int frame, const QString& file, const std::function<bool()>& cancelled) {
+            return worker->render(frame, file, cancelled);
+        };
+    });
 }
 
 } // namespace celform::model

@@ -5,6 +5,7 @@
 
 #include "celform/algorithms/stereo.h"
 #include "celform/model/camera.h"
+#include "celform/model/io_error.h"
 #include "celform/model/project_data.h"
 #include "celform/model/view_blend.h"
 
@@ -13,6 +14,7 @@
 #include <QSize>
 #include <QString>
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 
@@ -44,6 +46,7 @@ struct RenderJob {
     std::optional<Eigen::Vector3d> view; ///< from the centroid towards the eye; not zero
     int firstFrame = 0;
     int lastFrame = 0; ///< >= firstFrame; several frames make a sequence
+    int step = 1; ///< >= 1: frames firstFrame, firstFrame + step, ... up to lastFrame
     QSize size{1280, 720};
     /// Overrides of the project's look for this render only.
     std::optional<ShadingStyle> style;
@@ -58,9 +61,16 @@ struct RenderJob {
     /// The file, or for a sequence a pattern: a run of # is the zero-padded frame number;
     /// without one, "_FFFF" goes before the suffix.
     QString output;
+    /// How many frames render at once, each on a thread of its own with its own buffers (>= 1).
+    /// The files do not depend on it.
+    int threads = 1;
+    /// Frames whose file exists already are left as they are (a resubmitted farm job resumes).
+    bool skipExisting = false;
 
-    [[nodiscard]] bool isSequence() const { return lastFrame > firstFrame; }
-    [[nodiscard]] int frameCount() const { return lastFrame - firstFrame + 1; }
+    [[nodiscard]] bool isSequence() const { return frameCount() > 1; }
+    [[nodiscard]] int frameCount() const { return (lastFrame - firstFrame) / std::max(step, 1) + 1; }
+    /// The index-th frame of the job (0 <= index < frameCount()).
+    [[nodiscard]] int frameAt(int index) const { return firstFrame + index * std::max(step, 1); }
     /// An .exr without a pass, in mono: every pass as named channels.
     [[nodiscard]] bool writesAllPasses() const;
     /// The file frame f goes to.
@@ -101,19 +111,38 @@ struct ResolvedRenderJob {
 /// keys cannot be blended.
 ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job);
 
-/// What a running render reports and asks. Both are called on the rendering thread.
+/// What a running render reports and asks. They are called one at a time (never two at once),
+/// from the thread rendering the frame: with job.threads > 1 that is not always the same thread.
 struct RenderCallbacks {
-    /// After each frame's file is written: the frame, the file and how many frames are done.
+    /// After each frame's file is written: the frame, the file and how many frames are done
+    /// (written or skipped).
     std::function<void(int frame, const QString& file, int done)> written;
+    /// A frame left out because its file exists (RenderJob::skipExisting), counted in done.
+    std::function<void(int frame, const QString& file, int done)> skipped;
     /// Asked before each frame and before each write: true stops the render there (a frame
     /// rendered but not yet written is dropped; the files written so far stay).
     std::function<bool()> cancelled;
 };
 
-/// Renders the job's frames of a project and writes one file per frame (atomically). source
-/// names the project in errors. Returns how many frames were written (fewer when cancelled).
-/// Throws IoError naming the project (no base model, keys that cannot be blended) or the file
-/// that could not be written; std::bad_alloc when the images do not fit in memory.
+/// A frame that could not be rendered or written: the frame, and the file and problem as IoError
+/// gives them. The frames finished before it (or beside it, on other threads) stay written.
+class RenderFrameError : public IoError {
+public:
+    RenderFrameError(int frame, const QString& file, const QString& problem)
+        : IoError(file, problem)
+        , m_frame(frame)
+    { }
+    [[nodiscard]] int frame() const { return m_frame; }
+
+private:
+    int m_frame;
+};
+
+/// Renders the job's frames of a project and writes one file per frame (atomically), job.threads
+/// frames at a time. source names the project in errors. Returns how many frames were written
+/// (fewer when cancelled or skipped). Throws IoError naming the project (no base model, keys that
+/// cannot be blended), RenderFrameError for the first frame (the lowest, when several threads
+/// fail) that could not be rendered or written, once the frames already under way are finished.
 int renderFrames(
     const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks = {});
 

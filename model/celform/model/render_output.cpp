@@ -9,12 +9,17 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QSysInfo>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <optional>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace celform::model {
 namespace {
@@ -23,21 +28,50 @@ struct RenderOutput {
     Q_DECLARE_TR_FUNCTIONS(celform::model::RenderOutput)
 };
 
-/// A temporary name beside the target with the same suffix, so OpenImageIO picks the format.
-QString temporaryBeside(const QString& path)
+/// Makes a new empty file beside the target, with the same suffix so that OpenImageIO picks the
+/// format, and returns its name. The name holds the host, the process and a counter, and the file
+/// is created exclusively: threads and farm nodes writing into one shared folder never write into
+/// each other's file. A file left by a killed process is hidden (a dot) and never has the target's
+/// name. Throws IoError naming the target when the folder does not take the file.
+QString createTemporaryBeside(const QString& path)
 {
+    static std::atomic<unsigned> counter{0};
     const QFileInfo info(path);
-    return info.dir().filePath(QStringLiteral(".%1.%2.tmp.%3")
-                                   .arg(info.completeBaseName())
-                                   .arg(QCoreApplication::applicationPid())
-                                   .arg(info.suffix()));
+    const QString owner = QStringLiteral("%1-%2").arg(QSysInfo::machineHostName()).arg(::getpid());
+    for (int attempt = 0;; ++attempt) {
+        const QString name = info.dir().filePath(QStringLiteral(".%1.%2-%3.tmp.%4")
+                                                     .arg(info.completeBaseName(), owner)
+                                                     .arg(counter.fetch_add(1))
+                                                     .arg(info.suffix()));
+        // 0666 less the umask, as OpenImageIO would create the file.
+        const int fd = ::open(QFile::encodeName(name).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            ::close(fd);
+            return name;
+        }
+        if (errno != EEXIST || attempt >= 100)
+            throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(errno)));
+    }
 }
 
+/// Puts the finished temporary file in the target's place. Its bytes go to the disk first: after
+/// a crash of the machine the target holds the old file or the whole new one, never an empty one.
 void commit(const QString& temporary, const QString& path)
 {
-    if (std::rename(QFile::encodeName(temporary).constData(), QFile::encodeName(path).constData()) != 0) {
+    const QByteArray from = QFile::encodeName(temporary);
+    const int fd = ::open(from.constData(), O_RDONLY | O_CLOEXEC);
+    const bool synced = fd >= 0 && ::fsync(fd) == 0;
+    const int syncError = errno;
+    if (fd >= 0)
+        ::close(fd);
+    if (!synced) {
         QFile::remove(temporary);
-        throw IoError(path, RenderOutput::tr("could not be written (the folder refused the new file)"));
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(syncError)));
+    }
+    if (std::rename(from.constData(), QFile::encodeName(path).constData()) != 0) {
+        const int renameError = errno;
+        QFile::remove(temporary);
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(renameError)));
     }
 }
 
@@ -52,13 +86,10 @@ void writeChannels(const QString& path, int width, int height, const std::vector
     if (!known.contains(suffix))
         throw IoError(path, RenderOutput::tr("has an unknown image type; use .png, .tif, .jpg or .exr"));
     const int channels = int(names.size());
-    const QString temporary = temporaryBeside(path);
     const RasterCodec& codec = rasterCodec(path);
-    QString error;
-    if (isFloat) {
-        error = codec.write(temporary, width, height, names, true, data.data());
-    } else {
-        std::vector<unsigned char> bytes(data.size());
+    std::vector<unsigned char> bytes;
+    if (!isFloat) {
+        bytes.resize(data.size());
         for (std::size_t i = 0; i < data.size(); ++i) {
             const int c = int(i % std::size_t(channels));
             float v = std::clamp(data[i], 0.f, 1.f);
@@ -66,8 +97,11 @@ void writeChannels(const QString& path, int width, int height, const std::vector
                 v = algo::linearToSrgb(v);
             bytes[i] = static_cast<unsigned char>(std::lround(v * 255.f));
         }
-        error = codec.write(temporary, width, height, names, false, bytes.data());
     }
+    // Nothing below throws between making the temporary file and removing or renaming it.
+    const QString temporary = createTemporaryBeside(path);
+    const QString error = isFloat ? codec.write(temporary, width, height, names, true, data.data())
+                                  : codec.write(temporary, width, height, names, false, bytes.data());
     if (!error.isEmpty()) {
         QFile::remove(temporary);
         throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));

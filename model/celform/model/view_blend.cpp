@@ -71,18 +71,24 @@ void BlendEvaluator::shape(const ProjectData& data, const Eigen::Vector3d& viewD
 }
 
 void BlendEvaluator::shapeFor(const ProjectData& data, const BlendResult& blend, int frame, const algo::Positions& base,
-    algo::Positions& out) const
+    algo::Positions& out, BlendScratch* scratch) const
 {
-    std::vector<algo::WeightedOffsets> parts;
-    // Each key's offsets at the frame (stored, or interpolated over time and held here).
-    std::vector<ProjectData::FrameOffsets> atFrame;
-    atFrame.reserve(blend.shares.size());
+    BlendScratch local;
+    BlendScratch& buffers = scratch ? *scratch : local;
+    std::vector<algo::WeightedOffsets>& parts = buffers.parts;
+    parts.clear();
+    // Each key's offsets at the frame (stored, or interpolated over time and held here); the
+    // buffers only grow, so a caller's scratch keeps its storage between frames.
+    if (buffers.atFrame.size() < blend.shares.size())
+        buffers.atFrame.resize(blend.shares.size());
+    std::size_t used = 0;
     for (const KeyShare& share : blend.shares) {
         const KeyViewpoint* key = data.key(share.key);
         if (!key)
             continue;
-        atFrame.push_back(ProjectData::offsetsAt(*key, frame, data.blend.time));
-        const SparseOffsets* offsets = atFrame.back().get();
+        ProjectData::FrameOffsets& slot = buffers.atFrame[used++];
+        ProjectData::offsetsAt(*key, frame, data.blend.time, slot);
+        const SparseOffsets* offsets = slot.get();
         if (!offsets || offsets->indices.empty())
             continue;
         algo::OffsetsView view;

@@ -2,6 +2,7 @@
 // enabled keys, rebuilt only when keys or blend settings change, and the blended shape for a view.
 #pragma once
 
+#include "celform/algorithms/blend.h"
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/algorithms/view_sphere.h"
 #include "celform/model/project_data.h"
@@ -25,6 +26,12 @@ struct BlendResult {
     algo::ViewBlend raw; ///< facet, barycentric coordinates, falloff
 };
 
+/// Buffers a caller keeps between blends so that a blend allocates nothing once they have grown.
+struct BlendScratch {
+    std::vector<ProjectData::FrameOffsets> atFrame;
+    std::vector<algo::WeightedOffsets> parts;
+};
+
 class BlendEvaluator {
 public:
     /// Rebuilds the sphere when the enabled keys' directions or the unspecified-region mode
@@ -42,7 +49,7 @@ public:
     /// The blended shape for weights already computed by weights(): base + the keys' offsets at
     /// the frame, each times its share. base: the base's vertices at the frame.
     void shapeFor(const ProjectData& data, const BlendResult& blend, int frame, const algo::Positions& base,
-        algo::Positions& out) const;
+        algo::Positions& out, BlendScratch* scratch = nullptr) const;
 
     /// View direction for an eye point at a frame (viewDirectionFromEye).
     [[nodiscard]] static Eigen::Vector3d viewDirection(const ProjectData& data, const Eigen::Vector3d& eye, int frame);
