@@ -36,16 +36,20 @@ int runExport(const Invocation& in)
     if (suffix != wanted)
         throw UsageError{Cli::tr("--out must end in .%1 for --format %2, not “%3”")
                              .arg(wanted, model::exportFormatName(*format), job.output)};
-    std::optional<std::pair<int, int>> frames;
-    if (in.isSet("frames"))
+    std::optional<FrameRange> frames;
+    if (in.isSet("frames")) {
         frames = parseFrameRange("frames", in.value("frames"));
+        // Every format holds consecutive frames (a cache's sample rate, glTF's times).
+        if (frames->step != 1)
+            throw UsageError{Cli::tr("--frames takes A-B for an export, without a step: “%1”").arg(in.value("frames"))};
+    }
 
     const QString path = in.argument(0);
     const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
     if (!data.baseMesh)
         throw model::IoError(path, Cli::tr("has no base model"));
     job.firstFrame = frames ? frames->first : data.time.firstFrame;
-    job.lastFrame = frames ? frames->second : data.time.lastFrame;
+    job.lastFrame = frames ? frames->last : data.time.lastFrame;
 
     // Progress on stderr once an export has run a second, at most once a second.
     QElapsedTimer clock;

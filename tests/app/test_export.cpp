@@ -349,6 +349,7 @@ private slots:
         QTest::newRow("no out") << QStringList{"--format", "pc2"};
         QTest::newRow("reversed frames") << QStringList{"--format", "pc2", "--frames", "5-2", "--out", "x.pc2"};
         QTest::newRow("frames not a range") << QStringList{"--format", "pc2", "--frames", "abc", "--out", "x.pc2"};
+        QTest::newRow("frames with a step") << QStringList{"--format", "pc2", "--frames", "0-8:2", "--out", "x.pc2"};
         QTest::newRow("suffix unlike format") << QStringList{"--format", "glb", "--out", "x.gltf"};
     }
 
