@@ -1,6 +1,7 @@
 // The actions of the editor's dialogs (editor_dialogs.h).
 #include "editor_dialogs.h"
 
+#include "export_dialog.h"
 #include "main_window.h"
 #include "preferences.h"
 #include "preferences_dialog.h"
@@ -83,6 +84,7 @@ void installEditorDialogs(MainWindow* window)
         file->insertAction(quit, renderSequence);
         file->insertSeparator(quit);
     }
+    installExportAction(window); // File > Export… (export_dialog.h)
 
     QAction* shortcuts = makeAction(window, QStringLiteral("actionKeyboardShortcuts"),
         MainWindow::tr("&Keyboard Shortcuts"), MainWindow::tr("Every keyboard shortcut of the editor, searchable"));

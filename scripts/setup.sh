@@ -33,5 +33,22 @@ else
   echo "setup: all ${#packages[@]} Debian packages are installed"
 fi
 
+# The Khronos glTF Validator for test_export (an npm package, pinned). Node.js and npm come from
+# Debian when the machine has no npm of its own (a NodeSource nodejs carries npm and conflicts
+# with Debian's npm package, so npm is not in the list above).
+validator_version=2.0.0-dev.3.10
+if ! command -v npm >/dev/null 2>&1; then
+  echo "setup: installing Node.js and npm for the glTF Validator"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends nodejs npm
+fi
+if grep -qs "\"version\": \"$validator_version\"" build/tools/node_modules/gltf-validator/package.json; then
+  echo "setup: gltf-validator $validator_version is installed"
+else
+  npm install --prefix build/tools "gltf-validator@$validator_version" --no-audit --no-fund
+fi
+
 cmake --preset release
 cmake --build --preset release

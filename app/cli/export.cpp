@@ -1,0 +1,107 @@
+// `celform export`: the view-dependent model's animation for other tools (issue 13, "Export"):
+// a glTF scene (text or binary) with key morph targets, their weights and the camera path, a PC2
+// point cache, or one OBJ mesh per frame. The model's exporters do the work (export.h).
+#include "cli/command.h"
+#include "cli/options.h"
+
+#include "celform/model/export.h"
+#include "celform/model/io_error.h"
+#include "celform/model/project_file.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QJsonArray>
+
+namespace celform::app {
+namespace {
+
+/// How long an export runs before it prints progress on stderr, and the time between lines.
+constexpr qint64 kProgressAfterMs = 1000;
+
+int runExport(const Invocation& in)
+{
+    if (!in.isSet("format") || !in.isSet("out"))
+        throw UsageError{Cli::tr("--format and --out are required")};
+    const auto format = model::exportFormatFromName(in.value("format"));
+    if (!format)
+        throw UsageError{Cli::tr("--format must be gltf, glb, pc2 or obj-seq, not “%1”").arg(in.value("format"))};
+    model::ExportJob job;
+    job.format = *format;
+    job.output = in.value("out");
+    if (job.output.isEmpty())
+        throw UsageError{Cli::tr("--out needs a file name")};
+    const QString suffix = QFileInfo(job.output).suffix().toLower();
+    const QString wanted
+        = *format == model::ExportFormat::ObjSequence ? QStringLiteral("obj") : model::exportFormatName(*format);
+    if (suffix != wanted)
+        throw UsageError{Cli::tr("--out must end in .%1 for --format %2, not “%3”")
+                             .arg(wanted, model::exportFormatName(*format), job.output)};
+    std::optional<FrameRange> frames;
+    if (in.isSet("frames")) {
+        frames = parseFrameRange("frames", in.value("frames"));
+        // Every format holds consecutive frames (a cache's sample rate, glTF's times).
+        if (frames->step != 1)
+            throw UsageError{Cli::tr("--frames takes A-B for an export, without a step: “%1”").arg(in.value("frames"))};
+    }
+
+    const QString path = in.argument(0);
+    const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
+    if (!data.baseMesh)
+        throw model::IoError(path, Cli::tr("has no base model"));
+    job.firstFrame = frames ? frames->first : data.time.firstFrame;
+    job.lastFrame = frames ? frames->last : data.time.lastFrame;
+
+    // Progress on stderr once an export has run a second, at most once a second.
+    QElapsedTimer clock;
+    clock.start();
+    qint64 lastPrinted = 0;
+    model::ExportCallbacks callbacks;
+    callbacks.progress = [&](int done, int total) {
+        const qint64 now = clock.elapsed();
+        const bool due = now >= kProgressAfterMs && now - lastPrinted >= kProgressAfterMs;
+        const bool last = done == total && lastPrinted > 0; // a long export says it finished
+        if (!due && !last)
+            return;
+        lastPrinted = now;
+        printErr(Cli::tr("export: frame %1 of %2").arg(done).arg(total));
+    };
+    const model::ExportResult result = model::exportProject(data, path, job, callbacks);
+    for (const QString& w : result.warnings)
+        printErr(Cli::tr("warning: %1: %2").arg(path, w));
+    if (in.isSet("json")) {
+        QJsonArray files;
+        for (const QString& f : result.files)
+            files.append(f);
+        printJson({{"format", model::exportFormatName(job.format)},
+            {"frame_range", QJsonArray{job.firstFrame, job.lastFrame}}, {"frames", result.frames}, {"files", files},
+            {"warnings", QJsonArray::fromStringList(result.warnings)}});
+    }
+    return kExitOk;
+}
+
+} // namespace
+
+std::vector<SubCommand> exportCommands()
+{
+    return {
+        {"export", {"celform export P --format gltf|glb|pc2|obj-seq [--frames A-B] --out FILE [--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Exports the animation as seen through the camera path: a glTF scene with the keys as morph "
+                "targets, a PC2 point cache or an OBJ per frame."),
+            {{"P", kProjectArgument}},
+            {{"format", "F",
+                 QT_TRANSLATE_NOOP("celform::app::Cli",
+                     "gltf or glb (keys as morph targets, weights and camera animated), pc2 (point cache) or "
+                     "obj-seq (one OBJ per frame).")},
+                {"frames", "A-B",
+                    QT_TRANSLATE_NOOP("celform::app::Cli", "Frames to export, A-B inclusive (default the project's).")},
+                {"out", "FILE",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "The file; for obj-seq a pattern where a run of # is the frame number (else _FFFF goes "
+                        "before .obj).")},
+                {"json", nullptr, kJsonOption}},
+            runExport},
+    };
+}
+
+} // namespace celform::app

@@ -1,0 +1,406 @@
+// `celform export` run as a user runs it (issue 13, "Export"): a PC2 cache whose every frame is
+// the shape `celform eval --frame F` writes, an OBJ per frame, glTF files read back (targets,
+// samples, weights against `celform eval --json`) and passed by the Khronos glTF Validator, and
+// the exit codes of bad options and unwritable files.
+#include "cli_run.h"
+#include "test_meshes.h"
+
+#include "celform/model/export.h"
+#include "celform/model/mesh_io.h"
+
+#include <tiny_gltf.h>
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <Eigen/Geometry>
+
+#include <cstring>
+
+using namespace celform;
+
+namespace {
+
+constexpr int kFrames = 12; // the turntable's revolution, and the project's range
+
+/// The PC2 file as read back: header fields and the positions of every sample.
+struct Pc2 {
+    char signature[12] = {};
+    std::int32_t version = 0, points = 0, samples = 0;
+    float startFrame = 0, sampleRate = 0;
+    std::vector<float> positions;
+    qint64 size = 0;
+};
+
+Pc2 readPc2(const QString& path)
+{
+    QFile f(path);
+    Pc2 p;
+    if (!f.open(QIODevice::ReadOnly))
+        return p;
+    const QByteArray bytes = f.readAll();
+    p.size = bytes.size();
+    if (bytes.size() < 32)
+        return p;
+    const char* d = bytes.constData();
+    std::memcpy(p.signature, d, 12);
+    std::memcpy(&p.version, d + 12, 4);
+    std::memcpy(&p.points, d + 16, 4);
+    std::memcpy(&p.startFrame, d + 20, 4);
+    std::memcpy(&p.sampleRate, d + 24, 4);
+    std::memcpy(&p.samples, d + 28, 4);
+    p.positions.resize(std::size_t(bytes.size() - 32) / 4);
+    std::memcpy(p.positions.data(), d + 32, p.positions.size() * 4);
+    return p;
+}
+
+/// The accessor's floats.
+std::vector<float> floats(const tinygltf::Model& m, int accessor)
+{
+    const tinygltf::Accessor& a = m.accessors[std::size_t(accessor)];
+    const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
+    const int components = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
+    std::vector<float> out(a.count * std::size_t(components));
+    std::memcpy(out.data(), m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset + a.byteOffset,
+        out.size() * sizeof(float));
+    return out;
+}
+
+/// A glTF file read back, or an empty model (with a failure message) when it cannot be.
+tinygltf::Model loadGltf(const QString& path, std::string& err)
+{
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model m;
+    std::string warn;
+    const bool ok = path.endsWith(QLatin1String(".glb"))
+        ? loader.LoadBinaryFromFile(&m, &err, &warn, path.toStdString())
+        : loader.LoadASCIIFromFile(&m, &err, &warn, path.toStdString());
+    if (!ok)
+        m = tinygltf::Model{};
+    return m;
+}
+
+/// The sampler output of the animation channel with this target path, empty when none.
+std::vector<float> channelOutput(const tinygltf::Model& m, const char* path)
+{
+    for (const tinygltf::AnimationChannel& c : m.animations.at(0).channels)
+        if (c.target_path == path)
+            return floats(m, m.animations[0].samplers[std::size_t(c.sampler)].output);
+    return {};
+}
+
+/// The largest difference between the shape a glTF viewer shows at each sampled frame (base
+/// POSITION plus every target times its animated weight) and the PC2 cache's frames. The file
+/// has no UV seams (its vertices are the base's, in order).
+double gltfAgainstCache(const tinygltf::Model& m, const Pc2& pc2)
+{
+    const tinygltf::Primitive& p = m.meshes.at(0).primitives.at(0);
+    const std::vector<float> base = floats(m, p.attributes.at("POSITION"));
+    std::vector<std::vector<float>> targets;
+    for (const auto& t : p.targets)
+        targets.push_back(floats(m, t.at("POSITION")));
+    const std::vector<float> weights = channelOutput(m, "weights");
+    const std::size_t count = base.size();
+    double worst = 0.0;
+    for (std::size_t f = 0; f < std::size_t(pc2.samples); ++f)
+        for (std::size_t i = 0; i < count; ++i) {
+            double x = base[i];
+            for (std::size_t t = 0; t < targets.size(); ++t)
+                x += double(weights[f * targets.size() + t]) * targets[t][i];
+            worst = std::max(worst, std::abs(x - pc2.positions[f * count + i]));
+        }
+    return worst;
+}
+
+/// Where the validator's package is: the environment's CELFORM_GLTF_VALIDATOR_PREFIX, else the
+/// build's (scripts/setup.sh installs it there).
+QString validatorPrefix()
+{
+    const QString env = qEnvironmentVariable("CELFORM_GLTF_VALIDATOR_PREFIX");
+    return env.isEmpty() ? QStringLiteral(CELFORM_GLTF_VALIDATOR_PREFIX) : env;
+}
+
+} // namespace
+
+class TestExport : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        // A sphere with two keys pulled in different directions, on a 12-frame turntable.
+        algo::TriMesh sphere = *test::icosphere(2);
+        const QString mesh = m_dir.filePath(QStringLiteral("sphere.obj"));
+        model::exportMesh(sphere, mesh);
+        m_project = m_dir.filePath(QStringLiteral("two_keys.celform"));
+        auto run = [](const QStringList& args) {
+            const Run r = runCelform(args);
+            if (r.exitCode != 0)
+                qWarning() << args << r.err;
+            return r.exitCode;
+        };
+        QCOMPARE(run({"new", mesh, "--out", m_project}), 0);
+        QCOMPARE(run({"key", "add", m_project, "--name", "side", "--from-base", "--view", "1,0,0"}), 0);
+        QCOMPARE(run({"key", "add", m_project, "--name", "front", "--from-base", "--view", "0,0,1"}), 0);
+        QCOMPARE(
+            run({"brush", m_project, "--key", "side", "--vertex", "3", "--radius", "0.6", "--drag", "0.1,0.2"}), 0);
+        QCOMPARE(run({"brush", m_project, "--key", "front", "--vertex", "7", "--radius", "0.6", "--push", "-0.15"}), 0);
+        QCOMPARE(run({"camera", m_project, "--turntable", QString::number(kFrames)}), 0);
+        m_vertices = int(sphere.vertexCount());
+    }
+
+    void pc2MatchesEvalAtEveryFrame()
+    {
+        const QString out = m_dir.filePath(QStringLiteral("shot.pc2"));
+        const Run r = runCelform({"export", m_project, "--format", "pc2", "--out", out, "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(json.value("frames").toInt(), kFrames);
+        const Pc2 pc2 = readPc2(out);
+        QCOMPARE(QByteArray(pc2.signature, 12), QByteArray("POINTCACHE2\0", 12));
+        QCOMPARE(pc2.version, 1);
+        QCOMPARE(pc2.points, m_vertices);
+        QCOMPARE(pc2.startFrame, 0.0f);
+        QCOMPARE(pc2.sampleRate, 1.0f);
+        QCOMPARE(pc2.samples, kFrames);
+        QCOMPARE(pc2.size, 32 + qint64(kFrames) * m_vertices * 12);
+        bool moved = false;
+        for (int f = 0; f < kFrames; ++f) {
+            const QString obj = m_dir.filePath(QStringLiteral("eval_%1.obj").arg(f));
+            const Run e = runCelform({"eval", m_project, "--frame", QString::number(f), "--out", obj});
+            QVERIFY2(e.exitCode == 0, qPrintable(e.err));
+            const algo::TriMesh evaluated = model::importMesh(obj, model::ImportIsolation::ThisProcess).mesh;
+            QCOMPARE(int(evaluated.vertexCount()), m_vertices);
+            double worst = 0.0;
+            for (int v = 0; v < m_vertices; ++v)
+                for (int c = 0; c < 3; ++c) {
+                    const float cached = pc2.positions[(std::size_t(f) * std::size_t(m_vertices) + std::size_t(v)) * 3
+                        + std::size_t(c)];
+                    worst = std::max(worst, double(std::abs(cached - evaluated.vertices(v, c))));
+                    if (f > 0)
+                        moved = moved || cached != pc2.positions[std::size_t(v) * 3 + std::size_t(c)];
+                }
+            QVERIFY2(worst <= 1e-6, qPrintable(QStringLiteral("frame %1 differs by %2").arg(f).arg(worst)));
+        }
+        QVERIFY2(moved, "the turntable should change the blended shape between frames");
+    }
+
+    void objSequence()
+    {
+        QDir(m_dir.path()).mkpath(QStringLiteral("seq"));
+        const QString pattern = m_dir.filePath(QStringLiteral("seq/shot_###.obj"));
+        const Run r = runCelform({"export", m_project, "--format", "obj-seq", "--frames", "2-5", "--out", pattern});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList files = QDir(m_dir.filePath(QStringLiteral("seq"))).entryList(QDir::Files, QDir::Name);
+        QCOMPARE(files, (QStringList{"shot_002.obj", "shot_003.obj", "shot_004.obj", "shot_005.obj"}));
+        const QString obj = m_dir.filePath(QStringLiteral("eval_seq.obj"));
+        QCOMPARE(runCelform({"eval", m_project, "--frame", "4", "--out", obj}).exitCode, 0);
+        QFile a(m_dir.filePath(QStringLiteral("seq/shot_004.obj"))), b(obj);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        QCOMPARE(a.readAll(), b.readAll());
+
+        // Without #, _FFFF goes before the suffix.
+        const Run plain = runCelform({"export", m_project, "--format", "obj-seq", "--frames", "0-1", "--out",
+            m_dir.filePath(QStringLiteral("seq/take.obj"))});
+        QVERIFY2(plain.exitCode == 0, qPrintable(plain.err));
+        QVERIFY(QFile::exists(m_dir.filePath(QStringLiteral("seq/take_0000.obj"))));
+        QVERIFY(QFile::exists(m_dir.filePath(QStringLiteral("seq/take_0001.obj"))));
+    }
+
+    void gltfReadsBack_data()
+    {
+        QTest::addColumn<QString>("format");
+        QTest::newRow("gltf") << "gltf";
+        QTest::newRow("glb") << "glb";
+    }
+
+    void gltfReadsBack()
+    {
+        QFETCH(QString, format);
+        const QString out = m_dir.filePath(QStringLiteral("shot.") + format);
+        const Run r = runCelform({"export", m_project, "--format", format, "--out", out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+
+        std::string err;
+        const tinygltf::Model m = loadGltf(out, err);
+        QVERIFY2(!m.meshes.empty(), err.c_str());
+        QCOMPARE(m.meshes.size(), std::size_t(1));
+        const tinygltf::Primitive& primitive = m.meshes[0].primitives.at(0);
+        QCOMPARE(primitive.targets.size(), std::size_t(2)); // the two enabled keys
+        const tinygltf::Value& names = m.meshes[0].extras.Get("targetNames");
+        QCOMPARE(names.ArrayLen(), std::size_t(2));
+        QCOMPARE(m.cameras.size(), std::size_t(1));
+        QCOMPARE(m.animations.size(), std::size_t(1));
+        const tinygltf::Animation& animation = m.animations[0];
+        int weightsSampler = -1;
+        for (const tinygltf::AnimationChannel& c : animation.channels)
+            if (c.target_path == "weights")
+                weightsSampler = c.sampler;
+        QVERIFY(weightsSampler >= 0);
+        for (const tinygltf::AnimationSampler& s : animation.samplers)
+            QCOMPARE(int(m.accessors[std::size_t(s.input)].count), kFrames);
+        const std::vector<float> weights = floats(m, animation.samplers[std::size_t(weightsSampler)].output);
+        QCOMPARE(int(weights.size()), kFrames * 2);
+        for (int f : {0, 3, 7}) {
+            const Run e = runCelform({"eval", m_project, "--frame", QString::number(f), "--json"});
+            QVERIFY2(e.exitCode == 0, qPrintable(e.err));
+            const QJsonArray keys = QJsonDocument::fromJson(e.out.toUtf8()).object().value("keys").toArray();
+            for (std::size_t t = 0; t < 2; ++t) {
+                double expected = 0.0;
+                for (const QJsonValue& k : keys)
+                    if (k.toObject().value("key").toString().toStdString() == names.Get(int(t)).Get<std::string>())
+                        expected = k.toObject().value("weight").toDouble();
+                QVERIFY2(std::abs(weights[std::size_t(f) * 2 + t] - expected) <= 1e-5,
+                    qPrintable(QStringLiteral("frame %1 target %2: %3 against eval's %4")
+                                   .arg(f)
+                                   .arg(t)
+                                   .arg(weights[std::size_t(f) * 2 + t])
+                                   .arg(expected)));
+            }
+        }
+        // The camera node looks down its -Z at the sphere's centre (the turntable's target).
+        const std::vector<float> eyes = channelOutput(m, "translation");
+        const std::vector<float> turns = channelOutput(m, "rotation");
+        QCOMPARE(int(eyes.size()), kFrames * 3);
+        for (int f = 0; f < kFrames; ++f) {
+            const Eigen::Quaternionf q(turns[std::size_t(f) * 4 + 3], turns[std::size_t(f) * 4],
+                turns[std::size_t(f) * 4 + 1], turns[std::size_t(f) * 4 + 2]);
+            const Eigen::Vector3f eye(
+                eyes[std::size_t(f) * 3], eyes[std::size_t(f) * 3 + 1], eyes[std::size_t(f) * 3 + 2]);
+            QVERIFY((q * Eigen::Vector3f(0, 0, -1)).dot(-eye.normalized()) > 0.999f);
+        }
+        // What a viewer shows is the shape Celform evaluates (the keys are keyed at one frame).
+        const QString cache = m_dir.filePath(QStringLiteral("compare.pc2"));
+        QCOMPARE(runCelform({"export", m_project, "--format", "pc2", "--out", cache}).exitCode, 0);
+        const double worst = gltfAgainstCache(m, readPc2(cache));
+        QVERIFY2(worst < 1e-5, qPrintable(QString::number(worst)));
+        validate(out);
+    }
+
+    void animatedBaseRidesInTheWeights()
+    {
+        // A base moved by one morph target over six frames, and a key; seen from a turntable.
+        auto mesh = test::icosphere(1);
+        model::ProjectData data = model::newProject(mesh, QStringLiteral("sphere.obj"));
+        model::KeyViewpoint key;
+        key.id = data.nextId++;
+        key.name = QStringLiteral("side");
+        key.direction = Eigen::Vector3d::UnitX();
+        key.camera.eye = Eigen::Vector3d(5, 0, 0);
+        key.offsetsByFrame[0].indices = {0, 5};
+        key.offsetsByFrame[0].deltas = {Eigen::Vector3f(0.2f, 0, 0), Eigen::Vector3f(0, 0.3f, 0)};
+        data.keys.push_back(key);
+        auto animation = std::make_shared<algo::BaseAnimation>();
+        animation->firstFrame = 0;
+        animation->frameCount = 6;
+        algo::Positions stretch = mesh->vertices;
+        stretch.col(0).setZero();
+        stretch.col(2).setZero(); // stretched along y
+        animation->morphTargets = {stretch};
+        animation->morphWeights = {0.0f, 0.2f, 0.4f, 0.6f, 0.8f, 1.0f};
+        data.baseAnimation = animation;
+        model::Turntable turntable;
+        turntable.frames = 6;
+        data.look.cameraPath = model::turntablePath(turntable, Eigen::Vector3d::Zero(), 6.0, model::Camera{});
+        data.time.lastFrame = 5;
+
+        model::ExportJob job;
+        job.lastFrame = 5;
+        job.format = model::ExportFormat::Pc2;
+        job.output = m_dir.filePath(QStringLiteral("animated.pc2"));
+        QCOMPARE(model::exportProject(data, QStringLiteral("animated"), job).frames, 6);
+        job.format = model::ExportFormat::Glb;
+        job.output = m_dir.filePath(QStringLiteral("animated.glb"));
+        const model::ExportResult result = model::exportProject(data, QStringLiteral("animated"), job);
+        QVERIFY(result.warnings.isEmpty()); // morph targets only: nothing lost
+        std::string err;
+        const tinygltf::Model m = loadGltf(job.output, err);
+        QVERIFY2(!m.meshes.empty(), err.c_str());
+        QCOMPARE(m.meshes[0].primitives[0].targets.size(), std::size_t(2)); // the key, then the base's target
+        QCOMPARE(m.meshes[0].extras.Get("targetNames").Get(1).Get<std::string>(), std::string("base:0"));
+        const Pc2 pc2 = readPc2(m_dir.filePath(QStringLiteral("animated.pc2")));
+        const double worst = gltfAgainstCache(m, pc2);
+        QVERIFY2(worst < 1e-5, qPrintable(QString::number(worst)));
+        validate(job.output);
+
+        // A skinned base: glTF says what it leaves out.
+        auto skinned = std::make_shared<algo::BaseAnimation>(*animation);
+        skinned->jointCount = 1;
+        skinned->joints.assign(std::size_t(mesh->vertexCount()), {0, 0, 0, 0});
+        skinned->jointWeights.assign(std::size_t(mesh->vertexCount()), Eigen::Vector4f(1, 0, 0, 0));
+        skinned->skinMatrices.assign(6, algo::SkinMatrix::Identity());
+        data.baseAnimation = skinned;
+        QVERIFY(data.baseAnimation->problem(mesh->vertexCount()).empty());
+        QCOMPARE(model::exportProject(data, QStringLiteral("animated"), job).warnings.size(), 1);
+    }
+
+    void badOptions_data()
+    {
+        QTest::addColumn<QStringList>("extra");
+        QTest::newRow("unknown format") << QStringList{"--format", "fbx", "--out", "x.fbx"};
+        QTest::newRow("no format") << QStringList{"--out", "x.pc2"};
+        QTest::newRow("no out") << QStringList{"--format", "pc2"};
+        QTest::newRow("reversed frames") << QStringList{"--format", "pc2", "--frames", "5-2", "--out", "x.pc2"};
+        QTest::newRow("frames not a range") << QStringList{"--format", "pc2", "--frames", "abc", "--out", "x.pc2"};
+        QTest::newRow("frames with a step") << QStringList{"--format", "pc2", "--frames", "0-8:2", "--out", "x.pc2"};
+        QTest::newRow("suffix unlike format") << QStringList{"--format", "glb", "--out", "x.gltf"};
+    }
+
+    void badOptions()
+    {
+        QFETCH(QStringList, extra);
+        const Run r = runCelform(QStringList{"export", m_project} + extra);
+        QCOMPARE(r.exitCode, 2);
+    }
+
+    void unwritableOutput()
+    {
+        const QString out = QStringLiteral("/nonexistent-dir/shot.pc2");
+        const Run r = runCelform({"export", m_project, "--format", "pc2", "--out", out});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains(out), qPrintable(r.err));
+        QVERIFY(!r.err.contains('\n') || r.err.trimmed().count('\n') == 0);
+    }
+
+    void missingProject()
+    {
+        const Run r = runCelform(
+            {"export", m_dir.filePath("none.celform"), "--format", "pc2", "--out", m_dir.filePath("none.pc2")});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY(r.err.contains(QStringLiteral("none.celform")));
+    }
+
+private:
+    /// Runs the Khronos glTF Validator on a file: no errors allowed, warnings printed.
+    void validate(const QString& file)
+    {
+        const QString node = QStandardPaths::findExecutable(QStringLiteral("node"));
+        if (node.isEmpty())
+            QSKIP("node (Node.js) is not installed: the glTF Validator cannot run (scripts/setup.sh installs it)");
+        const QString prefix = validatorPrefix();
+        if (!QFileInfo::exists(prefix + QStringLiteral("/node_modules/gltf-validator/package.json")))
+            QSKIP(qPrintable(
+                QStringLiteral("the gltf-validator package is not in %1 (run scripts/setup.sh)").arg(prefix)));
+        QProcess p;
+        p.start(node, {QStringLiteral(CELFORM_SOURCE_DIR "/tests/tools/validate_gltf.mjs"), file, prefix});
+        QVERIFY(p.waitForFinished(120000));
+        const QString report
+            = QString::fromUtf8(p.readAllStandardOutput()) + QString::fromUtf8(p.readAllStandardError());
+        qInfo().noquote() << "glTF Validator on" << QFileInfo(file).fileName() << ":" << report.trimmed();
+        QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, qPrintable(report));
+    }
+
+    QTemporaryDir m_dir;
+    QString m_project;
+    int m_vertices = 0;
+};
+
+QTEST_GUILESS_MAIN(TestExport)
+#include "test_export.moc"
