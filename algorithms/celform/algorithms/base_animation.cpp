@@ -7,6 +7,21 @@
 #include <cmath>
 
 namespace celform::algo {
+namespace {
+
+/// A vertex's skinning matrix: its influences' matrices weighted. An unused influence (weight 0)
+/// may name any joint, even one past the joints, so its matrix is never read.
+SkinMatrix blendedSkinMatrix(
+    const SkinMatrix* matrices, const std::array<std::uint16_t, 4>& joints, const Eigen::Vector4f& weights)
+{
+    SkinMatrix m = SkinMatrix::Zero();
+    for (int i = 0; i < 4; ++i)
+        if (weights[i] != 0.0f)
+            m.noalias() += weights[i] * matrices[joints[std::size_t(i)]];
+    return m;
+}
+
+} // namespace
 
 int BaseAnimation::sampleOf(int frame) const
 {
@@ -83,13 +98,7 @@ void BaseAnimation::evaluate(const Positions& rest, int frame, Positions& out) c
     float* data = out.data();
     for (Eigen::Index v = 0; v < n; ++v) {
         const Eigen::Vector4f p(data[3 * v], data[3 * v + 1], data[3 * v + 2], 1.0f);
-        const Eigen::Vector4f& jw = jointWeights[std::size_t(v)];
-        const auto& ji = joints[std::size_t(v)];
-        SkinMatrix m = SkinMatrix::Zero();
-        for (int i = 0; i < 4; ++i)
-            if (jw[i] != 0.0f)
-                m.noalias() += jw[i] * matrices[ji[std::size_t(i)]];
-        const Eigen::Vector3f q = m * p;
+        const Eigen::Vector3f q = blendedSkinMatrix(matrices, joints[std::size_t(v)], jointWeights[std::size_t(v)]) * p;
         data[3 * v] = q[0];
         data[3 * v + 1] = q[1];
         data[3 * v + 2] = q[2];
@@ -121,13 +130,7 @@ Eigen::Vector3f BaseAnimation::evaluateVertex(const Positions& rest, int frame, 
         }
     // As evaluate(): an unused influence's joint (which may be past jointCount) is never read.
     const SkinMatrix* matrices = skinMatrices.data() + s * std::size_t(jointCount);
-    const Eigen::Vector4f& jw = jointWeights[std::size_t(v)];
-    const auto& ji = joints[std::size_t(v)];
-    SkinMatrix m = SkinMatrix::Zero();
-    for (int i = 0; i < 4; ++i)
-        if (jw[i] != 0.0f)
-            m.noalias() += jw[i] * matrices[ji[std::size_t(i)]];
-    return m * q;
+    return blendedSkinMatrix(matrices, joints[std::size_t(v)], jointWeights[std::size_t(v)]) * q;
 }
 
 bool BaseAnimation::operator==(const BaseAnimation& o) const
