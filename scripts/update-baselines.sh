@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 celform=${1:-build/release/app/celform}
 out=tests/data/baselines
 for style in toon gooch comic lambert; do
-  "$celform" render resources/samples/elephant.celform --style "$style" --size 240x180 --out "$out/elephant_$style.png"
+  "$celform" render resources/samples/elephant-plain.celform --style "$style" --size 240x180 --out "$out/elephant_$style.png"
 done
-"$celform" render resources/samples/elephant.celform --stereo anaglyph --size 240x180 --out "$out/elephant_anaglyph.png"
+"$celform" render resources/samples/elephant-plain.celform --stereo anaglyph --size 240x180 --out "$out/elephant_anaglyph.png"
 echo "wrote $out"

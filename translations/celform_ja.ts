@@ -2,6 +2,48 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
 <context>
+    <name>AnimationIo</name>
+    <message>
+        <source>%1 names accessor %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>CameraPath</name>
+    <message>
+        <source>camera key %1 is at frame %2, beyond ±%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>camera keys are not in increasing frame order at frame %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the camera key at frame %1 is not a usable camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a turntable needs 2 to %1 frames, not %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the turntable&apos;s frames leave the range ±%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the turntable axis must be a finite, non-zero vector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the elevation must lie strictly between -90 and 90 degrees</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the start angle must be a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Cli</name>
     <message>
         <source>--depth-threshold takes a fraction of the model&apos;s size in (0, 1], not “%1”</source>
@@ -42,11 +84,161 @@
     </message>
 </context>
 <context>
-    <name>celform::app::Cli</name>
+    <name>SceneTime</name>
     <message>
-        <source>Creates a project from a mesh file.</source>
-        <translation>メッシュファイルからプロジェクトを作成します。</translation>
+        <source>frames per second must lie in (0, %1], not %2</source>
+        <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>the frame range must lie within ±%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the frame range ends (%1) before it starts (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::AnimationActions</name>
+    <message>
+        <source>Timeline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The scene&apos;s frames: range, frame rate, playback and every kind of key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Play / Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play the scene at its frame rate, or pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Loop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After the last frame of the range, play the first again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;First Frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the first frame of the range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>La&amp;st Frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the last frame of the range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P&amp;revious Frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One frame back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Next Frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One frame on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Previous &amp;Key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the previous frame holding a key of any kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next K&amp;ey</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the next frame holding a key of any kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Look Through &amp;Shot Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The main view follows the camera path at the current frame; turning the view with the mouse leaves it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Observer Layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the Observer beside the main view: the view-dependent model as the shot camera sees it, the camera path and the camera, from a fixed vantage point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Key Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key the current view as the shot camera at the current frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Camera keyed at frame %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove Camera Key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the camera key at the current frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Clear Camera Path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove every camera key: the render camera applies again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Turntable…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replace the camera path by one revolution around the model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turntable refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play&amp;back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::Cli</name>
     <message>
         <source>Mesh file (OBJ, PLY, STL, OFF, glTF, GLB).</source>
         <translation>メッシュファイル（OBJ、PLY、STL、OFF、glTF、GLB）。</translation>
@@ -196,20 +388,12 @@
         <translation>頂点 %1 がありません（ベースモデルの頂点数は %2 です）</translation>
     </message>
     <message>
-        <source>Evaluates the view-dependent shape for a view direction.</source>
-        <translation>指定した視線方向での視点依存形状を評価します。</translation>
-    </message>
-    <message>
         <source>Frame (default 0).</source>
         <translation>フレーム（既定値 0）。</translation>
     </message>
     <message>
         <source>Write the blended mesh (OBJ or PLY, base vertex order).</source>
         <translation>ブレンドしたメッシュを書き出します（OBJ または PLY、ベースモデルの頂点順序）。</translation>
-    </message>
-    <message>
-        <source>Print the keys and weights as JSON.</source>
-        <translation>キーとウェイトを JSON 形式で出力します。</translation>
     </message>
     <message>
         <source>Changes project settings.</source>
@@ -264,10 +448,6 @@
         <translation>レンダリングするフレーム（既定値 0）。</translation>
     </message>
     <message>
-        <source>Frames to render, A-B inclusive.</source>
-        <translation>レンダリングするフレーム範囲（A-B、両端を含む）。</translation>
-    </message>
-    <message>
         <source>Image size (default 1280x720).</source>
         <translation>画像サイズ（既定値 1280x720）。</translation>
     </message>
@@ -294,10 +474,6 @@
     <message>
         <source>give either --frame or --frames</source>
         <translation>--frame と --frames はどちらか一方だけを指定してください</translation>
-    </message>
-    <message>
-        <source>--frames takes A-B with A &lt;= B, not “%1”</source>
-        <translation>--frames には A &lt;= B となる A-B を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”</source>
@@ -586,10 +762,6 @@
     <message>
         <source>has no key named “%1”</source>
         <translation>「%1」という名前のキーがありません</translation>
-    </message>
-    <message>
-        <source>--view is required</source>
-        <translation>--view の指定が必要です</translation>
     </message>
     <message>
         <source>(celform --help lists the sub-commands)</source>
@@ -968,6 +1140,272 @@
     <message>
         <source>Shading offsets (paper 3, section 4.3): automatic per segment, cleared or smoothed; saved in the project.</source>
         <translation>シェーディングオフセット（論文 3、4.3 節）: セグメントごとの自動設定、消去、平滑化を行い、プロジェクトに保存します。</translation>
+    </message>
+    <message>
+        <source>exactly one of --turntable, --key, --clear or --list is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--axis, --elevation, --start and --start-angle go with --turntable only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>camera options go with --key only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--json goes with --list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--turntable takes 2 to %1 frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No camera path: renders use the render camera.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replace the path by a turntable: one revolution in FRAMES frames (also sets the frame range).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turntable axis (default 0,1,0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turntable camera height above the orbit plane (default 15).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turntable&apos;s first frame (default 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turntable&apos;s angle at its first frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key the camera given by the camera options at frame F.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the camera path.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print the camera keys.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edits the shot&apos;s camera path: a turntable, keyed cameras, clearing; renders and eval without camera options look through it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format and --out are required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format must be gltf, glb, pc2 or obj-seq, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--out needs a file name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--out must end in .%1 for --format %2, not “%3”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--frames takes A-B for an export, without a step: “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>export: frame %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exports the animation as seen through the camera path: a glTF scene with the keys as morph targets, a PC2 point cache or an OBJ per frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gltf or glb (keys as morph targets, weights and camera animated), pc2 (point cache) or obj-seq (one OBJ per frame).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames to export, A-B inclusive (default the project&apos;s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file; for obj-seq a pattern where a run of # is the frame number (else _FFFF goes before .obj).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print the camera, keys and weights as JSON.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Evaluates the view-dependent shape at a frame: for a view direction or a camera, else through the camera path (or the render camera) at that frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--threads takes a whole number of at least 1, not “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning: rendering %1 frames at a time, not %2: each needs about %3 GB of memory at %4, and %5 GB are available</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>frame %1 (%2/%3) -&gt; %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>frame %1 (%2/%3) skipped: %4 exists</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>frame %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames to render, A-B inclusive, every STEP-th from A (default 1); each to a file of its own (a # in --out, or _####, is the frame number).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames rendered at once (default: one per processor; fewer when memory is short). The files are the same for any N.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leave frames whose file exists as they are (to resume an interrupted render).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print the frames written and skipped as JSON.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 takes A-B or A-B:STEP with A &lt;= B and STEP &gt;= 1, not “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--fps must lie in (0, %1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames: %1-%2 at %3 fps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Animated base: %1 frames from frame %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Camera path: %1 keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Creates a project from a mesh file, or from an animated base (a glTF/GLB with skins or morph targets, or an OBJ/PLY sequence such as walk_####.obj).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames per second an animated base is sampled at (default 24); frame F is time F / fps.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MESH is one numbered file of a sequence (walk_0001.obj): read it with its numbered siblings as frames.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::ExportDialog</name>
+    <message>
+        <source>glTF 2.0 (.gltf): keys as morph targets, weights and camera animated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>glTF 2.0 binary (.glb)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PC2 point cache (.pc2): the shape at every frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OBJ sequence: one .obj per frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation type="unfinished">～</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation type="unfinished">参照…</translation>
+    </message>
+    <message>
+        <source>&amp;Format:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F&amp;rames:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F&amp;ile:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file must end in .%1 for this format.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::ExportRunner</name>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished">キャンセル</translation>
+    </message>
+    <message>
+        <source>%1: not enough memory to export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The export could not be finished.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export cancelled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %L1 frames to %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1656,6 +2094,14 @@ Recover it now?</source>
     <message>
         <source>The segments&apos; ratios improved but the depth error rose: try another start light (move it, then optimise again) or a more lenient window in the Depth tab.</source>
         <translation>セグメントの比率は改善しましたが、奥行き誤差が増えました。別の開始位置のライトを試す（ライトを動かしてから再度最適化する）か、「奥行き」タブでより緩い範囲を選んでください。</translation>
+    </message>
+    <message>
+        <source>E&amp;xport…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the animation seen through the camera path as glTF, a PC2 point cache or OBJ files, as celform export does</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2616,6 +3062,408 @@ Recover it now?</source>
     </message>
 </context>
 <context>
+    <name>celform::app::TurntableDialog</name>
+    <message>
+        <source>Turntable</source>
+        <translation type="unfinished">ターンテーブル</translation>
+    </message>
+    <message>
+        <source>Frames of one revolution; the scene&apos;s range becomes these frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y (up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis the camera turns around, through the model&apos;s centre</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far the camera is raised above the plane normal to the axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The frame the revolution starts at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where on the circle the camera starts: 0 is the side the default view looks from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames per revolution:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elevation:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start frame:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start angle:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replace the camera path by the turntable (one undo step)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::AnimationIo</name>
+    <message>
+        <source>%1 frames per second is not a usable frame rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file contains no triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the animation is unusable: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mesh %1, primitive %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene names node %1, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene reaches node %1 twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has %2 morph targets, the mesh&apos;s first primitive %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mesh %1 has %2 morph targets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has only one of JOINTS_%2 and WEIGHTS_%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: JOINTS_%2 and WEIGHTS_%2 give %3 and %4 vertices, POSITION %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is skinned but has no JOINTS_0 and WEIGHTS_0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 has a joint weight that is negative or not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 names joint %3, but the skin has %4 joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>skin %1 has no joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>skin %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>skin %1 has %2 inverse bind matrices for %3 joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>skin %1 names node %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>skin %1: joint %2&apos;s inverse bind matrix is not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 names mesh %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 names skin %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene has more morph targets than Celform can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 gives %2 morph weights for the %3 morph targets of mesh %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene has no mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 is animated but has a zero scale at rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file has more than 65,535 joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has the unknown mode %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has no POSITION</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene has more than the %1 vertices Celform can load</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: index %2 is %3, but the primitive has %4 vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 has a coordinate that is not a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 is beyond the range of a float once its node&apos;s transform is applied</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene has more than the %1 triangles Celform can load</source>
+        <translation type="unfinished">シーンの三角形が、Celform が読み込める %1 個を超えています</translation>
+    </message>
+    <message>
+        <source>%1 names material %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has %2 texture coordinates for %3 vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file has no triangle primitive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the animation lasts %1 seconds, more than the %2 frames Celform can load at %3 frames per second</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 morph targets and %2 joints over %3 frames are more than Celform can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>morph target %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has %2 positions, the primitive %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>accessor %1 (%2): %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>buffer view %1 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>buffer view %1 names buffer %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>buffer view %1 covers bytes %2 to %3, but buffer %4 holds %5 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>buffer view %1 has a byteStride where none is allowed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>buffer view %1 has a byteStride of %2 for elements of %3 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 elements of %2 bytes from byte %3 do not fit in buffer view %4 (%5 bytes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>type %1, expected %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown component type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 elements without a buffer view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 sparse elements of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sparse indices of component type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a negative sparse byteOffset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sparse element %1 replaces element %2 of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 elements of %2 bytes cannot fit in buffer view %3 (%4 bytes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>component type %1, expected unsigned integers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 has child %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 has more than one parent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the node hierarchy has a cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 has a malformed transform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 has a zero rotation quaternion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation channel %1 targets node %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation channel %1 moves node %2, which is given as a matrix (glTF allows only translation, rotation and scale on animated nodes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation channel %1 names sampler %2, which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation sampler %1 has an unknown interpolation &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation sampler %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation sampler %1 has no keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation sampler %1: key %2 has time %3, not after the key before it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation sampler %1 has %2 output values for %3 keys, expected %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>animation sampler %1 has a value that is not a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this build cannot read glTF: its tinygltf functions come from %1, not from tinygltf&apos;s library (link TinyGLTF before Assimp)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is larger than the 4 GB glTF allows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its JSON is nested more than %1 levels deep, which no glTF file needs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a readable glTF file: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file needs the glTF extension %1, which Celform does not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the frame number is too long</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the sequence has more than the %1 frames Celform can load</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 and %2 are both frame %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 triangles, the first frame (%2) has %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>triangle %1 is (%2, %3, %4), the first frame&apos;s (%5) is (%6, %7, %8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not an animated base: use a .gltf or .glb file, or a numbered .obj, .ply or .off sequence (walk_0001.obj, or walk_####.obj)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no file matches the pattern</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 frames of %2 vertices are more than Celform can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 vertices, the first frame (%2) has %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>celform::model::Document</name>
     <message>
         <source>has %1 vertices, but the key deformations use vertex %2; a replacement base model needs the same vertex count and order</source>
@@ -3084,6 +3932,73 @@ Recover it now?</source>
     <message>
         <source>Automatic Shading Offsets (%1)</source>
         <translation>自動シェーディングオフセット（%1）</translation>
+    </message>
+    <message>
+        <source>Change Frame Rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Frame Range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The camera is not valid (eye, target and up must differ).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame %1 is out of range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key Camera at Frame %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Camera Key at Frame %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear Camera Path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import a base model before making a turntable.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make Turntable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The animation of %1 is not usable: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Animated Base</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::Export</name>
+    <message>
+        <source>frames must be within ±%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the first frame %1 is after the last frame %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no output file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the aspect ratio must be positive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>has no base model</source>
+        <translation type="unfinished">ベースモデルがありません</translation>
     </message>
 </context>
 <context>
@@ -3651,6 +4566,10 @@ Recover it now?</source>
         <source>the importer&apos;s result cannot be read: %1</source>
         <translation>インポーターの結果を読み込めません: %1</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; files do not keep their vertex order; use .obj, .ply or .off</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ProjectFile</name>
@@ -3874,6 +4793,30 @@ Recover it now?</source>
         <source>key “%1” has shading offsets twice at frame %2</source>
         <translation>キー「%1」のフレーム %2 にシェーディングオフセットが重複しています</translation>
     </message>
+    <message>
+        <source>the camera path is invalid: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the base animation&apos;s frames are out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the base animation has too many joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the base animation is invalid: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene time is invalid: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the base animation has no base model</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
@@ -3892,13 +4835,17 @@ Recover it now?</source>
         <source>has no base model</source>
         <translation>ベースモデルがありません</translation>
     </message>
+    <message>
+        <source>not enough memory to render it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the render failed</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RenderOutput</name>
-    <message>
-        <source>could not be written (the folder refused the new file)</source>
-        <translation>書き込めませんでした（フォルダーに新しいファイルを作成できませんでした）</translation>
-    </message>
     <message>
         <source>has an unknown image type; use .png, .tif, .jpg or .exr</source>
         <translation>不明な画像形式です。.png、.tif、.jpg、.exr のいずれかを使用してください</translation>
@@ -5466,6 +6413,124 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     <message>
         <source>Direction (%1, %2, %3)</source>
         <translation>方向 (%1, %2, %3)</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::TimelinePanel</name>
+    <message>
+        <source>Go to the first frame of the range (Shift+Left)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the previous keyed frame of any kind (Down)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play or pause at the scene&apos;s frame rate (Space)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the next keyed frame of any kind (Up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the last frame of the range (Shift+Right)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Loop: after the last frame play the first again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The current frame: every view shows the project at this frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First frame of the scene&apos;s range (playback and rendered sequences)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last frame of the scene&apos;s range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames per second of the scene (playback, exports)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames drawn per second while playing; below the scene&apos;s rate, frames are dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Playing: 000.0 fps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>deformation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>highlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key marks on the ruler: camera keys (top row), key deformations (middle) and highlight keys (bottom)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Playing…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Playing: %1 fps</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::TimelineRuler</name>
+    <message>
+        <source>camera key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key deformation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>highlight key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>▼ camera keys · ◆ key deformations · ● highlight keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click or drag to move the current frame</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -238,6 +238,7 @@ private slots:
             {QStringLiteral("first / last frame of the range"), {"actionFirstFrame", "actionLastFrame"}},
             {QStringLiteral("previous / next key of any kind"), {"actionPreviousKeyFrame", "actionNextKeyFrame"}},
             {QStringLiteral("key the shot camera at the current frame"), {"actionKeyCamera"}},
+            {QStringLiteral("export (glTF, PC2, OBJ sequence)"), {"actionExport"}},
             {QStringLiteral("keyboard shortcuts (searchable) / preferences"),
                 {"actionKeyboardShortcuts", "actionPreferences"}},
         };

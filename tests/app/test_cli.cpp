@@ -1107,7 +1107,7 @@ private slots:
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<int>("exitCode");
         QTest::addColumn<QString>("named");
-        const QString sample = QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+        const QString sample = QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform");
         QTest::newRow("unknown word") << QStringList{"bogus"} << 2 << "bogus";
         QTest::newRow("unknown option") << QStringList{"--bogus"} << 2 << "bogus";
         QTest::newRow("missing project") << QStringList{"missing.celform"} << 3 << "missing.celform";
@@ -1159,7 +1159,7 @@ private slots:
         QTest::newRow("version") << QStringList{"--version"};
         QTest::newRow("help") << QStringList{"--help"};
         QTest::newRow("info") << QStringList{
-            "info", CELFORM_SOURCE_DIR "/resources/samples/elephant.celform", "--json"};
+            "info", CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform", "--json"};
     }
     void commandLineMapsNoEditorLibraries()
     {

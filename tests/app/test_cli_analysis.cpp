@@ -19,7 +19,7 @@ namespace {
 
 QString sample()
 {
-    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform");
 }
 
 QJsonObject analyzeJson(const QStringList& extra = {})

@@ -17,7 +17,7 @@ namespace {
 QString copySample(const QTemporaryDir& dir)
 {
     const QString path = dir.filePath(QStringLiteral("elephant.celform"));
-    QFile::copy(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform"), path);
+    QFile::copy(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform"), path);
     QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
     return path;
 }

@@ -70,7 +70,7 @@ private slots:
         QVERIFY(test::showSample(window, QSize(1200, 800)));
         QVERIFY(window.document()->hasMesh());
         QVERIFY(!window.document()->data().drawings.empty());
-        QVERIFY(window.windowTitle().startsWith(QStringLiteral("elephant.celform")));
+        QVERIFY(window.windowTitle().startsWith(QStringLiteral("elephant-plain.celform")));
 
         auto* vp = window.viewport();
         const QImage first = renderNow(vp);
@@ -194,7 +194,7 @@ private slots:
         QCOMPARE(model::loadProject(recovery->ownRecoveryFile()).drawings.front().name, QStringLiteral("edited"));
         // The autosave is a copy: the document still points at its own file and is still unsaved.
         QVERIFY(window.document()->isModified());
-        QVERIFY(window.document()->filePath().endsWith(QStringLiteral("elephant.celform")));
+        QVERIFY(window.document()->filePath().endsWith(QStringLiteral("elephant-plain.celform")));
 
         // A session that crashed left a recovery file and a lock whose process is gone.
         const QString orphanBase

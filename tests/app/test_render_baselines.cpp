@@ -30,7 +30,7 @@ private slots:
         env.remove(QStringLiteral("DISPLAY"));
         p.setProcessEnvironment(env);
         QStringList args{QStringLiteral("render"),
-            QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform"), QStringLiteral("--size"),
+            QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform"), QStringLiteral("--size"),
             QStringLiteral("240x180"), QStringLiteral("--out"), out};
         args << options;
         p.start(QStringLiteral(CELFORM_EXECUTABLE), args);

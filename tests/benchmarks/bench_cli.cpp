@@ -70,7 +70,7 @@ int main(int argc, char** argv)
     // CELFORM_BENCH_EXECUTABLE compares another build (an older celform) in the same run.
     const char* other = getenv("CELFORM_BENCH_EXECUTABLE");
     const std::string celform = other && *other ? other : CELFORM_EXECUTABLE;
-    const std::string sample = CELFORM_SOURCE_DIR "/resources/samples/elephant.celform";
+    const std::string sample = CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform";
     // Sub-commands need no display; without one nothing may reach for it.
     unsetenv("DISPLAY");
     unsetenv("WAYLAND_DISPLAY");

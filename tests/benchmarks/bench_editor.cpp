@@ -60,7 +60,7 @@ app::MainWindow* window()
     slot = std::make_unique<app::MainWindow>(app::MainWindow::Mode::Batch);
     slot->resize(1400, 900);
     slot->show();
-    if (!slot->openFile(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform"))
+    if (!slot->openFile(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform"))
         || !awaitFrame(*slot->viewport()))
         slot.reset();
     return slot.get();
@@ -180,7 +180,7 @@ void documentOnlySteps(benchmark::State& state, model::ProjectData data, std::si
 model::ProjectData sampleData()
 {
     model::Document doc;
-    doc.open(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform"));
+    doc.open(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform"));
     return doc.data();
 }
 

@@ -14,7 +14,7 @@ namespace celform::test {
 
 inline QString sampleProject()
 {
-    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform");
 }
 
 /// Asks for a frame and waits (up to 5 s) until the viewport has drawn it.
