@@ -5,42 +5,42 @@
     <name>AnimationIo</name>
     <message>
         <source>%1 names accessor %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 が存在しないアクセサー %2 を参照しています</translation>
     </message>
 </context>
 <context>
     <name>CameraPath</name>
     <message>
         <source>camera key %1 is at frame %2, beyond ±%3</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラのキーフレーム %1 がフレーム %2 にあり、±%3 の範囲を超えています</translation>
     </message>
     <message>
         <source>camera keys are not in increasing frame order at frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1 でカメラのキーフレームがフレーム順に並んでいません</translation>
     </message>
     <message>
         <source>the camera key at frame %1 is not a usable camera</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1 のカメラのキーフレームは使用できるカメラではありません</translation>
     </message>
     <message>
         <source>a turntable needs 2 to %1 frames, not %2</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブルには 2～%1 フレームが必要です（%2 は無効です）</translation>
     </message>
     <message>
         <source>the turntable&apos;s frames leave the range ±%1</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブルのフレームが ±%1 の範囲を超えています</translation>
     </message>
     <message>
         <source>the turntable axis must be a finite, non-zero vector</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブルの軸は有限でゼロ以外のベクトルである必要があります</translation>
     </message>
     <message>
         <source>the elevation must lie strictly between -90 and 90 degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>仰角は -90 度より大きく 90 度より小さい値である必要があります</translation>
     </message>
     <message>
         <source>the start angle must be a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>開始角度は有限の数値である必要があります</translation>
     </message>
 </context>
 <context>
@@ -87,154 +87,154 @@
     <name>SceneTime</name>
     <message>
         <source>frames per second must lie in (0, %1], not %2</source>
-        <translation type="unfinished"></translation>
+        <translation>フレームレートは (0, %1] の範囲で指定してください（%2 は無効です）</translation>
     </message>
     <message>
         <source>the frame range must lie within ±%1</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム範囲は ±%1 の範囲内である必要があります</translation>
     </message>
     <message>
         <source>the frame range ends (%1) before it starts (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム範囲の終了（%1）が開始（%2）より前です</translation>
     </message>
 </context>
 <context>
     <name>celform::app::AnimationActions</name>
     <message>
         <source>Timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>タイムライン</translation>
     </message>
     <message>
         <source>The scene&apos;s frames: range, frame rate, playback and every kind of key</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンのフレーム: 範囲、フレームレート、再生、あらゆる種類のキーフレーム</translation>
     </message>
     <message>
         <source>&amp;Play / Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>再生 / 一時停止(&amp;P)</translation>
     </message>
     <message>
         <source>Play the scene at its frame rate, or pause</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンをそのフレームレートで再生、または一時停止します</translation>
     </message>
     <message>
         <source>&amp;Loop</source>
-        <translation type="unfinished"></translation>
+        <translation>ループ(&amp;L)</translation>
     </message>
     <message>
         <source>After the last frame of the range, play the first again</source>
-        <translation type="unfinished"></translation>
+        <translation>範囲の最後のフレームの後、最初のフレームから再び再生します</translation>
     </message>
     <message>
         <source>&amp;First Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>最初のフレーム(&amp;F)</translation>
     </message>
     <message>
         <source>Go to the first frame of the range</source>
-        <translation type="unfinished"></translation>
+        <translation>範囲の最初のフレームに移動します</translation>
     </message>
     <message>
         <source>La&amp;st Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>最後のフレーム(&amp;S)</translation>
     </message>
     <message>
         <source>Go to the last frame of the range</source>
-        <translation type="unfinished"></translation>
+        <translation>範囲の最後のフレームに移動します</translation>
     </message>
     <message>
         <source>P&amp;revious Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>前のフレーム(&amp;R)</translation>
     </message>
     <message>
         <source>One frame back</source>
-        <translation type="unfinished"></translation>
+        <translation>1 フレーム戻ります</translation>
     </message>
     <message>
         <source>&amp;Next Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>次のフレーム(&amp;N)</translation>
     </message>
     <message>
         <source>One frame on</source>
-        <translation type="unfinished"></translation>
+        <translation>1 フレーム進みます</translation>
     </message>
     <message>
         <source>Previous &amp;Key</source>
-        <translation type="unfinished"></translation>
+        <translation>前のキーフレーム(&amp;K)</translation>
     </message>
     <message>
         <source>Go to the previous frame holding a key of any kind</source>
-        <translation type="unfinished"></translation>
+        <translation>種類を問わずキーフレームのある前のフレームに移動します</translation>
     </message>
     <message>
         <source>Next K&amp;ey</source>
-        <translation type="unfinished"></translation>
+        <translation>次のキーフレーム(&amp;E)</translation>
     </message>
     <message>
         <source>Go to the next frame holding a key of any kind</source>
-        <translation type="unfinished"></translation>
+        <translation>種類を問わずキーフレームのある次のフレームに移動します</translation>
     </message>
     <message>
         <source>Look Through &amp;Shot Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>ショットカメラから見る(&amp;S)</translation>
     </message>
     <message>
         <source>The main view follows the camera path at the current frame; turning the view with the mouse leaves it</source>
-        <translation type="unfinished"></translation>
+        <translation>メインビューが現在のフレームのカメラパスに従います。マウスで視点を回すと解除されます</translation>
     </message>
     <message>
         <source>&amp;Observer Layout</source>
-        <translation type="unfinished"></translation>
+        <translation>観察ビューのレイアウト(&amp;O)</translation>
     </message>
     <message>
         <source>Show the Observer beside the main view: the view-dependent model as the shot camera sees it, the camera path and the camera, from a fixed vantage point</source>
-        <translation type="unfinished"></translation>
+        <translation>メインビューの横に観察ビューを表示します: ショットカメラから見た視点依存モデル、カメラパス、カメラを固定の視点から表示します</translation>
     </message>
     <message>
         <source>&amp;Key Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラのキーフレームを設定(&amp;K)</translation>
     </message>
     <message>
         <source>Key the current view as the shot camera at the current frame</source>
-        <translation type="unfinished"></translation>
+        <translation>現在の視点を現在のフレームのショットカメラとしてキーフレームに設定します</translation>
     </message>
     <message>
         <source>Camera keyed at frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1 にカメラのキーフレームを設定しました</translation>
     </message>
     <message>
         <source>&amp;Remove Camera Key</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラのキーフレームを削除(&amp;R)</translation>
     </message>
     <message>
         <source>Remove the camera key at the current frame</source>
-        <translation type="unfinished"></translation>
+        <translation>現在のフレームにあるカメラのキーフレームを削除します</translation>
     </message>
     <message>
         <source>&amp;Clear Camera Path</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスを消去(&amp;C)</translation>
     </message>
     <message>
         <source>Remove every camera key: the render camera applies again</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラのキーフレームをすべて削除します。再びレンダーカメラが使われます</translation>
     </message>
     <message>
         <source>&amp;Turntable…</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブル(&amp;T)…</translation>
     </message>
     <message>
         <source>Replace the camera path by one revolution around the model</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスをモデルの周りを 1 周するパスで置き換えます</translation>
     </message>
     <message>
         <source>Turntable refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブルを作成できません: %1</translation>
     </message>
     <message>
         <source>Play&amp;back</source>
-        <translation type="unfinished"></translation>
+        <translation>再生(&amp;B)</translation>
     </message>
     <message>
         <source>&amp;Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラ(&amp;C)</translation>
     </message>
 </context>
 <context>
@@ -1143,269 +1143,269 @@
     </message>
     <message>
         <source>exactly one of --turntable, --key, --clear or --list is required</source>
-        <translation type="unfinished"></translation>
+        <translation>--turntable、--key、--clear、--list のいずれか 1 つだけを指定してください</translation>
     </message>
     <message>
         <source>--axis, --elevation, --start and --start-angle go with --turntable only</source>
-        <translation type="unfinished"></translation>
+        <translation>--axis、--elevation、--start、--start-angle は --turntable と一緒にしか使えません</translation>
     </message>
     <message>
         <source>camera options go with --key only</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラのオプションは --key と一緒にしか使えません</translation>
     </message>
     <message>
         <source>--json goes with --list</source>
-        <translation type="unfinished"></translation>
+        <translation>--json は --list と一緒に指定してください</translation>
     </message>
     <message>
         <source>--turntable takes 2 to %1 frames</source>
-        <translation type="unfinished"></translation>
+        <translation>--turntable には 2～%1 のフレーム数を指定してください</translation>
     </message>
     <message>
         <source>No camera path: renders use the render camera.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスがありません。レンダーにはレンダーカメラを使います。</translation>
     </message>
     <message>
         <source>Replace the path by a turntable: one revolution in FRAMES frames (also sets the frame range).</source>
-        <translation type="unfinished"></translation>
+        <translation>パスをターンテーブルで置き換えます: FRAMES フレームで 1 周します（フレーム範囲も設定します）。</translation>
     </message>
     <message>
         <source>Turntable axis (default 0,1,0).</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブルの軸（既定値 0,1,0）。</translation>
     </message>
     <message>
         <source>Turntable camera height above the orbit plane (default 15).</source>
-        <translation type="unfinished"></translation>
+        <translation>軌道面からのターンテーブルカメラの高さ（既定値 15）。</translation>
     </message>
     <message>
         <source>Turntable&apos;s first frame (default 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブルの最初のフレーム（既定値 0）。</translation>
     </message>
     <message>
         <source>Turntable&apos;s angle at its first frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>最初のフレームでのターンテーブルの角度。</translation>
     </message>
     <message>
         <source>Key the camera given by the camera options at frame F.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラのオプションで指定したカメラをフレーム F にキーフレームとして設定します。</translation>
     </message>
     <message>
         <source>Remove the camera path.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスを削除します。</translation>
     </message>
     <message>
         <source>Print the camera keys.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラのキーフレームを表示します。</translation>
     </message>
     <message>
         <source>Edits the shot&apos;s camera path: a turntable, keyed cameras, clearing; renders and eval without camera options look through it.</source>
-        <translation type="unfinished"></translation>
+        <translation>ショットのカメラパスを編集します: ターンテーブル、カメラのキーフレーム、消去。カメラのオプションを指定しない render と eval はこのパスから見ます。</translation>
     </message>
     <message>
         <source>--format and --out are required</source>
-        <translation type="unfinished"></translation>
+        <translation>--format と --out の指定が必要です</translation>
     </message>
     <message>
         <source>--format must be gltf, glb, pc2 or obj-seq, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--format には gltf、glb、pc2、obj-seq のいずれかを指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--out needs a file name</source>
-        <translation type="unfinished"></translation>
+        <translation>--out にはファイル名が必要です</translation>
     </message>
     <message>
         <source>--out must end in .%1 for --format %2, not “%3”</source>
-        <translation type="unfinished"></translation>
+        <translation>--format %2 では --out は .%1 で終わる必要があります（「%3」は無効です）</translation>
     </message>
     <message>
         <source>--frames takes A-B for an export, without a step: “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポートでは --frames にステップなしの A-B を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>export: frame %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポート: フレーム %1 / %2</translation>
     </message>
     <message>
         <source>Exports the animation as seen through the camera path: a glTF scene with the keys as morph targets, a PC2 point cache or an OBJ per frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスから見たアニメーションをエクスポートします: キーをモーフターゲットとする glTF シーン、PC2 ポイントキャッシュ、またはフレームごとの OBJ。</translation>
     </message>
     <message>
         <source>gltf or glb (keys as morph targets, weights and camera animated), pc2 (point cache) or obj-seq (one OBJ per frame).</source>
-        <translation type="unfinished"></translation>
+        <translation>gltf または glb（キーをモーフターゲットにし、ウェイトとカメラをアニメーション）、pc2（ポイントキャッシュ）、obj-seq（フレームごとに 1 つの OBJ）。</translation>
     </message>
     <message>
         <source>Frames to export, A-B inclusive (default the project&apos;s).</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポートするフレーム、A-B（両端を含む。既定値はプロジェクトの範囲）。</translation>
     </message>
     <message>
         <source>The file; for obj-seq a pattern where a run of # is the frame number (else _FFFF goes before .obj).</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイル。obj-seq では連続した # がフレーム番号になるパターン（# がなければ .obj の前に _FFFF が付きます）。</translation>
     </message>
     <message>
         <source>Print the camera, keys and weights as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラ、キー、ウェイトを JSON 形式で出力します。</translation>
     </message>
     <message>
         <source>Evaluates the view-dependent shape at a frame: for a view direction or a camera, else through the camera path (or the render camera) at that frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>あるフレームでの視点依存の形状を評価します: 視線方向かカメラを指定した場合はそれに対して、指定しない場合はそのフレームのカメラパス（またはレンダーカメラ）から見て評価します。</translation>
     </message>
     <message>
         <source>--threads takes a whole number of at least 1, not “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>--threads には 1 以上の整数を指定してください（「%1」は無効です）</translation>
     </message>
     <message>
         <source>warning: rendering %1 frames at a time, not %2: each needs about %3 GB of memory at %4, and %5 GB are available</source>
-        <translation type="unfinished"></translation>
+        <translation>警告: 一度にレンダーするのは %2 フレームではなく %1 フレームにします。%4 では 1 フレームに約 %3 GB のメモリが必要ですが、使えるのは %5 GB です</translation>
     </message>
     <message>
         <source>frame %1 (%2/%3) -&gt; %4</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1 (%2/%3) -&gt; %4</translation>
     </message>
     <message>
         <source>frame %1 (%2/%3) skipped: %4 exists</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1 (%2/%3) をスキップしました: %4 はすでにあります</translation>
     </message>
     <message>
         <source>frame %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1: %2</translation>
     </message>
     <message>
         <source>Frames to render, A-B inclusive, every STEP-th from A (default 1); each to a file of its own (a # in --out, or _####, is the frame number).</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダーするフレーム、A-B（両端を含む）、A から STEP フレームごと（既定値 1）。各フレームを別々のファイルに書き出します（--out 内の #、または _#### がフレーム番号になります）。</translation>
     </message>
     <message>
         <source>Frames rendered at once (default: one per processor; fewer when memory is short). The files are the same for any N.</source>
-        <translation type="unfinished"></translation>
+        <translation>一度にレンダーするフレーム数（既定: プロセッサーごとに 1。メモリが足りないときは減らします）。N によらず同じファイルが得られます。</translation>
     </message>
     <message>
         <source>Leave frames whose file exists as they are (to resume an interrupted render).</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルがすでにあるフレームはそのままにします（中断したレンダーの再開用）。</translation>
     </message>
     <message>
         <source>Print the frames written and skipped as JSON.</source>
-        <translation type="unfinished"></translation>
+        <translation>書き出したフレームとスキップしたフレームを JSON 形式で出力します。</translation>
     </message>
     <message>
         <source>%1 takes A-B or A-B:STEP with A &lt;= B and STEP &gt;= 1, not “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 には A &lt;= B、STEP &gt;= 1 の A-B または A-B:STEP を指定してください（「%2」は無効です）</translation>
     </message>
     <message>
         <source>--fps must lie in (0, %1]</source>
-        <translation type="unfinished"></translation>
+        <translation>--fps は (0, %1] の範囲で指定してください</translation>
     </message>
     <message>
         <source>Frames: %1-%2 at %3 fps</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム: %1-%2（%3 fps）</translation>
     </message>
     <message>
         <source>Animated base: %1 frames from frame %2</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションするベースモデル: フレーム %2 から %1 フレーム</translation>
     </message>
     <message>
         <source>Camera path: %1 keys</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパス: キーフレーム %1 個</translation>
     </message>
     <message>
         <source>Creates a project from a mesh file, or from an animated base (a glTF/GLB with skins or morph targets, or an OBJ/PLY sequence such as walk_####.obj).</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュファイル、またはアニメーションするベースモデル（スキンやモーフターゲットを持つ glTF/GLB、または walk_####.obj のような OBJ/PLY の連番）からプロジェクトを作成します。</translation>
     </message>
     <message>
         <source>Frames per second an animated base is sampled at (default 24); frame F is time F / fps.</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションするベースモデルをサンプリングするフレームレート（既定値 24）。フレーム F は時刻 F / fps です。</translation>
     </message>
     <message>
         <source>MESH is one numbered file of a sequence (walk_0001.obj): read it with its numbered siblings as frames.</source>
-        <translation type="unfinished"></translation>
+        <translation>MESH は連番ファイルの 1 つ（walk_0001.obj）です。同じ連番のほかのファイルとともにフレームとして読み込みます。</translation>
     </message>
 </context>
 <context>
     <name>celform::app::ExportDialog</name>
     <message>
         <source>glTF 2.0 (.gltf): keys as morph targets, weights and camera animated</source>
-        <translation type="unfinished"></translation>
+        <translation>glTF 2.0 (.gltf): キーをモーフターゲットにし、ウェイトとカメラをアニメーション</translation>
     </message>
     <message>
         <source>glTF 2.0 binary (.glb)</source>
-        <translation type="unfinished"></translation>
+        <translation>glTF 2.0 バイナリ (.glb)</translation>
     </message>
     <message>
         <source>PC2 point cache (.pc2): the shape at every frame</source>
-        <translation type="unfinished"></translation>
+        <translation>PC2 ポイントキャッシュ (.pc2): 各フレームの形状</translation>
     </message>
     <message>
         <source>OBJ sequence: one .obj per frame</source>
-        <translation type="unfinished"></translation>
+        <translation>OBJ 連番: フレームごとに 1 つの .obj</translation>
     </message>
     <message>
         <source>Export</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポート</translation>
     </message>
     <message>
         <source>to</source>
-        <translation type="unfinished">～</translation>
+        <translation>～</translation>
     </message>
     <message>
         <source>Browse…</source>
-        <translation type="unfinished">参照…</translation>
+        <translation>参照…</translation>
     </message>
     <message>
         <source>&amp;Format:</source>
-        <translation type="unfinished"></translation>
+        <translation>形式(&amp;F):</translation>
     </message>
     <message>
         <source>F&amp;rames:</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム(&amp;R):</translation>
     </message>
     <message>
         <source>F&amp;ile:</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイル(&amp;I):</translation>
     </message>
     <message>
         <source>&amp;Export</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポート(&amp;E)</translation>
     </message>
     <message>
         <source>The file must end in .%1 for this format.</source>
-        <translation type="unfinished"></translation>
+        <translation>この形式ではファイル名を .%1 で終える必要があります。</translation>
     </message>
 </context>
 <context>
     <name>celform::app::ExportRunner</name>
     <message>
         <source>Export</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポート</translation>
     </message>
     <message>
         <source>Exporting %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 をエクスポートしています…</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished">キャンセル</translation>
+        <translation>キャンセル</translation>
     </message>
     <message>
         <source>%1: not enough memory to export</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: エクスポートするメモリが足りません</translation>
     </message>
     <message>
         <source>Export Failed</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポートに失敗しました</translation>
     </message>
     <message>
         <source>The export could not be finished.</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポートを完了できませんでした。</translation>
     </message>
     <message>
         <source>Export failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポートに失敗しました: %1</translation>
     </message>
     <message>
         <source>Export cancelled.</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポートをキャンセルしました。</translation>
     </message>
     <message>
         <source>Exported %L1 frames to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 フレームを %2 にエクスポートしました</translation>
     </message>
 </context>
 <context>
@@ -2097,11 +2097,11 @@ Recover it now?</source>
     </message>
     <message>
         <source>E&amp;xport…</source>
-        <translation type="unfinished"></translation>
+        <translation>エクスポート(&amp;X)…</translation>
     </message>
     <message>
         <source>Export the animation seen through the camera path as glTF, a PC2 point cache or OBJ files, as celform export does</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスから見たアニメーションを glTF、PC2 ポイントキャッシュ、または OBJ ファイルとしてエクスポートします（celform export と同じ処理）</translation>
     </message>
 </context>
 <context>
@@ -3065,402 +3065,402 @@ Recover it now?</source>
     <name>celform::app::TurntableDialog</name>
     <message>
         <source>Turntable</source>
-        <translation type="unfinished">ターンテーブル</translation>
+        <translation>ターンテーブル</translation>
     </message>
     <message>
         <source>Frames of one revolution; the scene&apos;s range becomes these frames</source>
-        <translation type="unfinished"></translation>
+        <translation>1 周のフレーム数。シーンの範囲はこのフレームになります</translation>
     </message>
     <message>
         <source>X</source>
-        <translation type="unfinished"></translation>
+        <translation>X</translation>
     </message>
     <message>
         <source>Y (up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Y（上）</translation>
     </message>
     <message>
         <source>Z</source>
-        <translation type="unfinished"></translation>
+        <translation>Z</translation>
     </message>
     <message>
         <source>The axis the camera turns around, through the model&apos;s centre</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラが回る軸（モデルの中心を通ります）</translation>
     </message>
     <message>
         <source>How far the camera is raised above the plane normal to the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>軸に垂直な平面からカメラを持ち上げる高さ</translation>
     </message>
     <message>
         <source>The frame the revolution starts at</source>
-        <translation type="unfinished"></translation>
+        <translation>回転を始めるフレーム</translation>
     </message>
     <message>
         <source>Where on the circle the camera starts: 0 is the side the default view looks from</source>
-        <translation type="unfinished"></translation>
+        <translation>円周上のカメラの開始位置: 0 は既定の視点が見ている側です</translation>
     </message>
     <message>
         <source>Frames per revolution:</source>
-        <translation type="unfinished"></translation>
+        <translation>1 周のフレーム数:</translation>
     </message>
     <message>
         <source>Axis:</source>
-        <translation type="unfinished"></translation>
+        <translation>軸:</translation>
     </message>
     <message>
         <source>Elevation:</source>
-        <translation type="unfinished"></translation>
+        <translation>仰角:</translation>
     </message>
     <message>
         <source>Start frame:</source>
-        <translation type="unfinished"></translation>
+        <translation>開始フレーム:</translation>
     </message>
     <message>
         <source>Start angle:</source>
-        <translation type="unfinished"></translation>
+        <translation>開始角度:</translation>
     </message>
     <message>
         <source>Replace the camera path by the turntable (one undo step)</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスをターンテーブルで置き換えます（1 回の「元に戻す」で戻せます）</translation>
     </message>
 </context>
 <context>
     <name>celform::model::AnimationIo</name>
     <message>
         <source>%1 frames per second is not a usable frame rate</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 fps は使用できるフレームレートではありません</translation>
     </message>
     <message>
         <source>the file contains no triangles</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルに三角形がありません</translation>
     </message>
     <message>
         <source>the animation is unusable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションを使用できません: %1</translation>
     </message>
     <message>
         <source>mesh %1, primitive %2</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュ %1、プリミティブ %2</translation>
     </message>
     <message>
         <source>the scene names node %1, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンが存在しないノード %1 を参照しています</translation>
     </message>
     <message>
         <source>the scene reaches node %1 twice</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンからノード %1 に 2 回到達します</translation>
     </message>
     <message>
         <source>%1 has %2 morph targets, the mesh&apos;s first primitive %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 のモーフターゲットは %2 個ですが、メッシュの最初のプリミティブでは %3 個です</translation>
     </message>
     <message>
         <source>mesh %1 has %2 morph targets</source>
-        <translation type="unfinished"></translation>
+        <translation>メッシュ %1 にはモーフターゲットが %2 個あります</translation>
     </message>
     <message>
         <source>%1 has only one of JOINTS_%2 and WEIGHTS_%2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 には JOINTS_%2 と WEIGHTS_%2 の片方しかありません</translation>
     </message>
     <message>
         <source>%1: JOINTS_%2 and WEIGHTS_%2 give %3 and %4 vertices, POSITION %5</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: JOINTS_%2 と WEIGHTS_%2 の頂点数は %3 と %4 ですが、POSITION では %5 です</translation>
     </message>
     <message>
         <source>%1 is skinned but has no JOINTS_0 and WEIGHTS_0</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 はスキンが設定されていますが、JOINTS_0 と WEIGHTS_0 がありません</translation>
     </message>
     <message>
         <source>%1: vertex %2 has a joint weight that is negative or not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: 頂点 %2 のジョイントウェイトが負の値か数値ではありません</translation>
     </message>
     <message>
         <source>%1: vertex %2 names joint %3, but the skin has %4 joints</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: 頂点 %2 がジョイント %3 を参照していますが、スキンのジョイントは %4 個です</translation>
     </message>
     <message>
         <source>skin %1 has no joints</source>
-        <translation type="unfinished"></translation>
+        <translation>スキン %1 にジョイントがありません</translation>
     </message>
     <message>
         <source>skin %1</source>
-        <translation type="unfinished"></translation>
+        <translation>スキン %1</translation>
     </message>
     <message>
         <source>skin %1 has %2 inverse bind matrices for %3 joints</source>
-        <translation type="unfinished"></translation>
+        <translation>スキン %1 には %3 個のジョイントに対して逆バインド行列が %2 個あります</translation>
     </message>
     <message>
         <source>skin %1 names node %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>スキン %1 が存在しないノード %2 を参照しています</translation>
     </message>
     <message>
         <source>skin %1: joint %2&apos;s inverse bind matrix is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>スキン %1: ジョイント %2 の逆バインド行列が有限ではありません</translation>
     </message>
     <message>
         <source>node %1 names mesh %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>ノード %1 が存在しないメッシュ %2 を参照しています</translation>
     </message>
     <message>
         <source>node %1 names skin %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>ノード %1 が存在しないスキン %2 を参照しています</translation>
     </message>
     <message>
         <source>the scene has more morph targets than Celform can hold</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンのモーフターゲットが Celform で扱える上限を超えています</translation>
     </message>
     <message>
         <source>node %1 gives %2 morph weights for the %3 morph targets of mesh %4</source>
-        <translation type="unfinished"></translation>
+        <translation>ノード %1 にはメッシュ %4 の %3 個のモーフターゲットに対してモーフウェイトが %2 個あります</translation>
     </message>
     <message>
         <source>the scene has no mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンにメッシュがありません</translation>
     </message>
     <message>
         <source>node %1 is animated but has a zero scale at rest</source>
-        <translation type="unfinished"></translation>
+        <translation>ノード %1 はアニメーションしますが、静止時のスケールがゼロです</translation>
     </message>
     <message>
         <source>the file has more than 65,535 joints</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルのジョイントが 65,535 個を超えています</translation>
     </message>
     <message>
         <source>%1 has the unknown mode %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 のモード %2 は不明です</translation>
     </message>
     <message>
         <source>%1 has no POSITION</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 に POSITION がありません</translation>
     </message>
     <message>
         <source>the scene has more than the %1 vertices Celform can load</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンの頂点が、Celform が読み込める %1 個を超えています</translation>
     </message>
     <message>
         <source>%1: index %2 is %3, but the primitive has %4 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: インデックス %2 は %3 ですが、プリミティブの頂点数は %4 です</translation>
     </message>
     <message>
         <source>%1: vertex %2 has a coordinate that is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: 頂点 %2 の座標に有限の数値でないものがあります</translation>
     </message>
     <message>
         <source>%1: vertex %2 is beyond the range of a float once its node&apos;s transform is applied</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: 頂点 %2 はノードの変換を適用すると float の範囲を超えます</translation>
     </message>
     <message>
         <source>the scene has more than the %1 triangles Celform can load</source>
-        <translation type="unfinished">シーンの三角形が、Celform が読み込める %1 個を超えています</translation>
+        <translation>シーンの三角形が、Celform が読み込める %1 個を超えています</translation>
     </message>
     <message>
         <source>%1 names material %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 が存在しないマテリアル %2 を参照しています</translation>
     </message>
     <message>
         <source>%1 has %2 texture coordinates for %3 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 には %3 個の頂点に対してテクスチャ座標が %2 個あります</translation>
     </message>
     <message>
         <source>the file has no triangle primitive</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルに三角形のプリミティブがありません</translation>
     </message>
     <message>
         <source>the animation lasts %1 seconds, more than the %2 frames Celform can load at %3 frames per second</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションの長さは %1 秒で、%3 fps では Celform が読み込める %2 フレームを超えます</translation>
     </message>
     <message>
         <source>%1 morph targets and %2 joints over %3 frames are more than Celform can hold</source>
-        <translation type="unfinished"></translation>
+        <translation>%3 フレームにわたるモーフターゲット %1 個とジョイント %2 個は Celform で扱える上限を超えています</translation>
     </message>
     <message>
         <source>morph target %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 のモーフターゲット %1</translation>
     </message>
     <message>
         <source>%1 has %2 positions, the primitive %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 の位置は %2 個ですが、プリミティブでは %3 個です</translation>
     </message>
     <message>
         <source>accessor %1 (%2): %3</source>
-        <translation type="unfinished"></translation>
+        <translation>アクセサー %1 (%2): %3</translation>
     </message>
     <message>
         <source>buffer view %1 does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>バッファービュー %1 が存在しません</translation>
     </message>
     <message>
         <source>buffer view %1 names buffer %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>バッファービュー %1 が存在しないバッファー %2 を参照しています</translation>
     </message>
     <message>
         <source>buffer view %1 covers bytes %2 to %3, but buffer %4 holds %5 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>バッファービュー %1 はバイト %2～%3 を指していますが、バッファー %4 は %5 バイトしかありません</translation>
     </message>
     <message>
         <source>buffer view %1 has a byteStride where none is allowed</source>
-        <translation type="unfinished"></translation>
+        <translation>バッファービュー %1 に、許可されていない byteStride があります</translation>
     </message>
     <message>
         <source>buffer view %1 has a byteStride of %2 for elements of %3 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>バッファービュー %1 の byteStride は %2 ですが、要素は %3 バイトです</translation>
     </message>
     <message>
         <source>%1 elements of %2 bytes from byte %3 do not fit in buffer view %4 (%5 bytes)</source>
-        <translation type="unfinished"></translation>
+        <translation>バイト %3 からの %2 バイトの要素 %1 個がバッファービュー %4（%5 バイト）に収まりません</translation>
     </message>
     <message>
         <source>type %1, expected %2</source>
-        <translation type="unfinished"></translation>
+        <translation>型が %1 です（%2 が必要です）</translation>
     </message>
     <message>
         <source>unknown component type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>不明なコンポーネント型 %1 です</translation>
     </message>
     <message>
         <source>%1 elements without a buffer view</source>
-        <translation type="unfinished"></translation>
+        <translation>バッファービューのない要素 %1 個</translation>
     </message>
     <message>
         <source>%1 sparse elements of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 個中 %1 個のスパース要素</translation>
     </message>
     <message>
         <source>sparse indices of component type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>コンポーネント型 %1 のスパースインデックス</translation>
     </message>
     <message>
         <source>a negative sparse byteOffset</source>
-        <translation type="unfinished"></translation>
+        <translation>スパースの byteOffset が負の値です</translation>
     </message>
     <message>
         <source>sparse element %1 replaces element %2 of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>スパース要素 %1 が %3 個中の要素 %2 を置き換えています</translation>
     </message>
     <message>
         <source>%1 elements of %2 bytes cannot fit in buffer view %3 (%4 bytes)</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 バイトの要素 %1 個はバッファービュー %3（%4 バイト）に収まりません</translation>
     </message>
     <message>
         <source>component type %1, expected unsigned integers</source>
-        <translation type="unfinished"></translation>
+        <translation>コンポーネント型が %1 です（符号なし整数が必要です）</translation>
     </message>
     <message>
         <source>node %1 has child %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>ノード %1 の子 %2 が存在しません</translation>
     </message>
     <message>
         <source>node %1 has more than one parent</source>
-        <translation type="unfinished"></translation>
+        <translation>ノード %1 に親が複数あります</translation>
     </message>
     <message>
         <source>the node hierarchy has a cycle</source>
-        <translation type="unfinished"></translation>
+        <translation>ノードの階層が循環しています</translation>
     </message>
     <message>
         <source>node %1 has a malformed transform</source>
-        <translation type="unfinished"></translation>
+        <translation>ノード %1 の変換が不正です</translation>
     </message>
     <message>
         <source>node %1 has a zero rotation quaternion</source>
-        <translation type="unfinished"></translation>
+        <translation>ノード %1 の回転クォータニオンがゼロです</translation>
     </message>
     <message>
         <source>animation channel %1 targets node %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションチャンネル %1 の対象ノード %2 が存在しません</translation>
     </message>
     <message>
         <source>animation channel %1 moves node %2, which is given as a matrix (glTF allows only translation, rotation and scale on animated nodes)</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションチャンネル %1 が行列で指定されたノード %2 を動かしています（glTF でアニメーションするノードに使えるのは移動、回転、スケールだけです）</translation>
     </message>
     <message>
         <source>animation channel %1 names sampler %2, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションチャンネル %1 が存在しないサンプラー %2 を参照しています</translation>
     </message>
     <message>
         <source>animation sampler %1 has an unknown interpolation &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションサンプラー %1 の補間「%2」は不明です</translation>
     </message>
     <message>
         <source>animation sampler %1</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションサンプラー %1</translation>
     </message>
     <message>
         <source>animation sampler %1 has no keys</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションサンプラー %1 にキーフレームがありません</translation>
     </message>
     <message>
         <source>animation sampler %1: key %2 has time %3, not after the key before it</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションサンプラー %1: キーフレーム %2 の時刻 %3 が前のキーフレームより後になっていません</translation>
     </message>
     <message>
         <source>animation sampler %1 has %2 output values for %3 keys, expected %4</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションサンプラー %1 にはキーフレーム %3 個に対して出力値が %2 個あります（%4 個が必要です）</translation>
     </message>
     <message>
         <source>animation sampler %1 has a value that is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションサンプラー %1 に有限の数値でない値があります</translation>
     </message>
     <message>
         <source>unknown error</source>
-        <translation type="unfinished"></translation>
+        <translation>不明なエラー</translation>
     </message>
     <message>
         <source>this build cannot read glTF: its tinygltf functions come from %1, not from tinygltf&apos;s library (link TinyGLTF before Assimp)</source>
-        <translation type="unfinished"></translation>
+        <translation>このビルドでは glTF を読み込めません: tinygltf の関数が tinygltf のライブラリではなく %1 から来ています（Assimp より前に TinyGLTF をリンクしてください）</translation>
     </message>
     <message>
         <source>the file is larger than the 4 GB glTF allows</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルが glTF で許される 4 GB を超えています</translation>
     </message>
     <message>
         <source>its JSON is nested more than %1 levels deep, which no glTF file needs</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON の入れ子が %1 階層を超えています（glTF ファイルでは必要のない深さです）</translation>
     </message>
     <message>
         <source>not a readable glTF file: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>読み込み可能な glTF ファイルではありません: %1</translation>
     </message>
     <message>
         <source>the file needs the glTF extension %1, which Celform does not read</source>
-        <translation type="unfinished"></translation>
+        <translation>ファイルには Celform が読み込めない glTF 拡張 %1 が必要です</translation>
     </message>
     <message>
         <source>%1: the frame number is too long</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: フレーム番号が長すぎます</translation>
     </message>
     <message>
         <source>the sequence has more than the %1 frames Celform can load</source>
-        <translation type="unfinished"></translation>
+        <translation>連番のフレームが、Celform が読み込める %1 フレームを超えています</translation>
     </message>
     <message>
         <source>%1 and %2 are both frame %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 と %2 はどちらもフレーム %3 です</translation>
     </message>
     <message>
         <source>%1 triangles, the first frame (%2) has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>三角形が %1 個ですが、最初のフレーム（%2）では %3 個です</translation>
     </message>
     <message>
         <source>triangle %1 is (%2, %3, %4), the first frame&apos;s (%5) is (%6, %7, %8)</source>
-        <translation type="unfinished"></translation>
+        <translation>三角形 %1 は (%2, %3, %4) ですが、最初のフレーム（%5）では (%6, %7, %8) です</translation>
     </message>
     <message>
         <source>not an animated base: use a .gltf or .glb file, or a numbered .obj, .ply or .off sequence (walk_0001.obj, or walk_####.obj)</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションするベースモデルではありません: .gltf か .glb ファイル、または連番の .obj、.ply、.off（walk_0001.obj または walk_####.obj）を使用してください</translation>
     </message>
     <message>
         <source>no file matches the pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>パターンに一致するファイルがありません</translation>
     </message>
     <message>
         <source>%1 frames of %2 vertices are more than Celform can hold</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点 %2 個 × %1 フレームは Celform で扱える上限を超えています</translation>
     </message>
     <message>
         <source>%1 vertices, the first frame (%2) has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>頂点が %1 個ですが、最初のフレーム（%2）では %3 個です</translation>
     </message>
 </context>
 <context>
@@ -3935,70 +3935,70 @@ Recover it now?</source>
     </message>
     <message>
         <source>Change Frame Rate</source>
-        <translation type="unfinished"></translation>
+        <translation>フレームレートを変更</translation>
     </message>
     <message>
         <source>Change Frame Range</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム範囲を変更</translation>
     </message>
     <message>
         <source>The camera is not valid (eye, target and up must differ).</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
     </message>
     <message>
         <source>Frame %1 is out of range.</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1 は範囲外です。</translation>
     </message>
     <message>
         <source>Key Camera at Frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1 にカメラのキーフレームを設定</translation>
     </message>
     <message>
         <source>Remove Camera Key at Frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1 のカメラのキーフレームを削除</translation>
     </message>
     <message>
         <source>Clear Camera Path</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスを消去</translation>
     </message>
     <message>
         <source>Import a base model before making a turntable.</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブルを作成する前にベースモデルをインポートしてください。</translation>
     </message>
     <message>
         <source>Make Turntable</source>
-        <translation type="unfinished"></translation>
+        <translation>ターンテーブルを作成</translation>
     </message>
     <message>
         <source>The animation of %1 is not usable: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 のアニメーションを使用できません: %2</translation>
     </message>
     <message>
         <source>Import Animated Base</source>
-        <translation type="unfinished"></translation>
+        <translation>アニメーションするベースモデルをインポート</translation>
     </message>
 </context>
 <context>
     <name>celform::model::Export</name>
     <message>
         <source>frames must be within ±%1</source>
-        <translation type="unfinished"></translation>
+        <translation>フレームは ±%1 の範囲内である必要があります</translation>
     </message>
     <message>
         <source>the first frame %1 is after the last frame %2</source>
-        <translation type="unfinished"></translation>
+        <translation>最初のフレーム %1 が最後のフレーム %2 より後です</translation>
     </message>
     <message>
         <source>no output file</source>
-        <translation type="unfinished"></translation>
+        <translation>出力ファイルが指定されていません</translation>
     </message>
     <message>
         <source>the aspect ratio must be positive</source>
-        <translation type="unfinished"></translation>
+        <translation>アスペクト比は正の値である必要があります</translation>
     </message>
     <message>
         <source>has no base model</source>
-        <translation type="unfinished">ベースモデルがありません</translation>
+        <translation>ベースモデルがありません</translation>
     </message>
 </context>
 <context>
@@ -4568,7 +4568,7 @@ Recover it now?</source>
     </message>
     <message>
         <source>&quot;%1&quot; files do not keep their vertex order; use .obj, .ply or .off</source>
-        <translation type="unfinished"></translation>
+        <translation>「%1」形式のファイルは頂点順序を保持しません。.obj、.ply、.off を使用してください</translation>
     </message>
 </context>
 <context>
@@ -4795,27 +4795,27 @@ Recover it now?</source>
     </message>
     <message>
         <source>the camera path is invalid: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラパスが無効です: %1</translation>
     </message>
     <message>
         <source>the base animation&apos;s frames are out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースアニメーションのフレームが範囲外です</translation>
     </message>
     <message>
         <source>the base animation has too many joints</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースアニメーションのジョイントが多すぎます</translation>
     </message>
     <message>
         <source>the base animation is invalid: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースアニメーションが無効です: %1</translation>
     </message>
     <message>
         <source>the scene time is invalid: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンの時間設定が無効です: %1</translation>
     </message>
     <message>
         <source>the base animation has no base model</source>
-        <translation type="unfinished"></translation>
+        <translation>ベースアニメーションにベースモデルがありません</translation>
     </message>
 </context>
 <context>
@@ -4837,11 +4837,11 @@ Recover it now?</source>
     </message>
     <message>
         <source>not enough memory to render it</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダーするメモリが足りません</translation>
     </message>
     <message>
         <source>the render failed</source>
-        <translation type="unfinished"></translation>
+        <translation>レンダーに失敗しました</translation>
     </message>
 </context>
 <context>
@@ -6419,118 +6419,118 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     <name>celform::views::TimelinePanel</name>
     <message>
         <source>Go to the first frame of the range (Shift+Left)</source>
-        <translation type="unfinished"></translation>
+        <translation>範囲の最初のフレームに移動します（Shift+Left）</translation>
     </message>
     <message>
         <source>Go to the previous keyed frame of any kind (Down)</source>
-        <translation type="unfinished"></translation>
+        <translation>種類を問わずキーフレームのある前のフレームに移動します（Down）</translation>
     </message>
     <message>
         <source>Play or pause at the scene&apos;s frame rate (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンのフレームレートで再生または一時停止します（Space）</translation>
     </message>
     <message>
         <source>Go to the next keyed frame of any kind (Up)</source>
-        <translation type="unfinished"></translation>
+        <translation>種類を問わずキーフレームのある次のフレームに移動します（Up）</translation>
     </message>
     <message>
         <source>Go to the last frame of the range (Shift+Right)</source>
-        <translation type="unfinished"></translation>
+        <translation>範囲の最後のフレームに移動します（Shift+Right）</translation>
     </message>
     <message>
         <source>Loop: after the last frame play the first again</source>
-        <translation type="unfinished"></translation>
+        <translation>ループ: 最後のフレームの後、最初のフレームから再び再生します</translation>
     </message>
     <message>
         <source>The current frame: every view shows the project at this frame</source>
-        <translation type="unfinished"></translation>
+        <translation>現在のフレーム: すべてのビューがこのフレームでのプロジェクトを表示します</translation>
     </message>
     <message>
         <source>First frame of the scene&apos;s range (playback and rendered sequences)</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンの範囲の最初のフレーム（再生と連番レンダー）</translation>
     </message>
     <message>
         <source>Last frame of the scene&apos;s range</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンの範囲の最後のフレーム</translation>
     </message>
     <message>
         <source> fps</source>
-        <translation type="unfinished"></translation>
+        <translation> fps</translation>
     </message>
     <message>
         <source>Frames per second of the scene (playback, exports)</source>
-        <translation type="unfinished"></translation>
+        <translation>シーンのフレームレート（再生、エクスポート）</translation>
     </message>
     <message>
         <source>Frames drawn per second while playing; below the scene&apos;s rate, frames are dropped</source>
-        <translation type="unfinished"></translation>
+        <translation>再生中に 1 秒あたりに描画されるフレーム数。シーンのフレームレートを下回るとフレームが間引かれます</translation>
     </message>
     <message>
         <source>Playing: 000.0 fps</source>
-        <translation type="unfinished"></translation>
+        <translation>再生中: 000.0 fps</translation>
     </message>
     <message>
         <source>camera</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラ</translation>
     </message>
     <message>
         <source>deformation</source>
-        <translation type="unfinished"></translation>
+        <translation>変形</translation>
     </message>
     <message>
         <source>highlight</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライト</translation>
     </message>
     <message>
         <source>Key marks on the ruler: camera keys (top row), key deformations (middle) and highlight keys (bottom)</source>
-        <translation type="unfinished"></translation>
+        <translation>ルーラー上のキーフレームの印: カメラのキーフレーム（上段）、キー変形（中段）、ハイライトのキーフレーム（下段）</translation>
     </message>
     <message>
         <source>Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム</translation>
     </message>
     <message>
         <source>Range</source>
-        <translation type="unfinished"></translation>
+        <translation>範囲</translation>
     </message>
     <message>
         <source>Playing…</source>
-        <translation type="unfinished"></translation>
+        <translation>再生中…</translation>
     </message>
     <message>
         <source>Playing: %1 fps</source>
-        <translation type="unfinished"></translation>
+        <translation>再生中: %1 fps</translation>
     </message>
 </context>
 <context>
     <name>celform::views::TimelineRuler</name>
     <message>
         <source>camera key</source>
-        <translation type="unfinished"></translation>
+        <translation>カメラのキーフレーム</translation>
     </message>
     <message>
         <source>key deformation</source>
-        <translation type="unfinished"></translation>
+        <translation>キー変形</translation>
     </message>
     <message>
         <source>highlight key</source>
-        <translation type="unfinished"></translation>
+        <translation>ハイライトのキーフレーム</translation>
     </message>
     <message>
         <source>Frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1</translation>
     </message>
     <message>
         <source>Frame %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>フレーム %1: %2</translation>
     </message>
     <message>
         <source>▼ camera keys · ◆ key deformations · ● highlight keys</source>
-        <translation type="unfinished"></translation>
+        <translation>▼ カメラのキーフレーム · ◆ キー変形 · ● ハイライトのキーフレーム</translation>
     </message>
     <message>
         <source>Click or drag to move the current frame</source>
-        <translation type="unfinished"></translation>
+        <translation>クリックまたはドラッグで現在のフレームを移動します</translation>
     </message>
 </context>
 <context>
