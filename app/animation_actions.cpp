@@ -144,13 +144,7 @@ void installAnimationActions(MainWindow* window)
     new views::CameraPathOverlay(observer, viewport);
 
     auto make = [window](const char* name, const QString& text, const QKeySequence& key, const QString& tip) {
-        auto* a = new QAction(text, window);
-        a->setObjectName(QString::fromLatin1(name));
-        a->setShortcut(key);
-        a->setToolTip(tip);
-        a->setStatusTip(tip);
-        window->addAction(a);
-        return a;
+        return addWindowAction(window, QString::fromLatin1(name), text, key, tip);
     };
     // Playback keys as in Blender (Space, arrows). They act where frames are looked at — the
     // viewports and the Timeline — so the arrows still move through lists and text fields.

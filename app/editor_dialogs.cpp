@@ -29,12 +29,7 @@ QMenu* menuHolding(MainWindow* window, const char* actionName)
 
 QAction* makeAction(MainWindow* window, const QString& name, const QString& text, const QString& tip)
 {
-    auto* action = new QAction(text, window);
-    action->setObjectName(name);
-    action->setToolTip(tip);
-    action->setStatusTip(tip);
-    window->addAction(action);
-    return action;
+    return addWindowAction(window, name, text, {}, tip);
 }
 
 /// Shows the render dialog; on Render, renders the document as it is now behind a progress dialog.

@@ -1,6 +1,8 @@
 // Optimise Light for Stereo on a worker thread (light_optimisation_runner.h).
 #include "light_optimisation_runner.h"
 
+#include "progress_dialog.h"
+
 #include <QCoreApplication>
 #include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
@@ -28,20 +30,11 @@ void LightOptimisationRunner::start()
     m_cancel = false;
     m_done = 0;
     const int iterations = m_job.request.optimiser.iterations;
-    m_progress = new QProgressDialog(m_parent);
-    m_progress->setObjectName(QStringLiteral("lightOptimisationProgress"));
-    m_progress->setWindowTitle(tr("Optimise Light for Stereo"));
-    m_progress->setLabelText(tr("Analysing the picture (%1 × %2)…").arg(m_job.width).arg(m_job.height));
-    m_progress->setCancelButtonText(tr("Cancel"));
     // Two analyses around the iterations: they count as an iteration each.
-    m_progress->setRange(0, iterations + 2);
-    m_progress->setWindowModality(Qt::WindowModal);
-    m_progress->setMinimumDuration(300);
-    m_progress->setAutoClose(false);
-    m_progress->setAutoReset(false);
-    m_progress->setMinimumWidth(380);
+    m_progress = makeProgressDialog(m_parent, QStringLiteral("lightOptimisationProgress"),
+        tr("Optimise Light for Stereo"), tr("Analysing the picture (%1 × %2)…").arg(m_job.width).arg(m_job.height),
+        iterations + 2, 300);
     connect(m_progress, &QProgressDialog::canceled, this, &LightOptimisationRunner::cancel);
-    m_progress->setValue(0);
 
     m_future = QtConcurrent::run([this] {
         std::shared_ptr<model::LightOptimisationReport> report;

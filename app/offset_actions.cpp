@@ -2,6 +2,7 @@
 #include "offset_actions.h"
 
 #include "main_window.h"
+#include "shortcuts.h"
 
 #include "celform/model/document.h"
 #include "celform/model/io_error.h"
@@ -111,13 +112,7 @@ void installOffsetActions(MainWindow* window, QMenu* menu)
     views::Viewport* viewport = window->viewport();
     model::Document* doc = window->document();
     auto make = [window](const char* name, const QString& text, const QKeySequence& key, const QString& tip) {
-        auto* a = new QAction(text, window);
-        a->setObjectName(QString::fromLatin1(name));
-        a->setShortcut(key);
-        a->setToolTip(tip);
-        a->setStatusTip(tip);
-        window->addAction(a);
-        return a;
+        return addWindowAction(window, QString::fromLatin1(name), text, key, tip);
     };
     QMenu* sub = menu->addMenu(OffsetText::tr("Shading &Offsets"));
     sub->setObjectName(QStringLiteral("menuShadingOffsets"));

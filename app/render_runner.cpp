@@ -1,6 +1,8 @@
 // A render on a worker thread behind a progress dialog (render_runner.h).
 #include "render_runner.h"
 
+#include "progress_dialog.h"
+
 #include "celform/model/io_error.h"
 
 #include <QCoreApplication>
@@ -51,23 +53,15 @@ void RenderRunner::start()
     m_written.clear();
     m_error.clear();
     const bool sequence = m_job.isSequence();
-    m_progress = new QProgressDialog(m_parent);
-    m_progress->setWindowTitle(sequence ? tr("Render Sequence") : tr("Render Image"));
-    m_progress->setCancelButtonText(tr("Cancel"));
-    m_progress->setRange(0, m_job.frameCount());
-    m_progress->setWindowModality(Qt::WindowModal);
-    m_progress->setMinimumDuration(0);
-    m_progress->setAutoClose(false);
-    m_progress->setAutoReset(false);
-    m_progress->setMinimumWidth(420);
-    m_progress->setLabelText(sequence
-            ? tr("Rendering frame %1 (1 of %2)…").arg(m_job.firstFrame).arg(m_job.frameCount())
-            : tr("Rendering %1 (%2 × %3)…")
-                  .arg(QFileInfo(m_job.framePath(m_job.firstFrame)).fileName())
-                  .arg(m_job.size.width())
-                  .arg(m_job.size.height()));
+    m_progress = makeProgressDialog(m_parent, QStringLiteral("renderProgress"),
+        sequence ? tr("Render Sequence") : tr("Render Image"),
+        sequence ? tr("Rendering frame %1 (1 of %2)…").arg(m_job.firstFrame).arg(m_job.frameCount())
+                 : tr("Rendering %1 (%2 × %3)…")
+                       .arg(QFileInfo(m_job.framePath(m_job.firstFrame)).fileName())
+                       .arg(m_job.size.width())
+                       .arg(m_job.size.height()),
+        m_job.frameCount());
     connect(m_progress, &QProgressDialog::canceled, this, &RenderRunner::cancel);
-    m_progress->setValue(0);
     m_progress->show();
 
     m_future = QtConcurrent::run([this] {

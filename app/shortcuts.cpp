@@ -62,6 +62,18 @@ QString keyText(const QKeySequence& key)
 
 } // namespace
 
+QAction* addWindowAction(
+    QWidget* window, const QString& objectName, const QString& text, const QKeySequence& key, const QString& tip)
+{
+    auto* action = new QAction(text, window);
+    action->setObjectName(objectName);
+    action->setShortcut(key);
+    action->setToolTip(tip);
+    action->setStatusTip(tip);
+    window->addAction(action);
+    return action;
+}
+
 QMenu* menuOf(const QAction* action)
 {
     // Menus without a title are not the window's: the menu bar's overflow menu holds the menus

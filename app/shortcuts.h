@@ -29,6 +29,11 @@ struct ShortcutEntry {
 /// creation order.
 [[nodiscard]] std::vector<QAction*> shortcutActions(const QWidget* window);
 
+/// A new action of the window (an "action…" object name, so it is listed with the shortcuts):
+/// its text, default key (may be empty) and the tip shown as tooltip and in the status bar.
+QAction* addWindowAction(
+    QWidget* window, const QString& objectName, const QString& text, const QKeySequence& key, const QString& tip);
+
 /// The window's menu holding an action (the first, if several), or null.
 [[nodiscard]] QMenu* menuOf(const QAction* action);
 /// The menu path of an action ("File", "View ▸ View From"), or "Other" outside the menus.

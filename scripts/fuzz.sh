@@ -8,6 +8,7 @@
 # Usage: scripts/fuzz.sh [SECONDS] [KIND...]
 # Environment:
 #   FUZZ_OUT=build/fuzz        corpora (kept between runs), crashes and logs
+#   FUZZ_JOBS=$(nproc)         targets fuzzed at the same time
 #   FUZZ_RSS_MB=4096           memory limit per process (a drawing may decode to 4096 x 4096
 #                              pixels from any file: about 700 MB at once under ASan)
 #   FUZZ_MALLOC_MB=2048        the largest single allocation
@@ -51,50 +52,66 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tests/lsan-suppressions.txt:print_suppressions=0}
 export QT_QPA_PLATFORM=offscreen
 
-summary=()
-while read -r kind binary; do
-  if [ $# -gt 0 ] && ! printf '%s\n' "$@" | grep -qx -- "$kind"; then
-    continue
-  fi
-  corpus=$out/corpus/$kind
-  crashes=$out/crashes/$kind
-  work=$out/work/$kind
+# Targets run side by side, one per core (FUZZ_JOBS): each is one process fuzzing for SECONDS.
+jobs_max=${FUZZ_JOBS:-$(nproc)}
+rm -rf "$out/summary"
+mkdir -p "$out/summary"
+fuzzOne() {
+  local kind=$1 binary=$2
+  local corpus=$out/corpus/$kind crashes=$out/crashes/$kind work=$out/work/$kind
   mkdir -p "$corpus" "$crashes" "$work" "$out/logs"
   # Seeds: the committed corpus and the fuzzers' regressions, and (copied into the corpus) the
   # handcrafted regressions and the shared data's files under 50 kB with the kind's suffix.
-  seeds=()
+  local seeds=() dir suffix=$kind
   for dir in tests/data/fuzz-corpus/$kind tests/data/fuzz-regressions/fuzzed/$kind; do
     [ -d "$dir" ] && seeds+=("$root/$dir")
   done
-  suffix=$kind
   [ "$kind" = project ] && suffix=celform
   case $kind in animated-*) suffix=${kind#animated-} ;; esac
   for dir in tests/data/fuzz-regressions "$shared"; do
     [ -d "$dir" ] && find "$dir" -path '*/fuzzed' -prune -o -type f -iname "*.$suffix" -size -50k \
       -exec cp -n {} "$corpus/" \;
   done
-  dict=tests/fuzz/dict/$kind.dict
+  local dict=tests/fuzz/dict/$kind.dict
   case $kind in glb | animated-gltf | animated-glb) dict=tests/fuzz/dict/gltf.dict ;; esac
-  flags=(-max_total_time="$seconds" -rss_limit_mb="$rss" -malloc_limit_mb="$malloc" -timeout="$timeout"
+  local flags=(-max_total_time="$seconds" -rss_limit_mb="$rss" -malloc_limit_mb="$malloc" -timeout="$timeout"
     -print_final_stats=1
     -artifact_prefix="$crashes/")
   [ -f "$dict" ] && flags+=(-dict="$root/$dict")
   [ -n "${FUZZ_SEED:-}" ] && flags+=(-seed="$FUZZ_SEED")
   [ "$fork" -gt 0 ] && flags+=(-fork="$fork" -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1)
-  log=$out/logs/$kind.log
+  local log=$out/logs/$kind.log
   echo "fuzz: $kind for ${seconds}s (log: $log)"
-  status=0
+  local status=0 runs found
   # Run from a folder of its own: libFuzzer writes fuzz-N.log files there in fork mode.
   (cd "$work" && nice "$binary" "${flags[@]}" "$corpus" "${seeds[@]}") >"$log" 2>&1 || status=$?
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1 || true)
   [ -n "$runs" ] || runs=$(grep -o '^#[0-9]*' "$log" | tail -1 | tr -d '#' || true)
   found=$(newFindings "$crashes" | wc -l)
-  summary+=("$(printf '%-12s %12s executions  %3d findings  exit %d' "$kind" "${runs:-?}" "$found" "$status")")
+  printf '%-12s %12s executions  %3d findings  exit %d\n' "$kind" "${runs:-?}" "$found" "$status" \
+    >"$out/summary/$kind"
   if [ "$status" -ne 0 ] && [ "$found" -eq 0 ]; then
     echo "fuzz: $kind stopped with status $status and no input saved; the end of its log:" >&2
     tail -30 "$log" >&2
   fi
+}
+
+kinds=()
+while read -r kind binary; do
+  if [ $# -gt 0 ] && ! printf '%s\n' "$@" | grep -qx -- "$kind"; then
+    continue
+  fi
+  kinds+=("$kind")
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do
+    wait -n || true
+  done
+  fuzzOne "$kind" "$binary" &
 done <"$list"
+wait
+summary=()
+for kind in "${kinds[@]}"; do
+  summary+=("$(cat "$out/summary/$kind" 2>/dev/null || printf '%-12s %12s executions  %3s findings  exit %s' "$kind" '?' '?' 'lost')")
+done
 
 echo
 echo "fuzz: per target (corpora in $out/corpus):"

@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
-# Rebuilds the bundled sample project from the shared data (CGAL elephant, CC0, with the Tux Paint
-# side-view elephant drawing, GPL-2+, and the openclipart contour elephant, public domain).
+# Rebuilds the bundled sample projects from the shared data (CGAL elephant, CC0, with the Tux Paint
+# side-view elephant drawing, GPL-2+, and the openclipart contour elephant, public domain):
+#   elephant-plain.celform       the model and the two drawings, nothing else (tests, render baselines)
+#   elephant-highlights.celform  the plain one with the stylized highlight examples
+#   elephant.celform             the showcase the editor opens: two key viewpoints made from the
+#                                drawings and a turntable, so Play shows view-dependent geometry
 # Usage: scripts/make-sample.sh [path/to/celform]   (default: build/release/app/celform)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,9 +13,9 @@ data=../shared/data
 "$celform" new "$data/meshes/cgal_elephant.off" \
   --drawing "$data/drawings/tuxpaint_elephant.png" \
   --drawing "$data/drawings/openclipart_contour_elephant.svg" \
-  --out resources/samples/elephant.celform
-rm -f resources/samples/elephant.celform.bak
-echo "wrote resources/samples/elephant.celform"
+  --out resources/samples/elephant-plain.celform
+rm -f resources/samples/elephant-plain.celform.bak
+echo "wrote resources/samples/elephant-plain.celform"
 
 # The highlight sample: the paper's two worked examples (Anjyo & Hiramitsu 2003, Figures 5 and 6)
 # on the same elephant, keyed over 30 frames, tuned for the front view, which is the project's
@@ -19,7 +23,7 @@ echo "wrote resources/samples/elephant.celform"
 # (rotation, directional scaling, split); the body carries a crescent (a layer minus a hidden,
 # shifted copy).
 hl=resources/samples/elephant-highlights.celform
-cp resources/samples/elephant.celform "$hl"
+cp resources/samples/elephant-plain.celform "$hl"
 "$celform" patch "$hl" --add ear --sphere 0.14,-0.07,0.22,0.12
 "$celform" patch "$hl" --add body --sphere -0.06,-0.12,0.15,0.2
 "$celform" highlight "$hl" --add window --patch ear --smooth 8 --epsilon 0.03 \
@@ -34,3 +38,37 @@ cp resources/samples/elephant.celform "$hl"
 "$celform" set "$hl" --render-view 0,0,1
 rm -f "$hl.bak"
 echo "wrote $hl"
+
+# The showcase (issue 13): the elephant rears with its trunk raised, the drawings show it standing
+# with the trunk hanging. Key "side" is the Tux Paint drawing's view (from +z, head to the right),
+# key "far side" the contour drawing's (from -z, head to the left); in each, strokes of the falloff
+# brush on the trunk's tip (vertex 691) swing it forward and down, as the drawing has it. In
+# between (seen from the front, behind or above) the blend returns to the base model's raised
+# trunk, so the turntable shows the shape following the view.
+show=resources/samples/elephant.celform
+"$celform" new "$data/meshes/cgal_elephant.off" --out "$show"
+"$celform" key add "$show" --name side --from-base --view 0,0,1 --drawing "$data/drawings/tuxpaint_elephant.png"
+"$celform" key add "$show" --name "far side" --from-base --view 0,0,-1 \
+  --drawing "$data/drawings/openclipart_contour_elephant.svg"
+# Drags along the key camera's right and up: right is +x from +z, -x from -z.
+for key in side "far side"; do
+  sign=1
+  [ "$key" = "far side" ] && sign=-1
+  for stroke in "0.42 0.22 -0.04" "0.35 0.1 -0.2" "0.25 0.0 -0.12" "0.4 0.04 -0.16" "0.35 -0.02 -0.12"; do
+    read -r radius dx dy <<<"$stroke"
+    dx=$(awk -v s="$sign" -v d="$dx" 'BEGIN { printf "%g", s * d }')
+    "$celform" brush "$show" --key "$key" --vertex 691 --radius "$radius" --drag "$dx,$dy" >/dev/null
+  done
+done
+"$celform" camera "$show" --turntable 48 --elevation 10
+rm -f "$show.bak"
+echo "wrote $show"
+
+# The README's picture of it: eight frames of the turntable side by side (oiiotool comes with
+# Debian's openimageio-tools, which scripts/setup.sh installs).
+frames=$(mktemp -d)
+"$celform" render "$show" --frames 0-47:6 --size 240x240 --out "$frames/turntable_####.png" 2>/dev/null
+mkdir -p docs/images
+oiiotool "$frames"/turntable_*.png --mosaic 8x1 -o docs/images/turntable-strip.png
+rm -rf "$frames"
+echo "wrote docs/images/turntable-strip.png"

@@ -50,5 +50,7 @@ else
   npm install --prefix build/tools "gltf-validator@$validator_version" --no-audit --no-fund
 fi
 
+# Paths below the checkout hash as relative ones: checkouts share ccache's entries.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 cmake --preset release
 cmake --build --preset release

@@ -5,7 +5,12 @@
 # any did.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Paths below the checkout hash as relative ones, so two checkouts (a clone for CI beside a working
+# copy) share ccache's entries.
+export CCACHE_BASEDIR="$PWD"
+setup_start=$SECONDS
 scripts/setup.sh
+echo "== setup and release build: $((SECONDS - setup_start)) s"
 
 failed=()
 step() {

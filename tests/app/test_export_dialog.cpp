@@ -5,6 +5,7 @@
 #include "window_test_support.h"
 
 #include "export_dialog.h"
+#include "export_runner.h"
 #include "main_window.h"
 #include "shortcuts.h"
 

@@ -39,7 +39,8 @@ Shot& shot()
     // The main view's size in the editor's default 1400x900 window.
     s.viewport->resize(830, 710);
     s.viewport->show();
-    s.document.makeTurntable(model::Turntable{}, 830.0 / 710.0);
+    if (s.document.data().look.cameraPath.empty())
+        s.document.makeTurntable(model::Turntable{}, 830.0 / 710.0);
     s.viewport->setPreview(true);
     for (int i = 0; i < 20 && s.viewport->renderCount() == 0; ++i)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 50);

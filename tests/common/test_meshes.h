@@ -13,6 +13,18 @@
 
 namespace celform::test {
 
+/// A unit octahedron around the origin (vertices ±x, ±y, ±z, faces counter-clockwise seen from
+/// outside): its centroid is 0, so view directions are eye directions.
+inline std::shared_ptr<algo::TriMesh> octahedron()
+{
+    auto m = std::make_shared<algo::TriMesh>();
+    m->vertices.resize(6, 3);
+    m->vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
+    m->faces.resize(8, 3);
+    m->faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
+    return m;
+}
+
 /// The mesh with every triangle split in four at its edges' midpoints (corner triangles first, the
 /// middle one last); onSphere puts the new vertices on the unit sphere (for icosphere).
 inline std::shared_ptr<algo::TriMesh> subdivided(const algo::TriMesh& mesh, bool onSphere = false)

@@ -2,6 +2,7 @@
 // base (paper 1, section 4.1) under the key offsets, the one per-frame evaluation, and the
 // project file's format 2. Every expected value is computed by hand in the test.
 #include "test_support.h"
+#include "test_meshes.h"
 
 #include "celform/algorithms/base_animation.h"
 #include "celform/model/document.h"
@@ -18,18 +19,9 @@
 using namespace celform;
 using namespace celform::model;
 
-namespace {
+using celform::test::octahedron;
 
-/// A unit octahedron around the origin: centroid 0, so view directions are eye directions.
-std::shared_ptr<algo::TriMesh> octahedron()
-{
-    auto m = std::make_shared<algo::TriMesh>();
-    m->vertices.resize(6, 3);
-    m->vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
-    m->faces.resize(8, 3);
-    m->faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
-    return m;
-}
+namespace {
 
 Camera cameraAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target = Eigen::Vector3d::Zero())
 {

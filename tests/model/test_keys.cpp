@@ -1,6 +1,7 @@
 // Key viewpoints in the document (paper 1, section 3): keys from cameras and drawings, brush
 // strokes as single undo steps, imported deformations, and the blended shape.
 #include "test_support.h"
+#include "test_meshes.h"
 
 #include "celform/algorithms/brush.h"
 #include "celform/model/document.h"
@@ -13,18 +14,9 @@
 using namespace celform;
 using namespace celform::model;
 
-namespace {
+using celform::test::octahedron;
 
-/// A unit octahedron around the origin: centroid 0, so view directions are eye directions.
-std::shared_ptr<algo::TriMesh> octahedron()
-{
-    auto m = std::make_shared<algo::TriMesh>();
-    m->vertices.resize(6, 3);
-    m->vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
-    m->faces.resize(8, 3);
-    m->faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
-    return m;
-}
+namespace {
 
 Camera cameraAt(const Eigen::Vector3d& eye)
 {

@@ -6,6 +6,7 @@
 #include "celform/views/frame_timeline.h"
 #include "celform/views/highlight_panel.h"
 
+#include "test_meshes.h"
 #include "ui_test_support.h"
 
 #include <QApplication>
@@ -28,17 +29,9 @@ using celform::model::Look;
 using celform::views::FrameTimeline;
 using celform::views::HighlightPanel;
 
-namespace {
+using celform::test::octahedron;
 
-std::shared_ptr<TriMesh> octahedron()
-{
-    auto mesh = std::make_shared<TriMesh>();
-    mesh->vertices.resize(6, 3);
-    mesh->vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
-    mesh->faces.resize(8, 3);
-    mesh->faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
-    return mesh;
-}
+namespace {
 
 } // namespace
 

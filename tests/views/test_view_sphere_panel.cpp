@@ -3,6 +3,8 @@
 #include "celform/model/document.h"
 #include "celform/views/view_sphere_panel.h"
 
+#include "test_meshes.h"
+
 #include <QApplication>
 #include <QHelpEvent>
 #include <QSignalSpy>
@@ -25,17 +27,9 @@ using celform::model::ProjectData;
 using celform::model::UnspecifiedMode;
 using celform::views::ViewSpherePanel;
 
-namespace {
+using celform::test::octahedron;
 
-std::shared_ptr<TriMesh> octahedron()
-{
-    auto mesh = std::make_shared<TriMesh>();
-    mesh->vertices.resize(6, 3);
-    mesh->vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
-    mesh->faces.resize(8, 3);
-    mesh->faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
-    return mesh;
-}
+namespace {
 
 struct KeySpec {
     const char* name;

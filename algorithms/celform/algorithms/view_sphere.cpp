@@ -645,11 +645,21 @@ std::optional<ViewSphere> ViewSphere::build(
 ViewBlend ViewSphere::blend(const Eigen::Vector3d& viewDirection, double sharpness) const
 {
     ViewBlend result;
+    blend(viewDirection, sharpness, result);
+    return result;
+}
+
+void ViewSphere::blend(const Eigen::Vector3d& viewDirection, double sharpness, ViewBlend& result) const
+{
+    result.weights.clear();
+    result.facet = -1;
+    result.barycentric = Eigen::Vector3d::Zero();
+    result.falloff = 1.0;
     const Impl& s = *m;
     const double len = viewDirection.norm();
     if (!std::isfinite(len) || !(len > 0.0) || s.points.empty()) {
         result.falloff = 0.0;
-        return result;
+        return;
     }
     const Vec3 d = viewDirection / len;
     const double alpha = (std::isfinite(sharpness) && sharpness > 0.0) ? sharpness : 1.0;
@@ -684,7 +694,7 @@ ViewBlend ViewSphere::blend(const Eigen::Vector3d& viewDirection, double sharpne
         falloff = (s.mode == UnspecifiedRegions::Cosine2) ? c * c : c;
         result.falloff = falloff;
         if (falloff == 0.0)
-            return result;
+            return;
     }
     sharpen(pw, alpha);
     for (int k = 0; k < pw.count; ++k) {
@@ -694,7 +704,7 @@ ViewBlend ViewSphere::blend(const Eigen::Vector3d& viewDirection, double sharpne
     }
     std::sort(result.weights.begin(), result.weights.end(),
         [](const KeyWeight& a, const KeyWeight& b) { return a.key < b.key; });
-    return result;
+    return;
 }
 
 } // namespace celform::algo

@@ -57,6 +57,8 @@ public:
     /// (facet -1) the weights fall off from the nearest covered direction; view_sphere.cpp
     /// documents the scheme.
     [[nodiscard]] ViewBlend blend(const Eigen::Vector3d& viewDirection, double sharpness) const;
+    /// The same into out, reusing its storage (per-frame callers allocate nothing once warm).
+    void blend(const Eigen::Vector3d& viewDirection, double sharpness, ViewBlend& out) const;
 
     // --- for display (viewing-sphere panel, paper figure 4) ----------------------------------
     /// All hull points: the keys first (index = key index), then the dummies.

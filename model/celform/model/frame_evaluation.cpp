@@ -38,7 +38,7 @@ void FrameEvaluator::evaluateAt(const ProjectData& data, int frame, const Eigen:
 {
     m_frame = frame;
     m_direction = direction;
-    m_blend = m_blender.weights(data, direction);
+    m_blender.weights(data, direction, m_blend);
     m_blender.shapeFor(data, m_blend, frame, *m_base, m_shape, &m_blendScratch);
 }
 

@@ -48,18 +48,26 @@ bool BlendEvaluator::update(const ProjectData& data, QString* error)
 
 BlendResult BlendEvaluator::weights(const ProjectData& data, const Eigen::Vector3d& viewDirection) const
 {
-    Q_UNUSED(data);
     BlendResult result;
-    if (!m_sphere)
-        return result;
-    result.raw = m_sphere->blend(viewDirection, data.blend.sharpness);
+    weights(data, viewDirection, result);
+    return result;
+}
+
+void BlendEvaluator::weights(const ProjectData& data, const Eigen::Vector3d& viewDirection, BlendResult& result) const
+{
+    result.shares.clear();
+    result.baseShare = 1.0;
+    if (!m_sphere) {
+        result.raw = algo::ViewBlend{};
+        return;
+    }
+    m_sphere->blend(viewDirection, data.blend.sharpness, result.raw);
     for (const auto& kw : result.raw.weights) {
         if (kw.weight <= 0.0)
             continue;
         result.shares.push_back({m_keyIds[std::size_t(kw.key)], kw.weight});
         result.baseShare -= kw.weight;
     }
-    return result;
 }
 
 void BlendEvaluator::shape(const ProjectData& data, const Eigen::Vector3d& viewDirection, int frame,

@@ -41,6 +41,8 @@ public:
 
     /// View direction convention (DESIGN.md): unit vector from the base centroid towards the eye.
     [[nodiscard]] BlendResult weights(const ProjectData& data, const Eigen::Vector3d& viewDirection) const;
+    /// The same into out, reusing its storage.
+    void weights(const ProjectData& data, const Eigen::Vector3d& viewDirection, BlendResult& out) const;
     /// The blended shape (#V by 3) for a view direction at a frame. Call update() first. base: the
     /// base model's vertices at that frame when the caller has them (ProjectData::basePositions);
     /// null evaluates them here.
