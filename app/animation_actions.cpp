@@ -10,6 +10,8 @@
 #include "celform/model/frame_evaluation.h"
 #include "celform/model/io_error.h"
 #include "celform/views/camera_path_overlay.h"
+#include "celform/views/depth_analysis_runner.h"
+#include "celform/views/depth_panel.h"
 #include "celform/views/playback.h"
 #include "celform/views/timeline_panel.h"
 #include "celform/views/viewport.h"
@@ -141,6 +143,11 @@ void installAnimationActions(MainWindow* window)
     dock->setToolTip(AnimationText::tr("The scene's frames: range, frame rate, playback and every kind of key"));
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
     views::Playback* playback = panel->playback();
+    // The depth analysis of every played frame would take the cores playback needs: it waits for
+    // the stop and then analyses the frame shown.
+    if (views::DepthPanel* depth = window->depthPanel())
+        QObject::connect(
+            playback, &views::Playback::playingChanged, depth->runner(), &views::DepthAnalysisRunner::setHeld);
     new views::CameraPathOverlay(observer, viewport);
 
     auto make = [window](const char* name, const QString& text, const QKeySequence& key, const QString& tip) {

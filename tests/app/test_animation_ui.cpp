@@ -11,6 +11,8 @@
 #include "celform/model/frame_evaluation.h"
 #include "celform/model/view_blend.h"
 #include "celform/views/camera_path_overlay.h"
+#include "celform/views/depth_analysis_runner.h"
+#include "celform/views/depth_panel.h"
 #include "celform/views/playback.h"
 #include "celform/views/timeline_panel.h"
 #include "celform/views/view_sphere_panel.h"
@@ -20,6 +22,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QToolButton>
@@ -182,6 +185,31 @@ private slots:
         window.action(QStringLiteral("actionPlayPause"))->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(!playback->isPlaying(), 5000);
         QCOMPARE(doc->currentFrame(), 3);
+    }
+
+    void depthAnalysisWaitsForPlaybackToStop()
+    {
+        // The Depth tab analyses the picture after every change; while the timeline plays it
+        // waits (its worker would take the cores playback needs), then analyses the frame shown.
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(showActive(window));
+        model::Document* doc = window.document();
+        views::Playback* playback = timeline(window)->playback();
+        doc->setSceneTime({24.0, 0, 11});
+        window.findChild<QDockWidget*>(QStringLiteral("depthDock"))->raise();
+        views::DepthAnalysisRunner* runner = window.depthPanel()->runner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isActive(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isCurrent() && !runner->isBusy(), 30000);
+        QSignalSpy analysed(runner, &views::DepthAnalysisRunner::analysed);
+        window.action(QStringLiteral("actionLoopPlayback"))->setChecked(false);
+        playback->play();
+        QVERIFY(runner->isHeld());
+        QTRY_VERIFY_WITH_TIMEOUT(!playback->isPlaying(), 10000);
+        QVERIFY(!runner->isHeld());
+        QCOMPARE(analysed.count(), 0); // twelve frames played, none analysed
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isCurrent(), 30000);
+        QCOMPARE(runner->result()->frame, 11);
+        QCOMPARE(analysed.count(), 1);
     }
 
     void looksThroughTheShotCameraAtThePlayhead()

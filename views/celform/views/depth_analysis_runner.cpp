@@ -112,10 +112,27 @@ bool DepthAnalysisRunner::isCurrent() const
     return m_result->camera == now && m_result->frame == m_document->data().currentFrame;
 }
 
+void DepthAnalysisRunner::setHeld(bool held)
+{
+    if (m_held == held)
+        return;
+    m_held = held;
+    if (!held && m_missed) {
+        m_missed = false;
+        requestUpdate();
+    }
+}
+
 void DepthAnalysisRunner::requestUpdate()
 {
-    if (m_active)
-        m_coalesce.start();
+    if (!m_active)
+        return;
+    if (m_held) {
+        m_missed = true;
+        m_coalesce.stop();
+        return;
+    }
+    m_coalesce.start();
 }
 
 void DepthAnalysisRunner::documentChanged(const model::ChangeSet&)

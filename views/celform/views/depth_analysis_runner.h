@@ -59,6 +59,10 @@ public:
     /// after every change of its camera, size, shape, the look or the playhead.
     void setActive(bool on);
     [[nodiscard]] bool isActive() const { return m_active; }
+    /// Held (while the timeline plays): changes are noted but not analysed, so playback keeps
+    /// the cores; released, the picture then on screen is analysed once.
+    void setHeld(bool held);
+    [[nodiscard]] bool isHeld() const { return m_held; }
     void setSettings(const model::AnalysisSettings& settings);
     [[nodiscard]] const model::AnalysisSettings& settings() const { return m_settings; }
     /// The longest side of the analysed picture (the viewport's size scaled down to it, 1024 by
@@ -92,6 +96,8 @@ private:
     model::Document* m_document;
     QPointer<Viewport> m_viewport;
     bool m_active = false;
+    bool m_held = false;
+    bool m_missed = false; ///< a change came while held
     bool m_busy = false;
     int m_maximumSide = 1024;
     model::AnalysisSettings m_settings;
