@@ -27,13 +27,13 @@ const std::array<float, 256>& decodeTable()
 
 } // namespace
 
-std::vector<float> viewDepthFromWindowDepth(const std::vector<float>& windowDepth, int width, int height,
-    double nearDistance, double farDistance, bool orthographic)
+void viewDepthFromWindowDepth(const std::vector<float>& windowDepth, int width, int height, double nearDistance,
+    double farDistance, bool orthographic, std::vector<float>& out)
 {
     const std::size_t pixels = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
-    std::vector<float> out(pixels, std::numeric_limits<float>::infinity());
+    out.assign(pixels, std::numeric_limits<float>::infinity());
     if (windowDepth.size() < pixels)
-        return out;
+        return;
     const double n = nearDistance, f = farDistance;
     for (int y = 0; y < height; ++y) {
         const float* row = windowDepth.data() + std::size_t(height - 1 - y) * std::size_t(width);
@@ -51,7 +51,6 @@ std::vector<float> viewDepthFromWindowDepth(const std::vector<float>& windowDept
             }
         }
     }
-    return out;
 }
 
 void LineOverlay::clear()

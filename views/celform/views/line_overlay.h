@@ -25,9 +25,10 @@ struct GlFrame {
 };
 
 /// GL window depth (in [0, 1], rows bottom-up as glReadPixels gives them) to view-axis distances
-/// (rows top-down), for a VTK camera with the given clipping range. 1.0 (cleared) is +infinity.
-std::vector<float> viewDepthFromWindowDepth(const std::vector<float>& windowDepth, int width, int height,
-    double nearDistance, double farDistance, bool orthographic);
+/// (rows top-down) in out, for a VTK camera with the given clipping range. 1.0 (cleared) is
+/// +infinity. out keeps its storage: a viewport reads every frame into the same buffer.
+void viewDepthFromWindowDepth(const std::vector<float>& windowDepth, int width, int height, double nearDistance,
+    double farDistance, bool orthographic, std::vector<float>& out);
 
 /// Strokes of the displayed shape, cached: the edge topology is the mesh's own (built once per
 /// mesh), the feature edges and chains are extracted again only when the shape's generation, the

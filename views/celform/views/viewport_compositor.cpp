@@ -76,8 +76,8 @@ void ViewportCompositor::renderVtkFrame(bool readColor, bool readDepth, GlFrame&
         vtkCamera* cam = m_scene.camera();
         double range[2];
         cam->GetClippingRange(range);
-        out.depth = viewDepthFromWindowDepth(
-            m_scene.capturedDepth(), w, h, range[0], range[1], cam->GetParallelProjection() != 0);
+        viewDepthFromWindowDepth(
+            m_scene.capturedDepth(), w, h, range[0], range[1], cam->GetParallelProjection() != 0, out.depth);
     }
     if (readColor && w > 0 && h > 0) {
         if (out.color.size() != QSize(w, h))
@@ -118,13 +118,18 @@ void ViewportCompositor::paintMono(const Frame& frame)
     const algo::RasterCamera centre = m_camera.rasterCamera(size[0], size[1]);
     const QRect box = lineCoverage(frame, centre, centre, glFrame.depth);
     if (!box.isEmpty()) {
-        QImage region(box.size(), QImage::Format_RGBA8888);
+        // The strokes' box of the frame, read into storage kept between frames (as large as the
+        // view once), rows flipped in place.
+        const std::size_t bytes = std::size_t(box.width()) * std::size_t(box.height()) * 4;
+        if (m_regionPixels.size() < bytes)
+            m_regionPixels.resize(std::size_t(std::max(1, centre.width)) * std::size_t(std::max(1, centre.height)) * 4);
+        QImage region(m_regionPixels.data(), box.width(), box.height(), box.width() * 4, QImage::Format_RGBA8888);
         QOpenGLFunctions* gl = m_widget->context()->functions();
         gl->glBindFramebuffer(GL_FRAMEBUFFER, m_widget->defaultFramebufferObject());
         gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
         gl->glReadPixels(box.x(), centre.height - 1 - box.bottom(), box.width(), box.height(), GL_RGBA,
-            GL_UNSIGNED_BYTE, region.bits());
-        region = region.mirrored();
+            GL_UNSIGNED_BYTE, m_regionPixels.data());
+        region.mirror(false, true);
         makeOpaque(region);
         blendLines(region, box.topLeft(), m_coverage, centre.width, frame.look->lineStyle.color);
         const qreal dpr = m_widget->devicePixelRatioF();

@@ -56,6 +56,7 @@ private:
     LineOverlay m_lines;
     GlFrame m_frames[2]; ///< kept between frames: their buffers are reused
     std::vector<float> m_coverage;
+    std::vector<uchar> m_regionPixels; ///< the lines' box read back, kept between frames
     double m_lineMilliseconds = 0.0;
 };
 
