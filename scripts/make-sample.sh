@@ -54,7 +54,7 @@ show=resources/samples/elephant.celform
 for key in side "far side"; do
   sign=1
   [ "$key" = "far side" ] && sign=-1
-  for stroke in "0.42 0.22 -0.04" "0.35 0.1 -0.2" "0.25 0.0 -0.12" "0.4 0.04 -0.16" "0.35 -0.02 -0.12"; do
+  for stroke in "0.45 0.22 -0.04" "0.42 0.12 -0.2" "0.42 0.04 -0.22" "0.4 0.0 -0.2" "0.38 -0.04 -0.12"; do
     read -r radius dx dy <<<"$stroke"
     dx=$(awk -v s="$sign" -v d="$dx" 'BEGIN { printf "%g", s * d }')
     "$celform" brush "$show" --key "$key" --vertex 691 --radius "$radius" --drag "$dx,$dy" >/dev/null
