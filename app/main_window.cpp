@@ -10,6 +10,7 @@
 #include "recovery.h"
 #include "review_window.h"
 
+#include "celform/model/animation_io.h"
 #include "celform/model/image_io.h"
 #include "celform/model/io_error.h"
 #include "celform/model/mesh_io.h"
@@ -399,6 +400,44 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
 {
     if (asNewProject && !maybeSave())
         return false;
+    // An animated glTF/GLB (skins, morph targets) or a "walk_####.obj" pattern: the base moves
+    // (paper 1, section 4.1), and the scene takes the animation's frames and rate.
+    if (model::opensAsAnimatedBase(path)) {
+        auto animated = runWithProgress<model::AnimatedImport>(this, tr("Reading %1…").arg(QFileInfo(path).fileName()),
+            [path] { return model::readAnimatedBase(path); });
+        if (!animated.value) {
+            if (!animated.error.isEmpty())
+                showError(animated.error);
+            return false;
+        }
+        const QString name = QFileInfo(path).fileName();
+        const int frames = std::max(1, animated.value->animation.frameCount);
+        const double fps = animated.value->fps;
+        if (asNewProject) {
+            model::ProjectData data = model::newAnimatedProject(std::move(*animated.value), name);
+            data.look.style = Preferences::load().newProjectStyle; // Edit > Preferences
+            m_document->reset(std::move(data));
+        } else {
+            model::AnimatedImport& a = *animated.value;
+            auto animation = a.animation.empty()
+                ? nullptr
+                : std::make_shared<const algo::BaseAnimation>(std::move(a.animation));
+            try {
+                m_document->setAnimatedBase(std::move(a.mesh), std::move(animation), a.fps, name);
+            } catch (const model::IoError& e) {
+                showError(e.message());
+                return false;
+            } catch (const model::EditRefused& e) {
+                showError(QStringLiteral("%1: %2").arg(name, e.message()));
+                return false;
+            }
+        }
+        statusBar()->showMessage(tr("Loaded %1: an animated base, %n frame(s) at %2 fps", nullptr, frames)
+                                     .arg(name)
+                                     .arg(fps),
+            8000);
+        return true;
+    }
     auto outcome = runWithProgress<model::MeshImport>(
         this, tr("Reading %1…").arg(QFileInfo(path).fileName()), [path] { return model::importMesh(path); });
     if (!outcome.value) {

@@ -5,6 +5,8 @@
 #   elephant-highlights.celform  the plain one with the stylized highlight examples
 #   elephant.celform             the showcase the editor opens: two key viewpoints made from the
 #                                drawings and a turntable, so Play shows view-dependent geometry
+#   elephant-trunk.glb           the elephant skinned, its trunk swinging: an animated character to
+#                                import (scripts/make-animated-sample.py)
 # Usage: scripts/make-sample.sh [path/to/celform]   (default: build/release/app/celform)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -72,3 +74,5 @@ mkdir -p docs/images
 oiiotool "$frames"/turntable_*.png --mosaic 8x1 -o docs/images/turntable-strip.png
 rm -rf "$frames"
 echo "wrote docs/images/turntable-strip.png"
+
+python3 scripts/make-animated-sample.py "$data/meshes/cgal_elephant.off" resources/samples/elephant-trunk.glb

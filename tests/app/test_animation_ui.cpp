@@ -37,17 +37,9 @@ using namespace celform;
 using views::TimelineMark;
 using views::TimelineMarkKind;
 
-namespace {
+using test::showActive;
 
-bool showActive(app::MainWindow& window)
-{
-    if (!test::showSample(window))
-        return false;
-    window.activateWindow();
-    QApplication::setActiveWindow(&window);
-    QApplication::processEvents();
-    return QApplication::activeWindow() == &window;
-}
+namespace {
 
 views::TimelinePanel* timeline(const app::MainWindow& window)
 {
@@ -185,6 +177,43 @@ private slots:
         window.action(QStringLiteral("actionPlayPause"))->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(!playback->isPlaying(), 5000);
         QCOMPARE(doc->currentFrame(), 3);
+    }
+
+    void newFromMeshOpensAnAnimatedCharacter()
+    {
+        // The bundled skinned glTF: a new project on it moves with the playhead, at its rate.
+        const QString glb = QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-trunk.glb");
+        {
+            app::MainWindow window(app::MainWindow::Mode::Batch);
+            window.resize(1400, 900);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QVERIFY(window.openFile(glb));
+            const model::ProjectData& data = window.document()->data();
+            QVERIFY(data.animated());
+            QCOMPARE(data.time.fps, 24.0);
+            QCOMPARE(data.time.firstFrame, 0);
+            QCOMPARE(data.time.lastFrame, 47);
+            views::Viewport* viewport = window.viewport();
+            test::waitForRender(viewport);
+            const algo::Positions atStart = viewport->displayedShape();
+            window.document()->setCurrentFrame(24);
+            test::waitForRender(viewport);
+            QVERIFY2((viewport->displayedShape() - atStart).cwiseAbs().maxCoeff() > 0.05f,
+                "the trunk should have swung by frame 24");
+        }
+        // On an open project with the same vertex order: the base is replaced in one undo step and
+        // the drawings stay.
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(showActive(window));
+        model::Document* doc = window.document();
+        QVERIFY(!doc->data().animated());
+        const std::size_t drawings = doc->data().drawings.size();
+        QVERIFY(window.openFile(glb));
+        QVERIFY(doc->data().animated());
+        QCOMPARE(doc->data().drawings.size(), drawings);
+        doc->undoStack()->undo();
+        QVERIFY(!doc->data().animated());
     }
 
     void depthAnalysisWaitsForPlaybackToStop()

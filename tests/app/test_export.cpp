@@ -369,6 +369,89 @@ private slots:
         QVERIFY(!r.err.contains('\n') || r.err.trimmed().count('\n') == 0);
     }
 
+    void animatedCharacterFromStartToFinish()
+    {
+        // The story on the bundled animated character (a skinned glTF): import it, key two
+        // views at several frames, set a turntable, render the range in one process and on two
+        // "nodes", export glTF (validated) and PC2 (equal to eval at every frame).
+        const QString glb = QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-trunk.glb");
+        const QString p = m_dir.filePath(QStringLiteral("story.celform"));
+        auto run = [](const QStringList& args) {
+            const Run r = runCelform(args);
+            if (r.exitCode != 0)
+                qWarning() << args << r.err;
+            return r;
+        };
+        QCOMPARE(run({"new", glb, "--out", p}).exitCode, 0);
+        const QJsonObject info = QJsonDocument::fromJson(run({"info", p, "--json"}).out.toUtf8()).object();
+        QCOMPARE(info.value("fps").toDouble(), 24.0);
+        QCOMPARE(info.value("frame_range").toArray(), (QJsonArray{0, 47}));
+        QCOMPARE(info.value("base_animation").toObject().value("joints").toInt(), 2);
+        QCOMPARE(info.value("base_animation").toObject().value("frame_count").toInt(), 48);
+        QCOMPARE(run({"key", "add", p, "--name", "side", "--from-base", "--view", "0,0,1"}).exitCode, 0);
+        QCOMPARE(run({"key", "add", p, "--name", "far side", "--from-base", "--view", "0,0,-1"}).exitCode, 0);
+        for (const QStringList& stroke : {QStringList{"side", "0", "--drag", "0.15,-0.1"},
+                 QStringList{"side", "24", "--drag", "-0.1,0.05"}, QStringList{"far side", "12", "--push", "0.1"},
+                 QStringList{"far side", "36", "--drag", "0.05,-0.15"}})
+            QCOMPARE(run(QStringList{"brush", p, "--key", stroke[0], "--vertex", "691", "--radius", "0.4", "--frame",
+                             stroke[1], stroke[2], stroke[3]})
+                         .exitCode,
+                0);
+        QCOMPARE(run({"camera", p, "--turntable", "48"}).exitCode, 0);
+
+        // One process, then two nodes taking alternate frames of the stride, into one folder each.
+        QDir(m_dir.path()).mkpath(QStringLiteral("one"));
+        QDir(m_dir.path()).mkpath(QStringLiteral("two"));
+        const QStringList size{"--size", "64x48"};
+        QCOMPARE(run(QStringList{"render", p, "--frames", "0-47:6", "--out", m_dir.filePath("one/f_####.png")} + size)
+                     .exitCode,
+            0);
+        QCOMPARE(run(QStringList{"render", p, "--frames", "0-47:12", "--out", m_dir.filePath("two/f_####.png")} + size)
+                     .exitCode,
+            0);
+        QCOMPARE(run(QStringList{"render", p, "--frames", "6-47:12", "--out", m_dir.filePath("two/f_####.png")} + size)
+                     .exitCode,
+            0);
+        QByteArray first, middle;
+        for (int f = 0; f < 48; f += 6) {
+            QFile a(m_dir.filePath(QStringLiteral("one/f_%1.png").arg(f, 4, 10, QLatin1Char('0'))));
+            QFile b(m_dir.filePath(QStringLiteral("two/f_%1.png").arg(f, 4, 10, QLatin1Char('0'))));
+            QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+            const QByteArray bytes = a.readAll();
+            QVERIFY2(bytes == b.readAll(), qPrintable(QStringLiteral("frame %1 differs between the runs").arg(f)));
+            if (f == 0)
+                first = bytes;
+            if (f == 24)
+                middle = bytes;
+        }
+        QVERIFY2(first != middle, "the turntable should show the model from another side at frame 24");
+
+        const QString gltf = m_dir.filePath(QStringLiteral("story.glb"));
+        QCOMPARE(run({"export", p, "--format", "glb", "--out", gltf}).exitCode, 0);
+        validate(gltf);
+
+        const QString cache = m_dir.filePath(QStringLiteral("story.pc2"));
+        QCOMPARE(run({"export", p, "--format", "pc2", "--out", cache}).exitCode, 0);
+        const Pc2 pc2 = readPc2(cache);
+        QCOMPARE(pc2.samples, 48);
+        const int n = pc2.points;
+        QCOMPARE(n, 2775);
+        for (int f = 0; f < 48; ++f) {
+            const QString obj = m_dir.filePath(QStringLiteral("story_%1.obj").arg(f));
+            QCOMPARE(run({"eval", p, "--frame", QString::number(f), "--out", obj}).exitCode, 0);
+            const algo::TriMesh evaluated = model::importMesh(obj, model::ImportIsolation::ThisProcess).mesh;
+            QCOMPARE(int(evaluated.vertexCount()), n);
+            double worst = 0.0;
+            for (int v = 0; v < n; ++v)
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst,
+                        double(std::abs(pc2.positions[(std::size_t(f) * std::size_t(n) + std::size_t(v)) * 3
+                                            + std::size_t(c)]
+                            - evaluated.vertices(v, c))));
+            QVERIFY2(worst <= 1e-6, qPrintable(QStringLiteral("frame %1 differs by %2").arg(f).arg(worst)));
+        }
+    }
+
     void missingProject()
     {
         const Run r = runCelform(

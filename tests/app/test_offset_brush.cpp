@@ -18,17 +18,9 @@
 using namespace celform;
 using views::Viewport;
 
-namespace {
+using test::showActive;
 
-bool showActive(app::MainWindow& window)
-{
-    if (!test::showSample(window))
-        return false;
-    window.activateWindow();
-    QApplication::setActiveWindow(&window);
-    QApplication::processEvents();
-    return QApplication::activeWindow() == &window;
-}
+namespace {
 
 /// The largest base-layer offset among the vertices within radius of a point.
 float largestNear(const model::ProjectData& data, const Eigen::Vector3d& point, double radius)

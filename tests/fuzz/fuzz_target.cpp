@@ -1,5 +1,6 @@
-// A libFuzzer target for one kind of input (CELFORM_FUZZ_KIND, one executable per kind: see
-// tests/fuzz/CMakeLists.txt). A finding is a crash or sanitizer report, a hang or huge allocation
+// The libFuzzer target for every kind of input: the name it runs under picks the kind (fuzz_ply,
+// fuzz_cli_options, ... are links to it: tests/fuzz/CMakeLists.txt), or CELFORM_FUZZ_KIND names
+// it. A finding is a crash or sanitizer report, a hang or huge allocation
 // (libFuzzer's -timeout and -rss_limit_mb), an exception other than the loader's refusal, or an
 // accepted input that breaks a promise the loader makes (fuzz_inputs.cpp).
 //
@@ -16,10 +17,21 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace {
 
-const QString kKind = QStringLiteral(CELFORM_FUZZ_KIND);
+QString g_kind; // set once in LLVMFuzzerInitialize
+
+/// The kind from the program's name: "fuzz_animated_gltf" is "animated-gltf".
+QString kindFromName(const char* program)
+{
+    const char* slash = std::strrchr(program, '/');
+    QString name = QString::fromLocal8Bit(slash ? slash + 1 : program);
+    if (!name.startsWith(QLatin1String("fuzz_")))
+        return {};
+    return name.mid(5).replace(QLatin1Char('_'), QLatin1Char('-'));
+}
 
 void quietMessages(QtMsgType type, const QMessageLogContext&, const QString& message)
 {
@@ -29,8 +41,17 @@ void quietMessages(QtMsgType type, const QMessageLogContext&, const QString& mes
 
 } // namespace
 
-extern "C" int LLVMFuzzerInitialize(int*, char***)
+extern "C" int LLVMFuzzerInitialize(int* argc0, char*** argv0)
 {
+    g_kind = qEnvironmentVariable("CELFORM_FUZZ_KIND");
+    if (g_kind.isEmpty() && argc0 && *argc0 > 0)
+        g_kind = kindFromName((*argv0)[0]);
+    if (!celform::fuzz::kinds().contains(g_kind)) {
+        std::fprintf(stderr,
+            "celform fuzz: no kind of input \"%s\": run as fuzz_KIND or set CELFORM_FUZZ_KIND to one of %s\n",
+            qPrintable(g_kind), qPrintable(celform::fuzz::kinds().join(QStringLiteral(", "))));
+        std::exit(2);
+    }
     qInstallMessageHandler(quietMessages);
     // SVG text needs fonts and fonts need a QGuiApplication; the offscreen platform needs no
     // display. It lives until the process ends (reachable, so not a leak) and never sees
@@ -56,16 +77,16 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     const QByteArray raw = QByteArray::fromRawData(reinterpret_cast<const char*>(data), qsizetype(size));
-    const QByteArray input = kKind == QLatin1String("project") ? celform::fuzz::fixProjectChecksums(raw) : raw;
+    const QByteArray input = g_kind == QLatin1String("project") ? celform::fuzz::fixProjectChecksums(raw) : raw;
     if (const QByteArray save = qgetenv("CELFORM_FUZZ_SAVE"); !save.isEmpty()) {
         QFile file(QFile::decodeName(save));
         if (file.open(QIODevice::WriteOnly | QIODevice::Truncate))
             file.write(input);
     }
-    const celform::fuzz::Outcome outcome = celform::fuzz::feed(kKind, input);
+    const celform::fuzz::Outcome outcome = celform::fuzz::feed(g_kind, input);
     if (!outcome.broken.isEmpty()) {
         std::fprintf(stderr, "celform fuzz: the %s loader accepted an input that breaks its promise: %s\n",
-            qPrintable(kKind), qPrintable(outcome.broken));
+            qPrintable(g_kind), qPrintable(outcome.broken));
         std::abort();
     }
     return 0;

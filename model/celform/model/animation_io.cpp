@@ -54,4 +54,21 @@ bool isAnimatedBaseFile(const QString& path)
     }
 }
 
+bool opensAsAnimatedBase(const QString& path)
+{
+    return path.contains(QLatin1Char('#')) || (isGltfSuffix(path) && isAnimatedBaseFile(path));
+}
+
+ProjectData newAnimatedProject(AnimatedImport animated, const QString& meshName)
+{
+    ProjectData data = newProject(std::move(animated.mesh), meshName);
+    if (!animated.animation.empty()) {
+        data.time.fps = animated.fps;
+        data.time.firstFrame = animated.animation.firstFrame;
+        data.time.lastFrame = animated.animation.lastFrame();
+        data.baseAnimation = std::make_shared<const algo::BaseAnimation>(std::move(animated.animation));
+    }
+    return data;
+}
+
 } // namespace celform::model

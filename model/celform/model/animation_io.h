@@ -5,6 +5,7 @@
 
 #include "celform/algorithms/base_animation.h"
 #include "celform/algorithms/tri_mesh.h"
+#include "celform/model/project_data.h"
 
 #include <QString>
 
@@ -44,5 +45,12 @@ AnimatedImport readAnimatedBase(const QString& path, double fps = 24.0);
 /// at least one file, or a numbered OBJ/PLY/OFF file with at least one numbered sibling. Never
 /// throws; false for anything unreadable.
 bool isAnimatedBaseFile(const QString& path);
+/// Whether a base model file is opened as an animated base without being asked: a glTF/GLB file
+/// with an animation, skins or morph targets, or a sequence pattern ("walk_####.obj"). A numbered
+/// file with numbered siblings is a sequence only when the user says so (celform new --sequence).
+bool opensAsAnimatedBase(const QString& path);
+/// A new project on an import: newProject() on its rest mesh, plus its animation (when it has one)
+/// as the animated base, the scene's fps and frame range taken from it.
+ProjectData newAnimatedProject(AnimatedImport animated, const QString& meshName);
 
 } // namespace celform::model

@@ -171,18 +171,8 @@ void Document::saveCopy(const QString& path) const
 
 QStringList Document::newFromMesh(const QString& meshPath, double fps, bool sequence)
 {
-    const QString suffix = QFileInfo(meshPath).suffix().toLower();
-    const bool gltf = suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
-    if (sequence || meshPath.contains(QLatin1Char('#')) || (gltf && isAnimatedBaseFile(meshPath))) {
-        AnimatedImport animated = readAnimatedBase(meshPath, fps);
-        ProjectData data = newProject(std::move(animated.mesh), QFileInfo(meshPath).fileName());
-        if (!animated.animation.empty()) {
-            data.time.fps = animated.fps;
-            data.time.firstFrame = animated.animation.firstFrame;
-            data.time.lastFrame = animated.animation.lastFrame();
-            data.baseAnimation = std::make_shared<const algo::BaseAnimation>(std::move(animated.animation));
-        }
-        reset(std::move(data));
+    if (sequence || opensAsAnimatedBase(meshPath)) {
+        reset(newAnimatedProject(readAnimatedBase(meshPath, fps), QFileInfo(meshPath).fileName()));
         return {};
     }
     MeshImport imported = importMesh(meshPath);

@@ -41,6 +41,11 @@ bool DisplayedShape::noteChange(const model::ChangeSet& change)
     }
     switch (m_source) {
     case Source::Base:
+        // An animated base moves with the playhead (paper 1, section 4.1); a still one does not.
+        if (m_animated && change.has(Part::Playhead)) {
+            invalidate();
+            return true;
+        }
         return false;
     case Source::Key:
         if (change.has(Part::Playhead) || change.has(Part::Blend)) {
@@ -75,6 +80,18 @@ bool DisplayedShape::noteChange(const model::ChangeSet& change)
     return false;
 }
 
+void DisplayedShape::showBase(const model::ProjectData& data, int frame)
+{
+    const algo::TriMesh& mesh = *data.baseMesh;
+    if (data.animated()) {
+        m_shape.positions = data.basePositions(frame, m_baseScratch);
+        m_normals = algo::vertexNormals(m_shape.positions, mesh.faces);
+    } else {
+        m_shape.positions = mesh.vertices;
+        m_normals = mesh.normals();
+    }
+}
+
 bool DisplayedShape::refresh(model::Document& document, const Eigen::Vector3d& viewDirection)
 {
     m_changed.clear();
@@ -90,6 +107,7 @@ bool DisplayedShape::refresh(model::Document& document, const Eigen::Vector3d& v
         return true;
     }
     const algo::TriMesh& mesh = *data.baseMesh;
+    m_animated = data.animated();
     const model::KeyViewpoint* key = m_source == Source::Key ? data.key(m_key) : nullptr;
     const int frame = document.currentFrame();
     if (!m_stale && key && m_shape.positions.rows() == mesh.vertexCount()) {
@@ -104,8 +122,7 @@ bool DisplayedShape::refresh(model::Document& document, const Eigen::Vector3d& v
         return true;
     }
     if (m_source == Source::Blend && data.keys.empty()) {
-        m_shape.positions = mesh.vertices;
-        m_normals = mesh.normals();
+        showBase(data, frame);
     } else if (m_source == Source::Blend) {
         document.blender().shape(data, viewDirection, frame, m_shape.positions);
         m_normals = algo::vertexNormals(m_shape.positions, mesh.faces);
@@ -113,9 +130,8 @@ bool DisplayedShape::refresh(model::Document& document, const Eigen::Vector3d& v
         m_shape.positions = data.keyShape(*key, frame);
         m_normals = algo::vertexNormals(m_shape.positions, mesh.faces);
     } else {
-        // The base model, or a key that no longer exists.
-        m_shape.positions = mesh.vertices;
-        m_normals = mesh.normals();
+        // The base model (at the frame), or a key that no longer exists.
+        showBase(data, frame);
     }
     m_shape.touch();
     m_stale = false;

@@ -13,6 +13,7 @@
 
 namespace celform::model {
 class Document;
+struct ProjectData;
 }
 
 namespace celform::views {
@@ -49,7 +50,11 @@ public:
     [[nodiscard]] const std::vector<std::uint32_t>& changedVertices() const { return m_changed; }
 
 private:
+    /// The base model's vertices at the frame (the animated base there), normals with them.
+    void showBase(const model::ProjectData& data, int frame);
+
     Source m_source = Source::Base;
+    bool m_animated = false; ///< the base moves over time: the playhead moves the base model too
     model::ObjectId m_key = 0;
     bool m_stale = true;
     std::vector<std::uint32_t> m_dirtyVertices; ///< rows to recompute when not m_stale
@@ -57,6 +62,7 @@ private:
     std::vector<std::int32_t> m_scratch;
     algo::Shape m_shape;
     algo::Positions m_normals;
+    algo::Positions m_baseScratch; ///< the animated base at the frame
 };
 
 } // namespace celform::views
