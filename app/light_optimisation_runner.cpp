@@ -31,9 +31,9 @@ void LightOptimisationRunner::start()
     m_done = 0;
     const int iterations = m_job.request.optimiser.iterations;
     // Two analyses around the iterations: they count as an iteration each.
-    m_progress = makeProgressDialog(m_parent, QStringLiteral("lightOptimisationProgress"),
-        tr("Optimise Light for Stereo"), tr("Analysing the picture (%1 × %2)…").arg(m_job.width).arg(m_job.height),
-        iterations + 2, 300);
+    m_progress
+        = makeProgressDialog(m_parent, QStringLiteral("lightOptimisationProgress"), tr("Optimise Light for Stereo"),
+            tr("Analysing the picture (%1 × %2)…").arg(m_job.width).arg(m_job.height), iterations + 2, 300);
     connect(m_progress, &QProgressDialog::canceled, this, &LightOptimisationRunner::cancel);
 
     m_future = QtConcurrent::run([this] {

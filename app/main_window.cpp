@@ -403,8 +403,8 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
     // An animated glTF/GLB (skins, morph targets) or a "walk_####.obj" pattern: the base moves
     // (paper 1, section 4.1), and the scene takes the animation's frames and rate.
     if (model::opensAsAnimatedBase(path)) {
-        auto animated = runWithProgress<model::AnimatedImport>(this, tr("Reading %1…").arg(QFileInfo(path).fileName()),
-            [path] { return model::readAnimatedBase(path); });
+        auto animated = runWithProgress<model::AnimatedImport>(
+            this, tr("Reading %1…").arg(QFileInfo(path).fileName()), [path] { return model::readAnimatedBase(path); });
         if (!animated.value) {
             if (!animated.error.isEmpty())
                 showError(animated.error);
@@ -419,9 +419,8 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
             m_document->reset(std::move(data));
         } else {
             model::AnimatedImport& a = *animated.value;
-            auto animation = a.animation.empty()
-                ? nullptr
-                : std::make_shared<const algo::BaseAnimation>(std::move(a.animation));
+            auto animation
+                = a.animation.empty() ? nullptr : std::make_shared<const algo::BaseAnimation>(std::move(a.animation));
             try {
                 m_document->setAnimatedBase(std::move(a.mesh), std::move(animation), a.fps, name);
             } catch (const model::IoError& e) {
@@ -432,10 +431,8 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
                 return false;
             }
         }
-        statusBar()->showMessage(tr("Loaded %1: an animated base, %n frame(s) at %2 fps", nullptr, frames)
-                                     .arg(name)
-                                     .arg(fps),
-            8000);
+        statusBar()->showMessage(
+            tr("Loaded %1: an animated base, %n frame(s) at %2 fps", nullptr, frames).arg(name).arg(fps), 8000);
         return true;
     }
     auto outcome = runWithProgress<model::MeshImport>(

@@ -1380,10 +1380,6 @@
         <translation>%1 をエクスポートしています…</translation>
     </message>
     <message>
-        <source>Cancel</source>
-        <translation>キャンセル</translation>
-    </message>
-    <message>
         <source>%1: not enough memory to export</source>
         <translation>%1: エクスポートするメモリが足りません</translation>
     </message>
@@ -1439,10 +1435,6 @@
     <message>
         <source>Analysing the picture (%1 × %2)…</source>
         <translation>画像を解析中（%1 × %2）…</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>キャンセル</translation>
     </message>
     <message>
         <source>Not enough memory to analyse %1 × %2 pixels</source>
@@ -2103,6 +2095,12 @@ Recover it now?</source>
         <source>Export the animation seen through the camera path as glTF, a PC2 point cache or OBJ files, as celform export does</source>
         <translation>カメラパスから見たアニメーションを glTF、PC2 ポイントキャッシュ、または OBJ ファイルとしてエクスポートします（celform export と同じ処理）</translation>
     </message>
+    <message numerus="yes">
+        <source>Loaded %1: an animated base, %n frame(s) at %2 fps</source>
+        <translation>
+            <numerusform>%1 を読み込みました: アニメーションするベースモデル、%n フレーム、%2 fps</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>celform::app::OffsetActions</name>
@@ -2456,6 +2454,13 @@ Recover it now?</source>
     <message>
         <source>Give each key to one command first</source>
         <translation>先に各キーを 1 つのコマンドだけに割り当ててください</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::ProgressDialog</name>
+    <message>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
     </message>
 </context>
 <context>
@@ -2818,10 +2823,6 @@ Recover it now?</source>
     <message>
         <source>Render Image</source>
         <translation>画像をレンダー</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>キャンセル</translation>
     </message>
     <message>
         <source>Rendering frame %1 (1 of %2)…</source>

@@ -390,9 +390,9 @@ private slots:
         QCOMPARE(info.value("base_animation").toObject().value("frame_count").toInt(), 48);
         QCOMPARE(run({"key", "add", p, "--name", "side", "--from-base", "--view", "0,0,1"}).exitCode, 0);
         QCOMPARE(run({"key", "add", p, "--name", "far side", "--from-base", "--view", "0,0,-1"}).exitCode, 0);
-        for (const QStringList& stroke : {QStringList{"side", "0", "--drag", "0.15,-0.1"},
-                 QStringList{"side", "24", "--drag", "-0.1,0.05"}, QStringList{"far side", "12", "--push", "0.1"},
-                 QStringList{"far side", "36", "--drag", "0.05,-0.15"}})
+        for (const QStringList& stroke :
+            {QStringList{"side", "0", "--drag", "0.15,-0.1"}, QStringList{"side", "24", "--drag", "-0.1,0.05"},
+                QStringList{"far side", "12", "--push", "0.1"}, QStringList{"far side", "36", "--drag", "0.05,-0.15"}})
             QCOMPARE(run(QStringList{"brush", p, "--key", stroke[0], "--vertex", "691", "--radius", "0.4", "--frame",
                              stroke[1], stroke[2], stroke[3]})
                          .exitCode,
@@ -445,8 +445,8 @@ private slots:
             for (int v = 0; v < n; ++v)
                 for (int c = 0; c < 3; ++c)
                     worst = std::max(worst,
-                        double(std::abs(pc2.positions[(std::size_t(f) * std::size_t(n) + std::size_t(v)) * 3
-                                            + std::size_t(c)]
+                        double(std::abs(
+                            pc2.positions[(std::size_t(f) * std::size_t(n) + std::size_t(v)) * 3 + std::size_t(c)]
                             - evaluated.vertices(v, c))));
             QVERIFY2(worst <= 1e-6, qPrintable(QStringLiteral("frame %1 differs by %2").arg(f).arg(worst)));
         }

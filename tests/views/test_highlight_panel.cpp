@@ -31,10 +31,6 @@ using celform::views::HighlightPanel;
 
 using celform::test::octahedron;
 
-namespace {
-
-} // namespace
-
 class TestHighlightPanel : public QObject {
     Q_OBJECT
 

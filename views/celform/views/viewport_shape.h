@@ -14,7 +14,7 @@
 namespace celform::model {
 class Document;
 struct ProjectData;
-}
+} // namespace celform::model
 
 namespace celform::views {
 
