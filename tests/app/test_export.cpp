@@ -118,12 +118,12 @@ double gltfAgainstCache(const tinygltf::Model& m, const Pc2& pc2)
     return worst;
 }
 
-/// Where the validator's package is: the environment's CELFORM_GLTF_VALIDATOR_PREFIX, else the
-/// build's (scripts/setup.sh installs it there).
+/// Where the validator's package is: the environment's CELFORM_GLTF_VALIDATOR_PREFIX, else
+/// build/tools in the checkout (scripts/setup.sh installs it there).
 QString validatorPrefix()
 {
     const QString env = qEnvironmentVariable("CELFORM_GLTF_VALIDATOR_PREFIX");
-    return env.isEmpty() ? QStringLiteral(CELFORM_GLTF_VALIDATOR_PREFIX) : env;
+    return env.isEmpty() ? QStringLiteral(CELFORM_SOURCE_DIR "/build/tools") : env;
 }
 
 } // namespace

@@ -550,9 +550,15 @@ void HighlightPanel::refresh()
             keyFrames.push_back(k.frame);
     m_timeline->setKeys(keyFrames);
 
-    QPixmap swatch(28, 16);
-    swatch.fill(toQColor(layer.color));
-    m_color->setIcon(QIcon(swatch));
+    // A new icon asks for a new layout of the dock: only when the colour changed (this runs on
+    // every played frame).
+    const QColor colour = toQColor(layer.color);
+    if (colour != m_swatchColour || m_color->icon().isNull()) {
+        m_swatchColour = colour;
+        QPixmap swatch(28, 16);
+        swatch.fill(colour);
+        m_color->setIcon(QIcon(swatch));
+    }
     for (auto [spin, value] :
         {std::pair{m_epsilon, double(layer.shape.epsilon)}, std::pair{m_cut, double(layer.offSpecularCut)}}) {
         const QSignalBlocker block(spin);

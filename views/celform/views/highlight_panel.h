@@ -7,6 +7,7 @@
 
 #include "celform/model/document.h"
 
+#include <QColor>
 #include <QWidget>
 
 #include <vector>
@@ -78,6 +79,7 @@ private:
     QPushButton* m_deleteKey;
     QGroupBox* m_parameters;
     QToolButton* m_color;
+    QColor m_swatchColour; ///< the colour m_color's icon shows
     QDoubleSpinBox* m_epsilon;
     QDoubleSpinBox* m_cut;
     QComboBox* m_patch;

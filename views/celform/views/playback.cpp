@@ -12,6 +12,7 @@ Playback::Playback(model::Document* document, QObject* parent)
     , m_document(document)
 {
     m_timer.setTimerType(Qt::PreciseTimer);
+    m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &Playback::tick);
     connect(m_document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
         if (!isPlaying())
@@ -21,8 +22,10 @@ Playback::Playback(model::Document* document, QObject* parent)
             return;
         }
         // A new rate, a new range or a scrub while playing: go on from where the playhead is.
-        if (change.has(model::Part::SceneTime) || (change.has(model::Part::Playhead) && !m_moving))
+        if (change.has(model::Part::SceneTime) || (change.has(model::Part::Playhead) && !m_moving)) {
             restartClock();
+            scheduleNext();
+        }
     });
 }
 
@@ -36,10 +39,20 @@ void Playback::setLooping(bool on)
 
 void Playback::restartClock()
 {
-    const model::SceneTime& time = m_document->data().time;
     m_originFrame = m_document->currentFrame();
     m_clock.start();
-    m_timer.setInterval(std::max(1, int(std::floor(1000.0 / time.fps))));
+}
+
+void Playback::scheduleNext()
+{
+    // Ticks land just after a frame begins, not at a fixed interval: an interval a little shorter
+    // than a frame (41 ms at 24 fps) drifts until ticks fall just before frame boundaries, where
+    // any paint that runs a few milliseconds late makes the next tick skip a frame. Landing after
+    // the boundary leaves the whole frame's time as slack.
+    const double fps = std::max(1e-3, m_document->data().time.fps);
+    const double elapsed = double(m_clock.nsecsElapsed()) * 1e-9 * fps; // in frames
+    const double toNext = (std::floor(elapsed) + 1.0 - elapsed) * 1000.0 / fps; // in ms
+    m_timer.start(int(std::ceil(toNext)) + 1);
 }
 
 void Playback::play()
@@ -58,7 +71,8 @@ void Playback::play()
     m_windowSteps = 0;
     m_windowClock.start();
     m_achievedFps = 0.0;
-    m_timer.start();
+    m_playing = true;
+    scheduleNext();
     emit playingChanged(true);
 }
 
@@ -66,6 +80,7 @@ void Playback::pause()
 {
     if (!isPlaying())
         return;
+    m_playing = false;
     m_timer.stop();
     m_achievedFps = 0.0;
     emit playingChanged(false);
@@ -113,6 +128,8 @@ void Playback::tick()
     }
     if (stop)
         pause();
+    else if (m_playing && !m_timer.isActive())
+        scheduleNext();
 }
 
 } // namespace celform::views

@@ -19,7 +19,7 @@ class Playback : public QObject {
 public:
     explicit Playback(model::Document* document, QObject* parent = nullptr);
 
-    [[nodiscard]] bool isPlaying() const { return m_timer.isActive(); }
+    [[nodiscard]] bool isPlaying() const { return m_playing; }
     /// Looping: after the last frame comes the first again. Otherwise playing stops at the last.
     void setLooping(bool on);
     [[nodiscard]] bool isLooping() const { return m_looping; }
@@ -43,9 +43,12 @@ signals:
 private:
     void tick();
     void restartClock();
+    /// Arms the timer for just after the next frame begins on the clock.
+    void scheduleNext();
 
     model::Document* m_document;
-    QTimer m_timer;
+    QTimer m_timer; ///< single shot, armed by scheduleNext()
+    bool m_playing = false;
     QElapsedTimer m_clock; ///< since m_originFrame
     int m_originFrame = 0;
     bool m_looping = true;

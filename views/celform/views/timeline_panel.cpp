@@ -163,12 +163,19 @@ void TimelinePanel::refreshTime()
     m_refreshing = true;
     const model::SceneTime& time = m_document->data().time;
     const QSignalBlocker b1(m_first), b2(m_last), b3(m_fps), b4(m_current);
+    // Only what differs: this runs on every played frame, and a spin box's setRange asks the
+    // window to lay out again (a new size hint), which repaints the whole dock.
     // Each end bounds the other, so the boxes never offer a range the document refuses.
-    m_first->setRange(-model::kMaxFrame, time.lastFrame);
-    m_last->setRange(time.firstFrame, model::kMaxFrame);
-    m_first->setValue(time.firstFrame);
-    m_last->setValue(time.lastFrame);
-    m_fps->setValue(time.fps);
+    if (m_first->maximum() != time.lastFrame)
+        m_first->setRange(-model::kMaxFrame, time.lastFrame);
+    if (m_last->minimum() != time.firstFrame)
+        m_last->setRange(time.firstFrame, model::kMaxFrame);
+    if (m_first->value() != time.firstFrame)
+        m_first->setValue(time.firstFrame);
+    if (m_last->value() != time.lastFrame)
+        m_last->setValue(time.lastFrame);
+    if (m_fps->value() != time.fps)
+        m_fps->setValue(time.fps);
     m_current->setValue(m_document->currentFrame());
     m_ruler->setRange(time.firstFrame, time.lastFrame);
     m_refreshing = false;

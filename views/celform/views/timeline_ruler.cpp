@@ -112,6 +112,9 @@ TimelineRuler::TimelineRuler(model::Document* document, QWidget* parent)
     , m_document(document)
 {
     setObjectName(QStringLiteral("timelineRuler"));
+    // paintEvent fills every pixel: the playhead's repaint on each played frame need not repaint
+    // the panel, the dock and the window beneath.
+    setAttribute(Qt::WA_OpaquePaintEvent);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     setFixedHeight(sizeHint().height());
     setMouseTracking(false);
@@ -123,6 +126,8 @@ TimelineRuler::TimelineRuler(model::Document* document, QWidget* parent)
 
 void TimelineRuler::setRange(int first, int last)
 {
+    if (first == m_first && std::max(first, last) == m_last)
+        return;
     m_first = first;
     m_last = std::max(first, last);
     update();

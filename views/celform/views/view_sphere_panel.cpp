@@ -66,19 +66,14 @@ QFont scaledFont(const QFont& base, double factor)
     return font;
 }
 
-/// Text with a halo in the background colour, so labels stay readable over hull edges.
-void drawHaloText(QPainter& painter, const QRectF& rect, const QString& text, const QColor& color, const QColor& halo)
+/// A one-pixel pen for the sphere's wireframe. Cosmetic pens take the raster engine's line
+/// rasteriser; a 1.0-wide geometric pen (dashed above all) goes through the path stroker, which
+/// made the hull the dearest part of a repaint on every played frame.
+QPen cosmeticPen(const QColor& color, Qt::PenStyle style)
 {
-    const QFontMetricsF fm(painter.font());
-    QPainterPath path;
-    path.addText(QPointF(rect.left(), rect.top() + fm.ascent()), painter.font(), text);
-    painter.save();
-    painter.setPen(QPen(halo, 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawPath(path);
-    painter.restore();
-    painter.setPen(color);
-    painter.drawText(rect, Qt::AlignLeft | Qt::AlignTop | Qt::TextSingleLine, text);
+    QPen pen(color, 1.0, style);
+    pen.setCosmetic(true);
+    return pen;
 }
 
 /// Moves r inside bounds (as far as it fits).
@@ -317,20 +312,12 @@ int ViewSpherePanel::pointAt(const QPointF& pos, bool keysOnly) const
 
 void ViewSpherePanel::paintEvent(QPaintEvent*)
 {
+    const Frame f = frame();
+    paintBackground(f);
     QPainter painter(this);
+    painter.drawPixmap(0, 0, m_background);
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setRenderHint(QPainter::TextAntialiasing);
-    painter.fillRect(rect(), palette().color(QPalette::Window));
-
-    const Frame f = frame();
-    const QColor base = palette().color(QPalette::Base);
-    // A soft radial shade reads as a sphere without competing with the wireframe.
-    QRadialGradient shade(f.centre - QPointF(0.35 * f.radius, 0.35 * f.radius), 1.45 * f.radius);
-    shade.setColorAt(0.0, base);
-    shade.setColorAt(1.0, base.darker(112));
-    painter.setPen(QPen(palette().color(QPalette::Mid), 1.2));
-    painter.setBrush(shade);
-    painter.drawEllipse(f.centre, f.radius, f.radius);
     paintGuides(painter, f);
 
     if (m_empty != EmptyState::None) {
@@ -349,6 +336,35 @@ void ViewSpherePanel::paintEvent(QPaintEvent*)
     paintReadout(painter);
 }
 
+void ViewSpherePanel::paintBackground(const Frame& f) const
+{
+    // Kept between paints: an antialiased disc with a radial gradient is the dearest thing the
+    // panel draws, and it changes only with the size, the font (the margin) and the palette.
+    const qreal ratio = devicePixelRatioF();
+    const QString key = QStringLiteral("%1x%2 %3 %4 %5")
+                            .arg(width())
+                            .arg(height())
+                            .arg(ratio)
+                            .arg(palette().cacheKey())
+                            .arg(f.radius);
+    if (key == m_backgroundKey && !m_background.isNull())
+        return;
+    m_backgroundKey = key;
+    m_background = QPixmap(size() * ratio);
+    m_background.setDevicePixelRatio(ratio);
+    m_background.fill(palette().color(QPalette::Window));
+    QPainter painter(&m_background);
+    painter.setRenderHint(QPainter::Antialiasing);
+    const QColor base = palette().color(QPalette::Base);
+    // A soft radial shade reads as a sphere without competing with the wireframe.
+    QRadialGradient shade(f.centre - QPointF(0.35 * f.radius, 0.35 * f.radius), 1.45 * f.radius);
+    shade.setColorAt(0.0, base);
+    shade.setColorAt(1.0, base.darker(112));
+    painter.setPen(QPen(palette().color(QPalette::Mid), 1.2));
+    painter.setBrush(shade);
+    painter.drawEllipse(f.centre, f.radius, f.radius);
+}
+
 void ViewSpherePanel::paintGuides(QPainter& painter, const Frame& f) const
 {
     // The equator (normal +Y) and the meridian through front and top (normal +X) orient the
@@ -365,7 +381,7 @@ void ViewSpherePanel::paintGuides(QPainter& painter, const Frame& f) const
         bool runFront = true;
         auto flush = [&] {
             if (run.size() > 1) {
-                painter.setPen(QPen(runFront ? line : backLine, 1.0, runFront ? Qt::SolidLine : Qt::DotLine));
+                painter.setPen(cosmeticPen(runFront ? line : backLine, runFront ? Qt::SolidLine : Qt::DotLine));
                 painter.drawPolyline(run);
             }
             run.clear();
@@ -412,7 +428,7 @@ void ViewSpherePanel::paintHull(QPainter& painter, const Frame& f, bool front) c
     }
     QColor color = palette().color(QPalette::Text);
     color.setAlphaF(front ? 0.62 : 0.28);
-    painter.setPen(QPen(color, front ? 1.1 : 1.0, front ? Qt::SolidLine : Qt::DashLine));
+    painter.setPen(cosmeticPen(color, front ? Qt::SolidLine : Qt::DashLine));
     painter.setBrush(Qt::NoBrush);
     for (const auto& [edge, facing] : edges) {
         if (facing != front)
@@ -499,7 +515,7 @@ void ViewSpherePanel::paintPoints(QPainter& painter, const Frame& f, bool front)
             label.moveLeft(anchor.x() + (std::abs(dir.x()) < 0.2 ? 2.0 : 0.0));
         else
             label.moveRight(anchor.x());
-        drawHaloText(painter, clampInto(label, bounds), name, active ? kActiveKey.darker(135) : text, base);
+        m_labels.draw(painter, clampInto(label, bounds), name, active ? kActiveKey.darker(135) : text, base);
         painter.restore();
     }
 }
@@ -518,7 +534,7 @@ void ViewSpherePanel::paintView(QPainter& painter, const Frame& f) const
     // The ray from the centre to the eye (paper 1, section 3.2.1), and where it meets the facet.
     QColor ray = text;
     ray.setAlphaF(front ? 0.55 : 0.3);
-    painter.setPen(QPen(ray, 1.0, front ? Qt::SolidLine : Qt::DashLine));
+    painter.setPen(cosmeticPen(ray, front ? Qt::SolidLine : Qt::DashLine));
     painter.drawLine(f.centre, s);
     if (!outside) {
         const auto& facet = m_facets[std::size_t(m_hitFacet)];
@@ -553,7 +569,7 @@ void ViewSpherePanel::paintView(QPainter& painter, const Frame& f) const
     else
         box.moveLeft(s.x() - 6.0);
     const QRectF bounds(2.0, 2.0, width() - 4.0, readoutRect().top() - 2.0);
-    drawHaloText(painter, clampInto(box, bounds), label, outside ? kFalloff.darker(150) : text, base);
+    m_labels.draw(painter, clampInto(box, bounds), label, outside ? kFalloff.darker(150) : text, base);
 }
 
 void ViewSpherePanel::paintAxes(QPainter& painter, const Frame& f) const

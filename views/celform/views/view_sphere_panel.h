@@ -4,9 +4,11 @@
 #pragma once
 
 #include "celform/model/document.h"
+#include "celform/views/halo_text.h"
 
 #include <Eigen/Core>
 
+#include <QPixmap>
 #include <QPointF>
 #include <QString>
 #include <QWidget>
@@ -88,6 +90,8 @@ private:
     [[nodiscard]] int pointAt(const QPointF& pos, bool keysOnly) const;
     [[nodiscard]] bool isActive(const SpherePoint& point) const;
 
+    /// Renders m_background (window colour and the shaded disc) when the size or palette changed.
+    void paintBackground(const Frame& f) const;
     void paintGuides(QPainter& painter, const Frame& f) const;
     void paintHull(QPainter& painter, const Frame& f, bool front) const;
     void paintHitFacet(QPainter& painter, const Frame& f) const;
@@ -114,6 +118,12 @@ private:
     double m_falloff = 1.0;
     double m_baseShare = 1.0;
     QString m_readout;
+
+    /// Key and view labels, drawn once and blitted (the panel repaints on every played frame).
+    mutable HaloTextCache m_labels;
+    /// The window colour and the shaded disc of the sphere, which only the size and palette change.
+    mutable QPixmap m_background;
+    mutable QString m_backgroundKey;
 
     int m_hoverPoint = -1;
     QPoint m_pressPos;

@@ -1,0 +1,32 @@
+// Labels with a halo in the background colour, so they stay readable over lines (the Viewing
+// Sphere's key names). Stroking a glyph outline is the dear part of such a label: QPainterPath
+// loads each glyph's outline from FreeType on every call. A panel that repaints on every played
+// frame keeps its labels here, drawn once per text, font, colours and pixel ratio, and blits them.
+#pragma once
+
+#include <QColor>
+#include <QFont>
+#include <QHash>
+#include <QImage>
+#include <QString>
+
+class QPainter;
+class QRectF;
+
+namespace celform::views {
+
+class HaloTextCache {
+public:
+    /// Draws text left-aligned at the top of rect (clipped to it, as QPainter::drawText does) in
+    /// color over a 3-pixel halo in halo, with the painter's font and opacity.
+    void draw(QPainter& painter, const QRectF& rect, const QString& text, const QColor& color, const QColor& halo);
+    void clear() { m_images.clear(); }
+    [[nodiscard]] qsizetype size() const { return m_images.size(); }
+
+private:
+    /// Past this many labels the cache starts again (a label with a changing number in it).
+    static constexpr qsizetype kMaxImages = 64;
+    QHash<QString, QImage> m_images;
+};
+
+} // namespace celform::views
