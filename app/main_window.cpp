@@ -418,11 +418,8 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
             data.look.style = Preferences::load().newProjectStyle; // Edit > Preferences
             m_document->reset(std::move(data));
         } else {
-            model::AnimatedImport& a = *animated.value;
-            auto animation
-                = a.animation.empty() ? nullptr : std::make_shared<const algo::BaseAnimation>(std::move(a.animation));
             try {
-                m_document->setAnimatedBase(std::move(a.mesh), std::move(animation), a.fps, name);
+                m_document->setAnimatedBase(std::move(*animated.value), name);
             } catch (const model::IoError& e) {
                 showError(e.message());
                 return false;

@@ -254,11 +254,7 @@ QStringList Document::importBaseMesh(const QString& path)
 
 void Document::importAnimatedBase(const QString& path, double fps)
 {
-    AnimatedImport animated = readAnimatedBase(path, fps);
-    auto animation = animated.animation.empty()
-        ? nullptr
-        : std::make_shared<const algo::BaseAnimation>(std::move(animated.animation));
-    setAnimatedBase(std::move(animated.mesh), std::move(animation), animated.fps, QFileInfo(path).fileName());
+    setAnimatedBase(readAnimatedBase(path, fps), QFileInfo(path).fileName());
 }
 
 // --- drawings ------------------------------------------------------------------------------------

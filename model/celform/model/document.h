@@ -21,6 +21,7 @@
 namespace celform::model {
 
 class KeyOffsetsCommand;
+struct AnimatedImport;
 struct LightOptimisationReport;
 
 class Document : public QObject {
@@ -208,6 +209,8 @@ public:
     /// inconsistent animation.
     void setAnimatedBase(std::shared_ptr<const algo::TriMesh> mesh,
         std::shared_ptr<const algo::BaseAnimation> animation, double fps, const QString& sourceName);
+    /// The same from what readAnimatedBase read (animation_io.h); an empty animation is a still base.
+    void setAnimatedBase(AnimatedImport&& imported, const QString& sourceName);
 
     // --- stylized highlights (Anjyo & Hiramitsu 2003), by layer id ----------------------------
     /// Adds layers in one undo step (undoText), after the others; gives each a new id. Names must

@@ -2,6 +2,7 @@
 // base model. Each is one undo step.
 #include "celform/model/document.h"
 
+#include "celform/model/animation_io.h"
 #include "celform/model/document_commands.h"
 #include "celform/model/io_error.h"
 #include "celform/model/render_job.h"
@@ -96,6 +97,14 @@ void Document::makeTurntable(const Turntable& turntable, double aspect)
         new PropertyCommand<SceneTime>(
             this, {}, Property::SceneTime, {}, timeField(), time, ChangeSet::of(Part::SceneTime), 0, cmd);
     push(cmd);
+}
+
+void Document::setAnimatedBase(AnimatedImport&& imported, const QString& sourceName)
+{
+    auto animation = imported.animation.empty()
+        ? nullptr
+        : std::make_shared<const algo::BaseAnimation>(std::move(imported.animation));
+    setAnimatedBase(std::move(imported.mesh), std::move(animation), imported.fps, sourceName);
 }
 
 void Document::setAnimatedBase(std::shared_ptr<const algo::TriMesh> mesh,
