@@ -21,7 +21,6 @@ public:
     /// color over a 3-pixel halo in halo, with the painter's font and opacity.
     void draw(QPainter& painter, const QRectF& rect, const QString& text, const QColor& color, const QColor& halo);
     void clear() { m_images.clear(); }
-    [[nodiscard]] qsizetype size() const { return m_images.size(); }
 
 private:
     /// Past this many labels the cache starts again (a label with a changing number in it).
