@@ -4,14 +4,14 @@
 #include "cli/command.h"
 #include "cli/options.h"
 
-#include "celform/model/depth_analysis.h"
-#include "celform/model/depth_analysis_output.h"
-#include "celform/model/document.h"
-#include "celform/model/light_optimisation.h"
-#include "celform/model/io_error.h"
-#include "celform/model/project_file.h"
-#include "celform/model/render_job.h"
-#include "celform/model/view_blend.h"
+#include "celform/model/analysis/depth_analysis.h"
+#include "celform/model/analysis/depth_analysis_output.h"
+#include "celform/model/document/document.h"
+#include "celform/model/analysis/light_optimisation.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/project_file.h"
+#include "celform/model/render/render_job.h"
+#include "celform/model/data/blend_evaluator.h"
 
 #include <QFileInfo>
 #include <QJsonArray>
@@ -210,7 +210,7 @@ int runOptimizeLight(const Invocation& in)
     const model::LightOptimisationReport report = model::optimiseLightForJob(doc->data(), path, job, request);
     const bool save = !in.isSet("dry-run") && !(report.after == report.before);
     if (save) {
-        doc->applyLightOptimisation(report);
+        doc->applyOptimisedLight(report.before, report.after);
         doc->saveAs(path);
     }
 

@@ -3,7 +3,7 @@
 // The table itself is in cli.cpp; the sub-commands live in one file per group beside this one.
 #pragma once
 
-#include "cli.h"
+#include "cli/command_line.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -4,9 +4,9 @@
 #include "cli/command.h"
 #include "cli/options.h"
 
-#include "celform/model/export.h"
-#include "celform/model/io_error.h"
-#include "celform/model/project_file.h"
+#include "celform/model/export/export.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/project_file.h"
 
 #include <QElapsedTimer>
 #include <QFileInfo>

@@ -3,9 +3,9 @@
 #include "cli/command.h"
 #include "cli/options.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/project_file.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/project_file.h"
 
 #include <QJsonArray>
 

@@ -3,9 +3,9 @@
 // left out of `celform --help` and the README: nobody types them.
 #include "cli/command.h"
 
-#include "celform/model/image_io.h"
-#include "celform/model/import_process.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/io/import_process.h"
+#include "celform/model/io/mesh_io.h"
 
 namespace celform::app {
 namespace {

@@ -3,12 +3,12 @@
 #include "cli/command.h"
 #include "cli/options.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
-#include "celform/model/frame_evaluation.h"
-#include "celform/model/project_file.h"
-#include "celform/model/render_job.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/io/project_file.h"
+#include "celform/model/render/render_job.h"
 
 #include <QJsonArray>
 

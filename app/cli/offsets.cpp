@@ -4,9 +4,10 @@
 #include "cli/command.h"
 #include "cli/options.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/render_job.h"
+#include "celform/model/analysis/auto_offsets.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/render/render_job.h"
 
 #include <QJsonArray>
 
@@ -73,7 +74,8 @@ int runOffsets(const Invocation& in)
         request.camera = model::renderJobCamera(doc->data(), look, job, job.firstFrame);
         request.width = job.size.width();
         request.height = job.size.height();
-        const model::AutoOffsetsResult result = doc->autoShadingOffsets(request);
+        const model::AutoOffsetsResult result = model::solveAutoOffsets(doc->data(), request);
+        doc->applyAutoOffsets(result.target, result.values);
         QJsonArray segments;
         for (std::size_t s = 0; s < result.after.size(); ++s)
             segments.append(QJsonObject{{"id", int(s)}, {"pixels", result.after[s].pixels},

@@ -5,9 +5,9 @@
 
 #include "cli/command.h"
 
-#include "celform/model/camera.h"
-#include "celform/model/project_data.h"
-#include "celform/model/render_job.h"
+#include "celform/model/data/camera.h"
+#include "celform/model/data/project_data.h"
+#include "celform/model/render/render_job.h"
 
 #include <Eigen/Core>
 

@@ -3,9 +3,9 @@
 #include "cli/options.h"
 
 #include "celform/algorithms/tri_mesh.h"
-#include "celform/model/document.h"
-#include "celform/model/image_io.h"
-#include "celform/model/project_file.h"
+#include "celform/model/document/document.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/io/project_file.h"
 
 #include <QFileInfo>
 #include <QJsonArray>

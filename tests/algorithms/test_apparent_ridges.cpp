@@ -6,7 +6,7 @@
 #include "celform/algorithms/apparent_ridges.h"
 #include "celform/algorithms/ridge_snakes.h"
 #include "celform/algorithms/tri_mesh.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <QTest>
 

@@ -4,7 +4,7 @@
 #include "test_support.h"
 
 #include "celform/algorithms/brush.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <QElapsedTimer>
 

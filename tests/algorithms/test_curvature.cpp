@@ -6,7 +6,7 @@
 #include "celform/algorithms/curvature.h"
 #include "celform/algorithms/mesh_analysis.h"
 #include "celform/algorithms/tri_mesh.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <QFile>
 

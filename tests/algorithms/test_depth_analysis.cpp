@@ -10,8 +10,8 @@
 #include "celform/algorithms/distance_transform.h"
 #include "celform/algorithms/render.h"
 #include "celform/algorithms/segments.h"
-#include "celform/model/depth_analysis_output.h"
-#include "celform/model/render_output.h"
+#include "celform/model/analysis/depth_analysis_output.h"
+#include "celform/model/render/render_output.h"
 
 #include <limits>
 #include <random>

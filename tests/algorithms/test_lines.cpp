@@ -4,7 +4,7 @@
 
 #include "celform/algorithms/lines.h"
 #include "celform/algorithms/mesh_analysis.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <algorithm>
 #include <map>

@@ -9,7 +9,7 @@
 #include "celform/algorithms/depth_analysis.h"
 #include "celform/algorithms/render.h"
 #include "celform/algorithms/shading_offsets.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <cmath>
 #include <limits>

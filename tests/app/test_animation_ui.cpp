@@ -5,18 +5,18 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
-#include "celform/model/document.h"
-#include "celform/model/frame_evaluation.h"
-#include "celform/model/view_blend.h"
-#include "celform/views/camera_path_overlay.h"
-#include "celform/views/depth_analysis_runner.h"
-#include "celform/views/depth_panel.h"
-#include "celform/views/playback.h"
-#include "celform/views/timeline_panel.h"
-#include "celform/views/view_sphere_panel.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/data/blend_evaluator.h"
+#include "celform/views/overlays/camera_path_overlay.h"
+#include "celform/views/overlays/depth_analysis_runner.h"
+#include "celform/views/panels/depth_panel.h"
+#include "celform/views/timeline/playback.h"
+#include "celform/views/timeline/timeline_panel.h"
+#include "celform/views/panels/view_sphere_panel.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAction>
 #include <QDockWidget>

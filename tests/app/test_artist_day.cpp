@@ -3,16 +3,16 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
-#include "review_window.h"
+#include "editor/main_window.h"
+#include "editor/review_window.h"
 
-#include "celform/model/document.h"
-#include "celform/views/axis_gizmo.h"
-#include "celform/views/properties_panel.h"
-#include "celform/views/scene_panel.h"
+#include "celform/model/document/document.h"
+#include "celform/views/viewport/axis_gizmo.h"
+#include "celform/views/panels/properties_panel.h"
+#include "celform/views/panels/scene_panel.h"
 #include "celform/views/tools/brush_cursor.h"
 #include "celform/views/tools/brush_tool.h"
-#include "celform/views/viewport.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>

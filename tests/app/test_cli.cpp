@@ -3,9 +3,9 @@
 #include "cli_run.h"
 #include "test_support.h"
 
-#include "cli.h"
+#include "cli/command_line.h"
 
-#include "celform/model/project_file.h"
+#include "celform/model/io/project_file.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

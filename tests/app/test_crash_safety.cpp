@@ -8,9 +8,9 @@
 // of random kills (at least 50 by default).
 #include "test_support.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/project_file.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/project_file.h"
 
 #include <QDir>
 #include <QElapsedTimer>

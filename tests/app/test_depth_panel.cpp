@@ -4,13 +4,13 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
-#include "celform/model/depth_analysis.h"
-#include "celform/model/document.h"
-#include "celform/views/depth_analysis_runner.h"
-#include "celform/views/depth_panel.h"
-#include "celform/views/viewport.h"
+#include "celform/model/analysis/depth_analysis.h"
+#include "celform/model/document/document.h"
+#include "celform/views/overlays/depth_analysis_runner.h"
+#include "celform/views/panels/depth_panel.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAction>
 #include <QDir>

@@ -6,20 +6,20 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
-#include "preferences.h"
-#include "preferences_dialog.h"
-#include "recovery.h"
-#include "render_dialog.h"
-#include "render_runner.h"
-#include "review_window.h"
-#include "shortcuts.h"
-#include "shortcuts_dialog.h"
+#include "editor/main_window.h"
+#include "editor/settings/preferences.h"
+#include "editor/dialogs/preferences_dialog.h"
+#include "editor/recovery.h"
+#include "editor/dialogs/render_dialog.h"
+#include "editor/jobs/render_runner.h"
+#include "editor/review_window.h"
+#include "editor/settings/shortcuts.h"
+#include "editor/dialogs/shortcuts_dialog.h"
 
-#include "celform/model/document.h"
-#include "celform/model/project_file.h"
-#include "celform/views/viewport.h"
-#include "celform/views/viewport_keys.h"
+#include "celform/model/document/document.h"
+#include "celform/model/io/project_file.h"
+#include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_keys.h"
 
 #include <QAction>
 #include <QCheckBox>

@@ -5,8 +5,8 @@
 #include "cli_run.h"
 #include "test_meshes.h"
 
-#include "celform/model/export.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/export/export.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <tiny_gltf.h>
 

@@ -4,12 +4,12 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "export_dialog.h"
-#include "export_runner.h"
-#include "main_window.h"
-#include "shortcuts.h"
+#include "editor/dialogs/export_dialog.h"
+#include "editor/jobs/export_runner.h"
+#include "editor/main_window.h"
+#include "editor/settings/shortcuts.h"
 
-#include "celform/model/document.h"
+#include "celform/model/document/document.h"
 
 #include <QAction>
 #include <QApplication>

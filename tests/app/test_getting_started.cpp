@@ -4,12 +4,12 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
-#include "celform/model/document.h"
-#include "celform/views/properties_panel.h"
-#include "celform/views/scene_panel.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/panels/properties_panel.h"
+#include "celform/views/panels/scene_panel.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAction>
 #include <QDialog>

@@ -8,11 +8,11 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
-#include "celform/model/render_output.h"
-#include "celform/views/highlight_panel.h"
-#include "celform/views/viewport.h"
+#include "celform/model/render/render_output.h"
+#include "celform/views/panels/highlight_panel.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QApplication>
 #include <QDockWidget>

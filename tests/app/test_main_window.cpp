@@ -5,13 +5,13 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
-#include "recovery.h"
+#include "editor/main_window.h"
+#include "editor/recovery.h"
 
-#include "celform/model/project_file.h"
-#include "celform/views/look_panel.h"
-#include "celform/views/scene_panel.h"
-#include "celform/views/viewport.h"
+#include "celform/model/io/project_file.h"
+#include "celform/views/panels/look_panel.h"
+#include "celform/views/panels/scene_panel.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAction>
 #include <QComboBox>

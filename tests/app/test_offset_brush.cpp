@@ -5,12 +5,12 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
-#include "celform/model/document.h"
+#include "celform/model/document/document.h"
 #include "celform/views/tools/brush_cursor.h"
 #include "celform/views/tools/offset_brush_tool.h"
-#include "celform/views/viewport.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAction>
 #include <QUndoStack>

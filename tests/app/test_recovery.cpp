@@ -10,11 +10,11 @@
 #include "test_support.h"
 #include "ui_test_support.h"
 
-#include "main_window.h"
-#include "recovery.h"
+#include "editor/main_window.h"
+#include "editor/recovery.h"
 
-#include "celform/model/project_file.h"
-#include "celform/views/viewport.h"
+#include "celform/model/io/project_file.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -3,11 +3,11 @@
 #include "test_support.h"
 #include "ui_test_support.h"
 
-#include "main_window.h"
-#include "review_window.h"
+#include "editor/main_window.h"
+#include "editor/review_window.h"
 
-#include "celform/model/document.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAction>
 #include <QApplication>

@@ -5,11 +5,11 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
-#include "celform/model/document.h"
-#include "celform/views/look_panel.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/panels/look_panel.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QAction>
 #include <QApplication>

@@ -5,14 +5,14 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
 #include "celform/algorithms/camera_solve.h"
 #include "celform/algorithms/tri_mesh.h"
 
-#include "celform/views/properties_panel.h"
-#include "celform/views/scene_panel.h"
-#include "celform/views/viewport.h"
+#include "celform/views/panels/properties_panel.h"
+#include "celform/views/panels/scene_panel.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -2,7 +2,7 @@
 // radius that selects about 5,000 vertices, and building the vertex grid.
 // Run: bench_brush (medians of 5 repetitions; the selection size is printed as a counter).
 #include "celform/algorithms/brush.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include "bench_data.h"
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "celform/algorithms/tri_mesh.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <QDir>
 #include <QFileInfo>

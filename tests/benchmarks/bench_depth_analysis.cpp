@@ -5,7 +5,7 @@
 // - the whole analysis of the dragon (871k triangles) at 1280x720: picture, G-buffer, segments and
 //   depth error, with the curvature cached (a still shape, the editor orbiting) and recomputed.
 #include "celform/algorithms/distance_transform.h"
-#include "celform/model/depth_analysis.h"
+#include "celform/model/analysis/depth_analysis.h"
 
 #include "bench_data.h"
 

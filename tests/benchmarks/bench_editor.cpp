@@ -7,12 +7,12 @@
 // - highlight spin-box step: one step of the Highlights dock's epsilon spin box on the armadillo
 //   with three layers, with the number of change notifications it caused. Baseline: the same key
 //   edit through a document nobody listens to.
-#include "celform/model/document.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "bench_data.h"
 #include "bench_gui.h"
-#include "main_window.h"
+#include "editor/main_window.h"
 
 #include <benchmark/benchmark.h>
 

@@ -4,7 +4,7 @@
 // exporter writes them): what the evaluation costs over the disk.
 #include "bench_data.h"
 
-#include "celform/model/export.h"
+#include "celform/model/export/export.h"
 
 #include <benchmark/benchmark.h>
 

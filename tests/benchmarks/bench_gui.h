@@ -3,7 +3,7 @@
 // application goes (a viewport's GL context must not outlive it).
 #pragma once
 
-#include "celform/views/viewport.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QApplication>
 #include <QSurfaceFormat>

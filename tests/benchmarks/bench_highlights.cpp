@@ -10,10 +10,10 @@
 // split and squaring, and one with a hidden fourth track subtracted from it.
 //
 // CELFORM_BENCH_SNAPSHOTS=DIR saves the pictures measured (viewport grabs, offline beauty) there.
-#include "celform/model/document.h"
-#include "celform/model/project_data.h"
-#include "celform/model/render_output.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/project_data.h"
+#include "celform/model/render/render_output.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "bench_data.h"
 #include "bench_gui.h"

@@ -4,9 +4,9 @@
 // Run: bench_import (medians of 5 repetitions are printed).
 #include "bench_data.h"
 
-#include "celform/model/image_io.h"
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <benchmark/benchmark.h>
 

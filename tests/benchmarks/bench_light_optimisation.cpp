@@ -7,8 +7,8 @@
 #include "test_meshes.h"
 
 #include "celform/algorithms/light_optimisation.h"
-#include "celform/model/depth_analysis.h"
-#include "celform/model/light_optimisation.h"
+#include "celform/model/analysis/depth_analysis.h"
+#include "celform/model/analysis/light_optimisation.h"
 
 #include <benchmark/benchmark.h>
 

@@ -2,7 +2,7 @@
 // edges for one perspective frame (goal < 10 ms on one core) and chaining them into strokes.
 // Run: bench_lines (medians of 5 repetitions; edge and stroke counts are printed as counters).
 #include "celform/algorithms/lines.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include "bench_data.h"
 

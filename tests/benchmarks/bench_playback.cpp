@@ -7,13 +7,13 @@
 //   open, stepping the playhead as playing does: the viewport, the Timeline, the Viewing Sphere and
 //   the other docks repaint, and Qt composes the window. Its gap to turntableFrames is what the rest
 //   of the window costs per frame.
-#include "celform/model/document.h"
-#include "celform/model/frame_evaluation.h"
-#include "celform/views/depth_analysis_runner.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/render/frame_evaluation.h"
+#include "celform/views/overlays/depth_analysis_runner.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "bench_gui.h"
-#include "main_window.h"
+#include "editor/main_window.h"
 
 #include <benchmark/benchmark.h>
 

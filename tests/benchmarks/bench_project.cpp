@@ -1,9 +1,9 @@
 // Project save and open speed on the dragon (871k triangles) with 20 key viewpoints, each moving
 // 10% of the vertices, against a plain write and read of the same number of bytes.
 // Run: bench_project (medians of 5 repetitions; the file size is printed as a counter).
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
-#include "celform/model/project_file.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/io/project_file.h"
 
 #include <benchmark/benchmark.h>
 

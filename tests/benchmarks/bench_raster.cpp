@@ -2,7 +2,7 @@
 // G-buffer with a framed perspective camera, and 5,000 random anti-aliased strokes.
 // Run: bench_raster (medians of 5 repetitions; covered pixels printed as a counter).
 #include "celform/algorithms/raster.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include <benchmark/benchmark.h>
 

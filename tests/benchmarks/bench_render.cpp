@@ -1,7 +1,7 @@
 // Offline render speed: the dragon (871k triangles) at 1920x1080, toon shading with lines, the
 // whole frame (normals, G-buffer, line extraction and drawing, shading). Goal: under 0.5 s here.
 #include "celform/algorithms/render.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/io/mesh_io.h"
 
 #include "bench_data.h"
 

@@ -7,11 +7,11 @@
 //   a document reset to it (the viewport rebuilds its polydata and frames it), the same until the
 //   first frame is drawn, and a mesh edit alone (meshChanged: the polydata is rebuilt). The aim
 //   for the mesh edit is well under 200 ms.
-#include "celform/model/document.h"
-#include "celform/model/mesh_io.h"
-#include "celform/views/depth_analysis_runner.h"
-#include "celform/views/depth_overlay.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/views/overlays/depth_analysis_runner.h"
+#include "celform/views/overlays/depth_overlay.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "bench_data.h"
 #include "bench_gui.h"

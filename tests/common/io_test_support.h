@@ -2,7 +2,7 @@
 // succeed without letting its IoError end the whole test program.
 #pragma once
 
-#include "celform/model/io_error.h"
+#include "celform/model/data/io_error.h"
 
 #include <QByteArray>
 #include <QFile>

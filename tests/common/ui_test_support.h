@@ -2,7 +2,7 @@
 // (QTest::mouseMove carries no buttons in Qt 6), and screenshots kept for looking at by eye.
 #pragma once
 
-#include "celform/views/viewport.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -3,7 +3,7 @@
 
 #include "ui_test_support.h"
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
 #include <QApplication>
 

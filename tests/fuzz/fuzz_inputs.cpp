@@ -4,12 +4,12 @@
 #include "cli/options.h"
 
 #include "celform/algorithms/mesh_analysis.h"
-#include "celform/model/animation_io.h"
-#include "celform/model/image_io.h"
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
-#include "celform/model/project_data.h"
-#include "celform/model/project_file.h"
+#include "celform/model/io/animation_io.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/data/project_data.h"
+#include "celform/model/io/project_file.h"
 
 #include <QCommandLineParser>
 #include <QDir>

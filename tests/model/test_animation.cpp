@@ -5,10 +5,10 @@
 #include "test_meshes.h"
 
 #include "celform/algorithms/base_animation.h"
-#include "celform/model/document.h"
-#include "celform/model/frame_evaluation.h"
-#include "celform/model/io_error.h"
-#include "celform/model/project_file.h"
+#include "celform/model/document/document.h"
+#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/project_file.h"
 
 #include <Eigen/Geometry>
 

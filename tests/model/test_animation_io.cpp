@@ -1,8 +1,8 @@
 // Animated base import: glTF skins, morph targets and LINEAR/STEP/CUBICSPLINE channels checked
 // against positions worked out by hand, GLB against glTF, OBJ sequences, and bad files refused
 // with the file named. The glTF files are built here with tinygltf's writer.
-#include "celform/model/animation_io.h"
-#include "celform/model/io_error.h"
+#include "celform/model/io/animation_io.h"
+#include "celform/model/data/io_error.h"
 #include "gltf_buffer_fixture.h"
 #include "io_test_support.h"
 #include "test_support.h"

@@ -1,8 +1,8 @@
 // Document commands: every edit applies, undoes to the exact previous data, and redoes.
 #include "test_support.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

@@ -1,7 +1,7 @@
 // Drawing import: the shared PNG and SVG drawings, small EXR/TIFF/JPEG files written here with
 // OpenImageIO (HDR clamping and sRGB encoding, 16-bit scaling), and damaged files as IoError.
-#include "celform/model/image_io.h"
-#include "celform/model/io_error.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/data/io_error.h"
 #include "test_support.h"
 
 #include <OpenImageIO/imageio.h>

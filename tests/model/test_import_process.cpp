@@ -1,11 +1,11 @@
 // Imports of third-party formats in a child process (model/import_process.h): however the child
 // ends (a crash, the time or memory limit, a refusal, nonsense), the caller gets one IoError line
 // naming the file, the document stays as it was, and what crosses between the processes is whole.
-#include "celform/model/document.h"
-#include "celform/model/image_io.h"
-#include "celform/model/import_process.h"
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/document/document.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/io/import_process.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
 #include "test_support.h"
 
 #include <QBuffer>

@@ -4,10 +4,10 @@
 #include "test_meshes.h"
 
 #include "celform/algorithms/brush.h"
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
-#include "celform/model/project_file.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/io/project_file.h"
 
 #include <QTemporaryDir>
 

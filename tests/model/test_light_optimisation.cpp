@@ -4,11 +4,11 @@
 #include "test_meshes.h"
 #include "test_support.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/light_optimisation.h"
-#include "celform/model/mesh_io.h"
-#include "celform/model/render_job.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/analysis/light_optimisation.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/render/render_job.h"
 
 #include <QUndoStack>
 
@@ -49,7 +49,7 @@ private slots:
         QVERIFY(!(report.after == report.before));
         QCOMPARE(report.before, start);
 
-        doc.applyLightOptimisation(report);
+        doc.applyOptimisedLight(report.before, report.after);
         QCOMPARE(doc.undoStack()->count(), 1);
         QCOMPARE(doc.undoStack()->text(0), QStringLiteral("Optimise Light for Stereo"));
         QCOMPARE(doc.data().look.light, report.after);
@@ -59,13 +59,11 @@ private slots:
         QCOMPARE(doc.data().look.light, report.after);
 
         // A report made from another light is refused, the document unchanged.
-        QVERIFY_THROWS_EXCEPTION(model::EditRefused, doc.applyLightOptimisation(report));
+        QVERIFY_THROWS_EXCEPTION(model::EditRefused, doc.applyOptimisedLight(report.before, report.after));
         QCOMPARE(doc.undoStack()->count(), 1);
-        // A cancelled run changes nothing.
+        // A run that kept the light changes nothing.
         doc.undoStack()->undo();
-        model::LightOptimisationReport cancelled = report;
-        cancelled.run.cancelled = true;
-        doc.applyLightOptimisation(cancelled);
+        doc.applyOptimisedLight(start, start);
         QCOMPARE(doc.data().look.light, start);
         QCOMPARE(doc.undoStack()->index(), 0);
     }

@@ -1,7 +1,7 @@
 // Mesh import/export: vertex order kept per format, polygons triangulated, real meshes with their
 // documented counts, every malformed file a clean IoError or a warning, bit-exact round trips.
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
 #include "gltf_buffer_fixture.h"
 #include "io_test_support.h"
 #include "test_support.h"

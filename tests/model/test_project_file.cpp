@@ -2,10 +2,10 @@
 // corrupt and truncated files with the open document left as it was.
 #include "test_support.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
-#include "celform/model/project_file.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/io/project_file.h"
 
 #include <QBuffer>
 #include <QCryptographicHash>

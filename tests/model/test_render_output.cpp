@@ -3,8 +3,8 @@
 // parameter edits and frames without changing a single value.
 #include "test_meshes.h"
 
-#include "celform/model/project_data.h"
-#include "celform/model/render_output.h"
+#include "celform/model/data/project_data.h"
+#include "celform/model/render/render_output.h"
 
 #include <QtTest/QtTest>
 

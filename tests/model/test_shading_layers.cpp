@@ -5,11 +5,12 @@
 #include "test_meshes.h"
 #include "test_support.h"
 
-#include "celform/model/depth_analysis.h"
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/project_file.h"
-#include "celform/model/shading_layers.h"
+#include "celform/model/analysis/auto_offsets.h"
+#include "celform/model/analysis/depth_analysis.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/project_file.h"
+#include "celform/model/data/shading_layers.h"
 
 #include <QTemporaryDir>
 
@@ -175,10 +176,10 @@ private slots:
         AutoOffsetsRequest request;
         request.camera = cameraAt({0, 0, 5});
         request.aggressiveness = 2.f;
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.autoShadingOffsets(request));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, solveAutoOffsets(m_doc.data(), request));
         request.aggressiveness = 1.f;
         request.percentile = -0.5f;
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.autoShadingOffsets(request));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, solveAutoOffsets(m_doc.data(), request));
         QVERIFY(m_doc.data() == start);
         QCOMPARE(m_doc.undoStack()->count(), 0);
     }
@@ -222,9 +223,13 @@ private slots:
         request.width = 160;
         request.height = 160;
         request.percentile = 0.5f;
-        const AutoOffsetsResult result = m_doc.autoShadingOffsets(request);
+        const AutoOffsetsResult result = solveAutoOffsets(m_doc.data(), request);
         QVERIFY(!result.after.empty());
+        // The solve reads the document and changes nothing; applying it is one undo step.
+        QCOMPARE(m_doc.undoStack()->count(), 0);
+        m_doc.applyAutoOffsets(result.target, result.values);
         QCOMPARE(m_doc.undoStack()->count(), 1);
+        QCOMPARE(m_doc.undoStack()->text(0), QStringLiteral("Automatic Shading Offsets (base)"));
         for (std::size_t s = 0; s < result.after.size(); ++s) {
             if (!result.report.covered[s])
                 continue;

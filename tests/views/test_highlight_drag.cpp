@@ -1,9 +1,9 @@
 // Direct manipulation of a highlight layer in the viewport (Highlights dock, "Edit in Viewport"):
 // a drag on an icosphere keys a translation at the current frame in the drag's direction, as one
 // undo step; painting a layer's patch with the Patch tool.
-#include "celform/model/document.h"
-#include "celform/views/highlight_panel.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/panels/highlight_panel.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "test_meshes.h"
 

@@ -1,10 +1,10 @@
 // The Highlights dock driven as an artist would: a layer added with the panel's buttons, epsilon
 // keyed at two frames through the timeline, the interpolated value between them, undo, key and
 // layer removal; after each step the document's Look::highlights and its save/load round trip.
-#include "celform/model/document.h"
-#include "celform/model/project_file.h"
-#include "celform/views/frame_timeline.h"
-#include "celform/views/highlight_panel.h"
+#include "celform/model/document/document.h"
+#include "celform/model/io/project_file.h"
+#include "celform/views/timeline/frame_timeline.h"
+#include "celform/views/panels/highlight_panel.h"
 
 #include "test_meshes.h"
 #include "ui_test_support.h"

@@ -2,10 +2,10 @@
 // Xvfb, and the cross-path check that the viewport's pixels equal the offline renderer's.
 #include "celform/algorithms/image.h"
 #include "celform/algorithms/shading.h"
-#include "celform/model/document.h"
-#include "celform/model/mesh_io.h"
-#include "celform/model/render_output.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/render/render_output.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "test_support.h"
 #include "test_meshes.h"

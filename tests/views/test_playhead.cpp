@@ -3,9 +3,9 @@
 // what it shows, and a hidden viewport does no work while the document changes.
 #include "celform/algorithms/image.h"
 #include "celform/algorithms/shading.h"
-#include "celform/model/document.h"
-#include "celform/model/render_output.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/render/render_output.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "test_meshes.h"
 #include "ui_test_support.h"

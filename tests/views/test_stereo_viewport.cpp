@@ -2,9 +2,9 @@
 // renders, disparity is zero at the convergence distance and crossed in front of it, lines
 // follow silhouettes and stay off interiors, and frames are deterministic.
 #include "celform/algorithms/stereo.h"
-#include "celform/model/document.h"
-#include "celform/views/line_overlay.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/overlays/line_overlay.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "test_support.h"
 

@@ -1,7 +1,7 @@
 // The viewing-sphere panel (paper 1, figure 4) driven as an artist would: keys on a small model,
 // a view inside a facet, clicks and drags, checked through the pixels it paints and its readout.
-#include "celform/model/document.h"
-#include "celform/views/view_sphere_panel.h"
+#include "celform/model/document/document.h"
+#include "celform/views/panels/view_sphere_panel.h"
 
 #include "test_meshes.h"
 

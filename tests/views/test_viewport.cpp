@@ -1,9 +1,9 @@
 // The 3D viewport driven as an artist would: shown under Xvfb, dragged with the mouse, resized,
 // and checked through the pixels it draws and the camera it reports.
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/mesh_io.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/views/viewport/viewport.h"
 
 // tests/CMakeLists.txt adds <caller>/common to the include path, not tests/common: reach it
 // relative to this file until that is fixed.

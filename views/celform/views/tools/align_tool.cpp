@@ -3,8 +3,8 @@
 #include "celform/views/tools/align_tool.h"
 
 #include "celform/algorithms/camera_solve.h"
-#include "celform/model/document.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QLabel>
 #include <QPainter>

@@ -6,8 +6,8 @@
 
 #include "celform/views/tools/viewport_tool.h"
 
-#include "celform/model/camera.h"
-#include "celform/model/object_id.h"
+#include "celform/model/data/camera.h"
+#include "celform/model/data/object_id.h"
 
 #include <QObject>
 #include <QString>

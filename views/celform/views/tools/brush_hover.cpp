@@ -2,8 +2,8 @@
 #include "celform/views/tools/brush_hover.h"
 
 #include "celform/views/tools/brush_cursor.h"
-#include "celform/views/viewport.h"
-#include "celform/views/viewport_keys.h"
+#include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_keys.h"
 
 #include <QTimer>
 

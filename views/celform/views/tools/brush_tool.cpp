@@ -1,11 +1,11 @@
 // Mouse motion to brush steps; the document does the deformation (Document::applyBrushStroke).
 #include "celform/views/tools/brush_tool.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
 #include "celform/views/tools/brush_cursor.h"
-#include "celform/views/viewport.h"
-#include "celform/views/viewport_keys.h"
+#include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_keys.h"
 
 #include <QCoreApplication>
 

@@ -3,7 +3,7 @@
 // Ctrl+Shift+drag scales it; the Smooth mode relaxes it. One document brush stroke per drag.
 #pragma once
 
-#include "celform/model/brush_stroke.h"
+#include "celform/model/document/brush_stroke.h"
 #include "celform/views/tools/brush_hover.h"
 #include "celform/views/tools/viewport_tool.h"
 

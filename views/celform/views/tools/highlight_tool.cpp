@@ -5,10 +5,10 @@
 #include "celform/views/tools/highlight_tool.h"
 
 #include "celform/algorithms/highlights.h"
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/model/render_output.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/render/render_output.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <cmath>
 #include <optional>

@@ -1,8 +1,8 @@
 // The light gizmo's drag: the handle follows the cursor on its sphere; Document::setLight stores it.
 #include "celform/views/tools/light_tool.h"
 
-#include "celform/model/document.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QLineF>
 

@@ -1,10 +1,10 @@
 // Mouse motion to shading-offset dabs; the document does the painting (Document::applyOffsetStroke).
 #include "celform/views/tools/offset_brush_tool.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
 #include "celform/views/tools/brush_cursor.h"
-#include "celform/views/viewport.h"
+#include "celform/views/viewport/viewport.h"
 
 #include <QCoreApplication>
 

@@ -5,7 +5,7 @@
 // playhead. One document stroke (one undo step) per drag.
 #pragma once
 
-#include "celform/model/shading_stroke.h"
+#include "celform/model/document/offset_stroke.h"
 #include "celform/views/tools/brush_hover.h"
 #include "celform/views/tools/viewport_tool.h"
 

@@ -1,9 +1,9 @@
 // Dabs of the patch brush go to Document::paintFaceSet inside one gesture.
 #include "celform/views/tools/patch_tool.h"
 
-#include "celform/model/document.h"
-#include "celform/model/io_error.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/model/data/io_error.h"
+#include "celform/views/viewport/viewport.h"
 
 #include "celform/algorithms/tri_mesh.h"
 

@@ -1,8 +1,8 @@
 // The gesture bookkeeping every drag tool shares.
 #include "celform/views/tools/viewport_tool.h"
 
-#include "celform/model/document.h"
-#include "celform/views/viewport.h"
+#include "celform/model/document/document.h"
+#include "celform/views/viewport/viewport.h"
 
 namespace celform::views {
 

@@ -1,0 +1,50 @@
+// File > Export… (issue 13, "Export"): the format, the frame range (the project's by default) and
+// the file; the export itself runs in an ExportRunner (export_runner.h).
+#pragma once
+
+#include "celform/model/export/export.h"
+
+#include <QDialog>
+#include <QObject>
+
+class QComboBox;
+class QLineEdit;
+class QSpinBox;
+
+namespace celform::model {
+class Document;
+}
+
+namespace celform::app {
+
+class MainWindow;
+
+class ExportDialog : public QDialog {
+    Q_OBJECT
+public:
+    ExportDialog(const model::Document* document, QWidget* parent = nullptr);
+
+    /// The job the fields describe (valid once accepted).
+    [[nodiscard]] model::ExportJob job() const;
+
+    [[nodiscard]] QComboBox* formatBox() const { return m_format; }
+    [[nodiscard]] QSpinBox* firstFrameBox() const { return m_first; }
+    [[nodiscard]] QSpinBox* lastFrameBox() const { return m_last; }
+    [[nodiscard]] QLineEdit* fileEdit() const { return m_file; }
+
+    void accept() override;
+
+private:
+    void browse();
+    void formatChanged();
+
+    QComboBox* m_format;
+    QSpinBox* m_first;
+    QSpinBox* m_last;
+    QLineEdit* m_file;
+};
+
+/// Adds File > Export… (Ctrl+Shift+E) before the window's Quit, enabled with a base model.
+void installExportAction(MainWindow* window);
+
+} // namespace celform::app

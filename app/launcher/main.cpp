@@ -1,0 +1,20 @@
+// Entry point: sub-commands run on the model alone (QCoreApplication, no display); anything else
+// opens the editor, which the launcher loads as a module so that the command line never maps VTK,
+// OpenGL or Qt Widgets. Translations follow the system locale.
+#include "cli/command_line.h"
+#include "launcher/launch.h"
+
+#include <QCoreApplication>
+
+int main(int argc, char** argv)
+{
+    celform::app::setApplicationIdentity();
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    if (!celform::app::isCommandLineInvocation(arguments))
+        return celform::app::launchEditor(argc, argv);
+    QCoreApplication app(argc, argv);
+    celform::app::installTranslations(app);
+    return celform::app::runCommandLine(QCoreApplication::arguments());
+}

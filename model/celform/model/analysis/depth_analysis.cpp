@@ -1,0 +1,118 @@
+// Running the depth analysis on a project (depth_analysis.h).
+#include "celform/model/analysis/depth_analysis.h"
+
+#include "celform/algorithms/tri_mesh.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/render/render_output.h"
+#include "celform/model/data/shading_layers.h"
+#include "celform/model/data/blend_evaluator.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cmath>
+
+namespace celform::model {
+
+const algo::Curvatures& DepthAnalyzer::curvatures(
+    const algo::TriMesh& mesh, const algo::Positions& shape, std::uint64_t generation)
+{
+    if (generation == 0 || generation != m_generation || &mesh != m_mesh
+        || std::size_t(shape.rows()) != m_curvatures.gaussian.size()) {
+        // Max's normals, computed inside: the area-weighted ones put curvature several percent off.
+        algo::computeCurvatures(shape, mesh.faces, m_curvatures);
+        // The pictures' scale: the |K| below which 98% of the surface's area lies. Weighting by
+        // area keeps small, finely meshed, sharply curved parts (a trunk's tip) from setting it.
+        m_byMagnitude.resize(m_curvatures.gaussian.size());
+        double total = 0.0;
+        for (std::size_t v = 0; v < m_byMagnitude.size(); ++v) {
+            const float k = m_curvatures.gaussian[v];
+            const float area = v < m_curvatures.pointArea.size() ? m_curvatures.pointArea[v] : 0.f;
+            m_byMagnitude[v] = {std::isfinite(k) ? std::abs(k) : 0.f, std::isfinite(area) ? area : 0.f};
+            total += m_byMagnitude[v].second;
+        }
+        std::sort(m_byMagnitude.begin(), m_byMagnitude.end());
+        m_curvatureScale = 0.f;
+        double below = 0.0;
+        for (const auto& [magnitude, area] : m_byMagnitude) {
+            below += area;
+            m_curvatureScale = magnitude;
+            if (below >= 0.98 * total)
+                break;
+        }
+        m_mesh = &mesh;
+        m_generation = generation;
+    }
+    return m_curvatures;
+}
+
+void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const algo::Positions& shape,
+    std::uint64_t generation, int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings,
+    FrameAnalysis& out, const std::vector<float>* shadingOffsets)
+{
+    QElapsedTimer timer;
+    timer.start();
+    const algo::TriMesh& mesh = *data.baseMesh;
+    const bool cached = generation != 0 && generation == m_generation && &mesh == m_mesh
+        && std::size_t(shape.rows()) == m_curvatures.gaussian.size();
+    const algo::Curvatures& curvature = curvatures(mesh, shape, generation);
+    out.curvatureMilliseconds = cached ? 0.0 : double(timer.nsecsElapsed()) / 1e6;
+
+    // The centre eye's picture with its G-buffer (thesis 4.5.2: "the camera position when
+    // rendering to this G-buffer is in the middle of the two eyes").
+    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets);
+    renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &m_cache, generation);
+    const algo::RasterCamera centre = rasterCamera(camera, width, height);
+    algo::renderFrame(shape, mesh, centre, renderLook, m_cache, out.passes, nullptr, &m_gbuffer);
+
+    algo::DepthAnalysisSettings& s = m_settings;
+    s = algo::DepthAnalysisSettings{};
+    const Eigen::AlignedBox3d box = algo::boundingBox(shape);
+    const double diagonal = box.isEmpty() ? 1.0 : box.diagonal().norm();
+    out.depthThreshold = settings.depthThreshold * diagonal;
+    s.depthThreshold = float(out.depthThreshold);
+    s.minSegmentPixels = settings.minSegmentPixels;
+    s.window = settings.window;
+    // The bright/dark boundary is the ramp's first threshold: the shadow line (DESIGN.md: "N.L
+    // plus the vertex's offset above the toon threshold").
+    s.toonThreshold = look.toon.thresholds.empty() ? 0.f : look.toon.thresholds.front();
+    s.pointLight = renderLook.pointLight;
+    s.light = renderLook.light;
+    s.shadingOffsets = renderLook.shadingOffsets;
+    algo::analyzeDepth(
+        m_gbuffer, out.passes.normal, out.passes.beauty, mesh.faces, curvature.gaussian, s, out.analysis);
+    out.analysis.curvatureScale = m_curvatureScale;
+    out.milliseconds = double(timer.nsecsElapsed()) / 1e6;
+}
+
+AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source, const RenderJob& job)
+{
+    if (!data.baseMesh)
+        throw IoError(source, QCoreApplication::translate("celform::model::RenderJob", "has no base model"));
+    AnalysisView view;
+    view.look = renderJobLook(data, job);
+    view.camera = renderJobCamera(data, view.look, job, job.firstFrame);
+    BlendEvaluator blender;
+    QString error;
+    if (!blender.update(data, &error))
+        throw IoError(source, error);
+    view.direction = blender.viewDirection(data, view.camera.eye, job.firstFrame);
+    view.blend = blender.weights(data, view.direction);
+    blender.shape(data, view.direction, job.firstFrame, view.shape);
+    effectiveShadingOffsets(data, blender, view.direction, job.firstFrame, view.offsets);
+    return view;
+}
+
+FrameAnalysis analyzeProject(
+    const ProjectData& data, const QString& source, const RenderJob& job, const AnalysisSettings& settings)
+{
+    const AnalysisView view = resolveAnalysisView(data, source, job);
+    DepthAnalyzer analyzer;
+    FrameAnalysis out;
+    analyzer.analyze(data, view.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(), job.size.height(),
+        settings, out, &view.offsets);
+    return out;
+}
+
+} // namespace celform::model

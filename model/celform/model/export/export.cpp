@@ -1,0 +1,143 @@
+// The export entry point (export.h): the job's checks, the walk over its frames that every format
+// shares, and the dispatch to the format's writer.
+#include "celform/model/export/export.h"
+
+#include "celform/model/data/io_error.h"
+#include "celform/model/render/render_job.h"
+
+#include <QCoreApplication>
+#include <QSaveFile>
+
+namespace celform::model {
+
+namespace {
+
+struct Names {
+    ExportFormat format;
+    const char* name;
+};
+constexpr Names kNames[] = {{ExportFormat::Gltf, "gltf"}, {ExportFormat::Glb, "glb"}, {ExportFormat::Pc2, "pc2"},
+    {ExportFormat::ObjSequence, "obj-seq"}};
+
+} // namespace
+
+QString exportFormatName(ExportFormat format)
+{
+    for (const Names& n : kNames)
+        if (n.format == format)
+            return QLatin1String(n.name);
+    return {};
+}
+
+std::optional<ExportFormat> exportFormatFromName(const QString& name)
+{
+    for (const Names& n : kNames)
+        if (name == QLatin1String(n.name))
+            return n.format;
+    return std::nullopt;
+}
+
+std::vector<ExportFormat> exportFormats()
+{
+    std::vector<ExportFormat> all;
+    for (const Names& n : kNames)
+        all.push_back(n.format);
+    return all;
+}
+
+QString ExportJob::framePath(int frame) const
+{
+    if (format != ExportFormat::ObjSequence)
+        return output;
+    // The same naming as a rendered sequence (RenderJob::framePath): one rule for both.
+    RenderJob pattern;
+    pattern.firstFrame = firstFrame;
+    pattern.lastFrame = lastFrame;
+    pattern.output = output;
+    return pattern.framePath(frame);
+}
+
+QString exportJobProblem(const ExportJob& job)
+{
+    if (job.firstFrame < -kMaxFrame || job.lastFrame > kMaxFrame)
+        return QCoreApplication::translate("celform::model::Export", "frames must be within ±%1").arg(kMaxFrame);
+    if (job.firstFrame > job.lastFrame)
+        return QCoreApplication::translate("celform::model::Export", "the first frame %1 is after the last frame %2")
+            .arg(job.firstFrame)
+            .arg(job.lastFrame);
+    if (job.output.isEmpty())
+        return QCoreApplication::translate("celform::model::Export", "no output file");
+    if (!(job.aspect > 0.0))
+        return QCoreApplication::translate("celform::model::Export", "the aspect ratio must be positive");
+    return {};
+}
+
+namespace exporting {
+
+FrameWalk::FrameWalk(
+    const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks)
+    : m_data(data)
+    , m_job(job)
+    , m_callbacks(callbacks)
+    , m_frame(job.firstFrame - 1)
+{
+    QString error;
+    if (!m_evaluator.prepare(data, &error))
+        throw IoError(source, error);
+}
+
+bool FrameWalk::next()
+{
+    if (m_cancelled || m_frame >= m_job.lastFrame)
+        return false;
+    if (m_callbacks.cancelled && m_callbacks.cancelled()) {
+        m_cancelled = true;
+        return false;
+    }
+    ++m_frame;
+    m_camera = cameraAtFrame(m_data, m_data.look, m_frame, m_job.aspect);
+    m_evaluator.evaluate(m_data, m_frame, m_camera.eye);
+    ++m_done;
+    if (m_callbacks.progress)
+        m_callbacks.progress(m_done, m_job.frameCount());
+    return true;
+}
+
+void finishFile(QSaveFile& file, bool cancelled, ExportResult& result)
+{
+    if (cancelled) {
+        file.cancelWriting();
+        result.cancelled = true;
+        return;
+    }
+    if (!file.commit())
+        throw IoError(file.fileName(), file.errorString());
+    result.files << file.fileName();
+}
+
+} // namespace exporting
+
+ExportResult exportProject(
+    const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks)
+{
+    if (!data.baseMesh)
+        throw IoError(source, QCoreApplication::translate("celform::model::Export", "has no base model"));
+    if (const QString problem = exportJobProblem(job); !problem.isEmpty())
+        throw IoError(source, problem);
+    ExportResult result;
+    switch (job.format) {
+    case ExportFormat::Pc2:
+        exporting::writePc2(data, source, job, callbacks, result);
+        break;
+    case ExportFormat::ObjSequence:
+        exporting::writeObjSequence(data, source, job, callbacks, result);
+        break;
+    case ExportFormat::Gltf:
+    case ExportFormat::Glb:
+        exporting::writeGltf(data, source, job, callbacks, result);
+        break;
+    }
+    return result;
+}
+
+} // namespace celform::model

@@ -1,0 +1,113 @@
+// Exporting the view-dependent model's animation for other tools (issue 13, "Export"): every frame
+// of a range evaluated by FrameEvaluator through the shot's camera, as `celform eval` and the
+// renderer see it, written as a glTF 2.0 scene (text or binary), a PC2 point cache or a sequence
+// of OBJ meshes. docs/export.md describes what each format holds.
+#pragma once
+
+#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/data/project_data.h"
+
+#include <QString>
+#include <QStringList>
+
+class QSaveFile;
+
+#include <functional>
+#include <optional>
+
+namespace celform::model {
+
+enum class ExportFormat { Gltf, Glb, Pc2, ObjSequence };
+
+/// The command line's names of the formats: gltf, glb, pc2, obj-seq.
+[[nodiscard]] QString exportFormatName(ExportFormat format);
+[[nodiscard]] std::optional<ExportFormat> exportFormatFromName(const QString& name);
+/// Every format, in the order of exportFormatName's list.
+[[nodiscard]] std::vector<ExportFormat> exportFormats();
+
+/// The aspect ratio of the camera framed for a project without a camera path or render camera:
+/// the default render size's (1280 x 720), so an export sees what `celform eval` and
+/// `celform render` see.
+constexpr double kExportAspect = 1280.0 / 720.0;
+
+struct ExportJob {
+    ExportFormat format = ExportFormat::Pc2;
+    int firstFrame = 0;
+    int lastFrame = 0; ///< >= firstFrame
+    /// The file; for an OBJ sequence a pattern: a run of # is the zero-padded frame number,
+    /// without one "_FFFF" goes before the suffix (as a rendered sequence names its files).
+    QString output;
+    double aspect = kExportAspect;
+
+    [[nodiscard]] int frameCount() const { return lastFrame - firstFrame + 1; }
+    /// The file frame f goes to (the output itself for a one-file format).
+    [[nodiscard]] QString framePath(int frame) const;
+};
+
+/// The first problem of a job, empty when valid: a frame range within +-kMaxFrame, first <= last,
+/// an output named.
+[[nodiscard]] QString exportJobProblem(const ExportJob& job);
+
+/// What a running export reports and asks, on the exporting thread.
+struct ExportCallbacks {
+    /// After each frame is evaluated: how many are done of how many.
+    std::function<void(int done, int total)> progress;
+    /// Asked before each frame: true stops the export. The file being written is dropped (a
+    /// one-file format leaves no file; an OBJ sequence keeps the frames already written).
+    std::function<bool()> cancelled;
+};
+
+struct ExportResult {
+    int frames = 0; ///< frames evaluated and written
+    bool cancelled = false;
+    /// Translated notes on what the format could not carry (a skinned base in glTF).
+    QStringList warnings;
+    QStringList files; ///< the files written
+};
+
+/// Exports a project's frames. source names the project in errors. Throws IoError naming the
+/// project (no base model, keys that cannot be blended, a bad job) or the file that could not be
+/// written.
+ExportResult exportProject(
+    const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks = {});
+
+namespace exporting {
+
+/// The frames of a job as every format walks them: the evaluator prepared once, then each frame
+/// evaluated through the camera at that frame (cameraAtFrame), progress reported, cancel asked.
+class FrameWalk {
+public:
+    FrameWalk(const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks);
+    /// Evaluates the next frame; false when the range is done or the export was cancelled.
+    bool next();
+    [[nodiscard]] int frame() const { return m_frame; }
+    [[nodiscard]] const Camera& camera() const { return m_camera; }
+    [[nodiscard]] const FrameEvaluator& evaluator() const { return m_evaluator; }
+    [[nodiscard]] bool cancelled() const { return m_cancelled; }
+    [[nodiscard]] int done() const { return m_done; }
+
+private:
+    const ProjectData& m_data;
+    const ExportJob& m_job;
+    const ExportCallbacks& m_callbacks;
+    FrameEvaluator m_evaluator;
+    Camera m_camera;
+    int m_frame = 0;
+    int m_done = 0;
+    bool m_cancelled = false;
+};
+
+/// Ends a one-file format's atomic write: dropped when cancelled (no file left), else committed
+/// (an IoError naming the file when that fails) and listed in result.
+void finishFile(QSaveFile& file, bool cancelled, ExportResult& result);
+
+void writePc2(const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks,
+    ExportResult& result);
+void writeObjSequence(const ProjectData& data, const QString& source, const ExportJob& job,
+    const ExportCallbacks& callbacks, ExportResult& result);
+void writeGltf(const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks,
+    ExportResult& result);
+
+} // namespace exporting
+
+} // namespace celform::model

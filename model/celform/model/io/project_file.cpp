@@ -1,0 +1,363 @@
+// Writing .celform files (layout in docs/file-format.md): a header, raw binary chunks straight from
+// memory, a JSON manifest describing them, and a trailer that locates the manifest; the previous
+// version is kept as .bak. Reading is project_file_read.cpp.
+#include "celform/model/io/project_file.h"
+#include "celform/model/io/project_file_format.h"
+
+#include "celform/algorithms/mesh_analysis.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/data/io_error.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QtEndian>
+
+#include <zlib.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <new>
+#include <set>
+
+#include <unistd.h>
+
+namespace celform::model {
+namespace {
+
+using namespace project_format;
+
+// --- writing ----------------------------------------------------------------------------------
+
+QJsonArray vec3(const Eigen::Vector3d& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
+QJsonArray vec3f(const Eigen::Vector3f& v)
+{
+    return {double(v.x()), double(v.y()), double(v.z())};
+}
+
+/// Collects chunks (pointers into the data, no copies) and their manifest entries.
+class ChunkWriter {
+public:
+    QString add(const QString& name, const void* data, qint64 size)
+    {
+        m_chunks.push_back({name, static_cast<const char*>(data), size});
+        return name;
+    }
+    template <typename Matrix> QString addMatrix(const QString& name, const Matrix& m)
+    {
+        return add(name, m.data(), qint64(m.size()) * qint64(sizeof(typename Matrix::Scalar)));
+    }
+    template <typename T> QString addVector(const QString& name, const std::vector<T>& v)
+    {
+        return add(name, v.data(), qint64(v.size() * sizeof(T)));
+    }
+
+    void write(QSaveFile& file, QJsonObject manifest)
+    {
+        QByteArray header(kHeaderSize, '\0');
+        std::memcpy(header.data(), kMagic, 8);
+        qToLittleEndian<quint32>(quint32(kProjectFormatVersion), header.data() + 8);
+        put(file, header.constData(), header.size());
+
+        QJsonObject table;
+        static const char zeros[8] = {};
+        for (const Chunk& c : m_chunks) {
+            const qint64 pad = (8 - m_pos % 8) % 8;
+            put(file, zeros, pad);
+            table.insert(c.name,
+                QJsonObject{
+                    {"offset", double(m_pos)}, {"size", double(c.size)}, {"crc32", double(crc32Of(c.data, c.size))}});
+            put(file, c.data, c.size);
+        }
+        manifest.insert("chunks", table);
+        const QByteArray json = QJsonDocument(manifest).toJson(QJsonDocument::Indented);
+        const qint64 manifestOffset = m_pos;
+        put(file, json.constData(), json.size());
+
+        char trailer[kTrailerSize] = {};
+        qToLittleEndian<quint64>(quint64(manifestOffset), trailer);
+        qToLittleEndian<quint64>(quint64(json.size()), trailer + 8);
+        qToLittleEndian<quint32>(crc32Of(json.constData(), json.size()), trailer + 16);
+        std::memcpy(trailer + 24, kEndMagic, 8);
+        put(file, trailer, kTrailerSize);
+    }
+
+private:
+    void put(QSaveFile& file, const char* data, qint64 size)
+    {
+        if (size > 0 && file.write(data, size) != size)
+            throw IoError(file.fileName(), ProjectFile::tr("could not be written: %1").arg(file.errorString()));
+        m_pos += size;
+    }
+
+    struct Chunk {
+        QString name;
+        const char* data;
+        qint64 size;
+    };
+    std::vector<Chunk> m_chunks;
+    qint64 m_pos = 0;
+};
+
+QJsonArray floats(const std::vector<float>& values)
+{
+    QJsonArray a;
+    for (float v : values)
+        a.append(double(v));
+    return a;
+}
+
+QJsonArray matrix3(const Eigen::Matrix3f& m)
+{
+    QJsonArray rows;
+    for (int r = 0; r < 3; ++r)
+        rows.append(vec3f(m.row(r).transpose()));
+    return rows;
+}
+
+QJsonArray highlightsJson(const std::vector<HighlightTrack>& tracks)
+{
+    QJsonArray out;
+    for (const HighlightTrack& t : tracks)
+        out.append(highlightTrackJson(t));
+    return out;
+}
+
+QJsonObject lookJson(const Look& look)
+{
+    QJsonObject materialStyles;
+    for (const auto& [material, style] : look.materialStyles)
+        materialStyles.insert(QString::number(material), enumName(style));
+    const auto& g = look.gooch;
+    const auto& l = look.lineStyle;
+    const auto& st = look.stereo;
+    QJsonObject out{{"style", enumName(look.style)}, {"material_styles", materialStyles},
+        {"light", QJsonObject{{"type", enumName(look.light.type)}, {"vector", vec3(look.light.vector)}}},
+        {"background", vec3f(look.backgroundColor)},
+        {"toon",
+            QJsonObject{{"thresholds", floats(look.toon.thresholds)}, {"intensities", floats(look.toon.intensities)},
+                {"evaluation", enumName(look.toonEvaluation)}}},
+        {"gooch",
+            QJsonObject{{"preset", QString::fromStdString(g.preset)}, {"ka", double(g.ka)}, {"k1", double(g.k1)},
+                {"k2", double(g.k2)}, {"k3", double(g.k3)}, {"k4", double(g.k4)}, {"warm", vec3f(g.warm)},
+                {"cool", vec3f(g.cool)}}},
+        {"hatch",
+            QJsonObject{{"spacing", double(look.hatch.spacing)}, {"angle_degrees", double(look.hatch.angleDegrees)},
+                {"width", double(look.hatch.width)}}},
+        {"lines", look.showLines},
+        {"line_kinds",
+            QJsonObject{{"silhouettes", look.lines.silhouettes}, {"creases", look.lines.creases},
+                {"borders", look.lines.borders}, {"material_boundaries", look.lines.materialBoundaries},
+                {"crease_angle_degrees", double(look.lines.creaseAngleDegrees)}, {"ridges", look.lines.ridges},
+                {"ridge_threshold", double(look.lines.ridgeThreshold)}}},
+        {"line_style",
+            QJsonObject{{"color", vec3f(l.color)}, {"outline_width", double(l.outlineWidth)},
+                {"inner_width", double(l.innerWidth)}, {"jitter", double(l.jitter)},
+                {"width_variation", double(l.widthVariation)}, {"overshoot", double(l.overshoot)},
+                {"seed", double(l.seed)}}},
+        {"stereo",
+            QJsonObject{{"output", enumName(st.output)}, {"interocular", st.interocular},
+                {"convergence", st.convergence}, {"toe_in", st.toeIn}, {"swap_eyes", st.swapEyes},
+                {"dubois_left", matrix3(st.dubois.left)}, {"dubois_right", matrix3(st.dubois.right)}}},
+        {"highlights", highlightsJson(look.highlights)}};
+    if (look.renderCamera)
+        out.insert("render_camera", cameraJson(*look.renderCamera));
+    if (!look.cameraPath.empty())
+        out.insert("camera_path", cameraPathJson(look.cameraPath));
+    return out;
+}
+
+/// The animated base (algo::BaseAnimation) as manifest entries and data blocks.
+QJsonObject baseAnimationJson(const algo::BaseAnimation& a, ChunkWriter& chunks)
+{
+    QJsonArray targets;
+    for (std::size_t t = 0; t < a.morphTargets.size(); ++t)
+        targets.append(chunks.addMatrix(QStringLiteral("animation/morph_targets/%1").arg(t), a.morphTargets[t]));
+    QJsonObject out{{"first_frame", a.firstFrame}, {"frame_count", a.frameCount}, {"morph_targets", targets},
+        {"morph_weights", chunks.addVector("animation/morph_weights", a.morphWeights)}, {"joint_count", a.jointCount}};
+    if (a.skinned()) {
+        out.insert("joints", chunks.addVector("animation/joints", a.joints));
+        out.insert("joint_weights", chunks.addVector("animation/joint_weights", a.jointWeights));
+        out.insert("skin_matrices",
+            chunks.add("animation/skin_matrices", a.skinMatrices.data(),
+                qint64(a.skinMatrices.size() * sizeof(algo::SkinMatrix))));
+    }
+    return out;
+}
+
+QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
+{
+    QJsonObject root;
+    root.insert("format_version", kProjectFormatVersion);
+    root.insert("generator", QStringLiteral("Celform %1").arg(QStringLiteral(CELFORM_VERSION)));
+
+    if (const auto& mesh = data.baseMesh) {
+        QJsonObject m{{"name", data.baseMeshName}, {"vertex_count", double(mesh->vertexCount())},
+            {"face_count", double(mesh->faceCount())}, {"vertices", chunks.addMatrix("mesh/vertices", mesh->vertices)},
+            {"faces", chunks.addMatrix("mesh/faces", mesh->faces)}};
+        if (mesh->uvs.rows() > 0) {
+            m.insert("uv_count", double(mesh->uvs.rows()));
+            m.insert("uvs", chunks.addMatrix("mesh/uvs", mesh->uvs));
+            m.insert("uv_faces", chunks.addMatrix("mesh/uv_faces", mesh->uvFaces));
+        }
+        if (!mesh->faceMaterials.empty())
+            m.insert("face_materials", chunks.addVector("mesh/face_materials", mesh->faceMaterials));
+        QJsonArray materials;
+        for (const auto& mat : mesh->materials)
+            materials.append(
+                QJsonObject{{"name", QString::fromStdString(mat.name)}, {"base_color", vec3f(mat.baseColor)}});
+        m.insert("materials", materials);
+        QJsonArray sets;
+        for (std::size_t i = 0; i < data.faceSets.size(); ++i) {
+            const auto& set = data.faceSets[i];
+            sets.append(QJsonObject{{"name", QString::fromStdString(set.name)}, {"count", double(set.faces.size())},
+                {"faces", chunks.addVector(QStringLiteral("mesh/face_sets/%1").arg(i), set.faces)}});
+        }
+        m.insert("face_sets", sets);
+        root.insert("base_mesh", m);
+        if (data.animated())
+            root.insert("base_animation", baseAnimationJson(*data.baseAnimation, chunks));
+    }
+
+    QJsonArray drawings;
+    for (const auto& d : data.drawings) {
+        drawings.append(QJsonObject{{"id", double(d.id)}, {"name", d.name}, {"format", d.imageFormat},
+            {"image",
+                chunks.add(QStringLiteral("drawings/%1/image").arg(d.id), d.imageData.constData(), d.imageData.size())},
+            {"camera", cameraJson(d.camera)}, {"aligned", d.aligned}, {"opacity", d.opacity}, {"frame", d.frame}});
+    }
+    root.insert("drawings", drawings);
+
+    QJsonArray keys;
+    for (const auto& k : data.keys) {
+        QJsonArray frames;
+        for (const auto& [frame, offsets] : k.offsetsByFrame) {
+            const QString prefix = QStringLiteral("keys/%1/frames/%2/").arg(k.id).arg(frame);
+            frames.append(QJsonObject{{"frame", frame}, {"count", double(offsets.indices.size())},
+                {"indices", chunks.addVector(prefix + "indices", offsets.indices)},
+                {"offsets",
+                    chunks.add(prefix + "offsets", offsets.deltas.data(),
+                        qint64(offsets.deltas.size() * sizeof(Eigen::Vector3f)))}});
+        }
+        QJsonArray linked;
+        for (ObjectId id : k.drawingIds)
+            linked.append(double(id));
+        QJsonObject key{{"id", double(k.id)}, {"name", k.name}, {"direction", vec3(k.direction)},
+            {"camera", cameraJson(k.camera)}, {"drawings", linked}, {"enabled", k.enabled}, {"frames", frames}};
+        // The key's layer of shading offsets (paper 3, eq. 4.3), dense per vertex per keyed frame.
+        if (!k.shadingOffsetsByFrame.empty()) {
+            QJsonArray shading;
+            for (const auto& [frame, values] : k.shadingOffsetsByFrame)
+                shading.append(QJsonObject{{"frame", frame}, {"count", double(values.size())},
+                    {"values",
+                        chunks.addVector(QStringLiteral("keys/%1/shading_offsets/%2").arg(k.id).arg(frame), values)}});
+            key.insert("shading_offsets", shading);
+        }
+        keys.append(key);
+    }
+    root.insert("keys", keys);
+
+    root.insert("blend",
+        QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", enumName(data.blend.unspecified)},
+            {"time", enumName(data.blend.time)}});
+    root.insert("look", lookJson(data.look));
+    if (!data.shadingOffsets.empty()) {
+        root.insert("shading_offsets",
+            QJsonObject{{"count", double(data.shadingOffsets.size())},
+                {"values", chunks.addVector("mesh/shading_offsets", data.shadingOffsets)}});
+    }
+    root.insert("next_id", double(data.nextId));
+    root.insert("current_frame", data.currentFrame);
+    root.insert("scene",
+        QJsonObject{
+            {"fps", data.time.fps}, {"first_frame", data.time.firstFrame}, {"last_frame", data.time.lastFrame}});
+    return root;
+}
+
+/// Makes PATH.bak the current PATH, before the new version replaces it. The new backup is made
+/// beside the old one and renamed over it, so a kill at any instant leaves a whole backup (the old
+/// one or the new); removing the old .bak first left none for a moment (15 of 60 aimed kills).
+void keepPreviousVersion(const QString& path)
+{
+    const QByteArray current = QFile::encodeName(path);
+    const QByteArray backup = current + ".bak";
+    const QByteArray staged = current + ".bak.new";
+    ::unlink(staged.constData()); // left by an interrupted save; .bak is still whole
+    // A hard link keeps the previous version at no cost; fall back to a copy.
+    if (::link(current.constData(), staged.constData()) != 0 && !QFile::copy(path, QFile::decodeName(staged)))
+        return; // no backup can be made here (as before): the save itself goes on
+    // rename(2) replaces .bak atomically. When both already name the same file (a save killed
+    // after this step and before its commit) it does nothing, so the staged name is removed after.
+    ::rename(staged.constData(), backup.constData());
+    ::unlink(staged.constData());
+}
+
+} // namespace
+
+QJsonArray vec3Json(const Eigen::Vector3d& v)
+{
+    return vec3(v);
+}
+
+QJsonObject cameraJson(const Camera& c)
+{
+    return {{"eye", vec3(c.eye)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
+        {"projection", enumName(c.projection)}, {"fov_y_degrees", c.fovYDegrees}, {"ortho_height", c.orthoHeight}};
+}
+
+QJsonArray cameraPathJson(const CameraPath& path)
+{
+    QJsonArray keys;
+    for (const CameraKey& k : path.keys)
+        keys.append(QJsonObject{{"frame", k.frame}, {"camera", cameraJson(k.camera)}});
+    return keys;
+}
+
+QJsonObject highlightTrackJson(const HighlightTrack& t)
+{
+    QJsonArray combine;
+    for (const auto& [mode, other] : t.combineWith)
+        combine.append(
+            QJsonObject{{"mode", mode == algo::HighlightBoolean::Union ? "union" : "subtract"}, {"layer", other}});
+    QJsonArray keys;
+    for (const algo::HighlightKey& k : t.keys) {
+        QJsonArray operations;
+        for (const algo::HighlightOperation& op : k.layer.shape.operations) {
+            QJsonArray values{double(op.a)};
+            if (highlightOperationArity(op.type) == 2)
+                values.append(double(op.b));
+            operations.append(QJsonObject{{"type", highlightOperationName(op.type)}, {"values", values}});
+        }
+        keys.append(
+            QJsonObject{{"frame", k.frame}, {"color", vec3f(k.layer.color)}, {"epsilon", double(k.layer.shape.epsilon)},
+                {"off_specular_cut", double(k.layer.offSpecularCut)}, {"operations", operations}});
+    }
+    return {{"id", double(t.id)}, {"name", t.name}, {"patch", t.patch}, {"guide", vec3f(t.guide)},
+        {"visible", t.visible}, {"normal_smoothing", t.smoothing}, {"combine", combine}, {"keys", keys}};
+}
+
+void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        throw IoError(path, ProjectFile::tr("could not be opened for writing: %1").arg(file.errorString()));
+    ChunkWriter chunks;
+    const QJsonObject manifest = buildManifest(data, chunks);
+    chunks.write(file, manifest);
+
+    if (keepBackup && QFileInfo(path).isFile())
+        keepPreviousVersion(path);
+    if (!file.commit())
+        throw IoError(path, ProjectFile::tr("could not be saved: %1").arg(file.errorString()));
+}
+
+} // namespace celform::model

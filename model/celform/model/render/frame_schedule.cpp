@@ -1,0 +1,151 @@
+// The threads of a render job (frame_schedule.h). Frames are taken in order from one counter, so
+// with one thread this is the plain loop over the frames; every file is written by the thread
+// that rendered it, atomically (render_output.h), so the threads only share the counter, the
+// callbacks and the first failure, all behind one mutex.
+#include "celform/model/render/frame_schedule.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+#include <mutex>
+#include <new>
+#include <optional>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace celform::model {
+namespace {
+
+struct ScheduleText {
+    Q_DECLARE_TR_FUNCTIONS(celform::model::RenderJob)
+};
+
+struct Failure {
+    int frame;
+    QString file;
+    QString problem;
+};
+
+class Schedule {
+public:
+    Schedule(const RenderJob& job, const RenderCallbacks& callbacks)
+        : m_job(job)
+        , m_callbacks(callbacks)
+        , m_count(job.frameCount())
+    { }
+
+    /// One thread's loop: the next frame until none is left, the render is cancelled or a
+    /// frame has failed.
+    void work(const std::function<FrameRenderer()>& makeRenderer)
+    {
+        FrameRenderer render;
+        const std::function<bool()> cancelled = [this] {
+            const std::lock_guard<std::mutex> lock(m_mutex);
+            return userCancelled();
+        };
+        while (const std::optional<int> index = nextIndex()) {
+            const int frame = m_job.frameAt(*index);
+            const QString file = m_job.framePath(frame);
+            try {
+                if (m_job.skipExisting && QFileInfo(file).isFile()) {
+                    const std::lock_guard<std::mutex> lock(m_mutex);
+                    ++m_done;
+                    if (m_callbacks.skipped)
+                        m_callbacks.skipped(frame, file, m_done);
+                    continue;
+                }
+                if (!render)
+                    render = makeRenderer();
+                if (!render(frame, file, cancelled))
+                    return; // cancelled before the write: userCancelled() has set m_stop
+                const std::lock_guard<std::mutex> lock(m_mutex);
+                ++m_done;
+                ++m_written;
+                if (m_callbacks.written)
+                    m_callbacks.written(frame, file, m_done);
+            } catch (const IoError& e) {
+                fail({frame, e.file(), e.problem()});
+            } catch (const std::bad_alloc&) {
+                fail({frame, file, ScheduleText::tr("not enough memory to render it")});
+            } catch (const std::exception& e) {
+                fail({frame, file, QString::fromLocal8Bit(e.what())});
+            } catch (...) {
+                fail({frame, file, ScheduleText::tr("the render failed")});
+            }
+        }
+    }
+
+    [[nodiscard]] int written() const { return m_written; }
+    [[nodiscard]] const std::optional<Failure>& failure() const { return m_failure; }
+
+private:
+    /// The next frame's index, or none when the threads are to stop.
+    std::optional<int> nextIndex()
+    {
+        const std::lock_guard<std::mutex> lock(m_mutex);
+        if (m_stop || m_next >= m_count || userCancelled())
+            return std::nullopt;
+        return m_next++;
+    }
+
+    /// Asks the caller, with m_mutex held (callbacks are never called two at a time).
+    bool userCancelled()
+    {
+        if (!m_stop && m_callbacks.cancelled && m_callbacks.cancelled())
+            m_stop = true;
+        return m_stop && !m_failure;
+    }
+
+    void fail(Failure failure)
+    {
+        const std::lock_guard<std::mutex> lock(m_mutex);
+        // The lowest frame, so that the message does not depend on which thread came first.
+        if (!m_failure || failure.frame < m_failure->frame)
+            m_failure = std::move(failure);
+        m_stop = true;
+    }
+
+    const RenderJob& m_job;
+    const RenderCallbacks& m_callbacks;
+    const int m_count;
+    std::mutex m_mutex;
+    int m_next = 0;
+    int m_done = 0;
+    int m_written = 0;
+    bool m_stop = false;
+    std::optional<Failure> m_failure;
+};
+
+} // namespace
+
+int scheduleFrames(
+    const RenderJob& job, const RenderCallbacks& callbacks, const std::function<FrameRenderer()>& makeRenderer)
+{
+    Schedule schedule(job, callbacks);
+    const int threads = std::clamp(job.threads, 1, std::max(job.frameCount(), 1));
+    std::vector<std::thread> helpers;
+    helpers.reserve(std::size_t(threads - 1));
+    for (int t = 1; t < threads; ++t) {
+        try {
+            helpers.emplace_back([&schedule, &makeRenderer] { schedule.work(makeRenderer); });
+        } catch (const std::system_error&) {
+            break; // no more threads to be had: the ones running share the frames
+        }
+    }
+    schedule.work(makeRenderer);
+    for (std::thread& helper : helpers)
+        helper.join();
+    if (const std::optional<Failure>& failure = schedule.failure())
+        throw RenderFrameError(failure->frame, failure->file, failure->problem);
+    return schedule.written();
+}
+
+int concurrentFrames(const RenderJob& job, qint64 availableBytes)
+{
+    const qint64 wanted = std::clamp(job.threads, 1, std::max(job.frameCount(), 1));
+    const qint64 perFrame = std::max<qint64>(job.bytesNeeded(), 0) + kRenderThreadOverheadBytes;
+    return int(std::clamp<qint64>(availableBytes / perFrame, 1, wanted));
+}
+
+} // namespace celform::model

@@ -1,0 +1,38 @@
+// Handing a render job's frames to several threads (renderFrames, render_job.h): which frame each
+// thread takes next, frames skipped because their file exists, the callbacks one at a time, and
+// the failure reported once every thread has stopped.
+#pragma once
+
+#include "celform/model/render/render_job.h"
+
+#include <QString>
+
+#include <functional>
+
+namespace celform::model {
+
+/// Renders one frame and writes its file. It may keep buffers and caches between its calls, as
+/// long as the file it writes for a frame does not depend on the frames it rendered before.
+/// cancelled() is asked between the render and the write: when it says stop, nothing is written
+/// and the renderer returns false. Failures are thrown (IoError naming the file, bad_alloc).
+using FrameRenderer = std::function<bool(int frame, const QString& file, const std::function<bool()>& cancelled)>;
+
+/// Runs the job's frames, in order of frame, on min(job.threads, frame count) threads (the
+/// calling thread is one of them), each with a renderer of its own made by makeRenderer on that
+/// thread before its first frame. With job.skipExisting a frame whose file exists (a regular file, or a
+/// link to one) is reported to callbacks.skipped and not rendered. After a failure no new frame starts; the frames
+/// under way on other threads are finished and written. Returns how many files were written; throws RenderFrameError
+/// for the lowest frame that failed.
+int scheduleFrames(
+    const RenderJob& job, const RenderCallbacks& callbacks, const std::function<FrameRenderer()>& makeRenderer);
+
+/// What one thread's stack and its malloc arena take from the address space (8 MB and 64 MB),
+/// counted with every frame's buffers where an address-space limit (ulimit -v) is set.
+constexpr qint64 kRenderThreadOverheadBytes = qint64(72) << 20;
+
+/// How many of a job's frames fit in memory at once: job.threads, fewer when that many frames'
+/// buffers (RenderJob::bytesNeeded, plus kRenderThreadOverheadBytes each) would need more than
+/// availableBytes (availableRenderMemory()), and never more than the job's frames; at least 1.
+int concurrentFrames(const RenderJob& job, qint64 availableBytes);
+
+} // namespace celform::model

@@ -1,0 +1,225 @@
+// Rendering a project's frames to files (render_job.h).
+#include "celform/model/render/render_job.h"
+
+#include "celform/model/render/frame_evaluation.h"
+
+#include "celform/algorithms/tri_mesh.h"
+#include "celform/model/analysis/depth_analysis.h"
+#include "celform/model/analysis/depth_analysis_output.h"
+#include "celform/model/render/frame_schedule.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/render/render_output.h"
+#include "celform/model/data/shading_layers.h"
+#include "celform/model/data/blend_evaluator.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace celform::model {
+namespace {
+
+struct RenderJobText {
+    Q_DECLARE_TR_FUNCTIONS(celform::model::RenderJob)
+};
+
+} // namespace
+
+bool RenderJob::writesAllPasses() const
+{
+    return QFileInfo(output).suffix().toLower() == QLatin1String("exr") && pass.isEmpty()
+        && stereo == algo::StereoOutput::Off;
+}
+
+QString RenderJob::framePath(int frame) const
+{
+    const int first = int(output.indexOf(QLatin1Char('#')));
+    if (first >= 0) {
+        int last = first;
+        while (last + 1 < output.size() && output[last + 1] == QLatin1Char('#'))
+            ++last;
+        return output.left(first) + QStringLiteral("%1").arg(frame, last - first + 1, 10, QLatin1Char('0'))
+            + output.mid(last + 1);
+    }
+    if (!isSequence())
+        return output;
+    const QFileInfo info(output);
+    return info.dir().filePath(
+        QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(frame, 4, 10, QLatin1Char('0')).arg(info.suffix()));
+}
+
+qint64 RenderJob::bytesNeeded() const
+{
+    const qint64 perPixel = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2)
+        + (writesAllPasses() ? 32 : 0) + (analysisPictureFromName(pass) ? kAnalysisBytesPerPixel : 0);
+    return qint64(size.width()) * size.height() * perPixel;
+}
+
+QStringList renderSuffixes()
+{
+    return {QStringLiteral("png"), QStringLiteral("exr"), QStringLiteral("tif"), QStringLiteral("tiff"),
+        QStringLiteral("jpg"), QStringLiteral("jpeg")};
+}
+
+qint64 availableRenderMemory()
+{
+    qint64 available = std::numeric_limits<qint64>::max();
+    QFile meminfo(QStringLiteral("/proc/meminfo"));
+    if (meminfo.open(QIODevice::ReadOnly)) {
+        for (const QByteArray& line : meminfo.readAll().split('\n'))
+            if (line.startsWith("MemAvailable:"))
+                available = line.mid(13).trimmed().split(' ').value(0).toLongLong() * 1024;
+    }
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+        QFile statm(QStringLiteral("/proc/self/statm"));
+        const qint64 used = statm.open(QIODevice::ReadOnly)
+            ? statm.readAll().split(' ').value(0).toLongLong() * ::sysconf(_SC_PAGESIZE)
+            : 0;
+        available = std::min(available, qint64(limit.rlim_cur) - used);
+    }
+    return available;
+}
+
+Look renderJobLook(const ProjectData& data, const RenderJob& job)
+{
+    Look look = data.look;
+    if (job.style) {
+        look.style = *job.style;
+        look.materialStyles.clear();
+    }
+    if (job.lines)
+        look.showLines = *job.lines;
+    if (job.lineKinds) {
+        const std::uint8_t k = *job.lineKinds;
+        look.showLines = true;
+        look.lines.silhouettes = (k & algo::kSilhouette) != 0;
+        look.lines.creases = (k & algo::kCrease) != 0;
+        look.lines.borders = (k & algo::kBorder) != 0;
+        look.lines.materialBoundaries = (k & algo::kMaterialBoundary) != 0;
+        look.lines.ridges = (k & algo::kRidge) != 0;
+    }
+    if (job.ridgeThreshold)
+        look.lines.ridgeThreshold = *job.ridgeThreshold;
+    if (job.light)
+        look.light = *job.light;
+    return look;
+}
+
+Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job, int frame)
+{
+    if (job.camera)
+        return *job.camera;
+    const double aspect = double(job.size.width()) / std::max(1, job.size.height());
+    if (job.view)
+        return cameraFromView(data, *job.view, aspect);
+    return cameraAtFrame(data, look, frame, aspect);
+}
+
+ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job)
+{
+    if (!data.baseMesh)
+        throw IoError(source, RenderJobText::tr("has no base model"));
+    ResolvedRenderJob resolved;
+    // The overrides apply to this job only.
+    resolved.look = renderJobLook(data, job);
+    resolved.camera = renderJobCamera(data, resolved.look, job, job.firstFrame);
+    QString error;
+    if (!resolved.blender.update(data, &error))
+        throw IoError(source, error);
+    resolved.direction = BlendEvaluator::viewDirection(data, resolved.camera.eye, job.firstFrame);
+    return resolved;
+}
+
+namespace {
+
+/// One thread's renderer of a job's frames (a FrameRenderer): its own buffers and caches, which
+/// only spare work whose result they hold exactly (the shape keeps its generation while frames
+/// leave it still, so highlight geometry and the analyser's curvature are reused).
+class FrameWorker {
+public:
+    FrameWorker(const ProjectData& data, const RenderJob& job, const ResolvedRenderJob& resolved)
+        : m_data(data)
+        , m_job(job)
+        , m_resolved(resolved)
+        , m_allPasses(job.writesAllPasses())
+        , m_floatFile(QFileInfo(job.output).suffix().toLower() == QLatin1String("exr"))
+        , m_analysisPicture(analysisPictureFromName(job.pass))
+    {
+        // resolveRenderJob has built the same sphere already, and thrown if it could not.
+        m_evaluator.prepare(data);
+    }
+
+    bool render(int f, const QString& target, const std::function<bool()>& cancelled)
+    {
+        const ProjectData& data = m_data;
+        // The one evaluation of a frame (frame_evaluation.h): the camera at the frame (the path's
+        // when the project has one), the animated base there, the view direction and the shape.
+        const Camera camera = renderJobCamera(data, m_resolved.look, m_job, f);
+        m_evaluator.evaluate(data, f, camera.eye);
+        const algo::Positions& next = m_evaluator.shape();
+        if (m_shape.generation == 0 || next.rows() != m_shape.positions.rows() || next != m_shape.positions) {
+            m_shape.positions = next;
+            m_shape.touch();
+        }
+        effectiveShadingOffsets(data, m_evaluator.blender(), m_evaluator.direction(), f, m_offsets);
+        // The analysis passes (segments, curvature, depth error) come from the depth analysis of
+        // the centre eye's picture.
+        if (m_analysisPicture) {
+            m_analyzer.analyze(data, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
+                m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_offsets);
+            if (cancelled())
+                return false;
+            writeImage(analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile), target);
+            return true;
+        }
+        const algo::RenderPasses passes = renderShape(data, m_resolved.look, m_shape.positions, f, camera,
+            m_job.size.width(), m_job.size.height(), m_job.stereo, m_cache, m_shape.generation, &m_offsets);
+        if (cancelled())
+            return false;
+        if (m_allPasses)
+            writePassesExr(passes, target);
+        else
+            writeImage(
+                passImage(passes, m_job.pass.isEmpty() ? QStringLiteral("beauty") : m_job.pass, m_floatFile), target);
+        return true;
+    }
+
+private:
+    const ProjectData& m_data;
+    const RenderJob& m_job;
+    const ResolvedRenderJob& m_resolved;
+    const bool m_allPasses;
+    const bool m_floatFile;
+    const std::optional<AnalysisPicture> m_analysisPicture;
+    FrameEvaluator m_evaluator;
+    algo::RenderCache m_cache;
+    DepthAnalyzer m_analyzer;
+    FrameAnalysis m_analysed;
+    algo::Shape m_shape;
+    std::vector<float> m_offsets; // in effect at the camera's view and the frame (shading_layers.h)
+};
+
+} // namespace
+
+int renderFrames(const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks)
+{
+    const ResolvedRenderJob resolved = resolveRenderJob(data, source, job);
+    return scheduleFrames(job, callbacks, [&]() -> FrameRenderer {
+        auto worker = std::make_shared<FrameWorker>(data, job, resolved);
+        return [worker](int frame, const QString& file, const std::function<bool()>& cancelled) {
+            return worker->render(frame, file, cancelled);
+        };
+    });
+}
+
+} // namespace celform::model

@@ -1,0 +1,141 @@
+// Rendering a project's frames to files: the one code path of `celform render` and of the
+// editor's File > Render Image and Render Sequence (DESIGN.md, "Rendering"). The settings are
+// those of the command line; the camera, the view-dependent shape and the look are resolved here.
+#pragma once
+
+#include "celform/algorithms/stereo.h"
+#include "celform/model/data/camera.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/data/project_data.h"
+#include "celform/model/data/blend_evaluator.h"
+#include "celform/model/data/framed_camera.h"
+
+#include <Eigen/Core>
+
+#include <QSize>
+#include <QString>
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+
+namespace celform::model {
+
+/// The most frames one render writes.
+constexpr int kMaxFramesPerRender = 100'000;
+/// The widest or tallest image.
+constexpr int kMaxRenderSide = 16384;
+/// The most pixels of one image: 8192 x 8192, about 5.9 GB for the renderer's passes.
+constexpr qint64 kMaxRenderPixels = qint64(8192) * 8192;
+/// What the renderer holds per pixel (G-buffer, passes and the beauty image, measured); a stereo
+/// render holds two eyes.
+constexpr qint64 kRenderBytesPerPixel = 88;
+/// What the depth analysis adds per pixel (its G-buffer, labels, features, distance transform).
+constexpr qint64 kAnalysisBytesPerPixel = 64;
+
+/// What to render and where: the options of `celform render`.
+struct RenderJob {
+    /// The camera: this one when set, else one framed from view, else the look's camera path at
+    /// each frame, else the look's render camera, else one framed from defaultRenderView().
+    std::optional<Camera> camera;
+    std::optional<Eigen::Vector3d> view; ///< from the centroid towards the eye; not zero
+    int firstFrame = 0;
+    int lastFrame = 0; ///< >= firstFrame; several frames make a sequence
+    int step = 1; ///< >= 1: frames firstFrame, firstFrame + step, ... up to lastFrame
+    QSize size{1280, 720};
+    /// Overrides of the project's look for this render only.
+    std::optional<ShadingStyle> style;
+    std::optional<bool> lines;
+    /// `--lines KIND,...`: lines on with exactly these algo::LineKind bits (ridges included).
+    std::optional<std::uint8_t> lineKinds;
+    std::optional<float> ridgeThreshold; ///< `--ridge-threshold T`, >= 0
+    std::optional<Light> light;
+    algo::StereoOutput stereo = algo::StereoOutput::Off;
+    /// One of renderPassNames(); empty: the beauty pass, or every pass as channels of an .exr.
+    QString pass;
+    /// The file, or for a sequence a pattern: a run of # is the zero-padded frame number;
+    /// without one, "_FFFF" goes before the suffix.
+    QString output;
+    /// How many frames render at once, each on a thread of its own with its own buffers (>= 1).
+    /// The files do not depend on it.
+    int threads = 1;
+    /// Frames whose file exists already are left as they are (a resubmitted farm job resumes).
+    bool skipExisting = false;
+
+    [[nodiscard]] bool isSequence() const { return frameCount() > 1; }
+    [[nodiscard]] int frameCount() const { return (lastFrame - firstFrame) / std::max(step, 1) + 1; }
+    /// The index-th frame of the job (0 <= index < frameCount()).
+    [[nodiscard]] int frameAt(int index) const { return firstFrame + index * std::max(step, 1); }
+    /// An .exr without a pass, in mono: every pass as named channels.
+    [[nodiscard]] bool writesAllPasses() const;
+    /// The file frame f goes to.
+    [[nodiscard]] QString framePath(int frame) const;
+    /// About how many bytes the renderer holds for one frame (two eyes in stereo, a float copy of
+    /// the passes for an EXR of every pass).
+    [[nodiscard]] qint64 bytesNeeded() const;
+};
+
+/// The image suffixes a render writes (lower case): png, exr, tif, tiff, jpg, jpeg.
+QStringList renderSuffixes();
+
+/// The memory a render may use now: the system's available memory, and the address-space limit
+/// (ulimit -v) less what this process uses, if one is set.
+qint64 availableRenderMemory();
+
+
+/// The project's look with the job's overrides (style, lines, light) applied.
+Look renderJobLook(const ProjectData& data, const RenderJob& job);
+
+/// The camera a job looks through at a frame (see RenderJob::camera). Needs a base mesh.
+Camera renderJobCamera(const ProjectData& data, const Look& look, const RenderJob& job, int frame);
+
+/// What a job looks at and through, resolved once: the look with the job's overrides, the camera
+/// at the first frame, and the blend evaluator built for the project's keys with that camera's
+/// view direction. Later frames take their camera from renderJobCamera().
+struct ResolvedRenderJob {
+    Look look;
+    Camera camera;
+    BlendEvaluator blender;
+    Eigen::Vector3d direction;
+};
+
+/// Resolves a job for a project; throws IoError naming source when there is no base model or the
+/// keys cannot be blended.
+ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job);
+
+/// What a running render reports and asks. They are called one at a time (never two at once),
+/// from the thread rendering the frame: with job.threads > 1 that is not always the same thread.
+struct RenderCallbacks {
+    /// After each frame's file is written: the frame, the file and how many frames are done
+    /// (written or skipped).
+    std::function<void(int frame, const QString& file, int done)> written;
+    /// A frame left out because its file exists (RenderJob::skipExisting), counted in done.
+    std::function<void(int frame, const QString& file, int done)> skipped;
+    /// Asked before each frame and before each write: true stops the render there (a frame
+    /// rendered but not yet written is dropped; the files written so far stay).
+    std::function<bool()> cancelled;
+};
+
+/// A frame that could not be rendered or written: the frame, and the file and problem as IoError
+/// gives them. The frames finished before it (or beside it, on other threads) stay written.
+class RenderFrameError : public IoError {
+public:
+    RenderFrameError(int frame, const QString& file, const QString& problem)
+        : IoError(file, problem)
+        , m_frame(frame)
+    { }
+    [[nodiscard]] int frame() const { return m_frame; }
+
+private:
+    int m_frame;
+};
+
+/// Renders the job's frames of a project and writes one file per frame (atomically), job.threads
+/// frames at a time. source names the project in errors. Returns how many frames were written
+/// (fewer when cancelled or skipped). Throws IoError naming the project (no base model, keys that
+/// cannot be blended), RenderFrameError for the first frame (the lowest, when several threads
+/// fail) that could not be rendered or written, once the frames already under way are finished.
+int renderFrames(
+    const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks = {});
+
+} // namespace celform::model

@@ -1,0 +1,440 @@
+// Render output through OpenImageIO (the module of raster_codec.h).
+#include "celform/model/render/render_output.h"
+
+#include "celform/model/analysis/depth_analysis_output.h"
+#include "celform/model/data/io_error.h"
+#include "celform/model/io/raster_codec.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QSysInfo>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace celform::model {
+namespace {
+
+struct RenderOutput {
+    Q_DECLARE_TR_FUNCTIONS(celform::model::RenderOutput)
+};
+
+/// Makes a new empty file beside the target, with the same suffix so that OpenImageIO picks the
+/// format, and returns its name. The name holds the host, the process and a counter, and the file
+/// is created exclusively: threads and farm nodes writing into one shared folder never write into
+/// each other's file. A file left by a killed process is hidden (a dot) and never has the target's
+/// name. Throws IoError naming the target when the folder does not take the file.
+QString createTemporaryBeside(const QString& path)
+{
+    static std::atomic<unsigned> counter{0};
+    const QFileInfo info(path);
+    const QString owner = QStringLiteral("%1-%2").arg(QSysInfo::machineHostName()).arg(::getpid());
+    for (int attempt = 0;; ++attempt) {
+        const QString name = info.dir().filePath(QStringLiteral(".%1.%2-%3.tmp.%4")
+                                                     .arg(info.completeBaseName(), owner)
+                                                     .arg(counter.fetch_add(1))
+                                                     .arg(info.suffix()));
+        // 0666 less the umask, as OpenImageIO would create the file.
+        const int fd = ::open(QFile::encodeName(name).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            ::close(fd);
+            return name;
+        }
+        if (errno != EEXIST || attempt >= 100)
+            throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(errno)));
+    }
+}
+
+/// Puts the finished temporary file in the target's place. Its bytes go to the disk first: after
+/// a crash of the machine the target holds the old file or the whole new one, never an empty one.
+void commit(const QString& temporary, const QString& path)
+{
+    const QByteArray from = QFile::encodeName(temporary);
+    const int fd = ::open(from.constData(), O_RDONLY | O_CLOEXEC);
+    const bool synced = fd >= 0 && ::fsync(fd) == 0;
+    const int syncError = errno;
+    if (fd >= 0)
+        ::close(fd);
+    if (!synced) {
+        QFile::remove(temporary);
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(syncError)));
+    }
+    if (std::rename(from.constData(), QFile::encodeName(path).constData()) != 0) {
+        const int renameError = errno;
+        QFile::remove(temporary);
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(renameError)));
+    }
+}
+
+/// Writes channels of float data; 8-bit formats get sRGB-encoded colour channels.
+void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const std::vector<float>& data, bool encodeSrgb)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    const bool isFloat = suffix == QLatin1String("exr");
+    const QStringList known = {QStringLiteral("png"), QStringLiteral("tif"), QStringLiteral("tiff"),
+        QStringLiteral("jpg"), QStringLiteral("jpeg"), QStringLiteral("exr")};
+    if (!known.contains(suffix))
+        throw IoError(path, RenderOutput::tr("has an unknown image type; use .png, .tif, .jpg or .exr"));
+    const int channels = int(names.size());
+    const RasterCodec& codec = rasterCodec(path);
+    std::vector<unsigned char> bytes;
+    if (!isFloat) {
+        bytes.resize(data.size());
+        for (std::size_t i = 0; i < data.size(); ++i) {
+            const int c = int(i % std::size_t(channels));
+            float v = std::clamp(data[i], 0.f, 1.f);
+            if (encodeSrgb && c < 3 && names[std::size_t(c)] != "A")
+                v = algo::linearToSrgb(v);
+            bytes[i] = static_cast<unsigned char>(std::lround(v * 255.f));
+        }
+    }
+    // Nothing below throws between making the temporary file and removing or renaming it.
+    const QString temporary = createTemporaryBeside(path);
+    const QString error = isFloat ? codec.write(temporary, width, height, names, true, data.data())
+                                  : codec.write(temporary, width, height, names, false, bytes.data());
+    if (!error.isEmpty()) {
+        QFile::remove(temporary);
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
+    }
+    commit(temporary, path);
+}
+
+} // namespace
+
+algo::RenderLook renderLookFor(const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets)
+{
+    algo::RenderLook r;
+    auto toAlgo = [](ShadingStyle s) {
+        switch (s) {
+        case ShadingStyle::Lambert:
+            return algo::Style::Lambert;
+        case ShadingStyle::Gooch:
+            return algo::Style::Gooch;
+        case ShadingStyle::Comic:
+            return algo::Style::Comic;
+        case ShadingStyle::Toon:
+            break;
+        }
+        return algo::Style::Toon;
+    };
+    r.style = toAlgo(look.style);
+    const std::size_t materials = data.baseMesh ? data.baseMesh->materials.size() : 0;
+    for (std::size_t m = 0; m < std::max<std::size_t>(materials, 1); ++m) {
+        r.materialStyles.push_back(toAlgo(look.styleOf(int(m))));
+        r.materialColors.push_back(m < materials ? data.baseMesh->materials[m].baseColor : r.defaultColor);
+    }
+    r.background = look.backgroundColor;
+    r.pointLight = look.light.type == LightType::Point;
+    r.light = look.light.vector.cast<float>();
+    r.toon = look.toon;
+    r.toonEvaluation = look.toonEvaluation;
+    r.gooch = look.gooch;
+    if (look.gooch.preset == "auto") {
+        // Paper 1, section 3.2.4: the coefficients follow each material's hue; the artist's
+        // warm and cool colours stay.
+        for (const algo::Color& base : r.materialColors) {
+            algo::GoochParams p = algo::goochPresetForColor(base);
+            p.warm = look.gooch.warm;
+            p.cool = look.gooch.cool;
+            r.materialGooch.push_back(p);
+        }
+        r.gooch = r.materialGooch.front();
+    }
+    r.hatch = look.hatch;
+    r.lines = look.showLines;
+    r.lineSettings = look.lines;
+    r.lineStyle = look.lineStyle;
+    const std::vector<float>& offsets = shadingOffsets ? *shadingOffsets : data.shadingOffsets;
+    r.shadingOffsets = offsets.empty() ? nullptr : &offsets;
+    return r;
+}
+
+/// Rounds of neighbour averaging of a guide's projections: enough to fill the spots where the guide
+/// is nearly normal to the surface without washing out the artist's direction.
+constexpr int kGuideSmoothingRounds = 4;
+
+namespace {
+
+/// 64-bit FNV-1a over raw bytes, chained through seed.
+std::uint64_t hashBytes(const void* bytes, std::size_t size, std::uint64_t seed = 14695981039346656037ull)
+{
+    const auto* p = static_cast<const unsigned char*>(bytes);
+    std::uint64_t h = seed;
+    for (std::size_t i = 0; i < size; ++i)
+        h = (h ^ p[i]) * 1099511628211ull;
+    return h;
+}
+
+constexpr std::size_t kHighlightGeometryEntries = 8;
+
+} // namespace
+
+std::vector<algo::RenderHighlight> renderHighlightsFor(const ProjectData& data, const Look& look,
+    const algo::Positions& shape, int frame, algo::RenderCache* cache, std::uint64_t shapeGeneration)
+{
+    if (shapeGeneration == 0)
+        cache = nullptr; // positions of unknown origin: nothing to recognise them by
+    std::vector<algo::RenderHighlight> out;
+    if (look.highlights.empty() || !data.baseMesh)
+        return out;
+    const algo::TriMesh& mesh = *data.baseMesh;
+    const algo::Positions normals = algo::vertexNormals(shape, mesh.faces);
+    // UV frames are shared by every track; a copy of the mesh carries the deformed positions.
+    algo::Positions uvDu, uvDv;
+    bool haveUvFrames = false;
+    if (mesh.hasUvs()) {
+        algo::TriMesh deformed = mesh;
+        deformed.vertices = shape;
+        haveUvFrames = algo::vertexTangentFramesFromUvs(deformed, normals, uvDu, uvDv);
+    }
+    // The shape is known by its generation (never reused in a process): no pass over its positions.
+    const std::uint64_t shapeKey = hashBytes(&shapeGeneration, sizeof(shapeGeneration));
+    auto shapeOf = [&](const QString& name) -> std::optional<algo::HighlightShape> {
+        for (const HighlightTrack& t : look.highlights)
+            if (t.name == name)
+                return t.layerAt(frame).shape;
+        return std::nullopt;
+    };
+    for (const HighlightTrack& track : look.highlights) {
+        if (!track.visible || track.keys.empty())
+            continue;
+        algo::RenderHighlight h;
+        h.layer = track.layerAt(frame);
+        h.layer.name = track.name.toStdString();
+        h.layer.combinations.clear();
+        for (const auto& [mode, other] : track.combineWith)
+            if (const auto otherShape = shapeOf(other))
+                h.layer.combinations.push_back({mode, *otherShape});
+        std::vector<std::int32_t> patchFaces;
+        if (!track.patch.isEmpty() && track.patch != QLatin1String("all")) {
+            const algo::FaceSet* set = data.faceSet(track.patch);
+            if (!set)
+                continue; // validated on load and edit; a stale name draws nothing
+            patchFaces.assign(set->faces.begin(), set->faces.end());
+            h.faceMask.assign(std::size_t(mesh.faces.rows()), 0);
+            for (const auto f : patchFaces)
+                h.faceMask[std::size_t(f)] = 1;
+        }
+        // The geometry depends on the shape, the faces, the patch, the guide and the smoothing.
+        std::uint64_t key = 0;
+        if (cache) {
+            key = hashBytes(patchFaces.data(), sizeof(std::int32_t) * patchFaces.size(), shapeKey);
+            key = hashBytes(track.guide.data(), sizeof(float) * 3, key);
+            key = hashBytes(&track.smoothing, sizeof(track.smoothing), key);
+            key = hashBytes(&haveUvFrames, sizeof(haveUvFrames), key);
+            auto& entries = cache->highlights;
+            const auto hit = std::find_if(
+                entries.begin(), entries.end(), [key](const algo::HighlightGeometry& g) { return g.key == key; });
+            if (hit != entries.end()) {
+                h.normals = hit->normals;
+                h.du = hit->du;
+                h.dv = hit->dv;
+                std::rotate(hit, hit + 1, entries.end()); // most recently used last
+                out.push_back(std::move(h));
+                continue;
+            }
+        }
+        // Smoothed normals stand in for the paper's smooth patch; the guide's frames follow them
+        // (UV frames stay: every pixel orthonormalises its frame against its normal anyway).
+        if (track.smoothing > 0
+            && !algo::smoothPatchNormals(shape, mesh.faces, normals, patchFaces, track.smoothing, h.normals))
+            continue;
+        const algo::Positions& layerNormals = h.normals.rows() > 0 ? h.normals : normals;
+        if (haveUvFrames) {
+            h.du = uvDu;
+            h.dv = uvDv;
+        } else if (!algo::guideVertexFrames(
+                       shape, mesh.faces, layerNormals, patchFaces, track.guide, kGuideSmoothingRounds, h.du, h.dv)) {
+            continue;
+        }
+        if (cache) {
+            auto& entries = cache->highlights;
+            if (entries.size() >= kHighlightGeometryEntries)
+                entries.erase(entries.begin());
+            entries.push_back({key, h.normals, h.du, h.dv});
+        }
+        out.push_back(std::move(h));
+    }
+    return out;
+}
+
+algo::RasterCamera rasterCamera(const Camera& camera, int width, int height)
+{
+    algo::RasterCamera r;
+    r.eye = camera.eye;
+    r.target = camera.target;
+    r.up = camera.up;
+    r.orthographic = camera.projection == Projection::Orthographic;
+    r.fovYDegrees = camera.fovYDegrees;
+    r.orthoHeight = camera.orthoHeight;
+    r.width = width;
+    r.height = height;
+    return r;
+}
+
+algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& camera, const Eigen::Vector3d& centroid)
+{
+    algo::StereoSettings s;
+    const double depth = std::max((centroid - camera.eye).dot(camera.forward()), 1e-6);
+    s.convergence = stereo.convergence > 0 ? stereo.convergence : depth;
+    s.interocular = stereo.interocular > 0 ? stereo.interocular : s.convergence / 30.0;
+    s.toeIn = stereo.toeIn;
+    s.swapEyes = stereo.swapEyes;
+    return s;
+}
+
+algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
+    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
+    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
+{
+    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets);
+    renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
+    const algo::RasterCamera centre = rasterCamera(camera, width, height);
+    algo::RenderPasses passes;
+    algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);
+    if (stereo == algo::StereoOutput::Off)
+        return passes;
+    const auto [left, right] = algo::stereoPair(centre, resolvedStereo(look.stereo, camera, data.baseMesh->centre()));
+    algo::RenderPasses l, r;
+    algo::renderFrame(shape, *data.baseMesh, left, renderLook, cache, l, &centre);
+    algo::renderFrame(shape, *data.baseMesh, right, renderLook, cache, r, &centre);
+    switch (stereo) {
+    case algo::StereoOutput::Anaglyph:
+        passes.beauty = algo::composeAnaglyph(l.beauty, r.beauty);
+        break;
+    case algo::StereoOutput::Dubois:
+        passes.beauty = algo::composeDubois(l.beauty, r.beauty, look.stereo.dubois);
+        break;
+    case algo::StereoOutput::HalfColor:
+        passes.beauty = algo::composeHalfColor(l.beauty, r.beauty);
+        break;
+    case algo::StereoOutput::SideBySide:
+        passes.beauty = algo::composeSideBySide(l.beauty, r.beauty);
+        break;
+    case algo::StereoOutput::TopBottom:
+        passes.beauty = algo::composeTopBottom(l.beauty, r.beauty);
+        break;
+    case algo::StereoOutput::Off:
+        break;
+    }
+    return passes;
+}
+
+QStringList renderPassNames()
+{
+    return QStringList{QStringLiteral("beauty"), QStringLiteral("lines"), QStringLiteral("tone"),
+               QStringLiteral("highlights"), QStringLiteral("depth"), QStringLiteral("normal"), QStringLiteral("id")}
+    + analysisPassNames();
+}
+
+algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile)
+{
+    const int w = passes.beauty.width, h = passes.beauty.height;
+    algo::ImageRGBA image(w, h, Eigen::Vector4f(0, 0, 0, 1));
+    auto grey = [&](const std::vector<float>& values) {
+        for (int i = 0; i < w * h; ++i)
+            for (int c = 0; c < 3; ++c)
+                image.pixels[std::size_t(i) * 4 + std::size_t(c)] = values[std::size_t(i)];
+    };
+    if (pass == QLatin1String("beauty"))
+        return passes.beauty;
+    if (pass == QLatin1String("lines")) {
+        grey(passes.lines);
+    } else if (pass == QLatin1String("tone")) {
+        grey(passes.tone);
+    } else if (pass == QLatin1String("highlights")) {
+        grey(passes.highlights);
+    } else if (pass == QLatin1String("depth")) {
+        std::vector<float> d(passes.depth.size(), 0.f);
+        float lo = std::numeric_limits<float>::max(), hi = 0.f;
+        for (float v : passes.depth)
+            if (std::isfinite(v)) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+        for (std::size_t i = 0; i < d.size(); ++i) {
+            const float v = passes.depth[i];
+            if (!std::isfinite(v))
+                d[i] = forFloatFile ? 0.f : 1.f;
+            else
+                d[i] = forFloatFile ? v : (hi > lo ? (v - lo) / (hi - lo) : 0.f);
+        }
+        grey(d);
+    } else if (pass == QLatin1String("normal")) {
+        for (int i = 0; i < w * h; ++i) {
+            const Eigen::Vector3f n = passes.normal[std::size_t(i)];
+            for (int c = 0; c < 3; ++c)
+                image.pixels[std::size_t(i) * 4 + std::size_t(c)]
+                    = forFloatFile ? n[c] : (n == Eigen::Vector3f::Zero() ? 0.f : 0.5f * n[c] + 0.5f);
+        }
+    } else if (pass == QLatin1String("id")) {
+        for (int i = 0; i < w * h; ++i) {
+            const std::int32_t id = passes.id[std::size_t(i)];
+            if (forFloatFile) {
+                for (int c = 0; c < 3; ++c)
+                    image.pixels[std::size_t(i) * 4 + std::size_t(c)] = float(id);
+                continue;
+            }
+            if (id < 0)
+                continue;
+            // A hash spreads neighbouring ids over distinct colours.
+            std::uint32_t hsh = std::uint32_t(id) * 2654435761u;
+            hsh ^= hsh >> 15;
+            for (int c = 0; c < 3; ++c)
+                image.pixels[std::size_t(i) * 4 + std::size_t(c)]
+                    = algo::srgbToLinear(float((hsh >> (8 * c)) & 0xffu) / 255.f);
+        }
+    } else {
+        throw IoError(pass,
+            RenderOutput::tr("is not a render pass; use one of %1").arg(renderPassNames().join(QStringLiteral(", "))));
+    }
+    return image;
+}
+
+void writeImage(const algo::ImageRGBA& image, const QString& path)
+{
+    writeChannels(path, image.width, image.height, {"R", "G", "B", "A"}, image.pixels, true);
+}
+
+void writeImageChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const std::vector<float>& data, bool encodeSrgb)
+{
+    writeChannels(path, width, height, names, data, encodeSrgb);
+}
+
+void writePassesExr(const algo::RenderPasses& passes, const QString& path)
+{
+    const int w = passes.beauty.width, h = passes.beauty.height;
+    const std::vector<std::string> names = {"R", "G", "B", "A", "lines.Y", "tone.Y", "highlights.Y", "depth.Z",
+        "normal.X", "normal.Y", "normal.Z", "id.ID"};
+    const std::size_t channels = names.size();
+    std::vector<float> data(std::size_t(w) * std::size_t(h) * channels);
+    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {
+        float* p = data.data() + i * channels;
+        for (int c = 0; c < 4; ++c)
+            p[c] = passes.beauty.pixels[i * 4 + std::size_t(c)];
+        p[4] = passes.lines[i];
+        p[5] = passes.tone[i];
+        p[6] = passes.highlights[i];
+        p[7] = std::isfinite(passes.depth[i]) ? passes.depth[i] : 0.f;
+        p[8] = passes.normal[i].x();
+        p[9] = passes.normal[i].y();
+        p[10] = passes.normal[i].z();
+        p[11] = float(passes.id[i]);
+    }
+    if (QFileInfo(path).suffix().toLower() != QLatin1String("exr"))
+        throw IoError(path, RenderOutput::tr("all passes together need an .exr file"));
+    writeChannels(path, w, h, names, data, false);
+}
+
+} // namespace celform::model

@@ -1,0 +1,111 @@
+// The properties dock: what is selected in the scene (model statistics; a drawing's image,
+// overlay and alignment; a key's direction, drawing, deformation and the brush) and the
+// project-wide blend settings. Edits go through the Document; a slider drag is one undo step.
+#pragma once
+
+#include "celform/model/document/document.h"
+#include "celform/views/panels/scene_panel.h"
+
+#include <QPointer>
+#include <QTimer>
+#include <QWidget>
+
+#include <optional>
+
+#include <functional>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QSpinBox;
+class QFormLayout;
+class QGroupBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSlider;
+
+namespace celform::views {
+
+class Viewport;
+
+class PropertiesPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PropertiesPanel(model::Document* document, QWidget* parent = nullptr);
+    /// The viewport whose tools (align, brush, preview) the panel drives.
+    void setViewport(Viewport* viewport);
+
+    // The buttons, for shortcuts in menus and for tests.
+    [[nodiscard]] QPushButton* alignButton() const { return m_align; }
+    [[nodiscard]] QPushButton* createKeyButton() const { return m_createKey; }
+    [[nodiscard]] QPushButton* editKeyButton() const { return m_editKey; }
+    [[nodiscard]] QPushButton* previewButton() const { return m_preview; }
+    [[nodiscard]] QPushButton* matchPointsButton() const { return m_match; }
+    [[nodiscard]] QPushButton* solveCameraButton() const { return m_solve; }
+
+public slots:
+    void showSelection(celform::views::ScenePanel::Selection selection);
+
+signals:
+    /// A key was made from the selected drawing; the scene can select it.
+    void keyCreated(celform::model::ObjectId key);
+    /// A message for the status bar (refused edits, hints).
+    void message(const QString& text);
+
+private:
+    void refresh();
+    void refreshBlend();
+    /// One blend settings edit from a control (not while the panel itself updates them).
+    void documentChanged(const model::ChangeSet& change);
+    void refreshTools();
+    void refreshMatching();
+    void importDeformation();
+
+    model::Document* m_document;
+    QPointer<Viewport> m_viewport;
+    ScenePanel::Selection m_selection;
+    bool m_updating = false;
+
+    QGroupBox* m_selectionBox;
+    QFormLayout* m_form;
+    QLabel* m_summary;
+    QLabel* m_thumbnail;
+    QLineEdit* m_name;
+    QSlider* m_opacity;
+    QLabel* m_opacityValue;
+    QWidget* m_opacityRow;
+    QCheckBox* m_onTop;
+    QPushButton* m_align;
+    QDoubleSpinBox* m_fov;
+    QComboBox* m_projection;
+    QPushButton* m_createKey;
+    QWidget* m_matchRow;
+    QPushButton* m_match;
+    QPushButton* m_solve;
+    QPushButton* m_clearPoints;
+    QLabel* m_matchStatus;
+    std::optional<double> m_lastSolveError; ///< RMS reprojection error of the last Solve Camera, pixels
+    QCheckBox* m_enabled;
+    QComboBox* m_linkedDrawing;
+    QPushButton* m_editKey;
+    QPushButton* m_importDeformation;
+
+    QGroupBox* m_brushBox;
+    QDoubleSpinBox* m_radius;
+    QSpinBox* m_pixelRadius;
+    QComboBox* m_radiusUnit;
+    QComboBox* m_falloff;
+    QDoubleSpinBox* m_strength;
+    QComboBox* m_brushMode;
+    QCheckBox* m_mirror;
+
+    QDoubleSpinBox* m_sharpness;
+    QComboBox* m_unspecified;
+    QComboBox* m_time;
+    QPushButton* m_preview;
+    QTimer m_summaryRefresh; ///< throttles refreshes during a brush stroke
+    bool m_summaryPending = false;
+};
+
+} // namespace celform::views
