@@ -3,7 +3,7 @@
 // changes of one push, undo or redo and emits them once.
 #pragma once
 
-#include "celform/model/object_id.h"
+#include "celform/model/data/object_id.h"
 
 #include <cstdint>
 #include <vector>
