@@ -132,20 +132,22 @@ bool ArapSolver::setHandles(const std::vector<ArapHandle>& handles)
     return m->solver.info() == Eigen::Success;
 }
 
-void ArapSolver::solve(Eigen::MatrixXd& current, int iterations)
+bool ArapSolver::solve(Eigen::MatrixXd& current, int iterations, const Progress* progress)
 {
     const Eigen::Index n = m->rest.rows();
     if (current.rows() != n || current.cols() != 3)
-        return;
+        return true;
     for (Eigen::Index v = 0; v < n; ++v)
         if (m->freeIndex[std::size_t(v)] < 0)
             current.row(v) = m->rest.row(v);
     const Eigen::Index rows = Eigen::Index(m->freeVertex.size());
     if (rows == 0)
-        return;
+        return true;
     std::vector<Eigen::Matrix3d> rotation(std::size_t(n), Eigen::Matrix3d::Identity());
     Eigen::MatrixXd rhs(rows, 3);
     for (int it = 0; it < iterations; ++it) {
+        if (cancelRequested(progress))
+            return false;
         // Local step: the rotation that best maps each vertex's rest spokes onto its current ones
         // (Sorkine and Alexa, section 2.1: the polar part of the covariance, by SVD).
         for (Eigen::Index v = 0; v < n; ++v) {
@@ -186,10 +188,11 @@ void ArapSolver::solve(Eigen::MatrixXd& current, int iterations)
         }
         const Eigen::MatrixXd x = m->solver.solve(rhs);
         if (!x.allFinite())
-            return;
+            return true;
         for (Eigen::Index r = 0; r < rows; ++r)
             current.row(m->freeVertex[std::size_t(r)]) = x.row(r);
     }
+    return true;
 }
 
 } // namespace celform::algo

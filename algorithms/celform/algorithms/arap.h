@@ -6,6 +6,7 @@
 #pragma once
 
 #include "celform/algorithms/mesh_types.h"
+#include "celform/algorithms/progress.h"
 
 #include <Eigen/Core>
 
@@ -36,8 +37,9 @@ public:
     /// False when the factorisation fails.
     bool setHandles(const std::vector<ArapHandle>& handles);
     /// iterations local-global steps from current (#V by 3, updated in place; fixed vertices are
-    /// reset to their rest positions).
-    void solve(Eigen::MatrixXd& current, int iterations);
+    /// reset to their rest positions). Stops early, returning false, when progress asks to cancel
+    /// (checked between iterations; current then holds the last whole iteration).
+    bool solve(Eigen::MatrixXd& current, int iterations, const Progress* progress = nullptr);
     /// Free vertex count.
     [[nodiscard]] std::int64_t freeCount() const;
 

@@ -7,7 +7,7 @@
 //    looked up in the outline's signed distance field with bilinear interpolation (smooth through
 //    zero, so the residual is differentiable in C);
 //  - outline to silhouette: points sampled on the outline, each paired with its nearest silhouette
-//    sample (the nearest-feature transform), the residual being that sample's distance to the
+//    sample, the residual being that sample's distance to the
 //    outline's tangent line at the point (point-to-line, as in ICP).
 // The samples, pairs and robust weights (iteratively reweighted) are refreshed at every iteration;
 // within one the residuals are smooth functions of the seven camera parameters, differentiated by
@@ -86,13 +86,13 @@ struct Level {
     std::vector<Eigen::Vector2d> normals; ///< outward unit normals
 };
 
-Level makeLevel(const Outline& outline, int factor, int maxSamples)
+Level makeLevel(const Outline& outline, int factor, int maxSamples, FitScratch& scratch)
 {
     Level level;
     level.factor = factor;
     level.holesFilled = outline.holesFilled;
     level.outlineMask = downsampleMask(outline.mask, outline.width, outline.height, factor, level.width, level.height);
-    signedDistanceField(level.outlineMask.data(), level.width, level.height, level.outlineField);
+    signedDistanceField(level.outlineMask.data(), level.width, level.height, level.outlineField, &scratch);
     double length = 0.0;
     for (const auto& contour : outline.contours)
         for (std::size_t i = 0; i < contour.size(); ++i)
@@ -150,6 +150,85 @@ struct Linearisation {
     }
 };
 
+/// A uniform grid over 2D points for nearest-point queries: rings of cells are searched outwards
+/// until the ring is farther than the best point found.
+class PointGrid {
+public:
+    PointGrid(const std::vector<Eigen::Vector2d>& points, double cell)
+        : m_points(points)
+        , m_cell(cell)
+    {
+        for (const auto& p : points)
+            m_box.extend(p);
+        if (points.empty())
+            return;
+        m_columns = int(std::floor((m_box.max().x() - m_box.min().x()) / cell)) + 1;
+        m_rows = int(std::floor((m_box.max().y() - m_box.min().y()) / cell)) + 1;
+        m_start.assign(std::size_t(m_columns) * std::size_t(m_rows) + 1, 0);
+        for (const auto& p : points)
+            ++m_start[cellOf(p) + 1];
+        for (std::size_t c = 0; c + 1 < m_start.size(); ++c)
+            m_start[c + 1] += m_start[c];
+        m_items.resize(points.size());
+        std::vector<std::int32_t> fill(m_start.begin(), m_start.end() - 1);
+        for (std::size_t k = 0; k < points.size(); ++k)
+            m_items[std::size_t(fill[cellOf(points[k])]++)] = std::int32_t(k);
+    }
+
+    /// The nearest point's index, -1 when there are none.
+    [[nodiscard]] std::int32_t nearest(const Eigen::Vector2d& q) const
+    {
+        if (m_points.empty())
+            return -1;
+        const int cx = std::clamp(int(std::floor((q.x() - m_box.min().x()) / m_cell)), 0, m_columns - 1);
+        const int cy = std::clamp(int(std::floor((q.y() - m_box.min().y()) / m_cell)), 0, m_rows - 1);
+        std::int32_t best = -1;
+        double bestSquared = std::numeric_limits<double>::infinity();
+        const int rings = std::max(m_columns, m_rows);
+        for (int r = 0; r <= rings; ++r) {
+            // Every point in ring r is at least (r - 1) cells away from q (q may lie outside the box).
+            const double reach = std::max(0.0, (r - 1) * m_cell - m_box.exteriorDistance(q));
+            if (best >= 0 && reach * reach > bestSquared)
+                break;
+            for (int y = cy - r; y <= cy + r; ++y) {
+                if (y < 0 || y >= m_rows)
+                    continue;
+                const bool edgeRow = y == cy - r || y == cy + r;
+                for (int x = cx - r; x <= cx + r; x += edgeRow ? 1 : 2 * std::max(r, 1)) {
+                    if (x < 0 || x >= m_columns)
+                        continue;
+                    const std::size_t c = std::size_t(y) * std::size_t(m_columns) + std::size_t(x);
+                    for (std::int32_t i = m_start[c]; i < m_start[c + 1]; ++i) {
+                        const std::int32_t k = m_items[std::size_t(i)];
+                        const double d = (m_points[std::size_t(k)] - q).squaredNorm();
+                        if (d < bestSquared) {
+                            bestSquared = d;
+                            best = k;
+                        }
+                    }
+                }
+            }
+        }
+        return best;
+    }
+
+private:
+    [[nodiscard]] std::size_t cellOf(const Eigen::Vector2d& p) const
+    {
+        const int x = std::clamp(int(std::floor((p.x() - m_box.min().x()) / m_cell)), 0, m_columns - 1);
+        const int y = std::clamp(int(std::floor((p.y() - m_box.min().y()) / m_cell)), 0, m_rows - 1);
+        return std::size_t(y) * std::size_t(m_columns) + std::size_t(x);
+    }
+
+    const std::vector<Eigen::Vector2d>& m_points;
+    double m_cell = 1.0;
+    Eigen::AlignedBox2d m_box;
+    int m_columns = 0;
+    int m_rows = 0;
+    std::vector<std::int32_t> m_start;
+    std::vector<std::int32_t> m_items;
+};
+
 /// Samples, pairs and weights at camera (level coordinates). False when the model's silhouette is
 /// not in the image.
 bool linearise(const Positions& shape, const Faces& faces, const EdgeTopology& topology, const RasterCamera& camera,
@@ -165,17 +244,15 @@ bool linearise(const Positions& shape, const Faces& faces, const EdgeTopology& t
     coverageMask(projected, faces, level.width, level.height, mask);
     if (level.holesFilled)
         fillMaskHoles(mask, level.width, level.height, scratch.reached, scratch.stack);
-    // Distance to the outside of the silhouette: samples within about a pixel of it lie on the
-    // outer boundary; contour generators inside the silhouette (an ear over the body, hidden folds)
-    // do not meet the outline and are left out.
-    const std::size_t n = mask.size();
-    std::vector<std::uint8_t>& outside = scratch.bytes;
-    outside.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-        outside[i] = mask[i] ? 0 : 1;
-    std::vector<float>& toOutside = scratch.inside;
-    toOutside.resize(n);
-    distanceTransform(outside.data(), level.width, level.height, toOutside.data(), scratch.transform);
+    // A sample lies on the outer boundary when the filled silhouette is empty a pixel and a half to
+    // one side of its edge; contour generators inside the silhouette (an ear over the body, hidden
+    // folds) have the silhouette on both sides, do not meet the outline and are left out.
+    auto inside = [&](const Eigen::Vector2d& p) {
+        const int x = int(std::floor(p.x())), y = int(std::floor(p.y()));
+        if (x < 0 || y < 0 || x >= level.width || y >= level.height)
+            return false;
+        return mask[std::size_t(y) * std::size_t(level.width) + std::size_t(x)] != 0;
+    };
 
     LineView view;
     view.orthographic = camera.orthographic;
@@ -193,13 +270,18 @@ bool linearise(const Positions& shape, const Faces& faces, const EdgeTopology& t
         const Eigen::Vector3d a = projected.row(v0).transpose(), b = projected.row(v1).transpose();
         if (!(a.z() > 0.0 && b.z() > 0.0))
             continue;
-        const int m = std::clamp(int(std::ceil((b.head<2>() - a.head<2>()).norm())), 1, 64);
+        const Eigen::Vector2d along = b.head<2>() - a.head<2>();
+        const double length = along.norm();
+        if (!(length > 1e-6))
+            continue;
+        const Eigen::Vector2d side = 1.5 / length * Eigen::Vector2d(along.y(), -along.x());
+        const int m = std::clamp(int(std::ceil(length)), 1, 64);
         for (int i = 0; i < m; ++i) {
             const double t = (i + 0.5) / m;
             const Eigen::Vector2d p = a.head<2>() + t * (b.head<2>() - a.head<2>());
             if (p.x() < 0 || p.y() < 0 || p.x() >= level.width || p.y() >= level.height)
                 continue;
-            if (sampleBilinear(toOutside, level.width, level.height, p.x(), p.y()) > 1.5)
+            if (inside(p + side) && inside(p - side))
                 continue;
             samples.push_back({v0, v1, t});
             where.push_back(p);
@@ -215,21 +297,9 @@ bool linearise(const Positions& shape, const Faces& faces, const EdgeTopology& t
         kept.push_back(where[k]);
     }
 
-    // Pairs: the nearest silhouette sample of every outline point, through a nearest-feature
-    // transform of the samples' pixels.
-    std::vector<std::uint8_t>& feature = scratch.boundary;
-    feature.assign(n, 0);
-    std::vector<std::int32_t>& owner = scratch.owner;
-    owner.assign(n, -1);
-    for (std::size_t k = 0; k < kept.size(); ++k) {
-        const std::size_t i = std::size_t(int(kept[k].y())) * std::size_t(level.width) + std::size_t(int(kept[k].x()));
-        feature[i] = 1;
-        owner[i] = std::int32_t(k);
-    }
-    std::vector<std::int32_t>& nearest = scratch.nearest;
-    nearest.resize(n);
-    nearestFeatureTransform(feature.data(), level.width, level.height, nearest.data(), nullptr, scratch.transform);
-
+    // Pairs: the nearest silhouette sample of every outline point, through a uniform grid of the
+    // samples (a few thousand points: cheaper than a transform of the whole level).
+    const PointGrid grid(kept, 8.0);
     const RobustKernel& kernel = levelKernel;
     const double na = double(lin.silhouette.size()), nb = double(std::max<std::size_t>(level.points.size(), 1));
     lin.silhouetteWeight.resize(lin.silhouette.size());
@@ -241,11 +311,9 @@ bool linearise(const Positions& shape, const Faces& faces, const EdgeTopology& t
     lin.pairWeight.assign(level.points.size(), 0.0);
     for (std::size_t j = 0; j < level.points.size(); ++j) {
         const Eigen::Vector2d& q = level.points[j];
-        const int x = std::clamp(int(q.x()), 0, level.width - 1), y = std::clamp(int(q.y()), 0, level.height - 1);
-        const std::int32_t pixel = nearest[std::size_t(y) * std::size_t(level.width) + std::size_t(x)];
-        if (pixel < 0 || owner[std::size_t(pixel)] < 0)
+        const std::int32_t k = grid.nearest(q);
+        if (k < 0)
             continue;
-        const std::int32_t k = owner[std::size_t(pixel)];
         lin.pair[j] = k;
         // The weight follows the full distance to the pair, the residual its normal part.
         const double d = (kept[std::size_t(k)] - q).norm();
@@ -394,8 +462,9 @@ FitCameraResult fitCamera(const Positions& shape, const Faces& faces, const Edge
         result.error = "The model has no triangles.";
         return result;
     }
-    FitScratch first;
-    result.before = measureFit(shape, faces, result.camera, outline, options.kernel, &first);
+    // One working memory for the whole fit: a megapixel's transforms touch tens of megabytes.
+    FitScratch scratch;
+    result.before = measureFit(shape, faces, result.camera, outline, options.kernel, &scratch);
     if (!result.before.valid) {
         result.error = "The model is not in view of the drawing's camera.";
         return result;
@@ -415,7 +484,7 @@ FitCameraResult fitCamera(const Positions& shape, const Faces& faces, const Edge
         coarsest *= 2;
     std::vector<Level> levels;
     for (int f = coarsest; f >= finest; f /= 2)
-        levels.push_back(makeLevel(outline, f, options.maxSamples));
+        levels.push_back(makeLevel(outline, f, options.maxSamples, scratch));
 
     // Starts: the camera and orbits of +/- spread in yaw and pitch about the centroid, each solved
     // on the coarsest level; the best few continue through the middle levels with the same loss,
@@ -439,7 +508,6 @@ FitCameraResult fitCamera(const Positions& shape, const Faces& faces, const Edge
         result.camera.height = outline.height;
         return result;
     };
-    FitScratch scratch;
     auto bestFirst = [&](std::vector<RasterCamera>& cameras, const Level& level) {
         std::vector<std::pair<double, std::size_t>> costs;
         for (std::size_t s = 0; s < cameras.size(); ++s)

@@ -38,7 +38,7 @@ struct FitCameraOptions {
     RobustKernel kernel{RobustLoss::Huber, 3.0};
     /// Loss of the refinement on the finest level: redescending, so outline parts the model does
     /// not have (a drawing's exaggeration) stop pulling the camera once it is close.
-    RobustKernel refineKernel{RobustLoss::Tukey, 6.0};
+    RobustKernel refineKernel{RobustLoss::Tukey, 4.0};
 };
 
 struct FitCameraResult {

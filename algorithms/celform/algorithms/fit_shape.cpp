@@ -250,7 +250,10 @@ FitShapeResult fitShape(const Positions& shape, const Faces& faces, const EdgeTo
             return result;
         }
         Eigen::MatrixXd next = current;
-        solver.solve(next, options.arapIterations);
+        if (!solver.solve(next, options.arapIterations, progress)) {
+            result.cancelled = true;
+            return result;
+        }
         if (mirrored) {
             // The mirror keeps the shape's symmetry exactly: each offset averaged with its twin's.
             const Eigen::MatrixXd offsets = next - rest;

@@ -111,35 +111,52 @@ void fillMaskHoles(
     // 8-connected, so a diagonal gap in the ink does not leak.
     if (w <= 0 || h <= 0 || mask.size() != std::size_t(w) * std::size_t(h))
         return;
+    // Span filling: a seed grows to its whole run of background along the row, and the rows above
+    // and below are seeded once per run they touch (far fewer pushes than a pixel flood fill).
     reached.assign(mask.size(), 0);
     stack.clear();
-    auto push = [&](int x, int y) {
-        const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-        if (!mask[i] && !reached[i]) {
-            reached[i] = 1;
-            stack.push_back(std::int32_t(i));
-        }
+    const std::size_t width = std::size_t(w);
+    auto open = [&](int x, int y) {
+        const std::size_t i = std::size_t(y) * width + std::size_t(x);
+        return !mask[i] && !reached[i];
+    };
+    auto seed = [&](int x, int y) {
+        if (open(x, y))
+            stack.push_back(std::int32_t(std::size_t(y) * width + std::size_t(x)));
     };
     for (int x = 0; x < w; ++x) {
-        push(x, 0);
-        push(x, h - 1);
+        seed(x, 0);
+        seed(x, h - 1);
     }
     for (int y = 0; y < h; ++y) {
-        push(0, y);
-        push(w - 1, y);
+        seed(0, y);
+        seed(w - 1, y);
     }
     while (!stack.empty()) {
         const std::int32_t i = stack.back();
         stack.pop_back();
-        const int x = i % w, y = i / w;
-        if (x > 0)
-            push(x - 1, y);
-        if (x + 1 < w)
-            push(x + 1, y);
-        if (y > 0)
-            push(x, y - 1);
-        if (y + 1 < h)
-            push(x, y + 1);
+        const int y = int(std::size_t(i) / width);
+        int x = int(std::size_t(i) % width);
+        if (!open(x, y))
+            continue;
+        int left = x, right = x;
+        while (left > 0 && open(left - 1, y))
+            --left;
+        while (right + 1 < w && open(right + 1, y))
+            ++right;
+        std::uint8_t* row = reached.data() + std::size_t(y) * width;
+        std::fill(row + left, row + right + 1, std::uint8_t(1));
+        for (int ny : {y - 1, y + 1}) {
+            if (ny < 0 || ny >= h)
+                continue;
+            bool inRun = false;
+            for (x = left; x <= right; ++x) {
+                const bool o = open(x, ny);
+                if (o && !inRun)
+                    stack.push_back(std::int32_t(std::size_t(ny) * width + std::size_t(x)));
+                inRun = o;
+            }
+        }
     }
     for (std::size_t i = 0; i < mask.size(); ++i)
         mask[i] = reached[i] ? 0 : 1;
