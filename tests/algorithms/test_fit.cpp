@@ -9,6 +9,7 @@
 #include "celform/algorithms/fit_camera.h"
 #include "celform/algorithms/fit_metrics.h"
 #include "celform/algorithms/fit_shape.h"
+#include "celform/algorithms/arap.h"
 #include "celform/algorithms/brush.h"
 #include "celform/model/io/mesh_io.h"
 
@@ -140,6 +141,41 @@ private slots:
         QVERIFY(std::abs(sampleBilinear(field, w, h, 100.0, 50.0)) < 1e-6);
         QVERIFY(std::abs(sampleBilinear(field, w, h, 103.0, 50.0) - 3.0) < 1e-6);
         QVERIFY(std::abs(sampleBilinear(field, w, h, 96.0, 50.0) + 4.0) < 1e-6);
+    }
+
+    void arapFollowsARigidMotion()
+    {
+        // Handles on one cap moved rigidly: the rigid motion has no energy, so the whole sphere
+        // follows it (given the many iterations ARAP needs from rest for a 40 degree turn); a
+        // pinned vertex stays at rest.
+        const auto sphere = celform::test::icosphere(3);
+        const Eigen::Matrix3d rotation
+            = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+        const Eigen::Vector3d shift(0.3, -0.2, 0.1);
+        std::vector<std::uint8_t> free(std::size_t(sphere->vertices.rows()), 1);
+        ArapSolver solver(sphere->vertices, sphere->faces, free);
+        std::vector<ArapHandle> handles;
+        for (Eigen::Index v = 0; v < sphere->vertices.rows(); ++v)
+            if (sphere->vertices(v, 0) > 0.6f)
+                handles.push_back(
+                    {std::int32_t(v), rotation * sphere->vertices.row(v).transpose().cast<double>() + shift, 1e4});
+        QVERIFY(handles.size() > 20);
+        QVERIFY(solver.setHandles(handles));
+        Eigen::MatrixXd current = sphere->vertices.cast<double>();
+        QVERIFY(solver.solve(current, 300));
+        double worst = 0.0;
+        for (Eigen::Index v = 0; v < current.rows(); ++v)
+            worst = std::max(worst,
+                (current.row(v).transpose() - (rotation * sphere->vertices.row(v).transpose().cast<double>() + shift))
+                    .norm());
+        QVERIFY2(worst < 5e-3, qPrintable(QString::number(worst)));
+        free[0] = 0;
+        ArapSolver pinned(sphere->vertices, sphere->faces, free);
+        QCOMPARE(pinned.freeCount(), std::int64_t(sphere->vertices.rows() - 1));
+        QVERIFY(pinned.setHandles(handles));
+        current = sphere->vertices.cast<double>();
+        pinned.solve(current, 5);
+        QCOMPARE(current.row(0), sphere->vertices.row(0).cast<double>());
     }
 
     void cameraComesBackToTheDrawing_data()

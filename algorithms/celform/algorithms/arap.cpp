@@ -2,6 +2,7 @@
 #include "celform/algorithms/arap.h"
 
 #include <Eigen/LU>
+#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -10,6 +11,44 @@
 #include <cmath>
 
 namespace celform::algo {
+
+namespace {
+
+/// The rotation R maximising trace(R S) for the covariance S = sum w e e'^T (rest spokes e,
+/// current e'): R = V U^T for S = U Sigma V^T, a reflection turned into the nearest rotation by
+/// flipping the axis of the smallest singular value. Found through the closed-form eigenvectors
+/// of S^T S (V, Sigma^2) and U = S V / Sigma, several times faster than a Jacobi SVD; falls back
+/// to the SVD when the spokes are nearly collinear (two singular values vanish).
+Eigen::Matrix3d bestRotation(const Eigen::Matrix3d& s)
+{
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect(s.transpose() * s);
+    const Eigen::Vector3d lambda = eigen.eigenvalues(); // ascending
+    const Eigen::Matrix3d v = eigen.eigenvectors();
+    if (eigen.info() == Eigen::Success && lambda(2) > 0.0 && lambda(1) > 1e-12 * lambda(2)) {
+        const Eigen::Vector3d u2 = (s * v.col(2)).normalized();
+        Eigen::Vector3d u1 = s * v.col(1);
+        u1 = (u1 - u1.dot(u2) * u2).normalized();
+        Eigen::Matrix3d u;
+        u.col(2) = u2;
+        u.col(1) = u1;
+        // det(U) = det(V) makes V U^T a rotation: the smallest axis follows the other two.
+        u.col(0) = (v.determinant() > 0.0 ? 1.0 : -1.0) * u1.cross(u2);
+        const Eigen::Matrix3d r = v * u.transpose();
+        if (r.allFinite())
+            return r;
+    }
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(s, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d u = svd.matrixU();
+    Eigen::Matrix3d r = svd.matrixV() * u.transpose();
+    if (r.determinant() < 0.0) {
+        u.col(2) = -u.col(2);
+        r = svd.matrixV() * u.transpose();
+    }
+    return r;
+}
+
+} // namespace
 
 struct ArapSolver::Data {
     Eigen::MatrixXd rest; ///< #V by 3
@@ -160,13 +199,7 @@ bool ArapSolver::solve(Eigen::MatrixXd& current, int iterations, const Progress*
             }
             if (m->start[std::size_t(v)] == m->start[std::size_t(v) + 1])
                 continue;
-            const Eigen::JacobiSVD<Eigen::Matrix3d> svd(s, Eigen::ComputeFullU | Eigen::ComputeFullV);
-            Eigen::Matrix3d u = svd.matrixU();
-            Eigen::Matrix3d r = svd.matrixV() * u.transpose();
-            if (r.determinant() < 0.0) {
-                u.col(2) = -u.col(2);
-                r = svd.matrixV() * u.transpose();
-            }
+            const Eigen::Matrix3d r = bestRotation(s);
             rotation[std::size_t(v)] = r;
         }
         // Global step (their equation 9): L x = sum_j w_ij / 2 (R_i + R_j)(p_i - p_j), fixed
