@@ -167,6 +167,28 @@ private slots:
         QCOMPARE(int(extractOutline(image, settings).contours.size()), 2);
     }
 
+    void holesKeptWhenAsked()
+    {
+        // A thick annulus: filled, one outline; with its hole kept, the hole's boundary runs the
+        // other way round (the figure stays on the left of both).
+        const DrawingImage image = greyDrawing(200, 200, [](double x, double y) {
+            const double d = std::hypot(x - 100, y - 100);
+            return d > 30 && d < 70;
+        });
+        const Outline filled = extractOutline(image);
+        QVERIFY(filled.ok());
+        QCOMPARE(int(filled.contours.size()), 1);
+        QVERIFY(filled.holesFilled);
+        OutlineSettings settings;
+        settings.fillHoles = false;
+        const Outline holed = extractOutline(image, settings);
+        QVERIFY(holed.ok());
+        QVERIFY(!holed.holesFilled);
+        QCOMPARE(int(holed.contours.size()), 2);
+        QVERIFY(std::abs(polygonArea(holed.contours[0]) - kPi * 70 * 70) < 0.01 * kPi * 70 * 70);
+        QVERIFY(std::abs(polygonArea(holed.contours[1]) + kPi * 30 * 30) < 0.02 * kPi * 30 * 30);
+    }
+
     void realAlphaDecides()
     {
         DrawingImage image;

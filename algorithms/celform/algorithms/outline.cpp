@@ -527,9 +527,6 @@ Outline extractOutline(const DrawingImage& image, const OutlineSettings& setting
     for (std::size_t i = 0; i < n; ++i)
         field[i] = kept[i] ? std::max(coverage[i], 0.5f) : std::min(coverage[i], 0.499f);
     result.contours = marchingSquares(field, w, h);
-    for (auto& c : result.contours)
-        if (polygonArea(c) < 0.0)
-            std::reverse(c.begin(), c.end());
     std::sort(result.contours.begin(), result.contours.end(),
         [](const auto& a, const auto& b) { return std::abs(polygonArea(a)) > std::abs(polygonArea(b)); });
     if (result.contours.empty()) {

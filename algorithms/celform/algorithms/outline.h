@@ -67,8 +67,9 @@ struct Outline {
     /// The filled figure, 1 inside, width * height (empty on error).
     std::vector<std::uint8_t> mask;
     /// Closed polygons (last point not repeated) around each kept component, largest area first,
-    /// each with a positive polygonArea: for an edge direction (dx, dy) the outward normal is
-    /// (dy, -dx) in pixel coordinates.
+    /// with the figure on their left: outer boundaries have a positive polygonArea, the boundaries
+    /// of holes (kept only without fillHoles) a negative one. Either way, for an edge direction
+    /// (dx, dy) the normal pointing away from the figure is (dy, -dx) in pixel coordinates.
     std::vector<std::vector<Eigen::Vector2d>> contours;
     double thresholdUsed = -1.0; ///< luminance threshold in [0, 1], or -1 when alpha decided
     bool usedAlpha = false;
