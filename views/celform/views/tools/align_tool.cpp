@@ -142,7 +142,7 @@ void AlignTool::commit()
     const model::Camera camera = m_viewport->camera();
     if (camera == m_stored)
         return;
-    document->setDrawingCamera(m_drawing, camera);
+    document->drawings().setDrawingCamera(m_drawing, camera, gesture());
     m_stored = camera;
 }
 
@@ -259,7 +259,7 @@ std::optional<double> AlignTool::solve(QString* error)
     // One step: the solved camera, stored with the drawing (setCamera commits it while aligning).
     m_viewport->setCamera(camera);
     if (m_drawing != m_viewport->overlayDrawing())
-        document->setDrawingCamera(m_viewport->overlayDrawing(), camera);
+        document->drawings().setDrawingCamera(m_viewport->overlayDrawing(), camera);
     m_markers->update();
     return solved->rmsPixelError;
 }

@@ -82,7 +82,7 @@ bool BrushTool::press(const ToolEvent& event)
         ? m_viewport->brushPixelRadius() * unitsPerPixel
         : m_viewport->brushRadius();
     try {
-        m_stroke = document->beginBrushStroke(key, document->currentFrame(), std::uint32_t(picked), radius,
+        m_stroke = document->keys().beginBrushStroke(key, document->currentFrame(), std::uint32_t(picked), radius,
             m_viewport->camera(), m_viewport->brushMirrorX(), m_viewport->brushProfile());
     } catch (const model::EditRefused& e) {
         emit m_viewport->message(e.message());
@@ -114,7 +114,7 @@ void BrushTool::move(const ToolEvent& event)
         step = {model::BrushMotion::Push, -d.y() * m_unitsPerPixel, 0.0};
     else
         step = {model::BrushMotion::Drag, d.x() * m_unitsPerPixel, -d.y() * m_unitsPerPixel};
-    document->applyBrushStroke(m_stroke, step);
+    document->keys().applyBrushStroke(m_stroke, step);
     // The circle follows the cursor with the stroke's radius.
     m_hover.showAt(event.position, m_hover.circle()->radiusPixels());
 }
@@ -122,7 +122,7 @@ void BrushTool::move(const ToolEvent& event)
 void BrushTool::finish()
 {
     if (model::Document* document = m_viewport->document())
-        document->endBrushStroke(m_stroke);
+        document->keys().endBrushStroke(m_stroke);
 }
 
 void BrushTool::release(const ToolEvent& event)

@@ -56,7 +56,7 @@ void PatchTool::paint(const ToolEvent& event)
     if (dab.empty())
         return;
     try {
-        document->paintFaceSet(target, dab, event.modifiers & Qt::ControlModifier);
+        document->faceSets().paintFaceSet(target, dab, event.modifiers & Qt::ControlModifier, gesture());
     } catch (const model::EditRefused& e) {
         emit m_viewport->message(e.message());
     }
