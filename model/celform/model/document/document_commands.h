@@ -16,15 +16,17 @@ namespace celform::model {
 template <typename T> class PropertyCommand : public DocumentCommand {
 public:
     using Locator = std::function<T*(ProjectData&)>;
-    using Getter = std::function<std::optional<T>(const ProjectData&)>;
+    /// Reads the value (none when the target is gone); given the data the setter writes, so that
+    /// a locator serves both.
+    using Getter = std::function<std::optional<T>(ProjectData&)>;
     using Setter = std::function<void(ProjectData&, const T&)>;
 
     PropertyCommand(Document* doc, const QString& text, EditTarget target, Locator locate, T after, ChangeSet change,
         GestureId gesture, QUndoCommand* parent = nullptr)
         : PropertyCommand(
             doc, text, target,
-            [locate](const ProjectData& d) -> std::optional<T> {
-                if (T* v = locate(const_cast<ProjectData&>(d)))
+            [locate](ProjectData& d) -> std::optional<T> {
+                if (T* v = locate(d))
                     return *v;
                 return std::nullopt;
             },
@@ -45,7 +47,7 @@ public:
         , m_change(std::move(change))
         , m_gesture(gesture)
     {
-        if (const std::optional<T> v = m_get(m_doc->data()))
+        if (const std::optional<T> v = m_get(mutableData()))
             m_before = *v;
     }
 
@@ -65,7 +67,7 @@ public:
 protected:
     void apply(bool forward) override
     {
-        if (!m_get(m_doc->data()))
+        if (!m_get(mutableData()))
             return; // the target is gone
         m_set(mutableData(), forward ? m_after : m_before);
         noteChange(m_change);
