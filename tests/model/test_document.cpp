@@ -242,6 +242,26 @@ private slots:
         QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces.size(), std::size_t(4));
         m_doc.undoStack()->undo();
         QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{1, 3}));
+        // Painting dabs: the drag's step holds the net change; a drag that takes back what it
+        // added leaves no step, and a drag that adds and takes undoes to the set as it was.
+        const int paintStart = m_doc.undoStack()->index();
+        Gesture g3 = m_doc.beginGesture();
+        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, false, g3);
+        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, true, g3);
+        g3.end();
+        QCOMPARE(m_doc.undoStack()->index(), paintStart);
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{1, 3}));
+        Gesture g4 = m_doc.beginGesture();
+        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, false, g4);
+        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {1, 2}, true, g4);
+        g4.end();
+        QCOMPARE(m_doc.undoStack()->index(), paintStart + 1);
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{0, 3}));
+        m_doc.undoStack()->undo();
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{1, 3}));
+        m_doc.undoStack()->redo();
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{0, 3}));
+        m_doc.undoStack()->undo();
         // Bad input is refused with the data unchanged.
         const ProjectData before = m_doc.data();
         QVERIFY_THROWS_EXCEPTION(

@@ -47,6 +47,11 @@ ObjectId KeyEdits::addKey(KeyViewpoint key)
     refuseDuplicateDirection(key.direction, 0);
     key.id = data().nextId;
     key.name = uniqueKeyName(key.name);
+    // Links only to drawings the project holds (as linkKeyDrawing): a project file never names a
+    // drawing that is not in it.
+    key.drawingIds.erase(std::remove_if(key.drawingIds.begin(), key.drawingIds.end(),
+                             [this](ObjectId drawing) { return data().drawing(drawing) == nullptr; }),
+        key.drawingIds.end());
     const ObjectId id = key.id;
     auto* cmd = new CompositeCommand(m_doc, tr("Add Key “%1”").arg(key.name));
     new NextIdCommand(m_doc, id + 1, cmd);

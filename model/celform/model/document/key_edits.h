@@ -18,8 +18,9 @@ namespace celform::model {
 
 class KeyEdits : public DocumentFacade {
 public:
-    /// Adds a key as given. Throws EditRefused when its direction is within
-    /// algo::ViewSphere::kDuplicateAngleDegrees of another key's.
+    /// Adds a key as given, but for links to drawings the project does not hold. Throws
+    /// EditRefused when its direction is within algo::ViewSphere::kDuplicateAngleDegrees of
+    /// another key's.
     ObjectId addKey(KeyViewpoint key);
     /// A key seen from camera: its direction runs from the base centroid towards the eye
     /// (DESIGN.md); it starts as a copy of the base model unless a deformation is given (at
