@@ -210,7 +210,7 @@ int runOptimizeLight(const Invocation& in)
     const model::LightOptimisationReport report = model::optimiseLightForJob(doc->data(), path, job, request);
     const bool save = !in.isSet("dry-run") && !(report.after == report.before);
     if (save) {
-        doc->applyOptimisedLight(report.before, report.after);
+        doc->look().applyOptimisedLight(report.before, report.after);
         doc->saveAs(path);
     }
 

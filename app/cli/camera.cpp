@@ -79,13 +79,13 @@ int runCamera(const Invocation& in)
     if (!doc->hasMesh())
         throw model::IoError(path, Cli::tr("has no base model"));
     if (in.isSet("turntable")) {
-        doc->makeTurntable(turntable);
+        doc->animation().makeTurntable(turntable);
     } else if (in.isSet("key")) {
         // A view direction frames the model as `celform render --view` does.
         const model::Camera camera = model::renderJobCamera(doc->data(), doc->data().look, job, keyFrame);
-        doc->setCameraKey(keyFrame, camera);
+        doc->animation().setCameraKey(keyFrame, camera);
     } else {
-        doc->clearCameraPath();
+        doc->animation().clearCameraPath();
     }
     doc->saveAs(path);
     return kExitOk;

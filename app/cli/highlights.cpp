@@ -168,24 +168,24 @@ void applyLayerEdit(model::Document& doc, const QString& path, const LayerEdit& 
         track.smoothing = e.smoothing.value_or(track.smoothing);
         track.combineWith = e.combinations.value_or(Combinations{});
         track.keys.push_back({double(e.frame), e.keyOver(algo::HighlightLayer{})});
-        doc.addHighlightLayers({std::move(track)}, model::Document::tr("Add Highlight Layer"));
+        doc.highlights().addHighlightLayers({std::move(track)}, model::Document::tr("Add Highlight Layer"));
         return;
     }
     if (!frameGiven)
         throw model::IoError(path,
             Cli::tr("already has a highlight layer named “%1”; give --frame F to set a keyframe of it").arg(e.name));
     const model::ObjectId id = existing->id;
-    doc.setHighlightKey(id, e.frame, e.keyOver(existing->layerAt(e.frame)));
+    doc.highlights().setHighlightKey(id, e.frame, e.keyOver(existing->layerAt(e.frame)));
     if (e.patch)
-        doc.setHighlightPatch(id, *e.patch);
+        doc.highlights().setHighlightPatch(id, *e.patch);
     if (e.guide)
-        doc.setHighlightGuide(id, *e.guide);
+        doc.highlights().setHighlightGuide(id, *e.guide);
     if (e.smoothing)
-        doc.setHighlightSmoothing(id, *e.smoothing);
+        doc.highlights().setHighlightSmoothing(id, *e.smoothing);
     if (e.visible)
-        doc.setHighlightVisible(id, *e.visible);
+        doc.highlights().setHighlightVisible(id, *e.visible);
     if (e.combinations)
-        doc.setHighlightCombinations(id, *e.combinations);
+        doc.highlights().setHighlightCombinations(id, *e.combinations);
 }
 
 int runHighlight(const Invocation& in)
@@ -222,12 +222,12 @@ int runHighlight(const Invocation& in)
             throw model::IoError(path, Cli::tr("has no highlight layer named “%1”").arg(name));
         // The document carries other layers' combinations along.
         if (in.isSet("remove")) {
-            doc->removeHighlightLayer(track->id);
+            doc->highlights().removeHighlightLayer(track->id);
         } else {
             const QString newName = in.value("to").trimmed();
             if (newName.isEmpty() || (newName != name && doc->data().highlightByName(newName)))
                 throw UsageError{Cli::tr("--to needs a new name no other layer has, not “%1”").arg(in.value("to"))};
-            doc->renameHighlightLayer(track->id, newName);
+            doc->highlights().renameHighlightLayer(track->id, newName);
         }
         doc->saveAs(path);
         return kExitOk;
@@ -370,10 +370,10 @@ int runPatch(const Invocation& in)
     if ((in.isSet("remove") || in.isSet("subtract")) && !doc->data().faceSet(name))
         throw model::IoError(path, Cli::tr("has no patch named “%1”").arg(name));
     if (in.isSet("remove")) {
-        doc->removeFaceSet(name); // its layers go back to all faces in the same step
+        doc->faceSets().removeFaceSet(name); // its layers go back to all faces in the same step
     } else {
         const auto selected = selectFaces(in, *doc->data().baseMesh, faceRanges, spheres, path);
-        doc->paintFaceSet(name, selected, in.isSet("subtract"));
+        doc->faceSets().paintFaceSet(name, selected, in.isSet("subtract"));
     }
     doc->saveAs(path);
     if (in.isSet("json") && !in.isSet("remove"))

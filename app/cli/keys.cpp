@@ -39,13 +39,13 @@ int runKey(const Invocation& in)
     const model::Camera camera = byView ? model::cameraFromView(doc->data(), view) : explicitCamera;
     std::vector<model::ObjectId> drawingIds;
     if (in.isSet("drawing")) {
-        const model::ObjectId drawing = doc->importDrawing(in.value("drawing"));
-        doc->setDrawingCamera(drawing, camera);
+        const model::ObjectId drawing = doc->drawings().importDrawing(in.value("drawing"));
+        doc->drawings().setDrawingCamera(drawing, camera);
         drawingIds.push_back(drawing);
     }
-    const model::ObjectId id = doc->createKey(name, camera, drawingIds, {}, frame);
+    const model::ObjectId id = doc->keys().createKey(name, camera, drawingIds, {}, frame);
     if (in.isSet("mesh"))
-        for (const QString& w : doc->importKeyDeformation(id, in.value("mesh"), frame))
+        for (const QString& w : doc->keys().importKeyDeformation(id, in.value("mesh"), frame))
             printErr(Cli::tr("warning: %1: %2").arg(in.value("mesh"), w));
     doc->saveAs(path);
     // A name in use is made unique, as the editor makes it (Document::uniqueKeyName): say so, since
@@ -108,9 +108,9 @@ int runBrush(const Invocation& in)
     const QString keyName = key->name;
     // One stroke of one step, seen through the key's camera, as the editor's brush tool runs it.
     model::BrushStroke stroke
-        = doc->beginBrushStroke(key->id, frame, std::uint32_t(picked), radius, key->camera, false, profile);
-    doc->applyBrushStroke(stroke, step);
-    doc->endBrushStroke(stroke);
+        = doc->keys().beginBrushStroke(key->id, frame, std::uint32_t(picked), radius, key->camera, false, profile);
+    doc->keys().applyBrushStroke(stroke, step);
+    doc->keys().endBrushStroke(stroke);
     doc->saveAs(path);
     if (in.isSet("json"))
         printJson({{"key", keyName}, {"picked", picked}, {"frame", frame},

@@ -82,22 +82,22 @@ int runSet(const Invocation& in)
     auto doc = openProject(path);
     // One document operation per property, as the editor's panels make them.
     if (sharpness)
-        doc->setSharpness(*sharpness);
+        doc->look().setSharpness(*sharpness);
     if (unspecified)
-        doc->setUnspecifiedMode(*unspecified);
+        doc->look().setUnspecifiedMode(*unspecified);
     if (time)
-        doc->setTimeInterpolation(*time);
+        doc->look().setTimeInterpolation(*time);
     if (light)
-        doc->setLight(*light);
+        doc->look().setLight(*light);
     if (style)
-        doc->setShadingStyle(*style);
+        doc->look().setShadingStyle(*style);
     if (removeRenderCamera) {
-        doc->setRenderCamera(std::nullopt);
+        doc->look().setRenderCamera(std::nullopt);
     } else if (renderView) {
         if (!doc->hasMesh())
             throw model::IoError(path, Cli::tr("has no base model to frame a render camera on"));
         // Framed for the widest 16:9 shot; narrower ones fit too with the vertical fit.
-        doc->setRenderCamera(model::cameraFromView(doc->data(), *renderView, 16.0 / 9.0));
+        doc->look().setRenderCamera(model::cameraFromView(doc->data(), *renderView, 16.0 / 9.0));
     }
     doc->saveAs(path);
     return kExitOk;

@@ -75,7 +75,7 @@ int runOffsets(const Invocation& in)
         request.width = job.size.width();
         request.height = job.size.height();
         const model::AutoOffsetsResult result = model::solveAutoOffsets(doc->data(), request);
-        doc->applyAutoOffsets(result.target, result.values);
+        doc->shading().applyAutoOffsets(result.target, result.values);
         QJsonArray segments;
         for (std::size_t s = 0; s < result.after.size(); ++s)
             segments.append(QJsonObject{{"id", int(s)}, {"pixels", result.after[s].pixels},
@@ -106,10 +106,10 @@ int runOffsets(const Invocation& in)
         }
     } else if (in.isSet("clear")) {
         // --clear on a key without --frame clears every frame of its layer.
-        doc->clearShadingOffsets(target, !target.isBase() && !in.isSet("frame"));
+        doc->shading().clearShadingOffsets(target, !target.isBase() && !in.isSet("frame"));
         json.insert("operation", "clear");
     } else {
-        doc->smoothShadingOffsets(target, rounds);
+        doc->shading().smoothShadingOffsets(target, rounds);
         json.insert("operation", "smooth");
         json.insert("rounds", rounds);
     }

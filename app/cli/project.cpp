@@ -36,7 +36,7 @@ int runNew(const Invocation& in)
     for (const QString& w : doc.newFromMesh(mesh, fps, in.isSet("sequence")))
         printErr(Cli::tr("warning: %1: %2").arg(mesh, w));
     for (const QString& image : in.values("drawing"))
-        doc.importDrawing(image);
+        doc.drawings().importDrawing(image);
     doc.saveAs(out);
     return kExitOk;
 }

@@ -421,7 +421,7 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
             m_document->reset(std::move(data));
         } else {
             try {
-                m_document->setAnimatedBase(std::move(*animated.value), name);
+                m_document->animation().setAnimatedBase(std::move(*animated.value), name);
             } catch (const model::IoError& e) {
                 showError(e.message());
                 return false;
@@ -469,7 +469,7 @@ bool MainWindow::importDrawing(const QString& path)
             showError(outcome.error);
         return false;
     }
-    const auto id = m_document->addDrawing(std::move(*outcome.value));
+    const auto id = m_document->drawings().addDrawing(std::move(*outcome.value));
     m_scene->select({views::ScenePanel::ItemKind::Drawing, id});
     statusBar()->showMessage(tr("Added drawing %1").arg(QFileInfo(path).fileName()), 5000);
     return true;

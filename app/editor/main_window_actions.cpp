@@ -137,7 +137,7 @@ void MainWindow::createActions()
         [this] {
             if (!m_document->hasMesh())
                 return;
-            m_document->setRenderCamera(m_viewport->camera());
+            m_document->look().setRenderCamera(m_viewport->camera());
             statusBar()->showMessage(tr("The render camera is the current view."), 4000);
         });
     make(QStringLiteral("actionViewRenderCamera"), tr("View Through Render &Camera"),
@@ -233,7 +233,7 @@ void MainWindow::createActions()
     make(QStringLiteral("actionCreateKeyFromView"), tr("Create Key from &View"), QKeySequence(Qt::CTRL | Qt::Key_K),
         tr("Make a key viewpoint seen from the current camera, starting as a copy of the base model"), [this] {
             try {
-                const auto id = m_document->createKey(tr("Key"), m_viewport->camera());
+                const auto id = m_document->keys().createKey(tr("Key"), m_viewport->camera());
                 m_scene->select({views::ScenePanel::ItemKind::Key, id});
             } catch (const model::EditRefused& e) {
                 showError(e.message());
@@ -404,7 +404,7 @@ void MainWindow::optimiseLightForStereo()
                 return;
             }
             try {
-                m_document->applyOptimisedLight(report->before, report->after);
+                m_document->look().applyOptimisedLight(report->before, report->after);
             } catch (const model::EditRefused& e) {
                 showError(e.message());
                 return;

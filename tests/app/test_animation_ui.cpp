@@ -100,13 +100,13 @@ private slots:
         views::TimelinePanel* panel = timeline(window);
         // A key deformation at frame 12 (one vertex moved), a highlight key at 5, a camera key at 9.
         model::Camera side = window.viewport()->camera();
-        const model::ObjectId key = doc->createKey(QStringLiteral("test key"), side);
+        const model::ObjectId key = doc->keys().createKey(QStringLiteral("test key"), side);
         model::SparseOffsets moved;
         moved.indices.push_back(0);
         moved.deltas.emplace_back(0.01f, 0.f, 0.f);
-        doc->setKeyOffsets(key, 12, moved, QStringLiteral("test"));
-        doc->addHighlightLayer(QStringLiteral("test highlight"), 5);
-        doc->setCameraKey(9, window.viewport()->camera());
+        doc->keys().setKeyDeformation(key, 12, moved, QStringLiteral("test"));
+        doc->highlights().addHighlightLayer(QStringLiteral("test highlight"), 5);
+        doc->animation().setCameraKey(9, window.viewport()->camera());
         const std::vector<TimelineMark>& marks = panel->marks();
         QVERIFY(hasMark(marks, 12, TimelineMarkKind::Deformation));
         QVERIFY(hasMark(marks, 5, TimelineMarkKind::Highlight));
@@ -150,7 +150,7 @@ private slots:
         model::Document* doc = window.document();
         views::TimelinePanel* panel = timeline(window);
         views::Playback* playback = panel->playback();
-        doc->setSceneTime({24.0, 0, 3});
+        doc->animation().setSceneTime({24.0, 0, 3});
         std::vector<int> seen;
         connect(doc, &model::Document::changed, this, [&](const model::ChangeSet& change) {
             if (change.has(model::Part::Playhead))
@@ -224,7 +224,7 @@ private slots:
         QVERIFY(showActive(window));
         model::Document* doc = window.document();
         views::Playback* playback = timeline(window)->playback();
-        doc->setSceneTime({24.0, 0, 11});
+        doc->animation().setSceneTime({24.0, 0, 11});
         window.findChild<QDockWidget*>(QStringLiteral("depthDock"))->raise();
         views::DepthAnalysisRunner* runner = window.depthPanel()->runner();
         QTRY_VERIFY_WITH_TIMEOUT(runner->isActive(), 5000);
@@ -249,7 +249,7 @@ private slots:
         views::Viewport* viewport = window.viewport();
         QAction* lookThrough = window.action(QStringLiteral("actionLookThroughShotCamera"));
         QVERIFY(!lookThrough->isChecked()); // the sample has no camera path
-        doc->makeTurntable(model::Turntable{}, aspectOf(viewport));
+        doc->animation().makeTurntable(model::Turntable{}, aspectOf(viewport));
         lookThrough->setChecked(true);
         QVERIFY(viewport->isPreview());
         auto* sphere = window.findChild<views::ViewSpherePanel*>();
@@ -319,7 +319,7 @@ private slots:
         for (int f : {0, 10, 20}) {
             camera.eye = Eigen::AngleAxisd(0.3 * f / 10.0, Eigen::Vector3d::UnitY()) * (camera.eye - camera.target)
                 + camera.target;
-            doc->setCameraKey(f, camera);
+            doc->animation().setCameraKey(f, camera);
         }
         window.action(QStringLiteral("actionObserverLayout"))->setChecked(true);
         QDockWidget* dock = window.findChild<QDockWidget*>(QStringLiteral("observerDock"));
@@ -361,7 +361,7 @@ private slots:
         window.action(QStringLiteral("actionLoopPlayback"))->setChecked(false);
         views::Playback* playback = timeline(window)->playback();
         test::waitForRender(viewport);
-        doc->setSceneTime({24.0, 0, 47});
+        doc->animation().setSceneTime({24.0, 0, 47});
         doc->setCurrentFrame(0);
         test::waitForRender(viewport);
         // From frame 0 the clock calls for frames 1..47, one every 1/24 s; the player stops one

@@ -317,9 +317,9 @@ private slots:
                 offsets.indices.push_back(v);
                 offsets.deltas.emplace_back(delta(rng), delta(rng), delta(rng));
             }
-            doc.createKey(QStringLiteral("key %1").arg(k + 1), camera, {}, std::move(offsets));
+            doc.keys().createKey(QStringLiteral("key %1").arg(k + 1), camera, {}, std::move(offsets));
         }
-        doc.setSharpness(m_current);
+        doc.look().setSharpness(m_current);
         m_project = m_dir.filePath(QStringLiteral("dragon.celform"));
         doc.saveAs(m_project);
         QElapsedTimer timer;

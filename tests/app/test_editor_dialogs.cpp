@@ -498,7 +498,7 @@ private slots:
         app::MainWindow window(app::MainWindow::Mode::Batch);
         QVERIFY(test::showSample(window, QSize(1200, 800)));
         QUndoStack* stack = window.document()->undoStack();
-        window.document()->setSharpness(2.0);
+        window.document()->look().setSharpness(2.0);
         QCOMPARE(stack->count(), 1);
         auto* dialog = openPreferences(window);
         QVERIFY(dialog);
@@ -512,7 +512,7 @@ private slots:
         QCOMPARE(stack->count(), 0);
         QCOMPARE(stack->undoLimit(), 5);
         for (int i = 0; i < 8; ++i)
-            window.document()->setSharpness(1.5 + 0.1 * i);
+            window.document()->look().setSharpness(1.5 + 0.1 * i);
         QCOMPARE(stack->count(), 5);
     }
 

@@ -103,7 +103,7 @@ private slots:
         QVERIFY(window.openFile(test::sampleProject()));
         QVERIFY(!window.isWindowModified());
         const auto id = window.document()->data().drawings.front().id;
-        window.document()->renameDrawing(id, QStringLiteral("side view"));
+        window.document()->drawings().renameDrawing(id, QStringLiteral("side view"));
         QVERIFY(window.isWindowModified());
         window.action(QStringLiteral("actionUndo"))->trigger();
         QVERIFY(!window.isWindowModified());
@@ -174,7 +174,8 @@ private slots:
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);
         QVERIFY(window.openFile(test::sampleProject()));
-        window.document()->renameDrawing(window.document()->data().drawings.front().id, QStringLiteral("unsaved"));
+        window.document()->drawings().renameDrawing(
+            window.document()->data().drawings.front().id, QStringLiteral("unsaved"));
         const model::ProjectData before = window.document()->data();
         QVERIFY(!window.openFile(
             test::testDataPath(QStringLiteral("fuzz-regressions/mesh/gltf-30000-nested-nodes-stack-overflow.gltf"))));
@@ -188,7 +189,8 @@ private slots:
         app::MainWindow window(app::MainWindow::Mode::Batch);
         QVERIFY(window.openFile(test::sampleProject()));
         auto* recovery = window.recovery();
-        window.document()->renameDrawing(window.document()->data().drawings.front().id, QStringLiteral("edited"));
+        window.document()->drawings().renameDrawing(
+            window.document()->data().drawings.front().id, QStringLiteral("edited"));
         QVERIFY(recovery->autosaveNow());
         QVERIFY(QFileInfo::exists(recovery->ownRecoveryFile()));
         QCOMPARE(model::loadProject(recovery->ownRecoveryFile()).drawings.front().name, QStringLiteral("edited"));

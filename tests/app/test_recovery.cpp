@@ -36,9 +36,9 @@ namespace {
 /// The edits the child makes before its autosave, made again here to know what to expect.
 void editBeforeAutosave(model::Document& doc)
 {
-    doc.renameDrawing(doc.data().drawings.front().id, QStringLiteral("recovered drawing"));
-    doc.setSharpness(3.25);
-    doc.addHighlightLayer(QStringLiteral("recovered layer"), 0);
+    doc.drawings().renameDrawing(doc.data().drawings.front().id, QStringLiteral("recovered drawing"));
+    doc.look().setSharpness(3.25);
+    doc.highlights().addHighlightLayer(QStringLiteral("recovered layer"), 0);
 }
 
 /// The child: an editor window that opens the project, edits it, autosaves, edits once more (an
@@ -55,7 +55,7 @@ int editorChild(int argc, char** argv)
     editBeforeAutosave(*window.document());
     if (!window.recovery()->autosaveNow())
         return 3;
-    window.document()->setSharpness(4.5);
+    window.document()->look().setSharpness(4.5);
     std::printf("%s\n", qPrintable(window.recovery()->ownRecoveryFile()));
     std::fflush(stdout);
     return QApplication::exec();
@@ -160,23 +160,23 @@ private slots:
         model::Document doc;
         doc.open(m_project);
         app::RecoveryManager recovery(&doc, dir.path());
-        doc.beginGesture();
-        doc.setSharpness(2.0);
+        model::Gesture g1 = doc.beginGesture();
+        doc.look().setSharpness(2.0, g1);
         QVERIFY(recovery.autosaveNow());
-        doc.setSharpness(2.5); // merges into the step autosaved above
+        doc.look().setSharpness(2.5, g1); // merges into the step autosaved above
         QVERIFY(recovery.autosaveNow());
-        doc.endGesture();
+        g1.end();
         QCOMPARE(model::loadProject(recovery.ownRecoveryFile()).blend.sharpness, 2.5);
 
         model::Camera camera;
         camera.eye = doc.data().baseMesh->centre() + Eigen::Vector3d(0, 0, 10);
         camera.target = doc.data().baseMesh->centre();
-        const model::ObjectId key = doc.createKey(QStringLiteral("front"), camera);
-        model::BrushStroke stroke = doc.beginBrushStroke(key, 0, 0, 0.0, camera);
-        doc.applyBrushStroke(stroke, {model::BrushMotion::Drag, 0.01, 0.0});
+        const model::ObjectId key = doc.keys().createKey(QStringLiteral("front"), camera);
+        model::BrushStroke stroke = doc.keys().beginBrushStroke(key, 0, 0, 0.0, camera);
+        doc.keys().applyBrushStroke(stroke, {model::BrushMotion::Drag, 0.01, 0.0});
         QVERIFY(recovery.autosaveNow());
-        doc.applyBrushStroke(stroke, {model::BrushMotion::Drag, 0.01, 0.0});
-        doc.endBrushStroke(stroke);
+        doc.keys().applyBrushStroke(stroke, {model::BrushMotion::Drag, 0.01, 0.0});
+        doc.keys().endBrushStroke(stroke);
         QVERIFY(recovery.autosaveNow());
         model::ProjectData recovered = model::loadProject(recovery.ownRecoveryFile());
         QVERIFY2(recovered == doc.data(), "the recovery copy misses the end of the brush stroke");

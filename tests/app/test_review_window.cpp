@@ -86,8 +86,8 @@ private slots:
     {
         model::Document doc;
         doc.setBaseMesh(ball(), QStringLiteral("ball"));
-        doc.createKey(QStringLiteral("Front"), cameraAt({0, 0, 4}));
-        doc.createKey(QStringLiteral("Side"), cameraAt({4, 0.5, 0}));
+        doc.keys().createKey(QStringLiteral("Front"), cameraAt({0, 0, 4}));
+        doc.keys().createKey(QStringLiteral("Side"), cameraAt({4, 0.5, 0}));
         const model::Look lookBefore = doc.data().look;
 
         app::ReviewWindow review(&doc, cameraAt({0, 1, 4.5}));

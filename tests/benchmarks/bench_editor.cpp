@@ -3,7 +3,7 @@
 // history), before any paint. Needs an X server: run under xvfb-run.
 // - brush step: one mouse move of a brush stroke on a key, on the bundled elephant sample and on
 //   the 871k-triangle dragon with about 5,000 vertices in the radius. Baseline in the same run: the
-//   same step through a document nobody listens to (Document::applyBrushStroke alone).
+//   same step through a document nobody listens to (KeyEdits::applyBrushStroke alone).
 // - brush step with upload: the same step followed by what the next paint does first, bringing
 //   the viewport's VTK arrays up to date (the displayed shape's touched rows and their normals),
 //   on the elephant and on the dragon with about 500 and about 5,000 vertices in the radius: the
@@ -27,6 +27,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QUndoStack>
 
@@ -96,7 +97,7 @@ BrushRun startStroke(app::MainWindow& w, model::ProjectData data, std::size_t ra
     views::Viewport& vp = *w.viewport();
     doc.reset(std::move(data));
     vp.resetView();
-    const model::ObjectId key = doc.createKey(QStringLiteral("front"), vp.camera());
+    const model::ObjectId key = doc.keys().createKey(QStringLiteral("front"), vp.camera());
     vp.setDisplayedKey(key);
     vp.setTool(views::Viewport::Tool::Brush);
     if (!awaitFrame(vp))
@@ -170,21 +171,21 @@ void documentOnlySteps(benchmark::State& state, model::ProjectData data, std::si
     model::Camera camera;
     camera.eye = doc.data().baseMesh->centre() + Eigen::Vector3d(0, 0, 5);
     camera.target = doc.data().baseMesh->centre();
-    const model::ObjectId key = doc.createKey(QStringLiteral("front"), camera);
+    const model::ObjectId key = doc.keys().createKey(QStringLiteral("front"), camera);
     // The vertex nearest the centre, as the viewport's pick roughly finds.
     const algo::Positions& base = doc.data().baseMesh->vertices;
     Eigen::Index picked = 0;
     (base.rowwise() - camera.target.cast<float>().transpose()).rowwise().squaredNorm().minCoeff(&picked);
     if (radiusVertices > 0)
         radius = radiusFor(base, std::uint32_t(picked), radiusVertices);
-    model::BrushStroke stroke = doc.beginBrushStroke(key, 0, std::uint32_t(picked), radius, camera);
-    doc.applyBrushStroke(stroke, {model::BrushMotion::Drag, 1e-4, 0.0});
+    model::BrushStroke stroke = doc.keys().beginBrushStroke(key, 0, std::uint32_t(picked), radius, camera);
+    doc.keys().applyBrushStroke(stroke, {model::BrushMotion::Drag, 1e-4, 0.0});
     double dx = 3e-4;
     for (auto _ : state) {
-        doc.applyBrushStroke(stroke, {model::BrushMotion::Drag, dx, 0.0});
+        doc.keys().applyBrushStroke(stroke, {model::BrushMotion::Drag, dx, 0.0});
         dx = -dx;
     }
-    doc.endBrushStroke(stroke);
+    doc.keys().endBrushStroke(stroke);
     state.counters["selected"] = double(stroke.indices.size());
 }
 
@@ -290,7 +291,8 @@ void BM_HighlightSpinStep(benchmark::State& state)
     const auto connection = QObject::connect(
         &doc, &model::Document::changed, [&notifications](const model::ChangeSet&) { ++notifications; });
     // A held arrow key: the steps of one gesture (GestureTracker opens it on the key press).
-    doc.beginGesture();
+    QKeyEvent press(QEvent::KeyPress, Qt::Key_Shift, Qt::NoModifier);
+    QCoreApplication::sendEvent(epsilon, &press);
     bool up = true;
     for (auto _ : state) {
         if (up)
@@ -299,7 +301,8 @@ void BM_HighlightSpinStep(benchmark::State& state)
             epsilon->stepDown();
         up = !up;
     }
-    doc.endGesture();
+    QKeyEvent release(QEvent::KeyRelease, Qt::Key_Shift, Qt::NoModifier);
+    QCoreApplication::sendEvent(epsilon, &release);
     QObject::disconnect(connection);
     state.counters["notifications_per_step"]
         = double(notifications) / double(std::max<std::int64_t>(state.iterations(), 1));
@@ -317,14 +320,14 @@ void BM_HighlightSpinStepDocumentOnly(benchmark::State& state)
     doc.reset(armadilloWithLayers());
     const model::ObjectId id = doc.data().look.highlights.front().id;
     float value = 0.05f;
-    doc.beginGesture();
+    model::Gesture gesture = doc.beginGesture();
     for (auto _ : state) {
         algo::HighlightLayer layer = doc.data().highlight(id)->layerAt(0);
         value = value == 0.05f ? 0.06f : 0.05f;
         layer.shape.epsilon = value;
-        doc.setHighlightKey(id, 0, layer);
+        doc.highlights().setHighlightKey(id, 0, layer, gesture);
     }
-    doc.endGesture();
+    gesture.end();
 }
 
 void microseconds(benchmark::internal::Benchmark* b)

@@ -1,6 +1,6 @@
 // Stylized highlights (Anjyo & Hiramitsu 2003) on the armadillo (52k triangles) at 1280x720, toon
 // shading with lines (the default look):
-// - slider to frame: a highlight layer's epsilon changed through Document::setHighlightKey, as the
+// - slider to frame: a highlight layer's epsilon changed through HighlightEdits::setHighlightKey, as the
 //   Highlights dock does, until the viewport has drawn the new frame; the baseline is the same
 //   viewport redrawn with nothing changed. Needs an X server: run under xvfb-run (Mesa llvmpipe
 //   there, so the figures are a software-GL floor).
@@ -149,9 +149,9 @@ Scene& scene()
 bool prepare(Scene& s, int layers)
 {
     while (!s.document.data().look.highlights.empty())
-        s.document.removeHighlightLayer(s.document.data().look.highlights.back().id);
+        s.document.highlights().removeHighlightLayer(s.document.data().look.highlights.back().id);
     if (layers > 0)
-        s.document.addHighlightLayers(highlightTracks(layers), QStringLiteral("Layers"));
+        s.document.highlights().addHighlightLayers(highlightTracks(layers), QStringLiteral("Layers"));
     s.document.undoStack()->clear();
     for (int i = 0; i < 2; ++i) {
         const int before = s.viewport->renderCount();
@@ -169,13 +169,13 @@ void saveViewport(Scene& s, const QString& name)
         s.viewport->renderedImage().save(path);
 }
 
-/// The Highlights dock's edit path: the layer at the frame, the change, Document::setHighlightKey.
+/// The Highlights dock's edit path: the layer at the frame, the change, HighlightEdits::setHighlightKey.
 void dockEdit(model::Document& document, float epsilon)
 {
     const model::HighlightTrack& track = document.data().look.highlights.front();
     algo::HighlightLayer layer = track.layerAt(0);
     layer.shape.epsilon = epsilon;
-    document.setHighlightKey(track.id, 0, layer);
+    document.highlights().setHighlightKey(track.id, 0, layer);
 }
 
 void sliderFrames(benchmark::State& state, bool change)

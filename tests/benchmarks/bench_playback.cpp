@@ -48,7 +48,7 @@ Shot& shot()
     s.viewport->resize(830, 710);
     s.viewport->show();
     if (s.document.data().look.cameraPath.empty())
-        s.document.makeTurntable(model::Turntable{}, 830.0 / 710.0);
+        s.document.animation().makeTurntable(model::Turntable{}, 830.0 / 710.0);
     s.viewport->setPreview(true);
     for (int i = 0; i < 20 && s.viewport->renderCount() == 0; ++i)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 50);

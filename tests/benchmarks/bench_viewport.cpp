@@ -64,7 +64,7 @@ Scene& scene()
                 offsets.indices.push_back(v);
                 offsets.deltas.emplace_back(0.5f, 0.0f, 0.0f);
             }
-            scene.document.createKey(QStringLiteral("k%1").arg(k), camera, {}, offsets);
+            scene.document.keys().createKey(QStringLiteral("k%1").arg(k), camera, {}, offsets);
         }
         scene.viewport = std::make_unique<views::Viewport>(&scene.document);
         scene.viewport->resize(1280, 720);

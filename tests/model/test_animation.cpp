@@ -109,7 +109,7 @@ private slots:
         t.elevationDegrees = 30.0;
         t.startFrame = 10;
         const int before = m_doc.undoStack()->count();
-        m_doc.makeTurntable(t, 1.0);
+        m_doc.animation().makeTurntable(t, 1.0);
         QCOMPARE(m_doc.undoStack()->count(), before + 1);
         const CameraPath& path = m_doc.data().look.cameraPath;
         QCOMPARE(int(path.keys.size()), 24);
@@ -137,7 +137,7 @@ private slots:
         QCOMPARE(m_doc.data().time, SceneTime{});
         // Refused settings change nothing.
         t.elevationDegrees = 90.0;
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.makeTurntable(t));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.animation().makeTurntable(t));
         QVERIFY(m_doc.data().look.cameraPath.empty());
     }
 
@@ -145,13 +145,13 @@ private slots:
     {
         SceneTime time;
         time.fps = 0.0;
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setSceneTime(time));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.animation().setSceneTime(time));
         time.fps = 30.0;
         time.firstFrame = 5;
         time.lastFrame = 4;
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setSceneTime(time));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.animation().setSceneTime(time));
         time.lastFrame = 95;
-        m_doc.setSceneTime(time);
+        m_doc.animation().setSceneTime(time);
         QCOMPARE(m_doc.data().time.fps, 30.0);
         QCOMPARE(m_doc.undoStack()->undoText(), QStringLiteral("Change Frame Rate"));
         m_doc.undoStack()->undo();
@@ -160,14 +160,14 @@ private slots:
 
     void cameraKeysAreUndoSteps()
     {
-        m_doc.setCameraKey(3, cameraAt({0, 0, 5}));
-        m_doc.setCameraKey(9, cameraAt({5, 0, 0}));
+        m_doc.animation().setCameraKey(3, cameraAt({0, 0, 5}));
+        m_doc.animation().setCameraKey(9, cameraAt({5, 0, 0}));
         QCOMPARE(int(m_doc.data().look.cameraPath.keys.size()), 2);
-        m_doc.removeCameraKey(3);
+        m_doc.animation().removeCameraKey(3);
         QCOMPARE(m_doc.data().look.cameraPath.keys.front().frame, 9);
         m_doc.undoStack()->undo();
         QCOMPARE(int(m_doc.data().look.cameraPath.keys.size()), 2);
-        m_doc.clearCameraPath();
+        m_doc.animation().clearCameraPath();
         QVERIFY(m_doc.data().look.cameraPath.empty());
         m_doc.undoStack()->undo();
         QCOMPARE(int(m_doc.data().look.cameraPath.keys.size()), 2);
@@ -201,12 +201,12 @@ private slots:
     void keyOffsetsRideOnTheAnimatedBase()
     {
         // Key "front" at frame 0: vertex 4 (0, 0, 1) pushed 0.5 further along +z.
-        const ObjectId front = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId front = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         SparseOffsets offsets;
         offsets.indices = {4};
         offsets.deltas = {Eigen::Vector3f(0, 0, 0.5f)};
-        m_doc.setKeyOffsets(front, 0, offsets, QStringLiteral("Push"));
-        m_doc.setAnimatedBase(octahedron(), slide(), 25.0, QStringLiteral("slide"));
+        m_doc.keys().setKeyDeformation(front, 0, offsets, QStringLiteral("Push"));
+        m_doc.animation().setAnimatedBase(octahedron(), slide(), 25.0, QStringLiteral("slide"));
         QVERIFY(m_doc.data().animated());
         QCOMPARE(m_doc.data().time.fps, 25.0);
         QCOMPARE(m_doc.data().time.lastFrame, 4);
@@ -234,11 +234,11 @@ private slots:
 
     void animatedBaseWithTooFewVerticesIsRefused()
     {
-        const ObjectId front = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId front = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         SparseOffsets offsets;
         offsets.indices = {5};
         offsets.deltas = {Eigen::Vector3f(0, 0, 0.5f)};
-        m_doc.setKeyOffsets(front, 0, offsets, QStringLiteral("Push"));
+        m_doc.keys().setKeyDeformation(front, 0, offsets, QStringLiteral("Push"));
         auto small = std::make_shared<algo::TriMesh>(*octahedron());
         small->vertices.conservativeResize(5, 3);
         small->faces.resize(1, 3);
@@ -246,11 +246,13 @@ private slots:
         auto a = slide();
         a->morphTargets[0].conservativeResize(5, 3);
         const int count = m_doc.undoStack()->count();
-        QVERIFY_THROWS_EXCEPTION(IoError, m_doc.setAnimatedBase(small, a, 24.0, QStringLiteral("small.glb")));
+        QVERIFY_THROWS_EXCEPTION(
+            IoError, m_doc.animation().setAnimatedBase(small, a, 24.0, QStringLiteral("small.glb")));
         QCOMPARE(m_doc.undoStack()->count(), count);
         QVERIFY(!m_doc.data().animated());
         // An animation that does not match its own mesh is refused too.
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setAnimatedBase(octahedron(), a, 24.0, QStringLiteral("x.glb")));
+        QVERIFY_THROWS_EXCEPTION(
+            EditRefused, m_doc.animation().setAnimatedBase(octahedron(), a, 24.0, QStringLiteral("x.glb")));
     }
 
     void projectFileKeepsTimePathAndAnimation()

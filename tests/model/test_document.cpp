@@ -89,7 +89,8 @@ private slots:
     {
         QSignalSpy spy(&m_doc, &Document::changed);
         ObjectId id = 0;
-        const ProjectData after = applyUndoRedo([&] { id = m_doc.addDrawing(smallDrawing(QStringLiteral("side"))); });
+        const ProjectData after
+            = applyUndoRedo([&] { id = m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("side"))); });
         QCOMPARE(after.drawings.size(), std::size_t(1));
         QCOMPARE(after.drawings.front().id, id);
         QVERIFY(after.nextId > id);
@@ -99,42 +100,43 @@ private slots:
 
     void drawingNamesAreUnique()
     {
-        m_doc.addDrawing(smallDrawing(QStringLiteral("side")));
-        const ObjectId second = m_doc.addDrawing(smallDrawing(QStringLiteral("side")));
+        m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("side")));
+        const ObjectId second = m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("side")));
         QCOMPARE(m_doc.data().drawing(second)->name, QStringLiteral("side 2"));
     }
 
     void removeDrawingUnlinksKeys()
     {
-        const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("front")));
+        const ObjectId d = m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("front")));
         KeyViewpoint key = keyWithOffsets(QStringLiteral("front key"));
         key.drawingIds = {d};
-        const ObjectId k = m_doc.addKey(key);
-        const ProjectData after = applyUndoRedo([&] { m_doc.removeDrawing(d); });
+        const ObjectId k = m_doc.keys().addKey(key);
+        const ProjectData after = applyUndoRedo([&] { m_doc.drawings().removeDrawing(d); });
         QVERIFY(after.drawings.empty());
         QVERIFY(after.key(k)->drawingIds.empty());
     }
 
     void renameDrawing()
     {
-        const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
-        const ProjectData after = applyUndoRedo([&] { m_doc.renameDrawing(d, QStringLiteral("three-quarter")); });
+        const ObjectId d = m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("a")));
+        const ProjectData after
+            = applyUndoRedo([&] { m_doc.drawings().renameDrawing(d, QStringLiteral("three-quarter")); });
         QCOMPARE(after.drawing(d)->name, QStringLiteral("three-quarter"));
         // An empty name is refused and pushes nothing.
         const int count = m_doc.undoStack()->count();
-        m_doc.renameDrawing(d, QStringLiteral("   "));
+        m_doc.drawings().renameDrawing(d, QStringLiteral("   "));
         QCOMPARE(m_doc.undoStack()->count(), count);
     }
 
     void opacityDragIsOneUndoStep()
     {
-        const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
+        const ObjectId d = m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("a")));
         const double start = m_doc.data().drawing(d)->opacity;
         const int count = m_doc.undoStack()->count();
-        m_doc.beginGesture(); // a slider's press
+        Gesture g1 = m_doc.beginGesture(); // a slider's press
         for (int i = 1; i <= 10; ++i)
-            m_doc.setDrawingOpacity(d, i / 10.0);
-        m_doc.endGesture(); // its release
+            m_doc.drawings().setDrawingOpacity(d, i / 10.0, g1);
+        g1.end(); // its release
         QCOMPARE(m_doc.undoStack()->count(), count + 1);
         QCOMPARE(m_doc.data().drawing(d)->opacity, 1.0);
         m_doc.undoStack()->undo();
@@ -143,40 +145,40 @@ private slots:
 
     void drawingCamera()
     {
-        const ObjectId d = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
+        const ObjectId d = m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("a")));
         Camera c;
         c.eye = Eigen::Vector3d(0, 0, 10);
         c.projection = Projection::Orthographic;
-        const ProjectData after = applyUndoRedo([&] { m_doc.setDrawingCamera(d, c); });
+        const ProjectData after = applyUndoRedo([&] { m_doc.drawings().setDrawingCamera(d, c); });
         QVERIFY(after.drawing(d)->aligned);
         QVERIFY(after.drawing(d)->camera == c);
         // A degenerate camera is refused.
         Camera bad = c;
         bad.target = bad.eye;
         const int count = m_doc.undoStack()->count();
-        m_doc.setDrawingCamera(d, bad);
+        m_doc.drawings().setDrawingCamera(d, bad);
         QCOMPARE(m_doc.undoStack()->count(), count);
     }
 
     void keys()
     {
         ObjectId k = 0;
-        ProjectData after = applyUndoRedo([&] { k = m_doc.addKey(keyWithOffsets(QStringLiteral("side"))); });
+        ProjectData after = applyUndoRedo([&] { k = m_doc.keys().addKey(keyWithOffsets(QStringLiteral("side"))); });
         QCOMPARE(after.keys.size(), std::size_t(1));
-        after = applyUndoRedo([&] { m_doc.renameKey(k, QStringLiteral("left side")); });
+        after = applyUndoRedo([&] { m_doc.keys().renameKey(k, QStringLiteral("left side")); });
         QCOMPARE(after.key(k)->name, QStringLiteral("left side"));
-        after = applyUndoRedo([&] { m_doc.setKeyEnabled(k, false); });
+        after = applyUndoRedo([&] { m_doc.keys().setKeyEnabled(k, false); });
         QVERIFY(!after.key(k)->enabled);
-        after = applyUndoRedo([&] { m_doc.removeKey(k); });
+        after = applyUndoRedo([&] { m_doc.keys().removeKey(k); });
         QVERIFY(after.keys.empty());
     }
 
     void removeThenUndoKeepsOrder()
     {
-        const ObjectId a = m_doc.addKey(keyWithOffsets(QStringLiteral("a"), {1, 0, 0}));
-        const ObjectId b = m_doc.addKey(keyWithOffsets(QStringLiteral("b"), {0, 1, 0}));
-        const ObjectId c = m_doc.addKey(keyWithOffsets(QStringLiteral("c"), {0, 0, 1}));
-        m_doc.removeKey(b);
+        const ObjectId a = m_doc.keys().addKey(keyWithOffsets(QStringLiteral("a"), {1, 0, 0}));
+        const ObjectId b = m_doc.keys().addKey(keyWithOffsets(QStringLiteral("b"), {0, 1, 0}));
+        const ObjectId c = m_doc.keys().addKey(keyWithOffsets(QStringLiteral("c"), {0, 0, 1}));
+        m_doc.keys().removeKey(b);
         m_doc.undoStack()->undo();
         QCOMPARE(m_doc.data().keys.at(0).id, a);
         QCOMPARE(m_doc.data().keys.at(1).id, b);
@@ -188,13 +190,13 @@ private slots:
         BlendSettings blend;
         blend.sharpness = 2.5;
         blend.unspecified = UnspecifiedMode::Cosine2;
-        applyUndoRedo([&] { m_doc.setSharpness(2.5); });
-        ProjectData after = applyUndoRedo([&] { m_doc.setUnspecifiedMode(UnspecifiedMode::Cosine2); });
+        applyUndoRedo([&] { m_doc.look().setSharpness(2.5); });
+        ProjectData after = applyUndoRedo([&] { m_doc.look().setUnspecifiedMode(UnspecifiedMode::Cosine2); });
         QVERIFY(after.blend == blend);
         Look look;
         look.style = ShadingStyle::Gooch;
         look.light.type = LightType::Point;
-        after = applyUndoRedo([&] { m_doc.setLook(look); });
+        after = applyUndoRedo([&] { m_doc.look().setLook(look); });
         QVERIFY(after.look == look);
     }
 
@@ -208,7 +210,7 @@ private slots:
 
     void replaceBaseMeshRefusesMismatchedKeys()
     {
-        m_doc.addKey(keyWithOffsets(QStringLiteral("k"))); // uses vertex 3
+        m_doc.keys().addKey(keyWithOffsets(QStringLiteral("k"))); // uses vertex 3
         auto small = std::make_shared<algo::TriMesh>();
         small->vertices.resize(3, 3);
         small->vertices.setZero();
@@ -225,53 +227,76 @@ private slots:
     {
         QSignalSpy changed(&m_doc, &Document::changed);
         ProjectData after = applyUndoRedo([&] {
-            m_doc.setFaceSet(QStringLiteral("p"), {3, 1, 1}, QStringLiteral("t"));
+            m_doc.faceSets().setFaceSet(QStringLiteral("p"), {3, 1, 1}, QStringLiteral("t"));
         });
         QCOMPARE(after.faceSets.size(), std::size_t(1));
         QCOMPARE(after.faceSets[0].faces, (std::vector<std::int32_t>{1, 3})); // sorted, repeats dropped
         QVERIFY(changed.count() >= 3);
         // A paint drag: several steps with one stroke id are one undo step.
         const int count = m_doc.undoStack()->count();
-        m_doc.beginGesture();
-        m_doc.setFaceSet(QStringLiteral("p"), {0, 1, 3}, QStringLiteral("paint"));
-        m_doc.setFaceSet(QStringLiteral("p"), {0, 1, 2, 3}, QStringLiteral("paint"));
-        m_doc.endGesture();
+        Gesture g2 = m_doc.beginGesture();
+        m_doc.faceSets().setFaceSet(QStringLiteral("p"), {0, 1, 3}, QStringLiteral("paint"), g2);
+        m_doc.faceSets().setFaceSet(QStringLiteral("p"), {0, 1, 2, 3}, QStringLiteral("paint"), g2);
+        g2.end();
         QCOMPARE(m_doc.undoStack()->count(), count + 1);
         QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces.size(), std::size_t(4));
         m_doc.undoStack()->undo();
         QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{1, 3}));
+        // Painting dabs: the drag's step holds the net change; a drag that takes back what it
+        // added leaves no step, and a drag that adds and takes undoes to the set as it was.
+        const int paintStart = m_doc.undoStack()->index();
+        Gesture g3 = m_doc.beginGesture();
+        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, false, g3);
+        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, true, g3);
+        g3.end();
+        QCOMPARE(m_doc.undoStack()->index(), paintStart);
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{1, 3}));
+        Gesture g4 = m_doc.beginGesture();
+        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, false, g4);
+        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {1, 2}, true, g4);
+        g4.end();
+        QCOMPARE(m_doc.undoStack()->index(), paintStart + 1);
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{0, 3}));
+        m_doc.undoStack()->undo();
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{1, 3}));
+        m_doc.undoStack()->redo();
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{0, 3}));
+        m_doc.undoStack()->undo();
         // Bad input is refused with the data unchanged.
         const ProjectData before = m_doc.data();
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setFaceSet(QStringLiteral("p"), {4}, QStringLiteral("t")));
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setFaceSet(QStringLiteral(" "), {0}, QStringLiteral("t")));
+        QVERIFY_THROWS_EXCEPTION(
+            EditRefused, m_doc.faceSets().setFaceSet(QStringLiteral("p"), {4}, QStringLiteral("t")));
+        QVERIFY_THROWS_EXCEPTION(
+            EditRefused, m_doc.faceSets().setFaceSet(QStringLiteral(" "), {0}, QStringLiteral("t")));
         QVERIFY(m_doc.data() == before);
     }
 
     void renameAndRemoveFaceSetFollowLayers()
     {
-        m_doc.setFaceSet(QStringLiteral("ear"), {0, 1}, QStringLiteral("t"));
+        m_doc.faceSets().setFaceSet(QStringLiteral("ear"), {0, 1}, QStringLiteral("t"));
         HighlightTrack track;
         track.name = QStringLiteral("shine");
         track.patch = QStringLiteral("ear");
         track.setKey(0, algo::HighlightLayer{});
-        m_doc.addHighlightLayers({track}, QStringLiteral("Add"));
+        m_doc.highlights().addHighlightLayers({track}, QStringLiteral("Add"));
 
         ProjectData after
-            = applyUndoRedo([&] { m_doc.renameFaceSet(QStringLiteral("ear"), QStringLiteral("left ear")); });
+            = applyUndoRedo([&] { m_doc.faceSets().renameFaceSet(QStringLiteral("ear"), QStringLiteral("left ear")); });
         QVERIFY(after.faceSet(QStringLiteral("left ear")) && !after.faceSet(QStringLiteral("ear")));
         QCOMPARE(after.look.highlights[0].patch, QStringLiteral("left ear"));
-        m_doc.setFaceSet(QStringLiteral("other"), {2}, QStringLiteral("t"));
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.renameFaceSet(QStringLiteral("left ear"), QStringLiteral("other")));
+        m_doc.faceSets().setFaceSet(QStringLiteral("other"), {2}, QStringLiteral("t"));
+        QVERIFY_THROWS_EXCEPTION(
+            EditRefused, m_doc.faceSets().renameFaceSet(QStringLiteral("left ear"), QStringLiteral("other")));
 
-        after = applyUndoRedo([&] { m_doc.removeFaceSet(QStringLiteral("left ear")); });
+        after = applyUndoRedo([&] { m_doc.faceSets().removeFaceSet(QStringLiteral("left ear")); });
         QVERIFY(!after.faceSet(QStringLiteral("left ear")));
         QVERIFY(after.look.highlights[0].patch.isEmpty()); // back to all faces
-        QCOMPARE(m_doc.uniqueFaceSetName(QStringLiteral("other")), QStringLiteral("other 2"));
+        QCOMPARE(m_doc.faceSets().uniqueFaceSetName(QStringLiteral("other")), QStringLiteral("other 2"));
     }
 
     void replacingTheMeshDropsPatchesOfOtherFaces()
     {
-        m_doc.setFaceSet(QStringLiteral("p"), {0}, QStringLiteral("t"));
+        m_doc.faceSets().setFaceSet(QStringLiteral("p"), {0}, QStringLiteral("t"));
         // Same face count: the patches stay.
         m_doc.setBaseMesh(tetrahedron(2.f), QStringLiteral("big.off"));
         QVERIFY(m_doc.data().faceSet(QStringLiteral("p")));
@@ -288,18 +313,18 @@ private slots:
         QUndoStack* stack = m_doc.undoStack();
         const int start = stack->count();
         QSignalSpy changes(&m_doc, &Document::changed);
-        m_doc.beginGesture();
-        m_doc.setShadingStyle(ShadingStyle::Gooch);
-        m_doc.setShowLines(false);
+        Gesture g3 = m_doc.beginGesture();
+        m_doc.look().setShadingStyle(ShadingStyle::Gooch, -1, g3);
+        m_doc.look().setShowLines(false, g3);
         for (int i = 1; i <= 3; ++i) {
             Light light = m_doc.data().look.light;
             light.vector = Eigen::Vector3d(0.1 * i, 0.6, 0.7).normalized();
-            m_doc.setLight(light);
+            m_doc.look().setLight(light, g3);
         }
         Camera camera;
         camera.eye = Eigen::Vector3d(0, 0, 4);
-        m_doc.setRenderCamera(camera);
-        m_doc.endGesture();
+        m_doc.look().setRenderCamera(camera, g3);
+        g3.end();
         QCOMPARE(stack->count(), start + 4);
         QCOMPARE(stack->text(start), QStringLiteral("Change Shading Style"));
         QCOMPARE(stack->text(start + 1), QStringLiteral("Hide Lines"));
@@ -318,24 +343,24 @@ private slots:
 
         // Outside a gesture, the same property twice is two steps.
         const int blendStart = stack->index(); // the two steps undone above go with the next push
-        m_doc.setSharpness(2.0);
-        m_doc.setSharpness(3.0);
-        m_doc.setUnspecifiedMode(UnspecifiedMode::Cosine);
+        m_doc.look().setSharpness(2.0);
+        m_doc.look().setSharpness(3.0);
+        m_doc.look().setUnspecifiedMode(UnspecifiedMode::Cosine);
         QCOMPARE(stack->count(), blendStart + 3);
         // In one gesture, the same property on another target is another step; a gesture that
         // comes back to where it began leaves no step.
-        const ObjectId a = m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
-        const ObjectId b = m_doc.addDrawing(smallDrawing(QStringLiteral("b")));
+        const ObjectId a = m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("a")));
+        const ObjectId b = m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("b")));
         const int drawingStart = stack->count();
-        m_doc.beginGesture();
-        m_doc.setDrawingOpacity(a, 0.2);
-        m_doc.setDrawingOpacity(b, 0.2);
-        m_doc.endGesture();
+        Gesture g4 = m_doc.beginGesture();
+        m_doc.drawings().setDrawingOpacity(a, 0.2, g4);
+        m_doc.drawings().setDrawingOpacity(b, 0.2, g4);
+        g4.end();
         QCOMPARE(stack->count(), drawingStart + 2);
-        m_doc.beginGesture();
-        m_doc.setDrawingOpacity(a, 0.9);
-        m_doc.setDrawingOpacity(a, 0.2);
-        m_doc.endGesture();
+        Gesture g5 = m_doc.beginGesture();
+        m_doc.drawings().setDrawingOpacity(a, 0.9, g5);
+        m_doc.drawings().setDrawingOpacity(a, 0.2, g5);
+        g5.end();
         QCOMPARE(stack->count(), drawingStart + 2);
         QCOMPARE(m_doc.data().drawing(a)->opacity, 0.2);
     }
@@ -365,7 +390,7 @@ private slots:
     void cleanStateFollowsUndo()
     {
         QSignalSpy clean(m_doc.undoStack(), &QUndoStack::cleanChanged);
-        m_doc.addDrawing(smallDrawing(QStringLiteral("a")));
+        m_doc.drawings().addDrawing(smallDrawing(QStringLiteral("a")));
         QVERIFY(m_doc.isModified());
         m_doc.undoStack()->undo();
         QVERIFY(!m_doc.isModified());

@@ -379,7 +379,7 @@ void TestImportProcess::documentUnchangedAfterCrash()
 {
     celform::model::Document doc;
     doc.newFromMesh(celform::test::testDataPath(QStringLiteral("fuzz-regressions/cli/tetrahedron.off")));
-    doc.importDrawing(m_psd);
+    doc.drawings().importDrawing(m_psd);
     const auto mesh = doc.data().baseMesh;
     const auto drawings = doc.data().drawings.size();
     const int steps = doc.undoStack()->count();
@@ -395,7 +395,7 @@ void TestImportProcess::documentUnchangedAfterCrash()
                      : QStringLiteral("the importer crashed on it (signal 11")),
         qPrintable(e.message()));
     m_environment.set("CELFORM_EXECUTABLE", QFile::encodeName(script(QStringLiteral("crash"), "kill -SEGV $$")));
-    QVERIFY_THROWS_EXCEPTION(IoError, doc.importDrawing(m_psd));
+    QVERIFY_THROWS_EXCEPTION(IoError, doc.drawings().importDrawing(m_psd));
 
     QCOMPARE(doc.data().baseMesh, mesh);
     QCOMPARE(doc.data().drawings.size(), drawings);

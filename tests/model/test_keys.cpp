@@ -46,12 +46,12 @@ private slots:
 
     void keyDirectionComesFromCameraAndCentroid()
     {
-        const ObjectId id = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId id = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         QVERIFY(m_doc.data().key(id)->direction.isApprox(Eigen::Vector3d(0, 0, 1)));
         // Offset target: the direction still runs from the centroid towards the eye.
         Camera c = cameraAt({3, 0, 4});
         c.target = Eigen::Vector3d(1, 1, 0);
-        const ObjectId k2 = m_doc.createKey(QStringLiteral("side"), c);
+        const ObjectId k2 = m_doc.keys().createKey(QStringLiteral("side"), c);
         QVERIFY(m_doc.data().key(k2)->direction.isApprox(Eigen::Vector3d(0.6, 0, 0.8)));
         QCOMPARE(m_doc.data().key(k2)->offsetsByFrame.count(0), std::size_t(1));
     }
@@ -76,18 +76,18 @@ private slots:
         QCOMPARE(ProjectData::offsetsAt(key, 25, natural).stored, &key.offsetsByFrame[10]);
         QCOMPARE(ProjectData::offsetsAt(key, -4, natural).stored, &key.offsetsByFrame[0]);
         // keyShape follows the project's setting.
-        m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}), {}, key.offsetsByFrame[0], 0);
+        m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}), {}, key.offsetsByFrame[0], 0);
         ObjectId id = m_doc.data().keys.back().id;
-        m_doc.setKeyOffsets(id, 10, key.offsetsByFrame[10], QStringLiteral("key 10"));
+        m_doc.keys().setKeyDeformation(id, 10, key.offsetsByFrame[10], QStringLiteral("key 10"));
         const algo::Positions shape = m_doc.data().keyShape(*m_doc.data().key(id), 5);
         QVERIFY(shape.row(1).isApprox(m_doc.data().baseMesh->vertices.row(1) + Eigen::RowVector3f(2, 0, 0)));
     }
 
     void duplicateDirectionIsRefused()
     {
-        m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         const ProjectData before = m_doc.data();
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.createKey(QStringLiteral("again"), cameraAt({0, 0, 9})));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.keys().createKey(QStringLiteral("again"), cameraAt({0, 0, 9})));
         QVERIFY(m_doc.data() == before);
     }
 
@@ -96,10 +96,10 @@ private slots:
         Drawing d;
         d.name = QStringLiteral("side drawing");
         d.image = QImage(4, 4, QImage::Format_RGBA8888);
-        const ObjectId drawing = m_doc.addDrawing(d);
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.createKeyFromDrawing(drawing));
-        m_doc.setDrawingCamera(drawing, cameraAt({5, 0, 0}));
-        const ObjectId key = m_doc.createKeyFromDrawing(drawing);
+        const ObjectId drawing = m_doc.drawings().addDrawing(d);
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.keys().createKeyFromDrawing(drawing));
+        m_doc.drawings().setDrawingCamera(drawing, cameraAt({5, 0, 0}));
+        const ObjectId key = m_doc.keys().createKeyFromDrawing(drawing);
         const KeyViewpoint* k = m_doc.data().key(key);
         QVERIFY(k->direction.isApprox(Eigen::Vector3d(1, 0, 0)));
         QCOMPARE(k->drawingIds, std::vector<ObjectId>{drawing});
@@ -109,16 +109,16 @@ private slots:
 
     void strokeIsOneUndoStepAndUndoIsExact()
     {
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         const ProjectData before = m_doc.data();
         const int count = m_doc.undoStack()->count();
-        m_doc.beginGesture();
+        Gesture g1 = m_doc.beginGesture();
         for (int step = 0; step < 5; ++step) {
             algo::Positions move(2, 3);
             move << 0.1f, 0, 0, 0, 0.05f, 0;
-            m_doc.displaceKeyVertices(key, 0, {2, 4}, move, QStringLiteral("Brush"));
+            m_doc.keys().displaceKeyVertices(key, 0, {2, 4}, move, QStringLiteral("Brush"), g1);
         }
-        m_doc.endGesture();
+        g1.end();
         QCOMPARE(m_doc.undoStack()->count(), count + 1);
         const algo::Positions shape = m_doc.data().keyShape(*m_doc.data().key(key), 0);
         QVERIFY(shape.row(2).isApprox(Eigen::RowVector3f(0.5f, 1, 0)));
@@ -132,22 +132,22 @@ private slots:
         // A new stroke is a new undo step.
         algo::Positions move(1, 3);
         move << 0, 0, 0.2f;
-        m_doc.beginGesture();
-        m_doc.displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"));
-        m_doc.endGesture();
+        Gesture g2 = m_doc.beginGesture();
+        m_doc.keys().displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"), g2);
+        g2.end();
         QCOMPARE(m_doc.undoStack()->count(), count + 2);
     }
 
     void brushAlgorithmThroughDocument()
     {
         // The falloff brush of paper 1, section 3.1.2, driven as the command line and viewport do.
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         const KeyViewpoint& k = *m_doc.data().key(key);
         const algo::Positions shape = m_doc.data().keyShape(k, 0);
         const algo::VertexGrid grid(shape);
         const auto selection = algo::selectForBrush(shape, grid, 4, 1.5); // picks (0,0,1)
         const algo::ImageFrame frame{k.camera.right(), k.camera.trueUp(), k.camera.forward()};
-        m_doc.displaceKeyVertices(
+        m_doc.keys().displaceKeyVertices(
             key, 0, selection.indices, algo::brushDrag(selection, frame, 0.3, 0.0), QStringLiteral("Brush"));
         const algo::Positions moved = m_doc.data().keyShape(*m_doc.data().key(key), 0);
         // The picked vertex follows exactly; depth (z for this camera) is kept everywhere.
@@ -162,12 +162,12 @@ private slots:
     void importDeformation()
     {
         QTemporaryDir dir;
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         algo::TriMesh deformed = *m_doc.data().baseMesh;
         deformed.vertices(4, 2) = 1.5f;
         const QString good = dir.filePath(QStringLiteral("deformed.obj"));
         exportMesh(deformed, good);
-        QVERIFY(m_doc.importKeyDeformation(key, good).isEmpty());
+        QVERIFY(m_doc.keys().importKeyDeformation(key, good).isEmpty());
         const SparseOffsets& offsets = m_doc.data().key(key)->offsetsByFrame.at(0);
         QCOMPARE(offsets.indices, std::vector<std::uint32_t>{4});
         QCOMPARE(offsets.deltas.front(), Eigen::Vector3f(0, 0, 0.5f));
@@ -180,7 +180,7 @@ private slots:
         exportMesh(small, bad);
         const ProjectData before = m_doc.data();
         try {
-            m_doc.importKeyDeformation(key, bad);
+            m_doc.keys().importKeyDeformation(key, bad);
             QFAIL("a mesh with the wrong vertex count was accepted");
         } catch (const IoError& e) {
             QVERIFY(e.message().contains(QStringLiteral("small.obj")));
@@ -196,7 +196,7 @@ private slots:
         ObjectId ids[3];
         for (int i = 0; i < 3; ++i) {
             SparseOffsets o{{4}, {Eigen::Vector3f(float(i + 1), 0, 0)}};
-            ids[i] = m_doc.createKey(QStringLiteral("k%1").arg(i), cameraAt(5 * dirs[i]), {}, o);
+            ids[i] = m_doc.keys().createKey(QStringLiteral("k%1").arg(i), cameraAt(5 * dirs[i]), {}, o);
         }
         algo::Positions shape;
         for (int i = 0; i < 3; ++i) {
@@ -210,7 +210,7 @@ private slots:
         QCOMPARE(r.shares.size(), std::size_t(3));
         QVERIFY(std::abs(r.baseShare) < 1e-9);
         // Disabling a key takes it out of the blend: +X becomes the base (dummy) there.
-        m_doc.setKeyEnabled(ids[0], false);
+        m_doc.keys().setKeyEnabled(ids[0], false);
         m_doc.blender().shape(m_doc.data(), dirs[0], 0, shape);
         QVERIFY(shape == m_doc.data().baseMesh->vertices);
     }
@@ -219,13 +219,13 @@ private slots:
     {
         Drawing d;
         d.name = QStringLiteral("a");
-        const ObjectId drawing = m_doc.addDrawing(d);
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
-        m_doc.linkKeyDrawing(key, drawing);
+        const ObjectId drawing = m_doc.drawings().addDrawing(d);
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        m_doc.keys().linkKeyDrawing(key, drawing);
         QCOMPARE(m_doc.data().key(key)->drawingIds, std::vector<ObjectId>{drawing});
         m_doc.undoStack()->undo();
         QVERIFY(m_doc.data().key(key)->drawingIds.empty());
-        m_doc.setKeyCamera(key, cameraAt({0, 5, 0.001}));
+        m_doc.keys().setKeyCamera(key, cameraAt({0, 5, 0.001}));
         QVERIFY(m_doc.data().key(key)->direction.y() > 0.99);
         m_doc.undoStack()->undo();
         QVERIFY(m_doc.data().key(key)->direction.isApprox(Eigen::Vector3d(0, 0, 1)));
@@ -235,11 +235,11 @@ private slots:
     {
         // Only frame 0 keyed: frame 3 holds its offsets (paper 1, section 4.2, held outside the
         // keyed range). A push of 0.05 over a held 0.05 stores 0.10, not 0.05.
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         algo::Positions move(1, 3);
         move << 0.05f, 0, 0;
-        m_doc.displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"));
-        m_doc.displaceKeyVertices(key, 3, {4}, move, QStringLiteral("Brush"));
+        m_doc.keys().displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"));
+        m_doc.keys().displaceKeyVertices(key, 3, {4}, move, QStringLiteral("Brush"));
         const KeyViewpoint& k = *m_doc.data().key(key);
         QCOMPARE(k.offsetsByFrame.size(), std::size_t(2));
         QVERIFY(k.offsetsByFrame.at(3).at(4).isApprox(Eigen::Vector3f(0.10f, 0, 0)));
@@ -252,18 +252,18 @@ private slots:
     {
         // Frames 0 and 10 keyed differently; a step at 5 on one vertex stores the interpolated
         // offsets of every vertex there, so the shape at 5 changes only where the brush touched.
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         SparseOffsets at0, at10;
         at0.indices = {1, 4};
         at0.deltas = {Eigen::Vector3f(0.2f, 0, 0), Eigen::Vector3f(0, 0.1f, 0)};
         at10.indices = {1, 2};
         at10.deltas = {Eigen::Vector3f(-0.2f, 0, 0), Eigen::Vector3f(0, 0, 0.3f)};
-        m_doc.setKeyOffsets(key, 0, at0, QStringLiteral("0"));
-        m_doc.setKeyOffsets(key, 10, at10, QStringLiteral("10"));
+        m_doc.keys().setKeyDeformation(key, 0, at0, QStringLiteral("0"));
+        m_doc.keys().setKeyDeformation(key, 10, at10, QStringLiteral("10"));
         const algo::Positions before = m_doc.data().keyShape(*m_doc.data().key(key), 5);
         algo::Positions move(1, 3);
         move << 0, 0.05f, 0;
-        m_doc.displaceKeyVertices(key, 5, {2}, move, QStringLiteral("Brush"));
+        m_doc.keys().displaceKeyVertices(key, 5, {2}, move, QStringLiteral("Brush"));
         const KeyViewpoint& k = *m_doc.data().key(key);
         QCOMPARE(k.offsetsByFrame.size(), std::size_t(3));
         const algo::Positions after = m_doc.data().keyShape(k, 5);
@@ -281,10 +281,10 @@ private slots:
     void keysSurviveSaveAndOpen()
     {
         QTemporaryDir dir;
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         algo::Positions move(1, 3);
         move << 0.25f, 0, 0;
-        m_doc.displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"));
+        m_doc.keys().displaceKeyVertices(key, 0, {4}, move, QStringLiteral("Brush"));
         const QString path = dir.filePath(QStringLiteral("keys.celform"));
         m_doc.saveAs(path);
         Document other;

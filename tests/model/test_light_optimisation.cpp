@@ -49,7 +49,7 @@ private slots:
         QVERIFY(!(report.after == report.before));
         QCOMPARE(report.before, start);
 
-        doc.applyOptimisedLight(report.before, report.after);
+        doc.look().applyOptimisedLight(report.before, report.after);
         QCOMPARE(doc.undoStack()->count(), 1);
         QCOMPARE(doc.undoStack()->text(0), QStringLiteral("Optimise Light for Stereo"));
         QCOMPARE(doc.data().look.light, report.after);
@@ -59,11 +59,11 @@ private slots:
         QCOMPARE(doc.data().look.light, report.after);
 
         // A report made from another light is refused, the document unchanged.
-        QVERIFY_THROWS_EXCEPTION(model::EditRefused, doc.applyOptimisedLight(report.before, report.after));
+        QVERIFY_THROWS_EXCEPTION(model::EditRefused, doc.look().applyOptimisedLight(report.before, report.after));
         QCOMPARE(doc.undoStack()->count(), 1);
         // A run that kept the light changes nothing.
         doc.undoStack()->undo();
-        doc.applyOptimisedLight(start, start);
+        doc.look().applyOptimisedLight(start, start);
         QCOMPARE(doc.data().look.light, start);
         QCOMPARE(doc.undoStack()->index(), 0);
     }

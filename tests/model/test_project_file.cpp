@@ -892,7 +892,7 @@ private slots:
         saveProject(richProject(), good);
         Document doc;
         doc.open(good);
-        doc.setSharpness(3.0);
+        doc.look().setSharpness(3.0);
         const ProjectData before = doc.data();
         const int undoCount = doc.undoStack()->count();
 
@@ -911,7 +911,7 @@ private slots:
         QTemporaryDir dir;
         Document doc;
         doc.reset(richProject());
-        doc.renameKey(2, QStringLiteral("renamed"));
+        doc.keys().renameKey(2, QStringLiteral("renamed"));
         QVERIFY(doc.isModified());
         const QString path = dir.filePath(QStringLiteral("saved.celform"));
         doc.saveAs(path);

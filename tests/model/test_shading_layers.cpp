@@ -60,12 +60,12 @@ private slots:
 
     void effectiveIsBasePlusBlendedKeys()
     {
-        const ObjectId front = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
-        const ObjectId side = m_doc.createKey(QStringLiteral("side"), cameraAt({5, 0, 0}));
+        const ObjectId front = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId side = m_doc.keys().createKey(QStringLiteral("side"), cameraAt({5, 0, 0}));
         const std::vector<float> base = ramp(m_n, 0.1f), a = ramp(m_n, -0.3f), b = ramp(m_n, 0.2f);
-        m_doc.setShadingOffsets({0, 0}, base);
-        m_doc.setShadingOffsets({front, 0}, a);
-        m_doc.setShadingOffsets({side, 0}, b);
+        m_doc.shading().setShadingOffsets({0, 0}, base);
+        m_doc.shading().setShadingOffsets({front, 0}, a);
+        m_doc.shading().setShadingOffsets({side, 0}, b);
         BlendEvaluator& blender = m_doc.blender();
         std::vector<float> out;
         // At a key's exact view: base + that key's layer.
@@ -84,7 +84,7 @@ private slots:
         for (std::size_t v = 0; v < m_n; ++v)
             QVERIFY(std::abs(out[v] - float(base[v] + wa * a[v] + wb * b[v])) < 1e-5f);
         // Over time: a key layer keyed at 0 and 10 is halfway at 5 (two knots: linear).
-        m_doc.setShadingOffsets({front, 10}, std::vector<float>(m_n, 1.f));
+        m_doc.shading().setShadingOffsets({front, 10}, std::vector<float>(m_n, 1.f));
         effectiveShadingOffsets(m_doc.data(), blender, Eigen::Vector3d(0, 0, 1), 5, out);
         for (std::size_t v = 0; v < m_n; ++v)
             QVERIFY(std::abs(out[v] - (base[v] + 0.5f * (a[v] + 1.f))) < 1e-5f);
@@ -94,9 +94,9 @@ private slots:
     {
         // celform render / analyze at a key's own view: the picture of base + the key's layer is
         // the picture of a project whose base layer holds that sum.
-        const ObjectId front = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId front = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         const std::vector<float> a = ramp(m_n, 0.4f);
-        m_doc.setShadingOffsets({front, 0}, a);
+        m_doc.shading().setShadingOffsets({front, 0}, a);
         RenderJob job;
         job.view = Eigen::Vector3d(0, 0, 1);
         job.size = QSize(96, 96);
@@ -115,7 +115,7 @@ private slots:
 
     void everyOperationUndoesExactly()
     {
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         const ProjectData start = m_doc.data();
         const int steps = m_doc.undoStack()->count();
         auto check = [&](const char* what) {
@@ -129,18 +129,18 @@ private slots:
             m_doc.undoStack()->undo();
             QVERIFY(m_doc.data() == start);
         };
-        m_doc.setShadingOffsets({0, 0}, ramp(m_n, 0.2f));
+        m_doc.shading().setShadingOffsets({0, 0}, ramp(m_n, 0.2f));
         check("set base");
-        m_doc.setShadingOffsets({key, 3}, ramp(m_n, 0.2f));
+        m_doc.shading().setShadingOffsets({key, 3}, ramp(m_n, 0.2f));
         check("set key");
         // Smooth and clear on a layer that exists (set first, so count one more step).
-        m_doc.setShadingOffsets({0, 0}, ramp(m_n, 0.2f));
+        m_doc.shading().setShadingOffsets({0, 0}, ramp(m_n, 0.2f));
         const ProjectData withBase = m_doc.data();
-        m_doc.smoothShadingOffsets({0, 0}, 3);
+        m_doc.shading().smoothShadingOffsets({0, 0}, 3);
         QCOMPARE(m_doc.undoStack()->count(), steps + 2);
         m_doc.undoStack()->undo();
         QVERIFY(m_doc.data() == withBase);
-        m_doc.clearShadingOffsets({0, 0});
+        m_doc.shading().clearShadingOffsets({0, 0});
         QVERIFY(m_doc.data().shadingOffsets.empty());
         m_doc.undoStack()->undo();
         QVERIFY(m_doc.data() == withBase);
@@ -152,11 +152,11 @@ private slots:
         brush.radius = 0.5;
         brush.strength = 0.1;
         brush.mirrorX = true;
-        OffsetStroke stroke = m_doc.beginOffsetStroke({key, 0}, brush, m_doc.data().baseMesh->vertices);
+        OffsetStroke stroke = m_doc.shading().beginOffsetStroke({key, 0}, brush, m_doc.data().baseMesh->vertices);
         std::size_t touched = 0;
         for (int i = 0; i < 5; ++i)
-            touched += m_doc.applyOffsetStroke(stroke, Eigen::Vector3d(0.2 * i, 0.0, 1.0).normalized());
-        m_doc.endOffsetStroke(stroke);
+            touched += m_doc.shading().applyOffsetStroke(stroke, Eigen::Vector3d(0.2 * i, 0.0, 1.0).normalized());
+        m_doc.shading().endOffsetStroke(stroke);
         QVERIFY(touched > 0);
         const auto& layer = m_doc.data().key(key)->shadingOffsetsByFrame.at(0);
         // Mirror: a vertex near (x, 0, z) and its twin near (-x, 0, z) both got paint.
@@ -169,10 +169,10 @@ private slots:
         const ProjectData start = m_doc.data();
         std::vector<float> bad = ramp(m_n, 0.1f);
         bad[2] = std::numeric_limits<float>::quiet_NaN();
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setShadingOffsets({0, 0}, bad));
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setShadingOffsets({0, 0}, ramp(m_n + 1, 0.1f)));
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.setShadingOffsets({999, 0}, ramp(m_n, 0.1f)));
-        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.smoothShadingOffsets({0, 0}, 0));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.shading().setShadingOffsets({0, 0}, bad));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.shading().setShadingOffsets({0, 0}, ramp(m_n + 1, 0.1f)));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.shading().setShadingOffsets({999, 0}, ramp(m_n, 0.1f)));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.shading().smoothShadingOffsets({0, 0}, 0));
         AutoOffsetsRequest request;
         request.camera = cameraAt({0, 0, 5});
         request.aggressiveness = 2.f;
@@ -187,7 +187,7 @@ private slots:
     void fileRoundTripAndOldFiles()
     {
         QTemporaryDir dir;
-        const ObjectId key = m_doc.createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
         // Files written before key layers (the bundled samples) load unchanged, without layers.
         const ProjectData sample
             = loadProject(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-highlights.celform"));
@@ -201,9 +201,9 @@ private slots:
         QVERIFY(oldData.shadingOffsets.empty());
         QVERIFY(oldData.keys.front().shadingOffsetsByFrame.empty());
 
-        m_doc.setShadingOffsets({0, 0}, ramp(m_n, 0.1f));
-        m_doc.setShadingOffsets({key, 0}, ramp(m_n, 0.3f));
-        m_doc.setShadingOffsets({key, 12}, ramp(m_n, -0.2f));
+        m_doc.shading().setShadingOffsets({0, 0}, ramp(m_n, 0.1f));
+        m_doc.shading().setShadingOffsets({key, 0}, ramp(m_n, 0.3f));
+        m_doc.shading().setShadingOffsets({key, 12}, ramp(m_n, -0.2f));
         const QString path = dir.filePath(QStringLiteral("layers.celform"));
         m_doc.saveAs(path);
         const ProjectData loaded = loadProject(path);
@@ -227,7 +227,7 @@ private slots:
         QVERIFY(!result.after.empty());
         // The solve reads the document and changes nothing; applying it is one undo step.
         QCOMPARE(m_doc.undoStack()->count(), 0);
-        m_doc.applyAutoOffsets(result.target, result.values);
+        m_doc.shading().applyAutoOffsets(result.target, result.values);
         QCOMPARE(m_doc.undoStack()->count(), 1);
         QCOMPARE(m_doc.undoStack()->text(0), QStringLiteral("Automatic Shading Offsets (base)"));
         for (std::size_t s = 0; s < result.after.size(); ++s) {

@@ -204,9 +204,9 @@ public:
         start.faceSets.push_back({"start patch", {0, 1, 2, 3, 10, 11}});
         m_doc.reset(std::move(start));
         // A few objects to start from, made by the document itself (then part of the original).
-        m_doc.addDrawing(makeDrawing());
-        m_doc.createKey(QStringLiteral("front"), randomCamera(m_rng, false));
-        m_doc.addHighlightLayer(QStringLiteral("shine"), 0);
+        m_doc.drawings().addDrawing(makeDrawing());
+        m_doc.keys().createKey(QStringLiteral("front"), randomCamera(m_rng, false));
+        m_doc.highlights().addHighlightLayer(QStringLiteral("shine"), 0);
         m_doc.reset(m_doc.data());
         m_original = m_doc.data();
         m_saved = m_original;
@@ -216,9 +216,8 @@ public:
             if (!step())
                 return false;
         if (m_stroke)
-            m_doc.endBrushStroke(*m_stroke);
-        if (m_doc.currentGesture() != 0)
-            m_doc.endGesture();
+            m_doc.keys().endBrushStroke(*m_stroke);
+        m_gesture.end();
         return finish();
     }
 
@@ -483,13 +482,15 @@ private:
         Rng& r = m_rng;
 
         // Drawings.
-        add("addDrawing", 4, Kind::Edit, [this, &d](Rng&) { d.addDrawing(makeDrawing()); });
-        add("removeDrawing", 2, Kind::Edit, [this, &d](Rng& t) { d.removeDrawing(anyDrawing(t)); });
-        add("renameDrawing", 3, Kind::Edit, [this, &d](Rng& t) { d.renameDrawing(anyDrawing(t), anyName(m_rng)); });
-        add("setDrawingOpacity", 5, Kind::Edit,
-            [this, &d, &r](Rng& t) { d.setDrawingOpacity(anyDrawing(t), uniform(r, -0.2, 1.2)); });
+        add("addDrawing", 4, Kind::Edit, [this, &d](Rng&) { d.drawings().addDrawing(makeDrawing()); });
+        add("removeDrawing", 2, Kind::Edit, [this, &d](Rng& t) { d.drawings().removeDrawing(anyDrawing(t)); });
+        add("renameDrawing", 3, Kind::Edit,
+            [this, &d](Rng& t) { d.drawings().renameDrawing(anyDrawing(t), anyName(m_rng)); });
+        add("setDrawingOpacity", 5, Kind::Edit, [this, &d, &r](Rng& t) {
+            d.drawings().setDrawingOpacity(anyDrawing(t), uniform(r, -0.2, 1.2), m_gesture);
+        });
         add("setDrawingCamera", 4, Kind::Edit,
-            [this, &d, &r](Rng& t) { d.setDrawingCamera(anyDrawing(t), randomCamera(r)); });
+            [this, &d, &r](Rng& t) { d.drawings().setDrawingCamera(anyDrawing(t), randomCamera(r), m_gesture); });
 
         // Keys.
         add("createKey", 5, Kind::Edit, [this, &d, &r](Rng& t) {
@@ -500,9 +501,10 @@ private:
             Camera camera = randomCamera(r);
             if (const KeyViewpoint* other = d.data().key(anyKey(t)); other && chance(r, 0.15))
                 camera = other->camera;
-            d.createKey(anyName(t), camera, std::move(drawings), randomOffsets(6), anyFrame(t));
+            d.keys().createKey(anyName(t), camera, std::move(drawings), randomOffsets(6), anyFrame(t));
         });
-        add("createKeyFromDrawing", 2, Kind::Edit, [this, &d](Rng& t) { d.createKeyFromDrawing(anyDrawing(t)); });
+        add("createKeyFromDrawing", 2, Kind::Edit,
+            [this, &d](Rng& t) { d.keys().createKeyFromDrawing(anyDrawing(t)); });
         add("addKey", 1, Kind::Edit, [this, &d, &r](Rng& t) {
             KeyViewpoint key;
             key.name = anyName(t);
@@ -512,16 +514,18 @@ private:
             key.offsetsByFrame[anyFrame(t)] = randomOffsets(5);
             if (chance(r, 0.5))
                 key.offsetsByFrame[anyFrame(t)] = randomOffsets(5);
-            d.addKey(std::move(key));
+            d.keys().addKey(std::move(key));
         });
-        add("removeKey", 2, Kind::Edit, [this, &d](Rng& t) { d.removeKey(anyKey(t)); });
-        add("renameKey", 3, Kind::Edit, [this, &d](Rng& t) { d.renameKey(anyKey(t), anyName(m_rng)); });
-        add("setKeyEnabled", 3, Kind::Edit, [this, &d, &r](Rng& t) { d.setKeyEnabled(anyKey(t), chance(r, 0.5)); });
-        add("setKeyCamera", 3, Kind::Edit, [this, &d, &r](Rng& t) { d.setKeyCamera(anyKey(t), randomCamera(r)); });
+        add("removeKey", 2, Kind::Edit, [this, &d](Rng& t) { d.keys().removeKey(anyKey(t)); });
+        add("renameKey", 3, Kind::Edit, [this, &d](Rng& t) { d.keys().renameKey(anyKey(t), anyName(m_rng)); });
+        add("setKeyEnabled", 3, Kind::Edit,
+            [this, &d, &r](Rng& t) { d.keys().setKeyEnabled(anyKey(t), chance(r, 0.5)); });
+        add("setKeyCamera", 3, Kind::Edit,
+            [this, &d, &r](Rng& t) { d.keys().setKeyCamera(anyKey(t), randomCamera(r)); });
         add("linkKeyDrawing", 3, Kind::Edit,
-            [this, &d, &r](Rng& t) { d.linkKeyDrawing(anyKey(t), chance(r, 0.2) ? 0 : anyDrawing(t)); });
-        add("setKeyOffsets", 5, Kind::Edit, [this, &d](Rng& t) {
-            d.setKeyOffsets(anyKey(t), anyFrame(t), randomOffsets(10), QStringLiteral("Set Offsets"));
+            [this, &d, &r](Rng& t) { d.keys().linkKeyDrawing(anyKey(t), chance(r, 0.2) ? 0 : anyDrawing(t)); });
+        add("setKeyDeformation", 5, Kind::Edit, [this, &d](Rng& t) {
+            d.keys().setKeyDeformation(anyKey(t), anyFrame(t), randomOffsets(10), QStringLiteral("Set Offsets"));
         });
         add("importKeyDeformation", 1, Kind::Edit, [this, &d, &r](Rng& t) {
             // The key's shape at a frame with a few vertices moved, through a PLY file.
@@ -536,7 +540,7 @@ private:
                 shape.vertices.row(v) += Eigen::RowVector3f(uniformF(r, -0.1, 0.1), 0.f, uniformF(r, -0.1, 0.1));
             const QString path = m_dir.filePath(QStringLiteral("deformation.ply"));
             exportMesh(shape, path);
-            d.importKeyDeformation(id, path, frame);
+            d.keys().importKeyDeformation(id, path, frame);
         });
         add("displaceKeyVertices", 8, Kind::Edit, [this, &d, &r](Rng& t) {
             const SparseOffsets step = randomOffsets(8);
@@ -551,11 +555,12 @@ private:
                 indices.back() = vertexCount() + 3;
             if (!indices.empty() && chance(r, 0.03))
                 displacements(0, 0) = std::nanf("");
-            d.displaceKeyVertices(anyKey(t), anyFrame(t), indices, displacements, QStringLiteral("Displace"));
+            d.keys().displaceKeyVertices(
+                anyKey(t), anyFrame(t), indices, displacements, QStringLiteral("Displace"), m_gesture);
         });
         add("brushStroke", 8, Kind::Stroke, [this, &d, &r](Rng& t) {
             if (m_stroke) {
-                d.endBrushStroke(*m_stroke);
+                d.keys().endBrushStroke(*m_stroke);
                 m_stroke.reset();
             }
             const ObjectId key = anyKey(t);
@@ -563,7 +568,7 @@ private:
             const Camera camera = k && chance(r, 0.8) ? k->camera : randomCamera(r);
             const std::uint32_t picked = chance(r, 0.03) ? vertexCount() : std::uint32_t(below(r, int(vertexCount())));
             const double radius = chance(r, 0.03) ? -1.0 : uniform(r, 0.0, 0.9);
-            m_stroke = d.beginBrushStroke(key, anyFrame(t), picked, radius, camera, chance(r, 0.4));
+            m_stroke = d.keys().beginBrushStroke(key, anyFrame(t), picked, radius, camera, chance(r, 0.4));
         });
         add("brushStep", 0, Kind::Stroke, [this, &d, &r](Rng&) {
             BrushStep step;
@@ -588,55 +593,65 @@ private:
                 break;
             }
             m_motions[int(step.motion)] += 1;
-            d.applyBrushStroke(*m_stroke, step);
+            d.keys().applyBrushStroke(*m_stroke, step);
         });
         add("brushEnd", 0, Kind::Stroke, [this, &d](Rng&) {
-            d.endBrushStroke(*m_stroke);
+            d.keys().endBrushStroke(*m_stroke);
             m_stroke.reset();
         });
 
         // Blend settings.
-        add("setSharpness", 4, Kind::Edit, [&d, &r](Rng&) {
-            d.setSharpness(chance(r, 0.05) ? -1.0 : chance(r, 0.03) ? std::nan("") : uniform(r, 0.1, 8));
+        add("setSharpness", 4, Kind::Edit, [this, &d, &r](Rng&) {
+            d.look().setSharpness(chance(r, 0.05) ? -1.0
+                    : chance(r, 0.03)             ? std::nan("")
+                                                  : uniform(r, 0.1, 8),
+                m_gesture);
         });
         add("setUnspecifiedMode", 2, Kind::Edit,
-            [&d, &r](Rng&) { d.setUnspecifiedMode(UnspecifiedMode(below(r, 3))); });
+            [this, &d, &r](Rng&) { d.look().setUnspecifiedMode(UnspecifiedMode(below(r, 3)), m_gesture); });
         add("setTimeInterpolation", 2, Kind::Edit,
-            [&d, &r](Rng&) { d.setTimeInterpolation(TimeInterpolation(below(r, 2))); });
+            [this, &d, &r](Rng&) { d.look().setTimeInterpolation(TimeInterpolation(below(r, 2)), m_gesture); });
 
         // The look, property by property.
-        add("setShadingStyle", 3, Kind::Edit,
-            [&d, &r](Rng& t) { d.setShadingStyle(ShadingStyle(below(r, 4)), below(t, 5) - 1); });
-        add("setLight", 4, Kind::Edit, [this, &d](Rng&) { d.setLight(randomLight()); });
-        add("setBackgroundColor", 2, Kind::Edit, [&d, &r](Rng&) { d.setBackgroundColor(randomColor(r)); });
-        add("setToonRamp", 2, Kind::Edit, [this, &d](Rng&) { d.setToonRamp(randomRamp()); });
-        add("setToonEvaluation", 2, Kind::Edit,
-            [&d, &r](Rng&) { d.setToonEvaluation(algo::ToonEvaluation(below(r, 3))); });
-        add("setGooch", 2, Kind::Edit, [this, &d](Rng&) { d.setGooch(randomGooch()); });
-        add("setHatch", 2, Kind::Edit, [this, &d](Rng&) { d.setHatch(randomHatch()); });
-        add("setShowLines", 2, Kind::Edit, [&d, &r](Rng&) { d.setShowLines(chance(r, 0.5)); });
-        add("setLineSettings", 2, Kind::Edit, [this, &d](Rng&) { d.setLineSettings(randomLineSettings()); });
-        add("setLineStyle", 2, Kind::Edit, [this, &d](Rng&) { d.setLineStyle(randomLineStyle()); });
-        add("setStereo", 2, Kind::Edit, [this, &d](Rng&) { d.setStereo(randomStereo()); });
-        add("setRenderCamera", 3, Kind::Edit, [&d, &r](Rng&) {
-            d.setRenderCamera(chance(r, 0.2) ? std::optional<Camera>() : std::optional<Camera>(randomCamera(r)));
+        add("setShadingStyle", 3, Kind::Edit, [this, &d, &r](Rng& t) {
+            d.look().setShadingStyle(ShadingStyle(below(r, 4)), below(t, 5) - 1, m_gesture);
         });
-        add("setLook", 2, Kind::Edit, [this, &d](Rng&) { d.setLook(randomLook()); });
+        add("setLight", 4, Kind::Edit, [this, &d](Rng&) { d.look().setLight(randomLight(), m_gesture); });
+        add("setBackgroundColor", 2, Kind::Edit,
+            [this, &d, &r](Rng&) { d.look().setBackgroundColor(randomColor(r), m_gesture); });
+        add("setToonRamp", 2, Kind::Edit, [this, &d](Rng&) { d.look().setToonRamp(randomRamp(), m_gesture); });
+        add("setToonEvaluation", 2, Kind::Edit,
+            [this, &d, &r](Rng&) { d.look().setToonEvaluation(algo::ToonEvaluation(below(r, 3)), m_gesture); });
+        add("setGooch", 2, Kind::Edit, [this, &d](Rng&) { d.look().setGooch(randomGooch(), m_gesture); });
+        add("setHatch", 2, Kind::Edit, [this, &d](Rng&) { d.look().setHatch(randomHatch(), m_gesture); });
+        add("setShowLines", 2, Kind::Edit, [this, &d, &r](Rng&) { d.look().setShowLines(chance(r, 0.5), m_gesture); });
+        add("setLineSettings", 2, Kind::Edit,
+            [this, &d](Rng&) { d.look().setLineSettings(randomLineSettings(), m_gesture); });
+        add("setLineStyle", 2, Kind::Edit, [this, &d](Rng&) { d.look().setLineStyle(randomLineStyle(), m_gesture); });
+        add("setStereo", 2, Kind::Edit, [this, &d](Rng&) { d.look().setStereo(randomStereo(), m_gesture); });
+        add("setRenderCamera", 3, Kind::Edit, [this, &d, &r](Rng&) {
+            d.look().setRenderCamera(
+                chance(r, 0.2) ? std::optional<Camera>() : std::optional<Camera>(randomCamera(r)), m_gesture);
+        });
+        add("setLook", 2, Kind::Edit, [this, &d](Rng&) { d.look().setLook(randomLook()); });
 
         // Highlight layers.
-        add("addHighlightLayer", 3, Kind::Edit, [this, &d](Rng& t) { d.addHighlightLayer(anyName(t), anyFrame(t)); });
+        add("addHighlightLayer", 3, Kind::Edit,
+            [this, &d](Rng& t) { d.highlights().addHighlightLayer(anyName(t), anyFrame(t)); });
         add("addHighlightPreset", 2, Kind::Edit, [this, &d, &r](Rng& t) {
-            d.addHighlightPreset(chance(r, 0.5) ? HighlightPreset::Window : HighlightPreset::Crescent,
+            d.highlights().addHighlightPreset(chance(r, 0.5) ? HighlightPreset::Window : HighlightPreset::Crescent,
                 chance(r, 0.3) ? 0 : anyLayer(t), anyFrame(t));
         });
-        add("removeHighlightLayer", 2, Kind::Edit, [this, &d](Rng& t) { d.removeHighlightLayer(anyLayer(t)); });
+        add("removeHighlightLayer", 2, Kind::Edit,
+            [this, &d](Rng& t) { d.highlights().removeHighlightLayer(anyLayer(t)); });
         add("renameHighlightLayer", 2, Kind::Edit,
-            [this, &d](Rng& t) { d.renameHighlightLayer(anyLayer(t), anyName(m_rng)); });
+            [this, &d](Rng& t) { d.highlights().renameHighlightLayer(anyLayer(t), anyName(m_rng)); });
         add("setHighlightKey", 6, Kind::Edit, [this, &d](Rng& t) {
             const ObjectId id = anyLayer(t);
             const double frame = anyKeyFrame(t);
             const HighlightTrack* track = d.data().highlight(id);
-            d.setHighlightKey(id, frame, randomLayer(track ? track->layerAt(frame) : algo::HighlightLayer{}));
+            d.highlights().setHighlightKey(
+                id, frame, randomLayer(track ? track->layerAt(frame) : algo::HighlightLayer{}), m_gesture);
         });
         add("setHighlightKeys", 2, Kind::Edit, [this, &d, &r](Rng& t) {
             const ObjectId id = anyLayer(t);
@@ -648,39 +663,44 @@ private:
                 keys.push_back({frame, randomLayer(track ? track->layerAt(frame) : algo::HighlightLayer{})});
                 frame += chance(r, 0.05) ? -1.0 : uniform(r, 0.5, 10);
             }
-            d.setHighlightKeys(id, std::move(keys), QStringLiteral("Set Keys"));
+            d.highlights().setHighlightKeys(id, std::move(keys), QStringLiteral("Set Keys"), m_gesture);
         });
         add("removeHighlightKey", 2, Kind::Edit, [this, &d, &r](Rng& t) {
             const ObjectId id = anyLayer(t);
             const HighlightTrack* track = d.data().highlight(id);
-            d.removeHighlightKey(id, track && chance(r, 0.8) ? pickFrom(r, track->keys).frame : anyKeyFrame(t));
+            d.highlights().removeHighlightKey(
+                id, track && chance(r, 0.8) ? pickFrom(r, track->keys).frame : anyKeyFrame(t));
         });
         add("addHighlightOperation", 2, Kind::Edit, [this, &d, &r](Rng& t) {
-            d.addHighlightOperation(anyLayer(t), algo::HighlightOperationType(below(r, 5)));
+            d.highlights().addHighlightOperation(anyLayer(t), algo::HighlightOperationType(below(r, 5)));
         });
-        add("moveHighlightOperation", 2, Kind::Edit,
-            [this, &d, &r](Rng& t) { d.moveHighlightOperation(anyLayer(t), below(r, 4), below(r, 5) - 2); });
+        add("moveHighlightOperation", 2, Kind::Edit, [this, &d, &r](Rng& t) {
+            d.highlights().moveHighlightOperation(anyLayer(t), below(r, 4), below(r, 5) - 2);
+        });
         add("removeHighlightOperation", 1, Kind::Edit,
-            [this, &d, &r](Rng& t) { d.removeHighlightOperation(anyLayer(t), below(r, 4) - 1); });
+            [this, &d, &r](Rng& t) { d.highlights().removeHighlightOperation(anyLayer(t), below(r, 4) - 1); });
         add("nudgeHighlight", 6, Kind::Edit, [this, &d, &r](Rng& t) {
-            d.nudgeHighlight(anyLayer(t), anyKeyFrame(t), algo::HighlightOperationType(below(t, 5)),
-                uniform(r, -0.2, 0.2), uniform(r, -0.2, 0.2));
+            d.highlights().nudgeHighlight(anyLayer(t), anyKeyFrame(t), algo::HighlightOperationType(below(t, 5)),
+                uniform(r, -0.2, 0.2), uniform(r, -0.2, 0.2), m_gesture);
         });
-        add("setHighlightPatch", 2, Kind::Edit,
-            [this, &d, &r](Rng& t) { d.setHighlightPatch(anyLayer(t), chance(r, 0.2) ? QString() : anyFaceSet(t)); });
+        add("setHighlightPatch", 2, Kind::Edit, [this, &d, &r](Rng& t) {
+            d.highlights().setHighlightPatch(anyLayer(t), chance(r, 0.2) ? QString() : anyFaceSet(t), m_gesture);
+        });
         add("setHighlightGuide", 2, Kind::Edit, [this, &d, &r](Rng& t) {
-            d.setHighlightGuide(anyLayer(t),
+            d.highlights().setHighlightGuide(anyLayer(t),
                 chance(r, 0.05) ? Eigen::Vector3f(Eigen::Vector3f::Zero())
-                                : Eigen::Vector3f(randomDirection(r).cast<float>()));
+                                : Eigen::Vector3f(randomDirection(r).cast<float>()),
+                m_gesture);
         });
         add("setHighlightSmoothing", 2, Kind::Edit, [this, &d, &r](Rng& t) {
-            d.setHighlightSmoothing(anyLayer(t),
+            d.highlights().setHighlightSmoothing(anyLayer(t),
                 chance(r, 0.05)       ? kMaxHighlightSmoothing + below(r, 3) - 1
                     : chance(r, 0.03) ? -1
-                                      : below(r, 12));
+                                      : below(r, 12),
+                m_gesture);
         });
         add("setHighlightVisible", 2, Kind::Edit,
-            [this, &d, &r](Rng& t) { d.setHighlightVisible(anyLayer(t), chance(r, 0.5)); });
+            [this, &d, &r](Rng& t) { d.highlights().setHighlightVisible(anyLayer(t), chance(r, 0.5)); });
         add("setHighlightCombinations", 2, Kind::Edit, [this, &d, &r](Rng& t) {
             const ObjectId id = anyLayer(t);
             std::vector<std::pair<algo::HighlightBoolean, QString>> combinations;
@@ -694,7 +714,7 @@ private:
                 combinations.emplace_back(
                     chance(r, 0.5) ? algo::HighlightBoolean::Union : algo::HighlightBoolean::Subtraction, other);
             }
-            d.setHighlightCombinations(id, std::move(combinations));
+            d.highlights().setHighlightCombinations(id, std::move(combinations), m_gesture);
         });
 
         // Face sets (highlight patches).
@@ -708,17 +728,18 @@ private:
             return faces;
         };
         add("setFaceSet", 3, Kind::Edit, [this, &d, randomFaces](Rng& t) {
-            d.setFaceSet(
-                chance(t, 0.05) ? QStringLiteral(" ") : anyFaceSet(t), randomFaces(20), QStringLiteral("Set Patch"));
+            d.faceSets().setFaceSet(chance(t, 0.05) ? QStringLiteral(" ") : anyFaceSet(t), randomFaces(20),
+                QStringLiteral("Set Patch"), m_gesture);
         });
-        add("paintFaceSet", 5, Kind::Edit,
-            [this, &d, &r, randomFaces](Rng& t) { d.paintFaceSet(anyFaceSet(t), randomFaces(12), chance(r, 0.3)); });
-        add("removeFaceSet", 2, Kind::Edit, [this, &d](Rng& t) { d.removeFaceSet(anyFaceSet(t)); });
+        add("paintFaceSet", 5, Kind::Edit, [this, &d, &r, randomFaces](Rng& t) {
+            d.faceSets().paintFaceSet(anyFaceSet(t), randomFaces(12), chance(r, 0.3), m_gesture);
+        });
+        add("removeFaceSet", 2, Kind::Edit, [this, &d](Rng& t) { d.faceSets().removeFaceSet(anyFaceSet(t)); });
         add("renameFaceSet", 2, Kind::Edit, [this, &d](Rng& t) {
-            d.renameFaceSet(anyFaceSet(t), chance(t, 0.5) ? anyName(m_rng) : anyFaceSet(m_rng));
+            d.faceSets().renameFaceSet(anyFaceSet(t), chance(t, 0.5) ? anyName(m_rng) : anyFaceSet(m_rng));
         });
         add("newFaceSetForLayer", 2, Kind::Edit,
-            [this, &d](Rng& t) { d.newFaceSetForLayer(anyLayer(t), anyName(m_rng)); });
+            [this, &d](Rng& t) { d.faceSets().newFaceSetForLayer(anyLayer(t), anyName(m_rng)); });
 
         // The base model: the same topology moved, fewer faces (patches go), more vertices, or
         // fewer vertices than the keys use (refused with IoError).
@@ -748,8 +769,8 @@ private:
         add("setCurrentFrame", 4, Kind::Playhead, [&d, &r](Rng& t) {
             d.setCurrentFrame(chance(r, 0.02) ? (chance(r, 0.5) ? kMaxFrame : -kMaxFrame) : anyFrame(t));
         });
-        add("beginGesture", 6, Kind::Edit, [&d](Rng&) { d.beginGesture(); });
-        add("endGesture", 0, Kind::Edit, [&d](Rng&) { d.endGesture(); });
+        add("beginGesture", 6, Kind::Edit, [this, &d](Rng&) { m_gesture = d.beginGesture(); });
+        add("endGesture", 0, Kind::Edit, [this](Rng&) { m_gesture.end(); });
         add("undo", 14, Kind::Undo, [](Rng&) {});
         add("undoMany", 3, Kind::Undo, [](Rng&) {});
         add("redo", 7, Kind::Redo, [](Rng&) {});
@@ -795,7 +816,7 @@ private:
                 return byName(QStringLiteral("brushEnd"));
             if (x < 0.77)
                 return byName(QStringLiteral("saveAs"));
-        } else if (m_doc.currentGesture() != 0) {
+        } else if (m_gesture.isOpen()) {
             // In a gesture: mostly the same edit on the same target again (a slider, a drag), so
             // steps merge; sometimes another edit; then the release.
             const double x = unit(m_rng);
@@ -809,7 +830,7 @@ private:
         int pick = below(m_rng, m_totalWeight);
         for (const Operation& op : m_operations) {
             if (pick < op.weight) {
-                if (op.name == QLatin1String("beginGesture") && m_doc.currentGesture() != 0)
+                if (op.name == QLatin1String("beginGesture") && m_gesture.isOpen())
                     return byName(QStringLiteral("endGesture"));
                 // Keep the project small (the walk copies it at every step): past a few objects
                 // of a kind, an addition becomes a removal.
@@ -1035,6 +1056,7 @@ private:
     ProjectData m_saved; ///< what the clean state holds
     std::vector<ProjectData> m_states; ///< the data at each undo index
     std::optional<BrushStroke> m_stroke;
+    Gesture m_gesture; ///< the open gesture (slider drag, wheel burst) the edits are given
     const Operation* m_lastEdit = nullptr;
     std::uint64_t m_lastTarget = 0;
     QString m_lastSaved;
@@ -1075,7 +1097,7 @@ private slots:
         doc.reset(newProject(walkMesh(1), QStringLiteral("sphere.obj")));
         algo::LineStyle style = doc.data().look.lineStyle;
         style.seed = 0xFFFFFFFFu;
-        doc.setLineStyle(style);
+        doc.look().setLineStyle(style);
         const QString path = dir.filePath(QStringLiteral("seed.celform"));
         doc.saveAs(path);
         Document reopened;
@@ -1092,14 +1114,14 @@ private slots:
         doc.reset(newProject(walkMesh(2), QStringLiteral("sphere.obj")));
         Camera camera;
         camera.eye = Eigen::Vector3d(0, 0, 4);
-        const ObjectId key = doc.createKey(QStringLiteral("front"), camera);
-        BrushStroke stroke = doc.beginBrushStroke(key, 0, 0, 0.5, camera);
-        doc.applyBrushStroke(stroke, {BrushMotion::Drag, 0.05, 0.0});
+        const ObjectId key = doc.keys().createKey(QStringLiteral("front"), camera);
+        BrushStroke stroke = doc.keys().beginBrushStroke(key, 0, 0, 0.5, camera);
+        doc.keys().applyBrushStroke(stroke, {BrushMotion::Drag, 0.05, 0.0});
         doc.saveAs(dir.filePath(QStringLiteral("stroke.celform")));
         const ProjectData saved = doc.data();
-        doc.applyBrushStroke(stroke, {BrushMotion::Drag, 0.05, 0.0});
-        doc.applyBrushStroke(stroke, {BrushMotion::Push, 0.02, 0.0});
-        doc.endBrushStroke(stroke);
+        doc.keys().applyBrushStroke(stroke, {BrushMotion::Drag, 0.05, 0.0});
+        doc.keys().applyBrushStroke(stroke, {BrushMotion::Push, 0.02, 0.0});
+        doc.keys().endBrushStroke(stroke);
         QVERIFY(!(doc.data() == saved));
         QVERIFY(doc.isModified());
         doc.undoStack()->undo();

@@ -157,7 +157,7 @@ private slots:
             return;
         celform::algo::HighlightLayer green;
         green.color = {0.0f, 1.0f, 0.0f};
-        doc.setHighlightKey(doc.data().look.highlights.front().id, 0, green);
+        doc.highlights().setHighlightKey(doc.data().look.highlights.front().id, 0, green);
         HighlightPanel panel(&doc);
         connectTargets(panel, view);
         panel.setViewport(&view);

@@ -134,7 +134,7 @@ private:
 
     void setLook(const Look& look)
     {
-        m_doc->setLook(look);
+        m_doc->look().setLook(look);
         m_view->setCamera(m_camera);
     }
 

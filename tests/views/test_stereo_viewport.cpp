@@ -134,7 +134,7 @@ private:
         look.stereo.interocular = interocular;
         look.stereo.toeIn = false;
         look.stereo.swapEyes = false;
-        m_doc->setLook(look);
+        m_doc->look().setLook(look);
     }
 
 private slots:
@@ -321,7 +321,7 @@ private slots:
         auto measure = [&](bool lines, StereoOutput output) {
             celform::model::Look look = doc.data().look;
             look.showLines = lines;
-            doc.setLook(look);
+            doc.look().setLook(look);
             view.display().setStereo(output);
             view.renderedImage(); // warm up: topology, shaders
             double total = 0.0, lineTotal = 0.0;

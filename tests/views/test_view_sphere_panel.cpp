@@ -99,7 +99,7 @@ class TestViewSpherePanel : public QObject {
             key.name = QString::fromLatin1(spec.name);
             key.direction = spec.direction;
             const QString name = key.name; // read before key is moved into addKey
-            m_ids[name] = m_doc->addKey(std::move(key));
+            m_ids[name] = m_doc->keys().addKey(std::move(key));
         }
     }
 
@@ -191,9 +191,9 @@ private slots:
         // A key added later shows up; disabling it empties the sphere again.
         KeyViewpoint key;
         key.name = QStringLiteral("front");
-        const ObjectId id = m_doc->addKey(key);
+        const ObjectId id = m_doc->keys().addKey(key);
         QVERIFY(!m_panel->screenPosition(id).isNull());
-        m_doc->setKeyEnabled(id, false);
+        m_doc->keys().setKeyEnabled(id, false);
         QVERIFY(m_panel->screenPosition(id).isNull());
         QVERIFY(m_panel->readout().isEmpty());
         QVERIFY(!m_panel->grab().isNull());
@@ -210,7 +210,7 @@ private slots:
     void outsideTheKeysShowsFalloff()
     {
         makeDocument(true);
-        m_doc->setUnspecifiedMode(UnspecifiedMode::Cosine);
+        m_doc->look().setUnspecifiedMode(UnspecifiedMode::Cosine);
         showPanel();
         const Eigen::Vector3d away = Eigen::Vector3d(0.1, -0.3, -1.0).normalized();
         m_panel->setViewDirection(away);

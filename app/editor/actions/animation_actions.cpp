@@ -231,17 +231,18 @@ void installAnimationActions(MainWindow* window)
     QObject::connect(keyCamera, &QAction::triggered, window, [window] {
         if (!window->document()->hasMesh())
             return;
-        window->document()->setCameraKey(window->document()->currentFrame(), window->viewport()->camera());
+        window->document()->animation().setCameraKey(window->document()->currentFrame(), window->viewport()->camera());
         window->statusBar()->showMessage(
             AnimationText::tr("Camera keyed at frame %1").arg(window->document()->currentFrame()), 4000);
     });
     QAction* removeKey = make("actionRemoveCameraKey", AnimationText::tr("&Remove Camera Key"), QKeySequence(),
         AnimationText::tr("Remove the camera key at the current frame"));
     QObject::connect(removeKey, &QAction::triggered, window,
-        [window] { window->document()->removeCameraKey(window->document()->currentFrame()); });
+        [window] { window->document()->animation().removeCameraKey(window->document()->currentFrame()); });
     QAction* clear = make("actionClearCameraPath", AnimationText::tr("&Clear Camera Path"), QKeySequence(),
         AnimationText::tr("Remove every camera key: the render camera applies again"));
-    QObject::connect(clear, &QAction::triggered, window, [window] { window->document()->clearCameraPath(); });
+    QObject::connect(
+        clear, &QAction::triggered, window, [window] { window->document()->animation().clearCameraPath(); });
     QAction* turntable = make("actionTurntable", AnimationText::tr("&Turntable…"), QKeySequence(),
         AnimationText::tr("Replace the camera path by one revolution around the model"));
     QObject::connect(turntable, &QAction::triggered, window, [window, lookThrough] {
@@ -253,7 +254,8 @@ void installAnimationActions(MainWindow* window)
             return;
         const views::Viewport* v = window->viewport();
         try {
-            d->makeTurntable(dialog.turntable(), v->height() > 0 ? double(v->width()) / v->height() : 16.0 / 9.0);
+            d->animation().makeTurntable(
+                dialog.turntable(), v->height() > 0 ? double(v->width()) / v->height() : 16.0 / 9.0);
             lookThrough->setChecked(true);
         } catch (const model::EditRefused& e) {
             window->statusBar()->showMessage(AnimationText::tr("Turntable refused: %1").arg(e.what()), 10000);

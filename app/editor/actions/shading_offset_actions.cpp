@@ -95,7 +95,7 @@ void autoOffsetsDialog(MainWindow* window)
     request.bleed = bleed->value();
     try {
         const model::AutoOffsetsResult result = model::solveAutoOffsets(doc->data(), request);
-        doc->applyAutoOffsets(result.target, result.values);
+        doc->shading().applyAutoOffsets(result.target, result.values);
         window->statusBar()->showMessage(OffsetText::tr("Automatic shading offsets: %1 segments; depth error MSE "
                                                         "%2 before, %3 after.")
                                              .arg(result.after.size())
@@ -201,7 +201,7 @@ void installOffsetActions(MainWindow* window, QMenu* menu)
         OffsetText::tr("Four rounds of smoothing of the target layer over the mesh"));
     QObject::connect(smooth, &QAction::triggered, window, [window, doc] {
         try {
-            doc->smoothShadingOffsets(currentTarget(window), 4);
+            doc->shading().smoothShadingOffsets(currentTarget(window), 4);
         } catch (const model::EditRefused& e) {
             window->statusBar()->showMessage(e.message(), 6000);
         }
@@ -211,7 +211,7 @@ void installOffsetActions(MainWindow* window, QMenu* menu)
         OffsetText::tr("Remove the target layer's offsets"));
     QObject::connect(clear, &QAction::triggered, window, [window, doc] {
         try {
-            doc->clearShadingOffsets(currentTarget(window));
+            doc->shading().clearShadingOffsets(currentTarget(window));
         } catch (const model::EditRefused& e) {
             window->statusBar()->showMessage(e.message(), 6000);
         }

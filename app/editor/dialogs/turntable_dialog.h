@@ -1,6 +1,6 @@
 // Camera ▸ Turntable…: the settings of a turntable camera path (model::Turntable) — frames per
 // revolution, axis, elevation, start frame and angle. The caller applies them through
-// Document::makeTurntable.
+// AnimationEdits::makeTurntable.
 #pragma once
 
 #include "celform/model/data/camera_path.h"

@@ -1,5 +1,5 @@
 // Automatic per-segment shading offsets (paper 3, section 4.3): the solve, off the document. It
-// reads the project as it is and returns the values; Document::applyAutoOffsets stores them as
+// reads the project as it is and returns the values; ShadingEdits::applyAutoOffsets stores them as
 // one undo step. The editor runs it on a worker thread, `celform offsets --auto` in line.
 #pragma once
 

@@ -1,7 +1,7 @@
 // Optimise Light for Stereo on a project (paper 3, sections 4.1 and 5.0; issue 12): the depth
 // analysis of the picture, algo::optimiseLight over its segments, and the analysis again with
 // the new light, so that the caller can show the depth error before and after. One code path
-// for the editor's action and `celform optimize-light`; Document::applyLightOptimisation stores
+// for the editor's action and `celform optimize-light`; LookEdits::applyOptimisedLight stores
 // the result as one undo step.
 #pragma once
 

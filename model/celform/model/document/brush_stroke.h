@@ -5,6 +5,7 @@
 
 #include "celform/algorithms/brush.h"
 #include "celform/model/data/object_id.h"
+#include "celform/model/document/gesture.h"
 
 #include <QString>
 
@@ -29,11 +30,11 @@ struct BrushStep {
     double b = 0.0;
 };
 
-/// Made by Document::beginBrushStroke; pass it to applyBrushStroke for each step.
+/// Made by KeyEdits::beginBrushStroke; pass it to applyBrushStroke for each step.
 struct BrushStroke {
     ObjectId key = 0;
     int frame = 0;
-    int gesture = 0;
+    Gesture gesture; ///< the stroke's own: its steps merge into one undo step
     algo::ImageFrame imageFrame; ///< the camera's right, true up and forward
     algo::BrushSelection selection;
     algo::BrushSelection mirrorSelection; ///< the X-mirror twins; empty without mirroring
@@ -48,7 +49,7 @@ struct BrushStroke {
     algo::Positions moves, twinMoves, steps;
     std::vector<std::int32_t> scratch;
 
-    [[nodiscard]] bool active() const { return gesture != 0 && !selection.indices.empty(); }
+    [[nodiscard]] bool active() const { return gesture.isOpen() && !selection.indices.empty(); }
 };
 
 } // namespace celform::model

@@ -6,6 +6,7 @@
 #include "celform/algorithms/shading_offsets.h"
 #include "celform/model/data/camera.h"
 #include "celform/model/data/shading_layers.h"
+#include "celform/model/document/gesture.h"
 
 #include <QString>
 
@@ -29,11 +30,11 @@ struct OffsetBrush {
     bool mirrorX = false; ///< also paint the mirror image across x = 0
 };
 
-/// Made by Document::beginOffsetStroke; pass it to applyOffsetStroke for each dab.
+/// Made by ShadingEdits::beginOffsetStroke; pass it to applyOffsetStroke for each dab.
 struct OffsetStroke {
     ShadingTarget target;
     OffsetBrush brush;
-    int gesture = 0;
+    Gesture gesture; ///< the stroke's own: its steps merge into one undo step
     QString undoText;
     algo::Positions shape; ///< the shape painted on (the one shown), #V by 3
     algo::VertexGrid grid; ///< over shape
@@ -43,8 +44,7 @@ struct OffsetStroke {
     std::vector<std::uint32_t> indices, mirrorIndices, merged;
     std::vector<float> distances, mirrorDistances, falloff, after;
 
-    [[nodiscard]] bool active() const { return gesture != 0; }
+    [[nodiscard]] bool active() const { return gesture.isOpen(); }
 };
-
 
 } // namespace celform::model

@@ -21,6 +21,13 @@ GestureTracker* GestureTracker::track(QWidget* control, model::Document* documen
     return new GestureTracker(control, document);
 }
 
+model::GestureId GestureTracker::of(const QObject* control)
+{
+    const auto* tracker
+        = control ? control->findChild<GestureTracker*>(QString(), Qt::FindDirectChildrenOnly) : nullptr;
+    return tracker ? tracker->m_gesture.id() : model::GestureId{};
+}
+
 GestureTracker::GestureTracker(QWidget* control, model::Document* document)
     : QObject(control)
     , m_document(document)
@@ -48,10 +55,7 @@ void GestureTracker::begin()
 void GestureTracker::end()
 {
     m_wheelEnd.stop();
-    // Only our own gesture: a tool may have opened another one since.
-    if (m_gesture != 0 && m_document->currentGesture() == m_gesture)
-        m_document->endGesture();
-    m_gesture = 0;
+    m_gesture.end();
 }
 
 bool GestureTracker::eventFilter(QObject* watched, QEvent* event)
@@ -68,7 +72,7 @@ bool GestureTracker::eventFilter(QObject* watched, QEvent* event)
         break;
     case QEvent::KeyPress:
         // An auto-repeated key continues the gesture its first press began.
-        if (!static_cast<QKeyEvent*>(event)->isAutoRepeat() || m_gesture == 0)
+        if (!static_cast<QKeyEvent*>(event)->isAutoRepeat() || !m_gesture.isOpen())
             begin();
         break;
     case QEvent::KeyRelease:
@@ -76,7 +80,7 @@ bool GestureTracker::eventFilter(QObject* watched, QEvent* event)
             end();
         break;
     case QEvent::Wheel:
-        if (m_gesture == 0 || m_document->currentGesture() != m_gesture)
+        if (!m_gesture.isOpen())
             begin();
         m_wheelEnd.start();
         break;

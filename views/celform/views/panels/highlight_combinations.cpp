@@ -1,4 +1,4 @@
-// Combination rows of the Highlights dock; edits go to Document::setHighlightCombinations.
+// Combination rows of the Highlights dock; edits go to HighlightEdits::setHighlightCombinations.
 #include "celform/views/panels/highlight_combinations.h"
 
 #include "celform/model/document/document.h"
@@ -44,7 +44,7 @@ HighlightCombinationsBox::HighlightCombinationsBox(model::Document* document, QW
                 Combinations combinations = track->combineWith;
                 combinations.emplace_back(algo::HighlightBoolean::Union, other.name);
                 try {
-                    m_document->setHighlightCombinations(m_layer, std::move(combinations));
+                    m_document->highlights().setHighlightCombinations(m_layer, std::move(combinations));
                 } catch (const model::EditRefused&) { }
                 return;
             }
@@ -90,7 +90,7 @@ void HighlightCombinationsBox::rebuildRows()
         Combinations combinations = t->combineWith;
         change(combinations);
         try {
-            m_document->setHighlightCombinations(m_layer, std::move(combinations));
+            m_document->highlights().setHighlightCombinations(m_layer, std::move(combinations));
         } catch (const model::EditRefused&) {
             m_shown.clear();
             showLayer(m_layer);

@@ -100,7 +100,7 @@ HighlightOperationsBox::HighlightOperationsBox(model::Document* document, QWidge
     for (T type : {T::Translation, T::Rotation, T::DirectionalScaling, T::Split, T::Squaring}) {
         QAction* a = menu->addAction(operationTitle(type));
         connect(a, &QAction::triggered, this,
-            [this, type] { run([&] { m_document->addHighlightOperation(m_layer, type); }); });
+            [this, type] { run([&] { m_document->highlights().addHighlightOperation(m_layer, type); }); });
     }
     m_add->setMenu(menu);
     layout->addWidget(m_add, 0, Qt::AlignLeft);
@@ -152,7 +152,7 @@ void HighlightOperationsBox::rebuildRows(const std::vector<algo::HighlightOperat
             spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
             GestureTracker::track(spin, m_document);
             h->addWidget(spin, 1);
-            connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i, p](double v) {
+            connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, spin, i, p](double v) {
                 const model::HighlightTrack* track = m_document->data().highlight(m_layer);
                 if (!track)
                     return;
@@ -162,7 +162,7 @@ void HighlightOperationsBox::rebuildRows(const std::vector<algo::HighlightOperat
                     return;
                 auto& op = layer.shape.operations[std::size_t(i)];
                 (p == 0 ? op.a : op.b) = float(v);
-                run([&] { m_document->setHighlightKey(m_layer, frame, layer); });
+                run([&] { m_document->highlights().setHighlightKey(m_layer, frame, layer, GestureTracker::of(spin)); });
             });
             spins[p] = spin;
         }
@@ -180,12 +180,13 @@ void HighlightOperationsBox::rebuildRows(const std::vector<algo::HighlightOperat
             return b;
         };
         connect(addButton(Qt::UpArrow, {}, Text::tr("Move the operation earlier"), i > 0), &QToolButton::clicked, this,
-            [this, i] { run([&] { m_document->moveHighlightOperation(m_layer, i, -1); }); });
+            [this, i] { run([&] { m_document->highlights().moveHighlightOperation(m_layer, i, -1); }); });
         connect(addButton(Qt::DownArrow, {}, Text::tr("Move the operation later"), i + 1 < count),
             &QToolButton::clicked, this,
-            [this, i] { run([&] { m_document->moveHighlightOperation(m_layer, i, 1); }); });
+            [this, i] { run([&] { m_document->highlights().moveHighlightOperation(m_layer, i, 1); }); });
         connect(addButton(Qt::NoArrow, Text::tr("✕"), Text::tr("Remove the operation from every key"), true),
-            &QToolButton::clicked, this, [this, i] { run([&] { m_document->removeHighlightOperation(m_layer, i); }); });
+            &QToolButton::clicked, this,
+            [this, i] { run([&] { m_document->highlights().removeHighlightOperation(m_layer, i); }); });
         m_rows->addWidget(row);
         row->show(); // the layout would show it only once the event loop runs
         m_spins.emplace_back(spins[0], spins[1]);

@@ -91,9 +91,9 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         const QString name = item->text().trimmed();
         const bool visible = item->checkState() == Qt::Checked;
         if (name != t->name)
-            run([&] { m_document->renameHighlightLayer(id, name); });
+            run([&] { m_document->highlights().renameHighlightLayer(id, name); });
         else if (visible != t->visible)
-            m_document->setHighlightVisible(id, visible);
+            m_document->highlights().setHighlightVisible(id, visible);
         refresh(); // a refused name goes back to the stored one
     });
     connect(m_addLayer, &QPushButton::clicked, this, [this] {
@@ -104,7 +104,7 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
             if (!m_document->data().highlightByName(name))
                 break;
         }
-        m_document->addHighlightLayer(name, m_document->currentFrame());
+        m_document->highlights().addHighlightLayer(name, m_document->currentFrame());
         selectLayer(int(m_document->data().look.highlights.size()) - 1);
     });
     // Presets: the paper's two worked examples as starting points (Figures 5 and 6).
@@ -118,7 +118,7 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     m_addPreset->setMenu(presetMenu);
     connect(m_removeLayer, &QPushButton::clicked, this, [this] {
         if (const model::ObjectId id = selectedLayerId())
-            m_document->removeHighlightLayer(id);
+            m_document->highlights().removeHighlightLayer(id);
     });
 
     // --- timeline --------------------------------------------------------------------------------
@@ -180,11 +180,11 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     connect(m_nextKey, &QToolButton::clicked, this, [this] { jumpToKey(1); });
     connect(m_key, &QPushButton::clicked, this, [this] {
         if (const model::HighlightTrack* t = track())
-            run([&] { m_document->setHighlightKey(t->id, currentFrame(), t->layerAt(currentFrame())); });
+            run([&] { m_document->highlights().setHighlightKey(t->id, currentFrame(), t->layerAt(currentFrame())); });
     });
     connect(m_deleteKey, &QPushButton::clicked, this, [this] {
         if (const model::ObjectId id = selectedLayerId())
-            m_document->removeHighlightKey(id, currentFrame());
+            m_document->highlights().removeHighlightKey(id, currentFrame());
     });
 
     // --- parameters ------------------------------------------------------------------------------
@@ -206,13 +206,15 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     m_epsilon = makeSpin(0.001, 1.0, 0.01, 3, tr("epsilon: size of the area where (N, H) > 1 - epsilon (keyed)"));
     m_epsilon->setObjectName(QStringLiteral("highlightEpsilon"));
     form->addRow(tr("&Epsilon:"), m_epsilon);
-    connect(m_epsilon, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-        [this](double v) { editKey([v](algo::HighlightLayer& l) { l.shape.epsilon = float(v); }); });
+    connect(m_epsilon, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editKey([v](algo::HighlightLayer& l) { l.shape.epsilon = float(v); }, GestureTracker::of(m_epsilon));
+    });
     m_cut = makeSpin(-1.0, 1.0, 0.05, 3,
         tr("Off-specular cut: no highlight where N·L is at most this value; -1 turns it off (keyed)"));
     form->addRow(tr("Off-specular c&ut:"), m_cut);
-    connect(m_cut, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-        [this](double v) { editKey([v](algo::HighlightLayer& l) { l.offSpecularCut = float(v); }); });
+    connect(m_cut, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editKey([v](algo::HighlightLayer& l) { l.offSpecularCut = float(v); }, GestureTracker::of(m_cut));
+    });
     // The patch: the paper shapes each highlight on one (u, v) patch; here a face set painted
     // on the model (the Patch tool of the viewport), or all faces.
     auto* patchRow = new QWidget(m_parameters);
@@ -247,21 +249,21 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         if (!ok)
             return;
         try {
-            m_document->renameFaceSet(t->patch, name);
+            m_document->faceSets().renameFaceSet(t->patch, name);
         } catch (const model::EditRefused& e) {
             QMessageBox::warning(this, tr("Rename Patch"), e.message());
         }
     });
     m_deletePatch = patchMenu->addAction(tr("&Delete Patch"), this, [this] {
         if (const model::HighlightTrack* t = track(); t && !t->patch.isEmpty())
-            m_document->removeFaceSet(t->patch);
+            m_document->faceSets().removeFaceSet(t->patch);
     });
     patchMenuButton->setMenu(patchMenu);
     patchLayout->addWidget(patchMenuButton);
     form->addRow(tr("&Patch:"), patchRow);
     connect(m_patch, qOverload<int>(&QComboBox::activated), this, [this](int index) {
         if (const model::ObjectId id = selectedLayerId())
-            run([&] { m_document->setHighlightPatch(id, m_patch->itemData(index).toString()); });
+            run([&] { m_document->highlights().setHighlightPatch(id, m_patch->itemData(index).toString()); });
     });
     connect(m_paintPatch, &QToolButton::toggled, this, [this](bool on) {
         if (!m_viewport)
@@ -296,7 +298,9 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
             if (const model::HighlightTrack* t = track()) {
                 Eigen::Vector3f guide = t->guide;
                 guide[axis] = float(v);
-                run([&] { m_document->setHighlightGuide(t->id, guide); });
+                run([&] {
+                    m_document->highlights().setHighlightGuide(t->id, guide, GestureTracker::of(m_guide[axis]));
+                });
             }
         });
     }
@@ -313,7 +317,7 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     form->addRow(tr("&Smooth normals:"), m_smoothing);
     connect(m_smoothing, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
         if (const model::ObjectId id = selectedLayerId(); id && !m_updating)
-            run([&] { m_document->setHighlightSmoothing(id, v); });
+            run([&] { m_document->highlights().setHighlightSmoothing(id, v, GestureTracker::of(m_smoothing)); });
     });
     m_editInViewport = new QPushButton(tr("Edit in &Viewport"), m_parameters);
     m_editInViewport->setObjectName(QStringLiteral("highlightEditInViewport"));
@@ -370,7 +374,7 @@ void HighlightPanel::run(const std::function<void()>& operation)
     }
 }
 
-void HighlightPanel::editKey(const std::function<void(algo::HighlightLayer&)>& change)
+void HighlightPanel::editKey(const std::function<void(algo::HighlightLayer&)>& change, model::GestureId gesture)
 {
     const model::HighlightTrack* t = track();
     if (!t || m_updating)
@@ -378,14 +382,14 @@ void HighlightPanel::editKey(const std::function<void(algo::HighlightLayer&)>& c
     const int frame = currentFrame();
     algo::HighlightLayer layer = t->layerAt(frame);
     change(layer);
-    run([&] { m_document->setHighlightKey(t->id, frame, layer); });
+    run([&] { m_document->highlights().setHighlightKey(t->id, frame, layer, gesture); });
 }
 
 void HighlightPanel::addPreset(model::HighlightPreset preset)
 {
     // The new layers sit on the selected layer's patch, with its guide and smoothing.
     std::vector<model::ObjectId> added;
-    run([&] { added = m_document->addHighlightPreset(preset, selectedLayerId(), currentFrame()); });
+    run([&] { added = m_document->highlights().addHighlightPreset(preset, selectedLayerId(), currentFrame()); });
     if (!added.empty())
         selectLayer(int(m_document->data().look.highlights.size()) - 1);
 }
@@ -397,7 +401,7 @@ void HighlightPanel::newPatchForLayer()
         return;
     const model::ObjectId id = t->id;
     QString name;
-    run([&] { name = m_document->newFaceSetForLayer(id, tr("%1 patch").arg(t->name)); });
+    run([&] { name = m_document->faceSets().newFaceSetForLayer(id, tr("%1 patch").arg(t->name)); });
     if (m_viewport && m_viewport->tool() == Viewport::Tool::Patch && !name.isEmpty())
         emit patchTargetChosen(name);
 }

@@ -56,8 +56,8 @@ signals:
 
 private:
     void documentChanged(const model::ChangeSet& change);
-    /// Edits the selected layer's key at the playhead through Document::setHighlightKey.
-    void editKey(const std::function<void(algo::HighlightLayer&)>& change);
+    /// Edits the selected layer's key at the playhead through HighlightEdits::setHighlightKey.
+    void editKey(const std::function<void(algo::HighlightLayer&)>& change, model::GestureId gesture = {});
     /// Runs a document operation; a refused edit puts the controls back.
     void run(const std::function<void()>& operation);
     [[nodiscard]] const model::HighlightTrack* track() const;

@@ -63,7 +63,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         const auto style = model::ShadingStyle(m_style->itemData(index).toInt());
         const int material = m_material->currentData().toInt();
         if (!m_updating)
-            m_document->setShadingStyle(style, material);
+            m_document->look().setShadingStyle(style, material);
     });
     connect(m_material, qOverload<int>(&QComboBox::activated), this, [this](int) { refresh(); });
     m_refreshers.push_back([this] {
@@ -89,7 +89,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     shadingForm->addRow(tr("&Light:"), lightType);
     connect(lightType, qOverload<int>(&QComboBox::activated), this, [this, lightType](int index) {
         const auto type = model::LightType(lightType->itemData(index).toInt());
-        edit(&model::Look::light, &model::Document::setLight, [type](model::Light& l) {
+        edit(&model::Look::light, &model::LookEdits::setLight, [type](model::Light& l) {
             if (l.type == type)
                 return;
             l.type = type;
@@ -109,7 +109,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         lightLayout->addWidget(spin);
         connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, axis](double v) {
-            edit(&model::Look::light, &model::Document::setLight, [axis, v](model::Light& l) { l.vector[axis] = v; });
+            edit(&model::Look::light, &model::LookEdits::setLight, [axis, v](model::Light& l) { l.vector[axis] = v; });
         });
         m_refreshers.push_back([this, spin, axis] { spin->setValue(m_document->data().look.light.vector[axis]); });
     }
@@ -117,7 +117,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     shadingForm->addRow(tr("&Background:"),
         makeColorButton(
             tr("Colour behind the model"), [](const model::Look& l) { return l.backgroundColor; },
-            [this](const Eigen::Vector3f& c) { m_document->setBackgroundColor(c); }));
+            [this](const Eigen::Vector3f& c) { m_document->look().setBackgroundColor(c); }));
     layout->addWidget(shadingBox);
 
     // --- toon tones ----------------------------------------------------------------------------
@@ -133,7 +133,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     m_toneForm->addRow(tr("&Evaluation:"), evaluation);
     connect(evaluation, qOverload<int>(&QComboBox::activated), this, [this, evaluation](int index) {
         if (!m_updating)
-            m_document->setToonEvaluation(algo::ToonEvaluation(evaluation->itemData(index).toInt()));
+            m_document->look().setToonEvaluation(algo::ToonEvaluation(evaluation->itemData(index).toInt()));
     });
     m_refreshers.push_back([this, evaluation] {
         evaluation->setCurrentIndex(evaluation->findData(int(m_document->data().look.toonEvaluation)));
@@ -145,7 +145,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     connect(m_toneCount, qOverload<int>(&QSpinBox::valueChanged), this, [this](int count) {
         if (m_updating)
             return;
-        edit(&model::Look::toon, &model::Document::setToonRamp, [count](algo::ToonRamp& toon) {
+        edit(&model::Look::toon, &model::LookEdits::setToonRamp, [count](algo::ToonRamp& toon) {
             // Evenly spaced thresholds over N.L in [-0.2, 0.8] and intensities from 0.25 to 0.95:
             // a sensible start that the artist then shapes tone by tone.
             toon.thresholds.clear();
@@ -175,7 +175,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     goochForm->addRow(tr("&Preset:"), preset);
     connect(preset, qOverload<int>(&QComboBox::activated), this, [this, preset](int index) {
         const std::string name = preset->itemData(index).toString().toStdString();
-        edit(&model::Look::gooch, &model::Document::setGooch, [name](algo::GoochParams& g) {
+        edit(&model::Look::gooch, &model::LookEdits::setGooch, [name](algo::GoochParams& g) {
             const algo::GoochParams p = name == "auto" ? model::autoGooch() : algo::goochPreset(name);
             g.preset = p.preset;
             g.ka = p.ka;
@@ -198,7 +198,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         goochForm->addRow(QString::fromLatin1(name) + QLatin1Char(':'), spin);
         const auto m = member;
         connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, m](double v) {
-            edit(&model::Look::gooch, &model::Document::setGooch, [m, v](algo::GoochParams& g) { g.*m = float(v); });
+            edit(&model::Look::gooch, &model::LookEdits::setGooch, [m, v](algo::GoochParams& g) { g.*m = float(v); });
         });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.gooch.*m); });
     }
@@ -206,13 +206,13 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         makeColorButton(
             tr("Warm light colour"), [](const model::Look& l) { return l.gooch.warm; },
             [this](const Eigen::Vector3f& c) {
-                edit(&model::Look::gooch, &model::Document::setGooch, [c](algo::GoochParams& g) { g.warm = c; });
+                edit(&model::Look::gooch, &model::LookEdits::setGooch, [c](algo::GoochParams& g) { g.warm = c; });
             }));
     goochForm->addRow(tr("&Cool:"),
         makeColorButton(
             tr("Cool light colour"), [](const model::Look& l) { return l.gooch.cool; },
             [this](const Eigen::Vector3f& c) {
-                edit(&model::Look::gooch, &model::Document::setGooch, [c](algo::GoochParams& g) { g.cool = c; });
+                edit(&model::Look::gooch, &model::LookEdits::setGooch, [c](algo::GoochParams& g) { g.cool = c; });
             }));
     layout->addWidget(m_goochBox);
 
@@ -230,7 +230,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         hatchForm->addRow(label, spin);
         const auto m = member;
         connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, m](double v) {
-            edit(&model::Look::hatch, &model::Document::setHatch, [m, v](algo::HatchParams& h) { h.*m = float(v); });
+            edit(&model::Look::hatch, &model::LookEdits::setHatch, [m, v](algo::HatchParams& h) { h.*m = float(v); });
         });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.hatch.*m); });
     }
@@ -243,7 +243,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     auto* linesForm = new QFormLayout(linesBox);
     connect(linesBox, &QGroupBox::toggled, this, [this](bool on) {
         if (!m_updating)
-            m_document->setShowLines(on);
+            m_document->look().setShowLines(on);
     });
     m_refreshers.push_back([this, linesBox] { linesBox->setChecked(m_document->data().look.showLines); });
     const std::pair<QString, bool algo::LineSettings::*> kinds[]
@@ -255,7 +255,8 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         linesForm->addRow(check);
         const auto m = member;
         connect(check, &QCheckBox::toggled, this, [this, m](bool on) {
-            edit(&model::Look::lines, &model::Document::setLineSettings, [m, on](algo::LineSettings& s) { s.*m = on; });
+            edit(
+                &model::Look::lines, &model::LookEdits::setLineSettings, [m, on](algo::LineSettings& s) { s.*m = on; });
         });
         m_refreshers.push_back([this, check, m] { check->setChecked(m_document->data().look.lines.*m); });
     }
@@ -264,7 +265,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     crease->setSuffix(QStringLiteral("°"));
     linesForm->addRow(tr("Crease &angle:"), crease);
     connect(crease, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        edit(&model::Look::lines, &model::Document::setLineSettings,
+        edit(&model::Look::lines, &model::LookEdits::setLineSettings,
             [v](algo::LineSettings& s) { s.creaseAngleDegrees = float(v); });
     });
     m_refreshers.push_back([this, crease] { crease->setValue(m_document->data().look.lines.creaseAngleDegrees); });
@@ -275,7 +276,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
                           "width; they help depth perception in stereo"));
     linesForm->addRow(ridges);
     connect(ridges, &QCheckBox::toggled, this, [this](bool on) {
-        edit(&model::Look::lines, &model::Document::setLineSettings, [on](algo::LineSettings& s) { s.ridges = on; });
+        edit(&model::Look::lines, &model::LookEdits::setLineSettings, [on](algo::LineSettings& s) { s.ridges = on; });
     });
     m_refreshers.push_back([this, ridges] { ridges->setChecked(m_document->data().look.lines.ridges); });
     QDoubleSpinBox* ridgeThreshold = makeSpin(0, 10, 0.05, 2,
@@ -283,7 +284,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
            "this: lower draws more (and noisier) lines, higher only the sharpest folds"));
     linesForm->addRow(tr("Ridge &threshold:"), ridgeThreshold);
     connect(ridgeThreshold, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        edit(&model::Look::lines, &model::Document::setLineSettings,
+        edit(&model::Look::lines, &model::LookEdits::setLineSettings,
             [v](algo::LineSettings& s) { s.ridgeThreshold = float(v); });
     });
     m_refreshers.push_back([this, ridgeThreshold] {
@@ -294,7 +295,8 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         makeColorButton(
             tr("Line colour"), [](const model::Look& l) { return l.lineStyle.color; },
             [this](const Eigen::Vector3f& c) {
-                edit(&model::Look::lineStyle, &model::Document::setLineStyle, [c](algo::LineStyle& s) { s.color = c; });
+                edit(
+                    &model::Look::lineStyle, &model::LookEdits::setLineStyle, [c](algo::LineStyle& s) { s.color = c; });
             }));
     const std::tuple<QString, float algo::LineStyle::*, double, double, double, QString> styleControls[] = {
         {tr("O&utline width:"), &algo::LineStyle::outlineWidth, 0, 50, 0.25, tr("Silhouettes and borders, pixels")},
@@ -308,7 +310,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         linesForm->addRow(label, spin);
         const auto m = member;
         connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, m](double v) {
-            edit(&model::Look::lineStyle, &model::Document::setLineStyle,
+            edit(&model::Look::lineStyle, &model::LookEdits::setLineStyle,
                 [m, v](algo::LineStyle& s) { s.*m = float(v); });
         });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.lineStyle.*m); });
@@ -329,7 +331,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     stereoForm->addRow(tr("&Output:"), output);
     connect(output, qOverload<int>(&QComboBox::activated), this, [this, output](int index) {
         const auto o = algo::StereoOutput(output->itemData(index).toInt());
-        edit(&model::Look::stereo, &model::Document::setStereo, [o](model::StereoLook& st) { st.output = o; });
+        edit(&model::Look::stereo, &model::LookEdits::setStereo, [o](model::StereoLook& st) { st.output = o; });
     });
     m_refreshers.push_back([this, output] {
         output->setCurrentIndex(std::max(0, output->findData(int(m_document->data().look.stereo.output))));
@@ -340,7 +342,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     interocular->setSpecialValueText(tr("Automatic"));
     stereoForm->addRow(tr("&Interocular:"), interocular);
     connect(interocular, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        edit(&model::Look::stereo, &model::Document::setStereo, [v](model::StereoLook& st) { st.interocular = v; });
+        edit(&model::Look::stereo, &model::LookEdits::setStereo, [v](model::StereoLook& st) { st.interocular = v; });
     });
     m_refreshers.push_back([this, interocular] { interocular->setValue(m_document->data().look.stereo.interocular); });
     QDoubleSpinBox* convergence = makeSpin(0, 1e6, 0.05, 3,
@@ -349,7 +351,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     convergence->setSpecialValueText(tr("Automatic"));
     stereoForm->addRow(tr("&Convergence:"), convergence);
     connect(convergence, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        edit(&model::Look::stereo, &model::Document::setStereo, [v](model::StereoLook& st) { st.convergence = v; });
+        edit(&model::Look::stereo, &model::LookEdits::setStereo, [v](model::StereoLook& st) { st.convergence = v; });
     });
     m_refreshers.push_back([this, convergence] { convergence->setValue(m_document->data().look.stereo.convergence); });
     auto* toeIn = new QCheckBox(tr("&Toe-in (instead of off-axis)"), stereoBox);
@@ -357,13 +359,13 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
                          "distortion of toe-in"));
     stereoForm->addRow(toeIn);
     connect(toeIn, &QCheckBox::toggled, this, [this](bool on) {
-        edit(&model::Look::stereo, &model::Document::setStereo, [on](model::StereoLook& st) { st.toeIn = on; });
+        edit(&model::Look::stereo, &model::LookEdits::setStereo, [on](model::StereoLook& st) { st.toeIn = on; });
     });
     m_refreshers.push_back([this, toeIn] { toeIn->setChecked(m_document->data().look.stereo.toeIn); });
     auto* swap = new QCheckBox(tr("S&wap eyes"), stereoBox);
     stereoForm->addRow(swap);
     connect(swap, &QCheckBox::toggled, this, [this](bool on) {
-        edit(&model::Look::stereo, &model::Document::setStereo, [on](model::StereoLook& st) { st.swapEyes = on; });
+        edit(&model::Look::stereo, &model::LookEdits::setStereo, [on](model::StereoLook& st) { st.swapEyes = on; });
     });
     m_refreshers.push_back([this, swap] { swap->setChecked(m_document->data().look.stereo.swapEyes); });
     auto* dubois = new QPushButton(tr("&Dubois Matrices…"), stereoBox);
@@ -451,7 +453,7 @@ void LookPanel::editDuboisMatrices()
     layout->addWidget(buttons);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    edit(&model::Look::stereo, &model::Document::setStereo, [&cells](model::StereoLook& st) {
+    edit(&model::Look::stereo, &model::LookEdits::setStereo, [&cells](model::StereoLook& st) {
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) {
                 st.dubois.left(r, c) = float(cells[0][r][c]->value());
@@ -477,7 +479,7 @@ void LookPanel::rebuildTones()
         intensity->setValue(toon.intensities[std::size_t(i)]);
         h->addWidget(intensity);
         connect(intensity, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i](double v) {
-            edit(&model::Look::toon, &model::Document::setToonRamp,
+            edit(&model::Look::toon, &model::LookEdits::setToonRamp,
                 [i, v](algo::ToonRamp& ramp) { ramp.intensities[std::size_t(i)] = float(v); });
         });
         if (i > 0) {
@@ -487,7 +489,7 @@ void LookPanel::rebuildTones()
             threshold->setValue(toon.thresholds[std::size_t(i - 1)]);
             h->addWidget(threshold);
             connect(threshold, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, i](double v) {
-                edit(&model::Look::toon, &model::Document::setToonRamp,
+                edit(&model::Look::toon, &model::LookEdits::setToonRamp,
                     [i, v](algo::ToonRamp& ramp) { ramp.thresholds[std::size_t(i - 1)] = float(v); });
             });
             m_thresholds.push_back(threshold);

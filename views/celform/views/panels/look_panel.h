@@ -5,6 +5,7 @@
 
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
+#include "celform/views/panels/gesture_tracker.h"
 
 #include <QWidget>
 
@@ -29,17 +30,18 @@ public:
     [[nodiscard]] QComboBox* styleBox() const { return m_style; }
 
 private:
-    /// Edits a copy of one property of the look and hands it to the document's setter for it; a
+    /// Edits a copy of one property of the look and hands it to the document's setter for it,
+    /// in the gesture of the control that sent the change (a spin box held down is one step); a
     /// refused value puts the controls back.
     template <typename T, typename Change>
-    void edit(T model::Look::*field, void (model::Document::*set)(const T&), Change&& change)
+    void edit(T model::Look::*field, void (model::LookEdits::*set)(const T&, model::GestureId), Change&& change)
     {
         if (m_updating)
             return;
         T value = m_document->data().look.*field;
         change(value);
         try {
-            (m_document->*set)(value);
+            (m_document->look().*set)(value, GestureTracker::of(sender()));
         } catch (const model::EditRefused&) {
             refresh();
         }

@@ -222,14 +222,14 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         if (m_updating)
             return;
         if (m_selection.kind == ScenePanel::ItemKind::Drawing)
-            m_document->renameDrawing(m_selection.id, m_name->text());
+            m_document->drawings().renameDrawing(m_selection.id, m_name->text());
         else if (m_selection.kind == ScenePanel::ItemKind::Key)
-            m_document->renameKey(m_selection.id, m_name->text());
+            m_document->keys().renameKey(m_selection.id, m_name->text());
     });
     connect(m_opacity, &QSlider::valueChanged, this, [this](int value) {
         m_opacityValue->setText(QStringLiteral("%1 %").arg(value));
         if (!m_updating && m_selection.kind == ScenePanel::ItemKind::Drawing)
-            m_document->setDrawingOpacity(m_selection.id, value / 100.0);
+            m_document->drawings().setDrawingOpacity(m_selection.id, value / 100.0, GestureTracker::of(m_opacity));
     });
     connect(m_onTop, &QCheckBox::toggled, this, [this](bool on) {
         if (m_viewport)
@@ -280,7 +280,7 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
         try {
             if (m_viewport && m_viewport->tool() == Viewport::Tool::Align)
                 m_viewport->setTool(Viewport::Tool::Navigate); // stores the alignment first
-            emit keyCreated(m_document->createKeyFromDrawing(m_selection.id));
+            emit keyCreated(m_document->keys().createKeyFromDrawing(m_selection.id));
         } catch (const model::EditRefused& e) {
             emit message(e.message());
             QMessageBox::information(this, tr("Create Key"), e.message());
@@ -288,12 +288,12 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     });
     connect(m_enabled, &QCheckBox::toggled, this, [this](bool on) {
         if (!m_updating && m_selection.kind == ScenePanel::ItemKind::Key)
-            m_document->setKeyEnabled(m_selection.id, on);
+            m_document->keys().setKeyEnabled(m_selection.id, on);
     });
     connect(m_linkedDrawing, qOverload<int>(&QComboBox::activated), this, [this](int index) {
         if (m_selection.kind != ScenePanel::ItemKind::Key)
             return;
-        m_document->linkKeyDrawing(m_selection.id, m_linkedDrawing->itemData(index).toULongLong());
+        m_document->keys().linkKeyDrawing(m_selection.id, m_linkedDrawing->itemData(index).toULongLong());
         if (m_viewport && m_viewport->displayedKey() == m_selection.id)
             m_viewport->drawingOverlay().setDrawing(m_linkedDrawing->itemData(index).toULongLong());
     });
@@ -340,15 +340,15 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     GestureTracker::track(m_sharpness, m_document);
     connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double value) {
         if (!m_updating)
-            m_document->setSharpness(value);
+            m_document->look().setSharpness(value, GestureTracker::of(m_sharpness));
     });
     connect(m_unspecified, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
         if (!m_updating)
-            m_document->setUnspecifiedMode(model::UnspecifiedMode(m_unspecified->itemData(index).toInt()));
+            m_document->look().setUnspecifiedMode(model::UnspecifiedMode(m_unspecified->itemData(index).toInt()));
     });
     connect(m_time, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
         if (!m_updating)
-            m_document->setTimeInterpolation(model::TimeInterpolation(m_time->itemData(index).toInt()));
+            m_document->look().setTimeInterpolation(model::TimeInterpolation(m_time->itemData(index).toInt()));
     });
     connect(m_preview, &QPushButton::toggled, this, [this](bool on) {
         if (m_updating || !m_viewport)
@@ -477,7 +477,7 @@ void PropertiesPanel::importDeformation()
     if (path.isEmpty())
         return;
     try {
-        const QStringList warnings = m_document->importKeyDeformation(m_selection.id, path);
+        const QStringList warnings = m_document->keys().importKeyDeformation(m_selection.id, path);
         for (const QString& w : warnings)
             emit message(w);
     } catch (const model::IoError& e) {

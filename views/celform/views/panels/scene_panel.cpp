@@ -69,9 +69,9 @@ void ScenePanel::removeSelected()
 {
     const Selection s = selection();
     if (s.kind == ItemKind::Drawing)
-        m_document->removeDrawing(s.id);
+        m_document->drawings().removeDrawing(s.id);
     else if (s.kind == ItemKind::Key)
-        m_document->removeKey(s.id);
+        m_document->keys().removeKey(s.id);
 }
 
 void ScenePanel::documentChanged(const model::ChangeSet& change)
@@ -185,10 +185,10 @@ void ScenePanel::onItemChanged(QTreeWidgetItem* item, int column)
         this,
         [this, kind, id, name, checked = item->checkState(0) == Qt::Checked] {
             if (kind == ItemKind::Drawing) {
-                m_document->renameDrawing(id, name);
+                m_document->drawings().renameDrawing(id, name);
             } else if (kind == ItemKind::Key) {
-                m_document->renameKey(id, name);
-                m_document->setKeyEnabled(id, checked);
+                m_document->keys().renameKey(id, name);
+                m_document->keys().setKeyEnabled(id, checked);
             }
             rebuild(); // restores the stored name when a rename was refused (empty name)
         },

@@ -195,7 +195,7 @@ void TimelinePanel::applySceneTime()
     time.lastFrame = m_last->value();
     time.fps = m_fps->value();
     try {
-        m_document->setSceneTime(time);
+        m_document->animation().setSceneTime(time);
     } catch (const model::EditRefused&) {
         refreshTime(); // back to what the document holds
     }

@@ -148,7 +148,7 @@ void AlignTool::commit()
     const model::Camera camera = m_viewport->camera();
     if (camera == m_stored)
         return;
-    document->setDrawingCamera(m_drawing, camera);
+    document->drawings().setDrawingCamera(m_drawing, camera, gesture());
     m_stored = camera;
 }
 
@@ -265,7 +265,7 @@ std::optional<double> AlignTool::solveFromMatchedPoints(QString* error)
     // One step: the solved camera, stored with the drawing (setCamera commits it while aligning).
     m_viewport->setCamera(camera);
     if (m_drawing != m_viewport->drawingOverlay().drawing())
-        document->setDrawingCamera(m_viewport->drawingOverlay().drawing(), camera);
+        document->drawings().setDrawingCamera(m_viewport->drawingOverlay().drawing(), camera);
     m_markers->update();
     return solved->rmsPixelError;
 }

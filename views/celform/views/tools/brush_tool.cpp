@@ -51,7 +51,7 @@ bool BrushTool::press(const ToolEvent& event)
     const double unitsPerPixel = m_viewport->worldUnitsPerPixel(pickedPoint);
     const double radius = size().worldRadius(unitsPerPixel);
     try {
-        m_stroke = document->beginBrushStroke(key, document->currentFrame(), std::uint32_t(picked), radius,
+        m_stroke = document->keys().beginBrushStroke(key, document->currentFrame(), std::uint32_t(picked), radius,
             m_viewport->camera(), m_settings.mirrorX, m_settings.profile);
     } catch (const model::EditRefused& e) {
         emit message(e.message());
@@ -83,7 +83,7 @@ void BrushTool::move(const ToolEvent& event)
         step = {model::BrushMotion::Push, -d.y() * m_unitsPerPixel, 0.0};
     else
         step = {model::BrushMotion::Drag, d.x() * m_unitsPerPixel, -d.y() * m_unitsPerPixel};
-    document->applyBrushStroke(m_stroke, step);
+    document->keys().applyBrushStroke(m_stroke, step);
     // The circle follows the cursor with the stroke's radius.
     showAt(event.position, circlePixels());
 }
@@ -91,7 +91,7 @@ void BrushTool::move(const ToolEvent& event)
 void BrushTool::finish()
 {
     if (model::Document* document = m_viewport->document())
-        document->endBrushStroke(m_stroke);
+        document->keys().endBrushStroke(m_stroke);
     m_stroke = {};
 }
 

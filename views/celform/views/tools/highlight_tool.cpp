@@ -101,14 +101,14 @@ void HighlightTool::move(const ToolEvent& event)
     const int frame = document->currentFrame();
     try {
         if (rotate) {
-            document->nudgeHighlight(target, frame, T::Rotation, d.x() * 0.5);
+            document->highlights().nudgeHighlight(target, frame, T::Rotation, d.x() * 0.5, 0.0, gesture());
         } else if (scale) {
-            document->nudgeHighlight(target, frame, T::DirectionalScaling, d.x() * 0.005);
+            document->highlights().nudgeHighlight(target, frame, T::DirectionalScaling, d.x() * 0.005, 0.0, gesture());
         } else if (m_grabOffset) {
             // The grabbed point follows the cursor; off the model (or the patch) it stays put.
             if (const auto centring = centringTranslation(event.position)) {
                 const Eigen::Vector2d wanted = *centring + *m_grabOffset;
-                document->setHighlightTranslation(target, frame, wanted.x(), wanted.y());
+                document->highlights().setHighlightTranslation(target, frame, wanted.x(), wanted.y(), gesture());
             }
         }
     } catch (const model::EditRefused& e) {

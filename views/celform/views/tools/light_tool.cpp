@@ -59,7 +59,7 @@ void LightTool::move(const ToolEvent& event)
     if (!unit.allFinite())
         return;
     light.vector = light.type == model::LightType::Point ? Eigen::Vector3d(centre + radius * unit) : unit;
-    document->setLight(light);
+    document->look().setLight(light, gesture());
 }
 
 } // namespace celform::views

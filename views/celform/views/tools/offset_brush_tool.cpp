@@ -80,13 +80,13 @@ bool OffsetBrushTool::press(const ToolEvent& event)
     else if (event.modifiers & Qt::ControlModifier)
         brush.mode = model::OffsetPaintMode::Subtract;
     try {
-        m_stroke = document->beginOffsetStroke(target(), brush, m_viewport->displayedShape());
+        m_stroke = document->shading().beginOffsetStroke(target(), brush, m_viewport->displayedShape());
     } catch (const model::EditRefused& e) {
         emit message(e.message());
         return true;
     }
     showAt(event.position, brush.radius / std::max(unitsPerPixel, 1e-12));
-    document->applyOffsetStroke(m_stroke, hit->second);
+    document->shading().applyOffsetStroke(m_stroke, hit->second);
     return true;
 }
 
@@ -96,7 +96,7 @@ void OffsetBrushTool::dab(const QPointF& position)
     if (!document || !m_stroke.active())
         return;
     if (const auto hit = m_viewport->pickSurface(position))
-        document->applyOffsetStroke(m_stroke, hit->second);
+        document->shading().applyOffsetStroke(m_stroke, hit->second);
     showAt(position, circlePixels());
 }
 
@@ -108,7 +108,7 @@ void OffsetBrushTool::move(const ToolEvent& event)
 void OffsetBrushTool::finish()
 {
     if (model::Document* document = m_viewport->document())
-        document->endOffsetStroke(m_stroke);
+        document->shading().endOffsetStroke(m_stroke);
     m_stroke = {};
 }
 

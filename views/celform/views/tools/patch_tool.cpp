@@ -69,7 +69,7 @@ void PatchTool::paint(const ToolEvent& event)
     if (dab.empty())
         return;
     try {
-        document->paintFaceSet(target, dab, event.modifiers & Qt::ControlModifier);
+        document->faceSets().paintFaceSet(target, dab, event.modifiers & Qt::ControlModifier, gesture());
     } catch (const model::EditRefused& e) {
         emit message(e.message());
     }

@@ -17,10 +17,7 @@ bool ViewportTool::openGesture()
 
 void ViewportTool::closeGesture()
 {
-    model::Document* document = m_viewport->document();
-    if (document && m_gesture != 0 && document->currentGesture() == m_gesture)
-        document->endGesture();
-    m_gesture = 0;
+    m_gesture.end();
 }
 
 } // namespace celform::views

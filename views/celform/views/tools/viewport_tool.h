@@ -7,6 +7,8 @@
 // emits the viewport's.
 #pragma once
 
+#include "celform/model/document/gesture.h"
+
 #include <QCursor>
 #include <QObject>
 #include <QPointF>
@@ -69,14 +71,16 @@ protected:
     /// Opens a document gesture for the drag: until closeGesture(), the tool's edits of one
     /// property merge into one undo step. Returns false without a document.
     bool openGesture();
-    /// Ends the tool's gesture, if it is still the document's open one.
+    /// Ends the tool's gesture.
     void closeGesture();
-    [[nodiscard]] bool inGesture() const { return m_gesture != 0; }
+    [[nodiscard]] bool inGesture() const { return m_gesture.isOpen(); }
+    /// The drag's gesture, for the edits that merge (none outside a drag).
+    [[nodiscard]] model::GestureId gesture() const { return m_gesture.id(); }
 
     Viewport* m_viewport;
 
 private:
-    int m_gesture = 0;
+    model::Gesture m_gesture;
 };
 
 } // namespace celform::views

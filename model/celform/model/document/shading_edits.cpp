@@ -1,10 +1,10 @@
 // Shading offsets (paper 3, section 4.3, eq. 4.3): setting, clearing, smoothing, painting and the
-// automatic per-segment offsets of a layer (the base, or a key's at a frame), and the undo command
-// that stores their changes sparsely.
-#include "celform/model/document/document.h"
+// automatic per-segment offsets of a layer (the base, or a key's at a frame).
+#include "celform/model/document/shading_edits.h"
 
 #include "celform/algorithms/sorted_merge.h"
 #include "celform/model/document/document_commands.h"
+#include "celform/model/document/shading_offsets_command.h"
 #include "celform/model/data/io_error.h"
 
 #include <QCoreApplication>
@@ -15,31 +15,13 @@
 namespace celform::model {
 namespace {
 
-/// The layer a target names, or null when it holds nothing (the base's empty vector, a key
-/// without values at the frame, a key that is gone).
-std::vector<float>* layerOf(ProjectData& data, const ShadingTarget& target)
-{
-    if (target.isBase())
-        return data.shadingOffsets.empty() ? nullptr : &data.shadingOffsets;
-    KeyViewpoint* key = data.key(target.key);
-    if (!key)
-        return nullptr;
-    const auto it = key->shadingOffsetsByFrame.find(target.frame);
-    return it == key->shadingOffsetsByFrame.end() ? nullptr : &it->second;
-}
-
-const std::vector<float>* layerOf(const ProjectData& data, const ShadingTarget& target)
-{
-    return layerOf(const_cast<ProjectData&>(data), target);
-}
-
 /// The change from a layer's current state to values (#V): only the vertices that differ when
 /// the layer exists, every vertex when it does not (the command then makes it whole).
 ShadingOffsetsCommand::Change changeTo(
     const ProjectData& data, const ShadingTarget& target, const std::vector<float>& values)
 {
     ShadingOffsetsCommand::Change change;
-    const std::vector<float>* old = layerOf(data, target);
+    const std::vector<float>* old = shadingLayer(data, target);
     change.existedBefore = old != nullptr;
     change.existsAfter = true;
     for (std::size_t v = 0; v < values.size(); ++v) {
@@ -64,111 +46,42 @@ QString targetName(const ProjectData& data, const ShadingTarget& target)
 
 } // namespace
 
-// --- ShadingOffsetsCommand ------------------------------------------------------------------------
-
-ShadingOffsetsCommand::ShadingOffsetsCommand(
-    Document* doc, const QString& text, ShadingTarget target, Change change, int gesture, QUndoCommand* parent)
-    : DocumentCommand(doc, text, parent)
-    , m_target(target)
-    , m_change(std::move(change))
-    , m_gesture(gesture)
-{ }
-
-void ShadingOffsetsCommand::apply(bool forward)
-{
-    ProjectData& data = m_doc->mutableData();
-    const std::size_t n = data.baseMesh ? std::size_t(data.baseMesh->vertexCount()) : 0;
-    KeyViewpoint* key = m_target.isBase() ? nullptr : data.key(m_target.key);
-    if (!m_target.isBase() && !key)
-        return; // the key is gone
-    const bool exists = forward ? m_change.existsAfter : m_change.existedBefore;
-    const bool existed = layerOf(data, m_target) != nullptr;
-    if (!exists) {
-        if (key)
-            key->shadingOffsetsByFrame.erase(m_target.frame);
-        else
-            data.shadingOffsets.clear();
-    } else {
-        std::vector<float>* layer = layerOf(data, m_target);
-        if (!layer) {
-            layer = key ? &key->shadingOffsetsByFrame[m_target.frame] : &data.shadingOffsets;
-            layer->assign(n, 0.f);
-        }
-        const std::vector<float>& values = forward ? m_change.after : m_change.before;
-        for (std::size_t k = 0; k < m_change.indices.size(); ++k)
-            if (m_change.indices[k] < layer->size())
-                (*layer)[m_change.indices[k]] = values[k];
-    }
-    ChangeSet change = ChangeSet::of(Part::ShadingOffsets, m_target.key);
-    if (!m_target.isBase())
-        change.frames = {m_target.frame};
-    change.structure = key && existed != exists; // a key's set of keyed frames changed
-    m_doc->noteChange(change);
-}
-
-bool ShadingOffsetsCommand::mergeWith(const QUndoCommand* other)
-{
-    const auto* o = dynamic_cast<const ShadingOffsetsCommand*>(other);
-    if (!o || o->m_gesture != m_gesture || o->m_target != m_target)
-        return false;
-    const Change& a = m_change;
-    const Change& b = o->m_change;
-    Change merged;
-    merged.existedBefore = a.existedBefore;
-    merged.existsAfter = b.existsAfter;
-    const std::size_t reserve = a.indices.size() + b.indices.size();
-    merged.indices.reserve(reserve);
-    merged.before.reserve(reserve);
-    merged.after.reserve(reserve);
-    auto add = [&merged](std::uint32_t v, float before, float after) {
-        merged.indices.push_back(v);
-        merged.before.push_back(before);
-        merged.after.push_back(after);
-    };
-    // Our "before" where we have one, their "after" where they do.
-    algo::mergeAscending(
-        a.indices, b.indices, [&](std::size_t i) { add(a.indices[i], a.before[i], a.after[i]); },
-        [&](std::size_t j) { add(b.indices[j], b.before[j], b.after[j]); },
-        [&](std::size_t i, std::size_t j) { add(a.indices[i], a.before[i], b.after[j]); });
-    m_change = std::move(merged);
-    return true;
-}
-
 // --- set, clear, smooth -----------------------------------------------------------------------------
 
-void Document::setShadingOffsets(const ShadingTarget& target, const std::vector<float>& values, const QString& undoText)
+void ShadingEdits::setShadingOffsets(
+    const ShadingTarget& target, const std::vector<float>& values, const QString& undoText)
 {
-    if (!m_data.baseMesh)
+    if (!data().baseMesh)
         throw EditRefused(tr("Shading offsets need a base model."));
-    if (!target.isBase() && !m_data.key(target.key))
+    if (!target.isBase() && !data().key(target.key))
         throw EditRefused(tr("There is no key to hold these shading offsets."));
-    const QString problem = shadingOffsetsProblem(values, m_data.baseMesh->vertexCount());
+    const QString problem = shadingOffsetsProblem(values, data().baseMesh->vertexCount());
     if (!problem.isEmpty())
         throw EditRefused(tr("Shading offsets refused: %1.").arg(problem));
-    ShadingOffsetsCommand::Change change = changeTo(m_data, target, values);
+    ShadingOffsetsCommand::Change change = changeTo(data(), target, values);
     if (change.indices.empty() && change.existedBefore)
         return; // nothing changes
-    push(new ShadingOffsetsCommand(this,
-        undoText.isEmpty() ? tr("Set Shading Offsets (%1)").arg(targetName(m_data, target)) : undoText, target,
-        std::move(change), 0));
+    push(new ShadingOffsetsCommand(m_doc,
+        undoText.isEmpty() ? tr("Set Shading Offsets (%1)").arg(targetName(data(), target)) : undoText, target,
+        std::move(change), {}));
 }
 
-void Document::clearShadingOffsets(const ShadingTarget& target, bool allFrames)
+void ShadingEdits::clearShadingOffsets(const ShadingTarget& target, bool allFrames)
 {
-    if (!target.isBase() && !m_data.key(target.key))
+    if (!target.isBase() && !data().key(target.key))
         throw EditRefused(tr("There is no key to clear shading offsets from."));
     std::vector<ShadingTarget> targets;
     if (!target.isBase() && allFrames) {
-        for (const auto& entry : m_data.key(target.key)->shadingOffsetsByFrame)
+        for (const auto& entry : data().key(target.key)->shadingOffsetsByFrame)
             targets.push_back({target.key, entry.first});
-    } else if (layerOf(m_data, target)) {
+    } else if (shadingLayer(data(), target)) {
         targets.push_back(target);
     }
     if (targets.empty())
         return;
-    auto* step = new CompositeCommand(this, tr("Clear Shading Offsets (%1)").arg(targetName(m_data, target)));
+    auto* step = new CompositeCommand(m_doc, tr("Clear Shading Offsets (%1)").arg(targetName(data(), target)));
     for (const ShadingTarget& t : targets) {
-        const std::vector<float>& old = *layerOf(m_data, t);
+        const std::vector<float>& old = *shadingLayer(data(), t);
         ShadingOffsetsCommand::Change change;
         change.existedBefore = true;
         change.existsAfter = false;
@@ -177,43 +90,43 @@ void Document::clearShadingOffsets(const ShadingTarget& target, bool allFrames)
             change.before.push_back(old[v]);
             change.after.push_back(0.f);
         }
-        new ShadingOffsetsCommand(this, {}, t, std::move(change), 0, step);
+        new ShadingOffsetsCommand(m_doc, {}, t, std::move(change), {}, step);
     }
     push(step);
 }
 
-void Document::smoothShadingOffsets(const ShadingTarget& target, int rounds)
+void ShadingEdits::smoothShadingOffsets(const ShadingTarget& target, int rounds)
 {
-    if (!m_data.baseMesh)
+    if (!data().baseMesh)
         throw EditRefused(tr("Shading offsets need a base model."));
-    if (!target.isBase() && !m_data.key(target.key))
+    if (!target.isBase() && !data().key(target.key))
         throw EditRefused(tr("There is no key whose shading offsets to smooth."));
     if (rounds < 1 || rounds > kMaxOffsetRounds)
         throw EditRefused(tr("Smoothing takes 1 to %1 rounds, not %2.").arg(kMaxOffsetRounds).arg(rounds));
-    std::vector<float> values = targetShadingOffsets(m_data, target);
-    const algo::TriMesh& mesh = *m_data.baseMesh;
+    std::vector<float> values = targetShadingOffsets(data(), target);
+    const algo::TriMesh& mesh = *data().baseMesh;
     const algo::VertexNeighbours neighbours = algo::buildVertexNeighbours(mesh.faces, std::int32_t(mesh.vertexCount()));
     std::vector<float> scratch;
     algo::smoothVertexValues(neighbours, rounds, nullptr, values, scratch);
-    ShadingOffsetsCommand::Change change = changeTo(m_data, target, values);
+    ShadingOffsetsCommand::Change change = changeTo(data(), target, values);
     if (change.indices.empty() && change.existedBefore)
         return;
     push(new ShadingOffsetsCommand(
-        this, tr("Smooth Shading Offsets (%1)").arg(targetName(m_data, target)), target, std::move(change), 0));
+        m_doc, tr("Smooth Shading Offsets (%1)").arg(targetName(data(), target)), target, std::move(change), {}));
 }
 
 // --- painting ------------------------------------------------------------------------------------
 
-OffsetStroke Document::beginOffsetStroke(
+OffsetStroke ShadingEdits::beginOffsetStroke(
     const ShadingTarget& target, const OffsetBrush& brush, const algo::Positions& shape)
 {
-    if (!m_data.baseMesh)
+    if (!data().baseMesh)
         throw EditRefused(tr("Shading offsets need a base model."));
-    if (!target.isBase() && !m_data.key(target.key))
+    if (!target.isBase() && !data().key(target.key))
         throw EditRefused(tr("Choose a key to paint shading offsets into first."));
     if (!(brush.radius > 0.0) || !std::isfinite(brush.radius) || !std::isfinite(brush.strength) || brush.strength < 0.0)
         throw EditRefused(tr("The brush needs a positive radius and a strength of zero or more."));
-    const algo::TriMesh& mesh = *m_data.baseMesh;
+    const algo::TriMesh& mesh = *data().baseMesh;
     if (shape.rows() != mesh.vertexCount())
         throw EditRefused(tr("The shape painted on does not have the base model's vertices."));
     OffsetStroke stroke;
@@ -223,18 +136,18 @@ OffsetStroke Document::beginOffsetStroke(
     stroke.grid = algo::VertexGrid(stroke.shape);
     if (brush.mode == OffsetPaintMode::Smooth)
         stroke.neighbours = algo::buildVertexNeighbours(mesh.faces, std::int32_t(mesh.vertexCount()));
-    stroke.values = targetShadingOffsets(m_data, target);
-    stroke.undoText = tr("Paint Shading Offsets (%1)").arg(targetName(m_data, target));
-    stroke.gesture = beginGesture();
+    stroke.values = targetShadingOffsets(data(), target);
+    stroke.undoText = tr("Paint Shading Offsets (%1)").arg(targetName(data(), target));
+    stroke.gesture = m_doc->beginGesture();
     return stroke;
 }
 
-std::size_t Document::applyOffsetStroke(OffsetStroke& stroke, const Eigen::Vector3d& centre)
+std::size_t ShadingEdits::applyOffsetStroke(OffsetStroke& stroke, const Eigen::Vector3d& centre)
 {
-    if (!stroke.active() || !m_data.baseMesh || !centre.allFinite()
-        || stroke.values.size() != std::size_t(m_data.baseMesh->vertexCount()))
+    if (!stroke.active() || !data().baseMesh || !centre.allFinite()
+        || stroke.values.size() != std::size_t(data().baseMesh->vertexCount()))
         return 0;
-    if (!stroke.target.isBase() && !m_data.key(stroke.target.key))
+    if (!stroke.target.isBase() && !data().key(stroke.target.key))
         return 0;
     const OffsetBrush& brush = stroke.brush;
     stroke.grid.radiusQuery(centre, brush.radius, stroke.indices, stroke.distances);
@@ -301,7 +214,7 @@ std::size_t Document::applyOffsetStroke(OffsetStroke& stroke, const Eigen::Vecto
     // The command: the dab's vertices, or the whole layer when the dab makes it.
     ShadingOffsetsCommand::Change change;
     change.existsAfter = true;
-    change.existedBefore = layerOf(m_data, stroke.target) != nullptr;
+    change.existedBefore = shadingLayer(data(), stroke.target) != nullptr;
     if (!change.existedBefore) {
         change.indices.resize(stroke.values.size());
         change.before.assign(stroke.values.size(), 0.f);
@@ -319,25 +232,20 @@ std::size_t Document::applyOffsetStroke(OffsetStroke& stroke, const Eigen::Vecto
         }
         change.after = stroke.after;
     }
-    const int gesture = m_gesture;
-    m_gesture = stroke.gesture; // the dabs merge whatever else opened a gesture since
-    push(new ShadingOffsetsCommand(this, stroke.undoText, stroke.target, std::move(change), stroke.gesture));
-    m_gesture = gesture;
+    push(new ShadingOffsetsCommand(m_doc, stroke.undoText, stroke.target, std::move(change), stroke.gesture));
     return stroke.merged.size();
 }
 
-void Document::endOffsetStroke(OffsetStroke& stroke)
+void ShadingEdits::endOffsetStroke(OffsetStroke& stroke)
 {
-    if (stroke.gesture != 0 && m_gesture == stroke.gesture)
-        endGesture();
-    stroke.gesture = 0;
+    stroke.gesture.end();
 }
 
 // --- automatic per-segment offsets: solved by model::solveAutoOffsets (analysis/auto_offsets.h) ---
 
-void Document::applyAutoOffsets(const ShadingTarget& target, const std::vector<float>& values)
+void ShadingEdits::applyAutoOffsets(const ShadingTarget& target, const std::vector<float>& values)
 {
-    setShadingOffsets(target, values, tr("Automatic Shading Offsets (%1)").arg(targetName(m_data, target)));
+    setShadingOffsets(target, values, tr("Automatic Shading Offsets (%1)").arg(targetName(data(), target)));
 }
 
 } // namespace celform::model

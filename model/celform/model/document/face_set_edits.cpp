@@ -1,0 +1,141 @@
+// The named face sets (highlight patches): made, painted, renamed and removed by name. Layers on a
+// set follow its renames and removal in the same undo step.
+#include "celform/model/document/face_set_edits.h"
+
+#include "celform/model/data/io_error.h"
+#include "celform/model/document/document_commands.h"
+#include "celform/model/document/face_set_command.h"
+
+#include <algorithm>
+#include <iterator>
+
+namespace celform::model {
+namespace {
+
+ChangeSet highlightChange(ObjectId id)
+{
+    return ChangeSet::of(Part::Highlights, id);
+}
+
+} // namespace
+
+void FaceSetEdits::setFaceSet(
+    const QString& name, std::vector<std::int32_t> faces, const QString& undoText, GestureId gesture)
+{
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    refuseFaces(name, faces);
+    const std::string wanted = name.toStdString();
+    FaceSetCommand::Change change = FaceSetCommand::changeTo(data(), wanted, faces);
+    if (!change.created && change.added.empty() && change.removed.empty())
+        return;
+    push(new FaceSetCommand(m_doc, undoText, wanted, std::move(change), gesture));
+}
+
+void FaceSetEdits::paintFaceSet(
+    const QString& name, const std::vector<std::int32_t>& faces, bool subtract, GestureId gesture)
+{
+    const algo::FaceSet* set = data().faceSet(name);
+    std::vector<std::int32_t> dab = faces;
+    std::sort(dab.begin(), dab.end());
+    dab.erase(std::unique(dab.begin(), dab.end()), dab.end());
+    // Only what the dab changes: the faces it adds that the set lacks, or takes that it holds.
+    const std::vector<std::int32_t> none;
+    const std::vector<std::int32_t>& before = set ? set->faces : none;
+    FaceSetCommand::Change change;
+    change.created = set == nullptr;
+    if (subtract)
+        std::set_intersection(dab.begin(), dab.end(), before.begin(), before.end(), std::back_inserter(change.removed));
+    else
+        std::set_difference(dab.begin(), dab.end(), before.begin(), before.end(), std::back_inserter(change.added));
+    if (set && change.added.empty() && change.removed.empty())
+        return;
+    refuseFaces(name, change.added);
+    push(new FaceSetCommand(m_doc, tr("Paint Patch “%1”").arg(name), name.toStdString(), std::move(change), gesture));
+}
+
+void FaceSetEdits::refuseFaces(const QString& name, const std::vector<std::int32_t>& faces) const
+{
+    if (!data().baseMesh)
+        throw EditRefused(tr("There is no base model to make a patch on."));
+    if (name.trimmed().isEmpty())
+        throw EditRefused(tr("A patch needs a name."));
+    if (!faces.empty() && (faces.front() < 0 || faces.back() >= data().baseMesh->faceCount()))
+        throw EditRefused(tr("Patch “%1” names a face the base model does not have.").arg(name));
+}
+
+void FaceSetEdits::removeFaceSet(const QString& name)
+{
+    const std::string wanted = name.toStdString();
+    std::vector<algo::FaceSet> sets = data().faceSets;
+    const auto it = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
+    if (it == sets.end())
+        return;
+    sets.erase(it);
+    auto* cmd = new CompositeCommand(m_doc, tr("Delete Patch “%1”").arg(name));
+    // Layers go back to all faces before the set goes, so undo brings the set back first.
+    for (const HighlightTrack& track : data().look.highlights)
+        if (track.patch == name)
+            new PropertyCommand<QString>(m_doc, {}, {Property::HighlightPatch, track.id},
+                fieldOf(track.id, &HighlightTrack::patch), QString(), highlightChange(track.id), {}, cmd);
+    ChangeSet change = ChangeSet::of(Part::FaceSets);
+    change.structure = true;
+    new PropertyCommand<std::vector<algo::FaceSet>>(
+        m_doc, {}, {Property::FaceSets}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), change, {}, cmd);
+    push(cmd);
+}
+
+void FaceSetEdits::renameFaceSet(const QString& name, const QString& newName)
+{
+    const QString trimmed = newName.trimmed();
+    if (trimmed == name)
+        return;
+    if (trimmed.isEmpty())
+        throw EditRefused(tr("A patch needs a name."));
+    if (data().faceSet(trimmed))
+        throw EditRefused(tr("There is already a patch named “%1”.").arg(trimmed));
+    std::vector<algo::FaceSet> sets = data().faceSets;
+    const std::string wanted = name.toStdString();
+    const auto it = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == wanted; });
+    if (it == sets.end())
+        return;
+    it->name = trimmed.toStdString();
+    auto* cmd = new CompositeCommand(m_doc, tr("Rename Patch “%1”").arg(name));
+    ChangeSet change = ChangeSet::of(Part::FaceSets);
+    change.structure = true;
+    new PropertyCommand<std::vector<algo::FaceSet>>(
+        m_doc, {}, {Property::FaceSets}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), change, {}, cmd);
+    for (const HighlightTrack& track : data().look.highlights)
+        if (track.patch == name)
+            new PropertyCommand<QString>(m_doc, {}, {Property::HighlightPatch, track.id},
+                fieldOf(track.id, &HighlightTrack::patch), trimmed, highlightChange(track.id), {}, cmd);
+    push(cmd);
+}
+
+QString FaceSetEdits::newFaceSetForLayer(ObjectId layer, const QString& wanted)
+{
+    const HighlightTrack* track = data().highlight(layer);
+    if (!track)
+        throw EditRefused(tr("The highlight layer no longer exists."));
+    if (!data().baseMesh)
+        throw EditRefused(tr("There is no base model to make a patch on."));
+    const QString name = uniqueFaceSetName(wanted);
+    std::vector<algo::FaceSet> sets = data().faceSets;
+    sets.push_back({name.toStdString(), {}});
+    auto* cmd = new CompositeCommand(m_doc, tr("New Patch “%1”").arg(name));
+    ChangeSet change = ChangeSet::of(Part::FaceSets);
+    change.structure = true;
+    new PropertyCommand<std::vector<algo::FaceSet>>(
+        m_doc, {}, {Property::FaceSets}, [](ProjectData& d) { return &d.faceSets; }, std::move(sets), change, {}, cmd);
+    new PropertyCommand<QString>(m_doc, {}, {Property::HighlightPatch, layer}, fieldOf(layer, &HighlightTrack::patch),
+        name, highlightChange(track->id), {}, cmd);
+    push(cmd);
+    return name;
+}
+
+QString FaceSetEdits::uniqueFaceSetName(const QString& wanted) const
+{
+    return uniqueName(wanted, [this](const QString& n) { return data().faceSet(n) != nullptr; });
+}
+
+} // namespace celform::model

@@ -1,0 +1,45 @@
+// The named face sets, the highlight patches (paper 2, "Highlight operations"), as
+// doc.faceSets(): made, painted, renamed and removed by name.
+#pragma once
+
+#include "celform/model/data/object_id.h"
+#include "celform/model/document/document_facade.h"
+#include "celform/model/document/gesture.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <vector>
+
+namespace celform::model {
+
+class FaceSetEdits : public DocumentFacade {
+public:
+    /// Creates or replaces a face set; faces are sorted and repeats dropped. Steps given one
+    /// gesture are one undo step. Throws EditRefused without a base model, for an empty name or
+    /// a face out of range.
+    void setFaceSet(
+        const QString& name, std::vector<std::int32_t> faces, const QString& undoText, GestureId gesture = {});
+    /// Adds faces to (subtract: takes them from) a face set, creating it when missing; the dabs
+    /// of one paint drag (given its gesture) are one undo step, which stores only the faces each
+    /// dab added or took.
+    void paintFaceSet(
+        const QString& name, const std::vector<std::int32_t>& faces, bool subtract, GestureId gesture = {});
+    /// Removes a face set; highlight layers on it go back to all faces in the same undo step.
+    void removeFaceSet(const QString& name);
+    /// Renames a face set and the highlight layers' references to it (one undo step). Throws
+    /// EditRefused for an empty name or one already taken.
+    void renameFaceSet(const QString& name, const QString& newName);
+    /// A new empty face set for a layer, and the layer moved onto it (one undo step).
+    QString newFaceSetForLayer(ObjectId layer, const QString& wanted);
+    [[nodiscard]] QString uniqueFaceSetName(const QString& wanted) const;
+
+private:
+    friend class Document;
+    using DocumentFacade::DocumentFacade;
+    /// Throws EditRefused without a base model, for an empty name or a face out of range (faces
+    /// ascending).
+    void refuseFaces(const QString& name, const std::vector<std::int32_t>& faces) const;
+};
+
+} // namespace celform::model

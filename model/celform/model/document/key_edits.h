@@ -1,0 +1,75 @@
+// The key viewpoints' edits (doc.keys()): adding, re-aligning and linking keys, their
+// deformations per frame (paper 1, sections 3.1.2 and 4.2) and the falloff brush that edits them.
+#pragma once
+
+#include "celform/model/data/camera.h"
+#include "celform/model/data/project_data.h"
+#include "celform/model/document/brush_stroke.h"
+#include "celform/model/document/document_facade.h"
+#include "celform/model/document/gesture.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <cstdint>
+#include <vector>
+
+namespace celform::model {
+
+class KeyEdits : public DocumentFacade {
+public:
+    /// Adds a key as given, but for links to drawings the project does not hold. Throws
+    /// EditRefused when its direction is within algo::ViewSphere::kDuplicateAngleDegrees of
+    /// another key's.
+    ObjectId addKey(KeyViewpoint key);
+    /// A key seen from camera: its direction runs from the base centroid towards the eye
+    /// (DESIGN.md); it starts as a copy of the base model unless a deformation is given (at
+    /// frame). Throws EditRefused (no base model, eye at the centroid, duplicate direction).
+    ObjectId createKey(const QString& name, const Camera& camera, std::vector<ObjectId> drawingIds = {},
+        SparseOffsets deformation = {}, int frame = 0);
+    /// "Create key from this drawing": the drawing's aligned camera, linked to the drawing.
+    ObjectId createKeyFromDrawing(ObjectId drawingId);
+    /// Re-aligns a key: new camera and direction. Throws EditRefused for a duplicate direction.
+    void setKeyCamera(ObjectId id, const Camera& camera);
+    /// Links a key to one drawing (0 unlinks every drawing).
+    void linkKeyDrawing(ObjectId keyId, ObjectId drawingId);
+    void removeKey(ObjectId id);
+    void renameKey(ObjectId id, const QString& name);
+    void setKeyEnabled(ObjectId id, bool enabled);
+    /// Makes a name unique among keys by appending " 2", " 3", ...
+    [[nodiscard]] QString uniqueKeyName(const QString& wanted) const;
+
+    // --- deformations --------------------------------------------------------------------------
+    /// Replaces a key's deformation at a frame (one undo step).
+    void setKeyDeformation(ObjectId id, int frame, SparseOffsets deformation, const QString& undoText);
+    /// Reads a mesh with the base model's vertex count and order and makes its difference from
+    /// the base the key's deformation at frame. Throws IoError (unreadable, vertex count
+    /// mismatch). Returns import warnings.
+    QStringList importKeyDeformation(ObjectId id, const QString& meshPath, int frame = 0);
+    /// Adds displacements (#indices by 3, indices ascending) to a key's deformation at a frame.
+    /// At a frame without a stored deformation the stored one starts from the interpolated one
+    /// there (what the artist sees), so the edit adds to it. Steps given one gesture on the same
+    /// key and frame are one undo step.
+    void displaceKeyVertices(ObjectId id, int frame, const std::vector<std::uint32_t>& indices,
+        const algo::Positions& displacements, const QString& undoText, GestureId gesture = {});
+
+    // --- the falloff brush (paper 1, section 3.1.2): the editor's tool and `celform brush` -----
+    /// Starts a stroke on key `id` at `frame`: selects the vertices of the key's shape there
+    /// within radius of vertex picked, and with mirrorX their mirror images across x = 0; the
+    /// stroke holds its own gesture. The camera gives the image plane; the profile the falloff
+    /// curve and strength. Throws EditRefused (no such key or vertex, no base model).
+    [[nodiscard]] BrushStroke beginBrushStroke(ObjectId id, int frame, std::uint32_t picked, double radius,
+        const Camera& camera, bool mirrorX = false, const algo::BrushProfile& profile = {});
+    /// One step of the stroke: displaces the selection (see BrushStep) and stores it; all steps of
+    /// a stroke are one undo step.
+    void applyBrushStroke(BrushStroke& stroke, const BrushStep& step);
+    /// Ends the stroke's gesture.
+    void endBrushStroke(BrushStroke& stroke);
+
+private:
+    friend class Document;
+    using DocumentFacade::DocumentFacade;
+    void refuseDuplicateDirection(const Eigen::Vector3d& direction, ObjectId ignoredKey) const;
+};
+
+} // namespace celform::model
