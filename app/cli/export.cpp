@@ -3,20 +3,17 @@
 // point cache, or one OBJ mesh per frame. The model's exporters do the work (export.h).
 #include "cli/command.h"
 #include "cli/options.h"
+#include "cli/stderr_progress.h"
 
 #include "celform/model/export/export.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/project_file.h"
 
-#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QJsonArray>
 
 namespace celform::app {
 namespace {
-
-/// How long an export runs before it prints progress on stderr, and the time between lines.
-constexpr qint64 kProgressAfterMs = 1000;
 
 int runExport(const Invocation& in)
 {
@@ -52,20 +49,9 @@ int runExport(const Invocation& in)
     job.lastFrame = frames ? frames->last : data.time.lastFrame;
 
     // Progress on stderr once an export has run a second, at most once a second.
-    QElapsedTimer clock;
-    clock.start();
-    qint64 lastPrinted = 0;
-    model::ExportCallbacks callbacks;
-    callbacks.progress = [&](int done, int total) {
-        const qint64 now = clock.elapsed();
-        const bool due = now >= kProgressAfterMs && now - lastPrinted >= kProgressAfterMs;
-        const bool last = done == total && lastPrinted > 0; // a long export says it finished
-        if (!due && !last)
-            return;
-        lastPrinted = now;
-        printErr(Cli::tr("export: frame %1 of %2").arg(done).arg(total));
-    };
-    const model::ExportResult result = model::exportProject(data, path, job, callbacks);
+    StderrProgress progress(
+        [](std::int64_t done, std::int64_t total) { return Cli::tr("export: frame %1 of %2").arg(done).arg(total); });
+    const model::ExportResult result = model::exportProject(data, path, job, &progress);
     for (const QString& w : result.warnings)
         printErr(Cli::tr("warning: %1: %2").arg(path, w));
     if (in.isSet("json")) {

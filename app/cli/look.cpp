@@ -163,21 +163,26 @@ int runRender(const Invocation& in)
                      .arg(size)
                      .arg(double(available) / 1e9, 0, 'f', 2));
 
-    // One line per frame on standard error as it is done; the callbacks come one at a time.
+    // One line per frame on standard error as it is done; the listener is told one at a time.
     const int count = job.frameCount();
-    QJsonArray written, skipped;
-    model::RenderCallbacks callbacks;
-    callbacks.written = [&](int frame, const QString& file, int done) {
-        printErr(Cli::tr("frame %1 (%2/%3) -> %4").arg(frame).arg(done).arg(count).arg(file));
-        written.append(QJsonObject{{"frame", frame}, {"file", file}});
-    };
-    callbacks.skipped = [&](int frame, const QString& file, int done) {
-        printErr(Cli::tr("frame %1 (%2/%3) skipped: %4 exists").arg(frame).arg(done).arg(count).arg(file));
-        skipped.append(QJsonObject{{"frame", frame}, {"file", file}});
-    };
+    struct FrameLines : model::RenderFrameListener {
+        int count = 0;
+        int done = 0;
+        QJsonArray written, skipped;
+        void frameDone(int frame, const QString& file, bool skip) override
+        {
+            ++done;
+            if (skip)
+                printErr(Cli::tr("frame %1 (%2/%3) skipped: %4 exists").arg(frame).arg(done).arg(count).arg(file));
+            else
+                printErr(Cli::tr("frame %1 (%2/%3) -> %4").arg(frame).arg(done).arg(count).arg(file));
+            (skip ? skipped : written).append(QJsonObject{{"frame", frame}, {"file", file}});
+        }
+    } lines;
+    lines.count = count;
     // A render reads the project and writes pictures; the overrides apply to this render only.
     try {
-        model::renderFrames(model::loadProject(path), path, job, callbacks);
+        model::renderFrames(model::loadProject(path), path, job, nullptr, &lines);
     } catch (const model::RenderFrameError& e) {
         printErr(QStringLiteral("celform: ") + Cli::tr("frame %1: %2").arg(e.frame()).arg(e.message()));
         return kExitBadInput;
@@ -195,7 +200,7 @@ int runRender(const Invocation& in)
         };
         printJson({{"first", job.firstFrame}, {"last", job.lastFrame}, {"step", job.step}, {"count", count},
             {"size", QJsonArray{job.size.width(), job.size.height()}}, {"threads", job.threads},
-            {"written", byFrame(written)}, {"skipped", byFrame(skipped)}});
+            {"written", byFrame(lines.written)}, {"skipped", byFrame(lines.skipped)}});
     }
     return kExitOk;
 }

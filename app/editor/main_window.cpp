@@ -7,6 +7,7 @@
 #include "editor/dialogs/editor_dialogs.h"
 #include "editor/first_steps_hint.h"
 #include "editor/getting_started.h"
+#include "editor/jobs/job_runner.h"
 #include "editor/settings/preferences.h"
 #include "editor/recovery.h"
 #include "editor/review_window.h"
@@ -36,14 +37,12 @@
 #include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFutureWatcher>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPainter>
-#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
@@ -54,7 +53,6 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoView>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <optional>
 
@@ -103,36 +101,29 @@ template <typename T> struct Outcome {
     QString error;
 };
 
-/// Runs work on a pool thread while the window stays responsive; a progress dialog with Cancel
-/// appears when it takes longer than half a second. Cancel drops the result (nothing changes).
+/// Runs work (reading a file) as a job of the JobRunner and waits for it; the window keeps
+/// painting, and a progress dialog appears when it takes longer than half a second.
 template <typename T, typename Work> Outcome<T> runWithProgress(QWidget* parent, const QString& label, Work work)
 {
-    QFutureWatcher<Outcome<T>> watcher;
-    QEventLoop loop;
-    QObject::connect(&watcher, &QFutureWatcher<Outcome<T>>::finished, &loop, &QEventLoop::quit);
-    watcher.setFuture(QtConcurrent::run([work]() -> Outcome<T> {
-        try {
-            return {work(), {}};
-        } catch (const model::IoError& e) {
-            return {std::nullopt, e.message()};
-        } catch (const std::bad_alloc&) {
-            return {std::nullopt, QCoreApplication::translate("celform::app::MainWindow", "Not enough memory.")};
-        }
-    }));
-    QProgressDialog progress(label, QCoreApplication::translate("celform::app::MainWindow", "Cancel"), 0, 0, parent);
-    progress.setWindowModality(Qt::WindowModal);
-    progress.setMinimumDuration(500);
-    bool canceled = false;
-    QObject::connect(&progress, &QProgressDialog::canceled, &loop, [&] {
-        canceled = true;
-        loop.quit();
-    });
-    if (!watcher.isFinished())
-        loop.exec(QEventLoop::ExcludeUserInputEvents);
-    progress.reset();
-    if (canceled)
-        return {std::nullopt, QString()};
-    return watcher.result();
+    Outcome<T> outcome;
+    JobSpec spec;
+    spec.progressName = QStringLiteral("fileProgress");
+    spec.label = label;
+    spec.delayMs = 500;
+    spec.outOfMemory = QCoreApplication::translate("celform::app::MainWindow", "Not enough memory.");
+    spec.showError = [&outcome](const QString& error) { outcome.error = error; };
+    JobRunner runner(
+        std::move(spec),
+        [&outcome, work](algo::Progress&) -> JobRunner::Finish {
+            auto value = std::make_shared<T>(work());
+            return [&outcome, value] {
+                outcome.value = std::move(*value);
+                return true;
+            };
+        },
+        parent);
+    runner.exec();
+    return outcome;
 }
 
 QString suffixOf(const QString& path)

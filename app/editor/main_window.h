@@ -26,7 +26,7 @@ class DepthPanel;
 namespace celform::app {
 
 class RecoveryManager;
-class LightOptimisationRunner;
+class JobRunner;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -109,7 +109,7 @@ private:
     QPlainTextEdit* m_log = nullptr;
     QStringList m_dropQueue;
     bool m_processingDrops = false;
-    QPointer<LightOptimisationRunner> m_lightRunner;
+    QPointer<JobRunner> m_lightRunner;
 };
 
 } // namespace celform::app

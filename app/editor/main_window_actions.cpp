@@ -4,7 +4,8 @@
 
 #include "editor/dialogs/editor_dialogs.h"
 #include "editor/getting_started.h"
-#include "editor/jobs/light_optimisation_runner.h"
+#include "editor/jobs/job_runner.h"
+#include "editor/jobs/light_optimisation_job.h"
 #include "editor/actions/shading_offset_actions.h"
 #include "editor/settings/preferences.h"
 #include "editor/review_window.h"
@@ -384,11 +385,9 @@ void MainWindow::optimiseLightForStereo()
     job.height = size.height();
     job.request.analysis = m_depth->runner()->settings();
     job.request.optimiser = m_depth->lightSettings();
-    auto* runner = new LightOptimisationRunner(std::move(job), this);
-    m_lightRunner = runner;
-    connect(runner, &LightOptimisationRunner::finished, this,
-        [this, runner](const std::shared_ptr<const model::LightOptimisationReport>& report) {
-            runner->deleteLater();
+    m_lightRunner = startLightOptimisation(
+        std::move(job), this,
+        [this](const std::shared_ptr<const model::LightOptimisationReport>& report) {
             if (report->cancelled()) {
                 statusBar()->showMessage(tr("Light optimisation cancelled: the light is unchanged."), 4000);
                 return;
@@ -423,12 +422,8 @@ void MainWindow::optimiseLightForStereo()
                 log(LogLevel::Warning,
                     tr("The segments' ratios improved but the depth error rose: try another start light (move it, "
                        "then optimise again) or a more lenient window in the Depth tab."));
-        });
-    connect(runner, &LightOptimisationRunner::failed, this, [this, runner](const QString& message) {
-        runner->deleteLater();
-        showError(message);
-    });
-    runner->start();
+        },
+        [this](const QString& message) { showError(message); });
 }
 
 } // namespace celform::app

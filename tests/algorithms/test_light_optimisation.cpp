@@ -253,12 +253,19 @@ private slots:
         ShadingSamples samples;
         scene.gather(samples);
         LightOptimisationWorkspace work;
-        int calls = 0;
-        const LightOptimisationResult r
-            = optimiseLight(samples, {false, {0.0, 0.0, 1.0}}, {}, work, [&](int done, int total) {
-                  ++calls;
-                  return done < 3 && total == 64;
-              });
+        // Asks to stop once three of the 64 iterations are done.
+        struct StopAtThree : Progress {
+            int calls = 0;
+            bool stop = false;
+            void progress(std::int64_t done, std::int64_t total, const std::string&) override
+            {
+                ++calls;
+                stop = !(done < 3 && total == 64);
+            }
+            bool isCancelRequested() const override { return stop; }
+        } progress;
+        const LightOptimisationResult r = optimiseLight(samples, {false, {0.0, 0.0, 1.0}}, {}, work, &progress);
+        const int calls = progress.calls;
         QVERIFY(r.cancelled);
         QCOMPARE(calls, 3);
         QCOMPARE(r.after.vector, Eigen::Vector3d(0, 0, 1));

@@ -11,7 +11,7 @@
 #include "editor/dialogs/preferences_dialog.h"
 #include "editor/recovery.h"
 #include "editor/dialogs/render_dialog.h"
-#include "editor/jobs/render_runner.h"
+#include "editor/jobs/job_runner.h"
 #include "editor/review_window.h"
 #include "editor/settings/shortcuts.h"
 #include "editor/dialogs/shortcuts_dialog.h"
@@ -162,10 +162,10 @@ private slots:
         test::keepScreenshot(dialog, "render-dialog");
         okButton(dialog)->click();
 
-        auto* runner = window.findChild<app::RenderRunner*>();
+        auto* runner = window.findChild<app::JobRunner*>();
         QVERIFY(runner);
         QVERIFY(runner->progressDialog() && runner->progressDialog()->isVisible());
-        QSignalSpy finished(runner, &app::RenderRunner::finished);
+        QSignalSpy finished(runner, &app::JobRunner::finished);
         QVERIFY(finished.wait(120000));
         QCOMPARE(finished.at(0).at(0).toBool(), true);
 
@@ -199,9 +199,9 @@ private slots:
         auto* camera = child<QComboBox>(dialog, "renderCamera");
         camera->setCurrentIndex(camera->findData(QStringLiteral("default")));
         okButton(dialog)->click();
-        auto* runner = window.findChild<app::RenderRunner*>();
+        auto* runner = window.findChild<app::JobRunner*>();
         QVERIFY(runner);
-        QSignalSpy finished(runner, &app::RenderRunner::finished);
+        QSignalSpy finished(runner, &app::JobRunner::finished);
         QVERIFY(finished.wait(120000));
         QVERIFY(m_opened.urls.isEmpty());
 
@@ -233,7 +233,7 @@ private slots:
         test::keepScreenshot(dialog, "render-sequence-dialog");
         okButton(dialog)->click();
 
-        auto* runner = window.findChild<app::RenderRunner*>();
+        auto* runner = window.findChild<app::JobRunner*>();
         QVERIFY(runner);
         QProgressDialog* progress = runner->progressDialog();
         QVERIFY(progress);
@@ -242,15 +242,15 @@ private slots:
         test::keepScreenshot(progress, "render-progress");
         // The user presses Cancel once the first frame is written.
         int valueAtCancel = -1;
-        connect(runner, &app::RenderRunner::frameWritten, this, [&](int frame, const QString&) {
-            if (frame != 0)
+        connect(runner, &app::JobRunner::progressed, this, [&](qint64 done, qint64) {
+            if (done != 1) // frame 0 written
                 return;
             valueAtCancel = progress->value();
             auto* cancel = progress->findChild<QPushButton*>();
             QVERIFY(cancel);
             cancel->click();
         });
-        QSignalSpy finished(runner, &app::RenderRunner::finished);
+        QSignalSpy finished(runner, &app::JobRunner::finished);
         QVERIFY(finished.wait(120000));
         QCOMPARE(finished.at(0).at(0).toBool(), false);
         QCOMPARE(valueAtCancel, 1);
@@ -273,9 +273,9 @@ private slots:
         child<QSpinBox>(dialog, "renderFirstFrame")->setValue(0);
         child<QSpinBox>(dialog, "renderLastFrame")->setValue(2);
         okButton(dialog)->click();
-        auto* runner = window.findChild<app::RenderRunner*>();
+        auto* runner = window.findChild<app::JobRunner*>();
         QVERIFY(runner);
-        QSignalSpy failed(runner, &app::RenderRunner::failed);
+        QSignalSpy failed(runner, &app::JobRunner::failed);
         QVERIFY(failed.wait(120000));
         QVERIFY2(failed.at(0).at(0).toString().contains(QStringLiteral("bad_0001.png")),
             qPrintable(failed.at(0).at(0).toString()));

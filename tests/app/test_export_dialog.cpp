@@ -5,7 +5,7 @@
 #include "window_test_support.h"
 
 #include "editor/dialogs/export_dialog.h"
-#include "editor/jobs/export_runner.h"
+#include "editor/jobs/job_runner.h"
 #include "editor/main_window.h"
 #include "editor/settings/shortcuts.h"
 
@@ -103,10 +103,10 @@ private slots:
         test::keepScreenshot(dialog, "export-dialog");
         exportButton(dialog)->click();
 
-        auto* runner = window.findChild<app::ExportRunner*>();
+        auto* runner = window.findChild<app::JobRunner*>();
         QVERIFY(runner);
         QVERIFY(runner->progressDialog());
-        QSignalSpy finished(runner, &app::ExportRunner::finished);
+        QSignalSpy finished(runner, &app::JobRunner::finished);
         QVERIFY(finished.wait(120000));
         QCOMPARE(finished.at(0).at(0).toBool(), true);
 
@@ -139,11 +139,11 @@ private slots:
             = openExportDialog(window, model::ExportFormat::Glb, 0, 200000, dir.filePath(QStringLiteral("long.glb")));
         QVERIFY(dialog);
         exportButton(dialog)->click();
-        auto* runner = window.findChild<app::ExportRunner*>();
+        auto* runner = window.findChild<app::JobRunner*>();
         QVERIFY(runner);
         QProgressDialog* progress = runner->progressDialog();
         QVERIFY(progress);
-        QSignalSpy finished(runner, &app::ExportRunner::finished);
+        QSignalSpy finished(runner, &app::JobRunner::finished);
         QTRY_VERIFY_WITH_TIMEOUT(progress->value() > 0, 60000);
         auto* cancel = progress->findChild<QPushButton*>();
         QVERIFY(cancel);
@@ -161,9 +161,9 @@ private slots:
         auto* dialog = openExportDialog(window, model::ExportFormat::Pc2, 0, 3, path);
         QVERIFY(dialog);
         exportButton(dialog)->click();
-        auto* runner = window.findChild<app::ExportRunner*>();
+        auto* runner = window.findChild<app::JobRunner*>();
         QVERIFY(runner);
-        QSignalSpy finished(runner, &app::ExportRunner::finished);
+        QSignalSpy finished(runner, &app::JobRunner::finished);
         QVERIFY(finished.wait(120000));
         QCOMPARE(finished.at(0).at(0).toBool(), false);
         auto* box = window.findChild<QMessageBox*>(QStringLiteral("exportErrorBox"));
@@ -192,7 +192,7 @@ private slots:
         });
         exportButton(dialog)->click();
         QVERIFY(dialog->isVisible());
-        QVERIFY(!window.findChild<app::ExportRunner*>());
+        QVERIFY(!window.findChild<app::JobRunner*>());
     }
 };
 

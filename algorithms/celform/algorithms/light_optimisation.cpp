@@ -220,7 +220,7 @@ void evaluateLight(const ShadingSamples& samples, const LightPose& light, const 
 }
 
 LightOptimisationResult optimiseLight(const ShadingSamples& samples, const LightPose& start,
-    const LightOptimisationSettings& settings, LightOptimisationWorkspace& work, const LightProgress& progress)
+    const LightOptimisationSettings& settings, LightOptimisationWorkspace& work, Progress* progress)
 {
     LightOptimisationResult result;
     LightPose light = start;
@@ -310,7 +310,8 @@ LightOptimisationResult optimiseLight(const ShadingSamples& samples, const Light
         record.light = best.vector;
         result.iterations.push_back(record);
         step *= factor;
-        if (progress && !progress(it + 1, iterations)) {
+        report(progress, it + 1, iterations);
+        if (cancelRequested(progress)) {
             result.cancelled = true;
             result.after = start;
             result.ratioAfter = result.ratioBefore;

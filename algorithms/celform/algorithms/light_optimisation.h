@@ -6,6 +6,7 @@
 #pragma once
 
 #include "celform/algorithms/depth_analysis.h"
+#include "celform/algorithms/progress.h"
 #include "celform/algorithms/raster.h"
 #include "celform/algorithms/segments.h"
 #include "celform/algorithms/tri_mesh.h"
@@ -13,7 +14,6 @@
 #include <Eigen/Core>
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace celform::algo {
@@ -113,7 +113,7 @@ struct LightOptimisationResult {
     std::vector<float> ratioBefore, ratioAfter; ///< per segment
     double objectiveBefore = 0.0, objectiveAfter = 0.0;
     std::vector<LightIteration> iterations;
-    bool cancelled = false; ///< the progress callback said stop: after == before
+    bool cancelled = false; ///< the progress asked to stop: after == before
 };
 
 /// What a run keeps between calls so that it does not allocate.
@@ -121,17 +121,14 @@ struct LightOptimisationWorkspace {
     LightEvaluation current, candidate, best;
 };
 
-/// Called after each iteration with (done, total); returning false cancels the run.
-using LightProgress = std::function<bool(int, int)>;
-
 /// Runs the chosen method from start (the artist's light, 5.0.3: "an artist can choose a starting
 /// light position to guide the optimization") and returns the best light it met: the gradient
 /// method moves the light every iteration as the thesis does, annealing keeps positions that are
 /// not worse, random keeps better ones. A directional light stays a unit vector. The objective
 /// of the accepted lights never rises. Stops early when every segment is inside the window.
-/// Deterministic for given samples, start and settings.
+/// Deterministic for given samples, start and settings. progress counts the iterations (total:
+/// settings.iterations) and is asked after each whether to stop.
 LightOptimisationResult optimiseLight(const ShadingSamples& samples, const LightPose& start,
-    const LightOptimisationSettings& settings, LightOptimisationWorkspace& workspace,
-    const LightProgress& progress = {});
+    const LightOptimisationSettings& settings, LightOptimisationWorkspace& workspace, Progress* progress = nullptr);
 
 } // namespace celform::algo

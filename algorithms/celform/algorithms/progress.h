@@ -38,4 +38,26 @@ inline void report(Progress* progress, std::int64_t done, std::int64_t total, co
     return progress && progress->isCancelRequested();
 }
 
+/// A part of a larger job: steps done..total of the part are steps offset + done of the whole's
+/// total, so a job made of several reporting parts shows one bar from 0 to the end. Cancel is
+/// the whole's.
+class ProgressPart : public Progress {
+public:
+    ProgressPart(Progress* whole, std::int64_t offset, std::int64_t total)
+        : m_whole(whole)
+        , m_offset(offset)
+        , m_total(total)
+    { }
+    void progress(std::int64_t done, std::int64_t, const std::string& label) override
+    {
+        report(m_whole, m_offset + done, m_total, label);
+    }
+    [[nodiscard]] bool isCancelRequested() const override { return cancelRequested(m_whole); }
+
+private:
+    Progress* m_whole;
+    std::int64_t m_offset;
+    std::int64_t m_total;
+};
+
 } // namespace celform::algo

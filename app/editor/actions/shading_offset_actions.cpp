@@ -1,6 +1,7 @@
 // Shading-offset actions and the Automatic Shading Offsets dialog (offset_actions.h).
 #include "editor/actions/shading_offset_actions.h"
 
+#include "editor/jobs/auto_offsets_job.h"
 #include "editor/main_window.h"
 #include "editor/settings/shortcuts.h"
 
@@ -93,8 +94,8 @@ void autoOffsetsDialog(MainWindow* window)
     request.aggressiveness = float(aggressiveness->value() / 100.0);
     request.percentile = float(percentile->value());
     request.bleed = bleed->value();
-    try {
-        const model::AutoOffsetsResult result = model::solveAutoOffsets(doc->data(), request);
+    // Solved on a worker thread; the values are stored on the GUI thread, one undo step.
+    startAutoOffsets(doc->data(), request, window, [window, doc](const model::AutoOffsetsResult& result) {
         doc->shading().applyAutoOffsets(result.target, result.values);
         window->statusBar()->showMessage(OffsetText::tr("Automatic shading offsets: %1 segments; depth error MSE "
                                                         "%2 before, %3 after.")
@@ -102,9 +103,7 @@ void autoOffsetsDialog(MainWindow* window)
                                              .arg(result.mseBefore, 0, 'g', 4)
                                              .arg(result.mseAfter, 0, 'g', 4),
             8000);
-    } catch (const model::EditRefused& e) {
-        QMessageBox::warning(window, OffsetText::tr("Automatic Shading Offsets"), e.message());
-    }
+    });
 }
 
 } // namespace

@@ -6,7 +6,7 @@
 #include "editor/settings/preferences.h"
 #include "editor/dialogs/preferences_dialog.h"
 #include "editor/dialogs/render_dialog.h"
-#include "editor/jobs/render_runner.h"
+#include "editor/jobs/render_job.h"
 #include "editor/settings/shortcuts.h"
 #include "editor/dialogs/shortcuts_dialog.h"
 
@@ -41,13 +41,7 @@ void renderFromDialog(MainWindow* window, RenderDialog::Kind kind)
         const model::Document* document = window->document();
         const QString source = document->filePath().isEmpty() ? MainWindow::tr("Untitled project")
                                                               : QFileInfo(document->filePath()).fileName();
-        auto* runner = new RenderRunner(document->data(), source, dialog->job(), window);
-        runner->setObjectName(QStringLiteral("renderRunner"));
-        runner->setOpenWhenDone(dialog->openWhenDone());
-        QObject::connect(runner, &RenderRunner::message, window,
-            [window](const QString& text) { window->statusBar()->showMessage(text, 10000); });
-        QObject::connect(runner, &RenderRunner::finished, runner, &QObject::deleteLater);
-        runner->start();
+        startRender(window, document->data(), source, dialog->job(), dialog->openWhenDone());
     });
     dialog->open();
 }

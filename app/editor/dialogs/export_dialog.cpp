@@ -1,7 +1,7 @@
 // File > Export… (export_dialog.h).
 #include "editor/dialogs/export_dialog.h"
 
-#include "editor/jobs/export_runner.h"
+#include "editor/jobs/export_job.h"
 #include "editor/main_window.h"
 #include "editor/settings/shortcuts.h"
 
@@ -156,12 +156,7 @@ void installExportAction(MainWindow* window)
             const model::Document* document = window->document();
             const QString source = document->filePath().isEmpty() ? MainWindow::tr("Untitled project")
                                                                   : QFileInfo(document->filePath()).fileName();
-            auto* runner = new ExportRunner(document->data(), source, dialog->job(), window);
-            runner->setObjectName(QStringLiteral("exportRunner"));
-            QObject::connect(runner, &ExportRunner::message, window,
-                [window](const QString& text) { window->statusBar()->showMessage(text, 10000); });
-            QObject::connect(runner, &ExportRunner::finished, runner, &QObject::deleteLater);
-            runner->start();
+            startExport(window, document->data(), source, dialog->job());
         });
         dialog->open();
     });

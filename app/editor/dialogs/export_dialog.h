@@ -1,5 +1,5 @@
 // File > Export… (issue 13, "Export"): the format, the frame range (the project's by default) and
-// the file; the export itself runs in an ExportRunner (export_runner.h).
+// the file; the export itself runs as a job of the JobRunner (jobs/export_job.h).
 #pragma once
 
 #include "celform/model/export/export.h"

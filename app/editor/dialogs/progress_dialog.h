@@ -1,5 +1,5 @@
-// The window-modal progress dialog every long job of the editor shows (render, export, light
-// optimisation): a Cancel button, a range of steps, kept open until the job's owner closes it.
+// The window-modal progress dialog every long job of the editor shows (JobRunner, jobs/): a
+// Cancel button, a range of steps, kept open until the runner closes it.
 #pragma once
 
 #include <QString>

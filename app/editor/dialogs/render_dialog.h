@@ -1,7 +1,7 @@
 // File > Render Image and Render Sequence: the options of `celform render` (output, size, camera,
 // frame or frame range, pass, stereo, style and lines for this render) as a dialog that describes
 // a model::RenderJob. Problems show below the options and keep Render disabled; the options are
-// remembered in QSettings. RenderRunner renders what the dialog describes.
+// remembered in QSettings. startRender (jobs/render_job.h) renders what the dialog describes.
 #pragma once
 
 #include "celform/model/render/render_job.h"

@@ -49,15 +49,26 @@ const algo::Curvatures& DepthAnalyzer::curvatures(
 
 void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings,
-    FrameAnalysis& out, const std::vector<float>* shadingOffsets)
+    FrameAnalysis& out, const std::vector<float>* shadingOffsets, algo::Progress* progress)
 {
     QElapsedTimer timer;
     timer.start();
+    out.cancelled = false;
+    // Asked between the steps: a step once begun runs to its end.
+    const auto stopAfter = [&](int step) {
+        algo::report(progress, step, 3);
+        out.cancelled = algo::cancelRequested(progress);
+        if (out.cancelled)
+            out.milliseconds = double(timer.nsecsElapsed()) / 1e6;
+        return out.cancelled;
+    };
     const algo::TriMesh& mesh = *data.baseMesh;
     const bool cached = generation != 0 && generation == m_generation && &mesh == m_mesh
         && std::size_t(shape.rows()) == m_curvatures.gaussian.size();
     const algo::Curvatures& curvature = curvatures(mesh, shape, generation);
     out.curvatureMilliseconds = cached ? 0.0 : double(timer.nsecsElapsed()) / 1e6;
+    if (stopAfter(1))
+        return;
 
     // The centre eye's picture with its G-buffer (thesis 4.5.2: "the camera position when
     // rendering to this G-buffer is in the middle of the two eyes").
@@ -65,6 +76,8 @@ void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const alg
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &m_cache, generation);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::renderFrame(shape, mesh, centre, renderLook, m_cache, out.passes, nullptr, &m_gbuffer);
+    if (stopAfter(2))
+        return;
 
     algo::DepthAnalysisSettings& s = m_settings;
     s = algo::DepthAnalysisSettings{};
@@ -84,6 +97,7 @@ void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const alg
         m_gbuffer, out.passes.normal, out.passes.beauty, mesh.faces, curvature.gaussian, s, out.analysis);
     out.analysis.curvatureScale = m_curvatureScale;
     out.milliseconds = double(timer.nsecsElapsed()) / 1e6;
+    algo::report(progress, 3, 3);
 }
 
 AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source, const RenderJob& job)

@@ -6,6 +6,7 @@
 
 #include "celform/algorithms/curvature.h"
 #include "celform/algorithms/depth_analysis.h"
+#include "celform/algorithms/progress.h"
 #include "celform/algorithms/render.h"
 #include "celform/model/data/camera.h"
 #include "celform/model/data/project_data.h"
@@ -39,6 +40,7 @@ struct FrameAnalysis {
     double depthThreshold = 0.0; ///< the absolute threshold used, model units
     double curvatureMilliseconds = 0.0; ///< 0 when the shape's curvature came from the cache
     double milliseconds = 0.0; ///< the whole analysis, curvature and picture included
+    bool cancelled = false; ///< stopped through progress before the end: the rest is incomplete
 };
 
 /// Keeps what successive analyses of one model reuse: the curvature of the last shape (by its
@@ -52,11 +54,12 @@ public:
 
     /// Analyses the picture of shape (#V by 3, the view-dependent blend at the frame) through camera
     /// at width x height with look (the project's, or one with a render's overrides).
-    /// shadingOffsets: the offsets in effect (shading_layers.h; null: the base layer alone). Throws
-    /// std::bad_alloc when the buffers do not fit.
+    /// shadingOffsets: the offsets in effect (shading_layers.h; null: the base layer alone).
+    /// progress counts three steps (curvature, picture, analysis) and may stop the analysis
+    /// between them (out.cancelled). Throws std::bad_alloc when the buffers do not fit.
     void analyze(const ProjectData& data, const Look& look, const algo::Positions& shape, std::uint64_t generation,
         int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings, FrameAnalysis& out,
-        const std::vector<float>* shadingOffsets = nullptr);
+        const std::vector<float>* shadingOffsets = nullptr, algo::Progress* progress = nullptr);
 
     /// The G-buffer of the last analysis (face ids, barycentric coordinates, depth, position).
     [[nodiscard]] const algo::GBuffer& gbuffer() const { return m_gbuffer; }

@@ -38,7 +38,7 @@ std::uint64_t privateGeneration()
 
 LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height,
-    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, const algo::LightProgress& progress,
+    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, algo::Progress* progress,
     const std::vector<float>* shadingOffsets)
 {
     QElapsedTimer timer;
@@ -61,6 +61,19 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     report.segmentsAfter = before.stats;
     report.mseBefore = report.mseAfter = before.meanSquaredError;
     report.featuresBefore = report.featuresAfter = before.featurePixels;
+    // One bar over the whole run: the analysis before, the iterations, the analysis after.
+    const std::int64_t steps = std::int64_t(std::max(0, request.optimiser.iterations)) + 2;
+    algo::report(progress, 1, steps);
+    const auto cancelled = [&] {
+        report.run.cancelled = true;
+        report.after = report.before;
+        report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
+        return report;
+    };
+    if (algo::cancelRequested(progress)) {
+        report.run.before = report.run.after = poseOf(look.light);
+        return cancelled();
+    }
 
     const algo::DepthAnalysisSettings& used = analyzer.lastSettings();
     algo::ShadingSamples samples;
@@ -76,7 +89,8 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     QElapsedTimer iterations;
     iterations.start();
     algo::LightOptimisationWorkspace workspace;
-    report.run = algo::optimiseLight(samples, poseOf(look.light), settings, workspace, progress);
+    algo::ProgressPart iterationsPart(progress, 1, steps);
+    report.run = algo::optimiseLight(samples, poseOf(look.light), settings, workspace, &iterationsPart);
     report.optimiseMilliseconds = double(iterations.nsecsElapsed()) / 1e6;
     if (report.run.cancelled) {
         report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
@@ -89,6 +103,7 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
             accepted.push_back(it.light);
     if (accepted.empty()) { // nothing better than the artist's light: it stays as it is
         report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
+        algo::report(progress, steps, steps);
         return report;
     }
 
@@ -103,18 +118,21 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     report.segmentsAfter = frameAnalysis.analysis.stats;
     report.mseAfter = frameAnalysis.analysis.meanSquaredError;
     report.featuresAfter = frameAnalysis.analysis.featurePixels;
+    if (algo::cancelRequested(progress)) // during the analysis after: the light stays as it was
+        return cancelled();
     report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
+    algo::report(progress, steps, steps);
     return report;
 }
 
-LightOptimisationReport optimiseLightForJob(
-    const ProjectData& data, const QString& source, const RenderJob& job, const LightOptimisationRequest& request)
+LightOptimisationReport optimiseLightForJob(const ProjectData& data, const QString& source, const RenderJob& job,
+    const LightOptimisationRequest& request, algo::Progress* progress)
 {
     // The project's look: optimize-light takes no look overrides, and the light found is its own.
     const AnalysisView view = resolveAnalysisView(data, source, job);
     DepthAnalyzer analyzer;
     return optimiseLight(data, data.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(),
-        job.size.height(), request, analyzer, {}, &view.offsets);
+        job.size.height(), request, analyzer, progress, &view.offsets);
 }
 
 QString lightMethodName(algo::LightMethod method)

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "celform/algorithms/light_optimisation.h"
+#include "celform/algorithms/progress.h"
 #include "celform/model/data/camera.h"
 #include "celform/model/analysis/depth_analysis.h"
 #include "celform/model/data/project_data.h"
@@ -44,20 +45,21 @@ struct LightOptimisationReport {
 /// Analyses the picture of shape (#V by 3, the blend at frame for camera) at width x height with
 /// look, moves look's light by the request's method, and analyses again with the new light. When
 /// no light is better by the ratios, after == before.
-/// progress is called after each iteration and may cancel (then after == before and nothing is
-/// analysed again). Reads data only: safe on a worker thread with a copy of the project. Throws
+/// progress counts request.optimiser.iterations + 2 steps (the analysis before, the iterations,
+/// the analysis after) and is asked after each whether to stop: then the report is cancelled
+/// and after == before. Reads data only: safe on a worker thread with a copy of the project. Throws
 /// std::bad_alloc when the buffers do not fit. shadingOffsets: the offsets in effect for the shape
 /// (shading_layers.h; null: the base layer alone).
 LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height,
-    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, const algo::LightProgress& progress = {},
+    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, algo::Progress* progress = nullptr,
     const std::vector<float>* shadingOffsets = nullptr);
 
 /// `celform optimize-light`: the job's camera, frame and size resolved as `celform analyze`
 /// resolves them; the project's look (the job's look overrides do not apply: the light found
-/// must be the project's). Throws IoError naming source.
-LightOptimisationReport optimiseLightForJob(
-    const ProjectData& data, const QString& source, const RenderJob& job, const LightOptimisationRequest& request);
+/// must be the project's). progress as for optimiseLight. Throws IoError naming source.
+LightOptimisationReport optimiseLightForJob(const ProjectData& data, const QString& source, const RenderJob& job,
+    const LightOptimisationRequest& request, algo::Progress* progress = nullptr);
 
 /// Stable names for the command line and the editor's settings.
 [[nodiscard]] QString lightMethodName(algo::LightMethod method);

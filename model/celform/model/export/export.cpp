@@ -74,11 +74,10 @@ QString exportJobProblem(const ExportJob& job)
 
 namespace exporting {
 
-FrameWalk::FrameWalk(
-    const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks)
+FrameWalk::FrameWalk(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress)
     : m_data(data)
     , m_job(job)
-    , m_callbacks(callbacks)
+    , m_progress(progress)
     , m_frame(job.firstFrame - 1)
 {
     QString error;
@@ -90,7 +89,7 @@ bool FrameWalk::next()
 {
     if (m_cancelled || m_frame >= m_job.lastFrame)
         return false;
-    if (m_callbacks.cancelled && m_callbacks.cancelled()) {
+    if (algo::cancelRequested(m_progress)) {
         m_cancelled = true;
         return false;
     }
@@ -98,8 +97,7 @@ bool FrameWalk::next()
     m_camera = cameraAtFrame(m_data, m_data.look, m_frame, m_job.aspect);
     m_evaluator.evaluate(m_data, m_frame, m_camera.eye);
     ++m_done;
-    if (m_callbacks.progress)
-        m_callbacks.progress(m_done, m_job.frameCount());
+    algo::report(m_progress, m_done, m_job.frameCount());
     return true;
 }
 
@@ -118,7 +116,7 @@ void finishFile(QSaveFile& file, bool cancelled, ExportResult& result)
 } // namespace exporting
 
 ExportResult exportProject(
-    const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks)
+    const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress)
 {
     if (!data.baseMesh)
         throw IoError(source, QCoreApplication::translate("celform::model::Export", "has no base model"));
@@ -127,14 +125,14 @@ ExportResult exportProject(
     ExportResult result;
     switch (job.format) {
     case ExportFormat::Pc2:
-        exporting::writePc2(data, source, job, callbacks, result);
+        exporting::writePc2(data, source, job, progress, result);
         break;
     case ExportFormat::ObjSequence:
-        exporting::writeObjSequence(data, source, job, callbacks, result);
+        exporting::writeObjSequence(data, source, job, progress, result);
         break;
     case ExportFormat::Gltf:
     case ExportFormat::Glb:
-        exporting::writeGltf(data, source, job, callbacks, result);
+        exporting::writeGltf(data, source, job, progress, result);
         break;
     }
     return result;

@@ -4,6 +4,7 @@
 // of OBJ meshes. docs/export.md describes what each format holds.
 #pragma once
 
+#include "celform/algorithms/progress.h"
 #include "celform/model/render/frame_evaluation.h"
 #include "celform/model/data/project_data.h"
 
@@ -12,7 +13,6 @@
 
 class QSaveFile;
 
-#include <functional>
 #include <optional>
 
 namespace celform::model {
@@ -48,15 +48,6 @@ struct ExportJob {
 /// an output named.
 [[nodiscard]] QString exportJobProblem(const ExportJob& job);
 
-/// What a running export reports and asks, on the exporting thread.
-struct ExportCallbacks {
-    /// After each frame is evaluated: how many are done of how many.
-    std::function<void(int done, int total)> progress;
-    /// Asked before each frame: true stops the export. The file being written is dropped (a
-    /// one-file format leaves no file; an OBJ sequence keeps the frames already written).
-    std::function<bool()> cancelled;
-};
-
 struct ExportResult {
     int frames = 0; ///< frames evaluated and written
     bool cancelled = false;
@@ -65,11 +56,13 @@ struct ExportResult {
     QStringList files; ///< the files written
 };
 
-/// Exports a project's frames. source names the project in errors. Throws IoError naming the
-/// project (no base model, keys that cannot be blended, a bad job) or the file that could not be
-/// written.
+/// Exports a project's frames. source names the project in errors. progress counts the frames
+/// as they are evaluated and is asked before each whether to stop: then the file being written
+/// is dropped (a one-file format leaves no file; an OBJ sequence keeps the frames already
+/// written). Throws IoError naming the project (no base model, keys that cannot be blended, a
+/// bad job) or the file that could not be written.
 ExportResult exportProject(
-    const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks = {});
+    const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress = nullptr);
 
 namespace exporting {
 
@@ -77,7 +70,7 @@ namespace exporting {
 /// evaluated through the camera at that frame (cameraAtFrame), progress reported, cancel asked.
 class FrameWalk {
 public:
-    FrameWalk(const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks);
+    FrameWalk(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress);
     /// Evaluates the next frame; false when the range is done or the export was cancelled.
     bool next();
     [[nodiscard]] int frame() const { return m_frame; }
@@ -89,7 +82,7 @@ public:
 private:
     const ProjectData& m_data;
     const ExportJob& m_job;
-    const ExportCallbacks& m_callbacks;
+    algo::Progress* m_progress;
     FrameEvaluator m_evaluator;
     Camera m_camera;
     int m_frame = 0;
@@ -101,11 +94,11 @@ private:
 /// (an IoError naming the file when that fails) and listed in result.
 void finishFile(QSaveFile& file, bool cancelled, ExportResult& result);
 
-void writePc2(const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks,
+void writePc2(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result);
-void writeObjSequence(const ProjectData& data, const QString& source, const ExportJob& job,
-    const ExportCallbacks& callbacks, ExportResult& result);
-void writeGltf(const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks,
+void writeObjSequence(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
+    ExportResult& result);
+void writeGltf(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result);
 
 } // namespace exporting

@@ -162,7 +162,7 @@ Eigen::Quaternionf cameraRotation(const Camera& camera)
 
 } // namespace
 
-void writeGltf(const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks,
+void writeGltf(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result)
 {
     const algo::TriMesh& mesh = *data.baseMesh;
@@ -284,7 +284,7 @@ void writeGltf(const ProjectData& data, const QString& source, const ExportJob& 
     Camera firstCamera;
     double farthest = 0.0;
     Eigen::Quaternionf previous = Eigen::Quaternionf::Identity();
-    FrameWalk walk(data, source, job, callbacks);
+    FrameWalk walk(data, source, job, progress);
     while (walk.next()) {
         const Camera& camera = walk.camera();
         if (walk.done() == 1)
@@ -397,7 +397,7 @@ void writeGltf(const ProjectData& data, const QString& source, const ExportJob& 
     QSaveFile file(job.output);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes.data(), qint64(bytes.size())) != qint64(bytes.size()))
         throw IoError(job.output, file.errorString());
-    finishFile(file, callbacks.cancelled && callbacks.cancelled(), result);
+    finishFile(file, algo::cancelRequested(progress), result);
 }
 
 } // namespace celform::model::exporting

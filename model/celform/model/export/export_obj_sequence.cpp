@@ -7,10 +7,10 @@
 
 namespace celform::model::exporting {
 
-void writeObjSequence(const ProjectData& data, const QString& source, const ExportJob& job,
-    const ExportCallbacks& callbacks, ExportResult& result)
+void writeObjSequence(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
+    ExportResult& result)
 {
-    FrameWalk walk(data, source, job, callbacks);
+    FrameWalk walk(data, source, job, progress);
     algo::TriMesh mesh;
     mesh.faces = data.baseMesh->faces;
     while (walk.next()) {

@@ -36,10 +36,10 @@ void write(QSaveFile& file, const void* bytes, qint64 size)
 
 } // namespace
 
-void writePc2(const ProjectData& data, const QString& source, const ExportJob& job, const ExportCallbacks& callbacks,
+void writePc2(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result)
 {
-    FrameWalk walk(data, source, job, callbacks);
+    FrameWalk walk(data, source, job, progress);
     QSaveFile file(job.output);
     if (!file.open(QIODevice::WriteOnly))
         throw IoError(job.output, file.errorString());

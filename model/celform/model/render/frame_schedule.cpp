@@ -1,7 +1,7 @@
 // The threads of a render job (frame_schedule.h). Frames are taken in order from one counter, so
 // with one thread this is the plain loop over the frames; every file is written by the thread
 // that rendered it, atomically (render_output.h), so the threads only share the counter, the
-// callbacks and the first failure, all behind one mutex.
+// progress, the listener and the first failure, all behind one mutex.
 #include "celform/model/render/frame_schedule.h"
 
 #include <QCoreApplication>
@@ -29,9 +29,10 @@ struct Failure {
 
 class Schedule {
 public:
-    Schedule(const RenderJob& job, const RenderCallbacks& callbacks)
+    Schedule(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener)
         : m_job(job)
-        , m_callbacks(callbacks)
+        , m_progress(progress)
+        , m_listener(listener)
         , m_count(job.frameCount())
     { }
 
@@ -51,8 +52,7 @@ public:
                 if (m_job.skipExisting && QFileInfo(file).isFile()) {
                     const std::lock_guard<std::mutex> lock(m_mutex);
                     ++m_done;
-                    if (m_callbacks.skipped)
-                        m_callbacks.skipped(frame, file, m_done);
+                    frameDone(frame, file, true);
                     continue;
                 }
                 if (!render)
@@ -62,8 +62,7 @@ public:
                 const std::lock_guard<std::mutex> lock(m_mutex);
                 ++m_done;
                 ++m_written;
-                if (m_callbacks.written)
-                    m_callbacks.written(frame, file, m_done);
+                frameDone(frame, file, false);
             } catch (const IoError& e) {
                 fail({frame, e.file(), e.problem()});
             } catch (const std::bad_alloc&) {
@@ -89,10 +88,18 @@ private:
         return m_next++;
     }
 
-    /// Asks the caller, with m_mutex held (callbacks are never called two at a time).
+    /// Tells the listener and the progress, with m_mutex held (never two at a time).
+    void frameDone(int frame, const QString& file, bool skipped)
+    {
+        if (m_listener)
+            m_listener->frameDone(frame, file, skipped);
+        algo::report(m_progress, m_done, m_count);
+    }
+
+    /// Asks the caller, with m_mutex held (never two at a time).
     bool userCancelled()
     {
-        if (!m_stop && m_callbacks.cancelled && m_callbacks.cancelled())
+        if (!m_stop && algo::cancelRequested(m_progress))
             m_stop = true;
         return m_stop && !m_failure;
     }
@@ -107,7 +114,8 @@ private:
     }
 
     const RenderJob& m_job;
-    const RenderCallbacks& m_callbacks;
+    algo::Progress* m_progress;
+    RenderFrameListener* m_listener;
     const int m_count;
     std::mutex m_mutex;
     int m_next = 0;
@@ -119,10 +127,10 @@ private:
 
 } // namespace
 
-int scheduleFrames(
-    const RenderJob& job, const RenderCallbacks& callbacks, const std::function<FrameRenderer()>& makeRenderer)
+int scheduleFrames(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener,
+    const std::function<FrameRenderer()>& makeRenderer)
 {
-    Schedule schedule(job, callbacks);
+    Schedule schedule(job, progress, listener);
     const int threads = std::clamp(job.threads, 1, std::max(job.frameCount(), 1));
     std::vector<std::thread> helpers;
     helpers.reserve(std::size_t(threads - 1));

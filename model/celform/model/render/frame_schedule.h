@@ -1,5 +1,5 @@
 // Handing a render job's frames to several threads (renderFrames, render_job.h): which frame each
-// thread takes next, frames skipped because their file exists, the callbacks one at a time, and
+// thread takes next, frames skipped because their file exists, progress and listener one at a time, and
 // the failure reported once every thread has stopped.
 #pragma once
 
@@ -20,11 +20,11 @@ using FrameRenderer = std::function<bool(int frame, const QString& file, const s
 /// Runs the job's frames, in order of frame, on min(job.threads, frame count) threads (the
 /// calling thread is one of them), each with a renderer of its own made by makeRenderer on that
 /// thread before its first frame. With job.skipExisting a frame whose file exists (a regular file, or a
-/// link to one) is reported to callbacks.skipped and not rendered. After a failure no new frame starts; the frames
+/// link to one) is reported to listener as skipped and not rendered. After a failure no new frame starts; the frames
 /// under way on other threads are finished and written. Returns how many files were written; throws RenderFrameError
 /// for the lowest frame that failed.
-int scheduleFrames(
-    const RenderJob& job, const RenderCallbacks& callbacks, const std::function<FrameRenderer()>& makeRenderer);
+int scheduleFrames(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener,
+    const std::function<FrameRenderer()>& makeRenderer);
 
 /// What one thread's stack and its malloc arena take from the address space (8 MB and 64 MB),
 /// counted with every frame's buffers where an address-space limit (ulimit -v) is set.

@@ -211,10 +211,11 @@ private:
 
 } // namespace
 
-int renderFrames(const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks)
+int renderFrames(const ProjectData& data, const QString& source, const RenderJob& job, algo::Progress* progress,
+    RenderFrameListener* listener)
 {
     const ResolvedRenderJob resolved = resolveRenderJob(data, source, job);
-    return scheduleFrames(job, callbacks, [&]() -> FrameRenderer {
+    return scheduleFrames(job, progress, listener, [&]() -> FrameRenderer {
         auto worker = std::make_shared<FrameWorker>(data, job, resolved);
         return [worker](int frame, const QString& file, const std::function<bool()>& cancelled) {
             return worker->render(frame, file, cancelled);

@@ -3,6 +3,7 @@
 // those of the command line; the camera, the view-dependent shape and the look are resolved here.
 #pragma once
 
+#include "celform/algorithms/progress.h"
 #include "celform/algorithms/stereo.h"
 #include "celform/model/data/camera.h"
 #include "celform/model/data/io_error.h"
@@ -82,7 +83,6 @@ QStringList renderSuffixes();
 /// (ulimit -v) less what this process uses, if one is set.
 qint64 availableRenderMemory();
 
-
 /// The project's look with the job's overrides (style, lines, light) applied.
 Look renderJobLook(const ProjectData& data, const RenderJob& job);
 
@@ -103,17 +103,15 @@ struct ResolvedRenderJob {
 /// keys cannot be blended.
 ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job);
 
-/// What a running render reports and asks. They are called one at a time (never two at once),
-/// from the thread rendering the frame: with job.threads > 1 that is not always the same thread.
-struct RenderCallbacks {
-    /// After each frame's file is written: the frame, the file and how many frames are done
-    /// (written or skipped).
-    std::function<void(int frame, const QString& file, int done)> written;
-    /// A frame left out because its file exists (RenderJob::skipExisting), counted in done.
-    std::function<void(int frame, const QString& file, int done)> skipped;
-    /// Asked before each frame and before each write: true stops the render there (a frame
-    /// rendered but not yet written is dropped; the files written so far stay).
-    std::function<bool()> cancelled;
+/// Told of each frame a render finishes, beside the progress that counts them: the command line
+/// lists the files written and skipped, the editor keeps them. Called one at a time (never two at
+/// once) from the thread that rendered the frame (with job.threads > 1 not always the same one),
+/// just before the progress counts the frame.
+class RenderFrameListener {
+public:
+    virtual ~RenderFrameListener() = default;
+    /// frame's file was written, or left out because it exists (RenderJob::skipExisting).
+    virtual void frameDone(int frame, const QString& file, bool skipped) = 0;
 };
 
 /// A frame that could not be rendered or written: the frame, and the file and problem as IoError
@@ -131,11 +129,14 @@ private:
 };
 
 /// Renders the job's frames of a project and writes one file per frame (atomically), job.threads
-/// frames at a time. source names the project in errors. Returns how many frames were written
-/// (fewer when cancelled or skipped). Throws IoError naming the project (no base model, keys that
+/// frames at a time. source names the project in errors. progress counts the frames done
+/// (written or skipped) and is asked before each frame and before each write whether to stop (a
+/// frame rendered but not yet written is dropped; the files written so far stay); listener hears
+/// of each frame done. Both are called one at a time, never two at once. Returns how many frames
+/// were written (fewer when cancelled or skipped). Throws IoError naming the project (no base model, keys that
 /// cannot be blended), RenderFrameError for the first frame (the lowest, when several threads
 /// fail) that could not be rendered or written, once the frames already under way are finished.
-int renderFrames(
-    const ProjectData& data, const QString& source, const RenderJob& job, const RenderCallbacks& callbacks = {});
+int renderFrames(const ProjectData& data, const QString& source, const RenderJob& job,
+    algo::Progress* progress = nullptr, RenderFrameListener* listener = nullptr);
 
 } // namespace celform::model

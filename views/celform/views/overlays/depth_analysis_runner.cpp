@@ -59,6 +59,24 @@ QImage toImage(const algo::ImageRGBA& image)
 
 } // namespace
 
+/// The worker's algo::Progress: no bar (a new picture comes within a second or so, and the
+/// Depth panel shows that one is on its way), cancelled when the runner is destroyed.
+class DepthAnalysisRunner::WorkerProgress : public algo::Progress {
+public:
+    explicit WorkerProgress(DepthAnalysisRunner* runner)
+        : m_runner(runner)
+    { }
+    void progress(std::int64_t, std::int64_t, const std::string&) override { }
+    [[nodiscard]] bool isCancelRequested() const override
+    {
+        const std::lock_guard<std::mutex> lock(m_runner->m_mutex);
+        return m_runner->m_stop;
+    }
+
+private:
+    DepthAnalysisRunner* m_runner;
+};
+
 DepthAnalysisRunner::DepthAnalysisRunner(model::Document* document, Viewport* viewport, QObject* parent)
     : QObject(parent)
     , m_document(document)
@@ -199,6 +217,7 @@ void DepthAnalysisRunner::workerLoop()
 #endif
     model::DepthAnalyzer analyzer; // keeps the curvature of a still shape and the buffers
     model::FrameAnalysis frame;
+    WorkerProgress progress(this);
     for (;;) {
         std::unique_ptr<Job> job;
         {
@@ -217,7 +236,9 @@ void DepthAnalysisRunner::workerLoop()
         result->window = job->settings.window;
         try {
             analyzer.analyze(job->data, job->data.look, job->shape, job->generation, job->frame, job->camera,
-                job->width, job->height, job->settings, frame, &job->offsets);
+                job->width, job->height, job->settings, frame, &job->offsets, &progress);
+            if (frame.cancelled)
+                return; // the runner is going: nobody waits for this picture
             const algo::DepthAnalysis& a = frame.analysis;
             result->segments = toImage(model::analysisImage(a, model::AnalysisPicture::Segments, false));
             result->curvature

@@ -1,6 +1,8 @@
 // Runs the stereo depth analysis (model::DepthAnalyzer, paper 3 chapter 4) of what a viewport
 // shows, on a worker thread of its own, so that orbiting never waits for it. Requests coalesce:
 // while one analysis runs, only the newest request waits, and it starts when the first ends.
+// It is the editor's one long job without a dialog: the analysis reports through the same
+// algo::Progress as every other job, and closing the window cancels it between its steps.
 #pragma once
 
 #include "celform/model/data/camera.h"
@@ -88,6 +90,7 @@ signals:
 
 private:
     struct Job;
+    class WorkerProgress;
     void documentChanged(const model::ChangeSet& change);
     void submit();
     void workerLoop();
@@ -109,7 +112,7 @@ private:
     std::condition_variable m_wake;
     std::unique_ptr<Job> m_pending;
     bool m_running = false;
-    bool m_stop = false;
+    bool m_stop = false; ///< the runner is going: the worker leaves, the analysis under way stops
     std::thread m_worker;
 };
 
