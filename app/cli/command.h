@@ -1,6 +1,6 @@
 // One sub-command of `celform` as the table lists it (name, synopsis, description, arguments,
 // options, run function), what its run function is handed, and the output helpers they share.
-// The table itself is in cli.cpp; the sub-commands live in one file per group beside this one.
+// The table itself is in command_line.cpp; the sub-commands live in one file per group beside this one.
 #pragma once
 
 #include "cli/command_line.h"

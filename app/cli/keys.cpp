@@ -80,15 +80,10 @@ int runBrush(const Invocation& in)
     const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
     algo::BrushProfile profile;
     if (in.isSet("falloff")) {
-        const QString curve = in.value("falloff");
-        if (curve == QLatin1String("paper"))
-            profile.falloff = algo::BrushFalloff::Paper;
-        else if (curve == QLatin1String("smooth"))
-            profile.falloff = algo::BrushFalloff::Smooth;
-        else if (curve == QLatin1String("sphere"))
-            profile.falloff = algo::BrushFalloff::Sphere;
-        else
-            throw UsageError{Cli::tr("--falloff must be paper, smooth or sphere, not “%1”").arg(curve)};
+        const std::pair<const char*, algo::BrushFalloff> curves[] = {{"paper", algo::BrushFalloff::Paper},
+            {"smooth", algo::BrushFalloff::Smooth}, {"sphere", algo::BrushFalloff::Sphere}};
+        profile.falloff
+            = parseChoice(in.value("falloff"), curves, Cli::tr("--falloff must be paper, smooth or sphere, not “%1”"));
     }
     if (in.isSet("strength")) {
         profile.strength = parseNumber("strength", in.value("strength"));

@@ -168,7 +168,7 @@ private slots:
         QVERIFY(window.document()->data() == before);
     }
 
-    // Issue 14: a crash inside Assimp (a glTF nested 30,000 nodes deep overflows its stack) took the
+    // A crash inside Assimp (a glTF nested 30,000 nodes deep overflows its stack) took the
     // editor and its unsaved edits along. Assimp runs in a child process now: the import fails.
     void crashingImporterLeavesDocumentAlone()
     {

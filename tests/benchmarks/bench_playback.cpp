@@ -1,4 +1,4 @@
-// Playback speed (issue 13): the bundled elephant sample on a 48-frame turntable, the viewport
+// Playback speed: the bundled elephant sample on a 48-frame turntable, the viewport
 // looking through the shot camera at each frame with the look at full quality (toon shading,
 // lines, highlights) and the view-dependent preview on, as the editor plays it. Needs an X server
 // (run under xvfb-run; llvmpipe there, so the figure is a software-GL floor). The aim is 24 fps.

@@ -1,4 +1,4 @@
-// The animation core (issue 13): the scene's time, camera paths and the turntable, the animated
+// The animation core: the scene's time, camera paths and the turntable, the animated
 // base (paper 1, section 4.1) under the key offsets, the one per-frame evaluation, and the
 // project file's format 2. Every expected value is computed by hand in the test.
 #include "test_support.h"

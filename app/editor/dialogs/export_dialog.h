@@ -1,4 +1,4 @@
-// File > Export… (issue 13, "Export"): the format, the frame range (the project's by default) and
+// File > Export…: the format, the frame range (the project's by default) and
 // the file; the export itself runs in an ExportRunner (export_runner.h).
 #pragma once
 

@@ -175,7 +175,7 @@ public:
         // The analysis passes (segments, curvature, depth error) come from the depth analysis of
         // the centre eye's picture.
         if (m_analysisPicture) {
-            m_analyzer.analyze(data, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
+            m_analyser.analyse(data, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
                 m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_offsets);
             if (cancelled())
                 return false;
@@ -203,7 +203,7 @@ private:
     const std::optional<AnalysisPicture> m_analysisPicture;
     FrameEvaluator m_evaluator;
     algo::RenderCache m_cache;
-    DepthAnalyzer m_analyzer;
+    DepthAnalyser m_analyser;
     FrameAnalysis m_analysed;
     algo::Shape m_shape;
     std::vector<float> m_offsets; // in effect at the camera's view and the frame (shading_layers.h)
