@@ -6,7 +6,7 @@
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/mesh_io.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
 
@@ -127,7 +127,7 @@ int runEval(const Invocation& in)
     const model::ProjectData data = model::loadProject(path);
     if (!data.baseMesh)
         throw model::IoError(path, Cli::tr("has no base model"));
-    // The renderer's own evaluation (frame_evaluation.h): without camera options, the camera path
+    // The renderer's own evaluation (frame_evaluator.h): without camera options, the camera path
     // (or the render camera) at the frame, and the animated base there.
     model::FrameEvaluator evaluator;
     QString error;

@@ -6,7 +6,7 @@
 #include "window_test_support.h"
 
 #include "editor/main_window.h"
-#include "editor/recovery.h"
+#include "editor/recovery_manager.h"
 
 #include "celform/model/io/project_file.h"
 #include "celform/views/panels/look_panel.h"

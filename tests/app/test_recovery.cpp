@@ -11,7 +11,7 @@
 #include "ui_test_support.h"
 
 #include "editor/main_window.h"
-#include "editor/recovery.h"
+#include "editor/recovery_manager.h"
 
 #include "celform/model/io/project_file.h"
 #include "celform/views/viewport/viewport.h"

@@ -6,7 +6,7 @@
 #include "bench_data.h"
 
 #include "celform/algorithms/tri_mesh.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/project_data.h"
 
 #include <benchmark/benchmark.h>

@@ -8,7 +8,7 @@
 //   the other docks repaint, and Qt composes the window. Its gap to turntableFrames is what the rest
 //   of the window costs per frame.
 #include "celform/model/document/document.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/views/overlays/depth_analysis_runner.h"
 #include "celform/views/viewport/viewport.h"
 

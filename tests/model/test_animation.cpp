@@ -6,7 +6,7 @@
 
 #include "celform/algorithms/base_animation.h"
 #include "celform/model/document/document.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/project_file.h"
 

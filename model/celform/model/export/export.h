@@ -4,7 +4,7 @@
 // of OBJ meshes. docs/export.md describes what each format holds.
 #pragma once
 
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/project_data.h"
 
 #include <QString>

@@ -1,7 +1,7 @@
 // Rendering a project's frames to files (render_job.h).
 #include "celform/model/render/render_job.h"
 
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/analysis/depth_analysis.h"
@@ -162,7 +162,7 @@ public:
     bool render(int f, const QString& target, const std::function<bool()>& cancelled)
     {
         const ProjectData& data = m_data;
-        // The one evaluation of a frame (frame_evaluation.h): the camera at the frame (the path's
+        // The one evaluation of a frame (frame_evaluator.h): the camera at the frame (the path's
         // when the project has one), the animated base there, the view direction and the shape.
         const Camera camera = renderJobCamera(data, m_resolved.look, m_job, f);
         m_evaluator.evaluate(data, f, camera.eye);
