@@ -57,8 +57,8 @@ int runSet(const Invocation& in)
     std::optional<double> sharpness;
     if (in.isSet("sharpness")) {
         sharpness = parseNumber("sharpness", in.value("sharpness"));
-        if (*sharpness <= 0)
-            throw UsageError{Cli::tr("--sharpness must be positive")};
+        if (!(*sharpness > 0 && *sharpness <= model::kMaxSharpness))
+            throw UsageError{Cli::tr("--sharpness must be above 0 and at most %1").arg(model::kMaxSharpness)};
     }
     const auto unspecified = optionalValue(in, "unspecified", parseUnspecified);
     const auto time = optionalValue(in, "time", parseTime);
@@ -230,7 +230,7 @@ std::vector<SubCommand> lookCommands()
             {"celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--time natural|periodic] "
              "[--light point:X,Y,Z|directional:X,Y,Z] [--style toon|gooch|comic|lambert] [--render-view X,Y,Z|none]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Changes project settings."), {{"P", kProjectArgument}},
-            {{"sharpness", "A", QT_TRANSLATE_NOOP("celform::app::Cli", "Blend sharpness alpha (> 0).")},
+            {{"sharpness", "A", QT_TRANSLATE_NOOP("celform::app::Cli", "Blend sharpness alpha (above 0, at most 100).")},
                 {"unspecified", "MODE", QT_TRANSLATE_NOOP("celform::app::Cli", "Unspecified-region mode.")},
                 {"time", "natural|periodic",
                     QT_TRANSLATE_NOOP("celform::app::Cli",

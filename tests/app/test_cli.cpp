@@ -1232,10 +1232,14 @@ private slots:
         for (const QStringList& bad :
             {QStringList{}, QStringList{"--turntable", "1"}, QStringList{"--turntable", "12", "--elevation", "90"},
                 QStringList{"--key", "3"}, QStringList{"--clear", "--list"},
-                QStringList{"--turntable", "12", "--axis", "0,0,0"}, QStringList{"--clear", "--view", "1,0,0"}}) {
+                QStringList{"--turntable", "12", "--axis", "0,0,0"}, QStringList{"--clear", "--view", "1,0,0"},
+                // Once saved NaN cameras, and the project opened no more.
+                QStringList{"--turntable", "8", "--start-angle", "1e308"},
+                QStringList{"--turntable", "8", "--start-angle", "-3601"}}) {
             QStringList args{"camera", p};
             args << bad;
             QCOMPARE(runCelform(args).exitCode, 2);
+            QCOMPARE(runCelform({"info", p}).exitCode, 0);
         }
         QCOMPARE(runCelform({"camera", m_dir.filePath(QStringLiteral("missing.celform")), "--clear"}).exitCode, 3);
     }

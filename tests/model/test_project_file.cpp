@@ -543,6 +543,69 @@ private slots:
         QVERIFY(!QFileInfo::exists(path + QStringLiteral(".bak.new")));
     }
 
+    // The header's flags word is 0 in every version so far; a file that sets it is refused.
+    void refusesUnknownHeaderFlags()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("flags.celform"));
+        saveProject(richProject(), path);
+        QByteArray bytes = readAll(path);
+        qToLittleEndian<quint32>(quint32(4), bytes.data() + 12);
+        writeAll(path, bytes);
+        try {
+            loadProject(path);
+            QFAIL("a file with header flags was read");
+        } catch (const IoError& e) {
+            QVERIFY2(e.problem().contains(QStringLiteral("unknown flags")), qPrintable(e.message()));
+        }
+    }
+
+    // Saving through a symbolic link replaces and backs up the file it names; the link stays a link
+    // and the backup holds the previous version (a backup made of the link itself showed the new one).
+    void saveThroughALinkBacksUpTheTarget()
+    {
+        QTemporaryDir dir;
+        const QString real = dir.filePath(QStringLiteral("real.celform"));
+        const QString link = dir.filePath(QStringLiteral("link.celform"));
+        ProjectData first = richProject();
+        saveProject(first, real);
+        const QByteArray firstBytes = readAll(real);
+        QVERIFY(QFile::link(real, link));
+        ProjectData second = first;
+        second.blend.sharpness = 4.0;
+        saveProject(second, link);
+        QVERIFY(QFileInfo(link).isSymLink());
+        QCOMPARE(loadProject(real).blend.sharpness, 4.0);
+        QCOMPARE(readAll(real + QStringLiteral(".bak")), firstBytes);
+        QVERIFY(!QFileInfo::exists(link + QStringLiteral(".bak")));
+    }
+
+    // A value that is not finite is never written (the reader would refuse the file): the save
+    // is refused naming where it stands, and the file on disk keeps its previous version.
+    void refusesToSaveValuesThatAreNotFinite()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("p.celform"));
+        saveProject(richProject(), path);
+        const QByteArray before = readAll(path);
+        ProjectData bad = richProject();
+        bad.blend.sharpness = std::numeric_limits<double>::quiet_NaN();
+        try {
+            saveProject(bad, path);
+            QFAIL("a NaN was saved");
+        } catch (const IoError& e) {
+            QVERIFY2(e.problem().contains(QStringLiteral("sharpness")), qPrintable(e.message()));
+            QVERIFY2(e.problem().contains(QStringLiteral("not a finite number")), qPrintable(e.message()));
+        }
+        QCOMPARE(readAll(path), before);
+        ProjectData badMesh = richProject();
+        auto mesh = std::make_shared<algo::TriMesh>(*badMesh.baseMesh);
+        mesh->vertices(0, 1) = std::numeric_limits<float>::infinity();
+        badMesh.baseMesh = mesh;
+        QVERIFY_THROWS_EXCEPTION(IoError, saveProject(badMesh, path));
+        QCOMPARE(readAll(path), before);
+    }
+
     void failedSaveLeavesFileIntact()
     {
         QTemporaryDir dir;
@@ -712,6 +775,21 @@ private slots:
                                                  << "out of range";
         QTest::newRow("next_id 2^64") << "next-id"
                                       << "out of range";
+        // What `celform set` and the format refuse is refused when read, too.
+        QTest::newRow("sharpness 0") << "sharpness-0"
+                                     << "sharpness";
+        QTest::newRow("sharpness 1e308") << "sharpness-huge"
+                                         << "sharpness";
+        QTest::newRow("sharpness -1e308") << "sharpness-negative"
+                                          << "sharpness";
+        QTest::newRow("drawing opacity 1.5") << "opacity"
+                                             << "opacity outside 0 to 1";
+        QTest::newRow("key linked to a missing drawing") << "missing-drawing"
+                                                         << "does not hold";
+        QTest::newRow("a key with a drawing's id") << "duplicate-id"
+                                                   << "of another object";
+        QTest::newRow("format_version \"two\"") << "version-text"
+                                                 << "not a version number";
     }
 
     void refusesBadNumbersAndSharedBlocks()
@@ -750,6 +828,20 @@ private slots:
                 key.insert("drawings", QJsonArray{1e300});
             } else if (edit == QLatin1String("next-id")) {
                 m.insert("next_id", 18446744073709551616.0);
+            } else if (edit.startsWith(QLatin1String("sharpness"))) {
+                QJsonObject blend = m.value("blend").toObject();
+                blend.insert("sharpness",
+                    edit.endsWith(QLatin1String("-0")) ? 0.0 : edit.endsWith(QLatin1String("huge")) ? 1e308 : -1e308);
+                m.insert("blend", blend);
+            } else if (edit == QLatin1String("opacity")) {
+                drawing.insert("opacity", 1.5);
+            } else if (edit == QLatin1String("missing-drawing")) {
+                key.insert("drawings", QJsonArray{double(m.value("next_id").toDouble() - 1)});
+            } else if (edit == QLatin1String("duplicate-id")) {
+                key.insert("id", drawing.value("id"));
+                key.insert("drawings", QJsonArray{});
+            } else if (edit == QLatin1String("version-text")) {
+                m.insert("format_version", QStringLiteral("two"));
             }
             mesh.insert("face_sets", sets);
             m.insert("base_mesh", mesh);
@@ -848,9 +940,36 @@ private slots:
         const std::size_t n = std::size_t(data.baseMesh->vertexCount());
         data.keys.front().shadingOffsetsByFrame[0] = std::vector<float>(n, 0.25f);
         data.keys.front().shadingOffsetsByFrame[7] = std::vector<float>(n, -0.5f);
-        if (damage == QLatin1String("nan"))
-            data.keys.front().shadingOffsetsByFrame[7][1] = std::numeric_limits<float>::quiet_NaN();
+        if (damage == QLatin1String("nan")) {
+            // The writer refuses it; a file damaged afterwards (its checksum made to match) is
+            // refused by the reader.
+            ProjectData bad = data;
+            bad.keys.front().shadingOffsetsByFrame[7][1] = std::numeric_limits<float>::quiet_NaN();
+            QVERIFY_THROWS_EXCEPTION(IoError, saveProject(bad, path));
+            QVERIFY(!QFileInfo::exists(path));
+        }
         saveProject(data, path);
+        if (damage == QLatin1String("nan")) {
+            const QString name = QStringLiteral("keys/%1/shading_offsets/7").arg(data.keys.front().id);
+            qsizetype offset = 0, size = 0;
+            editManifest(path, [&](QJsonObject& m) {
+                const QJsonObject chunk = m.value("chunks").toObject().value(name).toObject();
+                offset = qsizetype(chunk.value("offset").toDouble());
+                size = qsizetype(chunk.value("size").toDouble());
+            });
+            QVERIFY(size > qsizetype(2 * sizeof(float)));
+            QByteArray bytes = readAll(path);
+            const float nan = std::numeric_limits<float>::quiet_NaN();
+            std::memcpy(bytes.data() + offset + qsizetype(sizeof(float)), &nan, sizeof(float));
+            writeAll(path, bytes);
+            editManifest(path, [&](QJsonObject& m) {
+                QJsonObject chunks = m.value("chunks").toObject();
+                QJsonObject chunk = chunks.value(name).toObject();
+                chunk.insert("crc32", double(crc32(bytes.mid(offset, size))));
+                chunks.insert(name, chunk);
+                m.insert("chunks", chunks);
+            });
+        }
         if (damage == QLatin1String("count")) {
             editManifest(path, [&](QJsonObject& m) {
                 QJsonArray keys = m.value("keys").toArray();

@@ -104,8 +104,10 @@ QString turntableProblem(const Turntable& t)
         return PathText::tr("the turntable axis must be a finite, non-zero vector");
     if (!std::isfinite(t.elevationDegrees) || std::abs(t.elevationDegrees) >= 90.0)
         return PathText::tr("the elevation must lie strictly between -90 and 90 degrees");
-    if (!std::isfinite(t.startDegrees))
-        return PathText::tr("the start angle must be a finite number");
+    // Any angle is some turn of the circle, but past a few turns a typed value is a mistake, and
+    // 1e308 degrees becomes NaN once converted to radians and added to the steps.
+    if (!std::isfinite(t.startDegrees) || std::abs(t.startDegrees) > kMaxTurntableStartDegrees)
+        return PathText::tr("the start angle must lie between -%1 and %1 degrees").arg(kMaxTurntableStartDegrees);
     return {};
 }
 

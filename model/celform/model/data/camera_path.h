@@ -50,6 +50,9 @@ struct Turntable {
     double startDegrees = 0.0;
 };
 
+/// The largest start angle of a turntable, in degrees either way (ten turns).
+constexpr double kMaxTurntableStartDegrees = 3600.0;
+
 /// The first problem of turntable settings, empty when valid: frames in [2, kMaxFrame], start
 /// frame in range, a finite non-zero axis, elevation strictly between -90 and 90 degrees.
 [[nodiscard]] QString turntableProblem(const Turntable& turntable);

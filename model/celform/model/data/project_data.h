@@ -86,6 +86,10 @@ enum class UnspecifiedMode { Dummy, Cosine, Cosine2 };
 /// Paper 1, section 4.2: interpolation of key deformations over time.
 enum class TimeInterpolation { NaturalSpline, PeriodicSpline };
 
+/// The largest blend sharpness alpha a project holds: beyond it w^alpha underflows for weights
+/// well inside a facet, and the blend is a switch between keys anyway.
+constexpr double kMaxSharpness = 100.0;
+
 struct BlendSettings {
     double sharpness = 1.0; ///< alpha of paper 1, section 3.2.2
     UnspecifiedMode unspecified = UnspecifiedMode::Dummy;

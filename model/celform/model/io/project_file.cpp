@@ -19,12 +19,14 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
 #include <new>
 #include <set>
+#include <type_traits>
 
 #include <unistd.h>
 
@@ -54,12 +56,16 @@ public:
     }
     template <typename Matrix> QString addMatrix(const QString& name, const Matrix& m)
     {
+        noteNonFinite(name, m.data(), std::size_t(m.size()));
         return add(name, m.data(), qint64(m.size()) * qint64(sizeof(typename Matrix::Scalar)));
     }
     template <typename T> QString addVector(const QString& name, const std::vector<T>& v)
     {
+        noteNonFinite(name, v.data(), v.size());
         return add(name, v.data(), qint64(v.size() * sizeof(T)));
     }
+    /// The first data block holding a value that is not a finite number, empty when none does.
+    [[nodiscard]] const QString& nonFiniteChunk() const { return m_nonFinite; }
 
     void write(QSaveFile& file, QJsonObject manifest)
     {
@@ -92,6 +98,14 @@ public:
     }
 
 private:
+    template <typename T> void noteNonFinite(const QString& name, const T* data, std::size_t count)
+    {
+        if constexpr (std::is_floating_point_v<T>) {
+            if (m_nonFinite.isEmpty() && !std::all_of(data, data + count, [](T x) { return std::isfinite(x); }))
+                m_nonFinite = name;
+        }
+    }
+
     void put(QSaveFile& file, const char* data, qint64 size)
     {
         if (size > 0 && file.write(data, size) != size)
@@ -106,7 +120,34 @@ private:
     };
     std::vector<Chunk> m_chunks;
     qint64 m_pos = 0;
+    QString m_nonFinite;
 };
+
+/// Where in a manifest the first number that is not finite stands ("keys[2].camera.eye[0]"), empty
+/// when every number is finite. QJsonDocument would write such a number as null, which the reader
+/// refuses: a project holding one must not be saved at all.
+QString firstNonFinite(const QJsonValue& value, const QString& where)
+{
+    if (value.isDouble())
+        return std::isfinite(value.toDouble()) ? QString() : where;
+    if (value.isArray()) {
+        const QJsonArray array = value.toArray();
+        for (qsizetype i = 0; i < array.size(); ++i) {
+            const QString found = firstNonFinite(array.at(i), QStringLiteral("%1[%2]").arg(where).arg(i));
+            if (!found.isEmpty())
+                return found;
+        }
+    } else if (value.isObject()) {
+        const QJsonObject object = value.toObject();
+        for (auto it = object.begin(); it != object.end(); ++it) {
+            const QString found
+                = firstNonFinite(it.value(), where.isEmpty() ? it.key() : QStringLiteral("%1.%2").arg(where, it.key()));
+            if (!found.isEmpty())
+                return found;
+        }
+    }
+    return {};
+}
 
 QJsonArray floats(const std::vector<float>& values)
 {
@@ -288,6 +329,8 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
 /// one or the new); removing the old .bak first left none for a moment (15 of 60 aimed kills).
 void keepPreviousVersion(const QString& path)
 {
+    // path is the file itself (saveProject resolves links): link(2) does not follow a symbolic
+    // link, so a backup of the link would be a second name of the link, showing the new version.
     const QByteArray current = QFile::encodeName(path);
     const QByteArray backup = current + ".bak";
     const QByteArray staged = current + ".bak.new";
@@ -345,13 +388,23 @@ QJsonObject highlightTrackJson(const HighlightTrack& t)
         {"visible", t.visible}, {"normal_smoothing", t.smoothing}, {"combine", combine}, {"keys", keys}};
 }
 
-void saveProject(const ProjectData& data, const QString& path, bool keepBackup)
+void saveProject(const ProjectData& data, const QString& given, bool keepBackup)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        throw IoError(path, ProjectFile::tr("could not be opened for writing: %1").arg(file.errorString()));
+    // Through a symbolic link, the file it names is saved and backed up (FILE.bak beside the
+    // target), as Blender and Krita do; the link stays a link. A dangling link saves to its target.
+    const QFileInfo info(given);
+    const QString path = !info.isSymLink() ? given : info.exists() ? info.canonicalFilePath() : info.symLinkTarget();
     ChunkWriter chunks;
     const QJsonObject manifest = buildManifest(data, chunks);
+    // Nothing the reader would refuse is written: the file on disk stays as it was.
+    QString bad = firstNonFinite(manifest, {});
+    if (bad.isEmpty())
+        bad = chunks.nonFiniteChunk();
+    if (!bad.isEmpty())
+        throw IoError(given, ProjectFile::tr("was not saved: %1 holds a value that is not a finite number").arg(bad));
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        throw IoError(given, ProjectFile::tr("could not be opened for writing: %1").arg(file.errorString()));
     chunks.write(file, manifest);
 
     if (keepBackup && QFileInfo(path).isFile())

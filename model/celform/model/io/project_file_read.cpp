@@ -477,6 +477,8 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         d.camera = r.camera(r.object(o, "camera"));
         d.aligned = r.boolean(o, "aligned");
         d.opacity = r.number(o, "opacity");
+        if (!(d.opacity >= 0.0 && d.opacity <= 1.0))
+            r.corrupt(ProjectFile::tr("drawing “%1” has an opacity outside 0 to 1").arg(d.name));
         d.frame = r.frame(o, "frame");
         data.drawings.push_back(std::move(d));
     }
@@ -531,6 +533,8 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
 
     const QJsonObject blend = r.object(root, "blend");
     data.blend.sharpness = r.number(blend, "sharpness");
+    if (!(data.blend.sharpness > 0.0 && data.blend.sharpness <= kMaxSharpness))
+        r.corrupt(ProjectFile::tr("the blend sharpness is not between 0 and %1").arg(kMaxSharpness));
     data.blend.unspecified = r.enumValue<UnspecifiedMode>(blend, "unspecified");
     data.blend.time = r.enumValue<TimeInterpolation>(blend, "time");
 
@@ -550,12 +554,25 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     }
 
     data.nextId = r.objectId(root, "next_id");
-    for (const auto& d : data.drawings)
+    // Drawings and keys draw their ids from one counter: each id names one object.
+    std::set<ObjectId> objectIds;
+    for (const auto& d : data.drawings) {
         if (d.id >= data.nextId)
             r.corrupt(ProjectFile::tr("an object id is not below next_id"));
-    for (const auto& k : data.keys)
+        if (!objectIds.insert(d.id).second)
+            r.corrupt(ProjectFile::tr("drawing “%1” has the id %2 of another object").arg(d.name).arg(d.id));
+    }
+    for (const auto& k : data.keys) {
         if (k.id >= data.nextId)
             r.corrupt(ProjectFile::tr("an object id is not below next_id"));
+        if (!objectIds.insert(k.id).second)
+            r.corrupt(ProjectFile::tr("key “%1” has the id %2 of another object").arg(k.name).arg(k.id));
+        for (ObjectId drawing : k.drawingIds)
+            if (!data.drawing(drawing))
+                r.corrupt(ProjectFile::tr("key “%1” is linked to drawing %2, which the project does not hold")
+                              .arg(k.name)
+                              .arg(drawing));
+    }
     std::set<ObjectId> highlightIds;
     for (const auto& h : data.look.highlights) {
         if (h.id == 0)
@@ -638,6 +655,9 @@ ProjectData loadProject(const QString& path, DrawingImages images)
                 .arg(kProjectFormatVersion));
     if (version == 0)
         throw IoError(path, ProjectFile::tr("is damaged: the format version is 0"));
+    // No version so far sets a flag: a file that does was not written by Celform, or is damaged.
+    if (const auto flags = qFromLittleEndian<quint32>(bytes + 12); flags != 0)
+        throw IoError(path, ProjectFile::tr("is damaged: its header has unknown flags (%1)").arg(flags));
 
     const char* trailer = bytes + size - kTrailerSize;
     if (std::memcmp(trailer + 24, kEndMagic, 8) != 0)
@@ -660,7 +680,10 @@ ProjectData loadProject(const QString& path, DrawingImages images)
     if (json.isNull() || !json.isObject())
         throw IoError(path, ProjectFile::tr("is damaged: %1").arg(jsonError.errorString()));
     const QJsonObject root = json.object();
-    const double manifestVersion = root.value("format_version").toDouble(-1);
+    const QJsonValue versionValue = root.value("format_version");
+    const double manifestVersion = versionValue.toDouble(-1);
+    if (!versionValue.isDouble() || manifestVersion < 1 || manifestVersion != std::floor(manifestVersion))
+        throw IoError(path, ProjectFile::tr("is damaged: its format_version is not a version number"));
     if (manifestVersion > kProjectFormatVersion)
         throw IoError(path,
             ProjectFile::tr("was written by a newer version of Celform (file format %1; this version reads up "
