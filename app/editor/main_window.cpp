@@ -2,6 +2,7 @@
 #include "editor/main_window.h"
 
 #include "editor/actions/animation_actions.h"
+#include "editor/actions/tool_panels.h"
 
 #include "editor/dialogs/editor_dialogs.h"
 #include "editor/first_steps_hint.h"
@@ -231,7 +232,6 @@ void MainWindow::createDocks()
     makeDock(tr("History"), QStringLiteral("historyDock"), m_history, Qt::LeftDockWidgetArea);
     m_properties = new views::PropertiesPanel(m_document, this);
     makeDock(tr("Properties"), QStringLiteral("propertiesDock"), m_properties, Qt::RightDockWidgetArea);
-    m_properties->setViewport(m_viewport);
     connect(m_properties, &views::PropertiesPanel::keyCreated, this, [this](model::ObjectId key) {
         m_scene->select({views::ScenePanel::ItemKind::Key, key});
         statusBar()->showMessage(tr("Key created: select Edit Key with the Brush to deform it"), 8000);
@@ -247,12 +247,14 @@ void MainWindow::createDocks()
         findChild<QDockWidget*>(QStringLiteral("propertiesDock")), findChild<QDockWidget*>(QStringLiteral("lookDock")));
     // Stylized highlights and their keys (Anjyo & Hiramitsu 2003), tabbed with the Look.
     auto* highlights = new views::HighlightPanel(m_document, this);
-    highlights->setViewport(m_viewport);
     makeDock(tr("Highlights"), QStringLiteral("highlightsDock"), highlights, Qt::RightDockWidgetArea);
     tabifyDockWidget(
         findChild<QDockWidget*>(QStringLiteral("lookDock")), findChild<QDockWidget*>(QStringLiteral("highlightsDock")));
     // Stereo depth analysis (paper 3, chapter 4): overlays, segment ratios and the depth error.
     m_depth = new views::DepthPanel(m_document, m_viewport, this);
+    connectToolPanels(*m_viewport, *m_properties, *highlights, *m_depth);
+    m_properties->setViewport(m_viewport);
+    highlights->setViewport(m_viewport);
     makeDock(tr("Depth"), QStringLiteral("depthDock"), m_depth, Qt::RightDockWidgetArea);
     tabifyDockWidget(findChild<QDockWidget*>(QStringLiteral("highlightsDock")),
         findChild<QDockWidget*>(QStringLiteral("depthDock")));

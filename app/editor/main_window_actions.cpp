@@ -18,6 +18,8 @@
 #include "celform/views/panels/scene_panel.h"
 #include "celform/views/panels/view_sphere_panel.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/overlays/drawing_overlay.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -124,7 +126,7 @@ void MainWindow::createActions()
     auto* look = make(QStringLiteral("actionShowLook"), tr("Show Cartoon &Look"), QKeySequence(Qt::SHIFT | Qt::Key_L),
         tr("Shade the model with the document's look as the renderer does (off: neutral clay for modelling); "
            "Ctrl+drag the light gizmo to move the key light"),
-        [this](bool on) { m_viewport->setShadingEnabled(on); });
+        [this](bool on) { m_viewport->display().setShadingEnabled(on); });
     look->setCheckable(true);
     look->setChecked(true);
     // The render camera (DESIGN.md, "Look"): what `celform render` looks through by default.
@@ -168,7 +170,7 @@ void MainWindow::createActions()
         QAction* a = make(QString::fromLatin1(mode.name), mode.text, QKeySequence(),
             tr("Show the viewport in this stereo mode, with the look's interocular and convergence"),
             [this, output = mode.output] {
-                m_viewport->setStereo(output);
+                m_viewport->display().setStereo(output);
                 if (output != algo::StereoOutput::Off)
                     m_lastStereo = output;
             });
@@ -211,20 +213,20 @@ void MainWindow::createActions()
         [this] { optimiseLightForStereo(); }));
     make(QStringLiteral("actionStereoToggle"), tr("Toggle Stereo &Preview"), QKeySequence(Qt::CTRL | Qt::Key_3),
         tr("Switch the viewport between mono and the last stereo mode (anaglyph at first)"), [this] {
-            const bool on = m_viewport->stereo() == algo::StereoOutput::Off;
+            const bool on = m_viewport->display().stereo() == algo::StereoOutput::Off;
             const algo::StereoOutput output = on ? m_lastStereo : algo::StereoOutput::Off;
             for (QAction* a : findChildren<QAction*>())
                 if (a->objectName().startsWith(QLatin1String("actionStereo")) && a->isCheckable() && a->data().isValid()
                     && algo::StereoOutput(a->data().toInt()) == output)
                     a->setChecked(true);
-            m_viewport->setStereo(output);
+            m_viewport->display().setStereo(output);
         });
     for (const auto& mode : stereoModes)
         action(QString::fromLatin1(mode.name))->setData(int(mode.output));
     make(QStringLiteral("actionDrawingOutline"), tr("Drawing &Outline Only"), QKeySequence(Qt::Key_O),
         tr("Show only the lines and silhouette edge of the drawing in the viewport, so the model's contours can be "
            "matched to them"),
-        [this](bool on) { m_viewport->setOverlayOutline(on); })
+        [this](bool on) { m_viewport->drawingOverlay().setOutline(on); })
         ->setCheckable(true);
     make(QStringLiteral("actionNavigate"), tr("&Navigate Only"), QKeySequence(Qt::Key_Escape),
         tr("Leave alignment and brush tools"), [this] { m_viewport->setTool(views::Viewport::Tool::Navigate); });

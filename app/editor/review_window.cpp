@@ -4,6 +4,7 @@
 
 #include "celform/model/document/document.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include <QApplication>
 #include <QKeyEvent>
@@ -41,7 +42,7 @@ ReviewWindow::ReviewWindow(model::Document* document, const model::Camera& camer
     layout->addWidget(m_viewport);
     m_viewport->setCamera(camera);
     const algo::StereoOutput lookOutput = document ? document->data().look.stereo.output : algo::StereoOutput::Anaglyph;
-    m_viewport->setStereo(lookOutput == algo::StereoOutput::Off ? algo::StereoOutput::Anaglyph : lookOutput);
+    m_viewport->display().setStereo(lookOutput == algo::StereoOutput::Off ? algo::StereoOutput::Anaglyph : lookOutput);
     m_viewport->installEventFilter(this);
     setFocusProxy(m_viewport);
 
@@ -80,7 +81,7 @@ void ReviewWindow::showAs(const views::Viewport& editor)
         m_viewport->setPreview(true);
     else
         m_viewport->setDisplayedKey(editor.displayedKey());
-    m_viewport->setShadingEnabled(true);
+    m_viewport->display().setShadingEnabled(true);
     refreshStatus();
 }
 
@@ -211,10 +212,10 @@ bool ReviewWindow::handleKey(int key)
         stepKey(1);
         break;
     case Command::NextStereo:
-        m_viewport->setStereo(nextOutput(m_viewport->stereo()));
+        m_viewport->display().setStereo(nextOutput(m_viewport->display().stereo()));
         break;
     case Command::Lines:
-        m_viewport->setLinesOverride(!m_viewport->linesShown());
+        m_viewport->display().setLinesOverride(!m_viewport->display().linesShown());
         break;
     case Command::Preview:
         m_viewport->setPreview(!m_viewport->isPreview());
@@ -277,9 +278,9 @@ void ReviewWindow::stepKey(int delta)
 void ReviewWindow::scaleInterocular(double factor)
 {
     // The review's own settings: the current (possibly automatic) distance made explicit.
-    model::StereoLook look = m_viewport->stereoLook();
-    look.interocular = m_viewport->resolvedStereoSettings().interocular * factor;
-    m_viewport->setStereoLook(look);
+    model::StereoLook look = m_viewport->display().stereoLook();
+    look.interocular = m_viewport->display().resolvedStereoSettings().interocular * factor;
+    m_viewport->display().setStereoLook(look);
 }
 
 QString ReviewWindow::statusText() const
@@ -288,9 +289,9 @@ QString ReviewWindow::statusText() const
     const QString key
         = m_keyIndex >= 0 && m_keyIndex < int(keys.size()) ? keys[std::size_t(m_keyIndex)].name : tr("free camera");
     QStringList parts;
-    parts << outputName(m_viewport->stereo());
+    parts << outputName(m_viewport->display().stereo());
     parts << tr("Key: %1").arg(key);
-    parts << tr("Interocular %1").arg(m_viewport->resolvedStereoSettings().interocular, 0, 'g', 3);
+    parts << tr("Interocular %1").arg(m_viewport->display().resolvedStereoSettings().interocular, 0, 'g', 3);
     // Frames are drawn on change only: an idle review shows the last frame's time, not "0 fps".
     if (m_fps > 0.0)
         parts << tr("%1 fps").arg(m_fps, 0, 'f', 1);
@@ -298,7 +299,7 @@ QString ReviewWindow::statusText() const
         parts << tr("Idle (last frame %1 ms)").arg(m_viewport->lastFrameMilliseconds(), 0, 'f', 0);
     if (m_turntable.isActive())
         parts << tr("Turntable");
-    if (!m_viewport->linesShown())
+    if (!m_viewport->display().linesShown())
         parts << tr("No lines");
     if (m_viewport->isPreview())
         parts << tr("Preview");

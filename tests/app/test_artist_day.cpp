@@ -13,6 +13,9 @@
 #include "celform/views/tools/brush_cursor.h"
 #include "celform/views/tools/brush_tool.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/overlays/drawing_overlay.h"
+#include "celform/views/tools/brush_size.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>
@@ -104,7 +107,7 @@ private slots:
         const model::Drawing contourBefore = *doc->data().drawing(contour);
 
         QVERIFY(clickSceneItem(window, QStringLiteral("tuxpaint_elephant")));
-        QCOMPARE(viewport->overlayDrawing(), tux);
+        QCOMPARE(viewport->drawingOverlay().drawing(), tux);
         window.propertiesPanel()->alignButton()->click();
         QCOMPARE(viewport->tool(), Viewport::Tool::Align);
         auto* banner = viewport->findChild<QLabel*>(QStringLiteral("alignBanner"));
@@ -114,7 +117,7 @@ private slots:
         const int steps = doc->undoStack()->index();
 
         QVERIFY(clickSceneItem(window, QStringLiteral("openclipart_contour_elephant")));
-        QCOMPARE(viewport->overlayDrawing(), contour);
+        QCOMPARE(viewport->drawingOverlay().drawing(), contour);
         test::waitForRender(viewport);
         QCOMPARE(doc->undoStack()->index(), steps); // no "Align Drawing" step
         QVERIFY(*doc->data().drawing(contour) == contourBefore);
@@ -429,11 +432,12 @@ private slots:
         QTest::mouseMove(viewport, c);
         QMouseEvent hover(QEvent::MouseMove, c, viewport->mapToGlobal(c), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
         QApplication::sendEvent(viewport, &hover);
-        const views::BrushCursor* circle = viewport->brushTool()->cursorCircle();
+        const views::BrushCursor* circle = viewport->tool<views::BrushTool>().cursorCircle();
         QTRY_VERIFY(circle->isVisible());
         const auto hit = viewport->pickSurface(c);
         QVERIFY(hit);
-        const double expected = viewport->brushRadius() / viewport->worldUnitsPerPixel(hit->second);
+        const double expected
+            = viewport->tool<views::BrushTool>().size().radius() / viewport->worldUnitsPerPixel(hit->second);
         QVERIFY2(std::abs(circle->radiusPixels() - expected) < 0.5,
             qPrintable(QStringLiteral("%1 vs %2").arg(circle->radiusPixels()).arg(expected)));
         test::keepScreenshot(&window, "artist-day-brush-circle");
@@ -441,15 +445,15 @@ private slots:
         // F, a move away from the centre, a click: the new radius is the distance from the centre.
         viewport->setFocus();
         QTest::keyClick(viewport, Qt::Key_F);
-        QVERIFY(viewport->brushTool()->isResizing());
-        const double radiusBefore = viewport->brushRadius();
+        QVERIFY(viewport->tool<views::BrushTool>().isResizing());
+        const double radiusBefore = viewport->tool<views::BrushTool>().size().radius();
         const QPoint out = c + QPoint(int(expected) + 40, 0);
         QMouseEvent away(
             QEvent::MouseMove, out, viewport->mapToGlobal(out), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
         QApplication::sendEvent(viewport, &away);
-        QVERIFY(viewport->brushRadius() > radiusBefore * 1.2);
+        QVERIFY(viewport->tool<views::BrushTool>().size().radius() > radiusBefore * 1.2);
         QTest::mouseClick(viewport, Qt::LeftButton, {}, out);
-        QVERIFY(!viewport->brushTool()->isResizing());
+        QVERIFY(!viewport->tool<views::BrushTool>().isResizing());
         const int steps = doc->undoStack()->index();
         QCOMPARE(doc->undoStack()->index(), steps); // resizing is not an edit
 
@@ -531,10 +535,10 @@ private slots:
         app::MainWindow window(app::MainWindow::Mode::Batch);
         QVERIFY(showActive(window));
         Viewport* viewport = window.viewport();
-        QCOMPARE(viewport->stereo(), algo::StereoOutput::Off);
+        QCOMPARE(viewport->display().stereo(), algo::StereoOutput::Off);
         viewport->setFocus();
         QTest::keyClick(viewport, Qt::Key_3, Qt::ControlModifier);
-        QCOMPARE(viewport->stereo(), algo::StereoOutput::Anaglyph);
+        QCOMPARE(viewport->display().stereo(), algo::StereoOutput::Anaglyph);
         QVERIFY(window.action(QStringLiteral("actionStereoAnaglyph"))->isChecked());
         test::waitForRender(viewport);
         // Anaglyph: red and cyan fringes where the eyes disagree.
@@ -548,12 +552,12 @@ private slots:
             }
         QVERIFY(fringes > 50);
         window.action(QStringLiteral("actionStereoSideBySide"))->trigger();
-        QCOMPARE(viewport->stereo(), algo::StereoOutput::SideBySide);
+        QCOMPARE(viewport->display().stereo(), algo::StereoOutput::SideBySide);
         QTest::keyClick(viewport, Qt::Key_3, Qt::ControlModifier);
-        QCOMPARE(viewport->stereo(), algo::StereoOutput::Off);
+        QCOMPARE(viewport->display().stereo(), algo::StereoOutput::Off);
         QVERIFY(window.action(QStringLiteral("actionStereoOff"))->isChecked());
         QTest::keyClick(viewport, Qt::Key_3, Qt::ControlModifier);
-        QCOMPARE(viewport->stereo(), algo::StereoOutput::SideBySide); // the last mode comes back
+        QCOMPARE(viewport->display().stereo(), algo::StereoOutput::SideBySide); // the last mode comes back
     }
 
     // Empty states: the viewport says what to do next.
@@ -590,7 +594,7 @@ private slots:
         const QImage full = viewport->renderedImage();
         viewport->setFocus();
         QTest::keyClick(viewport, Qt::Key_O);
-        QVERIFY(viewport->overlayOutline());
+        QVERIFY(viewport->drawingOverlay().outline());
         test::waitForRender(viewport);
         const QImage outline = viewport->renderedImage();
         int magenta = 0;
@@ -604,7 +608,7 @@ private slots:
         QVERIFY(outline != full);
         test::keepScreenshot(&window, "artist-day-aligning-outline");
         QTest::keyClick(viewport, Qt::Key_O);
-        QVERIFY(!viewport->overlayOutline());
+        QVERIFY(!viewport->drawingOverlay().outline());
 
         const Eigen::Vector3d upBefore = viewport->camera().trueUp();
         const QPoint c = viewport->rect().center();

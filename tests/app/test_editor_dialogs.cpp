@@ -19,6 +19,9 @@
 #include "celform/model/document/document.h"
 #include "celform/model/io/project_file.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/tools/brush_size.h"
+#include "celform/views/tools/brush_tool.h"
+#include "celform/views/viewport/viewport_display.h"
 #include "celform/views/viewport/viewport_keys.h"
 
 #include <QAction>
@@ -376,20 +379,20 @@ private slots:
         app::MainWindow window(app::MainWindow::Mode::Batch);
         QVERIFY(test::showSample(window, QSize(1200, 800)));
         views::Viewport* vp = window.viewport();
-        const double radius = vp->brushRadius();
+        const double radius = vp->tool<views::BrushTool>().size().radius();
         for (const views::ViewportKeyBinding& binding : views::viewportKeyBindings()) {
             if (binding.command != views::ViewportKeyCommand::BrushLarger)
                 continue;
             QKeyEvent press(QEvent::KeyPress, binding.key, Qt::NoModifier);
             QApplication::sendEvent(vp, &press);
         }
-        QCOMPARE(vp->brushRadius(), radius * 1.25);
+        QCOMPARE(vp->tool<views::BrushTool>().size().radius(), radius * 1.25);
         // The review's keys: S steps the stereo mode, as its table says.
         app::ReviewWindow review(window.document(), vp->camera());
-        const auto before = review.viewport()->stereo();
+        const auto before = review.viewport()->display().stereo();
         QKeyEvent s(QEvent::KeyPress, Qt::Key_S, Qt::NoModifier);
         QApplication::sendEvent(review.viewport(), &s);
-        QCOMPARE(review.viewport()->stereo(), app::ReviewWindow::nextOutput(before));
+        QCOMPARE(review.viewport()->display().stereo(), app::ReviewWindow::nextOutput(before));
     }
 
     // --- Edit > Preferences ----------------------------------------------------------------------
@@ -401,8 +404,8 @@ private slots:
         QUndoStack* stack = window.document()->undoStack();
         QCOMPARE(stack->count(), 0);
         // The defaults: Maya navigation, turntable orbit, no undo limit.
-        QCOMPARE(window.viewport()->navigationStyle(), views::NavigationStyle::Maya);
-        QCOMPARE(window.viewport()->orbitMode(), views::OrbitMode::Turntable);
+        QCOMPARE(window.viewport()->navigation().style, views::NavigationStyle::Maya);
+        QCOMPARE(window.viewport()->navigation().orbitMode, views::OrbitMode::Turntable);
 
         auto* dialog = openPreferences(window);
         QVERIFY(dialog);
@@ -436,10 +439,10 @@ private slots:
 
         // ... and applied to the live window: both viewports, the history, the action.
         for (views::Viewport* vp : {window.viewport(), window.observer()}) {
-            QCOMPARE(vp->navigationStyle(), views::NavigationStyle::Blender);
-            QCOMPARE(vp->orbitMode(), views::OrbitMode::Trackball);
-            QCOMPARE(vp->orbitSpeed(), 2.0);
-            QVERIFY(vp->orbitAroundCursor());
+            QCOMPARE(vp->navigation().style, views::NavigationStyle::Blender);
+            QCOMPARE(vp->navigation().orbitMode, views::OrbitMode::Trackball);
+            QCOMPARE(vp->navigation().orbitSpeed, 2.0);
+            QVERIFY(vp->navigation().orbitAroundCursor);
         }
         QCOMPARE(stack->undoLimit(), 50);
         QCOMPARE(window.action(QStringLiteral("actionSaveAs"))->shortcut(), newKey);
@@ -468,14 +471,14 @@ private slots:
         auto* review = window.findChild<app::ReviewWindow*>();
         QVERIFY(review);
         QTRY_VERIFY(review->isVisible());
-        QCOMPARE(review->viewport()->orbitMode(), views::OrbitMode::Trackball);
-        QCOMPARE(review->viewport()->navigationStyle(), views::NavigationStyle::Blender);
+        QCOMPARE(review->viewport()->navigation().orbitMode, views::OrbitMode::Trackball);
+        QCOMPARE(review->viewport()->navigation().style, views::NavigationStyle::Blender);
         review->close();
 
         // The next start applies them (a new window reads the stored preferences).
         app::MainWindow next(app::MainWindow::Mode::Batch);
         QCOMPARE(next.action(QStringLiteral("actionSaveAs"))->shortcut(), newKey);
-        QCOMPARE(next.viewport()->orbitMode(), views::OrbitMode::Trackball);
+        QCOMPARE(next.viewport()->navigation().orbitMode, views::OrbitMode::Trackball);
         QCOMPARE(next.document()->undoStack()->undoLimit(), 50);
 
         // Restore Defaults and OK put everything back.
@@ -485,7 +488,7 @@ private slots:
         okButton(dialog)->click();
         QCOMPARE(
             window.action(QStringLiteral("actionSaveAs"))->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
-        QCOMPARE(window.viewport()->orbitMode(), views::OrbitMode::Turntable);
+        QCOMPARE(window.viewport()->navigation().orbitMode, views::OrbitMode::Turntable);
         QCOMPARE(stack->undoLimit(), 0);
         QVERIFY(!QSettings().contains(QStringLiteral("shortcuts/actionSaveAs")));
     }

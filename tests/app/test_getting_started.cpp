@@ -10,6 +10,7 @@
 #include "celform/views/panels/properties_panel.h"
 #include "celform/views/panels/scene_panel.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/overlays/drawing_overlay.h"
 
 #include <QAction>
 #include <QDialog>
@@ -64,7 +65,7 @@ private slots:
         const QPoint c = viewport->rect().center();
         test::drag(viewport, Qt::LeftButton, Qt::AltModifier, c, c + QPoint(-12, 4));
         window.action(QStringLiteral("actionDrawingOutline"))->trigger();
-        QVERIFY(viewport->overlayOutline());
+        QVERIFY(viewport->drawingOverlay().outline());
         QVERIFY(shoot(window, QStringLiteral("getting-started-2-align.png")));
         made << QStringLiteral("getting-started-2-align.png");
         window.action(QStringLiteral("actionDrawingOutline"))->trigger();

@@ -13,6 +13,8 @@
 #include "celform/model/render/render_output.h"
 #include "celform/views/panels/highlight_panel.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/tools/brush_size.h"
+#include "celform/views/tools/brush_tool.h"
 
 #include <QApplication>
 #include <QDockWidget>
@@ -94,7 +96,7 @@ private slots:
         auto* paint = panel->findChild<QToolButton*>(QStringLiteral("highlightPaintPatch"));
         paint->click();
         QCOMPARE(vp->tool(), views::Viewport::Tool::Patch);
-        vp->setBrushRadius(0.12);
+        vp->tool<views::BrushTool>().size().setRadius(0.12);
         const QPoint ear = vp->projectToWidget(kEarCentre).toPoint();
         drag(vp, Qt::LeftButton, Qt::NoModifier, ear, ear, 1);
         const QString patch = doc->data().look.highlights.front().patch;

@@ -11,6 +11,8 @@
 #include "celform/views/tools/brush_cursor.h"
 #include "celform/views/tools/offset_brush_tool.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/tools/brush_size.h"
+#include "celform/views/tools/brush_tool.h"
 
 #include <QAction>
 #include <QUndoStack>
@@ -56,15 +58,15 @@ private slots:
         const QPoint c = viewport->projectToWidget(viewport->modelCentre()).toPoint();
         QMouseEvent hover(QEvent::MouseMove, c, viewport->mapToGlobal(c), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
         QApplication::sendEvent(viewport, &hover);
-        QTRY_VERIFY(viewport->offsetBrushTool()->cursorCircle()->isVisible());
+        QTRY_VERIFY(viewport->tool<views::OffsetBrushTool>().cursorCircle()->isVisible());
         const auto hit = viewport->pickSurface(c);
         QVERIFY(hit);
 
         const int steps = doc->undoStack()->count();
-        viewport->offsetBrushTool()->setStrength(0.3);
+        viewport->tool<views::OffsetBrushTool>().setStrength(0.3);
         test::drag(viewport, Qt::LeftButton, Qt::NoModifier, c, c + QPoint(12, 4), 8);
         QCOMPARE(doc->undoStack()->count(), steps + 1); // one stroke, one step
-        const float painted = largestNear(doc->data(), hit->second, viewport->brushRadius());
+        const float painted = largestNear(doc->data(), hit->second, viewport->tool<views::BrushTool>().size().radius());
         QVERIFY2(painted > 0.2f, qPrintable(QString::number(double(painted))));
         test::waitForRender(viewport);
         QVERIFY(viewport->renderedImage() != clean); // the picture shows it
@@ -73,7 +75,8 @@ private slots:
         // Ctrl+drag subtracts: a second step, lower values.
         test::drag(viewport, Qt::LeftButton, Qt::ControlModifier, c, c + QPoint(12, 4), 8);
         QCOMPARE(doc->undoStack()->count(), steps + 2);
-        QVERIFY(largestNear(doc->data(), hit->second, viewport->brushRadius() * 0.2) < painted);
+        QVERIFY(
+            largestNear(doc->data(), hit->second, viewport->tool<views::BrushTool>().size().radius() * 0.2) < painted);
 
         // Undo both: no offsets, the clean picture again.
         doc->undoStack()->undo();

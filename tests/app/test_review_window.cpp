@@ -8,6 +8,7 @@
 
 #include "celform/model/document/document.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include <QAction>
 #include <QApplication>
@@ -96,7 +97,7 @@ private slots:
         QVERIFY(review.width() >= 800);
         views::Viewport* vp = review.viewport();
         test::waitForRender(vp);
-        QCOMPARE(vp->stereo(), algo::StereoOutput::Anaglyph);
+        QCOMPARE(vp->display().stereo(), algo::StereoOutput::Anaglyph);
 
         // S cycles the outputs and comes back to anaglyph.
         const algo::StereoOutput expected[]
@@ -104,26 +105,29 @@ private slots:
                 algo::StereoOutput::TopBottom, algo::StereoOutput::Off, algo::StereoOutput::Anaglyph};
         for (algo::StereoOutput output : expected) {
             press(vp, Qt::Key_S);
-            QCOMPARE(vp->stereo(), output);
+            QCOMPARE(vp->display().stereo(), output);
         }
 
         // L toggles lines, P the preview, [ and ] the review's interocular only.
-        const bool lines = vp->linesShown();
+        const bool lines = vp->display().linesShown();
         press(vp, Qt::Key_L);
-        QCOMPARE(vp->linesShown(), !lines);
+        QCOMPARE(vp->display().linesShown(), !lines);
         press(vp, Qt::Key_L);
-        QCOMPARE(vp->linesShown(), lines);
+        QCOMPARE(vp->display().linesShown(), lines);
         press(vp, Qt::Key_P);
         QVERIFY(vp->isPreview());
         press(vp, Qt::Key_P);
         QVERIFY(!vp->isPreview());
-        const double interocular = vp->resolvedStereoSettings().interocular;
+        const double interocular = vp->display().resolvedStereoSettings().interocular;
         press(vp, Qt::Key_BracketRight);
-        QVERIFY(std::abs(vp->resolvedStereoSettings().interocular - 1.1 * interocular) < 1e-9 * (1 + interocular));
+        QVERIFY(std::abs(vp->display().resolvedStereoSettings().interocular - 1.1 * interocular)
+            < 1e-9 * (1 + interocular));
         press(vp, Qt::Key_BracketLeft);
         press(vp, Qt::Key_BracketLeft);
-        QVERIFY(std::abs(vp->resolvedStereoSettings().interocular - interocular / 1.1) < 1e-9 * (1 + interocular));
-        QVERIFY(review.statusText().contains(QString::number(vp->resolvedStereoSettings().interocular, 'g', 3)));
+        QVERIFY(std::abs(vp->display().resolvedStereoSettings().interocular - interocular / 1.1)
+            < 1e-9 * (1 + interocular));
+        QVERIFY(
+            review.statusText().contains(QString::number(vp->display().resolvedStereoSettings().interocular, 'g', 3)));
         QVERIFY(doc.data().look == lookBefore);
 
         // H shows and hides the help.

@@ -10,6 +10,7 @@
 #include "celform/model/document/document.h"
 #include "celform/views/panels/look_panel.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include <QAction>
 #include <QApplication>
@@ -66,10 +67,10 @@ private slots:
         QVERIFY(!doc->data().look.showLines);
 
         // 3. A drag of the light gizmo (Ctrl+drag on its handle).
-        viewport->setLightGizmoVisible(true);
+        viewport->display().setLightGizmoVisible(true);
         test::waitForRender(viewport);
         const Eigen::Vector3d lightBefore = doc->data().look.light.vector;
-        const QPoint handle = viewport->projectToWidget(viewport->lightGizmoHandle()).toPoint();
+        const QPoint handle = viewport->projectToWidget(viewport->display().lightGizmoHandle()).toPoint();
         QVERIFY(viewport->rect().contains(handle));
         test::drag(viewport, Qt::LeftButton, Qt::ControlModifier, handle, handle + QPoint(-40, 25), 8);
         QVERIFY((doc->data().look.light.vector - lightBefore).norm() > 0.05);

@@ -13,6 +13,8 @@
 #include "celform/views/panels/properties_panel.h"
 #include "celform/views/panels/scene_panel.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/overlays/drawing_overlay.h"
+#include "celform/views/tools/align_tool.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -44,7 +46,7 @@ private slots:
         // 1. Align (paper 1, section 3.1.1): the drawing is shown fixed in the viewport and the
         // camera, moved by the artist, is stored with it.
         window.scenePanel()->select({views::ScenePanel::ItemKind::Drawing, drawing});
-        QCOMPARE(vp->overlayDrawing(), drawing);
+        QCOMPARE(vp->drawingOverlay().drawing(), drawing);
         props->alignButton()->click();
         QCOMPARE(vp->tool(), views::Viewport::Tool::Align);
         model::Camera side = vp->camera();
@@ -134,7 +136,7 @@ private slots:
         window.scenePanel()->select({views::ScenePanel::ItemKind::Drawing, drawing.id});
         props->matchPointsButton()->click();
         QCOMPARE(vp->tool(), views::Viewport::Tool::Align);
-        QVERIFY(vp->isPointMatching());
+        QVERIFY(vp->tool<views::AlignTool>().isPointMatching());
         waitForRender(vp);
 
         const auto& base = doc->data().baseMesh->vertices;
@@ -151,15 +153,18 @@ private slots:
             const QPointF at = vp->projectToWidget(base.row(v).cast<double>().transpose());
             if (!vp->rect().contains(at.toPoint()))
                 continue;
-            const size_t before = vp->matchedModelPoints().size();
+            const size_t before = vp->tool<views::AlignTool>().matchedModelPoints().size();
             QTest::mouseClick(vp, Qt::LeftButton, Qt::NoModifier, at.toPoint());
-            if (vp->matchedModelPoints().size() == before)
+            if (vp->tool<views::AlignTool>().matchedModelPoints().size() == before)
                 continue;
-            const Eigen::Vector2d pixel = algo::projectToImage(
-                truth, vp->matchedModelPoints().back(), drawing.image.width(), drawing.image.height());
-            QTest::mouseClick(vp, Qt::LeftButton, Qt::ShiftModifier, vp->drawingToWidget(pixel).toPoint());
-            if (vp->matchedDrawingPoints().size() != vp->matchedModelPoints().size()) {
-                vp->removeLastMatchedPoint(); // the feature fell outside the drawing
+            const Eigen::Vector2d pixel
+                = algo::projectToImage(truth, vp->tool<views::AlignTool>().matchedModelPoints().back(),
+                    drawing.image.width(), drawing.image.height());
+            QTest::mouseClick(
+                vp, Qt::LeftButton, Qt::ShiftModifier, vp->drawingOverlay().drawingToWidget(pixel).toPoint());
+            if (vp->tool<views::AlignTool>().matchedDrawingPoints().size()
+                != vp->tool<views::AlignTool>().matchedModelPoints().size()) {
+                vp->tool<views::AlignTool>().removeLastMatchedPoint(); // the feature fell outside the drawing
                 continue;
             }
             ++placed;

@@ -71,6 +71,7 @@ check("views/${V}/overlays"
 check("views/${V}/tools"
   "^${V}/(panels|timeline)/"
   "tools talk to the viewport, not to the docks")
+check("views/${V}/panels" "^${V}/tools/" "panels edit the document; tools belong to the viewport")
 check("views/${V}/viewport"
   "^${V}/(panels|timeline)/"
   "the viewport does not know the docks")

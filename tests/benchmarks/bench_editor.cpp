@@ -4,11 +4,18 @@
 // - brush step: one mouse move of a brush stroke on a key, on the bundled elephant sample and on
 //   the 871k-triangle dragon with about 5,000 vertices in the radius. Baseline in the same run: the
 //   same step through a document nobody listens to (Document::applyBrushStroke alone).
+// - brush step with upload: the same step followed by what the next paint does first, bringing
+//   the viewport's VTK arrays up to date (the displayed shape's touched rows and their normals),
+//   on the elephant and on the dragon with about 500 and about 5,000 vertices in the radius: the
+//   cost follows the brush, not the mesh. (The GL draw itself, VTK's buffer upload and the
+//   rasterisation, is not in it.)
 // - highlight spin-box step: one step of the Highlights dock's epsilon spin box on the armadillo
 //   with three layers, with the number of change notifications it caused. Baseline: the same key
 //   edit through a document nobody listens to.
 #include "celform/model/document/document.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/tools/brush_size.h"
+#include "celform/views/tools/brush_tool.h"
 
 #include "bench_data.h"
 #include "bench_gui.h"
@@ -99,7 +106,8 @@ BrushRun startStroke(app::MainWindow& w, model::ProjectData data, std::size_t ra
     if (picked < 0)
         return {};
     if (radiusVertices > 0)
-        vp.setBrushRadius(radiusFor(vp.displayedShape(), std::uint32_t(picked), radiusVertices));
+        vp.tool<views::BrushTool>().size().setRadius(
+            radiusFor(vp.displayedShape(), std::uint32_t(picked), radiusVertices));
     QMouseEvent press(
         QEvent::MouseButtonPress, centre, vp.mapToGlobal(centre), Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
     QApplication::sendEvent(&vp, &press);
@@ -125,8 +133,9 @@ void endStroke(app::MainWindow& w)
     awaitFrame(vp); // the frames the steps asked for, outside the timing
 }
 
-/// One mouse move per iteration, alternating right and left by two pixels.
-void brushSteps(benchmark::State& state, model::ProjectData data, std::size_t radiusVertices)
+/// One mouse move per iteration, alternating right and left by two pixels; withUpload: each
+/// followed by the viewport's scene sync a paint starts with (its VTK arrays updated).
+void brushSteps(benchmark::State& state, model::ProjectData data, std::size_t radiusVertices, bool withUpload = false)
 {
     app::MainWindow* w = window();
     if (!w) {
@@ -146,6 +155,8 @@ void brushSteps(benchmark::State& state, model::ProjectData data, std::size_t ra
         dx = dx == 3 ? 1 : 3;
         QMouseEvent move(QEvent::MouseMove, p, vp.mapToGlobal(p), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
         QApplication::sendEvent(&vp, &move);
+        if (withUpload)
+            benchmark::DoNotOptimize(vp.displayedShape().data()); // brings the scene in step first
     }
     state.counters["selected"] = double(run.selected);
     endStroke(*w);
@@ -208,6 +219,20 @@ void BM_BrushStepDragon(benchmark::State& state)
         return;
     }
     brushSteps(state, meshData(bench::dragon(), "stanford_dragon.ply"), 5000);
+}
+
+void BM_BrushStepElephantWithUpload(benchmark::State& state)
+{
+    brushSteps(state, sampleData(), 0, true);
+}
+
+void BM_BrushStepDragonWithUpload(benchmark::State& state)
+{
+    if (!bench::dragon()) {
+        state.SkipWithError("shared test data not found (../shared/data)");
+        return;
+    }
+    brushSteps(state, meshData(bench::dragon(), "stanford_dragon.ply"), std::size_t(state.range(0)), true);
 }
 
 void BM_BrushStepDragonDocumentOnly(benchmark::State& state)
@@ -313,6 +338,8 @@ BENCHMARK(BM_BrushStepElephant)->Apply(microseconds);
 BENCHMARK(BM_BrushStepElephantDocumentOnly)->Apply(microseconds);
 BENCHMARK(BM_BrushStepDragon)->Apply(microseconds);
 BENCHMARK(BM_BrushStepDragonDocumentOnly)->Apply(microseconds);
+BENCHMARK(BM_BrushStepElephantWithUpload)->Apply(microseconds);
+BENCHMARK(BM_BrushStepDragonWithUpload)->Arg(500)->Arg(5000)->Apply(microseconds);
 BENCHMARK(BM_HighlightSpinStep)->Apply(microseconds);
 BENCHMARK(BM_HighlightSpinStepDocumentOnly)->Apply(microseconds);
 

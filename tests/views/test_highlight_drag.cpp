@@ -4,6 +4,11 @@
 #include "celform/model/document/document.h"
 #include "celform/views/panels/highlight_panel.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/tools/brush_size.h"
+#include "celform/views/tools/brush_tool.h"
+#include "celform/views/tools/highlight_tool.h"
+#include "celform/views/tools/patch_tool.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include "test_meshes.h"
 
@@ -20,6 +25,15 @@ using celform::algo::HighlightOperationType;
 using celform::model::Document;
 using celform::views::HighlightPanel;
 using celform::views::Viewport;
+
+/// What the editor window does: the dock's targets go to the viewport's tools.
+void connectTargets(HighlightPanel& panel, Viewport& view)
+{
+    QObject::connect(&panel, &HighlightPanel::highlightTargetChosen, &view,
+        [&view](celform::model::ObjectId layer) { view.tool<celform::views::HighlightTool>().setTarget(layer); });
+    QObject::connect(&panel, &HighlightPanel::patchTargetChosen, &view,
+        [&view](const QString& faceSet) { view.tool<celform::views::PatchTool>().setTarget(faceSet); });
+}
 
 class TestHighlightDrag : public QObject {
     Q_OBJECT
@@ -50,7 +64,7 @@ class TestHighlightDrag : public QObject {
             track.setKey(frame, celform::algo::HighlightLayer{});
         data.look.highlights.push_back(track);
         doc.reset(std::move(data));
-        view.setLightGizmoVisible(false);
+        view.display().setLightGizmoVisible(false);
         view.resize(400, 400);
         view.show();
         QVERIFY(QTest::qWaitForWindowExposed(&view));
@@ -76,6 +90,7 @@ private slots:
             return;
 
         HighlightPanel panel(&doc);
+        connectTargets(panel, view);
         panel.setViewport(&view);
         panel.selectLayer(0);
         panel.setCurrentFrame(10);
@@ -144,6 +159,7 @@ private slots:
         green.color = {0.0f, 1.0f, 0.0f};
         doc.setHighlightKey(doc.data().look.highlights.front().id, 0, green);
         HighlightPanel panel(&doc);
+        connectTargets(panel, view);
         panel.setViewport(&view);
         panel.selectLayer(0);
         panel.findChild<QPushButton*>(QStringLiteral("highlightEditInViewport"))->click();
@@ -185,9 +201,10 @@ private slots:
         showSphereWithLayer(doc, view, {0.0});
         if (QTest::currentTestFailed())
             return;
-        view.setBrushRadius(0.15);
+        view.tool<celform::views::BrushTool>().size().setRadius(0.15);
 
         HighlightPanel panel(&doc);
+        connectTargets(panel, view);
         panel.setViewport(&view);
         panel.selectLayer(0);
         auto* paint = panel.findChild<QToolButton*>(QStringLiteral("highlightPaintPatch"));
@@ -199,7 +216,7 @@ private slots:
         QCOMPARE(doc.undoStack()->index(), steps + 1);
         const QString patch = doc.data().look.highlights.front().patch;
         QCOMPARE(patch, QStringLiteral("spot patch"));
-        QCOMPARE(view.patchTarget(), patch);
+        QCOMPARE(view.tool<celform::views::PatchTool>().target(), patch);
         QVERIFY(doc.data().faceSet(patch) && doc.data().faceSet(patch)->faces.empty());
 
         // One drag across the front: faces under the brush, all on the visible side, one step.

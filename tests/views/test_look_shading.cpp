@@ -6,6 +6,7 @@
 #include "celform/model/io/mesh_io.h"
 #include "celform/model/render/render_output.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include "test_support.h"
 #include "test_meshes.h"
@@ -204,7 +205,7 @@ private slots:
     {
         m_doc = std::make_unique<Document>();
         m_view = std::make_unique<Viewport>(m_doc.get());
-        m_view->setLightGizmoVisible(false);
+        m_view->display().setLightGizmoVisible(false);
         m_view->resize(kSize, kSize);
         m_view->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
@@ -225,8 +226,8 @@ private slots:
     {
         if (m_doc->data().baseMesh != m_sphere)
             useMesh(m_sphere, sphereCamera());
-        m_view->setShadingEnabled(true);
-        m_view->setLightGizmoVisible(false);
+        m_view->display().setShadingEnabled(true);
+        m_view->display().setLightGizmoVisible(false);
         setLook(baseLook());
     }
 
@@ -339,10 +340,10 @@ private slots:
                 QVERIFY2(
                     images[i] != images[j], qPrintable(QStringLiteral("styles %1 and %2 look the same").arg(i).arg(j)));
         // Clay: the look switched off shows something else again, and back on the same toon.
-        m_view->setShadingEnabled(false);
+        m_view->display().setShadingEnabled(false);
         const QImage clay = frame();
         QVERIFY(clay != images[0]);
-        m_view->setShadingEnabled(true);
+        m_view->display().setShadingEnabled(true);
         setLook(baseLook());
         QCOMPARE(frame(), images[0]);
     }
@@ -809,11 +810,11 @@ private slots:
         Look look = baseLook();
         look.light.vector = Eigen::Vector3d(0.2, 0.3, 0.93).normalized();
         setLook(look);
-        m_view->setLightGizmoVisible(true);
+        m_view->display().setLightGizmoVisible(true);
         frame();
         const Eigen::Vector3d before = m_doc->data().look.light.vector;
         const int undoCount = m_doc->undoStack()->count();
-        const QPoint from = m_view->projectToWidget(m_view->lightGizmoHandle()).toPoint();
+        const QPoint from = m_view->projectToWidget(m_view->display().lightGizmoHandle()).toPoint();
         QVERIFY(QRect(0, 0, kSize, kSize).contains(from));
         const QPoint to = from + QPoint(-60, 30);
         QMouseEvent press(QEvent::MouseButtonPress, from, m_view->mapToGlobal(from), Qt::LeftButton, Qt::LeftButton,
@@ -832,7 +833,7 @@ private slots:
         QVERIFY2((after - before).norm() > 0.1, "the drag did not move the light");
         QVERIFY(std::abs(after.norm() - 1.0) < 1e-6); // a direction stays a unit vector
         // The handle followed the cursor.
-        const QPointF handle = m_view->projectToWidget(m_view->lightGizmoHandle());
+        const QPointF handle = m_view->projectToWidget(m_view->display().lightGizmoHandle());
         QVERIFY2(QLineF(handle, QPointF(to)).length() < 3.0,
             qPrintable(QStringLiteral("handle at %1,%2").arg(handle.x()).arg(handle.y())));
         QVERIFY(m_doc->undoStack()->count() <= undoCount + 1); // one drag, one undo step
@@ -840,7 +841,7 @@ private slots:
         // Consecutive look edits merge (kLookId), so undo may also take back the look set above.
         m_doc->undoStack()->undo();
         QVERIFY((m_doc->data().look.light.vector - after).norm() > 0.1);
-        m_view->setLightGizmoVisible(false);
+        m_view->display().setLightGizmoVisible(false);
     }
 
     void screenshotsOnARealMesh()
@@ -869,9 +870,9 @@ private slots:
             frame().save(QStringLiteral("/tmp/look_%1.png").arg(QLatin1String(name)));
             cpuImage().save(QStringLiteral("/tmp/look_%1_cpu.png").arg(QLatin1String(name)));
         }
-        m_view->setLightGizmoVisible(true);
+        m_view->display().setLightGizmoVisible(true);
         frame().save(QStringLiteral("/tmp/look_elephant_gizmo.png"));
-        m_view->setLightGizmoVisible(false);
+        m_view->display().setLightGizmoVisible(false);
     }
 };
 

@@ -6,6 +6,9 @@
 #include "celform/model/document/document.h"
 #include "celform/model/render/render_output.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/tools/brush_size.h"
+#include "celform/views/tools/brush_tool.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include "test_meshes.h"
 #include "ui_test_support.h"
@@ -143,7 +146,7 @@ private slots:
         m_doc = std::make_unique<Document>();
         m_doc->reset(std::move(data));
         m_view = std::make_unique<Viewport>(m_doc.get());
-        m_view->setLightGizmoVisible(false);
+        m_view->display().setLightGizmoVisible(false);
         m_view->resize(kSize, kSize);
         m_view->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
@@ -211,7 +214,7 @@ private slots:
         m_doc->setCurrentFrame(5);
         m_view->setDisplayedKey(m_key);
         m_view->setTool(Viewport::Tool::Brush);
-        m_view->setBrushRadius(0.6);
+        m_view->tool<celform::views::BrushTool>().size().setRadius(0.6);
         frame();
         const KeyViewpoint before = *m_doc->data().key(m_key);
         const Positions shown = m_view->displayedShape();
@@ -252,7 +255,7 @@ private slots:
     {
         m_view->setDisplayedKey(m_key);
         m_view->setTool(Viewport::Tool::Brush);
-        m_view->setBrushRadius(0.5);
+        m_view->tool<celform::views::BrushTool>().size().setRadius(0.5);
         frame();
         QSignalSpy changes(m_doc.get(), &Document::changed);
         const QPoint centre(kSize / 2, kSize / 2);

@@ -5,6 +5,7 @@
 #include "celform/model/document/document.h"
 #include "celform/views/overlays/line_overlay.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include "test_support.h"
 
@@ -172,14 +173,14 @@ private slots:
         QFETCH(bool, lines);
         setLook(lines, 0.3);
         m_view->setCamera(m_camera);
-        m_view->setStereo(StereoOutput::Anaglyph);
+        m_view->display().setStereo(StereoOutput::Anaglyph);
         const QImage composed = frame();
         QCOMPARE(composed.size(), QSize(400, 300) * m_view->devicePixelRatio());
-        m_view->setEyeOnly(Viewport::Eye::Left);
+        m_view->display().setEyeOnly(celform::views::ViewportDisplay::Eye::Left);
         const QImage left = frame();
-        m_view->setEyeOnly(Viewport::Eye::Right);
+        m_view->display().setEyeOnly(celform::views::ViewportDisplay::Eye::Right);
         const QImage right = frame();
-        m_view->setEyeOnly(Viewport::Eye::Both);
+        m_view->display().setEyeOnly(celform::views::ViewportDisplay::Eye::Both);
         composed.save(QStringLiteral("/tmp/stereo_anaglyph%1.png").arg(lines ? "_lines" : ""));
         left.save(QStringLiteral("/tmp/stereo_left%1.png").arg(lines ? "_lines" : ""));
         right.save(QStringLiteral("/tmp/stereo_right%1.png").arg(lines ? "_lines" : ""));
@@ -193,14 +194,14 @@ private slots:
                 celform::views::toLinear(right.convertToFormat(QImage::Format_RGBA8888))));
         for (int c = 0; c < 3; ++c)
             QVERIFY(maxChannelDifference(composed, cpu, c) <= 2);
-        m_view->setStereo(StereoOutput::Off);
+        m_view->display().setStereo(StereoOutput::Off);
     }
 
     void disparity()
     {
         setLook(false, 0.3);
         m_view->setCamera(m_camera);
-        m_view->setStereo(StereoOutput::Anaglyph);
+        m_view->display().setStereo(StereoOutput::Anaglyph);
         const QImage image = frame().convertToFormat(QImage::Format_RGBA8888);
         const int w = image.width(), h = image.height();
         // Red channel dark = the left eye sees a sphere there; cyan (green) = the right eye.
@@ -225,7 +226,7 @@ private slots:
         qInfo("near sphere disparity %.2f px, expected %.2f px", measured, expected);
         QVERIFY2(measured > 0.0, "crossed disparity in front of the convergence plane");
         QVERIFY(std::abs(measured - expected) < 1.5);
-        m_view->setStereo(StereoOutput::Off);
+        m_view->display().setStereo(StereoOutput::Off);
     }
 
     void linesFollowSilhouettes()
@@ -238,7 +239,7 @@ private slots:
         c.eye = Eigen::Vector3d(0, 0, 1.5);
         c.target = Eigen::Vector3d(0, 0, -2);
         m_view->setCamera(c);
-        m_view->setStereo(StereoOutput::Off);
+        m_view->display().setStereo(StereoOutput::Off);
         const QImage with = frame().convertToFormat(QImage::Format_RGBA8888);
         with.save(QStringLiteral("/tmp/stereo_lines_mono.png"));
         setLook(false, 0.3, red);
@@ -295,7 +296,7 @@ private slots:
         QFETCH(int, output);
         setLook(true, 0.3);
         m_view->setCamera(m_camera);
-        m_view->setStereo(StereoOutput(output));
+        m_view->display().setStereo(StereoOutput(output));
         const QImage a = frame();
         const QImage b = frame();
         QVERIFY2(a == b, "two frames of the same view are identical");
@@ -303,7 +304,7 @@ private slots:
         a.save(QStringLiteral("/tmp/stereo_output_%1.png").arg(QString::fromLatin1(QTest::currentDataTag())));
         // The camera is back where it was after the eye renders.
         QVERIFY((m_view->camera().eye - m_camera.eye).norm() < 1e-9);
-        m_view->setStereo(StereoOutput::Off);
+        m_view->display().setStereo(StereoOutput::Off);
     }
 
     /// Frame times on the armadillo (52k triangles), printed for comparison run to run.
@@ -321,7 +322,7 @@ private slots:
             celform::model::Look look = doc.data().look;
             look.showLines = lines;
             doc.setLook(look);
-            view.setStereo(output);
+            view.display().setStereo(output);
             view.renderedImage(); // warm up: topology, shaders
             double total = 0.0, lineTotal = 0.0;
             const int frames = 8;

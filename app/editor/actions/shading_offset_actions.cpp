@@ -37,7 +37,7 @@ struct OffsetText {
 /// The target the tool paints into now (its setting), as the dialogs use it too.
 model::ShadingTarget currentTarget(MainWindow* window)
 {
-    return window->viewport()->offsetBrushTool()->target();
+    return window->viewport()->tool<views::OffsetBrushTool>().target();
 }
 
 void autoOffsetsDialog(MainWindow* window)
@@ -70,7 +70,7 @@ void autoOffsetsDialog(MainWindow* window)
     target->addItem(OffsetText::tr("Base layer"), 0);
     const model::ShadingTarget now = currentTarget(window);
     if (!now.isBase())
-        target->addItem(viewport->offsetBrushTool()->targetText(), double(now.key));
+        target->addItem(viewport->tool<views::OffsetBrushTool>().targetText(), double(now.key));
     target->setCurrentIndex(target->count() - 1);
     target->setToolTip(OffsetText::tr("The layer that receives the offsets (the offset brush's target)."));
     form->addRow(OffsetText::tr("Aggressiveness:"), aggressiveness);
@@ -151,24 +151,24 @@ void installOffsetActions(MainWindow* window, QMenu* menu)
         modeGroup->addAction(a);
         modes->addAction(a);
         QObject::connect(a, &QAction::triggered, viewport,
-            [viewport, mode = m.mode] { viewport->offsetBrushTool()->setMode(mode); });
+            [viewport, mode = m.mode] { viewport->tool<views::OffsetBrushTool>().setMode(mode); });
     }
     QAction* strength = make("actionOffsetStrength", OffsetText::tr("Brush S&trength…"), QKeySequence(),
         OffsetText::tr("The offset one dab adds at the brush's centre"));
     QObject::connect(strength, &QAction::triggered, window, [window, viewport] {
         bool ok = false;
         const double value = QInputDialog::getDouble(window, OffsetText::tr("Offset Brush Strength"),
-            OffsetText::tr("Offset added at the centre by one dab:"), viewport->offsetBrushTool()->strength(), 0.0, 1.0,
-            3, &ok);
+            OffsetText::tr("Offset added at the centre by one dab:"),
+            viewport->tool<views::OffsetBrushTool>().strength(), 0.0, 1.0, 3, &ok);
         if (ok)
-            viewport->offsetBrushTool()->setStrength(value);
+            viewport->tool<views::OffsetBrushTool>().setStrength(value);
     });
     sub->addAction(strength);
     QAction* mirror = make("actionOffsetMirrorX", OffsetText::tr("Mirror across &X"), QKeySequence(),
         OffsetText::tr("Paint the mirror image across x = 0 too"));
     mirror->setCheckable(true);
-    QObject::connect(
-        mirror, &QAction::toggled, viewport, [viewport](bool on) { viewport->offsetBrushTool()->setMirrorX(on); });
+    QObject::connect(mirror, &QAction::toggled, viewport,
+        [viewport](bool on) { viewport->tool<views::OffsetBrushTool>().setMirrorX(on); });
     sub->addAction(mirror);
     QAction* intoKey
         = make("actionOffsetTargetKey", OffsetText::tr("Paint into the Displayed &Key's Layer"), QKeySequence(),
@@ -176,7 +176,7 @@ void installOffsetActions(MainWindow* window, QMenu* menu)
                            "every view and frame"));
     intoKey->setCheckable(true);
     QObject::connect(intoKey, &QAction::toggled, viewport, [viewport, window](bool on) {
-        views::OffsetBrushTool* tool = viewport->offsetBrushTool();
+        views::OffsetBrushTool* tool = &viewport->tool<views::OffsetBrushTool>();
         tool->setTargetKey(on ? viewport->displayedKey() : 0);
         if (on && tool->targetKey() == 0)
             window->statusBar()->showMessage(

@@ -159,10 +159,8 @@ void PreferencesApplier::apply(const Preferences& prefs)
 void PreferencesApplier::applyToViewports(QObject* root)
 {
     for (views::Viewport* viewport : root->findChildren<views::Viewport*>()) {
-        viewport->setNavigationStyle(m_prefs.navigationStyle);
-        viewport->setOrbitMode(m_prefs.orbitMode);
-        viewport->setOrbitSpeed(m_prefs.orbitSpeed);
-        viewport->setOrbitAroundCursor(m_prefs.orbitAroundCursor);
+        viewport->setNavigation(
+            {m_prefs.navigationStyle, m_prefs.orbitMode, m_prefs.orbitSpeed, m_prefs.orbitAroundCursor});
     }
 }
 

@@ -6,7 +6,6 @@
 #include "celform/views/panels/color_swatch.h"
 #include "celform/views/overlays/depth_analysis_runner.h"
 #include "celform/views/panels/scrolling_panel.h"
-#include "celform/views/tools/offset_brush_tool.h"
 #include "celform/views/viewport/viewport.h"
 
 #include <QButtonGroup>
@@ -172,12 +171,6 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     m_offsetTarget->setToolTip(tr("The layer of shading offsets the offset brush (Shift+O) and Edit > Shading "
                                   "Offsets > Automatic Shading Offsets write into"));
     layout->addWidget(m_offsetTarget);
-    auto showTarget = [this, viewport] {
-        m_offsetTarget->setText(tr("Shading offsets go into the %1.").arg(viewport->offsetBrushTool()->targetText()));
-    };
-    connect(viewport, &Viewport::toolChanged, this, showTarget);
-    connect(document, &model::Document::changed, this, showTarget);
-    showTarget();
 
     auto* settingsBox = new QGroupBox(tr("Analysis"), body);
     auto* form = new QFormLayout(settingsBox);
@@ -252,6 +245,11 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     connect(m_runner, &DepthAnalysisRunner::analysed, this, &DepthPanel::showResult);
     connect(m_runner, &DepthAnalysisRunner::busyChanged, this, &DepthPanel::showBusy);
     m_mse->setText(tr("Depth error: —"));
+}
+
+void DepthPanel::showOffsetTarget(const QString& target)
+{
+    m_offsetTarget->setText(tr("Shading offsets go into the %1.").arg(target));
 }
 
 void DepthPanel::setOverlayKind(DepthOverlay::Kind kind)

@@ -45,6 +45,10 @@ public:
     /// the analysis settings and the shape: model::optimiseLight fills them in).
     [[nodiscard]] algo::LightOptimisationSettings lightSettings() const;
 
+    /// Where the offset brush and the automatic offsets write, as the offset brush names it (the
+    /// editor window keeps it up to date: panels do not know tools).
+    void showOffsetTarget(const QString& target);
+
 signals:
     void overlayKindChanged(celform::views::DepthOverlay::Kind kind);
 

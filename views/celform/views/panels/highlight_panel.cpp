@@ -280,7 +280,7 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
             m_paintPatch->setChecked(false);
             return;
         }
-        m_viewport->setPatchTarget(t->patch);
+        emit patchTargetChosen(t->patch);
         m_viewport->setTool(Viewport::Tool::Patch);
     });
     auto* guideRow = new QWidget(m_parameters);
@@ -324,7 +324,7 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     connect(m_editInViewport, &QPushButton::toggled, this, [this](bool on) {
         if (!m_viewport)
             return;
-        m_viewport->setHighlightTarget(selectedLayerId());
+        emit highlightTargetChosen(selectedLayerId());
         if (on || m_viewport->tool() == Viewport::Tool::Highlight)
             m_viewport->setTool(on ? Viewport::Tool::Highlight : Viewport::Tool::Navigate);
     });
@@ -399,7 +399,7 @@ void HighlightPanel::newPatchForLayer()
     QString name;
     run([&] { name = m_document->newFaceSetForLayer(id, tr("%1 patch").arg(t->name)); });
     if (m_viewport && m_viewport->tool() == Viewport::Tool::Patch && !name.isEmpty())
-        m_viewport->setPatchTarget(name);
+        emit patchTargetChosen(name);
 }
 
 QDoubleSpinBox* HighlightPanel::makeSpin(double min, double max, double step, int decimals, const QString& tip)
@@ -529,12 +529,12 @@ void HighlightPanel::refresh()
     m_renamePatch->setEnabled(t != nullptr && !t->patch.isEmpty());
     m_deletePatch->setEnabled(t != nullptr && !t->patch.isEmpty());
     if (m_viewport) {
-        m_viewport->setHighlightTarget(t ? t->id : 0);
+        emit highlightTargetChosen(t ? t->id : 0);
         // Painting follows the selected layer's patch; a layer on all faces ends painting.
         if (m_viewport->tool() == Viewport::Tool::Patch && (!t || t->patch.isEmpty()))
             m_viewport->setTool(Viewport::Tool::Navigate);
         else if (t)
-            m_viewport->setPatchTarget(t->patch);
+            emit patchTargetChosen(t->patch);
     }
     const bool keyHere = t && std::any_of(t->keys.begin(), t->keys.end(), [frame](const algo::HighlightKey& k) {
         return k.frame == double(frame);

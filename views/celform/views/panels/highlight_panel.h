@@ -47,6 +47,13 @@ public:
     void selectLayer(int index);
     [[nodiscard]] FrameTimeline* timeline() const { return m_timeline; }
 
+signals:
+    // What the viewport's tools edit (panels do not know tools: the editor window connects them).
+    /// The highlight layer the viewport's highlight drag moves (0: none).
+    void highlightTargetChosen(celform::model::ObjectId layer);
+    /// The face set the viewport's patch brush paints into.
+    void patchTargetChosen(const QString& faceSet);
+
 private:
     void documentChanged(const model::ChangeSet& change);
     /// Edits the selected layer's key at the playhead through Document::setHighlightKey.

@@ -10,6 +10,7 @@
 #include "celform/model/io/mesh_io.h"
 #include "celform/views/panels/gesture_tracker.h"
 #include "celform/views/panels/thumbnail.h"
+#include "celform/views/overlays/drawing_overlay.h"
 #include "celform/views/viewport/viewport.h"
 
 #include <QApplication>
@@ -146,8 +147,8 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_pixelRadius->setToolTip(tr("The brush circle's radius on screen; the world radius follows the zoom at the "
                                  "picked point. [ and ] in the viewport, F to resize by dragging"));
     m_radiusUnit = new QComboBox(m_brushBox);
-    m_radiusUnit->addItem(tr("World units"), int(Viewport::BrushRadiusUnit::World));
-    m_radiusUnit->addItem(tr("Screen pixels"), int(Viewport::BrushRadiusUnit::Pixels));
+    m_radiusUnit->addItem(tr("World units"), false);
+    m_radiusUnit->addItem(tr("Screen pixels"), true);
     m_radiusUnit->setToolTip(tr("World: the radius stays the same on the model whatever the zoom. Screen: the "
                                 "circle stays the same on screen (Blender's View radius)"));
     auto* radiusRow = new QWidget(m_brushBox);
@@ -173,9 +174,10 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_strength->setToolTip(tr("Share of the cursor's motion the picked vertex follows (1: all of it)"));
     brushForm->addRow(tr("S&trength:"), m_strength);
     m_brushMode = new QComboBox(m_brushBox);
-    m_brushMode->addItem(tr("Move"), int(Viewport::BrushMode::Move));
-    m_brushMode->addItem(tr("Smooth"), int(Viewport::BrushMode::Smooth));
-    m_brushMode->addItem(tr("Relax"), int(Viewport::BrushMode::Relax));
+    // In the order of the brush tool's modes (brushModeEdited gives the index).
+    m_brushMode->addItem(tr("Move"));
+    m_brushMode->addItem(tr("Smooth"));
+    m_brushMode->addItem(tr("Relax"));
     m_brushMode->setToolTip(tr("Move drags the selection; Smooth pulls it toward its neighbours while you drag (it "
                                "flattens spikes); Relax evens the vertices out along the surface and keeps the "
                                "shape and its silhouette"));
@@ -231,14 +233,14 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     });
     connect(m_onTop, &QCheckBox::toggled, this, [this](bool on) {
         if (m_viewport)
-            m_viewport->setOverlayOnTop(on);
+            m_viewport->drawingOverlay().setOnTop(on);
     });
     connect(m_align, &QPushButton::toggled, this, [this](bool on) {
         if (m_updating || !m_viewport)
             return;
         if (on && m_selection.kind == ScenePanel::ItemKind::Drawing) {
             m_viewport->setDisplayedKey(0);
-            m_viewport->setOverlayDrawing(m_selection.id);
+            m_viewport->drawingOverlay().setDrawing(m_selection.id);
             m_viewport->setTool(Viewport::Tool::Align);
         } else {
             m_viewport->setTool(Viewport::Tool::Navigate);
@@ -250,27 +252,16 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
             return;
         if (on && m_viewport->tool() != Viewport::Tool::Align)
             m_align->setChecked(true);
-        m_viewport->setPointMatching(on);
+        emit pointMatchingToggled(on);
         refreshMatching();
     });
     connect(m_solve, &QPushButton::clicked, this, [this] {
-        if (!m_viewport)
-            return;
-        QString error;
-        const auto rms = m_viewport->solveFromMatchedPoints(&error);
-        if (!rms) {
-            emit message(error);
-            QMessageBox::information(this, tr("Solve Camera"), error);
-            return;
-        }
-        emit message(tr("Camera solved: the points are %1 drawing pixels off on average. Refine by hand if needed.")
-                         .arg(*rms, 0, 'f', 1));
-        m_lastSolveError = *rms;
-        refreshMatching();
+        if (m_viewport)
+            emit solveCameraRequested();
     });
     connect(m_clearPoints, &QPushButton::clicked, this, [this] {
         if (m_viewport)
-            m_viewport->clearMatchedPoints();
+            emit clearMatchedPointsRequested();
     });
     connect(m_fov, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double degrees) {
         if (m_updating || !m_viewport)
@@ -304,7 +295,7 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
             return;
         m_document->linkKeyDrawing(m_selection.id, m_linkedDrawing->itemData(index).toULongLong());
         if (m_viewport && m_viewport->displayedKey() == m_selection.id)
-            m_viewport->setOverlayDrawing(m_linkedDrawing->itemData(index).toULongLong());
+            m_viewport->drawingOverlay().setDrawing(m_linkedDrawing->itemData(index).toULongLong());
     });
     connect(m_editKey, &QPushButton::toggled, this, [this](bool on) {
         if (m_updating || !m_viewport)
@@ -315,7 +306,7 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
             // Paper 1, section 3.1.2: deform in the key's camera, with its drawing for reference.
             m_viewport->setTool(Viewport::Tool::Navigate);
             m_viewport->setCamera(key->camera);
-            m_viewport->setOverlayDrawing(key->drawingIds.empty() ? 0 : key->drawingIds.front());
+            m_viewport->drawingOverlay().setDrawing(key->drawingIds.empty() ? 0 : key->drawingIds.front());
             m_viewport->setDisplayedKey(key->id);
             m_viewport->setTool(Viewport::Tool::Brush);
         } else {
@@ -326,34 +317,26 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     });
     connect(m_importDeformation, &QPushButton::clicked, this, &PropertiesPanel::importDeformation);
     connect(m_radius, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double r) {
-        if (!m_updating && m_viewport)
-            m_viewport->setBrushRadius(r);
+        if (!m_updating)
+            emit brushRadiusEdited(r);
     });
     connect(m_pixelRadius, qOverload<int>(&QSpinBox::valueChanged), this, [this](int px) {
-        if (!m_updating && m_viewport)
-            m_viewport->setBrushPixelRadius(px);
+        if (!m_updating)
+            emit brushPixelRadiusEdited(px);
     });
     connect(m_radiusUnit, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
-        const auto unit = Viewport::BrushRadiusUnit(m_radiusUnit->itemData(index).toInt());
-        m_radius->setVisible(unit == Viewport::BrushRadiusUnit::World);
-        m_pixelRadius->setVisible(unit == Viewport::BrushRadiusUnit::Pixels);
-        if (m_viewport)
-            m_viewport->setBrushRadiusUnit(unit);
+        const bool pixels = m_radiusUnit->itemData(index).toBool();
+        m_radius->setVisible(!pixels);
+        m_pixelRadius->setVisible(pixels);
+        emit brushRadiusInPixelsEdited(pixels);
     });
     auto applyProfile = [this] {
-        if (m_viewport)
-            m_viewport->setBrushProfile({algo::BrushFalloff(m_falloff->currentData().toInt()), m_strength->value()});
+        emit brushProfileEdited({algo::BrushFalloff(m_falloff->currentData().toInt()), m_strength->value()});
     };
     connect(m_falloff, qOverload<int>(&QComboBox::currentIndexChanged), this, applyProfile);
     connect(m_strength, qOverload<double>(&QDoubleSpinBox::valueChanged), this, applyProfile);
-    connect(m_brushMode, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
-        if (m_viewport)
-            m_viewport->setBrushMode(Viewport::BrushMode(m_brushMode->itemData(index).toInt()));
-    });
-    connect(m_mirror, &QCheckBox::toggled, this, [this](bool on) {
-        if (m_viewport)
-            m_viewport->setBrushMirrorX(on);
-    });
+    connect(m_brushMode, qOverload<int>(&QComboBox::currentIndexChanged), this, &PropertiesPanel::brushModeEdited);
+    connect(m_mirror, &QCheckBox::toggled, this, &PropertiesPanel::brushMirrorEdited);
     GestureTracker::track(m_sharpness, m_document);
     connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double value) {
         if (!m_updating)
@@ -398,9 +381,8 @@ void PropertiesPanel::documentChanged(const model::ChangeSet& change)
     using model::Part;
     if (change.reset || change.has(Part::Mesh)) {
         // A radius of a few percent of the model is a useful first brush on any scale.
-        if (m_viewport && m_document->hasMesh())
-            m_viewport->setBrushRadius(
-                0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm());
+        if (m_document->hasMesh())
+            emit brushRadiusEdited(defaultBrushRadius());
     }
     if (change.reset || change.has(Part::Blend))
         refreshBlend();
@@ -424,17 +406,6 @@ void PropertiesPanel::setViewport(Viewport* viewport)
     if (!viewport)
         return;
     connect(viewport, &Viewport::toolChanged, this, &PropertiesPanel::refreshTools);
-    connect(viewport, &Viewport::matchedPointsChanged, this, &PropertiesPanel::refreshMatching);
-    connect(viewport, &Viewport::brushRadiusChanged, this, [this](double r) {
-        m_updating = true;
-        m_radius->setValue(r);
-        m_updating = false;
-    });
-    connect(viewport, &Viewport::brushPixelRadiusChanged, this, [this](double px) {
-        m_updating = true;
-        m_pixelRadius->setValue(int(std::lround(px)));
-        m_updating = false;
-    });
     connect(viewport, &Viewport::cameraChanged, this, [this] {
         if (m_fov->hasFocus())
             return;
@@ -443,11 +414,44 @@ void PropertiesPanel::setViewport(Viewport* viewport)
         m_projection->setCurrentIndex(m_projection->findData(int(m_viewport->projection())));
         m_updating = false;
     });
-    if (m_document->hasMesh())
-        viewport->setBrushRadius(0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm());
-    m_radius->setValue(viewport->brushRadius());
-    m_pixelRadius->setValue(int(std::lround(viewport->brushPixelRadius())));
     refreshTools();
+}
+
+double PropertiesPanel::defaultBrushRadius() const
+{
+    // A radius of a few percent of the model is a useful first brush on any scale.
+    if (!m_document->hasMesh())
+        return 0.0;
+    return 0.08 * algo::boundingBox(m_document->data().baseMesh->vertices).diagonal().norm();
+}
+
+void PropertiesPanel::showBrushRadius(double radius, double pixels)
+{
+    m_updating = true;
+    m_radius->setValue(radius);
+    m_pixelRadius->setValue(int(std::lround(pixels)));
+    m_updating = false;
+}
+
+void PropertiesPanel::showMatching(int modelPoints, int drawingPoints, bool matching)
+{
+    m_modelPoints = modelPoints;
+    m_drawingPoints = drawingPoints;
+    m_matching = matching;
+    refreshMatching();
+}
+
+void PropertiesPanel::showSolveResult(std::optional<double> rms, const QString& error)
+{
+    if (!rms) {
+        emit message(error);
+        QMessageBox::information(this, tr("Solve Camera"), error);
+        return;
+    }
+    emit message(tr("Camera solved: the points are %1 drawing pixels off on average. Refine by hand if needed.")
+                     .arg(*rms, 0, 'f', 1));
+    m_lastSolveError = *rms;
+    refreshMatching();
 }
 
 void PropertiesPanel::showSelection(ScenePanel::Selection selection)
@@ -460,7 +464,7 @@ void PropertiesPanel::showSelection(ScenePanel::Selection selection)
             m_viewport->setTool(Viewport::Tool::Navigate);
         if (selection.kind == ScenePanel::ItemKind::Drawing && !m_viewport->isPreview()
             && m_viewport->tool() != Viewport::Tool::Brush)
-            m_viewport->setOverlayDrawing(selection.id);
+            m_viewport->drawingOverlay().setDrawing(selection.id);
     }
     refresh();
 }
@@ -486,9 +490,8 @@ void PropertiesPanel::refreshMatching()
 {
     if (!m_viewport)
         return;
-    const size_t models = m_viewport->matchedModelPoints().size();
-    const size_t drawings = m_viewport->matchedDrawingPoints().size();
-    const size_t pairs = std::min(models, drawings);
+    const int models = m_modelPoints, drawings = m_drawingPoints;
+    const int pairs = std::min(models, drawings);
     QString status
         = tr("%1 model points, %2 drawing points: %3 pairs (six or more needed)").arg(models).arg(drawings).arg(pairs);
     if (m_lastSolveError)
@@ -496,7 +499,7 @@ void PropertiesPanel::refreshMatching()
             += QLatin1Char('\n') + tr("Last solve: %1 px reprojection error (RMS)").arg(*m_lastSolveError, 0, 'f', 1);
     m_matchStatus->setText(status);
     // The next click, in the status bar where the eyes are.
-    if (m_viewport->isPointMatching()) {
+    if (m_matching) {
         if (models <= drawings)
             emit message(tr("Match Points: click a feature on the model (pair %1)").arg(models + 1));
         else
@@ -518,7 +521,7 @@ void PropertiesPanel::refreshTools()
     m_brushBox->setEnabled(brushing);
     m_fov->setEnabled(aligning);
     m_projection->setEnabled(aligning);
-    m_match->setChecked(m_viewport && m_viewport->isPointMatching());
+    m_match->setChecked(m_viewport && m_matching);
     m_updating = false;
     refreshMatching();
 }

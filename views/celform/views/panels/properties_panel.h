@@ -1,8 +1,12 @@
 // The properties dock: what is selected in the scene (model statistics; a drawing's image,
 // overlay and alignment; a key's direction, drawing, deformation and the brush) and the
 // project-wide blend settings. Edits go through the Document; a slider drag is one undo step.
+// The brush and point-matching controls drive the viewport's tools, which panels do not know:
+// the panel says what was edited (signals) and shows what the tools report (slots); the editor
+// window connects both to the tools.
 #pragma once
 
+#include "celform/algorithms/brush.h"
 #include "celform/model/document/document.h"
 #include "celform/views/panels/scene_panel.h"
 
@@ -44,14 +48,35 @@ public:
     [[nodiscard]] QPushButton* matchPointsButton() const { return m_match; }
     [[nodiscard]] QPushButton* solveCameraButton() const { return m_solve; }
 
+    /// 8% of the model's diagonal: a useful first brush on any scale (0 without a model).
+    [[nodiscard]] double defaultBrushRadius() const;
+
 public slots:
     void showSelection(celform::views::ScenePanel::Selection selection);
+    /// The brushes' radius in world units and in pixels, as the tools have it now.
+    void showBrushRadius(double radius, double pixels);
+    /// The align tool's matched points and whether clicks place them.
+    void showMatching(int modelPoints, int drawingPoints, bool matching);
+    /// The outcome of Solve Camera: the RMS error in drawing pixels, or why it failed.
+    void showSolveResult(std::optional<double> rms, const QString& error);
 
 signals:
     /// A key was made from the selected drawing; the scene can select it.
     void keyCreated(celform::model::ObjectId key);
     /// A message for the status bar (refused edits, hints).
     void message(const QString& text);
+    // The brush controls: the brushes' shared radius, and the falloff brush's own settings.
+    void brushRadiusEdited(double radius);
+    void brushPixelRadiusEdited(double pixels);
+    void brushRadiusInPixelsEdited(bool pixels);
+    void brushProfileEdited(const celform::algo::BrushProfile& profile);
+    /// Move, Smooth or Relax, as 0, 1, 2.
+    void brushModeEdited(int mode);
+    void brushMirrorEdited(bool on);
+    // Point matching (the align tool).
+    void pointMatchingToggled(bool on);
+    void solveCameraRequested();
+    void clearMatchedPointsRequested();
 
 private:
     void refresh();
@@ -85,7 +110,9 @@ private:
     QPushButton* m_solve;
     QPushButton* m_clearPoints;
     QLabel* m_matchStatus;
-    std::optional<double> m_lastSolveError; ///< RMS reprojection error of the last Solve Camera, pixels
+    std::optional<double> m_lastSolveError;
+    int m_modelPoints = 0, m_drawingPoints = 0; ///< the align tool's, as last reported
+    bool m_matching = false; ///< RMS reprojection error of the last Solve Camera, pixels
     QCheckBox* m_enabled;
     QComboBox* m_linkedDrawing;
     QPushButton* m_editKey;

@@ -4,6 +4,7 @@
 
 #include "celform/algorithms/camera_solve.h"
 #include "celform/model/document/document.h"
+#include "celform/views/overlays/drawing_overlay.h"
 #include "celform/views/viewport/viewport.h"
 
 #include <QLabel>
@@ -36,15 +37,15 @@ protected:
         QFont font = p.font();
         font.setBold(true);
         p.setFont(font);
-        const auto& model = m_tool->modelPoints();
-        const auto& drawing = m_tool->drawingPoints();
+        const auto& model = m_tool->matchedModelPoints();
+        const auto& drawing = m_tool->matchedDrawingPoints();
         for (size_t i = 0; i < std::max(model.size(), drawing.size()); ++i) {
             const QString label = QString::number(i + 1);
             QPointF a, b;
             if (i < model.size())
                 a = m_viewport->projectToWidget(model[i]);
             if (i < drawing.size())
-                b = m_viewport->drawingToWidget(drawing[i]);
+                b = m_viewport->drawingOverlay().drawingToWidget(drawing[i]);
             if (i < model.size() && i < drawing.size()) {
                 p.setPen(QPen(QColor(40, 40, 40, 160), 1, Qt::DashLine));
                 p.drawLine(a, b);
@@ -86,6 +87,11 @@ AlignTool::AlignTool(Viewport* viewport)
     m_banner->hide();
     // The markers follow the camera whichever tool is on (points outlive the tool until cleared).
     connect(viewport, &Viewport::cameraChanged, m_markers, qOverload<>(&QWidget::update));
+    // The pairs belong to the drawing they were placed on.
+    connect(&viewport->drawingOverlay(), &DrawingOverlay::drawingChanged, this, [this] {
+        if (!m_modelPoints.empty() || !m_drawingPoints.empty())
+            clearMatchedPoints();
+    });
 }
 
 AlignTool::~AlignTool() = default;
@@ -93,7 +99,7 @@ AlignTool::~AlignTool() = default;
 void AlignTool::activate()
 {
     model::Document* document = m_viewport->document();
-    m_drawing = m_viewport->overlayDrawing();
+    m_drawing = m_viewport->drawingOverlay().drawing();
     const model::Drawing* drawing = document && m_drawing ? document->data().drawing(m_drawing) : nullptr;
     if (!drawing) {
         m_drawing = 0;
@@ -120,7 +126,7 @@ void AlignTool::deactivate()
     m_drawing = 0;
     m_banner->hide();
     if (m_matching)
-        setMatching(false);
+        setPointMatching(false);
 }
 
 void AlignTool::placeBanner()
@@ -137,7 +143,7 @@ void AlignTool::commit()
     model::Document* document = m_viewport->document();
     // Only the drawing the mode was started on, and only a camera the artist changed (a resize
     // or another drawing's letterbox keeps the camera and stores nothing).
-    if (!document || !m_drawing || m_viewport->overlayDrawing() != m_drawing)
+    if (!document || !m_drawing || m_viewport->drawingOverlay().drawing() != m_drawing)
         return;
     const model::Camera camera = m_viewport->camera();
     if (camera == m_stored)
@@ -167,16 +173,15 @@ bool AlignTool::press(const ToolEvent& event)
     if (!m_matching)
         return false;
     if (event.modifiers & Qt::ShiftModifier) {
-        if (const auto pixel = m_viewport->widgetToDrawing(event.position))
+        if (const auto pixel = m_viewport->drawingOverlay().widgetToDrawing(event.position))
             m_drawingPoints.push_back(*pixel);
         else
-            emit m_viewport->message(tr("Shift+click inside the drawing to place its point."));
+            emit message(tr("Shift+click inside the drawing to place its point."));
     } else if (const auto hit = m_viewport->pickSurface(event.position)) {
         // The picked surface point, not the nearest vertex: features rarely sit on one.
         m_modelPoints.push_back(hit->second);
     } else {
-        emit m_viewport->message(
-            tr("Click on the model to place a model point; Shift+click places the drawing point."));
+        emit message(tr("Click on the model to place a model point; Shift+click places the drawing point."));
     }
     m_markers->setVisible(true);
     markersChanged();
@@ -186,21 +191,21 @@ bool AlignTool::press(const ToolEvent& event)
 void AlignTool::markersChanged()
 {
     m_markers->update();
-    emit m_viewport->matchedPointsChanged();
+    emit matchedPointsChanged();
 }
 
-void AlignTool::setMatching(bool on)
+void AlignTool::setPointMatching(bool on)
 {
     m_matching = on;
     m_markers->setVisible(on || !m_modelPoints.empty() || !m_drawingPoints.empty());
     m_markers->setGeometry(m_viewport->rect());
     m_markers->update();
     if (on)
-        emit m_viewport->message(tr("Click a feature on the model, then Shift+click the same feature on the drawing; "
-                                    "six pairs or more, then Solve Camera."));
+        emit message(tr("Click a feature on the model, then Shift+click the same feature on the drawing; "
+                        "six pairs or more, then Solve Camera."));
 }
 
-void AlignTool::clearPoints()
+void AlignTool::clearMatchedPoints()
 {
     m_modelPoints.clear();
     m_drawingPoints.clear();
@@ -208,7 +213,7 @@ void AlignTool::clearPoints()
     markersChanged();
 }
 
-void AlignTool::removeLastPoint()
+void AlignTool::removeLastMatchedPoint()
 {
     if (m_drawingPoints.size() >= m_modelPoints.size() && !m_drawingPoints.empty())
         m_drawingPoints.pop_back();
@@ -224,11 +229,12 @@ void AlignTool::resized()
         placeBanner();
 }
 
-std::optional<double> AlignTool::solve(QString* error)
+std::optional<double> AlignTool::solveFromMatchedPoints(QString* error)
 {
     model::Document* document = m_viewport->document();
-    const model::Drawing* drawing
-        = (document && m_viewport->overlayDrawing()) ? document->data().drawing(m_viewport->overlayDrawing()) : nullptr;
+    const model::Drawing* drawing = (document && m_viewport->drawingOverlay().drawing())
+        ? document->data().drawing(m_viewport->drawingOverlay().drawing())
+        : nullptr;
     const size_t pairs = std::min(m_modelPoints.size(), m_drawingPoints.size());
     if (!drawing || drawing->image.isNull()) {
         if (error)
@@ -258,8 +264,8 @@ std::optional<double> AlignTool::solve(QString* error)
     camera.fovYDegrees = solved->fovYDegrees;
     // One step: the solved camera, stored with the drawing (setCamera commits it while aligning).
     m_viewport->setCamera(camera);
-    if (m_drawing != m_viewport->overlayDrawing())
-        document->setDrawingCamera(m_viewport->overlayDrawing(), camera);
+    if (m_drawing != m_viewport->drawingOverlay().drawing())
+        document->setDrawingCamera(m_viewport->drawingOverlay().drawing(), camera);
     m_markers->update();
     return solved->rmsPixelError;
 }

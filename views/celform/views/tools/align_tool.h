@@ -9,7 +9,6 @@
 #include "celform/model/data/camera.h"
 #include "celform/model/data/object_id.h"
 
-#include <QObject>
 #include <QString>
 
 #include <Eigen/Core>
@@ -22,7 +21,7 @@ class QWidget;
 
 namespace celform::views {
 
-class AlignTool : public QObject, public ViewportTool {
+class AlignTool : public ViewportTool {
     Q_OBJECT
 public:
     explicit AlignTool(Viewport* viewport);
@@ -38,16 +37,25 @@ public:
     /// The drawing being aligned (0 while the tool is off).
     [[nodiscard]] model::ObjectId drawing() const { return m_drawing; }
 
-    void setMatching(bool on);
-    [[nodiscard]] bool isMatching() const { return m_matching; }
-    [[nodiscard]] const std::vector<Eigen::Vector3d>& modelPoints() const { return m_modelPoints; }
-    [[nodiscard]] const std::vector<Eigen::Vector2d>& drawingPoints() const { return m_drawingPoints; }
-    void clearPoints();
-    void removeLastPoint();
-    /// See Viewport::solveFromMatchedPoints.
-    std::optional<double> solve(QString* error);
+    // --- semi-automatic alignment: model points matched to drawing points ---------------------
+    /// A click on the model adds a model point and Shift+click adds a drawing point; the i-th of
+    /// each form a pair. The points outlive the tool until cleared (or another drawing shows).
+    void setPointMatching(bool on);
+    [[nodiscard]] bool isPointMatching() const { return m_matching; }
+    [[nodiscard]] const std::vector<Eigen::Vector3d>& matchedModelPoints() const { return m_modelPoints; }
+    /// Drawing pixels (x right, y down from the top-left corner).
+    [[nodiscard]] const std::vector<Eigen::Vector2d>& matchedDrawingPoints() const { return m_drawingPoints; }
+    void clearMatchedPoints();
+    void removeLastMatchedPoint();
+    /// Solves the camera from at least six pairs (DLT, then Levenberg-Marquardt) and stores it
+    /// with the drawing as one undo step. Returns the RMS reprojection error in drawing pixels,
+    /// or nothing with a message.
+    std::optional<double> solveFromMatchedPoints(QString* error);
     /// The viewport changed size: the markers follow.
     void resized();
+
+signals:
+    void matchedPointsChanged();
 
 private:
     /// Stores the viewport's camera with the drawing when it differs from the last one stored.

@@ -2,33 +2,38 @@
 #include "celform/views/tools/brush_hover.h"
 
 #include "celform/views/tools/brush_cursor.h"
+#include "celform/views/tools/brush_size.h"
 #include "celform/views/viewport/viewport.h"
 #include "celform/views/viewport/viewport_keys.h"
 
+#include <QCoreApplication>
 #include <QTimer>
 
 #include <algorithm>
 #include <cmath>
 
 namespace celform::views {
+namespace {
 
-BrushHover::BrushHover(Viewport* viewport, std::function<algo::BrushFalloff()> falloff)
-    : m_viewport(viewport)
-    , m_falloff(std::move(falloff))
+// The texts were the geometry brush's first: their translations live in its context.
+struct Brush {
+    Q_DECLARE_TR_FUNCTIONS(celform::views::BrushTool)
+};
+
+} // namespace
+
+BrushHover::BrushHover(Viewport* viewport, BrushSize& size)
+    : ViewportTool(viewport)
+    , m_size(size)
     , m_circle(new BrushCursor(viewport))
     , m_timer(new QTimer(viewport))
 {
     m_timer->setSingleShot(true);
     m_timer->setInterval(16);
-    QObject::connect(m_timer, &QTimer::timeout, viewport, [this] { updateCircle(); });
+    QObject::connect(m_timer, &QTimer::timeout, this, [this] { updateCircle(); });
 }
 
-double BrushHover::radiusPixels(double unitsPerPixel) const
-{
-    if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-        return m_viewport->brushPixelRadius();
-    return unitsPerPixel > 0.0 ? m_viewport->brushRadius() / unitsPerPixel : 0.0;
-}
+BrushHover::~BrushHover() = default;
 
 void BrushHover::updateCircle()
 {
@@ -41,7 +46,7 @@ void BrushHover::updateCircle()
         return;
     }
     m_unitsPerPixel = m_viewport->worldUnitsPerPixel(hit->second);
-    m_circle->showCircle(m_position, radiusPixels(m_unitsPerPixel), m_falloff());
+    m_circle->showCircle(m_position, m_size.pixelsAt(m_unitsPerPixel), falloff());
 }
 
 void BrushHover::hover(const QPointF& position)
@@ -51,65 +56,67 @@ void BrushHover::hover(const QPointF& position)
         // The radius is the cursor's distance from the circle's centre.
         const QPointF d = position - m_resizeCentre;
         const double pixels = std::max(std::sqrt(QPointF::dotProduct(d, d)), 2.0);
-        if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-            m_viewport->setBrushPixelRadius(pixels);
+        if (m_size.unit() == BrushSize::Unit::Pixels)
+            m_size.setPixelRadius(pixels);
         else if (m_unitsPerPixel > 0.0)
-            m_viewport->setBrushRadius(pixels * m_unitsPerPixel);
-        m_circle->showCircle(m_resizeCentre, pixels, m_falloff(), true);
+            m_size.setRadius(pixels * m_unitsPerPixel);
+        m_circle->showCircle(m_resizeCentre, pixels, falloff(), true);
         return;
     }
     if (!m_timer->isActive())
         m_timer->start();
 }
 
-void BrushHover::leave(bool strokeActive)
+void BrushHover::leave()
 {
     m_timer->stop();
-    if (!m_resizing && !strokeActive)
+    if (!m_resizing && !strokeActive())
         m_circle->hide();
 }
 
-void BrushHover::cameraChanged(bool strokeActive)
+void BrushHover::cameraChanged()
 {
     // The surface under the cursor moved: its scale (world units per pixel) changed.
-    if (m_circle->isVisible() && !m_resizing && !strokeActive)
+    if (m_circle->isVisible() && !m_resizing && !strokeActive())
         hover(m_position);
 }
 
 void BrushHover::showAt(const QPointF& position, double radiusPixels)
 {
     m_timer->stop();
-    m_circle->showCircle(position, radiusPixels, m_falloff());
+    m_circle->showCircle(position, radiusPixels, falloff());
 }
 
-bool BrushHover::wantsKey(int key, Qt::KeyboardModifiers modifiers, bool strokeActive) const
+double BrushHover::circlePixels() const
+{
+    return m_circle->radiusPixels();
+}
+
+bool BrushHover::wantsKey(int key, Qt::KeyboardModifiers modifiers) const
 {
     if (modifiers & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
         return false;
     if (key == viewportKey(ViewportKeyCommand::BrushResize)) // F, listed in Help > Keyboard Shortcuts
-        return !strokeActive;
+        return !strokeActive();
     return m_resizing && (key == Qt::Key_Escape || key == Qt::Key_Return || key == Qt::Key_Enter);
 }
 
-bool BrushHover::keyPress(
-    int key, Qt::KeyboardModifiers modifiers, bool strokeActive, const QString& hint, const QString& prompt)
+bool BrushHover::keyPress(int key, Qt::KeyboardModifiers modifiers)
 {
-    if (!wantsKey(key, modifiers, strokeActive))
+    if (!wantsKey(key, modifiers))
         return false;
     if (key == viewportKey(ViewportKeyCommand::BrushResize) && !m_resizing) {
-        if (m_unitsPerPixel <= 0.0 && m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::World) {
-            emit m_viewport->message(hint);
+        if (m_unitsPerPixel <= 0.0 && m_size.unit() == BrushSize::Unit::World) {
+            emit message(Brush::tr("Hold the cursor over the model to resize the brush there."));
             return true;
         }
         m_resizing = true;
-        m_radiusBeforeResize = m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels
-            ? m_viewport->brushPixelRadius()
-            : m_viewport->brushRadius();
+        m_radiusBeforeResize = m_size.current();
         // The circle stays where it is; moving the cursor away from its centre sizes it.
-        const double pixels = radiusPixels(m_unitsPerPixel);
+        const double pixels = m_size.pixelsAt(m_unitsPerPixel);
         m_resizeCentre = m_position - QPointF(pixels, 0.0);
-        m_circle->showCircle(m_resizeCentre, pixels, m_falloff(), true);
-        emit m_viewport->message(prompt);
+        m_circle->showCircle(m_resizeCentre, pixels, falloff(), true);
+        emit message(Brush::tr("Move the mouse to resize the brush; click or Enter to keep, Esc to cancel."));
         return true;
     }
     endResize(key != Qt::Key_Escape);
@@ -121,16 +128,12 @@ void BrushHover::endResize(bool keep)
     if (!m_resizing)
         return;
     m_resizing = false;
-    if (!keep) {
-        if (m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels)
-            m_viewport->setBrushPixelRadius(m_radiusBeforeResize);
-        else
-            m_viewport->setBrushRadius(m_radiusBeforeResize);
-    }
+    if (!keep)
+        m_size.setCurrent(m_radiusBeforeResize);
     updateCircle();
 }
 
-void BrushHover::stop()
+void BrushHover::stopHover()
 {
     m_resizing = false;
     m_timer->stop();

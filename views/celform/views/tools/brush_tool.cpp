@@ -4,8 +4,8 @@
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
 #include "celform/views/tools/brush_cursor.h"
+#include "celform/views/tools/brush_size.h"
 #include "celform/views/viewport/viewport.h"
-#include "celform/views/viewport/viewport_keys.h"
 
 #include <QCoreApplication>
 
@@ -24,73 +24,42 @@ constexpr double kSmoothStrength = 0.25;
 
 } // namespace
 
-BrushTool::BrushTool(Viewport* viewport)
-    : ViewportTool(viewport)
-    , m_hover(viewport, [viewport] { return viewport->brushProfile().falloff; })
+BrushTool::BrushTool(Viewport* viewport, BrushSize& size)
+    : BrushHover(viewport, size)
 { }
 
-BrushTool::~BrushTool() = default; // the circle and the timer belong to the viewport
-
-void BrushTool::hover(const QPointF& position)
-{
-    m_hover.hover(position);
-}
-
-void BrushTool::leave()
-{
-    m_hover.leave(m_stroke.active());
-}
-
-void BrushTool::cameraChanged()
-{
-    m_hover.cameraChanged(m_stroke.active());
-}
-
-bool BrushTool::wantsKey(int key, Qt::KeyboardModifiers modifiers) const
-{
-    return m_hover.wantsKey(key, modifiers, m_stroke.active());
-}
-
-bool BrushTool::keyPress(int key, Qt::KeyboardModifiers modifiers)
-{
-    return m_hover.keyPress(key, modifiers, m_stroke.active(),
-        Brush::tr("Hold the cursor over the model to resize the brush there."),
-        Brush::tr("Move the mouse to resize the brush; click or Enter to keep, Esc to cancel."));
-}
+BrushTool::~BrushTool() = default;
 
 bool BrushTool::press(const ToolEvent& event)
 {
-    if (m_hover.isResizing()) {
-        m_hover.endResize(true); // Blender: a click keeps the new size
+    if (isResizing()) {
+        endResize(true); // Blender: a click keeps the new size
         return false;
     }
     model::Document* document = m_viewport->document();
     const model::ObjectId key = m_viewport->displayedKey();
     if (!document || !document->data().key(key)) {
-        emit m_viewport->message(Brush::tr("Choose a key to deform first (Scene panel, then Edit Key)."));
+        emit message(Brush::tr("Choose a key to deform first (Scene panel, then Edit Key)."));
         return true;
     }
     const std::int64_t picked = m_viewport->pickVertex(event.position);
     if (picked < 0) {
-        m_viewport->showBrushSelection(nullptr, nullptr);
+        emit selectionChanged(nullptr, nullptr);
         return true;
     }
     const Eigen::Vector3d pickedPoint = m_viewport->displayedShape().row(picked).cast<double>().transpose();
     const double unitsPerPixel = m_viewport->worldUnitsPerPixel(pickedPoint);
-    // A radius in pixels is the world radius that many pixels span at the picked point.
-    const double radius = m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels
-        ? m_viewport->brushPixelRadius() * unitsPerPixel
-        : m_viewport->brushRadius();
+    const double radius = size().worldRadius(unitsPerPixel);
     try {
         m_stroke = document->beginBrushStroke(key, document->currentFrame(), std::uint32_t(picked), radius,
-            m_viewport->camera(), m_viewport->brushMirrorX(), m_viewport->brushProfile());
+            m_viewport->camera(), m_settings.mirrorX, m_settings.profile);
     } catch (const model::EditRefused& e) {
-        emit m_viewport->message(e.message());
+        emit message(e.message());
         return true;
     }
     m_unitsPerPixel = unitsPerPixel;
-    m_viewport->showBrushSelection(&m_stroke.selection, &m_stroke.mirrorSelection);
-    m_hover.showAt(event.position, radius / std::max(unitsPerPixel, 1e-12));
+    emit selectionChanged(&m_stroke.selection, &m_stroke.mirrorSelection);
+    showAt(event.position, radius / std::max(unitsPerPixel, 1e-12));
     return true;
 }
 
@@ -102,9 +71,9 @@ void BrushTool::move(const ToolEvent& event)
     const QPointF d = event.delta;
     model::BrushStep step;
     const bool ctrl = event.modifiers & Qt::ControlModifier, shift = event.modifiers & Qt::ShiftModifier;
-    if (m_viewport->brushMode() == Viewport::BrushMode::Smooth)
+    if (m_settings.mode == BrushMode::Smooth)
         step = {model::BrushMotion::Smooth, kSmoothStrength, 0.0};
-    else if (m_viewport->brushMode() == Viewport::BrushMode::Relax)
+    else if (m_settings.mode == BrushMode::Relax)
         step = {model::BrushMotion::Relax, kSmoothStrength, 0.0};
     else if (ctrl && shift)
         step = {model::BrushMotion::Scale, std::exp(kScalePerPixel * d.x()), 0.0};
@@ -116,13 +85,14 @@ void BrushTool::move(const ToolEvent& event)
         step = {model::BrushMotion::Drag, d.x() * m_unitsPerPixel, -d.y() * m_unitsPerPixel};
     document->applyBrushStroke(m_stroke, step);
     // The circle follows the cursor with the stroke's radius.
-    m_hover.showAt(event.position, m_hover.circle()->radiusPixels());
+    showAt(event.position, circlePixels());
 }
 
 void BrushTool::finish()
 {
     if (model::Document* document = m_viewport->document())
         document->endBrushStroke(m_stroke);
+    m_stroke = {};
 }
 
 void BrushTool::release(const ToolEvent& event)
@@ -130,23 +100,22 @@ void BrushTool::release(const ToolEvent& event)
     finish();
     // The selection is shown during the stroke only: afterwards (and after an undo) the model
     // shows its look again.
-    m_viewport->showBrushSelection(nullptr, nullptr);
-    m_hover.hover(event.position);
-    m_hover.updateCircle();
+    emit selectionChanged(nullptr, nullptr);
+    hover(event.position);
+    updateCircle();
 }
 
 void BrushTool::cancel()
 {
     finish();
-    m_viewport->showBrushSelection(nullptr, nullptr);
+    emit selectionChanged(nullptr, nullptr);
 }
 
 void BrushTool::deactivate()
 {
-    m_hover.stop();
+    stopHover();
     finish();
-    m_stroke = {};
-    m_viewport->showBrushSelection(nullptr, nullptr);
+    emit selectionChanged(nullptr, nullptr);
 }
 
 } // namespace celform::views

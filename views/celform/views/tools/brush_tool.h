@@ -3,38 +3,51 @@
 // Ctrl+Shift+drag scales it; the Smooth mode relaxes it. One document brush stroke per drag.
 #pragma once
 
+#include "celform/algorithms/brush.h"
 #include "celform/model/document/brush_stroke.h"
 #include "celform/views/tools/brush_hover.h"
-#include "celform/views/tools/viewport_tool.h"
 
 namespace celform::views {
 
-class BrushTool : public ViewportTool {
+enum class BrushMode { Move, Smooth, Relax };
+
+/// What the next strokes do (the radius is the brushes' shared BrushSize).
+struct BrushSettings {
+    BrushMode mode = BrushMode::Move;
+    algo::BrushProfile profile; ///< the falloff curve and strength
+    bool mirrorX = false; ///< the X-mirror twins move as the reflection
+};
+
+class BrushTool : public BrushHover {
+    Q_OBJECT
 public:
-    explicit BrushTool(Viewport* viewport);
+    BrushTool(Viewport* viewport, BrushSize& size);
     ~BrushTool() override;
+
+    [[nodiscard]] BrushSettings& settings() { return m_settings; }
+    [[nodiscard]] const BrushSettings& settings() const { return m_settings; }
 
     void deactivate() override;
     bool press(const ToolEvent& event) override;
     void move(const ToolEvent& event) override;
     void release(const ToolEvent& event) override;
     void cancel() override;
-    void cameraChanged() override;
-    void hover(const QPointF& position) override;
-    void leave() override;
-    [[nodiscard]] bool wantsKey(int key, Qt::KeyboardModifiers modifiers) const override;
-    bool keyPress(int key, Qt::KeyboardModifiers modifiers) override;
 
-    /// The circle under the cursor (tests read it).
-    [[nodiscard]] const BrushCursor* cursorCircle() const { return m_hover.circle(); }
-    [[nodiscard]] bool isResizing() const { return m_hover.isResizing(); }
+signals:
+    /// The selection to show in red (during a stroke) or none (nulls); the viewport shows it.
+    void selectionChanged(const algo::BrushSelection* selection, const algo::BrushSelection* mirror);
+
+protected:
+    [[nodiscard]] bool strokeActive() const override { return m_stroke.active(); }
+    [[nodiscard]] algo::BrushFalloff falloff() const override { return m_settings.profile.falloff; }
 
 private:
+    /// Ends the stroke and lets go of its working memory (a copy of the key's shape).
     void finish();
 
+    BrushSettings m_settings;
     model::BrushStroke m_stroke;
     double m_unitsPerPixel = 0.0; ///< world units per pixel at the picked vertex
-    BrushHover m_hover; ///< the circle under the cursor and F-resize
 };
 
 } // namespace celform::views

@@ -67,7 +67,7 @@ std::optional<Eigen::Vector2d> HighlightTool::centringTranslation(const QPointF&
 bool HighlightTool::press(const ToolEvent& event)
 {
     model::Document* document = m_viewport->document();
-    const model::ObjectId target = m_viewport->highlightTarget();
+    const model::ObjectId target = m_target;
     if (!document || !document->data().highlight(target))
         return false;
     openGesture();
@@ -92,7 +92,7 @@ bool HighlightTool::press(const ToolEvent& event)
 void HighlightTool::move(const ToolEvent& event)
 {
     model::Document* document = m_viewport->document();
-    const model::ObjectId target = m_viewport->highlightTarget();
+    const model::ObjectId target = m_target;
     if (!document || !inGesture() || !document->data().highlight(target))
         return;
     using T = algo::HighlightOperationType;
@@ -112,7 +112,7 @@ void HighlightTool::move(const ToolEvent& event)
             }
         }
     } catch (const model::EditRefused& e) {
-        emit m_viewport->message(e.message());
+        emit message(e.message());
     }
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "celform/algorithms/render.h"
+#include "celform/model/data/object_id.h"
 #include "celform/views/tools/viewport_tool.h"
 
 #include <Eigen/Core>
@@ -16,6 +17,10 @@ class HighlightTool : public ViewportTool {
 public:
     using ViewportTool::ViewportTool;
 
+    /// The highlight layer dragged (0: none).
+    void setTarget(model::ObjectId layer) { m_target = layer; }
+    [[nodiscard]] model::ObjectId target() const { return m_target; }
+
     bool press(const ToolEvent& event) override;
     void move(const ToolEvent& event) override;
 
@@ -24,6 +29,7 @@ private:
     /// point under a widget position; nothing off the model, off the patch or in shadow.
     std::optional<Eigen::Vector2d> centringTranslation(const QPointF& position);
 
+    model::ObjectId m_target = 0;
     algo::RenderHighlight m_layer; ///< the target layer's geometry at the press
     /// translation at the press minus the one centring the highlight on the press point
     std::optional<Eigen::Vector2d> m_grabOffset;

@@ -3,6 +3,7 @@
 
 #include "celform/model/document/document.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_display.h"
 
 #include <QLineF>
 
@@ -18,8 +19,10 @@ constexpr double kGrabPixels = 14.0;
 bool LightTool::press(const ToolEvent& event)
 {
     model::Document* document = m_viewport->document();
-    if (!document || !document->hasMesh() || !m_viewport->lightGizmoShown() || !(event.modifiers & Qt::ControlModifier)
-        || QLineF(m_viewport->projectToWidget(m_viewport->lightGizmoHandle()), event.position).length() > kGrabPixels)
+    if (!document || !document->hasMesh() || !m_viewport->display().lightGizmoShown()
+        || !(event.modifiers & Qt::ControlModifier)
+        || QLineF(m_viewport->projectToWidget(m_viewport->display().lightGizmoHandle()), event.position).length()
+            > kGrabPixels)
         return false;
     return openGesture();
 }
@@ -37,10 +40,10 @@ void LightTool::move(const ToolEvent& event)
     // from the viewer) it was on; off the sphere it follows the silhouette.
     model::Light light = document->data().look.light;
     const Eigen::Vector3d centre = m_viewport->modelCentre();
-    const Eigen::Vector3d handle = m_viewport->lightGizmoHandle();
+    const Eigen::Vector3d handle = m_viewport->display().lightGizmoHandle();
     double radius = (handle - centre).norm();
     if (!(radius > 1e-9))
-        radius = m_viewport->lightGizmoRadius();
+        radius = m_viewport->display().lightGizmoRadius();
     const double along = (centre - origin).dot(direction);
     const Eigen::Vector3d closest = origin + along * direction;
     const double miss2 = (closest - centre).squaredNorm();

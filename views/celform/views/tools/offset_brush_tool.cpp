@@ -3,7 +3,7 @@
 
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
-#include "celform/views/tools/brush_cursor.h"
+#include "celform/views/tools/brush_size.h"
 #include "celform/views/viewport/viewport.h"
 
 #include <QCoreApplication>
@@ -20,12 +20,11 @@ struct OffsetBrush {
 
 } // namespace
 
-OffsetBrushTool::OffsetBrushTool(Viewport* viewport)
-    : ViewportTool(viewport)
-    , m_hover(viewport, [] { return algo::BrushFalloff::Paper; }) // (1 - d/r)^2, as the dabs
+OffsetBrushTool::OffsetBrushTool(Viewport* viewport, BrushSize& size)
+    : BrushHover(viewport, size)
 { }
 
-OffsetBrushTool::~OffsetBrushTool() = default; // the circle and the timer belong to the viewport
+OffsetBrushTool::~OffsetBrushTool() = default;
 
 void OffsetBrushTool::setStrength(double strength)
 {
@@ -53,42 +52,15 @@ QString OffsetBrushTool::targetText() const
 
 void OffsetBrushTool::activate()
 {
-    emit m_viewport->message(OffsetBrush::tr("Paint shading offsets into the %1: drag adds, Ctrl+drag subtracts, "
-                                             "Shift+drag smooths; F resizes the brush.")
-                                 .arg(targetText()));
-}
-
-void OffsetBrushTool::hover(const QPointF& position)
-{
-    m_hover.hover(position);
-}
-
-void OffsetBrushTool::leave()
-{
-    m_hover.leave(m_stroke.active());
-}
-
-void OffsetBrushTool::cameraChanged()
-{
-    m_hover.cameraChanged(m_stroke.active());
-}
-
-bool OffsetBrushTool::wantsKey(int key, Qt::KeyboardModifiers modifiers) const
-{
-    return m_hover.wantsKey(key, modifiers, m_stroke.active());
-}
-
-bool OffsetBrushTool::keyPress(int key, Qt::KeyboardModifiers modifiers)
-{
-    return m_hover.keyPress(key, modifiers, m_stroke.active(),
-        OffsetBrush::tr("Hold the cursor over the model to resize the brush there."),
-        OffsetBrush::tr("Move the mouse to resize the brush; click or Enter to keep, Esc to cancel."));
+    emit message(OffsetBrush::tr("Paint shading offsets into the %1: drag adds, Ctrl+drag subtracts, "
+                                 "Shift+drag smooths; F resizes the brush.")
+                     .arg(targetText()));
 }
 
 bool OffsetBrushTool::press(const ToolEvent& event)
 {
-    if (m_hover.isResizing()) {
-        m_hover.endResize(true); // a click keeps the new size
+    if (isResizing()) {
+        endResize(true); // a click keeps the new size
         return false;
     }
     model::Document* document = m_viewport->document();
@@ -99,9 +71,7 @@ bool OffsetBrushTool::press(const ToolEvent& event)
         return true; // a drag that starts off the model paints nothing
     const double unitsPerPixel = m_viewport->worldUnitsPerPixel(hit->second);
     model::OffsetBrush brush;
-    brush.radius = m_viewport->brushRadiusUnit() == Viewport::BrushRadiusUnit::Pixels
-        ? m_viewport->brushPixelRadius() * unitsPerPixel
-        : m_viewport->brushRadius();
+    brush.radius = size().worldRadius(unitsPerPixel);
     brush.strength = m_strength;
     brush.mirrorX = m_mirrorX;
     brush.mode = m_mode;
@@ -112,10 +82,10 @@ bool OffsetBrushTool::press(const ToolEvent& event)
     try {
         m_stroke = document->beginOffsetStroke(target(), brush, m_viewport->displayedShape());
     } catch (const model::EditRefused& e) {
-        emit m_viewport->message(e.message());
+        emit message(e.message());
         return true;
     }
-    m_hover.showAt(event.position, brush.radius / std::max(unitsPerPixel, 1e-12));
+    showAt(event.position, brush.radius / std::max(unitsPerPixel, 1e-12));
     document->applyOffsetStroke(m_stroke, hit->second);
     return true;
 }
@@ -127,7 +97,7 @@ void OffsetBrushTool::dab(const QPointF& position)
         return;
     if (const auto hit = m_viewport->pickSurface(position))
         document->applyOffsetStroke(m_stroke, hit->second);
-    m_hover.showAt(position, m_hover.circle()->radiusPixels());
+    showAt(position, circlePixels());
 }
 
 void OffsetBrushTool::move(const ToolEvent& event)
@@ -145,8 +115,8 @@ void OffsetBrushTool::finish()
 void OffsetBrushTool::release(const ToolEvent& event)
 {
     finish();
-    m_hover.hover(event.position);
-    m_hover.updateCircle();
+    hover(event.position);
+    updateCircle();
 }
 
 void OffsetBrushTool::cancel()
@@ -156,7 +126,7 @@ void OffsetBrushTool::cancel()
 
 void OffsetBrushTool::deactivate()
 {
-    m_hover.stop();
+    stopHover();
     finish();
 }
 

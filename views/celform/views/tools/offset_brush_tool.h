@@ -1,19 +1,18 @@
 // Painting shading offsets O_v (paper 3, section 4.3, eq. 4.3) on the model: drag adds, Ctrl+drag
 // subtracts, Shift+drag smooths, the Erase mode takes offsets back towards zero; the radius is the
-// viewport's brush radius (F resizes it, as for the geometry brush), the falloff (1 - d/r)^2,
+// brushes' shared radius (F resizes it, as for the geometry brush), the falloff (1 - d/r)^2,
 // optionally mirrored across x = 0. It paints into the base layer or into a key's layer at the
 // playhead. One document stroke (one undo step) per drag.
 #pragma once
 
 #include "celform/model/document/offset_stroke.h"
 #include "celform/views/tools/brush_hover.h"
-#include "celform/views/tools/viewport_tool.h"
 
 namespace celform::views {
 
-class OffsetBrushTool : public ViewportTool {
+class OffsetBrushTool : public BrushHover {
 public:
-    explicit OffsetBrushTool(Viewport* viewport);
+    OffsetBrushTool(Viewport* viewport, BrushSize& size);
     ~OffsetBrushTool() override;
 
     /// The mode of a plain drag (Ctrl+drag subtracts and Shift+drag smooths whatever it is).
@@ -37,13 +36,11 @@ public:
     void move(const ToolEvent& event) override;
     void release(const ToolEvent& event) override;
     void cancel() override;
-    void cameraChanged() override;
-    void hover(const QPointF& position) override;
-    void leave() override;
-    [[nodiscard]] bool wantsKey(int key, Qt::KeyboardModifiers modifiers) const override;
-    bool keyPress(int key, Qt::KeyboardModifiers modifiers) override;
 
-    [[nodiscard]] const BrushCursor* cursorCircle() const { return m_hover.circle(); }
+protected:
+    [[nodiscard]] bool strokeActive() const override { return m_stroke.active(); }
+    /// (1 - d/r)^2, as the dabs.
+    [[nodiscard]] algo::BrushFalloff falloff() const override { return algo::BrushFalloff::Paper; }
 
 private:
     void dab(const QPointF& position);
@@ -54,7 +51,6 @@ private:
     bool m_mirrorX = false;
     model::ObjectId m_targetKey = 0;
     model::OffsetStroke m_stroke;
-    BrushHover m_hover; ///< the circle under the cursor and F-resize, as the geometry brush's
 };
 
 } // namespace celform::views

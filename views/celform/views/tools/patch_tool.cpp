@@ -3,6 +3,7 @@
 
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
+#include "celform/views/tools/brush_size.h"
 #include "celform/views/viewport/viewport.h"
 
 #include "celform/algorithms/tri_mesh.h"
@@ -20,11 +21,23 @@ struct Patch {
 
 } // namespace
 
+PatchTool::PatchTool(Viewport* viewport, const BrushSize& size)
+    : ViewportTool(viewport)
+    , m_size(size)
+{ }
+
+void PatchTool::setTarget(const QString& name)
+{
+    if (name == m_target)
+        return;
+    m_target = name;
+    emit targetChanged();
+}
+
 void PatchTool::activate()
 {
-    emit m_viewport->message(
-        Patch::tr("Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.")
-            .arg(m_viewport->patchTarget()));
+    emit message(Patch::tr("Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.")
+                     .arg(m_target));
 }
 
 bool PatchTool::press(const ToolEvent& event)
@@ -47,9 +60,9 @@ void PatchTool::paint(const ToolEvent& event)
     model::Document* document = m_viewport->document();
     if (!document || !inGesture())
         return;
-    const QString target = m_viewport->patchTarget();
+    const QString& target = m_target;
     if (target.trimmed().isEmpty()) {
-        emit m_viewport->message(Patch::tr("Choose or create a patch in the Highlights dock first."));
+        emit message(Patch::tr("Choose or create a patch in the Highlights dock first."));
         return;
     }
     const std::vector<std::int32_t> dab = facesUnderBrush(event.position);
@@ -58,7 +71,7 @@ void PatchTool::paint(const ToolEvent& event)
     try {
         document->paintFaceSet(target, dab, event.modifiers & Qt::ControlModifier);
     } catch (const model::EditRefused& e) {
-        emit m_viewport->message(e.message());
+        emit message(e.message());
     }
 }
 
@@ -85,7 +98,7 @@ std::vector<std::int32_t> PatchTool::facesUnderBrush(const QPointF& position)
     };
     std::vector<std::int32_t> faces{std::int32_t(hit->first)};
     const Eigen::Vector3f centre = hit->second.cast<float>();
-    const float r2 = float(m_viewport->brushRadius() * m_viewport->brushRadius());
+    const float r2 = float(m_size.radius() * m_size.radius());
     // Vertices within the radius: the picked face's corners grown over shared vertices, so the
     // cost follows the dab, not the mesh, and paint does not jump gaps between parts.
     if (m_seen.size() != std::size_t(mesh.vertexCount()))

@@ -5,14 +5,25 @@
 
 #include "celform/views/tools/viewport_tool.h"
 
+#include <QString>
+
 #include <cstdint>
 #include <vector>
 
 namespace celform::views {
 
+class BrushSize;
+
 class PatchTool : public ViewportTool {
+    Q_OBJECT
 public:
-    using ViewportTool::ViewportTool;
+    /// size: the radius the brushes share.
+    PatchTool(Viewport* viewport, const BrushSize& size);
+
+    /// The face set (highlight patch) painted into; created by the first stroke when missing.
+    /// Its faces are tinted while the tool is on.
+    void setTarget(const QString& name);
+    [[nodiscard]] QString target() const { return m_target; }
 
     void activate() override;
     bool press(const ToolEvent& event) override;
@@ -23,8 +34,14 @@ public:
     /// over the surface from it. Empty when nothing is picked.
     [[nodiscard]] std::vector<std::int32_t> facesUnderBrush(const QPointF& position);
 
+signals:
+    void targetChanged();
+
 private:
     void paint(const ToolEvent& event);
+
+    const BrushSize& m_size;
+    QString m_target;
     // Working memory of facesUnderBrush(), sized once per mesh.
     std::vector<char> m_seen;
     std::vector<std::int32_t> m_frontier, m_visited;

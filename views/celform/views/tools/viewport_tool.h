@@ -1,11 +1,16 @@
 // The interface of the viewport's editing tools (brush, patch painting, alignment, light,
 // highlight drag): the viewport handles navigation and hands the rest of a left-button drag to
 // the active tool as press, move, release, or cancel when the drag ends another way. Tools turn
-// pointer motion into document operations; they hold no document data of their own.
+// pointer motion into document operations; they hold no document data of their own, but they own
+// their settings (the panels reach them through Viewport::tool<T>()). A tool reports through its
+// own signals (message, and the tool's own), which the viewport relays or listens to: it never
+// emits the viewport's.
 #pragma once
 
 #include <QCursor>
+#include <QObject>
 #include <QPointF>
+#include <QString>
 
 namespace celform::model {
 class Document;
@@ -22,14 +27,13 @@ struct ToolEvent {
     Qt::KeyboardModifiers modifiers;
 };
 
-class ViewportTool {
+class ViewportTool : public QObject {
+    Q_OBJECT
 public:
     explicit ViewportTool(Viewport* viewport)
         : m_viewport(viewport)
     { }
-    virtual ~ViewportTool() = default;
-    ViewportTool(const ViewportTool&) = delete;
-    ViewportTool& operator=(const ViewportTool&) = delete;
+    ~ViewportTool() override = default;
 
     /// The tool became active or inactive (setTool).
     virtual void activate() { }
@@ -56,6 +60,10 @@ public:
     /// keyPress then handles it and returns whether it did.
     [[nodiscard]] virtual bool wantsKey(int /*key*/, Qt::KeyboardModifiers /*modifiers*/) const { return false; }
     virtual bool keyPress(int /*key*/, Qt::KeyboardModifiers /*modifiers*/) { return false; }
+
+signals:
+    /// A message for the status bar (an edit refused, a hint); the viewport relays it.
+    void message(const QString& text);
 
 protected:
     /// Opens a document gesture for the drag: until closeGesture(), the tool's edits of one

@@ -116,7 +116,10 @@ bool DisplayedShape::refresh(model::Document& document, const Eigen::Vector3d& v
         data.updateKeyShape(*key, frame, m_dirtyVertices, m_shape.positions);
         algo::updateVertexNormals(
             m_shape.positions, mesh.faces, mesh.vertexFaces(), m_dirtyVertices, m_normals, m_scratch);
-        m_changed.swap(m_dirtyVertices);
+        // The rows whose position or normal changed: the moved vertices (one without faces has
+        // no normal to update) and every corner of their faces, whose normals were recomputed.
+        std::set_union(m_dirtyVertices.begin(), m_dirtyVertices.end(), m_scratch.begin(), m_scratch.end(),
+            std::back_inserter(m_changed));
         m_dirtyVertices.clear();
         m_shape.touch();
         return true;

@@ -46,7 +46,8 @@ public:
     [[nodiscard]] const algo::Shape& shape() const { return m_shape; }
     [[nodiscard]] const algo::Positions& positions() const { return m_shape.positions; }
     [[nodiscard]] const algo::Positions& normals() const { return m_normals; }
-    /// Rows the last refresh changed; empty after a full recomputation.
+    /// Rows whose position or normal the last refresh changed, ascending, when it was a partial
+    /// one (a key edit on some vertices); empty after a full recomputation or none.
     [[nodiscard]] const std::vector<std::uint32_t>& changedVertices() const { return m_changed; }
 
 private:
@@ -59,7 +60,7 @@ private:
     bool m_stale = true;
     std::vector<std::uint32_t> m_dirtyVertices; ///< rows to recompute when not m_stale
     std::vector<std::uint32_t> m_changed;
-    std::vector<std::int32_t> m_scratch;
+    std::vector<std::int32_t> m_scratch; ///< the rows updateVertexNormals recomputed
     algo::Shape m_shape;
     algo::Positions m_normals;
     algo::Positions m_baseScratch; ///< the animated base at the frame

@@ -9,15 +9,17 @@
 #include "celform/model/render/render_output.h"
 #include "celform/views/viewport/look_shading.h"
 #include "celform/views/tools/align_tool.h"
+#include "celform/views/tools/brush_size.h"
 #include "celform/views/tools/brush_tool.h"
 #include "celform/views/tools/highlight_tool.h"
 #include "celform/views/tools/light_tool.h"
 #include "celform/views/tools/offset_brush_tool.h"
 #include "celform/views/tools/patch_tool.h"
 #include "celform/views/viewport/axis_gizmo.h"
-#include "celform/views/overlays/drawing_outline.h"
+#include "celform/views/overlays/drawing_overlay.h"
 #include "celform/views/viewport/viewport_camera.h"
 #include "celform/views/viewport/viewport_compositor.h"
+#include "celform/views/viewport/viewport_display.h"
 #include "celform/views/viewport/viewport_scene.h"
 #include "celform/views/viewport/displayed_shape.h"
 
@@ -45,6 +47,10 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     , m_camera(std::make_unique<ViewportCamera>(m_scene->renderer()))
     , m_compositor(std::make_unique<ViewportCompositor>(this, *m_scene, *m_camera))
     , m_shape(std::make_unique<DisplayedShape>())
+    , m_display(
+          std::make_unique<ViewportDisplay>(document, *m_camera, [this](bool shading) { displayChanged(shading); }))
+    , m_overlay(new DrawingOverlay(document, this))
+    , m_brushSize(new BrushSize(this))
 {
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(64, 64);
@@ -69,13 +75,30 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     });
     m_scene->window()->AddObserver(vtkCommand::WindowMakeCurrentEvent, makeCurrent);
 
-    // The tools, one file each: adding one is a file and a line here (and its Tool value).
+    // The tools, one file each: adding one is a file and a line here (and its Tool value). The
+    // brushes share one radius; each tool's messages go to the status bar through this widget.
     m_tools[Tool::Align] = std::make_unique<AlignTool>(this);
-    m_tools[Tool::Brush] = std::make_unique<BrushTool>(this);
-    m_tools[Tool::Patch] = std::make_unique<PatchTool>(this);
+    auto brush = std::make_unique<BrushTool>(this, *m_brushSize);
+    connect(brush.get(), &BrushTool::selectionChanged, this, &Viewport::showBrushSelection);
+    m_tools[Tool::Brush] = std::move(brush);
+    auto patch = std::make_unique<PatchTool>(this, *m_brushSize);
+    connect(patch.get(), &PatchTool::targetChanged, this, [this] {
+        m_patchStale = true;
+        update();
+    });
+    m_tools[Tool::Patch] = std::move(patch);
     m_tools[Tool::Highlight] = std::make_unique<HighlightTool>(this);
-    m_tools[Tool::OffsetBrush] = std::make_unique<OffsetBrushTool>(this);
+    m_tools[Tool::OffsetBrush] = std::make_unique<OffsetBrushTool>(this, *m_brushSize);
     m_lightTool = std::make_unique<LightTool>(this);
+    for (ViewportTool* tool : allTools())
+        connect(tool, &ViewportTool::message, this, &Viewport::message);
+
+    // Showing another drawing ends aligning to the old one first (storing what was aligned).
+    connect(m_overlay, &DrawingOverlay::drawingAboutToChange, this, [this] {
+        if (m_tool == Tool::Align)
+            setTool(Tool::Navigate);
+    });
+    connect(m_overlay, &DrawingOverlay::changed, this, &Viewport::updateOverlay);
 
     if (m_document)
         connect(m_document, &model::Document::changed, this, &Viewport::documentChanged);
@@ -125,7 +148,7 @@ void Viewport::documentChanged(const model::ChangeSet& change)
         if (m_drag != Drag::None)
             endDrag(true);
         m_displayedKey = 0;
-        m_overlayDrawing = 0;
+        m_overlay->forget(); // before the align tool ends: nothing of the old document is stored
         setTool(Tool::Navigate);
         m_shape->setSource(m_preview ? DisplayedShape::Source::Blend : DisplayedShape::Source::Base);
         rebuildMesh();
@@ -145,7 +168,7 @@ void Viewport::documentChanged(const model::ChangeSet& change)
         m_shape->setSource(m_preview || m_observed ? DisplayedShape::Source::Blend : DisplayedShape::Source::Base);
     }
     bool repaint = m_shape->noteChange(change);
-    if (change.has(Part::Drawings) && (change.structure || change.touches(m_overlayDrawing))) {
+    if (change.has(Part::Drawings) && (change.structure || change.touches(m_overlay->drawing()))) {
         updateOverlay();
         repaint = true;
     }
@@ -191,26 +214,32 @@ void Viewport::syncScene()
         return;
     const model::ProjectData& data = m_document->data();
     const Eigen::Vector3d direction = m_observed ? m_observed->viewDirection() : viewDirection();
+    // The VTK arrays hold the shape as it is before this refresh: a partial refresh needs only
+    // its rows uploaded.
+    const bool uploadedBefore = m_uploadedGeneration != 0 && m_uploadedGeneration == m_shape->shape().generation;
     if (m_shape->refresh(*m_document, direction))
         ++m_shapeUpdates;
     const algo::Shape& shape = m_shape->shape();
     if (shape.positions.rows() != data.baseMesh->vertexCount())
         return; // a mesh change is on its way
     if (shape.generation != m_uploadedGeneration) {
-        m_scene->uploadShape(shape.positions, m_shape->normals());
+        if (uploadedBefore && !m_shape->changedVertices().empty())
+            m_scene->uploadRows(shape.positions, m_shape->normals(), m_shape->changedVertices());
+        else
+            m_scene->uploadShape(shape.positions, m_shape->normals());
         m_uploadedGeneration = shape.generation;
         m_lookStale = true;
         m_patchStale = true;
     }
     // The look's per-vertex data only when the look is drawn (the brush's clay look skips it).
-    if (m_lookStale && m_shadingEnabled && !m_scene->selectionShown()) {
+    if (m_lookStale && m_display->isShadingEnabled() && !m_scene->selectionShown()) {
         updateShadingOffsets(direction);
         m_scene->look().update(data, shape.positions, m_shape->normals().data(), m_document->currentFrame(),
             shape.generation, &m_shadingOffsets);
         m_lookStale = false;
     }
     if (m_patchStale) {
-        const algo::FaceSet* set = m_tool == Tool::Patch ? data.faceSet(m_patchTarget) : nullptr;
+        const algo::FaceSet* set = m_tool == Tool::Patch ? data.faceSet(tool<PatchTool>().target()) : nullptr;
         // Lifted by a thousandth of the model's size along the normals: no depth fighting with
         // the model under it, and too little to see.
         m_scene->setPatchOverlay(shape.positions, m_shape->normals(), data.baseMesh->faces, set,
@@ -335,20 +364,13 @@ void Viewport::setViewPreset(ViewPreset preset)
     cameraEdited();
 }
 
-void Viewport::setOrbitMode(OrbitMode mode)
+void Viewport::setNavigation(const Navigation& navigation)
 {
-    m_camera->setTrackball(mode == OrbitMode::Trackball);
-}
-
-OrbitMode Viewport::orbitMode() const
-{
-    return m_camera->isTrackball() ? OrbitMode::Trackball : OrbitMode::Turntable;
-}
-
-void Viewport::setOrbitSpeed(double factor)
-{
-    if (std::isfinite(factor) && factor > 0.0)
-        m_orbitSpeed = factor;
+    const double speed = m_navigation.orbitSpeed;
+    m_navigation = navigation;
+    if (!(std::isfinite(navigation.orbitSpeed) && navigation.orbitSpeed > 0.0))
+        m_navigation.orbitSpeed = speed;
+    m_camera->setTrackball(navigation.orbitMode == OrbitMode::Trackball);
 }
 
 void Viewport::cameraEdited()
@@ -436,73 +458,19 @@ vtkRenderer* Viewport::modelRenderer() const
 
 // --- reference drawing overlay ----------------------------------------------------------------
 
-void Viewport::setOverlayDrawing(model::ObjectId drawing)
-{
-    if (drawing == m_overlayDrawing)
-        return;
-    // Aligning is bound to its drawing: showing another ends it (storing what was aligned).
-    if (m_tool == Tool::Align)
-        setTool(Tool::Navigate);
-    m_overlayDrawing = drawing;
-    if (!matchedModelPoints().empty() || !matchedDrawingPoints().empty())
-        clearMatchedPoints(); // the pairs belong to the drawing they were placed on
-    updateOverlay();
-}
-
-void Viewport::setOverlayOnTop(bool onTop)
-{
-    if (onTop == m_overlayOnTop)
-        return;
-    m_overlayOnTop = onTop;
-    updateOverlay();
-}
-
 void Viewport::updateOverlay()
 {
-    const model::Drawing* drawing
-        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
-    if (!drawing) {
-        m_overlayDrawing = 0;
-        if (m_tool == Tool::Align)
-            setTool(Tool::Navigate);
-    }
-    const QImage* image = drawing ? &drawing->image : nullptr;
-    if (drawing && m_overlayOutline) {
-        if (m_outlineSource != drawing->image.cacheKey() || m_outline.isNull()) {
-            m_outline = drawingOutline(drawing->image);
-            m_outlineSource = drawing->image.cacheKey();
-        }
-        image = &m_outline;
-    }
-    // The outline is drawn over the model at full strength: it is thin.
-    m_scene->setDrawing(
-        image, m_overlayOnTop || m_overlayOutline, drawing ? (m_overlayOutline ? 1.0 : drawing->opacity) : 1.0);
+    // A drawing the document no longer has is forgotten; aligning to it ends.
+    if (!m_overlay->resolve() && m_tool == Tool::Align)
+        setTool(Tool::Navigate);
+    m_scene->setDrawing(m_overlay->image(), m_overlay->drawnOnTop(), m_overlay->opacity());
     refreshFrameScale();
     update();
 }
 
-void Viewport::setOverlayOutline(bool on)
-{
-    if (on == m_overlayOutline)
-        return;
-    m_overlayOutline = on;
-    updateOverlay();
-}
-
-double Viewport::wantedFrameScale() const
-{
-    const model::Drawing* drawing
-        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
-    if (!drawing || drawing->image.isNull() || width() <= 0 || height() <= 0)
-        return 1.0;
-    // The drawing fits inside the viewport; the camera's frame is the drawing's frame.
-    const double fit = std::min(double(width()) / drawing->image.width(), double(height()) / drawing->image.height());
-    return std::max(1.0, double(height()) / (fit * drawing->image.height()));
-}
-
 void Viewport::refreshFrameScale()
 {
-    const double wanted = wantedFrameScale();
+    const double wanted = m_overlay->frameScale();
     if (wanted != m_camera->frameScale()) {
         m_camera->setFrameScale(wanted);
         cameraEdited();
@@ -510,56 +478,12 @@ void Viewport::refreshFrameScale()
     m_scene->fitDrawing(width(), height());
 }
 
-std::optional<Eigen::Vector2d> Viewport::widgetToDrawing(const QPointF& position) const
-{
-    const model::Drawing* drawing
-        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
-    if (!drawing || drawing->image.isNull())
-        return std::nullopt;
-    const double w = drawing->image.width(), h = drawing->image.height();
-    const double fit = std::min(double(width()) / w, double(height()) / h);
-    const double x = (position.x() - 0.5 * (width() - fit * w)) / fit;
-    const double y = (position.y() - 0.5 * (height() - fit * h)) / fit;
-    if (x < 0 || y < 0 || x > w || y > h)
-        return std::nullopt;
-    return Eigen::Vector2d(x, y);
-}
-
-QPointF Viewport::drawingToWidget(const Eigen::Vector2d& pixel) const
-{
-    const model::Drawing* drawing
-        = (m_document && m_overlayDrawing) ? m_document->data().drawing(m_overlayDrawing) : nullptr;
-    if (!drawing || drawing->image.isNull())
-        return {};
-    const double w = drawing->image.width(), h = drawing->image.height();
-    const double fit = std::min(double(width()) / w, double(height()) / h);
-    return {0.5 * (width() - fit * w) + fit * pixel.x(), 0.5 * (height() - fit * h) + fit * pixel.y()};
-}
-
 // --- the look and its key light ---------------------------------------------------------------
 
-void Viewport::setBackgroundColors(const QColor& top, const QColor& bottom)
+void Viewport::displayChanged(bool shading)
 {
-    m_scene->setClayBackground(top, bottom);
-    applyShadingState(); // the look's background replaces these while it is shown
-    update();
-}
-
-void Viewport::setShadingEnabled(bool on)
-{
-    if (on == m_shadingEnabled)
-        return;
-    m_shadingEnabled = on;
-    applyShadingState();
-    update();
-}
-
-void Viewport::setLightGizmoVisible(bool on)
-{
-    if (on == m_lightGizmoVisible)
-        return;
-    m_lightGizmoVisible = on;
-    applyShadingState();
+    if (shading)
+        applyShadingState();
     update();
 }
 
@@ -568,11 +492,12 @@ void Viewport::applyShadingState()
     const bool hasMesh = m_document && m_document->hasMesh() && m_scene->hasMesh();
     // Brush selection colours are VTK scalars, shown by the clay material: the look steps aside
     // while they are displayed rather than tinting its tones (which would read as a tone change).
-    const bool active = m_shadingEnabled && hasMesh && !m_scene->selectionShown();
+    const bool shadingEnabled = m_display->isShadingEnabled();
+    const bool active = shadingEnabled && hasMesh && !m_scene->selectionShown();
     const Eigen::Vector3f background
         = m_document ? m_document->data().look.backgroundColor : model::Look{}.backgroundColor;
     m_scene->applyShading(
-        active, m_shadingEnabled && hasMesh, background, m_lightGizmoVisible && m_shadingEnabled && hasMesh);
+        active, shadingEnabled && hasMesh, background, m_display->isLightGizmoVisible() && shadingEnabled && hasMesh);
     if (active)
         m_lookStale = true;
 }
@@ -582,87 +507,16 @@ Eigen::Vector3d Viewport::modelCentre() const
     return m_camera->bounds().center();
 }
 
-double Viewport::lightGizmoRadius() const
-{
-    return std::max(0.5 * m_camera->bounds().diagonal().norm(), 1e-6);
-}
-
-bool Viewport::lightGizmoShown() const
-{
-    return m_scene->lightGizmoVisible();
-}
-
-Eigen::Vector3d Viewport::lightGizmoHandle() const
-{
-    const model::Light light = m_document ? m_document->data().look.light : model::Light{};
-    if (light.type == model::LightType::Point)
-        return light.vector;
-    Eigen::Vector3d direction = light.vector.normalized();
-    if (!direction.allFinite())
-        direction = Eigen::Vector3d::UnitZ();
-    return modelCentre() + 1.3 * lightGizmoRadius() * direction;
-}
-
 void Viewport::updateLightGizmo()
 {
     m_scene->setLightGizmo(
-        m_document ? m_document->data().look.light : model::Light{}, modelCentre(), lightGizmoRadius());
+        m_document ? m_document->data().look.light : model::Light{}, modelCentre(), m_display->lightGizmoRadius());
 }
 
 const model::Look& Viewport::currentLook() const
 {
     static const model::Look defaultLook;
     return m_document ? m_document->data().look : defaultLook;
-}
-
-// --- stereo and lines -------------------------------------------------------------------------------
-
-void Viewport::setStereo(algo::StereoOutput output)
-{
-    if (output == m_stereo)
-        return;
-    m_stereo = output;
-    update();
-}
-
-void Viewport::setStereoLook(const std::optional<model::StereoLook>& look)
-{
-    m_stereoLook = look;
-    update();
-}
-
-model::StereoLook Viewport::stereoLook() const
-{
-    if (m_stereoLook)
-        return *m_stereoLook;
-    return m_document ? m_document->data().look.stereo : model::StereoLook{};
-}
-
-algo::StereoSettings Viewport::resolvedStereoSettings() const
-{
-    // The centroid of the base model, as the offline path (model::renderShape) uses.
-    const bool mesh = m_document && m_document->hasMesh() && m_document->data().baseMesh->vertices.rows() > 0;
-    const Eigen::Vector3d centroid = mesh ? m_document->data().baseMesh->centre() : modelCentre();
-    return model::resolvedStereo(stereoLook(), camera(), centroid);
-}
-
-void Viewport::setLinesOverride(std::optional<bool> show)
-{
-    m_linesOverride = show;
-    update();
-}
-
-bool Viewport::linesShown() const
-{
-    if (!m_document || !m_document->hasMesh())
-        return false;
-    return m_linesOverride.value_or(m_document->data().look.showLines);
-}
-
-void Viewport::setEyeOnly(Eye eye)
-{
-    m_eyeOnly = eye;
-    update();
 }
 
 double Viewport::lastLineMilliseconds() const
@@ -720,8 +574,7 @@ void Viewport::resizeGL(int w, int h)
     m_scene->window()->SetSize(qRound(w * dpr), qRound(h * dpr));
     m_camera->setWidgetSize(w, h, dpr);
     m_axisGizmo->move(width() - m_axisGizmo->width() - 6, 6);
-    if (AlignTool* align = alignTool())
-        align->resized();
+    tool<AlignTool>().resized();
     refreshFrameScale();
     // A view framed by the program (load, F, Home) stays framed while the window is resized:
     // the widget's first size is only known here, after the constructor framed the model.
@@ -742,15 +595,16 @@ void Viewport::paintGL()
     frame.shape = &m_shape->shape();
     frame.mesh = m_document && m_document->hasMesh() ? m_document->data().baseMesh.get() : nullptr;
     frame.look = &currentLook();
-    frame.lines = linesShown();
-    frame.stereo = m_stereo;
-    if (m_stereo != algo::StereoOutput::Off) {
-        frame.stereoSettings = resolvedStereoSettings();
-        frame.dubois = stereoLook().dubois;
+    const ViewportDisplay& display = *m_display;
+    frame.lines = display.linesShown();
+    frame.stereo = display.stereo();
+    if (display.stereo() != algo::StereoOutput::Off) {
+        frame.stereoSettings = display.resolvedStereoSettings();
+        frame.dubois = display.stereoLook().dubois;
     }
-    frame.eyeOnly = m_eyeOnly == Eye::Left ? ViewportCompositor::Eye::Left
-        : m_eyeOnly == Eye::Right          ? ViewportCompositor::Eye::Right
-                                           : ViewportCompositor::Eye::Both;
+    frame.eyeOnly = display.eyeOnly() == ViewportDisplay::Eye::Left ? ViewportCompositor::Eye::Left
+        : display.eyeOnly() == ViewportDisplay::Eye::Right          ? ViewportCompositor::Eye::Right
+                                                                    : ViewportCompositor::Eye::Both;
     m_compositor->paint(frame);
     m_frameMilliseconds = double(timer.nsecsElapsed()) / 1e6;
     ++m_renderCount;

@@ -3,7 +3,7 @@
 // Ctrl+drag, and every other left-button drag handed to the active tool.
 #include "celform/views/viewport/viewport.h"
 
-#include "celform/views/tools/viewport_tool.h"
+#include "celform/views/tools/brush_size.h"
 #include "celform/views/viewport/viewport_camera.h"
 #include "celform/views/viewport/viewport_keys.h"
 
@@ -40,7 +40,7 @@ void Viewport::mousePressEvent(QMouseEvent* event)
         tool = m_lightTool.get();
     } else if ((mods & Qt::AltModifier) && (mods & Qt::ShiftModifier) && button == Qt::LeftButton) {
         drag = Drag::Roll; // for matching a drawing's tilt (paper 1, section 3.1.1)
-    } else if ((mods & Qt::AltModifier) && m_navigationStyle == NavigationStyle::Maya) {
+    } else if ((mods & Qt::AltModifier) && m_navigation.style == NavigationStyle::Maya) {
         // Maya: Alt + left orbit, middle pan, right dolly.
         if (button == Qt::LeftButton)
             drag = Drag::Orbit;
@@ -70,7 +70,7 @@ void Viewport::mousePressEvent(QMouseEvent* event)
     m_dragButton = button;
     m_lastPos = event->position();
     m_rollDragged = m_rollApplied = 0.0;
-    if (drag == Drag::Orbit && m_orbitAroundCursor) {
+    if (drag == Drag::Orbit && m_navigation.orbitAroundCursor) {
         if (const auto hit = pickSurface(event->position()))
             m_camera->setPivot(hit->second);
     }
@@ -134,8 +134,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
         return;
     switch (m_drag) {
     case Drag::Orbit:
-        m_camera->orbit(
-            delta.x() * kOrbitDegreesPerPixel * m_orbitSpeed, delta.y() * kOrbitDegreesPerPixel * m_orbitSpeed);
+        m_camera->orbit(delta.x() * kOrbitDegreesPerPixel * m_navigation.orbitSpeed,
+            delta.y() * kOrbitDegreesPerPixel * m_navigation.orbitSpeed);
         cameraEdited();
         break;
     case Drag::Pan:
@@ -244,13 +244,7 @@ void Viewport::keyPressEvent(QKeyEvent* event)
     case ViewportKeyCommand::BrushLarger: {
         // Krita's and Photoshop's brush-size keys.
         const double factor = *command == ViewportKeyCommand::BrushLarger ? 1.25 : 0.8;
-        if (m_brushRadiusUnit == BrushRadiusUnit::Pixels) {
-            setBrushPixelRadius(m_brushPixelRadius * factor);
-            emit message(tr("Brush radius %1 px").arg(m_brushPixelRadius, 0, 'f', 0));
-        } else {
-            setBrushRadius(m_brushRadius * factor);
-            emit message(tr("Brush radius %1").arg(m_brushRadius, 0, 'g', 3));
-        }
+        emit message(m_brushSize->scale(factor));
         if (ViewportTool* tool = activeTool())
             tool->hover(mapFromGlobal(QCursor::pos()));
         break;

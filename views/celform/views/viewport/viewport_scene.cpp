@@ -305,6 +305,28 @@ void ViewportScene::uploadShape(const algo::Positions& shape, const algo::Positi
     v.mesh->Modified();
 }
 
+void ViewportScene::uploadRows(
+    const algo::Positions& shape, const algo::Positions& normals, const std::vector<std::uint32_t>& rows)
+{
+    Vtk& v = *m;
+    if (!v.positions || v.positions->GetNumberOfTuples() != vtkIdType(shape.rows()) || normals.rows() != shape.rows())
+        return;
+    // Written in place: the arrays keep their storage and VTK sees a modified array.
+    float* positions = v.positions->GetPointer(0);
+    float* normalRows = v.normals->GetPointer(0);
+    for (const std::uint32_t r : rows) {
+        if (Eigen::Index(r) >= shape.rows())
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            positions[3 * std::size_t(r) + std::size_t(k)] = shape(Eigen::Index(r), k);
+            normalRows[3 * std::size_t(r) + std::size_t(k)] = normals(Eigen::Index(r), k);
+        }
+    }
+    v.positions->Modified();
+    v.normals->Modified();
+    v.mesh->Modified();
+}
+
 const float* ViewportScene::normals() const
 {
     return m->normals ? m->normals->GetPointer(0) : nullptr;

@@ -41,8 +41,12 @@ public:
     /// New topology (or none): positions and normals arrays sized for it, cells copied.
     void setMesh(const algo::TriMesh* mesh);
     [[nodiscard]] bool hasMesh() const;
-    /// Copies positions and normals (#V by 3 each, the mesh's vertex count) into the arrays.
+    /// Copies positions and normals (#V by 3 each, the mesh's vertex count) into the arrays:
+    /// every row, or only the given rows (ascending) when the arrays hold the rest already, so a
+    /// brush step costs what the brush touched.
     void uploadShape(const algo::Positions& shape, const algo::Positions& normals);
+    void uploadRows(
+        const algo::Positions& shape, const algo::Positions& normals, const std::vector<std::uint32_t>& rows);
     /// The uploaded normals, row-major #V by 3 floats (null without a mesh).
     [[nodiscard]] const float* normals() const;
     /// Paper 1, section 3.1.2: the brush's selected vertices in red, shaded by their falloff

@@ -1,12 +1,9 @@
 // The viewport's editing tools (brush, offset brush, patch painting, alignment, highlight drag)
-// as the viewport holds them: which is active, the brush sizes they share, picking the surface
-// under the pointer, and the alignment tool's state the panels read.
+// as the viewport holds them: which is active, finding one by type, the brush selection a stroke
+// shows, and picking the surface under the pointer.
 #include "celform/views/viewport/viewport.h"
 
 #include "celform/model/document/document.h"
-#include "celform/views/tools/align_tool.h"
-#include "celform/views/tools/brush_tool.h"
-#include "celform/views/tools/offset_brush_tool.h"
 #include "celform/views/viewport/viewport_scene.h"
 #include "celform/views/viewport/displayed_shape.h"
 
@@ -24,9 +21,14 @@ ViewportTool* Viewport::activeTool() const
     return it == m_tools.end() ? nullptr : it->second.get();
 }
 
-AlignTool* Viewport::alignTool() const
+std::vector<ViewportTool*> Viewport::allTools() const
 {
-    return static_cast<AlignTool*>(m_tools.at(Tool::Align).get());
+    std::vector<ViewportTool*> tools;
+    tools.reserve(m_tools.size() + 1);
+    for (const auto& [kind, tool] : m_tools)
+        tools.push_back(tool.get());
+    tools.push_back(m_lightTool.get());
+    return tools;
 }
 
 void Viewport::setTool(Tool tool)
@@ -49,41 +51,6 @@ void Viewport::setTool(Tool tool)
     setCursor(activeTool() ? activeTool()->cursor() : Qt::ArrowCursor);
     update();
     emit toolChanged(tool);
-}
-
-void Viewport::setBrushRadius(double radius)
-{
-    if (!(radius > 0.0) || !std::isfinite(radius) || radius == m_brushRadius)
-        return;
-    m_brushRadius = radius;
-    emit brushRadiusChanged(radius);
-}
-
-void Viewport::setBrushPixelRadius(double pixels)
-{
-    if (!(pixels > 0.0) || !std::isfinite(pixels) || pixels == m_brushPixelRadius)
-        return;
-    m_brushPixelRadius = std::clamp(pixels, 1.0, 4096.0);
-    emit brushPixelRadiusChanged(m_brushPixelRadius);
-}
-
-OffsetBrushTool* Viewport::offsetBrushTool() const
-{
-    return static_cast<OffsetBrushTool*>(m_tools.at(Tool::OffsetBrush).get());
-}
-
-BrushTool* Viewport::brushTool() const
-{
-    return static_cast<BrushTool*>(m_tools.at(Tool::Brush).get());
-}
-
-void Viewport::setPatchTarget(const QString& name)
-{
-    if (name == m_patchTarget)
-        return;
-    m_patchTarget = name;
-    m_patchStale = true;
-    update();
 }
 
 void Viewport::showBrushSelection(const algo::BrushSelection* selection, const algo::BrushSelection* mirror)
@@ -128,43 +95,6 @@ std::int64_t Viewport::pickVertex(const QPointF& position)
         }
     }
     return best;
-}
-
-// --- alignment (the AlignTool's state, reachable from the panels) ----------------------------------
-
-void Viewport::setPointMatching(bool on)
-{
-    alignTool()->setMatching(on);
-}
-
-bool Viewport::isPointMatching() const
-{
-    return alignTool()->isMatching();
-}
-
-const std::vector<Eigen::Vector3d>& Viewport::matchedModelPoints() const
-{
-    return alignTool()->modelPoints();
-}
-
-const std::vector<Eigen::Vector2d>& Viewport::matchedDrawingPoints() const
-{
-    return alignTool()->drawingPoints();
-}
-
-void Viewport::clearMatchedPoints()
-{
-    alignTool()->clearPoints();
-}
-
-void Viewport::removeLastMatchedPoint()
-{
-    alignTool()->removeLastPoint();
-}
-
-std::optional<double> Viewport::solveFromMatchedPoints(QString* error)
-{
-    return alignTool()->solve(error);
 }
 
 } // namespace celform::views

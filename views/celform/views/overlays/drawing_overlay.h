@@ -1,0 +1,79 @@
+// The reference drawing fixed in the viewport (paper 1, section 3.1.1): which drawing, over the
+// model (with its opacity) or under it as a backdrop, or only its outline in magenta for checking
+// that contours meet; its height fills the view, so a camera aligned here matches the drawing.
+// The viewport draws what this says and follows its signals.
+#pragma once
+
+#include "celform/model/data/object_id.h"
+
+#include <QImage>
+#include <QObject>
+#include <QPointF>
+
+#include <Eigen/Core>
+
+#include <optional>
+
+class QWidget;
+
+namespace celform::model {
+class Document;
+struct Drawing;
+} // namespace celform::model
+
+namespace celform::views {
+
+class DrawingOverlay : public QObject {
+    Q_OBJECT
+public:
+    /// view: the widget the drawing fills (its size places the drawing).
+    DrawingOverlay(model::Document* document, QWidget* view);
+
+    /// The drawing shown (0: none).
+    void setDrawing(model::ObjectId drawing);
+    [[nodiscard]] model::ObjectId drawing() const { return m_drawing; }
+    /// Over the model (with the drawing's opacity) or under it, as a backdrop.
+    void setOnTop(bool onTop);
+    [[nodiscard]] bool onTop() const { return m_onTop; }
+    /// Only the drawing's lines and silhouette edge, in magenta, for checking contours meet.
+    void setOutline(bool on);
+    [[nodiscard]] bool outline() const { return m_outline; }
+
+    /// Widget position (logical pixels) to drawing pixels and back, for the drawing shown.
+    [[nodiscard]] std::optional<Eigen::Vector2d> widgetToDrawing(const QPointF& position) const;
+    [[nodiscard]] QPointF drawingToWidget(const Eigen::Vector2d& pixel) const;
+
+    // --- for the viewport that draws it -----------------------------------------------------
+    /// The drawing shown, or null; one the document no longer has is forgotten (no signal).
+    const model::Drawing* resolve();
+    /// The image to draw (the drawing's, or its outline), null for none; after resolve().
+    [[nodiscard]] const QImage* image();
+    [[nodiscard]] bool drawnOnTop() const { return m_onTop || m_outline; }
+    /// The outline is drawn at full strength: it is thin.
+    [[nodiscard]] double opacity() const;
+    /// How much the camera's frame is enlarged so that the drawing's frame fits in the view.
+    [[nodiscard]] double frameScale() const;
+    /// Forgets the drawing without signals (a new document: the viewport redraws everything).
+    void forget() { m_drawing = 0; }
+
+signals:
+    /// The drawing shown is about to change: aligning to the old one ends (and stores) first.
+    void drawingAboutToChange();
+    /// The drawing shown changed.
+    void drawingChanged();
+    /// What is drawn changed (the drawing, on top, outline).
+    void changed();
+
+private:
+    [[nodiscard]] const model::Drawing* current() const;
+
+    model::Document* m_document;
+    QWidget* m_view;
+    model::ObjectId m_drawing = 0;
+    bool m_onTop = true;
+    bool m_outline = false;
+    QImage m_outlineImage; ///< the drawing's outline, made when first shown
+    qint64 m_outlineSource = 0; ///< cacheKey of the image m_outlineImage was made from
+};
+
+} // namespace celform::views
