@@ -1,23 +1,24 @@
-# Third-party packages, all from Debian 12. Each workaround names its STACK.md pitfall.
+# Third-party packages, all from Debian 12. Each workaround names its section of docs/pitfalls.md.
 set(CMAKE_AUTOMOC ON)
 set(CMAKE_AUTORCC ON)
 
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent Svg Test LinguistTools)
 
-# Pitfall 4: CGAL ships a FindEigen3 module without Eigen3::Eigen; ask for the config package.
+# docs/pitfalls.md, "Eigen config package": CGAL ships a FindEigen3 module without Eigen3::Eigen; ask for the config package.
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(CGAL REQUIRED)
 
 # VTK serves views/ and the editor only (CELFORM_BUILD_EDITOR).
 if(CELFORM_BUILD_EDITOR)
-  # Pitfall 3: VTK 9.1's targets reference MPI::MPI_C.
+  # docs/pitfalls.md, "VTK and MPI": VTK 9.1's targets reference MPI::MPI_C.
   find_package(MPI COMPONENTS C)
   find_package(VTK REQUIRED COMPONENTS
     CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
     RenderingCore RenderingOpenGL2 RenderingImage InteractionStyle FiltersCore FiltersSources)
 endif()
 
-# Pitfall 1 (needs openimageio-tools installed) and pitfall 2 (drop the opencv4 include path).
+# docs/pitfalls.md, "OpenImageIO tools" (needs openimageio-tools installed) and "OpenImageIO include
+# path" (drop the opencv4 include path).
 find_package(OpenImageIO REQUIRED)
 get_target_property(_oiio_inc OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
 if(_oiio_inc)

@@ -117,7 +117,7 @@ echo
 echo "fuzz: per target (corpora in $out/corpus):"
 printf '  %s\n' "${summary[@]}"
 # A finding in a format the product reads in a child process (Assimp's meshes, OpenImageIO's
-# TIFF, EXR and PSD: model/import_process.h) is contained when the product, given the same bytes,
+# TIFF, EXR and PSD: celform/model/io/import_process.h) is contained when the product, given the same bytes,
 # refuses them in one line (exit 3) or loads them (exit 0) without dying itself: the defect is in the
 # third-party reader and cannot take an open document along. Such findings are listed and kept in
 # FUZZ_OUT/contained/ for an upstream report, and do not fail the run; every other finding does.

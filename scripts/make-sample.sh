@@ -41,7 +41,7 @@ cp resources/samples/elephant-plain.celform "$hl"
 rm -f "$hl.bak"
 echo "wrote $hl"
 
-# The showcase (issue 13): the elephant rears with its trunk raised, the drawings show it standing
+# The showcase: the elephant rears with its trunk raised, the drawings show it standing
 # with the trunk hanging. Key "side" is the Tux Paint drawing's view (from +z, head to the right),
 # key "far side" the contour drawing's (from -z, head to the left); in each, strokes of the falloff
 # brush on the trunk's tip (vertex 691) swing it forward and down, as the drawing has it. In

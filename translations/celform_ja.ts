@@ -452,12 +452,12 @@
         <translation>画像サイズ（既定値 1280x720）。</translation>
     </message>
     <message>
-        <source>Shading style for this render.</source>
-        <translation>このレンダリングで使用するシェーディングスタイル。</translation>
+        <source>Shading style of this picture (default: the project&apos;s).</source>
+        <translation>この画像のシェーディングスタイル（既定ではプロジェクトのもの）。</translation>
     </message>
     <message>
-        <source>Key light for this render.</source>
-        <translation>このレンダリングで使用するキーライト。</translation>
+        <source>Key light of this picture (default: the project&apos;s).</source>
+        <translation>この画像のキーライト（既定ではプロジェクトのもの）。</translation>
     </message>
     <message>
         <source>Stereo output.</source>
@@ -934,14 +934,6 @@
         <translation>画像サイズ（既定値 1280x720）。</translation>
     </message>
     <message>
-        <source>Shading style of the analysed picture.</source>
-        <translation>解析する画像のシェーディングスタイル。</translation>
-    </message>
-    <message>
-        <source>Key light for this analysis.</source>
-        <translation>この解析のキーライト。</translation>
-    </message>
-    <message>
         <source>Bright/dark ratio window a segment should be in: LO,HI, lenient (0.2-0.8), medium (0.35-0.65, the default) or strict (0.5).</source>
         <translation>セグメントの明暗比が収まるべき範囲: LO,HI、lenient（0.2-0.8）、medium（0.35-0.65、既定）、strict（0.5）。</translation>
     </message>
@@ -1024,10 +1016,6 @@
     <message>
         <source>the light stays where it is</source>
         <translation>ライトは移動しません</translation>
-    </message>
-    <message>
-        <source>Lines in the analysed picture (on) or not (off), or only these kinds: silhouette, crease, border, material, ridge, comma-separated.</source>
-        <translation>解析する画像に線を描くか（on）描かないか（off）、または描く線の種類だけをカンマ区切りで指定: silhouette、crease、border、material、ridge。</translation>
     </message>
     <message>
         <source>Frame to optimise for (default 0).</source>

@@ -61,7 +61,7 @@ model::AnalysisSettings readAnalysisSettings(const Invocation& in)
     return settings;
 }
 
-int runAnalyze(const Invocation& in)
+int runAnalyse(const Invocation& in)
 {
     model::RenderJob job;
     readPictureOptions(in, job);
@@ -74,7 +74,7 @@ int runAnalyze(const Invocation& in)
 
     const QString path = in.argument(0);
     const model::ProjectData data = model::loadProject(path);
-    const model::FrameAnalysis frame = model::analyzeProject(data, path, job, settings);
+    const model::FrameAnalysis frame = model::analyseProject(data, path, job, settings);
     if (in.isSet("out"))
         model::writeAnalysisExr(frame, out);
 
@@ -159,8 +159,8 @@ int runCurvature(const Invocation& in)
             throw model::IoError(path, error);
         blender.shape(data, view->normalized(), frame, shape);
     }
-    model::DepthAnalyzer analyzer;
-    const algo::Curvatures& curvature = analyzer.curvatures(*data.baseMesh, shape, 0);
+    model::DepthAnalyser analyser;
+    const algo::Curvatures& curvature = analyser.curvatures(*data.baseMesh, shape, 0);
     model::writeCurvaturePly(shape, data.baseMesh->faces, curvature, out);
     if (in.isSet("json")) {
         double kMin = 0, kMax = 0;
@@ -180,7 +180,7 @@ QJsonObject lightJson(const model::Light& light)
         {"vector", model::vec3Json(light.vector)}};
 }
 
-int runOptimizeLight(const Invocation& in)
+int runOptimiseLight(const Invocation& in)
 {
     model::RenderJob job;
     readCameraOptions(in, job);
@@ -277,37 +277,36 @@ int runOptimizeLight(const Invocation& in)
 
 std::vector<SubCommand> analysisCommands()
 {
-    std::vector<OptionSpec> analyzeOptions = camera_options::specs();
-    const std::vector<OptionSpec> more = {
-        {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to analyse (default 0).")},
-        {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Picture size (default 1280x720).")},
-        {"style", "STYLE", QT_TRANSLATE_NOOP("celform::app::Cli", "Shading style of the analysed picture.")},
-        {"lines", "on|off|KIND,...",
-            QT_TRANSLATE_NOOP("celform::app::Cli",
-                "Lines in the analysed picture (on) or not (off), or only these kinds: silhouette, crease, "
-                "border, material, ridge, comma-separated.")},
-        {"light", "TYPE:X,Y,Z", QT_TRANSLATE_NOOP("celform::app::Cli", "Key light for this analysis.")},
-        {"window", "LO,HI",
-            QT_TRANSLATE_NOOP("celform::app::Cli",
-                "Bright/dark ratio window a segment should be in: LO,HI, lenient (0.2-0.8), medium (0.35-0.65, "
-                "the default) or strict (0.5).")},
-        {"depth-threshold", "FRACTION",
-            QT_TRANSLATE_NOOP("celform::app::Cli",
-                "Neighbouring pixels whose depths differ by this fraction of the model's bounding-box diagonal "
-                "or more are in different segments (default 0.02).")},
-        {"min-pixels", "N",
-            QT_TRANSLATE_NOOP("celform::app::Cli", "Segments smaller than this are dropped as noise (default 64).")},
-        {"json", nullptr, kJsonOption},
+    // The analysis settings `analyze` and `optimize-light` share (readAnalysisSettings).
+    const OptionSpec window{"window", "LO,HI",
+        QT_TRANSLATE_NOOP("celform::app::Cli",
+            "Bright/dark ratio window a segment should be in: LO,HI, lenient (0.2-0.8), medium (0.35-0.65, "
+            "the default) or strict (0.5).")};
+    const OptionSpec depthThreshold{"depth-threshold", "FRACTION",
+        QT_TRANSLATE_NOOP("celform::app::Cli",
+            "Neighbouring pixels whose depths differ by this fraction of the model's bounding-box diagonal "
+            "or more are in different segments (default 0.02).")};
+    const OptionSpec minPixels{"min-pixels", "N",
+        QT_TRANSLATE_NOOP("celform::app::Cli", "Segments smaller than this are dropped as noise (default 64).")};
+
+    std::vector<OptionSpec> analyseOptions = camera_options::specs();
+    const std::vector<OptionSpec> picture
+        = {{"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to analyse (default 0).")},
+            {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Picture size (default 1280x720).")}};
+    const std::vector<OptionSpec> look = lookOverrideSpecs();
+    const std::vector<OptionSpec> analysis = {window, depthThreshold, minPixels, {"json", nullptr, kJsonOption},
         {"out", "FILE.exr",
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Write the picture and the buffers (curvature, segment ids, depth, depth error, features) as EXR "
                 "channels.")}};
-    analyzeOptions.insert(analyzeOptions.end(), more.begin(), more.end());
-    std::vector<OptionSpec> optimizeOptions = camera_options::specs();
-    const std::vector<OptionSpec> optimizeMore = {
+    for (const auto* part : {&picture, &look, &analysis})
+        analyseOptions.insert(analyseOptions.end(), part->begin(), part->end());
+
+    std::vector<OptionSpec> optimiseOptions = camera_options::specs();
+    const std::vector<OptionSpec> optimiseMore = {
         {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to optimise for (default 0).")},
         {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Size of the analysed picture (default 1280x720).")},
-        more[5], // --window
+        window,
         {"weight", "constant|area",
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "How much each segment counts: all alike (constant, the default: small dents count as much as the "
@@ -318,11 +317,10 @@ std::vector<SubCommand> analysisCommands()
                 "annealing (shrinking random steps) or random (independent random lights, the best kept).")},
         {"iterations", "N", QT_TRANSLATE_NOOP("celform::app::Cli", "Iterations (default 64).")},
         {"seed", "S", QT_TRANSLATE_NOOP("celform::app::Cli", "Seed of the annealing and random methods (default 1).")},
-        more[6], // --depth-threshold
-        more[7], // --min-pixels
+        depthThreshold, minPixels,
         {"dry-run", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Report the light found without saving it.")},
         {"json", nullptr, kJsonOption}};
-    optimizeOptions.insert(optimizeOptions.end(), optimizeMore.begin(), optimizeMore.end());
+    optimiseOptions.insert(optimiseOptions.end(), optimiseMore.begin(), optimiseMore.end());
     return {
         {"analyze",
             {"celform analyze P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] [--size WxH] "
@@ -331,7 +329,7 @@ std::vector<SubCommand> analysisCommands()
              "[--out FILE.exr]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error."),
-            {{"P", kProjectArgument}}, analyzeOptions, runAnalyze},
+            {{"P", kProjectArgument}}, analyseOptions, runAnalyse},
         {"curvature", {"celform curvature P [--frame F] [--view X,Y,Z] [--json] --out FILE.ply"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Writes the per-vertex principal curvatures k1, k2 and the Gaussian curvature K as PLY properties."),
@@ -351,7 +349,7 @@ std::vector<SubCommand> analysisCommands()
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Moves the key light so that every segment's bright/dark ratio gets into the window, and saves "
                 "the project."),
-            {{"P", kProjectArgument}}, optimizeOptions, runOptimizeLight},
+            {{"P", kProjectArgument}}, optimiseOptions, runOptimiseLight},
     };
 }
 

@@ -1,4 +1,4 @@
-// `celform camera`: the shot's camera path (issue 13; paper 1, figures 10-12) from the command
+// `celform camera`: the shot's camera path (paper 1, figures 10-12) from the command
 // line: a turntable, a key at a frame, clearing, listing. Edits go through the document and are
 // saved in the project.
 #include "cli/command.h"

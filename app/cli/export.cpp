@@ -1,4 +1,4 @@
-// `celform export`: the view-dependent model's animation for other tools (issue 13, "Export"):
+// `celform export`: the view-dependent model's animation for other tools:
 // a glTF scene (text or binary) with key morph targets, their weights and the camera path, a PC2
 // point cache, or one OBJ mesh per frame. The model's exporters do the work (export.h).
 #include "cli/command.h"

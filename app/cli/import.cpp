@@ -1,4 +1,4 @@
-// The hidden sub-commands the model runs as its child processes (model/import_process.h): each reads
+// The hidden sub-commands the model runs as its child processes (celform/model/io/import_process.h): each reads
 // one untrusted file with a third-party library and writes the result for the parent. They are
 // left out of `celform --help` and the README: nobody types them.
 #include "cli/command.h"

@@ -6,7 +6,7 @@
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/mesh_io.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
 
@@ -80,15 +80,10 @@ int runBrush(const Invocation& in)
     const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
     algo::BrushProfile profile;
     if (in.isSet("falloff")) {
-        const QString curve = in.value("falloff");
-        if (curve == QLatin1String("paper"))
-            profile.falloff = algo::BrushFalloff::Paper;
-        else if (curve == QLatin1String("smooth"))
-            profile.falloff = algo::BrushFalloff::Smooth;
-        else if (curve == QLatin1String("sphere"))
-            profile.falloff = algo::BrushFalloff::Sphere;
-        else
-            throw UsageError{Cli::tr("--falloff must be paper, smooth or sphere, not “%1”").arg(curve)};
+        const std::pair<const char*, algo::BrushFalloff> curves[] = {{"paper", algo::BrushFalloff::Paper},
+            {"smooth", algo::BrushFalloff::Smooth}, {"sphere", algo::BrushFalloff::Sphere}};
+        profile.falloff
+            = parseChoice(in.value("falloff"), curves, Cli::tr("--falloff must be paper, smooth or sphere, not “%1”"));
     }
     if (in.isSet("strength")) {
         profile.strength = parseNumber("strength", in.value("strength"));
@@ -132,7 +127,7 @@ int runEval(const Invocation& in)
     const model::ProjectData data = model::loadProject(path);
     if (!data.baseMesh)
         throw model::IoError(path, Cli::tr("has no base model"));
-    // The renderer's own evaluation (frame_evaluation.h): without camera options, the camera path
+    // The renderer's own evaluation (frame_evaluator.h): without camera options, the camera path
     // (or the render camera) at the frame, and the animated base there.
     model::FrameEvaluator evaluator;
     QString error;

@@ -28,22 +28,16 @@ using StereoOutput = algo::StereoOutput;
 
 UnspecifiedMode parseUnspecified(const QString& text)
 {
-    if (text == QLatin1String("dummy"))
-        return model::UnspecifiedMode::Dummy;
-    if (text == QLatin1String("cosine"))
-        return model::UnspecifiedMode::Cosine;
-    if (text == QLatin1String("cosine2"))
-        return model::UnspecifiedMode::Cosine2;
-    throw UsageError{Cli::tr("--unspecified takes dummy, cosine or cosine2, not “%1”").arg(text)};
+    const std::pair<const char*, UnspecifiedMode> modes[] = {{"dummy", model::UnspecifiedMode::Dummy},
+        {"cosine", model::UnspecifiedMode::Cosine}, {"cosine2", model::UnspecifiedMode::Cosine2}};
+    return parseChoice(text, modes, Cli::tr("--unspecified takes dummy, cosine or cosine2, not “%1”"));
 }
 
 TimeInterpolation parseTime(const QString& text)
 {
-    if (text == QLatin1String("natural"))
-        return model::TimeInterpolation::NaturalSpline;
-    if (text == QLatin1String("periodic"))
-        return model::TimeInterpolation::PeriodicSpline;
-    throw UsageError{Cli::tr("--time takes natural or periodic, not “%1”").arg(text)};
+    const std::pair<const char*, TimeInterpolation> modes[] = {
+        {"natural", model::TimeInterpolation::NaturalSpline}, {"periodic", model::TimeInterpolation::PeriodicSpline}};
+    return parseChoice(text, modes, Cli::tr("--time takes natural or periodic, not “%1”"));
 }
 
 StereoOutput parseStereo(const QString& text)
@@ -52,10 +46,7 @@ StereoOutput parseStereo(const QString& text)
         = {{"off", algo::StereoOutput::Off}, {"anaglyph", algo::StereoOutput::Anaglyph},
             {"dubois", algo::StereoOutput::Dubois}, {"halfcolor", algo::StereoOutput::HalfColor},
             {"sbs", algo::StereoOutput::SideBySide}, {"tb", algo::StereoOutput::TopBottom}};
-    for (const auto& [name, mode] : modes)
-        if (text == QLatin1String(name))
-            return mode;
-    throw UsageError{Cli::tr("--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”").arg(text)};
+    return parseChoice(text, modes, Cli::tr("--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”"));
 }
 
 int runSet(const Invocation& in)
@@ -218,17 +209,13 @@ std::vector<SubCommand> lookCommands()
                 QT_TRANSLATE_NOOP("celform::app::Cli",
                     "Frames to render, A-B inclusive, every STEP-th from A (default 1); each to a file of its own "
                     "(a # in --out, or _####, is the frame number).")},
-            {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Image size (default 1280x720).")},
-            {"style", "STYLE", QT_TRANSLATE_NOOP("celform::app::Cli", "Shading style for this render.")},
-            {"lines", "on|off|KIND,...",
-                QT_TRANSLATE_NOOP("celform::app::Cli",
-                    "Draw the lines (on) or not (off), or only these kinds: silhouette, crease, border, material, "
-                    "ridge (apparent ridges), comma-separated.")},
-            {"ridge-threshold", "T",
-                QT_TRANSLATE_NOOP("celform::app::Cli",
-                    "Apparent-ridge threshold for this render: view-dependent curvature times the median edge "
-                    "length (default: the project's, 0.3 in new projects; lower draws more).")},
-            {"light", "TYPE:X,Y,Z", QT_TRANSLATE_NOOP("celform::app::Cli", "Key light for this render.")},
+            {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Image size (default 1280x720).")}};
+    const std::vector<OptionSpec> look = lookOverrideSpecs();
+    const std::vector<OptionSpec> rest
+        = {{"ridge-threshold", "T",
+               QT_TRANSLATE_NOOP("celform::app::Cli",
+                   "Apparent-ridge threshold for this render: view-dependent curvature times the median edge "
+                   "length (default: the project's, 0.3 in new projects; lower draws more).")},
             {"stereo", "MODE", QT_TRANSLATE_NOOP("celform::app::Cli", "Stereo output.")},
             {"pass", "NAME", QT_TRANSLATE_NOOP("celform::app::Cli", "Write one render pass.")},
             {"out", "FILE",
@@ -241,7 +228,8 @@ std::vector<SubCommand> lookCommands()
                 QT_TRANSLATE_NOOP("celform::app::Cli",
                     "Leave frames whose file exists as they are (to resume an interrupted render).")},
             {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print the frames written and skipped as JSON.")}};
-    renderOptions.insert(renderOptions.end(), more.begin(), more.end());
+    for (const auto* part : {&more, &look, &rest})
+        renderOptions.insert(renderOptions.end(), part->begin(), part->end());
     return {
         {"set",
             {"celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--time natural|periodic] "

@@ -241,10 +241,7 @@ ShadingStyle parseStyle(const char* option, const QString& text)
     const std::pair<const char*, model::ShadingStyle> styles[]
         = {{"toon", model::ShadingStyle::Toon}, {"gooch", model::ShadingStyle::Gooch},
             {"comic", model::ShadingStyle::Comic}, {"lambert", model::ShadingStyle::Lambert}};
-    for (const auto& [name, style] : styles)
-        if (text == QLatin1String(name))
-            return style;
-    throw UsageError{Cli::tr("--style takes toon, gooch, comic or lambert, not “%1”").arg(text)};
+    return parseChoice(text, styles, Cli::tr("--style takes toon, gooch, comic or lambert, not “%1”"));
 }
 
 bool sameFile(const QString& a, const QString& b)
@@ -306,6 +303,18 @@ Vector3 view(const Invocation& in)
 }
 
 } // namespace camera_options
+
+std::vector<OptionSpec> lookOverrideSpecs()
+{
+    return {{"style", "STYLE",
+                QT_TRANSLATE_NOOP("celform::app::Cli", "Shading style of this picture (default: the project's).")},
+        {"lines", "on|off|KIND,...",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Draw the lines (on) or not (off), or only these kinds: silhouette, crease, border, material, "
+                "ridge (apparent ridges), comma-separated.")},
+        {"light", "TYPE:X,Y,Z",
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Key light of this picture (default: the project's).")}};
+}
 
 void readCameraOptions(const Invocation& in, model::RenderJob& job)
 {

@@ -14,11 +14,13 @@
 #include <QSize>
 #include <QString>
 
+#include <cstddef>
 #include <optional>
+#include <utility>
 
 namespace celform::app {
 
-// The render limits are the renderer's (model/render_job.h), shared with the editor's render dialog.
+// The render limits are the renderer's (celform/model/render/render_job.h), shared with the editor's render dialog.
 /// The most frames one `render --frames` run writes.
 constexpr int kMaxFramesPerRun = model::kMaxFramesPerRender;
 using model::kMaxRenderPixels;
@@ -72,6 +74,17 @@ model::ShadingStyle parseStyle(const char* option, const QString& text);
 /// Whether two paths name the same existing file (through links too).
 bool sameFile(const QString& a, const QString& b);
 
+/// One word of a fixed set (an enum's names on the command line): the value named by text, or a
+/// UsageError of message (a Cli::tr() text whose %1 is what was given).
+template <typename T, std::size_t N>
+T parseChoice(const QString& text, const std::pair<const char*, T> (&choices)[N], const QString& message)
+{
+    for (const auto& [name, value] : choices)
+        if (text == QLatin1String(name))
+            return value;
+    throw UsageError{message.arg(text)};
+}
+
 /// An option's parsed value, or none when it is not given.
 template <typename Parse>
 auto optionalValue(const Invocation& in, const char* option, Parse parse) -> std::optional<decltype(parse(QString()))>
@@ -95,6 +108,10 @@ void checkCombination(const Invocation& in, bool required);
 /// The --view direction.
 [[nodiscard]] Eigen::Vector3d view(const Invocation& in);
 } // namespace camera_options
+
+/// The look overrides readPictureOptions reads, --style, --lines and --light: their entries for the
+/// option lists of `render` and `analyze`.
+std::vector<OptionSpec> lookOverrideSpecs();
 
 /// The camera (--view, or --eye, --target and --up), --frame and --size, read into job.
 void readCameraOptions(const Invocation& in, model::RenderJob& job);

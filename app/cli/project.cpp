@@ -95,7 +95,7 @@ int runInfo(const Invocation& in)
             {"time", data.blend.time == model::TimeInterpolation::PeriodicSpline ? "periodic" : "natural"}});
     if (data.look.renderCamera)
         root.insert("render_camera", model::cameraJson(*data.look.renderCamera));
-    // The scene's time (issue 13): frame F is the animation at time F / fps.
+    // The scene's time: frame F is the animation at time F / fps.
     root.insert("fps", data.time.fps);
     root.insert("frame_range", QJsonArray{data.time.firstFrame, data.time.lastFrame});
     root.insert("current_frame", data.currentFrame);

@@ -1,4 +1,4 @@
-// The editor as a module: `celform` loads it (app/cli/launch.cpp) when a window is wanted, so that
+// The editor as a module: `celform` loads it (app/launcher/launch.cpp) when a window is wanted, so that
 // VTK, OpenGL and Qt Widgets are mapped only then. Its one entry creates the QApplication and runs
 // the main window; the launcher has already checked the arguments and that a display exists.
 #include "cli/command_line.h"
@@ -17,7 +17,8 @@
 extern "C" Q_DECL_EXPORT int celform_editor_main(int argc, char** argv)
 {
     using celform::app::MainWindow;
-    // The viewport's GL format must be the default before QApplication exists (STACK.md).
+    // The viewport's GL format must be the default before QApplication exists (docs/pitfalls.md,
+    // "VTK in a Qt 6 widget").
     QSurfaceFormat::setDefaultFormat(celform::views::Viewport::defaultFormat());
     QApplication app(argc, argv);
     // The language of Edit > Preferences (the system's unless chosen there), read at start only.

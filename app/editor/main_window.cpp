@@ -9,7 +9,7 @@
 #include "editor/getting_started.h"
 #include "editor/jobs/job_runner.h"
 #include "editor/settings/preferences.h"
-#include "editor/recovery.h"
+#include "editor/recovery_manager.h"
 #include "editor/review_window.h"
 
 #include "celform/model/io/animation_io.h"

@@ -19,7 +19,7 @@
 namespace celform::app {
 namespace {
 
-/// The editor module's entry: creates the QApplication and runs the editor (app/editor_module.cpp).
+/// The editor module's entry: creates the QApplication and runs the editor (app/editor/editor_module.cpp).
 using EditorEntry = int (*)(int argc, char** argv);
 constexpr const char* kEditorEntry = "celform_editor_main";
 

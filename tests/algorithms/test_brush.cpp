@@ -118,7 +118,7 @@ private slots:
         QCOMPARE(brushFalloff(d, 3.0), expected);
     }
 
-    // The falloff choices (issue 10): at d = r/2, t = 1/2: smooth 3t^2 - 2t^3 = 0.5, sphere
+    // The falloff choices: at d = r/2, t = 1/2: smooth 3t^2 - 2t^3 = 0.5, sphere
     // sqrt(1 - 1/4) = 0.8660..., the paper's 0.25; all 1 at the centre and 0 at the radius.
     void falloffCurves()
     {
@@ -308,7 +308,7 @@ private slots:
         QVERIFY(still.col(2).cwiseAbs().maxCoeff() < 1e-7);
     }
 
-    // Relax (issue 10): the smoothing step in each vertex's tangent plane. A vertex pushed
+    // Relax: the smoothing step in each vertex's tangent plane. A vertex pushed
     // sideways in a flat grid goes back towards the average of its ring and stays in the plane;
     // the spike of the test above is left alone (its move is along its normal), so the shape and
     // the silhouette are kept.

@@ -384,7 +384,7 @@ private slots:
         Curvatures c;
         computeCurvatures(m.vertices, m.faces, Positions(), c);
         QVERIFY(allFinite(c));
-        const TopologyReport t = analyzeTopology(m);
+        const TopologyReport t = analyseTopology(m);
         const auto edges = 3 * m.faceCount() / 2;
         const bool genus0 = t.isClean() && t.unreferencedVertices == 0 && 3 * m.faceCount() % 2 == 0
             && m.vertexCount() - edges + m.faceCount() == 2;

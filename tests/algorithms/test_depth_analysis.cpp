@@ -65,7 +65,7 @@ void analyse(const TriMesh& mesh, const RasterCamera& cam, const Eigen::Vector3f
     settings.light = light;
     settings.toonThreshold = look.toon.thresholds.front();
     const std::vector<float> k(std::size_t(mesh.vertices.rows()), curvature);
-    analyzeDepth(g, passes.normal, passes.beauty, mesh.faces, k, settings, out);
+    analyseDepth(g, passes.normal, passes.beauty, mesh.faces, k, settings, out);
 }
 
 } // namespace
@@ -238,7 +238,7 @@ private slots:
         settings.depthThreshold = 0.04f;
         settings.light = look.light;
         DepthAnalysis a;
-        analyzeDepth(g, passes.normal, passes.beauty, mesh->faces, k.gaussian, settings, a);
+        analyseDepth(g, passes.normal, passes.beauty, mesh->faces, k.gaussian, settings, a);
         int positive = 0, negative = 0;
         for (const SegmentStats& s : a.stats)
             (s.meanCurvature > 0.f ? positive : negative) += 1;

@@ -99,7 +99,7 @@ private slots:
         std::vector<std::uint8_t> mask;
         silhouetteMask(sphere->vertices, sphere->faces, camera, mask);
         GBuffer g;
-        rasterize(sphere->vertices, sphere->faces, Positions(), camera, g);
+        rasterise(sphere->vertices, sphere->faces, Positions(), camera, g);
         int differ = 0, covered = 0;
         for (std::size_t i = 0; i < mask.size(); ++i) {
             differ += (mask[i] != 0) != (g.faceId[i] >= 0);

@@ -26,7 +26,7 @@ RasterCamera camera(int size)
     return c;
 }
 
-/// A dented sphere rendered and analysed as model::DepthAnalyzer does, kept for the samples.
+/// A dented sphere rendered and analysed as model::DepthAnalyser does, kept for the samples.
 struct Scene {
     std::shared_ptr<TriMesh> mesh;
     Curvatures curvature;
@@ -58,7 +58,7 @@ struct Scene {
         settings.pointLight = pointLight;
         settings.light = light;
         settings.shadingOffsets = look.shadingOffsets;
-        analyzeDepth(gbuffer, passes.normal, passes.beauty, mesh->faces, curvature.gaussian, settings, analysis);
+        analyseDepth(gbuffer, passes.normal, passes.beauty, mesh->faces, curvature.gaussian, settings, analysis);
     }
     void gather(ShadingSamples& samples) const
     {

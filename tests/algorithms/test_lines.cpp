@@ -278,7 +278,7 @@ private slots:
         QCOMPARE(t.borderEdges, 0);
         QCOMPARE(t.nonManifoldEdges, 0);
         QCOMPARE(2 * t.edges.rows(), 3 * m.faceCount()); // closed manifold: E = 3F/2
-        const TopologyReport report = analyzeTopology(m);
+        const TopologyReport report = analyseTopology(m);
         QCOMPARE(t.borderEdges, report.boundaryEdges);
         QCOMPARE(t.nonManifoldEdges, report.nonManifoldEdges);
         // Edge by edge against a std::map reference, in the same (v0, v1) order.

@@ -22,7 +22,7 @@ class TestMeshAnalysis : public QObject {
 private slots:
     void closedTetrahedronIsClean()
     {
-        const TopologyReport r = analyzeTopology(tetrahedron());
+        const TopologyReport r = analyseTopology(tetrahedron());
         QCOMPARE(r.components, 1);
         QCOMPARE(r.boundaryEdges, 0);
         QCOMPARE(r.nonManifoldEdges, 0);
@@ -35,7 +35,7 @@ private slots:
     {
         TriMesh m = tetrahedron();
         m.faces.conservativeResize(3, 3); // drop one face: a triangular hole
-        const TopologyReport r = analyzeTopology(m);
+        const TopologyReport r = analyseTopology(m);
         QCOMPARE(r.boundaryEdges, 3);
         QCOMPARE(r.boundaryLoops, 1);
         QCOMPARE(QString::fromStdString(r.summary()), QStringLiteral("1 hole"));
@@ -49,7 +49,7 @@ private slots:
         m.vertices.bottomRows(5) << 10, 0, 0, 11, 0, 0, 10, 1, 0, 10, 0, 1, 0.5f, -1, 0;
         m.faces.conservativeResize(9, 3);
         m.faces.bottomRows(5) << 4, 6, 5, 4, 5, 7, 4, 7, 6, 5, 6, 7, 0, 1, 8;
-        const TopologyReport r = analyzeTopology(m);
+        const TopologyReport r = analyseTopology(m);
         QCOMPARE(r.components, 2);
         QCOMPARE(r.nonManifoldEdges, 1);
         QVERIFY(!r.isClean());
@@ -59,14 +59,14 @@ private slots:
     {
         TriMesh m = tetrahedron();
         m.faces.row(3) << 1, 3, 2;
-        QCOMPARE(analyzeTopology(m).inconsistentEdges, 3);
+        QCOMPARE(analyseTopology(m).inconsistentEdges, 3);
     }
 
     void degenerateFaces()
     {
         TriMesh m = tetrahedron();
         m.faces.row(0) << 0, 0, 1;
-        QCOMPARE(analyzeTopology(m).degenerateFaces, 1);
+        QCOMPARE(analyseTopology(m).degenerateFaces, 1);
     }
 
     // Found by fuzz_off and fuzz_ply: with no face of three distinct corners there is no edge, and
@@ -76,7 +76,7 @@ private slots:
         TriMesh m = tetrahedron();
         for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
             m.faces(f, 1) = m.faces(f, 0);
-        const TopologyReport r = analyzeTopology(m);
+        const TopologyReport r = analyseTopology(m);
         QCOMPARE(r.boundaryEdges, 0);
         QCOMPARE(r.nonManifoldEdges, 0);
     }

@@ -123,7 +123,7 @@ StyledStroke stroke(std::initializer_list<Eigen::Vector2f> points, float width, 
 GBuffer emptyGBuffer(int w, int h)
 {
     GBuffer g;
-    rasterize(Positions(0, 3), Faces(0, 3), noNormals(), pixelCamera(w, h), g);
+    rasterise(Positions(0, 3), Faces(0, 3), noNormals(), pixelCamera(w, h), g);
     return g;
 }
 
@@ -209,7 +209,7 @@ private slots:
         QFETCH(QString, mask);
         const Mesh m = pixelSquare(4, 4, x0, y0, x1, y1, 0.0, flip);
         GBuffer g;
-        rasterize(m.v, m.f, noNormals(), pixelCamera(4, 4), g);
+        rasterise(m.v, m.f, noNormals(), pixelCamera(4, 4), g);
         QCOMPARE(g.width, 4);
         QCOMPARE(g.height, 4);
         QString got;
@@ -294,7 +294,7 @@ private slots:
         for (Eigen::Index t = 0; t < f.rows(); ++t) {
             Faces one = f.row(t);
             GBuffer g;
-            rasterize(v, one, noNormals(), pixelCamera(w, h), g);
+            rasterise(v, one, noNormals(), pixelCamera(w, h), g);
             for (std::size_t p = 0; p < count.size(); ++p)
                 count[p] += g.faceId[p] >= 0 ? 1 : 0;
         }
@@ -305,7 +305,7 @@ private slots:
         }
         QCOMPARE(total, w * h); // = the square's area in pixels
         GBuffer all;
-        rasterize(v, f, noNormals(), pixelCamera(w, h), all);
+        rasterise(v, f, noNormals(), pixelCamera(w, h), all);
         QCOMPARE(coveredCount(all), w * h);
     }
 
@@ -328,7 +328,7 @@ private slots:
         Faces f(4, 3);
         f << a.f, (b.f.array() + 4).matrix();
         GBuffer g;
-        rasterize(v, f, noNormals(), pixelCamera(w, h), g);
+        rasterise(v, f, noNormals(), pixelCamera(w, h), g);
         const std::int32_t nearIds = nearFirst ? 0 : 2;
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
@@ -357,7 +357,7 @@ private slots:
         Faces f(4, 3);
         f << m.f, (m.f.array() + 4).matrix();
         GBuffer g;
-        rasterize(v, f, noNormals(), pixelCamera(w, h), g);
+        rasterise(v, f, noNormals(), pixelCamera(w, h), g);
         for (std::int32_t id : g.faceId)
             QVERIFY(id == 0 || id == 1);
     }
@@ -385,7 +385,7 @@ private slots:
         Positions n(3, 3);
         n << 1, 0, 0, 0, 1, 0, 0, 0.6f, 0.8f;
         GBuffer g;
-        rasterize(v, f, n, c, g);
+        rasterise(v, f, n, c, g);
         const Eigen::Vector3d a = v.row(0).cast<double>().transpose();
         const Eigen::Vector3d b = v.row(1).cast<double>().transpose();
         const Eigen::Vector3d d = v.row(2).cast<double>().transpose();
@@ -446,7 +446,7 @@ private slots:
         Faces f(1, 3);
         f << 0, 1, 2;
         GBuffer g;
-        rasterize(v, f, noNormals(), c, g);
+        rasterise(v, f, noNormals(), c, g);
         const Eigen::Vector3d a = v.row(0).cast<double>().transpose();
         const Eigen::Vector3d b = v.row(1).cast<double>().transpose();
         const Eigen::Vector3d d = v.row(2).cast<double>().transpose();
@@ -490,8 +490,8 @@ private slots:
         c.width = 160;
         c.height = 120;
         GBuffer g1, g2;
-        rasterize(v, f, normals, c, g1);
-        rasterize(v, f, normals, c, g2);
+        rasterise(v, f, normals, c, g1);
+        rasterise(v, f, normals, c, g2);
         QVERIFY(coveredCount(g1) > 1000);
         const auto same = [](const auto& x, const auto& y) {
             return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
@@ -510,7 +510,7 @@ private slots:
         RasterCamera c = pixelCamera(120, 120);
         c.orthoHeight = 2.4; // radius 50 pixels
         GBuffer g;
-        rasterize(m.v, m.f, normals, c, g);
+        rasterise(m.v, m.f, normals, c, g);
         const int row = 60;
         int leftmost = -1, rightmost = -1;
         for (int x = 0; x < c.width; ++x)
@@ -594,7 +594,7 @@ private slots:
         const int w = 40, h = 20;
         const Mesh quad = pixelSquare(w, h, 0, 0, 20, 20); // left half, depth 10
         GBuffer g;
-        rasterize(quad.v, quad.f, noNormals(), pixelCamera(w, h), g);
+        rasterise(quad.v, quad.f, noNormals(), pixelCamera(w, h), g);
         std::vector<float> coverage(std::size_t(w * h), 0.f);
         drawStrokes({stroke({{2.f, 10.5f}, {38.f, 10.5f}}, 1.f, depth)}, g, coverage);
         for (int x = 3; x < 37; ++x) {

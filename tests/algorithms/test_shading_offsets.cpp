@@ -57,7 +57,7 @@ struct Scene {
         s.light = look.light;
         s.toonThreshold = look.toon.thresholds.front();
         s.shadingOffsets = look.shadingOffsets;
-        analyzeDepth(gbuffer, passes.normal, passes.beauty, mesh->faces, curvature, s, out);
+        analyseDepth(gbuffer, passes.normal, passes.beauty, mesh->faces, curvature, s, out);
     }
     SegmentOffsetInput input(const DepthAnalysis& a) const
     {

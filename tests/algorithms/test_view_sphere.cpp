@@ -85,7 +85,7 @@ std::vector<Vector3d> randomKeys(std::mt19937& rng, int count, double minAngleDe
     return keys;
 }
 
-/// Brute force: the facet whose cone contains d best (largest smallest normalized barycentric
+/// Brute force: the facet whose cone contains d best (largest smallest normalised barycentric
 /// numerator), over the inverses of every facet's [p0 p1 p2].
 std::vector<Eigen::Matrix3d> facetInverses(const ViewSphere& s)
 {
@@ -148,7 +148,7 @@ private slots:
     {
         QFETCH(UnspecifiedRegions, mode);
         std::mt19937 rng(7);
-        // The octahedron, a random full set, a one-sided set, and un-normalized keys.
+        // The octahedron, a random full set, a one-sided set, and un-normalised keys.
         std::vector<std::vector<Vector3d>> sets{octahedron(), randomKeys(rng, 20, 10.0), randomKeys(rng, 12, 10.0, 0.4),
             {Vector3d(0, 0, 2), Vector3d(3, 0, 0.5), Vector3d(0, -1, 1)}};
         for (const auto& keys : sets) {

@@ -1,4 +1,4 @@
-// The editor's animation (issue 13) driven through the real window under Xvfb with the bundled
+// The editor's animation driven through the real window under Xvfb with the bundled
 // sample: the Timeline dock's range and rate (undoable), its key marks of every kind and key
 // jumps, playback with and without looping, looking through the shot camera at the playhead,
 // keying the camera, the Observer's camera path, and the frame rate playback reaches.
@@ -8,7 +8,7 @@
 #include "editor/main_window.h"
 
 #include "celform/model/document/document.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/blend_evaluator.h"
 #include "celform/views/overlays/camera_path_overlay.h"
 #include "celform/views/overlays/depth_analysis_runner.h"
@@ -346,7 +346,7 @@ private slots:
         QVERIFY(!dock->isVisible());
     }
 
-    // Issue 13: the showcase sample (two keys, a 48-frame turntable) plays at the look's full
+    // The showcase sample (two keys, a 48-frame turntable) plays at the look's full
     // quality through the shot camera. Reports the rate reached; asserts only a loose bound (a
     // loaded CI machine), the figure goes in the log.
     void playbackFrameRate()

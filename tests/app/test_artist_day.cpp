@@ -1,4 +1,4 @@
-// The artist's day in the editor (issue 10): each trap a new user fell into, driven through the
+// The artist's day in the editor: each trap a new user fell into, driven through the
 // real window under Xvfb with the bundled sample. Every case failed on the editor before the fix.
 #include "ui_test_support.h"
 #include "window_test_support.h"

@@ -212,7 +212,7 @@ private slots:
         }
     }
 
-    // Issue 14: every handcrafted file of tests/data/fuzz-regressions (a trailer offset that wrapped
+    // Every handcrafted file of tests/data/fuzz-regressions (a trailer offset that wrapped
     // past its check and crashed, counts that allocated gigabytes, images stating more pixels than
     // their file holds) is bad input: exit 3 and one line naming the file, within 1 GB and 20 s.
     void fuzzRegressionsAreOneLineRefusals_data()
@@ -247,7 +247,7 @@ private slots:
         QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("fuzz.celform"))));
     }
 
-    // Issue 14, defects 3, 5 and 13: meshes that crashed Assimp (a glTF nested 30,000 nodes deep),
+    // Meshes that crashed Assimp (a glTF nested 30,000 nodes deep),
     // made it allocate 3.2 GB (a 91-byte GLB) or loop without end (a DAE) are read in a child
     // process: bad input, one line naming the file, in bounded time; the editor's import is the
     // same model function.
@@ -296,7 +296,7 @@ private slots:
         QCOMPARE(missing.err.trimmed(), QStringLiteral("the file does not exist"));
     }
 
-    // Issue 14: a named pipe or a folder given as a project or a drawing blocked for ever; both are
+    // A named pipe or a folder given as a project or a drawing blocked for ever; both are
     // bad input, refused before they are opened.
     void pipesAndFoldersAreRefused_data()
     {
@@ -329,7 +329,7 @@ private slots:
         QCOMPARE(r.err.trimmed().count(QLatin1Char('\n')), 0);
     }
 
-    // Issue 14: `new` wrote its project over its own input mesh, and wrote projects under any
+    // `new` wrote its project over its own input mesh, and wrote projects under any
     // suffix. Both are usage errors now, and nothing is written.
     void newRefusesItsInputAndOtherSuffixes()
     {
@@ -357,7 +357,7 @@ private slots:
         QCOMPARE(r.exitCode, 0);
     }
 
-    // Issue 14: `key add` took an empty name, and a name in use silently became "NAME 2". Empty is
+    // `key add` took an empty name, and a name in use silently became "NAME 2". Empty is
     // a usage error; a name in use is made unique as the editor does, and a warning says so.
     void keyAddNames()
     {
@@ -383,7 +383,7 @@ private slots:
         QCOMPARE(keys[1].toObject()["name"].toString(), QStringLiteral("side 2"));
     }
 
-    // Issue 14: `patch --faces ,,,` made an empty patch; a --faces naming no face is a usage error,
+    // `patch --faces ,,,` made an empty patch; a --faces naming no face is a usage error,
     // found before the project is opened.
     void patchFacesNeedAFace()
     {
@@ -403,7 +403,7 @@ private slots:
         QCOMPARE(runCelform({"patch", p, "--add", "two", "--faces", ",0,,3,"}).exitCode, 0);
     }
 
-    // Issue 14 listed `eval --view 0,0,0` exiting 0 while render refused it: both are usage errors.
+    // `eval --view 0,0,0` exited 0 while render refused it: both are usage errors.
     void evalRefusesZeroView()
     {
         const QString p = tetrahedronProject(QStringLiteral("eval.celform"));
@@ -415,7 +415,7 @@ private slots:
         }
     }
 
-    // Issue 14: --size 16384x16384 was accepted and needs about 24 GB (88 bytes a pixel). The pixel
+    // --size 16384x16384 was accepted and needs about 24 GB (88 bytes a pixel). The pixel
     // count is capped (8192x8192), and a size the memory available cannot hold is refused too, both
     // before the project is read. Run under a 2 GB cap so a regression cannot take the machine.
     void renderSizeIsCapped()
@@ -1180,7 +1180,7 @@ private slots:
                 QVERIFY2(!lib.contains(QLatin1String(editorOnly)), qPrintable(lib));
     }
 
-    // Issue 13: `camera` edits the path; `render` and `eval` without camera options look through
+    // `camera` edits the path; `render` and `eval` without camera options look through
     // the path's camera at the frame, exactly as with that camera given; info reports the time.
     void cameraPathDrivesRenderAndEval()
     {

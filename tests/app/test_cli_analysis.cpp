@@ -1,5 +1,5 @@
 // `celform analyze`, `celform curvature` and the analysis passes of `celform render` run as a
-// script runs them (issue 11): the JSON's shape and figures, the EXR's channels, the PLY's
+// script runs them: the JSON's shape and figures, the EXR's channels, the PLY's
 // properties, determinism, and usage errors before any work.
 #include "cli_run.h"
 #include "test_support.h"

@@ -1,4 +1,4 @@
-// `celform render` on a render farm (issue 13): frames split over processes, strides and threads
+// `celform render` on a render farm: frames split over processes, strides and threads
 // give the same bytes as one process; --skip-existing resumes without touching finished files; a
 // frame that cannot be written exits 3 naming it; a killed render leaves no partial file; usage
 // errors of --frames and --threads exit 2. The sample project's highlights are keyed over 30

@@ -1,4 +1,4 @@
-// `celform offsets` run as a script runs it (issue 12): automatic per-segment offsets lower or
+// `celform offsets` run as a script runs it: automatic per-segment offsets lower or
 // hold the depth error and are saved in the project (and `analyze` then sees them), each segment
 // reaches 1 - Q, clear and smooth, and usage errors before any work.
 #include "cli_run.h"

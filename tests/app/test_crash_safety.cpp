@@ -1,4 +1,4 @@
-// Crash-safe saving (issue 14): `celform set P --sharpness X` saves a large project, and is killed
+// Crash-safe saving: `celform set P --sharpness X` saves a large project, and is killed
 // with SIGKILL while it runs, at random moments spread over the run and over its save, and (when
 // strace can inject signals) at each system call of the save in turn. After every kill the project
 // opens and holds the old or the new sharpness, never a mixture, and its backup P.bak exists and

@@ -1,4 +1,4 @@
-// The Depth dock (issue 11, paper 3 chapter 4) driven in the real window under Xvfb with the
+// The Depth dock (paper 3, chapter 4) driven in the real window under Xvfb with the
 // bundled sample: the analysis follows the viewport's camera off the GUI thread, the overlays show
 // over the model, and the figures equal those of `celform analyze` for the same camera and size.
 #include "ui_test_support.h"

@@ -9,7 +9,7 @@
 #include "editor/main_window.h"
 #include "editor/settings/preferences.h"
 #include "editor/dialogs/preferences_dialog.h"
-#include "editor/recovery.h"
+#include "editor/recovery_manager.h"
 #include "editor/dialogs/render_dialog.h"
 #include "editor/jobs/job_runner.h"
 #include "editor/review_window.h"

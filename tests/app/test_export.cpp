@@ -1,4 +1,4 @@
-// `celform export` run as a user runs it (issue 13, "Export"): a PC2 cache whose every frame is
+// `celform export` run as a user runs it: a PC2 cache whose every frame is
 // the shape `celform eval --frame F` writes, an OBJ per frame, glTF files read back (targets,
 // samples, weights against `celform eval --json`) and passed by the Khronos glTF Validator, and
 // the exit codes of bad options and unwritable files.

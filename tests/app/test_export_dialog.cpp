@@ -1,4 +1,4 @@
-// File > Export… as a user drives it, under Xvfb (issue 13, "Export"): the dialog's defaults (the
+// File > Export… as a user drives it, under Xvfb: the dialog's defaults (the
 // project's frame range), an export to PC2 on the worker thread checked byte for byte, Cancel
 // leaving no file behind, and a write error shown in a message box naming the file.
 #include "ui_test_support.h"

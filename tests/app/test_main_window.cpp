@@ -6,7 +6,7 @@
 #include "window_test_support.h"
 
 #include "editor/main_window.h"
-#include "editor/recovery.h"
+#include "editor/recovery_manager.h"
 
 #include "celform/model/io/project_file.h"
 #include "celform/views/panels/look_panel.h"
@@ -168,7 +168,7 @@ private slots:
         QVERIFY(window.document()->data() == before);
     }
 
-    // Issue 14: a crash inside Assimp (a glTF nested 30,000 nodes deep overflows its stack) took the
+    // A crash inside Assimp (a glTF nested 30,000 nodes deep overflows its stack) took the
     // editor and its unsaved edits along. Assimp runs in a child process now: the import fails.
     void crashingImporterLeavesDocumentAlone()
     {

@@ -1,4 +1,4 @@
-// The shading-offset brush in the editor (issue 12), driven with real mouse events on the real
+// The shading-offset brush in the editor, driven with real mouse events on the real
 // viewport: Shift+O picks the tool, a drag over the model is one undo step and raises the offsets
 // under the cursor, Ctrl+drag lowers them, the circle shows the radius, and undo restores the
 // picture; the Edit menu holds the automatic offsets, smooth and clear.

@@ -1,4 +1,4 @@
-// Recovery after a crash (issue 14), under Xvfb. An editor with unsaved edits autosaves and is
+// Recovery after a crash, under Xvfb. An editor with unsaved edits autosaves and is
 // killed with SIGKILL (a child process: this test binary run with --editor-child); the next launch
 // offers the recovery copy, and the user's answers decide: "Keep for Later" and a discard they do
 // not confirm keep it, "Recover" brings the edits back (and a second crash before the next
@@ -11,7 +11,7 @@
 #include "ui_test_support.h"
 
 #include "editor/main_window.h"
-#include "editor/recovery.h"
+#include "editor/recovery_manager.h"
 
 #include "celform/model/io/project_file.h"
 #include "celform/views/viewport/viewport.h"

@@ -1,4 +1,4 @@
-// One frame of an animated view-dependent model (issue 13): the Stanford dragon (871k triangles)
+// One frame of an animated view-dependent model: the Stanford dragon (871k triangles)
 // animated by skinning or by a morph target, with 4 key viewpoints keyed at 3 frames each, blended
 // at a frame between keyed frames (so every key's offsets are interpolated over time), plus the
 // vertex normals. The baseline in the same run is a memcpy of the vertex data plus the same
@@ -6,7 +6,7 @@
 #include "bench_data.h"
 
 #include "celform/algorithms/tri_mesh.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/project_data.h"
 
 #include <benchmark/benchmark.h>

@@ -1,7 +1,7 @@
 // Apparent ridges per view on the dragon (871k triangles, 437k vertices): the view-dependent part
 // alone (curvature computed once before, as the renderer and the viewport cache it per shape),
 // then with the snakes. Goal: under 45 ms, half of rtsc's per-view apparent ridges on this machine
-// (88-92 ms quoted in issue 12). rtsc is GPL: it is measured outside the repository (its per-view
+// (88-92 ms). rtsc is GPL: it is measured outside the repository (its per-view
 // code built against trimesh2, same mesh and view); docs/lines.md has both figures. Two threads,
 // as the editor uses on this 2-core machine, and one for reference.
 // Run: bench_apparent_ridges (medians of 5 repetitions; segment and snake counts as counters).

@@ -1,4 +1,4 @@
-// Depth analysis speed (issue 11, paper 3 chapter 4):
+// Depth analysis speed (paper 3, chapter 4):
 // - the distance transform of a 2048x2048 feature map against OpenCV's cv::distanceTransform
 //   (DIST_L2, DIST_MASK_PRECISE) on the same map, both on one thread (OpenCV only when its imgproc
 //   headers are installed: a benchmark-only dependency);
@@ -120,11 +120,11 @@ void analyseDragon(benchmark::State& state, bool cachedCurvature)
     const double size = algo::boundingBox(mesh->vertices).diagonal().norm();
     camera.target = centre;
     camera.eye = centre + 1.9 * size * Eigen::Vector3d(0.3, 0.2, 1.0).normalized();
-    model::DepthAnalyzer analyzer;
+    model::DepthAnalyser analyser;
     model::FrameAnalysis out;
     const std::uint64_t generation = cachedCurvature ? algo::newShapeGeneration() : 0;
     for (auto _ : state) {
-        analyzer.analyze(
+        analyser.analyse(
             data, data.look, data.baseMesh->vertices, generation, 0, camera, 1280, 720, model::AnalysisSettings{}, out);
         benchmark::DoNotOptimize(out.analysis.meanSquaredError);
     }

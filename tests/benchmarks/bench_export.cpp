@@ -1,4 +1,4 @@
-// Export speed (issue 13, "Export"): a PC2 point cache of 100 frames of the Stanford dragon
+// Export speed: a PC2 point cache of 100 frames of the Stanford dragon
 // (871k triangles) with four key viewpoints seen from a turntable, every frame evaluated by
 // FrameEvaluator, against writing the same bytes from memory (fwrite, and QSaveFile as the
 // exporter writes them): what the evaluation costs over the disk.

@@ -1,5 +1,5 @@
 // Mesh import speed: the dragon PLY against the bare cost of reading its bytes, and a mid-size OFF;
-// what reading in a child process costs (model/import_process.h): GLB meshes through Assimp and a
+// what reading in a child process costs (celform/model/io/import_process.h): GLB meshes through Assimp and a
 // PSD drawing through OpenImageIO, each in this process and in the child.
 // Run: bench_import (medians of 5 repetitions are printed).
 #include "bench_data.h"

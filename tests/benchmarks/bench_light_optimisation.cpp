@@ -1,4 +1,4 @@
-// Optimise Light for Stereo (issue 12): 64 iterations over a 512x512 analysis of a model of about
+// Optimise Light for Stereo: 64 iterations over a 512x512 analysis of a model of about
 // 338k triangles (the thesis's 'mike', Table 5.1: 1.7 s on its GPU; the goal here is 0.17 s) and
 // of about 13k triangles (its 'snake' and dented sphere: 0.7-0.8 s). The thesis's time includes
 // its renders; so does the "WholeRun" case here: the analysis before, the iterations and the
@@ -61,13 +61,13 @@ void iterations(benchmark::State& state, std::shared_ptr<const algo::TriMesh> me
         return;
     }
     Setup setup(mesh, pointLight);
-    model::DepthAnalyzer analyzer;
+    model::DepthAnalyser analyser;
     model::FrameAnalysis analysis;
-    analyzer.analyze(setup.data, setup.data.look, setup.data.baseMesh->vertices, algo::newShapeGeneration(), 0,
+    analyser.analyse(setup.data, setup.data.look, setup.data.baseMesh->vertices, algo::newShapeGeneration(), 0,
         setup.camera, 512, 512, {}, analysis);
     algo::ShadingSamples samples;
-    algo::gatherShadingSamples(analyzer.gbuffer(), analysis.passes.normal, analysis.analysis.segments,
-        setup.data.baseMesh->faces, analyzer.lastSettings().shadingOffsets, analyzer.lastSettings().toonThreshold,
+    algo::gatherShadingSamples(analyser.gbuffer(), analysis.passes.normal, analysis.analysis.segments,
+        setup.data.baseMesh->faces, analyser.lastSettings().shadingOffsets, analyser.lastSettings().toonThreshold,
         samples);
     algo::LightOptimisationSettings settings;
     settings.window = {0.5f, 0.5f}; // strict: no early stop, all 64 iterations run
@@ -95,14 +95,14 @@ void wholeRun(benchmark::State& state, std::shared_ptr<const algo::TriMesh> mesh
         return;
     }
     Setup setup(mesh);
-    model::DepthAnalyzer analyzer;
+    model::DepthAnalyser analyser;
     model::LightOptimisationRequest request; // the medium window: it may stop before 64 iterations
     const std::uint64_t generation = cachedCurvature ? algo::newShapeGeneration() : 0;
     double mseBefore = 0, mseAfter = 0;
     std::size_t done = 0;
     for (auto _ : state) {
         const model::LightOptimisationReport report = model::optimiseLight(setup.data, setup.data.look,
-            setup.data.baseMesh->vertices, generation, 0, setup.camera, 512, 512, request, analyzer);
+            setup.data.baseMesh->vertices, generation, 0, setup.camera, 512, 512, request, analyser);
         mseBefore = report.mseBefore;
         mseAfter = report.mseAfter;
         done = report.run.iterations.size();

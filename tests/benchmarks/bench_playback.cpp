@@ -1,4 +1,4 @@
-// Playback speed (issue 13): the bundled elephant sample on a 48-frame turntable, the viewport
+// Playback speed: the bundled elephant sample on a 48-frame turntable, the viewport
 // looking through the shot camera at each frame with the look at full quality (toon shading,
 // lines, highlights) and the view-dependent preview on, as the editor plays it. Needs an X server
 // (run under xvfb-run; llvmpipe there, so the figure is a software-GL floor). The aim is 24 fps.
@@ -8,7 +8,7 @@
 //   the other docks repaint, and Qt composes the window. Its gap to turntableFrames is what the rest
 //   of the window costs per frame.
 #include "celform/model/document/document.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/views/overlays/depth_analysis_runner.h"
 #include "celform/views/viewport/viewport.h"
 

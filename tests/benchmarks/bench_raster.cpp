@@ -63,7 +63,7 @@ void BM_RasterizeDragon1080p(benchmark::State& state)
     const algo::RasterCamera camera = framedCamera(d->mesh.vertices);
     algo::GBuffer g;
     for (auto _ : state) {
-        algo::rasterize(d->mesh.vertices, d->mesh.faces, d->normals, camera, g);
+        algo::rasterise(d->mesh.vertices, d->mesh.faces, d->normals, camera, g);
         benchmark::DoNotOptimize(g.depth.data());
     }
     std::size_t covered = 0;
@@ -87,7 +87,7 @@ void BM_DrawStrokes(benchmark::State& state)
     camera.width = 1920;
     camera.height = 1080;
     algo::GBuffer g;
-    algo::rasterize(v, f, algo::Positions(0, 3), camera, g);
+    algo::rasterise(v, f, algo::Positions(0, 3), camera, g);
 
     // 5,000 strokes of 10 points, a few pixels per segment like chained mesh edges.
     std::mt19937 rng(5);

@@ -1,7 +1,7 @@
 // Interactive speed of the viewport. Needs an X server: run under xvfb-run (Mesa llvmpipe there,
 // so the figures are a software-GL floor).
 // - orbiting the armadillo (52k triangles) with and without the view-dependent preview (paper 1,
-//   section 3.2), and with the Depth dock's segment overlay following the camera (issue 11),
+//   section 3.2), and with the Depth dock's segment overlay following the camera,
 //   frames per second as a rate counter;
 // - a large mesh: the dragon (871k triangles) in a 400x300 viewport, as test_viewport shows it:
 //   a document reset to it (the viewport rebuilds its polydata and frames it), the same until the
@@ -84,7 +84,7 @@ void orbitFrames(benchmark::State& state, bool preview, bool depthOverlay = fals
         return;
     }
     s.viewport->setPreview(preview);
-    // The Depth dock's analysis (issue 11) following the camera on its worker thread, with the
+    // The Depth dock's analysis following the camera on its worker thread, with the
     // segment overlay drawn over the viewport.
     std::unique_ptr<views::DepthAnalysisRunner> runner;
     std::unique_ptr<views::DepthOverlay> overlay;

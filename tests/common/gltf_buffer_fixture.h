@@ -1,4 +1,4 @@
-// The glTF file of the tests that readers open only regular files (issue 14), shared by the mesh
+// The glTF file of the tests that readers open only regular files, shared by the mesh
 // import (Assimp) and the animated base import (tinygltf) tests.
 #pragma once
 

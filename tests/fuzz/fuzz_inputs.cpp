@@ -297,7 +297,7 @@ QByteArray fixProjectChecksums(const QByteArray& bytes)
         return bytes; // refused before any checksum: nothing to fix
     QByteArray manifest = bytes.mid(qsizetype(offset), qsizetype(length));
 
-    // The chunks before the manifest keep their offsets; re-serialize only when a checksum changes,
+    // The chunks before the manifest keep their offsets; re-serialise only when a checksum changes,
     // so that mutations of the manifest's text reach the reader as they are.
     const QJsonDocument json = QJsonDocument::fromJson(manifest);
     QJsonObject root = json.object();

@@ -30,7 +30,7 @@ struct Outcome {
 Outcome feed(const QString& kind, const QByteArray& bytes);
 
 /// The project fuzzer's helper: the bytes with the trailer's manifest checksum and the chunk
-/// checksums the manifest lists recomputed (the manifest re-serialized), so that mutations reach
+/// checksums the manifest lists recomputed (the manifest re-serialised), so that mutations reach
 /// the reader behind the checksums. Bytes without a readable trailer or manifest come back with
 /// as much fixed as could be.
 QByteArray fixProjectChecksums(const QByteArray& bytes);

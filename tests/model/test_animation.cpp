@@ -1,4 +1,4 @@
-// The animation core (issue 13): the scene's time, camera paths and the turntable, the animated
+// The animation core: the scene's time, camera paths and the turntable, the animated
 // base (paper 1, section 4.1) under the key offsets, the one per-frame evaluation, and the
 // project file's format 2. Every expected value is computed by hand in the test.
 #include "test_support.h"
@@ -6,7 +6,7 @@
 
 #include "celform/algorithms/base_animation.h"
 #include "celform/model/document/document.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/project_file.h"
 

@@ -676,7 +676,7 @@ void TestAnimationIo::buffersAreRegularFiles_data()
     QTest::newRow("missing") << "absent.bin";
 }
 
-// As for importMesh (issue 14): a buffer naming a FIFO would block the read for ever, /dev/zero
+// As for importMesh: a buffer naming a FIFO would block the read for ever, /dev/zero
 // would be read without end. Only regular files are opened.
 void TestAnimationIo::buffersAreRegularFiles()
 {

@@ -234,9 +234,9 @@ void TestImageIo::generated_data()
     QTest::addColumn<int>("green"); // expected 8-bit green of pixel (0,0)
     // Linear 0.5 encodes to sRGB 188; 2.0 clamps to 255.
     QTest::newRow("exr half rgba") << "a.exr" << int(OIIO::TypeDesc::HALF) << 4 << 188 << 255;
-    QTest::newRow("exr float gray") << "g.exr" << int(OIIO::TypeDesc::FLOAT) << 1 << 188 << 188;
+    QTest::newRow("exr float grey") << "g.exr" << int(OIIO::TypeDesc::FLOAT) << 1 << 188 << 188;
     QTest::newRow("tiff 16-bit rgb") << "b.tif" << int(OIIO::TypeDesc::UINT16) << 3 << 128 << 255;
-    QTest::newRow("tiff 8-bit gray+alpha") << "c.tiff" << int(OIIO::TypeDesc::UINT8) << 2 << 128 << 128;
+    QTest::newRow("tiff 8-bit grey+alpha") << "c.tiff" << int(OIIO::TypeDesc::UINT8) << 2 << 128 << 128;
     QTest::newRow("jpeg") << "d.jpg" << int(OIIO::TypeDesc::UINT8) << 3 << -1 << -1;
     QTest::newRow("png 16-bit") << "e.png" << int(OIIO::TypeDesc::UINT16) << 3 << 128 << 255;
 }
@@ -309,7 +309,7 @@ void TestImageIo::damaged()
     }
 }
 
-// Issue 14, found by fuzz_psd: an 8x8 PSD of 207 bytes stating 4.2 GB of colour mode data made
+// Found by fuzz_psd: an 8x8 PSD of 207 bytes stating 4.2 GB of colour mode data made
 // OpenImageIO allocate the 4.2 GB (stopped only by the import child's memory limit). Section
 // lengths beyond the end of the file are refused before any decoder runs, in this process; real
 // PSDs still decode.
@@ -357,7 +357,7 @@ void TestImageIo::refusesFuzzRegressions_data()
         QTest::newRow(qPrintable(name)) << dir.filePath(name);
 }
 
-// Issue 14: images whose header states more pixels than allowed, or more than their file can hold
+// Images whose header states more pixels than allowed, or more than their file can hold
 // (a 69-byte PNG of 11585 x 11585 pixels took 1.7 GB), are refused from the header, before any
 // buffer is allocated, in one line naming the file; both for a drawing being imported and for the
 // sizes `celform info` reads, and for formats whose header OpenImageIO reads (TIFF).
@@ -427,7 +427,7 @@ void TestImageIo::refusesPipesAndFolders_data()
     QTest::newRow("folder") << "folder";
 }
 
-// Issue 14: a named pipe given as a drawing blocked in open() for ever, waiting for a writer;
+// A named pipe given as a drawing blocked in open() for ever, waiting for a writer;
 // anything but a regular file is refused before it is opened.
 void TestImageIo::refusesPipesAndFolders()
 {

@@ -1,4 +1,4 @@
-// Imports of third-party formats in a child process (model/import_process.h): however the child
+// Imports of third-party formats in a child process (celform/model/io/import_process.h): however the child
 // ends (a crash, the time or memory limit, a refusal, nonsense), the caller gets one IoError line
 // naming the file, the document stays as it was, and what crosses between the processes is whole.
 #include "celform/model/document/document.h"
@@ -354,7 +354,7 @@ void TestImportProcess::childEndings()
     QVERIFY2(!e.message().contains(QLatin1Char('\n')), qPrintable(e.message()));
 }
 
-// The real child under a real memory limit: Assimp's endless index loop (issue 14, defect 13)
+// The real child under a real memory limit: Assimp's endless index loop (a DAE found by fuzzing)
 // grows until an allocation fails, which ends the child with the out-of-memory code.
 void TestImportProcess::memoryLimit()
 {
@@ -372,7 +372,7 @@ void TestImportProcess::memoryLimit()
     QVERIFY2(timer.elapsed() < 30000, qPrintable(QString::number(timer.elapsed())));
 }
 
-// A crash inside Assimp (issue 14, defect 3: a glTF nested 30,000 nodes deep overflows its stack)
+// A crash inside Assimp (a glTF nested 30,000 nodes deep overflows its stack)
 // or inside OpenImageIO no longer takes the open document along: the import is refused, the
 // document keeps its model, drawings and undo history.
 void TestImportProcess::documentUnchangedAfterCrash()

@@ -1,4 +1,4 @@
-// Optimise Light for Stereo on a project (issue 12): the document stores a run as one undo step
+// Optimise Light for Stereo on a project: the document stores a run as one undo step
 // and refuses a stale one; the run lowers the depth error of the thesis's dented sphere, of the
 // armadillo and of the dragon, and the figures it reports are those `celform analyze` gives.
 #include "test_meshes.h"
@@ -76,12 +76,12 @@ private slots:
         model::RenderJob job;
         job.size = {240, 240};
         job.view = Eigen::Vector3d(0, 0, 1);
-        const model::FrameAnalysis before = model::analyzeProject(data, QStringLiteral("t"), job, {});
+        const model::FrameAnalysis before = model::analyseProject(data, QStringLiteral("t"), job, {});
         QCOMPARE(report.mseBefore, before.analysis.meanSquaredError);
         QCOMPARE(report.segmentsBefore.size(), before.analysis.stats.size());
         model::ProjectData moved = data;
         moved.look.light = report.after;
-        const model::FrameAnalysis after = model::analyzeProject(moved, QStringLiteral("t"), job, {});
+        const model::FrameAnalysis after = model::analyseProject(moved, QStringLiteral("t"), job, {});
         QCOMPARE(report.mseAfter, after.analysis.meanSquaredError);
         for (std::size_t s = 0; s < after.analysis.stats.size(); ++s) {
             QCOMPARE(report.segmentsAfter[s].bright, after.analysis.stats[s].bright);

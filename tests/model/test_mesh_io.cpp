@@ -164,7 +164,7 @@ constexpr RegressionExpectation kMeshRegressions[] = {
         "60000000 vertices and 1 faces, more than the file holds and more than the 50000000 vertices Celform can load"},
     {"off-header-only-60m-faces.off", false,
         "60000000 faces, more than the file holds and more than the 50000000 triangles Celform can load"},
-    // Read by Assimp in a child process (model/import_process.h): its crash, its allocation or its
+    // Read by Assimp in a child process (celform/model/io/import_process.h): its crash, its allocation or its
     // endless loop ends the child, and the test process lives on to see a one-line refusal.
     // (AddressSanitizer catches the overflow itself, reports it and aborts: signal 6.)
     {"gltf-30000-nested-nodes-stack-overflow.gltf", false,
@@ -774,7 +774,7 @@ void TestMeshIo::gltfBuffersAreRegularFiles_data()
     celform::test::addBufferUriRows();
 }
 
-// Issue 14: a glTF buffer whose uri names a FIFO blocked Assimp's open for ever (/dev/zero, with a
+// A glTF buffer whose uri names a FIFO blocked Assimp's open for ever (/dev/zero, with a
 // byteLength of 4 GB, read without end). Assimp opens only regular files now, and a hang would be
 // stopped by the child's time limit in any case.
 void TestMeshIo::gltfBuffersAreRegularFiles()

@@ -462,7 +462,7 @@ private slots:
         QCOMPARE(loadProject(path + QStringLiteral(".bak")).blend.sharpness, 1.75);
     }
 
-    // Issue 14: a save killed at any instant leaves the project opening and a whole backup. The
+    // A save killed at any instant leaves the project opening and a whole backup. The
     // save runs in a child stopped at every system call (ptrace), where a kill would leave the
     // files exactly as they are; the old save removed .bak before linking the new one.
     void backupSurvivesAKillAtEveryStep()
@@ -678,7 +678,7 @@ private slots:
         }
     }
 
-    // Issue 14: handcrafted files that crashed, or allocated gigabytes before their refusal, each
+    // Handcrafted files that crashed, or allocated gigabytes before their refusal, each
     // named after what it triggers (tests/data/fuzz-regressions/README.md). Every one is refused at
     // once, in one line naming the file, within a small memory budget.
     void refusesFuzzRegressions_data()
@@ -858,7 +858,7 @@ private slots:
         QVERIFY2(outcome.message.contains(QStringLiteral("numbers.celform")), qPrintable(outcome.message));
     }
 
-    // Issue 14: a named pipe given as a project blocked in open() for ever, waiting for a writer;
+    // A named pipe given as a project blocked in open() for ever, waiting for a writer;
     // anything but a regular file is refused before it is opened.
     void refusesPipesAndFolders_data()
     {
@@ -922,7 +922,7 @@ private slots:
         QVERIFY(other.data() == doc.data());
     }
 
-    // Key layers of shading offsets (issue 12): kept through a save, refused with the file's
+    // Key layers of shading offsets: kept through a save, refused with the file's
     // name when a count or a value is wrong.
     void keyShadingOffsetsRoundTripAndRefusals_data()
     {

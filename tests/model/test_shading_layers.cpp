@@ -100,16 +100,16 @@ private slots:
         RenderJob job;
         job.view = Eigen::Vector3d(0, 0, 1);
         job.size = QSize(96, 96);
-        const FrameAnalysis withKey = analyzeProject(m_doc.data(), QStringLiteral("k"), job, AnalysisSettings{});
+        const FrameAnalysis withKey = analyseProject(m_doc.data(), QStringLiteral("k"), job, AnalysisSettings{});
         ProjectData flat = m_doc.data();
         flat.keys.front().shadingOffsetsByFrame.clear();
         flat.shadingOffsets = a;
-        const FrameAnalysis withBase = analyzeProject(flat, QStringLiteral("b"), job, AnalysisSettings{});
+        const FrameAnalysis withBase = analyseProject(flat, QStringLiteral("b"), job, AnalysisSettings{});
         QVERIFY(withKey.analysis.lambert == withBase.analysis.lambert);
         QVERIFY(withKey.passes.beauty.pixels == withBase.passes.beauty.pixels);
         // Without the layer the picture differs.
         flat.shadingOffsets.clear();
-        const FrameAnalysis none = analyzeProject(flat, QStringLiteral("n"), job, AnalysisSettings{});
+        const FrameAnalysis none = analyseProject(flat, QStringLiteral("n"), job, AnalysisSettings{});
         QVERIFY(none.analysis.lambert != withKey.analysis.lambert);
     }
 

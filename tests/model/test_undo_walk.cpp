@@ -1,4 +1,4 @@
-// Undo integrity under a long random walk (issue 14): thousands of edits of every kind the
+// Undo integrity under a long random walk: thousands of edits of every kind the
 // Document offers, with gestures, brush strokes, undo, redo and saves mixed in. Each step is
 // checked as it happens (a refused edit changes nothing, undo and redo land exactly on the states
 // recorded for their index, changed() names every part that changed, a clean document equals its

@@ -146,7 +146,7 @@ private slots:
         return {n ? QPointF(sx / n / dpr, sy / n / dpr) : QPointF(), n};
     }
 
-    // Issue 10, bug 7: the grabbed point of the highlight stays under the cursor, for small and
+    // The grabbed point of the highlight stays under the cursor, for small and
     // large drags alike (a 15 px drag used to make it vanish, a 60 px one to leave the model).
     void dragKeepsTheHighlightUnderTheCursor()
     {

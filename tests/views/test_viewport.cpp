@@ -174,7 +174,7 @@ private slots:
         m_view->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
         QTRY_VERIFY(m_view->renderCount() > 0);
-        // The first frame after show: the framed model, never black (STACK.md pitfall 5).
+        // The first frame after show: the framed model, never black (docs/pitfalls.md, "VTK in a Qt 6 widget").
         const QImage first = m_view->renderedImage();
         QVERIFY(!isMostlyBlack(first));
         checkModelVisible(first, 0.12);

@@ -97,7 +97,7 @@ int segmentsInWindow(const std::vector<SegmentStats>& stats)
     return n;
 }
 
-void analyzeDepth(const GBuffer& g, const std::vector<Eigen::Vector3f>& normals, const ImageRGBA& beauty,
+void analyseDepth(const GBuffer& g, const std::vector<Eigen::Vector3f>& normals, const ImageRGBA& beauty,
     const Faces& faces, const std::vector<float>& vertexCurvature, const DepthAnalysisSettings& settings,
     DepthAnalysis& out)
 {

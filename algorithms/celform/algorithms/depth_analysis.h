@@ -44,7 +44,8 @@ struct SegmentStats {
     bool inWindow = false;
     float meanCurvature = 0.f; ///< mean Gaussian curvature of its pixels (its sign is the segment's)
     /// Sum over the segment of the shading's derivative with respect to the light position
-    /// (eq. 4.2): the direction moving the light brightens the segment fastest (issue 12 uses it).
+    /// (eq. 4.2): the direction moving the light brightens the segment fastest (the gradient method
+    /// of light optimisation follows it).
     Eigen::Vector3d lightGradient = Eigen::Vector3d::Zero();
     Eigen::Vector2f centroid = Eigen::Vector2f::Zero(); ///< mean pixel position
 };
@@ -60,7 +61,7 @@ struct DepthAnalysis {
     std::vector<Eigen::Vector3f> lightGradient; ///< eq. 4.2 per pixel, zero off the model
     /// A scale for curvature pictures that belongs to the shape, not to the view, so colours keep
     /// their meaning while orbiting; 0: none (pictures take one from their own pixels). Set by the
-    /// caller (model::DepthAnalyzer: the |K| below which 98% of the surface's area lies).
+    /// caller (model::DepthAnalyser: the |K| below which 98% of the surface's area lies).
     float curvatureScale = 0.f;
     // Segments (4.1.3).
     SegmentLabels segments;
@@ -91,11 +92,11 @@ Eigen::Vector3f shadingLightDerivative(const Eigen::Vector3f& l, const Eigen::Ve
 /// - faces and vertexCurvature: the mesh and its smoothed Gaussian curvature per vertex.
 /// Off-model pixels are background: never features, no depth error, transparent to segments.
 /// With no feature pixel at all, the depth error is zero. Allocates only when sizes change.
-void analyzeDepth(const GBuffer& gbuffer, const std::vector<Eigen::Vector3f>& normals, const ImageRGBA& beauty,
+void analyseDepth(const GBuffer& gbuffer, const std::vector<Eigen::Vector3f>& normals, const ImageRGBA& beauty,
     const Faces& faces, const std::vector<float>& vertexCurvature, const DepthAnalysisSettings& settings,
     DepthAnalysis& out);
 
-/// Only the depth error part of analyzeDepth (features, nearest feature, error, MSE), from the
+/// Only the depth error part of analyseDepth (features, nearest feature, error, MSE), from the
 /// depths (+infinity off the model) and the picture; the other fields of out are left alone.
 void computeDepthError(const std::vector<float>& depth, const ImageRGBA& beauty, DepthAnalysis& out);
 

@@ -81,7 +81,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> projectVertices(
     const Positions& shape, const RasterCamera& camera);
 
 /// The silhouette mask (camera.width x camera.height, 1 where a triangle covers the pixel centre)
-/// of the mesh through camera: the coverage of rasterize() (pixel-centre sampling) without the
+/// of the mesh through camera: the coverage of rasterise() (pixel-centre sampling) without the
 /// depth test and the G-buffer, which a silhouette does not need. Triangles with a corner at or
 /// behind the eye plane (depth <= 0) are skipped: the fits keep the model in front of the camera.
 void silhouetteMask(

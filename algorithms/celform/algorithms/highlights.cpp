@@ -447,19 +447,10 @@ float layerCoverage(const HighlightSurfacePoint& point, const HighlightLight& li
 HighlightSample evaluateHighlights(const HighlightSurfacePoint& point, const HighlightLight& light, const Vector3f& eye,
     const std::vector<HighlightLayer>& layers, const HighlightFootprint* footprint)
 {
-    // Later layers are painted over earlier ones: "over" with premultiplied colour.
-    float coverage = 0.0f;
-    Color premultiplied = Color::Zero();
-    for (const HighlightLayer& layer : layers) {
-        const float c = layerCoverage(point, light, eye, layer, footprint);
-        premultiplied = premultiplied * (1.0f - c) + layer.color * c;
-        coverage = c + coverage * (1.0f - c);
-    }
-    HighlightSample sample;
-    sample.coverage = coverage;
-    if (coverage > 0.0f)
-        sample.color = premultiplied / coverage;
-    return sample;
+    HighlightCompositor layersSoFar;
+    for (const HighlightLayer& layer : layers)
+        layersSoFar.paintOver(layer.color, layerCoverage(point, light, eye, layer, footprint));
+    return layersSoFar.sample();
 }
 
 bool sameHighlightStructure(const HighlightLayer& a, const HighlightLayer& b)

@@ -166,6 +166,30 @@ struct HighlightSample {
     Color color{0.0f, 0.0f, 0.0f};
 };
 
+/// Highlight layers painted one over another, later layers over earlier ones ("over" with
+/// premultiplied colour): the one compositing of layers, for evaluateHighlights and the renderer.
+class HighlightCompositor {
+public:
+    void paintOver(const Color& color, float coverage)
+    {
+        m_premultiplied = m_premultiplied * (1.0f - coverage) + color * coverage;
+        m_coverage = coverage + m_coverage * (1.0f - coverage);
+    }
+    /// The layers so far: their joint coverage and the colour under it (unpremultiplied).
+    [[nodiscard]] HighlightSample sample() const
+    {
+        HighlightSample result;
+        result.coverage = m_coverage;
+        if (m_coverage > 0.0f)
+            result.color = m_premultiplied / m_coverage;
+        return result;
+    }
+
+private:
+    float m_coverage = 0.0f;
+    Color m_premultiplied = Color::Zero();
+};
+
 /// The original highlight vector (paper eqs. 1-3, Blinn with ks = 1, n = 1): the unit halfway
 /// vector of the unit vectors to the light and to the eye. Zero where they are opposite.
 Eigen::Vector3f halfwayVector(const Eigen::Vector3f& position, const HighlightLight& light, const Eigen::Vector3f& eye);

@@ -146,7 +146,7 @@ void gatherShadingSamples(const GBuffer& g, const std::vector<Eigen::Vector3f>& 
         out.pz[k] = g.position[i].z();
         float offset = 0.f;
         if (offsets && f >= 0 && f < faces.rows()) {
-            // The same sum, in the same order, as algo::analyzeDepth's.
+            // The same sum, in the same order, as algo::analyseDepth's.
             const Eigen::Vector3f b = g.barycentric[i];
             offset = b.x() * vertexOffset(faces(f, 0)) + b.y() * vertexOffset(faces(f, 1))
                 + b.z() * vertexOffset(faces(f, 2));

@@ -73,7 +73,7 @@ struct ShadingSamples {
     }
 };
 
-/// Gathers the samples of an analysis (algo::analyzeDepth's inputs and result): the G-buffer's
+/// Gathers the samples of an analysis (algo::analyseDepth's inputs and result): the G-buffer's
 /// positions, the shading normals, the segments, and the shading offsets interpolated as the
 /// analysis interpolates them (offsets may be null). Allocates only when sizes grow.
 void gatherShadingSamples(const GBuffer& gbuffer, const std::vector<Eigen::Vector3f>& normals,

@@ -67,7 +67,7 @@ std::optional<std::string> findFatalDefect(const TriMesh& mesh)
     return std::nullopt;
 }
 
-TopologyReport analyzeTopology(const TriMesh& mesh)
+TopologyReport analyseTopology(const TriMesh& mesh)
 {
     TopologyReport r;
     const auto nv = static_cast<std::int32_t>(mesh.vertices.rows());

@@ -34,6 +34,6 @@ struct TopologyReport {
 
 /// Edge adjacency by bucketing half-edges per lower vertex: O(E), no quadratic edge list.
 /// Expects a mesh that passed findFatalDefect().
-TopologyReport analyzeTopology(const TriMesh& mesh);
+TopologyReport analyseTopology(const TriMesh& mesh);
 
 } // namespace celform::algo

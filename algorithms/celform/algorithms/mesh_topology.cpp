@@ -25,7 +25,7 @@ EdgeTopology buildEdgeTopology(const Faces& faces, std::int32_t vertexCount)
     // Not the comic paper's pairwise search through a temporary edge list: half-edges are
     // bucketed by their lower vertex (a counting sort, O(F)), and each small bucket is sorted by
     // (upper vertex, face). Equal edges end up adjacent with their faces in face order. Same
-    // scheme as analyzeTopology() in mesh_analysis.cpp, but it keeps face indices.
+    // scheme as analyseTopology() in mesh_analysis.cpp, but it keeps face indices.
     EdgeTopology t;
     const auto nf = std::int32_t(faces.rows());
     const std::int32_t nv = std::max(vertexCount, 0);

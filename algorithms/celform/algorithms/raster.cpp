@@ -289,7 +289,7 @@ void RasterCamera::ray(double x, double y, Eigen::Vector3d& origin, Eigen::Vecto
     }
 }
 
-void rasterize(const Positions& shape, const Faces& faces, const Positions& vertexNormals, const RasterCamera& camera,
+void rasterise(const Positions& shape, const Faces& faces, const Positions& vertexNormals, const RasterCamera& camera,
     GBuffer& out)
 {
     assert(camera.width >= 0 && camera.height >= 0 && camera.width < kGuard && camera.height < kGuard);

@@ -65,7 +65,7 @@ struct GBuffer {
 ///   the interpolated vertex normals as given, not flipped towards the camera.
 /// - vertexNormals: #V by 3, or empty to use the geometric face normal.
 /// Single-threaded; position, normal and barycentric are zero where faceId is -1.
-void rasterize(const Positions& shape, const Faces& faces, const Positions& vertexNormals, const RasterCamera& camera,
+void rasterise(const Positions& shape, const Faces& faces, const Positions& vertexNormals, const RasterCamera& camera,
     GBuffer& out);
 
 /// Draws styled strokes anti-aliased into coverage (single channel, width * height, values in

@@ -76,10 +76,9 @@ HighlightSample highlightAt(const RenderLook& look, const GBuffer& g, const Face
     }
     HighlightSurfacePoint point;
     point.position = g.position[i];
-    // Later layers over earlier ones, as evaluateHighlights composites them ("over",
-    // premultiplied), each layer with its own patch, frames and normals.
-    float coverage = 0.f;
-    Color premultiplied = Color::Zero();
+    // Later layers over earlier ones, as evaluateHighlights composites them, each layer with its
+    // own patch, frames and normals.
+    HighlightCompositor layersSoFar;
     for (const RenderHighlight& h : look.highlights) {
         if (!h.faceMask.empty() && (std::size_t(f) >= h.faceMask.size() || !h.faceMask[std::size_t(f)]))
             continue;
@@ -103,15 +102,9 @@ HighlightSample highlightAt(const RenderLook& look, const GBuffer& g, const Face
         } else {
             point.frame = makeTangentFrame(point.normal, Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY());
         }
-        const float layerCoverageHere = layerCoverage(point, light, eye, h.layer, &footprint);
-        premultiplied = premultiplied * (1.f - layerCoverageHere) + h.layer.color * layerCoverageHere;
-        coverage = layerCoverageHere + coverage * (1.f - layerCoverageHere);
+        layersSoFar.paintOver(h.layer.color, layerCoverage(point, light, eye, h.layer, &footprint));
     }
-    HighlightSample sample;
-    sample.coverage = coverage;
-    if (coverage > 0.f)
-        sample.color = premultiplied / coverage;
-    return sample;
+    return layersSoFar.sample();
 }
 
 bool sameCamera(const RasterCamera& a, const RasterCamera& b)
@@ -157,7 +150,7 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     const Positions normals = vertexNormals(shape, faces);
 
     GBuffer g;
-    rasterize(shape, faces, normals, camera, g);
+    rasterise(shape, faces, normals, camera, g);
 
     // Lines: topology once per mesh, features and strokes per frame, from the line view's eye
     // (the centre eye for stereo pairs, paper 3, section 4.2.2), projected with this camera.

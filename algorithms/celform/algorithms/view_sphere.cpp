@@ -2,7 +2,7 @@
 // lookup for a view direction, and blend weights including the unspecified regions.
 //
 // Semantics (the contract tests and the rest of Celform rely on):
-// - Points: the normalized key directions (index = key index), then, in Dummy mode only, dummies
+// - Points: the normalised key directions (index = key index), then, in Dummy mode only, dummies
 //   at +X, -X, +Y, -Y, +Z, -Z, each left out when it is within 45 degrees (inclusive) of some key
 //   (DESIGN.md). Dummies are base copies: their weight is the base model's share.
 // - Refused sets: a key that is not finite or has zero length, and two keys closer than
@@ -18,7 +18,7 @@
 //   the covered region R = the cone spanned by the points (paper 1, section 3.2.1: a spherical
 //   triangle is the projection of the planar hull triangle).
 // - Covered view d: the valid facet whose cone contains d, barycentric coordinates w of the ray
-//   hit in the planar triangle (tiny negatives clamped, renormalized; a value within 1e-12 of 1
+//   hit in the planar triangle (tiny negatives clamped, renormalised; a value within 1e-12 of 1
 //   snaps to exactly 1 and the others to 0, so a key's own direction gives that key bit-exactly),
 //   sharpened w' = w^alpha / sum w^alpha (paper 1, section 3.2.2), dummies dropped.
 // - Uncovered view d (paper 1, section 3.3; only possible when the origin is not strictly inside
@@ -278,7 +278,7 @@ void ViewSphere::Impl::buildGrid()
     std::vector<std::pair<int, int>> pairs; // (cell, facet)
     pairs.reserve(static_cast<std::size_t>(facetCount) * 8);
 
-    auto cellCap = [n](int axis, double s, int i, int j, Vec3& center) {
+    auto cellCap = [n](int axis, double s, int i, int j, Vec3& centre) {
         const int b = (axis + 1) % 3;
         const int c = (axis + 2) % 3;
         auto dir = [&](double u, double v) {
@@ -292,10 +292,10 @@ void ViewSphere::Impl::buildGrid()
         const double u1 = -1.0 + 2.0 * (i + 1) / n;
         const double v0 = -1.0 + 2.0 * j / n;
         const double v1 = -1.0 + 2.0 * (j + 1) / n;
-        center = dir(0.5 * (u0 + u1), 0.5 * (v0 + v1));
+        centre = dir(0.5 * (u0 + u1), 0.5 * (v0 + v1));
         double r = 0.0;
         for (const Vec3& corner : {dir(u0, v0), dir(u1, v0), dir(u0, v1), dir(u1, v1)})
-            r = std::max(r, angleBetween(center, corner));
+            r = std::max(r, angleBetween(centre, corner));
         return r;
     };
 
@@ -374,7 +374,7 @@ void ViewSphere::Impl::buildGrid()
     gridN = n;
 }
 
-/// Valid facet whose cone contains the unit direction d, or -1; lambda gets the (unnormalized)
+/// Valid facet whose cone contains the unit direction d, or -1; lambda gets the (unnormalised)
 /// barycentric numerators.
 int ViewSphere::Impl::locate(const Vec3& d, Vec3& lambda) const
 {
@@ -570,12 +570,12 @@ std::optional<ViewSphere> ViewSphere::build(
         }
         // A small circle: the points are in convex position; fan-triangulate counter-clockwise
         // about the normal pointing away from the origin.
-        const Vec3 center = normal.dot(s.points[0]) * normal;
-        const Vec3 u = (s.points[0] - center).normalized();
+        const Vec3 centre = normal.dot(s.points[0]) * normal;
+        const Vec3 u = (s.points[0] - centre).normalized();
         const Vec3 v = normal.cross(u);
         std::vector<std::pair<double, int>> order;
         for (int k = 0; k < n; ++k)
-            order.emplace_back(std::atan2((s.points[k] - center).dot(v), (s.points[k] - center).dot(u)), k);
+            order.emplace_back(std::atan2((s.points[k] - centre).dot(v), (s.points[k] - centre).dot(u)), k);
         std::sort(order.begin(), order.end());
         for (int k = 1; k + 1 < n; ++k)
             s.addFacet(order[0].second, order[k].second, order[k + 1].second);

@@ -7,7 +7,7 @@
 #include "editor/dialogs/turntable_dialog.h"
 
 #include "celform/model/document/document.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/io_error.h"
 #include "celform/views/overlays/camera_path_overlay.h"
 #include "celform/views/overlays/depth_analysis_runner.h"

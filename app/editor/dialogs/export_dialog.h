@@ -1,4 +1,4 @@
-// File > Export… (issue 13, "Export"): the format, the frame range (the project's by default) and
+// File > Export…: the format, the frame range (the project's by default) and
 // the file; the export itself runs as a job of the JobRunner (jobs/export_job.h).
 #pragma once
 

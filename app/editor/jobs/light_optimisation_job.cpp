@@ -34,10 +34,10 @@ JobRunner* startLightOptimisation(LightOptimisationJob job, QWidget* parent, Lig
     spec.showError = std::move(showError);
 
     auto work = [job = std::move(job), apply = std::move(apply)](algo::Progress& progress) -> JobRunner::Finish {
-        model::DepthAnalyzer analyzer;
+        model::DepthAnalyser analyser;
         auto report = std::make_shared<const model::LightOptimisationReport>(
             model::optimiseLight(job.data, job.data.look, job.shape, job.generation, job.frame, job.camera, job.width,
-                job.height, job.request, analyzer, &progress));
+                job.height, job.request, analyser, &progress));
         return [report, apply] {
             apply(report);
             return !report->cancelled();

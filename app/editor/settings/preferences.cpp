@@ -2,7 +2,7 @@
 #include "editor/settings/preferences.h"
 
 #include "editor/main_window.h"
-#include "editor/recovery.h"
+#include "editor/recovery_manager.h"
 
 #include "celform/model/document/document.h"
 

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Writes the handcrafted files of tests/data/fuzz-regressions (see README.md there).
 
-Each file is the smallest input that triggered one defect of issue 14; the tests load every file
-of project/ and image/ and expect a one-line refusal naming it, quickly and without a large
-allocation. Run from anywhere: python3 make_fixtures.py (it writes beside itself).
+Each file is the smallest input that triggered one defect found while hardening the loaders; the
+tests load every file of project/ and image/ and expect a one-line refusal naming it, quickly and
+without a large allocation. Run from anywhere: python3 make_fixtures.py (it writes beside itself).
 """
 import json
 import os
@@ -201,8 +201,8 @@ def dae_comment_in_index_list():
 
 
 def mesh_fixtures(folder):
-    # Issue 14, defects 3, 5 and 13: inputs that crash, exhaust or hang Assimp. importMesh() reads
-    # them in a child process (model/import_process.h); the parent refuses them in one line.
+    # Inputs that crash, exhaust or hang Assimp. importMesh() reads
+    # them in a child process (celform/model/io/import_process.h); the parent refuses them in one line.
     # (The other files of mesh/ were written by hand.)
     with open(os.path.join(folder, "glb-91-bytes-json-chunk-3.2-gb.glb"), "wb") as f:
         f.write(glb_json_chunk_3_3_gb())

@@ -90,9 +90,9 @@ AutoOffsetsResult solveAutoOffsets(const ProjectData& data, const AutoOffsetsReq
 
     AutoOffsetsResult result;
     algo::report(progress, 0, 3);
-    DepthAnalyzer analyzer;
+    DepthAnalyser analyser;
     FrameAnalysis analysed;
-    analyzer.analyze(data, data.look, shape.positions, shape.generation, frame, request.camera, request.width,
+    analyser.analyse(data, data.look, shape.positions, shape.generation, frame, request.camera, request.width,
         request.height, request.analysis, analysed, &effective);
     result.before = analysed.analysis.stats;
     result.mseBefore = analysed.analysis.meanSquaredError;
@@ -100,10 +100,10 @@ AutoOffsetsResult solveAutoOffsets(const ProjectData& data, const AutoOffsetsReq
         return cancelledResult(target);
     algo::report(progress, 1, 3);
     // The picture again without the target's part: its lambert is N.L + the other layers.
-    analyzer.analyze(data, data.look, shape.positions, shape.generation, frame, request.camera, request.width,
+    analyser.analyse(data, data.look, shape.positions, shape.generation, frame, request.camera, request.width,
         request.height, request.analysis, analysed, &others);
 
-    const algo::GBuffer& g = analyzer.gbuffer();
+    const algo::GBuffer& g = analyser.gbuffer();
     const algo::VertexNeighbours neighbours = algo::buildVertexNeighbours(mesh.faces, std::int32_t(n));
     algo::SegmentOffsetInput input;
     input.width = analysed.analysis.width;
@@ -136,7 +136,7 @@ AutoOffsetsResult solveAutoOffsets(const ProjectData& data, const AutoOffsetsReq
     // The picture with the new values in effect: the other layers plus the target's part.
     for (std::size_t v = 0; v < n; ++v)
         effective[v] = others[v] + field[v];
-    analyzer.analyze(data, data.look, shape.positions, shape.generation, frame, request.camera, request.width,
+    analyser.analyse(data, data.look, shape.positions, shape.generation, frame, request.camera, request.width,
         request.height, request.analysis, analysed, &effective);
     result.after = analysed.analysis.stats;
     result.mseAfter = analysed.analysis.meanSquaredError;

@@ -15,7 +15,7 @@
 
 namespace celform::model {
 
-const algo::Curvatures& DepthAnalyzer::curvatures(
+const algo::Curvatures& DepthAnalyser::curvatures(
     const algo::TriMesh& mesh, const algo::Positions& shape, std::uint64_t generation)
 {
     if (generation == 0 || generation != m_generation || &mesh != m_mesh
@@ -47,7 +47,7 @@ const algo::Curvatures& DepthAnalyzer::curvatures(
     return m_curvatures;
 }
 
-void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const algo::Positions& shape,
+void DepthAnalyser::analyse(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings,
     FrameAnalysis& out, const std::vector<float>* shadingOffsets, algo::Progress* progress)
 {
@@ -93,7 +93,7 @@ void DepthAnalyzer::analyze(const ProjectData& data, const Look& look, const alg
     s.pointLight = renderLook.pointLight;
     s.light = renderLook.light;
     s.shadingOffsets = renderLook.shadingOffsets;
-    algo::analyzeDepth(
+    algo::analyseDepth(
         m_gbuffer, out.passes.normal, out.passes.beauty, mesh.faces, curvature.gaussian, s, out.analysis);
     out.analysis.curvatureScale = m_curvatureScale;
     out.milliseconds = double(timer.nsecsElapsed()) / 1e6;
@@ -118,13 +118,13 @@ AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source,
     return view;
 }
 
-FrameAnalysis analyzeProject(
+FrameAnalysis analyseProject(
     const ProjectData& data, const QString& source, const RenderJob& job, const AnalysisSettings& settings)
 {
     const AnalysisView view = resolveAnalysisView(data, source, job);
-    DepthAnalyzer analyzer;
+    DepthAnalyser analyser;
     FrameAnalysis out;
-    analyzer.analyze(data, view.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(), job.size.height(),
+    analyser.analyse(data, view.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(), job.size.height(),
         settings, out, &view.offsets);
     return out;
 }

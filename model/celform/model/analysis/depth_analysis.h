@@ -1,6 +1,6 @@
 // The stereo depth analysis of a project's picture (paper 3, chapter 4; DESIGN.md, "Depth
 // analysis"): the shape at the frame and view, its curvature (cached per shape), the picture the
-// look makes through the centre eye, and algo::analyzeDepth over the two. One code path for the
+// look makes through the centre eye, and algo::analyseDepth over the two. One code path for the
 // editor's Depth panel, `celform analyze` and `celform render --pass segments|curvature|depth-error`.
 #pragma once
 
@@ -45,7 +45,7 @@ struct FrameAnalysis {
 
 /// Keeps what successive analyses of one model reuse: the curvature of the last shape (by its
 /// generation, algo::Shape), the renderer's cache and the buffers. Not thread-safe: one per thread.
-class DepthAnalyzer {
+class DepthAnalyser {
 public:
     /// The curvature of a shape of mesh's topology; computed when the generation differs from the
     /// last call's (or is 0, "unknown"), else the cached one.
@@ -57,7 +57,7 @@ public:
     /// shadingOffsets: the offsets in effect (shading_layers.h; null: the base layer alone).
     /// progress counts three steps (curvature, picture, analysis) and may stop the analysis
     /// between them (out.cancelled). Throws std::bad_alloc when the buffers do not fit.
-    void analyze(const ProjectData& data, const Look& look, const algo::Positions& shape, std::uint64_t generation,
+    void analyse(const ProjectData& data, const Look& look, const algo::Positions& shape, std::uint64_t generation,
         int frame, const Camera& camera, int width, int height, const AnalysisSettings& settings, FrameAnalysis& out,
         const std::vector<float>* shadingOffsets = nullptr, algo::Progress* progress = nullptr);
 
@@ -81,11 +81,11 @@ private:
 /// `celform analyze`: the job's camera, frame and look overrides resolved as `celform render`
 /// resolves them (stereo and pass ignored), the shape blended for that camera. Throws IoError
 /// naming source (no base model, keys that cannot be blended).
-FrameAnalysis analyzeProject(
+FrameAnalysis analyseProject(
     const ProjectData& data, const QString& source, const RenderJob& job, const AnalysisSettings& settings);
 
-/// What analyzeProject resolves before analysing: the look, camera, blended shape and the
-/// shading offsets in effect there (shading_layers.h). Throws IoError as analyzeProject does.
+/// What analyseProject resolves before analysing: the look, camera, blended shape and the
+/// shading offsets in effect there (shading_layers.h). Throws IoError as analyseProject does.
 struct AnalysisView {
     Look look;
     Camera camera;

@@ -38,7 +38,7 @@ std::uint64_t privateGeneration()
 
 LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height,
-    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, algo::Progress* progress,
+    const LightOptimisationRequest& request, DepthAnalyser& analyser, algo::Progress* progress,
     const std::vector<float>* shadingOffsets)
 {
     QElapsedTimer timer;
@@ -54,7 +54,7 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
         generation = privateGeneration();
 
     FrameAnalysis frameAnalysis;
-    analyzer.analyze(
+    analyser.analyse(
         data, look, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis, shadingOffsets);
     const algo::DepthAnalysis& before = frameAnalysis.analysis;
     report.segmentsBefore = before.stats;
@@ -75,9 +75,9 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
         return cancelled();
     }
 
-    const algo::DepthAnalysisSettings& used = analyzer.lastSettings();
+    const algo::DepthAnalysisSettings& used = analyser.lastSettings();
     algo::ShadingSamples samples;
-    algo::gatherShadingSamples(analyzer.gbuffer(), frameAnalysis.passes.normal, before.segments, data.baseMesh->faces,
+    algo::gatherShadingSamples(analyser.gbuffer(), frameAnalysis.passes.normal, before.segments, data.baseMesh->faces,
         used.shadingOffsets, used.toonThreshold, samples);
 
     algo::LightOptimisationSettings settings = request.optimiser;
@@ -113,7 +113,7 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     report.after = lightOf({report.before.type == LightType::Point, accepted.back()});
     Look moved = look;
     moved.light = report.after;
-    analyzer.analyze(
+    analyser.analyse(
         data, moved, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis, shadingOffsets);
     report.segmentsAfter = frameAnalysis.analysis.stats;
     report.mseAfter = frameAnalysis.analysis.meanSquaredError;
@@ -130,9 +130,9 @@ LightOptimisationReport optimiseLightForJob(const ProjectData& data, const QStri
 {
     // The project's look: optimize-light takes no look overrides, and the light found is its own.
     const AnalysisView view = resolveAnalysisView(data, source, job);
-    DepthAnalyzer analyzer;
+    DepthAnalyser analyser;
     return optimiseLight(data, data.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(),
-        job.size.height(), request, analyzer, progress, &view.offsets);
+        job.size.height(), request, analyser, progress, &view.offsets);
 }
 
 QString lightMethodName(algo::LightMethod method)

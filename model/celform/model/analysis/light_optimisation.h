@@ -1,4 +1,4 @@
-// Optimise Light for Stereo on a project (paper 3, sections 4.1 and 5.0; issue 12): the depth
+// Optimise Light for Stereo on a project (paper 3, sections 4.1 and 5.0): the depth
 // analysis of the picture, algo::optimiseLight over its segments, and the analysis again with
 // the new light, so that the caller can show the depth error before and after. One code path
 // for the editor's action and `celform optimize-light`; LookEdits::applyOptimisedLight stores
@@ -52,7 +52,7 @@ struct LightOptimisationReport {
 /// (shading_layers.h; null: the base layer alone).
 LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height,
-    const LightOptimisationRequest& request, DepthAnalyzer& analyzer, algo::Progress* progress = nullptr,
+    const LightOptimisationRequest& request, DepthAnalyser& analyser, algo::Progress* progress = nullptr,
     const std::vector<float>* shadingOffsets = nullptr);
 
 /// `celform optimize-light`: the job's camera, frame and size resolved as `celform analyze`

@@ -1,4 +1,4 @@
-// The shot's camera over time (issue 13; paper 1, figures 10-12: the camera moving around the
+// The shot's camera over time (paper 1, figures 10-12: the camera moving around the
 // view-dependent model): keyed render cameras interpolated smoothly, and the turntable generator.
 #pragma once
 

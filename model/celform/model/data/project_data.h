@@ -232,7 +232,7 @@ struct Look {
     bool operator!=(const Look& o) const { return !(*this == o); }
 };
 
-/// The scene's time (issue 13): frames per second and the frame range the timeline plays and a
+/// The scene's time: frames per second and the frame range the timeline plays and a
 /// sequence render or export covers by default. Frame F is at time F / fps.
 struct SceneTime {
     double fps = 24.0; ///< in (0, kMaxFps]

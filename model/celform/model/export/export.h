@@ -1,11 +1,11 @@
-// Exporting the view-dependent model's animation for other tools (issue 13, "Export"): every frame
+// Exporting the view-dependent model's animation for other tools: every frame
 // of a range evaluated by FrameEvaluator through the shot's camera, as `celform eval` and the
 // renderer see it, written as a glTF 2.0 scene (text or binary), a PC2 point cache or a sequence
 // of OBJ meshes. docs/export.md describes what each format holds.
 #pragma once
 
 #include "celform/algorithms/progress.h"
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/project_data.h"
 
 #include <QString>

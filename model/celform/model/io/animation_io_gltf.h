@@ -32,8 +32,6 @@ Source load(const QString& path);
 /// range outside the file, a wrong type, and counts the buffers cannot hold.
 std::vector<float> readFloats(const Source& src, int index, int type, const QString& what);
 std::vector<std::uint32_t> readIntegers(const Source& src, int index, int type, const QString& what);
-/// The element count of accessor `index` (checked to exist), without reading it.
-std::size_t accessorCount(const Source& src, int index, const QString& what);
 
 /// The node tree: parents, an order with parents before children, rest transforms.
 struct Hierarchy {

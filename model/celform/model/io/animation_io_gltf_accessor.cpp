@@ -225,11 +225,6 @@ void checkCountBeforeAllocating(
 
 } // namespace
 
-std::size_t accessorCount(const Source& src, int index, const QString& what)
-{
-    return accessorAt(src, index, what).count;
-}
-
 std::vector<float> readFloats(const Source& src, int index, int type, const QString& what)
 {
     const std::size_t components = std::size_t(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(type)));

@@ -113,7 +113,7 @@ MeshImport importMesh(const QString& path, ImportIsolation isolation)
         reader.read(path, out);
 
     throwIfUnusable(path, out.mesh);
-    out.topology = algo::analyzeTopology(out.mesh);
+    out.topology = algo::analyseTopology(out.mesh);
     if (!out.topology.isClean())
         out.warnings.prepend(topologyWarning(out.topology));
     return out;

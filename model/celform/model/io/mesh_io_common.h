@@ -153,7 +153,7 @@ QString skippedFacesWarning(std::int64_t skipped);
 /// are over the size limits (a header alone, declaring 60 M faces, is told about the limit too).
 [[noreturn]] void throwTooLarge(const QString& path, std::int64_t vertices, std::int64_t faces);
 
-/// Text tokenizer for OFF and ASCII PLY; counts lines for the error messages.
+/// Text tokeniser for OFF and ASCII PLY; counts lines for the error messages.
 class TextCursor {
 public:
     TextCursor(const QString& path, const char* begin, const char* end, bool hashComments)

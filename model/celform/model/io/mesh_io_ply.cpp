@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace celform::model::meshio {
@@ -117,29 +118,37 @@ template <typename T> T loadRaw(const char* p, bool swap)
     return v;
 }
 
-double loadBinary(PlyType t, const char* p, bool swap)
+/// Reads one binary value of type t at p and hands it, in its own C++ type, to use: the one switch
+/// over the PLY types, shared by the value and the index readers below. Returns fallback for Invalid.
+template <typename Result, typename Use>
+Result visitBinary(PlyType t, const char* p, bool swap, Result fallback, Use use)
 {
     switch (t) {
     case PlyType::Int8:
-        return static_cast<std::int8_t>(*p);
+        return use(static_cast<std::int8_t>(*p));
     case PlyType::UInt8:
-        return static_cast<std::uint8_t>(*p);
+        return use(static_cast<std::uint8_t>(*p));
     case PlyType::Int16:
-        return loadRaw<std::int16_t>(p, swap);
+        return use(loadRaw<std::int16_t>(p, swap));
     case PlyType::UInt16:
-        return loadRaw<std::uint16_t>(p, swap);
+        return use(loadRaw<std::uint16_t>(p, swap));
     case PlyType::Int32:
-        return loadRaw<std::int32_t>(p, swap);
+        return use(loadRaw<std::int32_t>(p, swap));
     case PlyType::UInt32:
-        return loadRaw<std::uint32_t>(p, swap);
+        return use(loadRaw<std::uint32_t>(p, swap));
     case PlyType::Float32:
-        return loadRaw<float>(p, swap);
+        return use(loadRaw<float>(p, swap));
     case PlyType::Float64:
-        return loadRaw<double>(p, swap);
+        return use(loadRaw<double>(p, swap));
     case PlyType::Invalid:
         break;
     }
-    return 0.0;
+    return fallback;
+}
+
+double loadBinary(PlyType t, const char* p, bool swap)
+{
+    return visitBinary(t, p, swap, 0.0, [](auto v) { return static_cast<double>(v); });
 }
 
 /// A count or an index stored as a float (the format allows it): its whole part, or -1 (which every
@@ -154,27 +163,12 @@ template <typename Float> std::int64_t floatIndex(Float value)
 
 std::int64_t loadBinaryIndex(PlyType t, const char* p, bool swap)
 {
-    switch (t) {
-    case PlyType::Int8:
-        return static_cast<std::int8_t>(*p);
-    case PlyType::UInt8:
-        return static_cast<std::uint8_t>(*p);
-    case PlyType::Int16:
-        return loadRaw<std::int16_t>(p, swap);
-    case PlyType::UInt16:
-        return loadRaw<std::uint16_t>(p, swap);
-    case PlyType::Int32:
-        return loadRaw<std::int32_t>(p, swap);
-    case PlyType::UInt32:
-        return loadRaw<std::uint32_t>(p, swap);
-    case PlyType::Float32:
-        return floatIndex(loadRaw<float>(p, swap));
-    case PlyType::Float64:
-        return floatIndex(loadRaw<double>(p, swap));
-    case PlyType::Invalid:
-        break;
-    }
-    return -1;
+    return visitBinary(t, p, swap, std::int64_t(-1), [](auto v) -> std::int64_t {
+        if constexpr (std::is_floating_point_v<decltype(v)>)
+            return floatIndex(v);
+        else
+            return static_cast<std::int64_t>(v);
+    });
 }
 
 struct PlyHeader {

@@ -1,7 +1,7 @@
 // Rendering a project's frames to files (render_job.h).
 #include "celform/model/render/render_job.h"
 
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/analysis/depth_analysis.h"
@@ -162,7 +162,7 @@ public:
     bool render(int f, const QString& target, const std::function<bool()>& cancelled)
     {
         const ProjectData& data = m_data;
-        // The one evaluation of a frame (frame_evaluation.h): the camera at the frame (the path's
+        // The one evaluation of a frame (frame_evaluator.h): the camera at the frame (the path's
         // when the project has one), the animated base there, the view direction and the shape.
         const Camera camera = renderJobCamera(data, m_resolved.look, m_job, f);
         m_evaluator.evaluate(data, f, camera.eye);
@@ -175,7 +175,7 @@ public:
         // The analysis passes (segments, curvature, depth error) come from the depth analysis of
         // the centre eye's picture.
         if (m_analysisPicture) {
-            m_analyzer.analyze(data, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
+            m_analyser.analyse(data, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
                 m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_offsets);
             if (cancelled())
                 return false;
@@ -203,7 +203,7 @@ private:
     const std::optional<AnalysisPicture> m_analysisPicture;
     FrameEvaluator m_evaluator;
     algo::RenderCache m_cache;
-    DepthAnalyzer m_analyzer;
+    DepthAnalyser m_analyser;
     FrameAnalysis m_analysed;
     algo::Shape m_shape;
     std::vector<float> m_offsets; // in effect at the camera's view and the frame (shading_layers.h)

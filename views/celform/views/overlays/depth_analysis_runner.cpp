@@ -215,7 +215,7 @@ void DepthAnalysisRunner::workerLoop()
     // picture on screen keeps its frame rate and the analysis takes what is left.
     ::setpriority(PRIO_PROCESS, pid_t(::syscall(SYS_gettid)), 10);
 #endif
-    model::DepthAnalyzer analyzer; // keeps the curvature of a still shape and the buffers
+    model::DepthAnalyser analyser; // keeps the curvature of a still shape and the buffers
     model::FrameAnalysis frame;
     WorkerProgress progress(this);
     for (;;) {
@@ -235,7 +235,7 @@ void DepthAnalysisRunner::workerLoop()
         result->height = job->height;
         result->window = job->settings.window;
         try {
-            analyzer.analyze(job->data, job->data.look, job->shape, job->generation, job->frame, job->camera,
+            analyser.analyse(job->data, job->data.look, job->shape, job->generation, job->frame, job->camera,
                 job->width, job->height, job->settings, frame, &job->offsets, &progress);
             if (frame.cancelled)
                 return; // the runner is going: nobody waits for this picture

@@ -1,4 +1,4 @@
-// Runs the stereo depth analysis (model::DepthAnalyzer, paper 3 chapter 4) of what a viewport
+// Runs the stereo depth analysis (model::DepthAnalyser, paper 3 chapter 4) of what a viewport
 // shows, on a worker thread of its own, so that orbiting never waits for it. Requests coalesce:
 // while one analysis runs, only the newest request waits, and it starts when the first ends.
 // It is the editor's one long job without a dialog: the analysis reports through the same

@@ -1,4 +1,4 @@
-// Playing the scene (issue 13): moves the document's playhead at the scene's frames per second.
+// Playing the scene: moves the document's playhead at the scene's frames per second.
 // The playhead follows the clock, not the ticks: when drawing a frame takes longer than a frame
 // lasts, frames are dropped rather than the animation slowing down.
 #pragma once

@@ -1,4 +1,4 @@
-// The Timeline dock (issue 13): the scene's frame range and frames per second (each edit one undo
+// The Timeline dock: the scene's frame range and frames per second (each edit one undo
 // step through AnimationEdits::setSceneTime), the transport (play/pause, loop, start/end, previous/next
 // frame and key) and the ruler with the key marks of every kind. The playhead is the document's.
 #pragma once

@@ -1,4 +1,4 @@
-// The Timeline dock's ruler (issue 13): the scene's frame range with ticks, the key marks of every
+// The Timeline dock's ruler: the scene's frame range with ticks, the key marks of every
 // kind (key deformations, highlight keys, camera keys) in their own shapes and colours, and the
 // playhead. Clicking or dragging scrubs the document's playhead within the range.
 #pragma once

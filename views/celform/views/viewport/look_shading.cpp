@@ -1,6 +1,6 @@
 // The look's shader on a VTK actor: the shared GLSL mirror of shading.cpp plus the per-style
 // colour of algo::renderFrame, written as replacements of VTK 9.1's polydata shader tags
-// (STACK.md pitfall 6).
+// (docs/pitfalls.md, "Custom shading in VTK").
 #include "celform/views/viewport/look_shading.h"
 
 #include "celform/views/viewport/look_face_table.h"

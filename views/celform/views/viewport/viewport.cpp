@@ -1,4 +1,4 @@
-// The viewport host: the QOpenGLWidget VTK draws into (STACK.md pitfall 5), its events, and the
+// The viewport host: the QOpenGLWidget VTK draws into (docs/pitfalls.md, "VTK in a Qt 6 widget"), its events, and the
 // bookkeeping that keeps the scene in step with the document at the playhead. Document changes
 // only mark things stale; a paint (or a pick) brings them up to date, so a hidden viewport does no
 // work and a brush step costs its listeners almost nothing.

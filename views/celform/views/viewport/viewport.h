@@ -1,4 +1,4 @@
-// The 3D viewport: VTK 9.1 hosted in a Qt 6 QOpenGLWidget (STACK.md pitfall 5). This class is the
+// The 3D viewport: VTK 9.1 hosted in a Qt 6 QOpenGLWidget (docs/pitfalls.md, "VTK in a Qt 6 widget"). This class is the
 // host: GL lifetime, keeping the scene in step with the document at the playhead (viewport.cpp),
 // the camera, and pointer and key events (viewport_events.cpp), handed to the active tool. The VTK
 // scene, the camera's maths, the frame composition and the displayed shape have files of their

@@ -1,5 +1,5 @@
 // VTK objects of the viewport: a vtkGenericOpenGLRenderWindow drawing into the QOpenGLWidget's
-// framebuffer (STACK.md pitfall 5) with four layers: 0 background (the drawing when it is under the
+// framebuffer (docs/pitfalls.md, "VTK in a Qt 6 widget") with four layers: 0 background (the drawing when it is under the
 // model, else the model), 1 the model over a drawing, 2 a drawing over the model, 3 the axes triad.
 #include "celform/views/viewport/viewport_scene.h"
 

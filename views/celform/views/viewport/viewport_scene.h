@@ -90,7 +90,7 @@ public:
     [[nodiscard]] const std::vector<float>& capturedDepth() const;
 
     /// Whether the main camera has been placed: VTK does not reset a camera that was touched
-    /// before the first render (STACK.md pitfall 5), so the first frame depends on our framing.
+    /// before the first render (docs/pitfalls.md, "VTK in a Qt 6 widget"), so the first frame depends on our framing.
     bool cameraPlaced = false;
 
 private:

@@ -1,4 +1,4 @@
-// One frame of the view-dependent model (issue 13): the one evaluation the renderer, the viewport,
+// One frame of the view-dependent model: the one evaluation the renderer, the viewport,
 // `celform eval` and every exporter share. At a frame: the animated base there (paper 1, section
 // 4.1), the view direction from that base's centroid towards the camera eye (DESIGN.md, "View
 // direction"), the blend weights on the viewing sphere (section 3.2) and the keys' offsets

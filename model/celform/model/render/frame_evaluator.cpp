@@ -1,5 +1,5 @@
 // The shared per-frame evaluation of the view-dependent model.
-#include "celform/model/render/frame_evaluation.h"
+#include "celform/model/render/frame_evaluator.h"
 
 #include "celform/model/render/render_job.h"
 

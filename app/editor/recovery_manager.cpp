@@ -1,5 +1,5 @@
 // Recovery files: <dir>/session-<pid>-<time>.celform with a .json note and a .lock.
-#include "editor/recovery.h"
+#include "editor/recovery_manager.h"
 
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
