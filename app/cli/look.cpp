@@ -235,7 +235,8 @@ std::vector<SubCommand> lookCommands()
             {"celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--time natural|periodic] "
              "[--light point:X,Y,Z|directional:X,Y,Z] [--style toon|gooch|comic|lambert] [--render-view X,Y,Z|none]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Changes project settings."), {{"P", kProjectArgument}},
-            {{"sharpness", "A", QT_TRANSLATE_NOOP("celform::app::Cli", "Blend sharpness alpha (above 0, at most 100).")},
+            {{"sharpness", "A",
+                 QT_TRANSLATE_NOOP("celform::app::Cli", "Blend sharpness alpha (above 0, at most 100).")},
                 {"unspecified", "MODE", QT_TRANSLATE_NOOP("celform::app::Cli", "Unspecified-region mode.")},
                 {"time", "natural|periodic",
                     QT_TRANSLATE_NOOP("celform::app::Cli",

@@ -789,7 +789,7 @@ private slots:
         QTest::newRow("a key with a drawing's id") << "duplicate-id"
                                                    << "of another object";
         QTest::newRow("format_version \"two\"") << "version-text"
-                                                 << "not a version number";
+                                                << "not a version number";
     }
 
     void refusesBadNumbersAndSharedBlocks()
@@ -831,7 +831,9 @@ private slots:
             } else if (edit.startsWith(QLatin1String("sharpness"))) {
                 QJsonObject blend = m.value("blend").toObject();
                 blend.insert("sharpness",
-                    edit.endsWith(QLatin1String("-0")) ? 0.0 : edit.endsWith(QLatin1String("huge")) ? 1e308 : -1e308);
+                    edit.endsWith(QLatin1String("-0"))         ? 0.0
+                        : edit.endsWith(QLatin1String("huge")) ? 1e308
+                                                               : -1e308);
                 m.insert("blend", blend);
             } else if (edit == QLatin1String("opacity")) {
                 drawing.insert("opacity", 1.5);

@@ -35,9 +35,10 @@ JobRunner* startAutoOffsets(model::ProjectData data, const model::AutoOffsetsReq
         QMessageBox::warning(window, OffsetText::tr("Automatic Shading Offsets"), error);
     };
 
-    auto work = [data = std::move(data), request, apply = std::move(apply)](
-                    algo::Progress& progress) -> JobRunner::Finish {
-        auto result = std::make_shared<const model::AutoOffsetsResult>(model::solveAutoOffsets(data, request, &progress));
+    auto work
+        = [data = std::move(data), request, apply = std::move(apply)](algo::Progress& progress) -> JobRunner::Finish {
+        auto result
+            = std::make_shared<const model::AutoOffsetsResult>(model::solveAutoOffsets(data, request, &progress));
         return [result, apply] {
             if (result->cancelled)
                 return false;

@@ -15,6 +15,7 @@ class JobRunner;
 /// Starts exporting data (a copy of the document as it is now; source names it in errors) as job
 /// describes, with its messages in window's status bar. The runner (object name "exportRunner")
 /// deletes itself when finished.
-JobRunner* startExport(QMainWindow* window, model::ProjectData data, const QString& source, const model::ExportJob& job);
+JobRunner* startExport(
+    QMainWindow* window, model::ProjectData data, const QString& source, const model::ExportJob& job);
 
 } // namespace celform::app

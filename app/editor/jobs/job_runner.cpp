@@ -131,8 +131,8 @@ void JobRunner::report(std::int64_t done, std::int64_t total, const std::string&
             m_updatePosted = true;
         }
     }
-    QMetaObject::invokeMethod(this, [this] { showProgress(); },
-        m_spec.waitForEachStep ? Qt::BlockingQueuedConnection : Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this] { showProgress(); }, m_spec.waitForEachStep ? Qt::BlockingQueuedConnection : Qt::QueuedConnection);
 }
 
 void JobRunner::showProgress()
@@ -187,8 +187,9 @@ void JobRunner::fail(const QString& error)
     if (m_spec.showError) {
         m_spec.showError(error);
     } else {
-        auto* box = new QMessageBox(QMessageBox::Warning,
-            m_spec.errorTitle.isEmpty() ? m_spec.title : m_spec.errorTitle, m_spec.errorText, QMessageBox::Ok, m_parent);
+        auto* box
+            = new QMessageBox(QMessageBox::Warning, m_spec.errorTitle.isEmpty() ? m_spec.title : m_spec.errorTitle,
+                m_spec.errorText, QMessageBox::Ok, m_parent);
         box->setObjectName(m_spec.errorBoxName);
         box->setInformativeText(m_spec.errorDetails ? m_spec.errorDetails(error) : error);
         box->setAttribute(Qt::WA_DeleteOnClose);

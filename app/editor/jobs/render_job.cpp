@@ -90,11 +90,11 @@ JobRunner* startRender(
                 return false;
             }
             const QString first = written->value(0);
-            status(sequence ? RenderText::tr("Rendered %L1 frames to %2")
-                                  .arg(written->size())
-                                  .arg(QDir::toNativeSeparators(QFileInfo(first).absolutePath()))
-                            : RenderText::tr("Rendered %1")
-                                  .arg(QDir::toNativeSeparators(QFileInfo(first).absoluteFilePath())));
+            status(sequence
+                    ? RenderText::tr("Rendered %L1 frames to %2")
+                          .arg(written->size())
+                          .arg(QDir::toNativeSeparators(QFileInfo(first).absolutePath()))
+                    : RenderText::tr("Rendered %1").arg(QDir::toNativeSeparators(QFileInfo(first).absoluteFilePath())));
             if (openWhenDone)
                 QDesktopServices::openUrl(QUrl::fromLocalFile(
                     sequence ? QFileInfo(first).absolutePath() : QFileInfo(first).absoluteFilePath()));

@@ -17,7 +17,7 @@ class JobRunner;
 /// job describes, with its messages in window's status bar. openWhenDone: the image, or a
 /// sequence's folder, opens in the desktop's viewer when the render completes. The runner
 /// (object name "renderRunner") deletes itself when finished.
-JobRunner* startRender(
-    QMainWindow* window, model::ProjectData data, const QString& source, const model::RenderJob& job, bool openWhenDone);
+JobRunner* startRender(QMainWindow* window, model::ProjectData data, const QString& source, const model::RenderJob& job,
+    bool openWhenDone);
 
 } // namespace celform::app
