@@ -70,6 +70,7 @@ std::vector<SubCommand> highlightCommands(); // highlight, patch
 std::vector<SubCommand> analysisCommands(); // analyze, curvature, optimize-light
 std::vector<SubCommand> offsetsCommands(); // offsets
 std::vector<SubCommand> cameraCommands(); // camera
+std::vector<SubCommand> fitCommands(); // outline, fit
 std::vector<SubCommand> exportCommands(); // export
 /// The hidden ones: run by the model as its child processes, left out of help and the README.
 std::vector<SubCommand> importCommands(); // import-mesh, import-image

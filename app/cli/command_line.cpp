@@ -21,7 +21,7 @@ const std::vector<SubCommand>& table()
     static const std::vector<SubCommand> commands = [] {
         std::vector<SubCommand> all;
         for (auto group : {projectCommands, keyCommands, lookCommands, highlightCommands, analysisCommands,
-                 offsetsCommands, cameraCommands, exportCommands})
+                 offsetsCommands, cameraCommands, fitCommands, exportCommands})
             for (SubCommand& c : group())
                 all.push_back(std::move(c));
         return all;

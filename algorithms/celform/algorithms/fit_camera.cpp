@@ -32,6 +32,12 @@ constexpr double kPi = 3.14159265358979323846;
 using Projected = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 constexpr int kParameters = 7; // orbit (3), pan (2), dolly, zoom
 
+/// The camera's zoom on the parameters' scale: log tan(fov / 2), or log of the orthographic height.
+double logZoom(const RasterCamera& c)
+{
+    return c.orthographic ? std::log(c.orthoHeight) : std::log(std::tan(0.5 * c.fovYDegrees * kPi / 180.0));
+}
+
 /// The camera for a parameter vector relative to a base camera: an orbit (rotation vector) about
 /// the pivot on the view axis at the model's depth, a pan of the camera across its image plane (in
 /// units of the pivot distance, so about radians), a dolly (log of the pivot distance) and a zoom
@@ -41,6 +47,10 @@ struct CameraParameters {
     RasterCamera base;
     double pivotDistance = 1.0;
     double targetDistance = 1.0;
+    /// Bounds of the zoom (logZoom) over the whole fit: FitCameraOptions::maxZoomFactor about the
+    /// start's.
+    double zoomLow = -1e300;
+    double zoomHigh = 1e300;
 
     [[nodiscard]] RasterCamera apply(const Eigen::Matrix<double, kParameters, 1>& x) const
     {
@@ -57,11 +67,13 @@ struct CameraParameters {
         c.eye = newPivot - distance * f;
         c.target = c.eye + targetDistance * f;
         c.up = u;
+        const double zoom = std::clamp(logZoom(base) + x(6), zoomLow, zoomHigh);
         if (base.orthographic) {
-            c.orthoHeight = base.orthoHeight * std::exp(x(6));
+            c.orthoHeight = std::exp(zoom);
         } else {
-            const double t = std::tan(0.5 * base.fovYDegrees * kPi / 180.0) * std::exp(x(6));
-            c.fovYDegrees = std::clamp(2.0 * std::atan(t) * 180.0 / kPi, 0.5, 170.0);
+            const double t = std::exp(zoom);
+            c.fovYDegrees = std::clamp(2.0 * std::atan(t) * 180.0 / kPi, FitCameraOptions::kMinFieldOfViewDegrees,
+                FitCameraOptions::kMaxFieldOfViewDegrees);
         }
         return c;
     }
@@ -325,8 +337,9 @@ bool linearise(const Positions& shape, const Faces& faces, const EdgeTopology& t
 /// Levenberg-Marquardt at one level from camera; returns the refined camera and counts iterations.
 /// False on cancel.
 bool solveLevel(const Positions& shape, const Faces& faces, const EdgeTopology& topology, RasterCamera& camera,
-    const Eigen::Vector3d& centroid, const Level& level, const FitCameraOptions& options, const RobustKernel& kernel,
-    Progress* progress, std::int64_t& done, std::int64_t total, int& iterations, FitScratch& scratch)
+    double startZoom, const Eigen::Vector3d& centroid, const Level& level, const FitCameraOptions& options,
+    const RobustKernel& kernel, Progress* progress, std::int64_t& done, std::int64_t total, int& iterations,
+    FitScratch& scratch)
 {
     FeatureEdges features;
     RobustKernel levelKernel = kernel;
@@ -345,6 +358,8 @@ bool solveLevel(const Positions& shape, const Faces& faces, const EdgeTopology& 
         parameters.base = camera;
         parameters.pivotDistance = std::max((centroid - camera.eye).dot(camera.forward()), 1e-6);
         parameters.targetDistance = (camera.target - camera.eye).norm();
+        parameters.zoomLow = startZoom - std::log(options.maxZoomFactor);
+        parameters.zoomHigh = startZoom + std::log(options.maxZoomFactor);
         using Vector7 = Eigen::Matrix<double, kParameters, 1>;
         Eigen::VectorXd r0;
         lin.residuals(camera, r0);
@@ -490,6 +505,7 @@ FitCameraResult fitCamera(const Positions& shape, const Faces& faces, const Edge
     // on the coarsest level; the best few continue through the middle levels with the same loss,
     // and the best of those is refined on the finest level with the redescending loss, which
     // ignores the parts of the drawing the model does not have (an exaggerated ear, a pulled trunk).
+    const double startZoom = logZoom(result.camera);
     std::vector<RasterCamera> starts = {result.camera};
     if (options.startSpreadDegrees > 0.0) {
         const double s = options.startSpreadDegrees;
@@ -519,21 +535,21 @@ FitCameraResult fitCamera(const Positions& shape, const Faces& faces, const Edge
         cameras = std::move(sorted);
     };
     for (RasterCamera& s : starts)
-        if (!solveLevel(shape, faces, topology, s, centroid, levels.front(), options, options.kernel, progress, done,
-                total, result.iterations, scratch))
+        if (!solveLevel(shape, faces, topology, s, startZoom, centroid, levels.front(), options, options.kernel,
+                progress, done, total, result.iterations, scratch))
             return cancelled();
     bestFirst(starts, levels.front());
     starts.resize(kept);
     for (std::size_t l = 1; l + 1 < levels.size(); ++l) {
         for (RasterCamera& s : starts)
-            if (!solveLevel(shape, faces, topology, s, centroid, levels[l], options, options.kernel, progress, done,
-                    total, result.iterations, scratch))
+            if (!solveLevel(shape, faces, topology, s, startZoom, centroid, levels[l], options, options.kernel,
+                    progress, done, total, result.iterations, scratch))
                 return cancelled();
         bestFirst(starts, levels[l]);
     }
     RasterCamera camera = starts.front();
-    if (!solveLevel(shape, faces, topology, camera, centroid, levels.back(), options, options.refineKernel, progress,
-            done, total, result.iterations, scratch))
+    if (!solveLevel(shape, faces, topology, camera, startZoom, centroid, levels.back(), options, options.refineKernel,
+            progress, done, total, result.iterations, scratch))
         return cancelled();
     report(progress, total, total);
 

@@ -33,6 +33,14 @@ struct FitCameraOptions {
     int maxSamples = 1000;
     /// Starts kept after the coarsest level (the rest are dropped by their chamfer cost there).
     int keptStarts = 2;
+    /// How far the fit may zoom: the field of view's tan(fov / 2) (orthographic: the height)
+    /// stays within this factor of the start's either way. A dolly and a zoom nearly undo each
+    /// other on a model much shallower than its distance, and a drawing the model cannot meet
+    /// (another pose) would otherwise trade the artist's lens for a telephoto one.
+    double maxZoomFactor = 1.5;
+    /// The field of view stays within these bounds (degrees).
+    static constexpr double kMinFieldOfViewDegrees = 2.0;
+    static constexpr double kMaxFieldOfViewDegrees = 120.0;
     /// Robust loss of the residuals on the coarse and middle levels (and of the reported robust
     /// cost); its scale is in full-resolution pixels (at least 1.5 pixels of a coarse level).
     RobustKernel kernel{RobustLoss::Huber, 3.0};

@@ -223,6 +223,22 @@ QString sceneTimeProblem(const SceneTime& time)
     return {};
 }
 
+QString DrawingOutline::problem() const
+{
+    if (!std::isfinite(threshold) || threshold > 1.0)
+        return QCoreApplication::translate(
+            "DrawingOutline", "the outline threshold must lie in 0 to 1 (or be negative for automatic), not %1")
+            .arg(threshold);
+    if (!std::isfinite(closingRadius) || closingRadius < 0.0 || closingRadius > kMaxClosingRadius)
+        return QCoreApplication::translate("DrawingOutline", "the closing radius must lie in 0 to %1 pixels, not %2")
+            .arg(kMaxClosingRadius)
+            .arg(closingRadius);
+    if (minComponentPixels < 0)
+        return QCoreApplication::translate("DrawingOutline", "the smallest figure kept must not be negative, not %1")
+            .arg(minComponentPixels);
+    return {};
+}
+
 const algo::Positions& ProjectData::basePositions(int frame, algo::Positions& scratch) const
 {
     Q_ASSERT(baseMesh);

@@ -42,6 +42,31 @@ struct SparseOffsets {
     static SparseOffsets difference(const algo::Positions& shape, const algo::Positions& base);
 };
 
+/// How a drawing's outline is extracted for Fit to Drawing (algo::OutlineSettings, the parts the
+/// artist sets and the project saves with the drawing).
+struct DrawingOutline {
+    /// Ink where the luminance (0 black .. 1 white) is below this; negative: Otsu's threshold.
+    double threshold = -1.0;
+    /// Radius in pixels of the disc closing gaps of open line art (0 .. kMaxClosingRadius).
+    double closingRadius = 2.0;
+    /// Keep the drawing's inner lines: the holes the ink encloses stay open (off fills them and
+    /// the outer outline alone remains).
+    bool innerLines = false;
+    /// 0: the largest figure only; > 0: every figure of at least this many pixels as well.
+    int minComponentPixels = 0;
+
+    static constexpr double kMaxClosingRadius = 64.0;
+    bool operator==(const DrawingOutline& o) const
+    {
+        return threshold == o.threshold && closingRadius == o.closingRadius && innerLines == o.innerLines
+            && minComponentPixels == o.minComponentPixels;
+    }
+    bool operator!=(const DrawingOutline& o) const { return !(*this == o); }
+    /// The first problem of the values (a threshold above 1, a closing radius out of range, a
+    /// negative size), empty when valid.
+    [[nodiscard]] QString problem() const;
+};
+
 struct Drawing {
     ObjectId id = 0;
     QString name;
@@ -52,12 +77,14 @@ struct Drawing {
     bool aligned = false; ///< whether camera has been set by the artist
     double opacity = 0.5; ///< overlay opacity in the viewport
     int frame = 0;
+    DrawingOutline outline; ///< how Fit to Drawing reads the drawing's outline
 
     /// Equality of the stored data (the decoded image is derived and not compared).
     bool operator==(const Drawing& o) const
     {
         return id == o.id && name == o.name && imageData == o.imageData && imageFormat == o.imageFormat
-            && camera == o.camera && aligned == o.aligned && opacity == o.opacity && frame == o.frame;
+            && camera == o.camera && aligned == o.aligned && opacity == o.opacity && frame == o.frame
+            && outline == o.outline;
     }
 };
 

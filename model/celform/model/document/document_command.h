@@ -16,6 +16,7 @@ enum class Property {
     DrawingName,
     DrawingOpacity,
     DrawingCamera,
+    DrawingOutline,
     KeyName,
     KeyEnabled,
     KeyCamera,

@@ -192,4 +192,9 @@ private:
     ObjectId m_after;
 };
 
+/// The command that stores a drawing's aligned camera (camera and "aligned" flag as one value),
+/// for the edits that align a drawing alone or together with its key.
+QUndoCommand* newDrawingCameraCommand(Document* doc, const QString& text, ObjectId id, const Camera& camera,
+    GestureId gesture, QUndoCommand* parent = nullptr);
+
 } // namespace celform::model

@@ -1,6 +1,7 @@
 // The reference drawings' edits: each one undo step, by drawing id.
 #include "celform/model/document/drawing_edits.h"
 
+#include "celform/model/data/io_error.h"
 #include "celform/model/document/document_commands.h"
 #include "celform/model/io/image_io.h"
 
@@ -76,11 +77,29 @@ void DrawingEdits::setDrawingCamera(ObjectId id, const Camera& camera, GestureId
     const Drawing* drawing = data().drawing(id);
     if (!drawing || !camera.isValid() || (drawing->aligned && drawing->camera == camera))
         return;
+    push(newDrawingCameraCommand(m_doc, tr("Align Drawing “%1”").arg(drawing->name), id, camera, gesture));
+}
+
+void DrawingEdits::setDrawingOutline(ObjectId id, const DrawingOutline& outline, GestureId gesture)
+{
+    const Drawing* drawing = data().drawing(id);
+    if (!drawing || drawing->outline == outline)
+        return;
+    if (const QString problem = outline.problem(); !problem.isEmpty())
+        throw EditRefused(problem);
+    push(new PropertyCommand<DrawingOutline>(m_doc, tr("Set Outline of “%1”").arg(drawing->name),
+        {Property::DrawingOutline, id}, fieldOf(id, &Drawing::outline), outline, ChangeSet::of(Part::Drawings, id),
+        gesture));
+}
+
+QUndoCommand* newDrawingCameraCommand(
+    Document* doc, const QString& text, ObjectId id, const Camera& camera, GestureId gesture, QUndoCommand* parent)
+{
     // The camera and the "aligned" flag are one value: a navigation gesture is one step, and its
     // undo gives back an unaligned drawing where there was one.
     using Aligned = std::pair<Camera, bool>;
-    push(new PropertyCommand<Aligned>(
-        m_doc, tr("Align Drawing “%1”").arg(drawing->name), {Property::DrawingCamera, id},
+    return new PropertyCommand<Aligned>(
+        doc, text, {Property::DrawingCamera, id},
         [id](const ProjectData& d) -> std::optional<Aligned> {
             const Drawing* x = d.drawing(id);
             return x ? std::optional<Aligned>(Aligned{x->camera, x->aligned}) : std::nullopt;
@@ -91,7 +110,7 @@ void DrawingEdits::setDrawingCamera(ObjectId id, const Camera& camera, GestureId
                 x->aligned = value.second;
             }
         },
-        Aligned{camera, true}, ChangeSet::of(Part::Drawings, id), gesture));
+        Aligned{camera, true}, ChangeSet::of(Part::Drawings, id), gesture, parent);
 }
 
 QString DrawingEdits::uniqueDrawingName(const QString& wanted) const

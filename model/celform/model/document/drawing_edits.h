@@ -20,6 +20,9 @@ public:
     void setDrawingOpacity(ObjectId id, double opacity, GestureId gesture = {});
     /// Stores the camera aligned to a drawing (and marks it aligned).
     void setDrawingCamera(ObjectId id, const Camera& camera, GestureId gesture = {});
+    /// The drawing's outline settings for Fit to Drawing. Throws EditRefused for invalid values
+    /// (DrawingOutline::problem).
+    void setDrawingOutline(ObjectId id, const DrawingOutline& outline, GestureId gesture = {});
     /// Makes a name unique among drawings by appending " 2", " 3", ...
     [[nodiscard]] QString uniqueDrawingName(const QString& wanted) const;
 

@@ -96,16 +96,43 @@ void KeyEdits::setKeyCamera(ObjectId id, const Camera& camera)
     const KeyViewpoint* key = data().key(id);
     if (!key || !camera.isValid() || key->camera == camera)
         return;
+    const Eigen::Vector3d direction = keyDirection(id, camera);
+    auto* cmd = new CompositeCommand(m_doc, tr("Re-align Key “%1”").arg(key->name));
+    addKeyCameraCommands(id, camera, direction, cmd);
+    push(cmd);
+}
+
+Eigen::Vector3d KeyEdits::keyDirection(ObjectId id, const Camera& camera) const
+{
     const Eigen::Vector3d direction = BlendEvaluator::viewDirection(data(), camera.eye, data().currentFrame);
     if (direction.norm() == 0.0)
         throw EditRefused(tr("The key's camera sits at the centre of the model; move it away first."));
     refuseDuplicateDirection(direction, id);
-    auto* cmd = new CompositeCommand(m_doc, tr("Re-align Key “%1”").arg(key->name));
+    return direction;
+}
+
+void KeyEdits::addKeyCameraCommands(
+    ObjectId id, const Camera& camera, const Eigen::Vector3d& direction, QUndoCommand* parent) const
+{
     const ChangeSet change = ChangeSet::of(Part::Keys, id);
     new PropertyCommand<Camera>(
-        m_doc, {}, {Property::KeyCamera, id}, fieldOf(id, &KeyViewpoint::camera), camera, change, {}, cmd);
+        m_doc, {}, {Property::KeyCamera, id}, fieldOf(id, &KeyViewpoint::camera), camera, change, {}, parent);
     new PropertyCommand<Eigen::Vector3d>(
-        m_doc, {}, {Property::KeyCamera, id}, fieldOf(id, &KeyViewpoint::direction), direction, change, {}, cmd);
+        m_doc, {}, {Property::KeyCamera, id}, fieldOf(id, &KeyViewpoint::direction), direction, change, {}, parent);
+}
+
+void KeyEdits::applyFittedCamera(ObjectId drawingId, ObjectId keyId, const Camera& camera)
+{
+    const Drawing* drawing = data().drawing(drawingId);
+    const KeyViewpoint* key = keyId ? data().key(keyId) : nullptr;
+    if (!drawing || !camera.isValid() || (keyId && !key))
+        return;
+    const bool moveKey = key && key->camera != camera;
+    const Eigen::Vector3d direction = moveKey ? keyDirection(keyId, camera) : Eigen::Vector3d::Zero();
+    auto* cmd = new CompositeCommand(m_doc, tr("Fit Camera to Drawing"));
+    newDrawingCameraCommand(m_doc, {}, drawingId, camera, {}, cmd);
+    if (moveKey)
+        addKeyCameraCommands(keyId, camera, direction, cmd);
     push(cmd);
 }
 
@@ -209,6 +236,12 @@ QStringList KeyEdits::importKeyDeformation(ObjectId id, const QString& meshPath,
     setKeyDeformation(id, frame, SparseOffsets::difference(imported.mesh.vertices, base.vertices),
         tr("Import Deformation into “%1”").arg(key->name));
     return warnings;
+}
+
+void KeyEdits::applyFittedShape(
+    ObjectId id, int frame, const std::vector<std::uint32_t>& indices, const algo::Positions& displacements)
+{
+    displaceKeyVertices(id, frame, indices, displacements, tr("Fit Shape to Drawing"));
 }
 
 void KeyEdits::displaceKeyVertices(ObjectId id, int frame, const std::vector<std::uint32_t>& indices,

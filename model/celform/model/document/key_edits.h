@@ -31,6 +31,10 @@ public:
     ObjectId createKeyFromDrawing(ObjectId drawingId);
     /// Re-aligns a key: new camera and direction. Throws EditRefused for a duplicate direction.
     void setKeyCamera(ObjectId id, const Camera& camera);
+    /// Fit Camera to Drawing's result, one undo step: the drawing's aligned camera and, with a key
+    /// (keyId not 0), the key's camera and direction with it, as aligning by hand and re-aligning
+    /// the key would. Throws EditRefused as setKeyCamera.
+    void applyFittedCamera(ObjectId drawingId, ObjectId keyId, const Camera& camera);
     /// Links a key to one drawing (0 unlinks every drawing).
     void linkKeyDrawing(ObjectId keyId, ObjectId drawingId);
     void removeKey(ObjectId id);
@@ -53,6 +57,11 @@ public:
     void displaceKeyVertices(ObjectId id, int frame, const std::vector<std::uint32_t>& indices,
         const algo::Positions& displacements, const QString& undoText, GestureId gesture = {});
 
+    /// Fit Shape to Drawing's result, one undo step: displacements added to the key's deformation
+    /// at frame (as displaceKeyVertices).
+    void applyFittedShape(
+        ObjectId id, int frame, const std::vector<std::uint32_t>& indices, const algo::Positions& displacements);
+
     // --- the falloff brush (paper 1, section 3.1.2): the editor's tool and `celform brush` -----
     /// Starts a stroke on key `id` at `frame`: selects the vertices of the key's shape there
     /// within radius of vertex picked, and with mirrorX their mirror images across x = 0; the
@@ -70,6 +79,10 @@ private:
     friend class Document;
     using DocumentFacade::DocumentFacade;
     void refuseDuplicateDirection(const Eigen::Vector3d& direction, ObjectId ignoredKey) const;
+    /// The direction of key id seen from camera; throws EditRefused (eye at the centre, duplicate).
+    [[nodiscard]] Eigen::Vector3d keyDirection(ObjectId id, const Camera& camera) const;
+    void addKeyCameraCommands(
+        ObjectId id, const Camera& camera, const Eigen::Vector3d& direction, QUndoCommand* parent) const;
 };
 
 } // namespace celform::model

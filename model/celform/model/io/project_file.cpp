@@ -274,7 +274,10 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
         drawings.append(QJsonObject{{"id", double(d.id)}, {"name", d.name}, {"format", d.imageFormat},
             {"image",
                 chunks.add(QStringLiteral("drawings/%1/image").arg(d.id), d.imageData.constData(), d.imageData.size())},
-            {"camera", cameraJson(d.camera)}, {"aligned", d.aligned}, {"opacity", d.opacity}, {"frame", d.frame}});
+            {"camera", cameraJson(d.camera)}, {"aligned", d.aligned}, {"opacity", d.opacity}, {"frame", d.frame},
+            {"outline",
+                QJsonObject{{"threshold", d.outline.threshold}, {"closing_radius", d.outline.closingRadius},
+                    {"inner_lines", d.outline.innerLines}, {"min_component_pixels", d.outline.minComponentPixels}}}});
     }
     root.insert("drawings", drawings);
 

@@ -480,6 +480,16 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         if (!(d.opacity >= 0.0 && d.opacity <= 1.0))
             r.corrupt(ProjectFile::tr("drawing “%1” has an opacity outside 0 to 1").arg(d.name));
         d.frame = r.frame(o, "frame");
+        // Files written before Fit to Drawing have no outline settings: the defaults.
+        if (o.contains(QLatin1String("outline"))) {
+            const QJsonObject outline = r.object(o, "outline");
+            d.outline.threshold = r.number(outline, "threshold");
+            d.outline.closingRadius = r.number(outline, "closing_radius");
+            d.outline.innerLines = r.boolean(outline, "inner_lines");
+            d.outline.minComponentPixels = int(r.count(outline, "min_component_pixels"));
+            if (const QString problem = d.outline.problem(); !problem.isEmpty())
+                r.corrupt(ProjectFile::tr("drawing “%1”: %2").arg(d.name, problem));
+        }
         data.drawings.push_back(std::move(d));
     }
 
