@@ -6,7 +6,7 @@
 # filling 80 % of the height), warps it smoothly in 2D as a model sheet exaggerates (ears about
 # 20 % larger, the trunk 13 % longer), inks it with a varying line width and prints each drawing's
 # camera (eye, target, up, field of view) and the IoU of the drawing's outline against the
-# unwarped silhouette. The drawings are not used by scripts/make-sample.sh yet.
+# unwarped silhouette. scripts/make-sample.sh builds the samples from them.
 # Usage: scripts/make-model-sheet.sh [build-dir] [shared-data-dir]
 #   (defaults: build/release and ../shared/data, as scripts/make-sample.sh)
 set -euo pipefail

@@ -15,6 +15,8 @@ data=../shared/data
 "$celform" new "$data/meshes/cgal_elephant.off" \
   --drawing "$data/drawings/tuxpaint_elephant.png" \
   --drawing "$data/drawings/openclipart_contour_elephant.svg" \
+  --drawing resources/samples/drawings/elephant-sheet-side.png \
+  --drawing resources/samples/drawings/elephant-sheet-front.png \
   --out resources/samples/elephant-plain.celform
 rm -f resources/samples/elephant-plain.celform.bak
 echo "wrote resources/samples/elephant-plain.celform"
@@ -41,27 +43,24 @@ cp resources/samples/elephant-plain.celform "$hl"
 rm -f "$hl.bak"
 echo "wrote $hl"
 
-# The showcase: the elephant rears with its trunk raised, the drawings show it standing
-# with the trunk hanging. Key "side" is the Tux Paint drawing's view (from +z, head to the right),
-# key "far side" the contour drawing's (from -z, head to the left); in each, strokes of the falloff
-# brush on the trunk's tip (vertex 691) swing it forward and down, as the drawing has it. In
-# between (seen from the front, behind or above) the blend returns to the base model's raised
-# trunk, so the turntable shows the shape following the view.
+# The showcase: keys made by Fit to Drawing from the model sheet in the model's own pose
+# (resources/samples/drawings, made by scripts/make-model-sheet.sh: the ears bigger and the trunk
+# longer than the model's). Each key starts from a rough hand alignment, 5 to 7 degrees off the
+# drawing's camera (resources/samples/README.md), then `celform fit --camera --shape` aligns the
+# camera and deforms the key until its silhouette meets the drawing's outline; one brush stroke
+# touches the trunk's tip up. Seen from between the keys, the blend returns to the base model, so
+# the turntable shows the ears and trunk growing towards each drawn view.
 show=resources/samples/elephant.celform
+sheet=resources/samples/drawings
 "$celform" new "$data/meshes/cgal_elephant.off" --out "$show"
-"$celform" key add "$show" --name side --from-base --view 0,0,1 --drawing "$data/drawings/tuxpaint_elephant.png"
-"$celform" key add "$show" --name "far side" --from-base --view 0,0,-1 \
-  --drawing "$data/drawings/openclipart_contour_elephant.svg"
-# Drags along the key camera's right and up: right is +x from +z, -x from -z.
-for key in side "far side"; do
-  sign=1
-  [ "$key" = "far side" ] && sign=-1
-  for stroke in "0.45 0.22 -0.04" "0.42 0.12 -0.2" "0.42 0.04 -0.22" "0.4 0.0 -0.2" "0.38 -0.04 -0.12"; do
-    read -r radius dx dy <<<"$stroke"
-    dx=$(awk -v s="$sign" -v d="$dx" 'BEGIN { printf "%g", s * d }')
-    "$celform" brush "$show" --key "$key" --vertex 691 --radius "$radius" --drag "$dx,$dy" >/dev/null
-  done
+"$celform" key add "$show" --name side --from-base --eye 0.2476,0.1357,2.348 --target 0.001793,0.012576,0.01161 \
+  --up 0,1,0 --drawing "$sheet/elephant-sheet-side.png"
+"$celform" key add "$show" --name front --from-base --eye 2.4115,0.1436,0.189 --target 0.067994,0.020561,-0.016062 \
+  --up 0,1,0 --drawing "$sheet/elephant-sheet-front.png"
+for key in side front; do
+  "$celform" fit "$show" --key "$key" --camera --shape --json | grep -E "iou_|chamfer_px_|milliseconds"
 done
+"$celform" brush "$show" --key side --vertex 691 --radius 0.12 --drag 0.01,0.01 >/dev/null
 "$celform" camera "$show" --turntable 48 --elevation 10
 rm -f "$show.bak"
 echo "wrote $show"
