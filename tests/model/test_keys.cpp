@@ -4,6 +4,7 @@
 #include "test_meshes.h"
 
 #include "celform/algorithms/brush.h"
+#include "celform/model/data/blend_evaluator.h"
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/mesh_io.h"
@@ -89,6 +90,23 @@ private slots:
         const ProjectData before = m_doc.data();
         QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.keys().createKey(QStringLiteral("again"), cameraAt({0, 0, 9})));
         QVERIFY(m_doc.data() == before);
+    }
+
+    // A key without a direction (a hand-edited file the blend meets) is named, not numbered.
+    void blendNamesAKeyWithoutDirection()
+    {
+        ProjectData data = m_doc.data();
+        KeyViewpoint key;
+        key.id = 7;
+        key.name = QStringLiteral("lost");
+        key.direction = Eigen::Vector3d::Zero();
+        data.keys.push_back(key);
+        BlendEvaluator blender;
+        QString error;
+        QVERIFY(!blender.update(data, &error));
+        QVERIFY2(error.contains(QStringLiteral("“lost”")), qPrintable(error));
+        data.keys.back().direction = Eigen::Vector3d(0, 0, 1);
+        QVERIFY(blender.update(data, &error));
     }
 
     void keyFromDrawingNeedsAlignment()

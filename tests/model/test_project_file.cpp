@@ -790,6 +790,12 @@ private slots:
                                                    << "of another object";
         QTest::newRow("format_version \"two\"") << "version-text"
                                                 << "not a version number";
+        QTest::newRow("key direction zero") << "zero-direction"
+                                            << "view direction of zero length";
+        QTest::newRow("outline closing radius 1e9") << "outline-closing"
+                                                    << "closing radius";
+        QTest::newRow("outline threshold 2") << "outline-threshold"
+                                             << "outline threshold";
     }
 
     void refusesBadNumbersAndSharedBlocks()
@@ -844,6 +850,15 @@ private slots:
                 key.insert("drawings", QJsonArray{});
             } else if (edit == QLatin1String("version-text")) {
                 m.insert("format_version", QStringLiteral("two"));
+            } else if (edit == QLatin1String("zero-direction")) {
+                key.insert("direction", QJsonArray{0.0, 0.0, 0.0});
+            } else if (edit.startsWith(QLatin1String("outline-"))) {
+                QJsonObject outline = drawing.value("outline").toObject();
+                if (edit.endsWith(QLatin1String("closing")))
+                    outline.insert("closing_radius", 1e9);
+                else
+                    outline.insert("threshold", 2.0);
+                drawing.insert("outline", outline);
             }
             mesh.insert("face_sets", sets);
             m.insert("base_mesh", mesh);

@@ -30,6 +30,16 @@ bool BlendEvaluator::update(const ProjectData& data, QString* error)
     for (const auto& key : data.keys) {
         if (!key.enabled)
             continue;
+        if (!key.direction.allFinite() || !(key.direction.norm() > 0.0)) {
+            // Named here: the view sphere knows keys only by their index.
+            if (error)
+                *error = QCoreApplication::translate(
+                    "celform::model::BlendEvaluator", "The key “%1” has no view direction (zero or not finite).")
+                             .arg(key.name);
+            m_built = false;
+            m_sphere.reset();
+            return false;
+        }
         ids.push_back(key.id);
         directions.push_back(key.direction);
     }

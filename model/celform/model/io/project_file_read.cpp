@@ -499,6 +499,9 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         k.id = r.objectId(o, "id");
         k.name = r.string(o, "name");
         k.direction = r.vector3(o, "direction");
+        // A key's direction is a unit vector (DESIGN.md, "View direction"): a zero one has none.
+        if (!(k.direction.norm() > 1e-9))
+            r.corrupt(ProjectFile::tr("key “%1” has a view direction of zero length").arg(k.name));
         k.camera = r.camera(r.object(o, "camera"));
         k.enabled = r.boolean(o, "enabled");
         for (const QJsonValue& id : r.array(o, "drawings"))
