@@ -227,6 +227,8 @@ void MainWindow::createDocks()
         m_scene->select({views::ScenePanel::ItemKind::Key, key});
         statusBar()->showMessage(tr("Key created: select Edit Key with the Brush to deform it"), 8000);
     });
+    connect(m_properties, &views::PropertiesPanel::importDeformationRequested, this,
+        &MainWindow::importKeyDeformationDialog);
     connect(m_properties, &views::PropertiesPanel::message, this,
         [this](const QString& text) { statusBar()->showMessage(text, 10000); });
     connect(m_viewport, &views::Viewport::message, this,
@@ -466,6 +468,24 @@ bool MainWindow::importDrawing(const QString& path)
     return true;
 }
 
+bool MainWindow::importKeyDeformation(model::ObjectId key, const QString& path)
+{
+    auto outcome = runWithProgress<model::MeshImport>(
+        this, tr("Reading %1…").arg(QFileInfo(path).fileName()), [path] { return model::importMesh(path); });
+    if (!outcome.value) {
+        if (!outcome.error.isEmpty())
+            showError(outcome.error);
+        return false;
+    }
+    try {
+        showWarnings(path, m_document->keys().importKeyDeformation(key, *outcome.value, path));
+    } catch (const model::IoError& e) {
+        showError(e.message());
+        return false;
+    }
+    return true;
+}
+
 bool MainWindow::save()
 {
     if (m_document->filePath().isEmpty())
@@ -541,6 +561,13 @@ void MainWindow::importMeshDialog()
     const QString path = QFileDialog::getOpenFileName(this, tr("Import Mesh"), {}, model::meshFileFilter());
     if (!path.isEmpty())
         importMesh(path, !m_document->hasMesh());
+}
+
+void MainWindow::importKeyDeformationDialog(model::ObjectId key)
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import Key Deformation"), {}, model::meshFileFilter());
+    if (!path.isEmpty())
+        importKeyDeformation(key, path);
 }
 
 void MainWindow::importDrawingDialog()

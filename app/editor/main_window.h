@@ -55,6 +55,10 @@ public:
     bool saveScreenshot(const QString& path);
     bool save();
     bool saveAs(const QString& path = {});
+    /// Reads a mesh as a job (JobRunner, as every import) and makes it a key's deformation at
+    /// frame 0 (one undo step); Properties > Import Deformation asks for the file. Errors are
+    /// shown (interactive) or logged (batch); returns success.
+    bool importKeyDeformation(model::ObjectId key, const QString& path);
 
 public slots:
     /// Offers the recovery files of crashed sessions (interactive mode only).
@@ -86,6 +90,7 @@ private:
     void openDialog();
     void importMeshDialog();
     void importDrawingDialog();
+    void importKeyDeformationDialog(model::ObjectId key);
     void updateStatistics();
     void processDropQueue();
     /// Optimise Light for Stereo through the viewport's camera at the Depth tab's analysis size.

@@ -539,7 +539,7 @@ private:
                 shape.vertices.row(v) += Eigen::RowVector3f(uniformF(r, -0.1, 0.1), 0.f, uniformF(r, -0.1, 0.1));
             const QString path = m_dir.filePath(QStringLiteral("deformation.ply"));
             exportMesh(shape, path);
-            d.keys().importKeyDeformation(id, path, frame);
+            d.keys().importKeyDeformation(id, importMesh(path), path, frame);
         });
         add("displaceKeyVertices", 8, Kind::Edit, [this, &d, &r](Rng& t) {
             const SparseOffsets step = randomOffsets(8);

@@ -47,7 +47,7 @@ FaceSetStroke FaceSetEdits::beginFaceSetStroke(const QString& target)
 
 std::size_t FaceSetEdits::applyFaceSetStroke(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces, bool erase)
 {
-    if (!stroke.active())
+    if (!stroke.active() || !data().baseMesh)
         return 0;
     stroke.dab.assign(faces.begin(), faces.end());
     std::sort(stroke.dab.begin(), stroke.dab.end());

@@ -262,9 +262,10 @@ HighlightDrag HighlightEdits::beginHighlightDrag(ObjectId id, double frame)
 void HighlightEdits::applyHighlightDrag(HighlightDrag& drag, const HighlightDragStep& step)
 {
     using T = algo::HighlightOperationType;
-    if (!drag.active() || !std::isfinite(step.a) || !std::isfinite(step.b))
-        return;
-    const HighlightTrack& track = highlightOrThrow(drag.layer);
+    const HighlightTrack* found = data().highlight(drag.layer);
+    if (!drag.active() || !found || !std::isfinite(step.a) || !std::isfinite(step.b))
+        return; // ended, or the layer went (an undo during the drag)
+    const HighlightTrack& track = *found;
     const T type = step.motion == HighlightMotion::Rotate ? T::Rotation
         : step.motion == HighlightMotion::Scale           ? T::DirectionalScaling
                                                           : T::Translation;
@@ -287,8 +288,8 @@ void HighlightEdits::applyHighlightDrag(HighlightDrag& drag, const HighlightDrag
     }
     HighlightTrack edited;
     edited.keys = std::move(drag.keys);
-    algo::HighlightLayer layer = edited.layerAt(drag.frame);
-    auto& ops = layer.shape.operations;
+    algo::HighlightLayer atFrame = edited.layerAt(drag.frame);
+    auto& ops = atFrame.shape.operations;
     const std::size_t index = firstOf(ops);
     if (index == ops.size())
         return; // cannot happen: every key has one now
@@ -310,7 +311,7 @@ void HighlightEdits::applyHighlightDrag(HighlightDrag& drag, const HighlightDrag
     }
     if (!std::isfinite(op.a) || !std::isfinite(op.b))
         return;
-    edited.setKey(drag.frame, layer);
+    edited.setKey(drag.frame, atFrame);
     drag.keys = std::move(edited.keys);
     setHighlightKeys(drag.layer, drag.keys,
         type == T::Rotation                 ? tr("Rotate Highlight")

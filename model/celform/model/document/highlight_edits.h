@@ -53,7 +53,7 @@ public:
     [[nodiscard]] HighlightDrag beginHighlightDrag(ObjectId id, double frame);
     /// One step (highlight_drag.h: move, rotate, scale). A layer without an operation of the
     /// step's type gets one in every key first (translation and rotation at the front, scaling at
-    /// the end), so its keys keep interpolating.
+    /// the end), so its keys keep interpolating. Nothing once ended or when the layer is gone.
     void applyHighlightDrag(HighlightDrag& drag, const HighlightDragStep& step);
     void endHighlightDrag(HighlightDrag& drag);
     void setHighlightPatch(ObjectId id, const QString& patch, GestureId gesture = {});
