@@ -8,6 +8,8 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <functional>
+
 class QAction;
 class QLabel;
 class QMenu;
@@ -81,6 +83,8 @@ private:
     /// Appends to the Log dock; warnings and errors also go to the process log (stderr).
     void log(LogLevel level, const QString& message);
     void showError(const QString& message);
+    /// showError as a function, for the file jobs.
+    [[nodiscard]] std::function<void(const QString&)> shownError();
     void showWarnings(const QString& file, const QStringList& warnings);
     bool maybeSave();
     bool openProject(const QString& path);
