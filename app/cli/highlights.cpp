@@ -373,7 +373,10 @@ int runPatch(const Invocation& in)
         doc->faceSets().removeFaceSet(name); // its layers go back to all faces in the same step
     } else {
         const auto selected = selectFaces(in, *doc->data().baseMesh, faceRanges, spheres, path);
-        doc->faceSets().paintFaceSet(name, selected, in.isSet("subtract"));
+        // One dab of the patch brush: the same edit, and undo text, as a drag in the editor.
+        model::FaceSetStroke stroke = doc->faceSets().beginFaceSetStroke(name);
+        doc->faceSets().applyFaceSetStroke(stroke, selected, in.isSet("subtract"));
+        doc->faceSets().endFaceSetStroke(stroke);
     }
     doc->saveAs(path);
     if (in.isSet("json") && !in.isSet("remove"))

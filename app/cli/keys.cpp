@@ -45,7 +45,8 @@ int runKey(const Invocation& in)
     }
     const model::ObjectId id = doc->keys().createKey(name, camera, drawingIds, {}, frame);
     if (in.isSet("mesh"))
-        for (const QString& w : doc->keys().importKeyDeformation(id, in.value("mesh"), frame))
+        for (const QString& w :
+            doc->keys().importKeyDeformation(id, model::importMesh(in.value("mesh")), in.value("mesh"), frame))
             printErr(Cli::tr("warning: %1: %2").arg(in.value("mesh"), w));
     doc->saveAs(path);
     // A name in use is made unique, as the editor makes it (Document::uniqueKeyName): say so, since

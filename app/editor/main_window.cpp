@@ -95,35 +95,35 @@ protected:
 constexpr int kMaxRecentFiles = 10;
 const char* const kRecentKey = "files/recent";
 
-/// A value or the message of the IoError that prevented it.
-template <typename T> struct Outcome {
-    std::optional<T> value;
-    QString error;
-};
-
 /// Runs work (reading a file) as a job of the JobRunner and waits for it; the window keeps
-/// painting, and a progress dialog appears when it takes longer than half a second.
-template <typename T, typename Work> Outcome<T> runWithProgress(QWidget* parent, const QString& label, Work work)
+/// painting, and a progress dialog appears when it takes longer than half a second. Returns the
+/// value, or nothing after giving showError the message of the error that prevented it.
+template <typename T, typename Work>
+std::optional<T> runWithProgress(
+    QWidget* parent, const QString& label, const std::function<void(const QString&)>& showError, Work work)
 {
-    Outcome<T> outcome;
+    std::optional<T> value;
     JobSpec spec;
     spec.progressName = QStringLiteral("fileProgress");
     spec.label = label;
     spec.delayMs = 500;
     spec.outOfMemory = QCoreApplication::translate("celform::app::MainWindow", "Not enough memory.");
-    spec.showError = [&outcome](const QString& error) { outcome.error = error; };
+    spec.showError = [showError](const QString& error) {
+        if (!error.isEmpty())
+            showError(error);
+    };
     JobRunner runner(
         std::move(spec),
-        [&outcome, work](algo::Progress&) -> JobRunner::Finish {
-            auto value = std::make_shared<T>(work());
-            return [&outcome, value] {
-                outcome.value = std::move(*value);
+        [&value, work](algo::Progress&) -> JobRunner::Finish {
+            auto read = std::make_shared<T>(work());
+            return [&value, read] {
+                value = std::move(*read);
                 return true;
             };
         },
         parent);
     runner.exec();
-    return outcome;
+    return value;
 }
 
 QString suffixOf(const QString& path)
@@ -227,6 +227,8 @@ void MainWindow::createDocks()
         m_scene->select({views::ScenePanel::ItemKind::Key, key});
         statusBar()->showMessage(tr("Key created: select Edit Key with the Brush to deform it"), 8000);
     });
+    connect(m_properties, &views::PropertiesPanel::importDeformationRequested, this,
+        &MainWindow::importKeyDeformationDialog);
     connect(m_properties, &views::PropertiesPanel::message, this,
         [this](const QString& text) { statusBar()->showMessage(text, 10000); });
     connect(m_viewport, &views::Viewport::message, this,
@@ -346,6 +348,11 @@ void MainWindow::showError(const QString& message)
         QMessageBox::warning(this, tr("Celform"), message);
 }
 
+std::function<void(const QString&)> MainWindow::shownError()
+{
+    return [this](const QString& message) { showError(message); };
+}
+
 void MainWindow::showWarnings(const QString& file, const QStringList& warnings)
 {
     if (warnings.isEmpty())
@@ -375,14 +382,11 @@ bool MainWindow::openProject(const QString& path)
 {
     if (!maybeSave())
         return false;
-    auto outcome = runWithProgress<model::ProjectData>(
-        this, tr("Opening %1…").arg(QFileInfo(path).fileName()), [path] { return model::loadProject(path); });
-    if (!outcome.value) {
-        if (!outcome.error.isEmpty())
-            showError(outcome.error);
+    auto outcome = runWithProgress<model::ProjectData>(this, tr("Opening %1…").arg(QFileInfo(path).fileName()),
+        shownError(), [path] { return model::loadProject(path); });
+    if (!outcome)
         return false;
-    }
-    m_document->reset(std::move(*outcome.value), QFileInfo(path).absoluteFilePath());
+    m_document->reset(std::move(*outcome), QFileInfo(path).absoluteFilePath());
     addRecentFile(path);
     statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 5000);
     log(LogLevel::Info, tr("Opened %1").arg(QDir::toNativeSeparators(path)));
@@ -396,23 +400,20 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
     // An animated glTF/GLB (skins, morph targets) or a "walk_####.obj" pattern: the base moves
     // (paper 1, section 4.1), and the scene takes the animation's frames and rate.
     if (model::opensAsAnimatedBase(path)) {
-        auto animated = runWithProgress<model::AnimatedImport>(
-            this, tr("Reading %1…").arg(QFileInfo(path).fileName()), [path] { return model::readAnimatedBase(path); });
-        if (!animated.value) {
-            if (!animated.error.isEmpty())
-                showError(animated.error);
+        auto animated = runWithProgress<model::AnimatedImport>(this, tr("Reading %1…").arg(QFileInfo(path).fileName()),
+            shownError(), [path] { return model::readAnimatedBase(path); });
+        if (!animated)
             return false;
-        }
         const QString name = QFileInfo(path).fileName();
-        const int frames = std::max(1, animated.value->animation.frameCount);
-        const double fps = animated.value->fps;
+        const int frames = std::max(1, animated->animation.frameCount);
+        const double fps = animated->fps;
         if (asNewProject) {
-            model::ProjectData data = model::newAnimatedProject(std::move(*animated.value), name);
+            model::ProjectData data = model::newAnimatedProject(std::move(*animated), name);
             data.look.style = Preferences::load().newProjectStyle; // Edit > Preferences
             m_document->reset(std::move(data));
         } else {
             try {
-                m_document->animation().setAnimatedBase(std::move(*animated.value), name);
+                m_document->animation().setAnimatedBase(std::move(*animated), name);
             } catch (const model::IoError& e) {
                 showError(e.message());
                 return false;
@@ -425,14 +426,11 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
             tr("Loaded %1: an animated base, %n frame(s) at %2 fps", nullptr, frames).arg(name).arg(fps), 8000);
         return true;
     }
-    auto outcome = runWithProgress<model::MeshImport>(
-        this, tr("Reading %1…").arg(QFileInfo(path).fileName()), [path] { return model::importMesh(path); });
-    if (!outcome.value) {
-        if (!outcome.error.isEmpty())
-            showError(outcome.error);
+    auto outcome = runWithProgress<model::MeshImport>(this, tr("Reading %1…").arg(QFileInfo(path).fileName()),
+        shownError(), [path] { return model::importMesh(path); });
+    if (!outcome)
         return false;
-    }
-    auto mesh = std::make_shared<const algo::TriMesh>(std::move(outcome.value->mesh));
+    auto mesh = std::make_shared<const algo::TriMesh>(std::move(outcome->mesh));
     if (asNewProject) {
         model::ProjectData data = model::newProject(std::move(mesh), QFileInfo(path).fileName());
         data.look.style = Preferences::load().newProjectStyle; // Edit > Preferences
@@ -445,24 +443,36 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
             return false;
         }
     }
-    showWarnings(path, outcome.value->warnings);
-    if (outcome.value->warnings.isEmpty())
+    showWarnings(path, outcome->warnings);
+    if (outcome->warnings.isEmpty())
         statusBar()->showMessage(tr("Loaded %1").arg(QFileInfo(path).fileName()), 5000);
     return true;
 }
 
 bool MainWindow::importDrawing(const QString& path)
 {
-    auto outcome = runWithProgress<model::Drawing>(
-        this, tr("Reading %1…").arg(QFileInfo(path).fileName()), [path] { return model::importDrawing(path); });
-    if (!outcome.value) {
-        if (!outcome.error.isEmpty())
-            showError(outcome.error);
+    auto outcome = runWithProgress<model::Drawing>(this, tr("Reading %1…").arg(QFileInfo(path).fileName()),
+        shownError(), [path] { return model::importDrawing(path); });
+    if (!outcome)
         return false;
-    }
-    const auto id = m_document->drawings().addDrawing(std::move(*outcome.value));
+    const auto id = m_document->drawings().addDrawing(std::move(*outcome));
     m_scene->select({views::ScenePanel::ItemKind::Drawing, id});
     statusBar()->showMessage(tr("Added drawing %1").arg(QFileInfo(path).fileName()), 5000);
+    return true;
+}
+
+bool MainWindow::importKeyDeformation(model::ObjectId key, const QString& path)
+{
+    auto outcome = runWithProgress<model::MeshImport>(this, tr("Reading %1…").arg(QFileInfo(path).fileName()),
+        shownError(), [path] { return model::importMesh(path); });
+    if (!outcome)
+        return false;
+    try {
+        showWarnings(path, m_document->keys().importKeyDeformation(key, *outcome, path));
+    } catch (const model::IoError& e) {
+        showError(e.message());
+        return false;
+    }
     return true;
 }
 
@@ -541,6 +551,13 @@ void MainWindow::importMeshDialog()
     const QString path = QFileDialog::getOpenFileName(this, tr("Import Mesh"), {}, model::meshFileFilter());
     if (!path.isEmpty())
         importMesh(path, !m_document->hasMesh());
+}
+
+void MainWindow::importKeyDeformationDialog(model::ObjectId key)
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import Key Deformation"), {}, model::meshFileFilter());
+    if (!path.isEmpty())
+        importKeyDeformation(key, path);
 }
 
 void MainWindow::importDrawingDialog()

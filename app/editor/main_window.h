@@ -8,6 +8,8 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <functional>
+
 class QAction;
 class QLabel;
 class QMenu;
@@ -55,6 +57,10 @@ public:
     bool saveScreenshot(const QString& path);
     bool save();
     bool saveAs(const QString& path = {});
+    /// Reads a mesh as a job (JobRunner, as every import) and makes it a key's deformation at
+    /// frame 0 (one undo step); Properties > Import Deformation asks for the file. Errors are
+    /// shown (interactive) or logged (batch); returns success.
+    bool importKeyDeformation(model::ObjectId key, const QString& path);
 
 public slots:
     /// Offers the recovery files of crashed sessions (interactive mode only).
@@ -77,6 +83,8 @@ private:
     /// Appends to the Log dock; warnings and errors also go to the process log (stderr).
     void log(LogLevel level, const QString& message);
     void showError(const QString& message);
+    /// showError as a function, for the file jobs.
+    [[nodiscard]] std::function<void(const QString&)> shownError();
     void showWarnings(const QString& file, const QStringList& warnings);
     bool maybeSave();
     bool openProject(const QString& path);
@@ -86,6 +94,7 @@ private:
     void openDialog();
     void importMeshDialog();
     void importDrawingDialog();
+    void importKeyDeformationDialog(model::ObjectId key);
     void updateStatistics();
     void processDropQueue();
     /// Optimise Light for Stereo through the viewport's camera at the Depth tab's analysis size.

@@ -5,9 +5,11 @@
 #include "ui_test_support.h"
 #include "window_test_support.h"
 
+#include "editor/jobs/job_runner.h"
 #include "editor/main_window.h"
 #include "editor/recovery_manager.h"
 
+#include "celform/model/io/mesh_io.h"
 #include "celform/model/io/project_file.h"
 #include "celform/views/panels/look_panel.h"
 #include "celform/views/panels/scene_panel.h"
@@ -23,6 +25,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QTreeWidget>
 
 using namespace celform;
@@ -151,6 +154,39 @@ private slots:
         QTRY_VERIFY(window.document()->hasMesh());
         QTRY_COMPARE(window.document()->data().drawings.size(), std::size_t(1));
         QCOMPARE(window.document()->data().baseMesh->vertexCount(), Eigen::Index(1839));
+    }
+
+    // Properties > Import Deformation reads the mesh as a job of the window's JobRunner, as every
+    // import, then makes it the key's deformation in one undo step.
+    void keyDeformationImportIsAJob()
+    {
+        QTemporaryDir dir;
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(window.openFile(test::sampleProject()));
+        model::Document& doc = *window.document();
+        const model::ObjectId id = doc.keys().createKey(QStringLiteral("imported"), window.viewport()->camera());
+        algo::TriMesh shape = *doc.data().baseMesh;
+        shape.vertices = doc.data().keyShape(*doc.data().key(id), 0);
+        shape.vertices(0, 1) += 0.25f;
+        const QString path = dir.filePath(QStringLiteral("deformed.obj"));
+        model::exportMesh(shape, path);
+        bool ranAsJob = false;
+        QTimer::singleShot(0, &window, [&] { ranAsJob = window.findChild<app::JobRunner*>() != nullptr; });
+        const int steps = doc.undoStack()->count();
+        QVERIFY(window.importKeyDeformation(id, path));
+        QVERIFY(ranAsJob);
+        QCOMPARE(doc.undoStack()->count(), steps + 1);
+        QVERIFY((doc.data().keyShape(*doc.data().key(id), 0).row(0) - shape.vertices.row(0)).norm() < 1e-4f);
+        // A mesh with other vertices is refused: an error, nothing changed.
+        const model::ProjectData before = doc.data();
+        algo::TriMesh small;
+        small.vertices = shape.vertices.topRows(3);
+        small.faces.resize(1, 3);
+        small.faces << 0, 1, 2;
+        const QString bad = dir.filePath(QStringLiteral("small.obj"));
+        model::exportMesh(small, bad);
+        QVERIFY(!window.importKeyDeformation(id, bad));
+        QVERIFY(doc.data() == before);
     }
 
     void badFileLeavesDocumentAlone()

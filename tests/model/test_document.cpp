@@ -1,11 +1,15 @@
 // Document commands: every edit applies, undoes to the exact previous data, and redoes.
+#include "test_meshes.h"
 #include "test_support.h"
 
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/document/face_set_command.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
+
+#include <numeric>
 
 using namespace celform;
 using namespace celform::model;
@@ -245,16 +249,16 @@ private slots:
         // Painting dabs: the drag's step holds the net change; a drag that takes back what it
         // added leaves no step, and a drag that adds and takes undoes to the set as it was.
         const int paintStart = m_doc.undoStack()->index();
-        Gesture g3 = m_doc.beginGesture();
-        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, false, g3);
-        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, true, g3);
-        g3.end();
+        FaceSetStroke s3 = m_doc.faceSets().beginFaceSetStroke(QStringLiteral("p"));
+        m_doc.faceSets().applyFaceSetStroke(s3, {0, 2}, false);
+        m_doc.faceSets().applyFaceSetStroke(s3, {0, 2}, true);
+        m_doc.faceSets().endFaceSetStroke(s3);
         QCOMPARE(m_doc.undoStack()->index(), paintStart);
         QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{1, 3}));
-        Gesture g4 = m_doc.beginGesture();
-        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {0, 2}, false, g4);
-        m_doc.faceSets().paintFaceSet(QStringLiteral("p"), {1, 2}, true, g4);
-        g4.end();
+        FaceSetStroke s4 = m_doc.faceSets().beginFaceSetStroke(QStringLiteral("p"));
+        m_doc.faceSets().applyFaceSetStroke(s4, {0, 2}, false);
+        m_doc.faceSets().applyFaceSetStroke(s4, {1, 2}, true);
+        m_doc.faceSets().endFaceSetStroke(s4);
         QCOMPARE(m_doc.undoStack()->index(), paintStart + 1);
         QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces, (std::vector<std::int32_t>{0, 3}));
         m_doc.undoStack()->undo();
@@ -269,6 +273,103 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(
             EditRefused, m_doc.faceSets().setFaceSet(QStringLiteral(" "), {0}, QStringLiteral("t")));
         QVERIFY(m_doc.data() == before);
+    }
+
+    // A patch drag of several dabs is one undo step, and its command stores only the faces the
+    // drag added and took, not the set.
+    void faceSetStrokeIsOneSparseStep()
+    {
+        ProjectData data;
+        data.baseMesh = test::icosphere(3); // 1280 faces
+        m_doc.reset(std::move(data));
+        std::vector<std::int32_t> start(600);
+        std::iota(start.begin(), start.end(), 0);
+        m_doc.faceSets().setFaceSet(QStringLiteral("p"), start, QStringLiteral("t"));
+        const ProjectData before = m_doc.data();
+        const int index = m_doc.undoStack()->index();
+        FaceSetStroke stroke = m_doc.faceSets().beginFaceSetStroke(QStringLiteral("p"));
+        QVERIFY(stroke.active());
+        std::size_t changed = 0;
+        for (int dab = 0; dab < 6; ++dab) { // overlapping dabs, half on faces the set holds
+            std::vector<std::int32_t> faces;
+            for (int f = 590 + 5 * dab; f < 600 + 5 * dab; ++f)
+                faces.push_back(f);
+            changed += m_doc.faceSets().applyFaceSetStroke(stroke, faces, false);
+        }
+        changed += m_doc.faceSets().applyFaceSetStroke(stroke, {0, 1, 700}, true); // 700: not in it
+        m_doc.faceSets().endFaceSetStroke(stroke);
+        QVERIFY(!stroke.active());
+        QCOMPARE(changed, std::size_t(25 + 2));
+        QCOMPARE(m_doc.undoStack()->index(), index + 1);
+        const auto* command = dynamic_cast<const FaceSetCommand*>(m_doc.undoStack()->command(index));
+        QVERIFY(command);
+        std::vector<std::int32_t> added(25); // 600 .. 624
+        std::iota(added.begin(), added.end(), 600);
+        QCOMPARE(command->change().added, added);
+        QCOMPARE(command->change().removed, (std::vector<std::int32_t>{0, 1}));
+        QVERIFY(!command->change().created);
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("p"))->faces.size(), std::size_t(600 + 25 - 2));
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data() == before);
+        // A dab after the end is a step of its own no longer: the stroke is closed.
+        QCOMPARE(m_doc.faceSets().applyFaceSetStroke(stroke, {900}, false), std::size_t(0));
+        QCOMPARE(m_doc.undoStack()->index(), index);
+        // A stroke on a missing set makes it in the same step; an empty name is refused.
+        FaceSetStroke fresh = m_doc.faceSets().beginFaceSetStroke(QStringLiteral("new"));
+        m_doc.faceSets().applyFaceSetStroke(fresh, {5, 3}, false);
+        m_doc.faceSets().applyFaceSetStroke(fresh, {4}, false);
+        m_doc.faceSets().endFaceSetStroke(fresh);
+        QCOMPARE(m_doc.undoStack()->index(), index + 1);
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("new"))->faces, (std::vector<std::int32_t>{3, 4, 5}));
+        m_doc.undoStack()->undo();
+        QVERIFY(!m_doc.data().faceSet(QStringLiteral("new")));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, (void)m_doc.faceSets().beginFaceSetStroke(QStringLiteral(" ")));
+        FaceSetStroke bad = m_doc.faceSets().beginFaceSetStroke(QStringLiteral("p"));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, m_doc.faceSets().applyFaceSetStroke(bad, {1280}, false));
+        QCOMPARE(m_doc.undoStack()->index(), index);
+    }
+
+    // A highlight drag (moves, a rotation, a scaling) is one undo step; moves are offsets from
+    // the press, so the last one decides where the highlight ends.
+    void highlightDragIsOneStep()
+    {
+        HighlightTrack track;
+        track.name = QStringLiteral("spot");
+        track.setKey(0, algo::HighlightLayer{});
+        track.setKey(10, algo::HighlightLayer{});
+        const ObjectId id = m_doc.highlights().addHighlightLayers({track}, QStringLiteral("Add")).front();
+        const ProjectData before = m_doc.data();
+        const int index = m_doc.undoStack()->index();
+        using M = HighlightMotion;
+        HighlightDrag drag = m_doc.highlights().beginHighlightDrag(id, 10);
+        m_doc.highlights().applyHighlightDrag(drag, {M::Move, 0.1, 0.2});
+        m_doc.highlights().applyHighlightDrag(drag, {M::Move, 0.3, -0.1});
+        m_doc.highlights().applyHighlightDrag(drag, {M::Rotate, 30.0, 0.0});
+        m_doc.highlights().applyHighlightDrag(drag, {M::Scale, 0.25, 0.0});
+        m_doc.highlights().applyHighlightDrag(drag, {M::Scale, 2.0, 0.0}); // kept at 1
+        m_doc.highlights().applyHighlightDrag(drag, {M::Move, 0.4, 0.1});
+        m_doc.highlights().endHighlightDrag(drag);
+        QCOMPARE(m_doc.undoStack()->index(), index + 1);
+        const HighlightTrack& t = *m_doc.data().highlight(id);
+        const Eigen::Vector2d moved = t.translationAt(10);
+        QVERIFY2((moved - Eigen::Vector2d(0.4, 0.1)).norm() < 1e-5,
+            qPrintable(QStringLiteral("%1, %2").arg(moved.x()).arg(moved.y())));
+        QCOMPARE(t.translationAt(0), Eigen::Vector2d(Eigen::Vector2d::Zero())); // only frame 10's key
+        for (const auto& k : t.keys) // every key has the operations, so that they interpolate
+            QCOMPARE(k.layer.shape.operations.size(), std::size_t(3));
+        const auto& ops = t.layerAt(10).shape.operations;
+        QCOMPARE(ops.back().type, algo::HighlightOperationType::DirectionalScaling);
+        QCOMPARE(ops.back().a, 1.0f);
+        m_doc.undoStack()->undo();
+        QVERIFY(m_doc.data() == before);
+        // A second drag is a second step; a missing layer is refused.
+        HighlightDrag again = m_doc.highlights().beginHighlightDrag(id, 0);
+        m_doc.highlights().applyHighlightDrag(again, {M::Rotate, 5.0, 0.0});
+        m_doc.highlights().endHighlightDrag(again);
+        m_doc.highlights().applyHighlightDrag(again, {M::Rotate, 5.0, 0.0}); // ended: nothing
+        QCOMPARE(m_doc.undoStack()->index(), index + 1);
+        QCOMPARE(m_doc.data().highlight(id)->layerAt(0).shape.operations.front().a, 5.0f);
+        QVERIFY_THROWS_EXCEPTION(EditRefused, (void)m_doc.highlights().beginHighlightDrag(987654, 0));
     }
 
     void renameAndRemoveFaceSetFollowLayers()

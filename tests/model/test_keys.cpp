@@ -185,7 +185,7 @@ private slots:
         deformed.vertices(4, 2) = 1.5f;
         const QString good = dir.filePath(QStringLiteral("deformed.obj"));
         exportMesh(deformed, good);
-        QVERIFY(m_doc.keys().importKeyDeformation(key, good).isEmpty());
+        QVERIFY(m_doc.keys().importKeyDeformation(key, importMesh(good), good).isEmpty());
         const SparseOffsets& offsets = m_doc.data().key(key)->offsetsByFrame.at(0);
         QCOMPARE(offsets.indices, std::vector<std::uint32_t>{4});
         QCOMPARE(offsets.deltas.front(), Eigen::Vector3f(0, 0, 0.5f));
@@ -198,7 +198,7 @@ private slots:
         exportMesh(small, bad);
         const ProjectData before = m_doc.data();
         try {
-            m_doc.keys().importKeyDeformation(key, bad);
+            m_doc.keys().importKeyDeformation(key, importMesh(bad), bad);
             QFAIL("a mesh with the wrong vertex count was accepted");
         } catch (const IoError& e) {
             QVERIFY(e.message().contains(QStringLiteral("small.obj")));

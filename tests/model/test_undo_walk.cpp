@@ -215,8 +215,7 @@ public:
         for (m_step = 0; m_step < m_steps; ++m_step)
             if (!step())
                 return false;
-        if (m_stroke)
-            m_doc.keys().endBrushStroke(*m_stroke);
+        endStrokes();
         m_gesture.end();
         return finish();
     }
@@ -540,7 +539,7 @@ private:
                 shape.vertices.row(v) += Eigen::RowVector3f(uniformF(r, -0.1, 0.1), 0.f, uniformF(r, -0.1, 0.1));
             const QString path = m_dir.filePath(QStringLiteral("deformation.ply"));
             exportMesh(shape, path);
-            d.keys().importKeyDeformation(id, path, frame);
+            d.keys().importKeyDeformation(id, importMesh(path), path, frame);
         });
         add("displaceKeyVertices", 8, Kind::Edit, [this, &d, &r](Rng& t) {
             const SparseOffsets step = randomOffsets(8);
@@ -559,10 +558,7 @@ private:
                 anyKey(t), anyFrame(t), indices, displacements, QStringLiteral("Displace"), m_gesture);
         });
         add("brushStroke", 8, Kind::Stroke, [this, &d, &r](Rng& t) {
-            if (m_stroke) {
-                d.keys().endBrushStroke(*m_stroke);
-                m_stroke.reset();
-            }
+            endStrokes();
             const ObjectId key = anyKey(t);
             const KeyViewpoint* k = d.data().key(key);
             const Camera camera = k && chance(r, 0.8) ? k->camera : randomCamera(r);
@@ -679,9 +675,19 @@ private:
         });
         add("removeHighlightOperation", 1, Kind::Edit,
             [this, &d, &r](Rng& t) { d.highlights().removeHighlightOperation(anyLayer(t), below(r, 4) - 1); });
-        add("nudgeHighlight", 6, Kind::Edit, [this, &d, &r](Rng& t) {
-            d.highlights().nudgeHighlight(anyLayer(t), anyKeyFrame(t), algo::HighlightOperationType(below(t, 5)),
-                uniform(r, -0.2, 0.2), uniform(r, -0.2, 0.2), m_gesture);
+        add("highlightDrag", 6, Kind::Stroke, [this, &d](Rng& t) {
+            endStrokes();
+            m_highlightDrag = d.highlights().beginHighlightDrag(anyLayer(t), anyKeyFrame(t));
+        });
+        add("highlightDragStep", 0, Kind::Stroke, [this, &d, &r](Rng&) {
+            const auto motion = HighlightMotion(below(r, 3));
+            const double scale = motion == HighlightMotion::Rotate ? 100.0 : 0.3;
+            d.highlights().applyHighlightDrag(
+                *m_highlightDrag, {motion, uniform(r, -scale, scale), uniform(r, -0.2, 0.2)});
+        });
+        add("highlightDragEnd", 0, Kind::Stroke, [this, &d](Rng&) {
+            d.highlights().endHighlightDrag(*m_highlightDrag);
+            m_highlightDrag.reset();
         });
         add("setHighlightPatch", 2, Kind::Edit, [this, &d, &r](Rng& t) {
             d.highlights().setHighlightPatch(anyLayer(t), chance(r, 0.2) ? QString() : anyFaceSet(t), m_gesture);
@@ -731,8 +737,16 @@ private:
             d.faceSets().setFaceSet(chance(t, 0.05) ? QStringLiteral(" ") : anyFaceSet(t), randomFaces(20),
                 QStringLiteral("Set Patch"), m_gesture);
         });
-        add("paintFaceSet", 5, Kind::Edit, [this, &d, &r, randomFaces](Rng& t) {
-            d.faceSets().paintFaceSet(anyFaceSet(t), randomFaces(12), chance(r, 0.3), m_gesture);
+        add("faceSetStroke", 5, Kind::Stroke, [this, &d](Rng& t) {
+            endStrokes();
+            m_faceSetStroke = d.faceSets().beginFaceSetStroke(chance(t, 0.03) ? QStringLiteral(" ") : anyFaceSet(t));
+        });
+        add("faceSetDab", 0, Kind::Stroke, [this, &d, &r, randomFaces](Rng&) {
+            d.faceSets().applyFaceSetStroke(*m_faceSetStroke, randomFaces(12), chance(r, 0.3));
+        });
+        add("faceSetStrokeEnd", 0, Kind::Stroke, [this, &d](Rng&) {
+            d.faceSets().endFaceSetStroke(*m_faceSetStroke);
+            m_faceSetStroke.reset();
         });
         add("removeFaceSet", 2, Kind::Edit, [this, &d](Rng& t) { d.faceSets().removeFaceSet(anyFaceSet(t)); });
         add("renameFaceSet", 2, Kind::Edit, [this, &d](Rng& t) {
@@ -792,6 +806,20 @@ private:
         });
     }
 
+    /// Ends the open brush stroke, patch stroke and highlight drag.
+    void endStrokes()
+    {
+        if (m_stroke)
+            m_doc.keys().endBrushStroke(*m_stroke);
+        if (m_faceSetStroke)
+            m_doc.faceSets().endFaceSetStroke(*m_faceSetStroke);
+        if (m_highlightDrag)
+            m_doc.highlights().endHighlightDrag(*m_highlightDrag);
+        m_stroke.reset();
+        m_faceSetStroke.reset();
+        m_highlightDrag.reset();
+    }
+
     const Operation& byName(const QString& name) const
     {
         for (const Operation& op : m_operations)
@@ -806,14 +834,25 @@ private:
         targetSeed = m_rng();
         if (m_lastWasUndo && chance(m_rng, 0.35))
             return byName(chance(m_rng, 0.8) ? QStringLiteral("redo") : QStringLiteral("redoMany"));
-        if (m_stroke) {
-            // While the brush is down: mostly its steps, now and then anything else in between,
-            // a save among them (the clean state in the middle of a stroke).
+        const QLatin1String open = m_stroke ? QLatin1String("brush")
+            : m_faceSetStroke               ? QLatin1String("faceSet")
+            : m_highlightDrag               ? QLatin1String("highlightDrag")
+                                            : QLatin1String();
+        if (!open.isEmpty()) {
+            // While a brush (or the patch brush, or a highlight drag) is down: mostly its steps,
+            // now and then anything else in between, a save among them (the clean state in the
+            // middle of a stroke).
+            static const std::map<QString, std::pair<QString, QString>> steps{
+                {QStringLiteral("brush"), {QStringLiteral("brushStep"), QStringLiteral("brushEnd")}},
+                {QStringLiteral("faceSet"), {QStringLiteral("faceSetDab"), QStringLiteral("faceSetStrokeEnd")}},
+                {QStringLiteral("highlightDrag"),
+                    {QStringLiteral("highlightDragStep"), QStringLiteral("highlightDragEnd")}}};
+            const auto& [step, end] = steps.at(QString(open));
             const double x = unit(m_rng);
             if (x < 0.6)
-                return byName(QStringLiteral("brushStep"));
+                return byName(step);
             if (x < 0.75)
-                return byName(QStringLiteral("brushEnd"));
+                return byName(end);
             if (x < 0.77)
                 return byName(QStringLiteral("saveAs"));
         } else if (m_gesture.isOpen()) {
@@ -1056,6 +1095,8 @@ private:
     ProjectData m_saved; ///< what the clean state holds
     std::vector<ProjectData> m_states; ///< the data at each undo index
     std::optional<BrushStroke> m_stroke;
+    std::optional<FaceSetStroke> m_faceSetStroke;
+    std::optional<HighlightDrag> m_highlightDrag;
     Gesture m_gesture; ///< the open gesture (slider drag, wheel burst) the edits are given
     const Operation* m_lastEdit = nullptr;
     std::uint64_t m_lastTarget = 0;

@@ -26,6 +26,9 @@ public:
     [[nodiscard]] static Change changeTo(
         const ProjectData& data, const std::string& name, const std::vector<std::int32_t>& faces);
 
+    /// What the step stores: the faces added and taken, not the set.
+    [[nodiscard]] const Change& change() const { return m_change; }
+
     int id() const override { return m_gesture ? kFaceSetMergeId : -1; }
     bool mergeWith(const QUndoCommand* other) override;
 

@@ -32,26 +32,53 @@ void FaceSetEdits::setFaceSet(
     push(new FaceSetCommand(m_doc, undoText, wanted, std::move(change), gesture));
 }
 
-void FaceSetEdits::paintFaceSet(
-    const QString& name, const std::vector<std::int32_t>& faces, bool subtract, GestureId gesture)
+// --- the patch brush ----------------------------------------------------------------------------
+
+FaceSetStroke FaceSetEdits::beginFaceSetStroke(const QString& target)
 {
-    const algo::FaceSet* set = data().faceSet(name);
-    std::vector<std::int32_t> dab = faces;
-    std::sort(dab.begin(), dab.end());
-    dab.erase(std::unique(dab.begin(), dab.end()), dab.end());
+    refuseFaces(target, {});
+    FaceSetStroke stroke;
+    stroke.target = target;
+    stroke.name = target.toStdString();
+    stroke.undoText = tr("Paint Patch “%1”").arg(target);
+    stroke.gesture = m_doc->beginGesture();
+    return stroke;
+}
+
+std::size_t FaceSetEdits::applyFaceSetStroke(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces, bool erase)
+{
+    if (!stroke.active() || !data().baseMesh)
+        return 0;
+    stroke.dab.assign(faces.begin(), faces.end());
+    std::sort(stroke.dab.begin(), stroke.dab.end());
+    stroke.dab.erase(std::unique(stroke.dab.begin(), stroke.dab.end()), stroke.dab.end());
     // Only what the dab changes: the faces it adds that the set lacks, or takes that it holds.
-    const std::vector<std::int32_t> none;
+    const auto& sets = data().faceSets;
+    const auto it
+        = std::find_if(sets.begin(), sets.end(), [&](const algo::FaceSet& s) { return s.name == stroke.name; });
+    const algo::FaceSet* set = it == sets.end() ? nullptr : &*it;
+    static const std::vector<std::int32_t> none;
     const std::vector<std::int32_t>& before = set ? set->faces : none;
+    stroke.changed.clear();
+    if (erase)
+        std::set_intersection(
+            stroke.dab.begin(), stroke.dab.end(), before.begin(), before.end(), std::back_inserter(stroke.changed));
+    else
+        std::set_difference(
+            stroke.dab.begin(), stroke.dab.end(), before.begin(), before.end(), std::back_inserter(stroke.changed));
+    if (set && stroke.changed.empty())
+        return 0;
     FaceSetCommand::Change change;
     change.created = set == nullptr;
-    if (subtract)
-        std::set_intersection(dab.begin(), dab.end(), before.begin(), before.end(), std::back_inserter(change.removed));
-    else
-        std::set_difference(dab.begin(), dab.end(), before.begin(), before.end(), std::back_inserter(change.added));
-    if (set && change.added.empty() && change.removed.empty())
-        return;
-    refuseFaces(name, change.added);
-    push(new FaceSetCommand(m_doc, tr("Paint Patch “%1”").arg(name), name.toStdString(), std::move(change), gesture));
+    (erase ? change.removed : change.added) = stroke.changed; // the command keeps its own copy
+    refuseFaces(stroke.target, change.added);
+    push(new FaceSetCommand(m_doc, stroke.undoText, stroke.name, std::move(change), stroke.gesture));
+    return stroke.changed.size();
+}
+
+void FaceSetEdits::endFaceSetStroke(FaceSetStroke& stroke)
+{
+    stroke.gesture.end();
 }
 
 void FaceSetEdits::refuseFaces(const QString& name, const std::vector<std::int32_t>& faces) const

@@ -4,10 +4,12 @@
 
 #include "celform/model/data/object_id.h"
 #include "celform/model/document/document_facade.h"
+#include "celform/model/document/face_set_stroke.h"
 #include "celform/model/document/gesture.h"
 
 #include <QString>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -20,11 +22,16 @@ public:
     /// a face out of range.
     void setFaceSet(
         const QString& name, std::vector<std::int32_t> faces, const QString& undoText, GestureId gesture = {});
-    /// Adds faces to (subtract: takes them from) a face set, creating it when missing; the dabs
-    /// of one paint drag (given its gesture) are one undo step, which stores only the faces each
-    /// dab added or took.
-    void paintFaceSet(
-        const QString& name, const std::vector<std::int32_t>& faces, bool subtract, GestureId gesture = {});
+    // --- the patch brush -------------------------------------------------------------------------
+    /// Starts painting the face set named target (made by the first dab when missing); the stroke
+    /// holds its own gesture, so all its dabs are one undo step, which stores only the faces the
+    /// drag added and took. Throws EditRefused without a base model or for an empty name.
+    [[nodiscard]] FaceSetStroke beginFaceSetStroke(const QString& target);
+    /// One dab: adds faces to the set (erase: takes them from it). Returns the faces changed.
+    /// Throws EditRefused for a face out of range (nothing changed then).
+    std::size_t applyFaceSetStroke(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces, bool erase);
+    void endFaceSetStroke(FaceSetStroke& stroke);
+
     /// Removes a face set; highlight layers on it go back to all faces in the same undo step.
     void removeFaceSet(const QString& name);
     /// Renames a face set and the highlight layers' references to it (one undo step). Throws

@@ -244,25 +244,52 @@ void HighlightEdits::removeHighlightKey(ObjectId id, double frame)
     setHighlightKeys(id, std::move(keys), tr("Delete Highlight Key"));
 }
 
-void HighlightEdits::nudgeHighlight(
-    ObjectId id, double frame, algo::HighlightOperationType type, double a, double b, GestureId gesture)
+// --- direct manipulation in the viewport ----------------------------------------------------------
+
+HighlightDrag HighlightEdits::beginHighlightDrag(ObjectId id, double frame)
+{
+    const HighlightTrack& track = highlightOrThrow(id);
+    if (!std::isfinite(frame))
+        throw EditRefused(tr("A highlight is keyed at a finite frame."));
+    HighlightDrag drag;
+    drag.layer = id;
+    drag.frame = frame;
+    drag.startTranslation = track.translationAt(frame);
+    drag.gesture = m_doc->beginGesture();
+    return drag;
+}
+
+void HighlightEdits::applyHighlightDrag(HighlightDrag& drag, const HighlightDragStep& step)
 {
     using T = algo::HighlightOperationType;
-    const HighlightTrack& track = highlightOrThrow(id);
-    if (type != T::Translation && type != T::Rotation && type != T::DirectionalScaling)
-        return;
+    const HighlightTrack* found = data().highlight(drag.layer);
+    if (!drag.active() || !found || !std::isfinite(step.a) || !std::isfinite(step.b))
+        return; // ended, or the layer went (an undo during the drag)
+    const HighlightTrack& track = *found;
+    const T type = step.motion == HighlightMotion::Rotate ? T::Rotation
+        : step.motion == HighlightMotion::Scale           ? T::DirectionalScaling
+                                                          : T::Translation;
+    double a = step.a, b = step.b;
+    if (step.motion == HighlightMotion::Move) {
+        // The translation the step wants, less the one the layer has now.
+        const Eigen::Vector2d now = track.translationAt(drag.frame);
+        a = drag.startTranslation.x() + step.a - now.x();
+        b = drag.startTranslation.y() + step.b - now.y();
+    }
     auto firstOf = [type](const std::vector<algo::HighlightOperation>& ops) {
         return std::size_t(
             std::find_if(ops.begin(), ops.end(), [type](const auto& op) { return op.type == type; }) - ops.begin());
     };
-    HighlightTrack edited = track;
-    for (auto& k : edited.keys) {
+    drag.keys = track.keys;
+    for (auto& k : drag.keys) {
         auto& ops = k.layer.shape.operations;
         if (firstOf(ops) == ops.size())
             ops.insert(type == T::DirectionalScaling ? ops.end() : ops.begin(), neutralHighlightOperation(type));
     }
-    algo::HighlightLayer layer = edited.layerAt(frame);
-    auto& ops = layer.shape.operations;
+    HighlightTrack edited;
+    edited.keys = std::move(drag.keys);
+    algo::HighlightLayer atFrame = edited.layerAt(drag.frame);
+    auto& ops = atFrame.shape.operations;
     const std::size_t index = firstOf(ops);
     if (index == ops.size())
         return; // cannot happen: every key has one now
@@ -284,20 +311,18 @@ void HighlightEdits::nudgeHighlight(
     }
     if (!std::isfinite(op.a) || !std::isfinite(op.b))
         return;
-    edited.setKey(frame, layer);
-    setHighlightKeys(id, std::move(edited.keys),
+    edited.setKey(drag.frame, atFrame);
+    drag.keys = std::move(edited.keys);
+    setHighlightKeys(drag.layer, drag.keys,
         type == T::Rotation                 ? tr("Rotate Highlight")
             : type == T::DirectionalScaling ? tr("Scale Highlight")
                                             : tr("Move Highlight"),
-        gesture);
+        drag.gesture);
 }
 
-void HighlightEdits::setHighlightTranslation(ObjectId id, double frame, double alpha, double beta, GestureId gesture)
+void HighlightEdits::endHighlightDrag(HighlightDrag& drag)
 {
-    const Eigen::Vector2d now = highlightOrThrow(id).translationAt(frame);
-    if (!std::isfinite(alpha) || !std::isfinite(beta))
-        return;
-    nudgeHighlight(id, frame, algo::HighlightOperationType::Translation, alpha - now.x(), beta - now.y(), gesture);
+    drag.gesture.end();
 }
 
 void HighlightEdits::setHighlightPatch(ObjectId id, const QString& patch, GestureId gesture)

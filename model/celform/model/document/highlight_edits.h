@@ -7,6 +7,7 @@
 #include "celform/model/data/project_data.h"
 #include "celform/model/document/document_facade.h"
 #include "celform/model/document/gesture.h"
+#include "celform/model/document/highlight_drag.h"
 #include "celform/model/document/highlight_presets.h"
 
 #include <QString>
@@ -46,17 +47,15 @@ public:
     void removeHighlightOperation(ObjectId id, int index);
     /// Removes the key at frame; a layer keeps at least one key (no change then).
     void removeHighlightKey(ObjectId id, double frame);
-    /// Direct manipulation of a highlight at frame: Translation moves it by (a, b) along the
-    /// layer's du and dv as they are before its operations (rotations earlier in the list turn
-    /// the frame; they are undone here), Rotation turns it by a degrees, DirectionalScaling adds a
-    /// to delta (clamped to [0, 1]). A layer without an operation of that type gets one in every
-    /// key first (translation and rotation at the front, scaling at the end), so its keys keep
-    /// interpolating. Steps given one gesture (a drag) are one undo step.
-    void nudgeHighlight(
-        ObjectId id, double frame, algo::HighlightOperationType type, double a, double b = 0.0, GestureId gesture = {});
-    /// Moves a highlight at frame so that its translation along the unturned du and dv is
-    /// (alpha, beta) (HighlightTrack::translationAt); the "Move Highlight" step of a drag.
-    void setHighlightTranslation(ObjectId id, double frame, double alpha, double beta, GestureId gesture = {});
+    // --- direct manipulation in the viewport ------------------------------------------------------
+    /// Starts a drag of a layer's highlight at frame (keyed there); the drag holds its own gesture,
+    /// so all its steps are one undo step. Throws EditRefused when the layer does not exist.
+    [[nodiscard]] HighlightDrag beginHighlightDrag(ObjectId id, double frame);
+    /// One step (highlight_drag.h: move, rotate, scale). A layer without an operation of the
+    /// step's type gets one in every key first (translation and rotation at the front, scaling at
+    /// the end), so its keys keep interpolating. Nothing once ended or when the layer is gone.
+    void applyHighlightDrag(HighlightDrag& drag, const HighlightDragStep& step);
+    void endHighlightDrag(HighlightDrag& drag);
     void setHighlightPatch(ObjectId id, const QString& patch, GestureId gesture = {});
     void setHighlightGuide(ObjectId id, const Eigen::Vector3f& guide, GestureId gesture = {});
     void setHighlightSmoothing(ObjectId id, int rounds, GestureId gesture = {});

@@ -217,12 +217,11 @@ void KeyEdits::setKeyDeformation(ObjectId id, int frame, SparseOffsets deformati
     push(new KeyDeformationCommand(m_doc, undoText, id, frame, std::move(change), {}));
 }
 
-QStringList KeyEdits::importKeyDeformation(ObjectId id, const QString& meshPath, int frame)
+QStringList KeyEdits::importKeyDeformation(ObjectId id, const MeshImport& imported, const QString& meshPath, int frame)
 {
     const KeyViewpoint* key = data().key(id);
     if (!key || !data().baseMesh)
         return {};
-    MeshImport imported = importMesh(meshPath);
     const auto& base = *data().baseMesh;
     if (imported.mesh.vertexCount() != base.vertexCount())
         throw IoError(meshPath,

@@ -16,6 +16,8 @@
 
 namespace celform::model {
 
+struct MeshImport;
+
 class KeyEdits : public DocumentFacade {
 public:
     /// Adds a key as given, but for links to drawings the project does not hold. Throws
@@ -46,10 +48,11 @@ public:
     // --- deformations --------------------------------------------------------------------------
     /// Replaces a key's deformation at a frame (one undo step).
     void setKeyDeformation(ObjectId id, int frame, SparseOffsets deformation, const QString& undoText);
-    /// Reads a mesh with the base model's vertex count and order and makes its difference from
-    /// the base the key's deformation at frame. Throws IoError (unreadable, vertex count
-    /// mismatch). Returns import warnings.
-    QStringList importKeyDeformation(ObjectId id, const QString& meshPath, int frame = 0);
+    /// Makes the difference of a mesh with the base model's vertex count and order from the base
+    /// the key's deformation at frame (one undo step). The mesh is read before, outside the
+    /// document (model::importMesh; the editor reads it as a job); meshPath names it in errors.
+    /// Throws IoError (vertex count mismatch). Returns warnings.
+    QStringList importKeyDeformation(ObjectId id, const MeshImport& imported, const QString& meshPath, int frame = 0);
     /// Adds displacements (#indices by 3, indices ascending) to a key's deformation at a frame.
     /// At a frame without a stored deformation the stored one starts from the interpolated one
     /// there (what the artist sees), so the edit adds to it. Steps given one gesture on the same

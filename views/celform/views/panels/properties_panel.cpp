@@ -7,7 +7,6 @@
 
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/data/io_error.h"
-#include "celform/model/io/mesh_io.h"
 #include "celform/views/panels/gesture_tracker.h"
 #include "celform/views/panels/thumbnail.h"
 #include "celform/views/overlays/drawing_overlay.h"
@@ -18,7 +17,6 @@
 #include <QPointer>
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -473,17 +471,7 @@ void PropertiesPanel::importDeformation()
 {
     if (m_selection.kind != ScenePanel::ItemKind::Key)
         return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import Key Deformation"), {}, model::meshFileFilter());
-    if (path.isEmpty())
-        return;
-    try {
-        const QStringList warnings = m_document->keys().importKeyDeformation(m_selection.id, path);
-        for (const QString& w : warnings)
-            emit message(w);
-    } catch (const model::IoError& e) {
-        emit message(e.message());
-        QMessageBox::warning(this, tr("Import Deformation"), e.message());
-    }
+    emit importDeformationRequested(m_selection.id); // the window reads the file as a job
 }
 
 void PropertiesPanel::refreshMatching()

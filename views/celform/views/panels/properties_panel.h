@@ -65,6 +65,9 @@ signals:
     void keyCreated(celform::model::ObjectId key);
     /// A message for the status bar (refused edits, hints).
     void message(const QString& text);
+    /// Import Deformation for a key: the window asks for the mesh, reads it as a job (JobRunner)
+    /// and makes it the key's deformation.
+    void importDeformationRequested(celform::model::ObjectId key);
     // The brush controls: the brushes' shared radius, and the falloff brush's own settings.
     void brushRadiusEdited(double radius);
     void brushPixelRadiusEdited(double pixels);

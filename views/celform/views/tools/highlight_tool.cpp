@@ -70,9 +70,14 @@ bool HighlightTool::press(const ToolEvent& event)
     const model::ObjectId target = m_target;
     if (!document || !document->data().highlight(target))
         return false;
-    openGesture();
-    const model::HighlightTrack& track = *document->data().highlight(target);
     const int frame = document->currentFrame();
+    try {
+        m_drag = document->highlights().beginHighlightDrag(target, frame);
+    } catch (const model::EditRefused& e) {
+        emit message(e.message());
+        return true;
+    }
+    const model::HighlightTrack& track = *document->data().highlight(target);
     // The layer's geometry as the renderer resolves it (UV frames, or the guide over the patch;
     // smoothed normals): fixed for the drag, the shape does not change under it.
     m_layer = {};
@@ -82,9 +87,8 @@ bool HighlightTool::press(const ToolEvent& event)
             m_layer = std::move(h);
             break;
         }
-    m_grabOffset.reset();
-    if (const auto centring = centringTranslation(event.position))
-        m_grabOffset = track.translationAt(frame) - *centring;
+    // The grabbed point: later centring translations minus this one move the highlight.
+    m_pressCentring = centringTranslation(event.position);
     // Rotation and scaling: a fixed rate per pixel.
     return true;
 }
@@ -92,28 +96,33 @@ bool HighlightTool::press(const ToolEvent& event)
 void HighlightTool::move(const ToolEvent& event)
 {
     model::Document* document = m_viewport->document();
-    const model::ObjectId target = m_target;
-    if (!document || !inGesture() || !document->data().highlight(target))
+    if (!document || !m_drag.active())
         return;
-    using T = algo::HighlightOperationType;
+    using M = model::HighlightMotion;
     const QPointF d = event.delta;
     const bool rotate = event.modifiers & Qt::ShiftModifier, scale = event.modifiers & Qt::ControlModifier;
-    const int frame = document->currentFrame();
     try {
         if (rotate) {
-            document->highlights().nudgeHighlight(target, frame, T::Rotation, d.x() * 0.5, 0.0, gesture());
+            document->highlights().applyHighlightDrag(m_drag, {M::Rotate, d.x() * 0.5, 0.0});
         } else if (scale) {
-            document->highlights().nudgeHighlight(target, frame, T::DirectionalScaling, d.x() * 0.005, 0.0, gesture());
-        } else if (m_grabOffset) {
+            document->highlights().applyHighlightDrag(m_drag, {M::Scale, d.x() * 0.005, 0.0});
+        } else if (m_pressCentring) {
             // The grabbed point follows the cursor; off the model (or the patch) it stays put.
             if (const auto centring = centringTranslation(event.position)) {
-                const Eigen::Vector2d wanted = *centring + *m_grabOffset;
-                document->highlights().setHighlightTranslation(target, frame, wanted.x(), wanted.y(), gesture());
+                const Eigen::Vector2d offset = *centring - *m_pressCentring;
+                document->highlights().applyHighlightDrag(m_drag, {M::Move, offset.x(), offset.y()});
             }
         }
     } catch (const model::EditRefused& e) {
         emit message(e.message());
     }
+}
+
+void HighlightTool::endDrag()
+{
+    if (model::Document* document = m_viewport->document())
+        document->highlights().endHighlightDrag(m_drag);
+    m_drag = {};
 }
 
 } // namespace celform::views

@@ -5,6 +5,7 @@
 
 #include "celform/algorithms/render.h"
 #include "celform/model/data/object_id.h"
+#include "celform/model/document/highlight_drag.h"
 #include "celform/views/tools/viewport_tool.h"
 
 #include <Eigen/Core>
@@ -28,11 +29,13 @@ private:
     /// The translation (along the unturned du, dv) that centres the highlight on the surface
     /// point under a widget position; nothing off the model, off the patch or in shadow.
     std::optional<Eigen::Vector2d> centringTranslation(const QPointF& position);
+    void endDrag() override;
 
     model::ObjectId m_target = 0;
     algo::RenderHighlight m_layer; ///< the target layer's geometry at the press
-    /// translation at the press minus the one centring the highlight on the press point
-    std::optional<Eigen::Vector2d> m_grabOffset;
+    model::HighlightDrag m_drag; ///< the drag's, open from press to release
+    /// the translation centring the highlight on the press point (none: off the model)
+    std::optional<Eigen::Vector2d> m_pressCentring;
 };
 
 } // namespace celform::views

@@ -1,4 +1,4 @@
-// Dabs of the patch brush go to Document::paintFaceSet inside one gesture.
+// Dabs of the patch brush go to the document as one face-set stroke (FaceSetEdits::applyFaceSetStroke).
 #include "celform/views/tools/patch_tool.h"
 
 #include "celform/model/document/document.h"
@@ -45,7 +45,16 @@ bool PatchTool::press(const ToolEvent& event)
     model::Document* document = m_viewport->document();
     if (!document || !document->hasMesh())
         return false;
-    openGesture();
+    if (m_target.trimmed().isEmpty()) {
+        emit message(Patch::tr("Choose or create a patch in the Highlights dock first."));
+        return true;
+    }
+    try {
+        m_stroke = document->faceSets().beginFaceSetStroke(m_target);
+    } catch (const model::EditRefused& e) {
+        emit message(e.message());
+        return true;
+    }
     paint(event);
     return true;
 }
@@ -55,31 +64,35 @@ void PatchTool::move(const ToolEvent& event)
     paint(event);
 }
 
+void PatchTool::endDrag()
+{
+    if (model::Document* document = m_viewport->document())
+        document->faceSets().endFaceSetStroke(m_stroke);
+    m_stroke = {};
+}
+
 void PatchTool::paint(const ToolEvent& event)
 {
     model::Document* document = m_viewport->document();
-    if (!document || !inGesture())
+    if (!document || !m_stroke.active())
         return;
-    const QString& target = m_target;
-    if (target.trimmed().isEmpty()) {
-        emit message(Patch::tr("Choose or create a patch in the Highlights dock first."));
-        return;
-    }
-    const std::vector<std::int32_t> dab = facesUnderBrush(event.position);
+    const std::vector<std::int32_t>& dab = facesUnderBrush(event.position);
     if (dab.empty())
         return;
     try {
-        document->faceSets().paintFaceSet(target, dab, event.modifiers & Qt::ControlModifier, gesture());
+        document->faceSets().applyFaceSetStroke(m_stroke, dab, event.modifiers & Qt::ControlModifier);
     } catch (const model::EditRefused& e) {
         emit message(e.message());
     }
 }
 
-std::vector<std::int32_t> PatchTool::facesUnderBrush(const QPointF& position)
+const std::vector<std::int32_t>& PatchTool::facesUnderBrush(const QPointF& position)
 {
+    std::vector<std::int32_t>& faces = m_faces;
+    faces.clear();
     const auto hit = m_viewport->pickSurface(position);
     if (!hit)
-        return {};
+        return faces;
     const algo::TriMesh& mesh = *m_viewport->document()->data().baseMesh;
     const algo::Positions& shape = m_viewport->displayedShape();
     const algo::VertexFaces& around = mesh.vertexFaces();
@@ -96,7 +109,7 @@ std::vector<std::int32_t> PatchTool::facesUnderBrush(const QPointF& position)
         const Eigen::Vector3f towardsEye = parallel ? Eigen::Vector3f(-forward) : Eigen::Vector3f(eye - a);
         return normal.dot(towardsEye) > 0.f;
     };
-    std::vector<std::int32_t> faces{std::int32_t(hit->first)};
+    faces.push_back(std::int32_t(hit->first));
     const Eigen::Vector3f centre = hit->second.cast<float>();
     const float r2 = float(m_size.radius() * m_size.radius());
     // Vertices within the radius: the picked face's corners grown over shared vertices, so the

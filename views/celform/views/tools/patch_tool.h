@@ -3,6 +3,7 @@
 // undo step per drag.
 #pragma once
 
+#include "celform/model/document/face_set_stroke.h"
 #include "celform/views/tools/viewport_tool.h"
 
 #include <QString>
@@ -31,20 +32,23 @@ public:
 
     /// Faces a paint dab at a widget position touches: the face under it and every face turned
     /// towards the camera around a vertex within the brush radius of the picked point, reached
-    /// over the surface from it. Empty when nothing is picked.
-    [[nodiscard]] std::vector<std::int32_t> facesUnderBrush(const QPointF& position);
+    /// over the surface from it, ascending. Empty when nothing is picked. Valid until the next
+    /// call (the tool's working memory).
+    [[nodiscard]] const std::vector<std::int32_t>& facesUnderBrush(const QPointF& position);
 
 signals:
     void targetChanged();
 
 private:
     void paint(const ToolEvent& event);
+    void endDrag() override;
 
     const BrushSize& m_size;
     QString m_target;
+    model::FaceSetStroke m_stroke; ///< the drag's, open from press to release
     // Working memory of facesUnderBrush(), sized once per mesh.
     std::vector<char> m_seen;
-    std::vector<std::int32_t> m_frontier, m_visited;
+    std::vector<std::int32_t> m_frontier, m_visited, m_faces;
 };
 
 } // namespace celform::views

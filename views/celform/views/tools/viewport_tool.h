@@ -43,11 +43,11 @@ public:
     /// Left-button press; true when the tool takes the drag (move and release follow).
     virtual bool press(const ToolEvent& event) = 0;
     virtual void move(const ToolEvent& /*event*/) { }
-    /// The drag ended: by default the tool's gesture ends (its edits form one undo step).
-    virtual void release(const ToolEvent& /*event*/) { closeGesture(); }
-    /// The drag ended without a release (tool change, a popup took the mouse): end the gesture,
-    /// keep what was done.
-    virtual void cancel() { closeGesture(); }
+    /// The drag ended: by default endDrag() (its edits form one undo step).
+    virtual void release(const ToolEvent& /*event*/) { endDrag(); }
+    /// The drag ended without a release (tool change, a popup took the mouse): by default
+    /// endDrag(), keeping what was done.
+    virtual void cancel() { endDrag(); }
     /// The viewport's camera moved (navigation, programmatic).
     virtual void cameraChanged() { }
     /// A navigation gesture (an orbit, pan, dolly or roll drag, a burst of wheel ticks) starts or
@@ -73,6 +73,9 @@ protected:
     bool openGesture();
     /// Ends the tool's gesture.
     void closeGesture();
+    /// Ends what the drag opened: by default the tool's gesture; a tool whose drag is a
+    /// document stroke ends the stroke.
+    virtual void endDrag() { closeGesture(); }
     [[nodiscard]] bool inGesture() const { return m_gesture.isOpen(); }
     /// The drag's gesture, for the edits that merge (none outside a drag).
     [[nodiscard]] model::GestureId gesture() const { return m_gesture.id(); }
