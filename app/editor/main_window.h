@@ -55,6 +55,8 @@ public:
     bool saveScreenshot(const QString& path);
     bool save();
     bool saveAs(const QString& path = {});
+    /// An error in the Log, the status bar and (interactive mode) a message box.
+    void showError(const QString& message);
 
 public slots:
     /// Offers the recovery files of crashed sessions (interactive mode only).
@@ -76,7 +78,6 @@ private:
     enum class LogLevel { Info, Warning, Error };
     /// Appends to the Log dock; warnings and errors also go to the process log (stderr).
     void log(LogLevel level, const QString& message);
-    void showError(const QString& message);
     void showWarnings(const QString& file, const QStringList& warnings);
     bool maybeSave();
     bool openProject(const QString& path);
