@@ -9,7 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFormLayout>
-#include <QHBoxLayout>
+#include <QVBoxLayout>
 #include <QLabel>
 #include <QLocale>
 #include <QToolButton>
@@ -33,7 +33,8 @@ FitGroup::FitGroup(model::Document* document, QWidget* parent)
                              "mesh's silhouette"));
     form->addRow(m_figures);
     auto* buttons = new QWidget(this);
-    auto* buttonLayout = new QHBoxLayout(buttons);
+    // One above the other: side by side their names would widen the dock.
+    auto* buttonLayout = new QVBoxLayout(buttons);
     buttonLayout->setContentsMargins(0, 0, 0, 0);
     m_fitCamera = new QToolButton(buttons);
     m_fitShape = new QToolButton(buttons);
@@ -126,7 +127,8 @@ void FitGroup::documentChanged(const model::ChangeSet& change)
     // The key's shape or camera, its drawing's outline settings or image, the model, a new link.
     const bool keyTouched = change.has(Part::Keys) && (change.touches(m_key) || change.structure);
     const bool drawingTouched = change.has(Part::Drawings) && (change.touches(m_drawing) || change.structure);
-    if (change.reset || change.has(Part::Mesh) || keyTouched || drawingTouched)
+    // At most one measurement per interval while a stroke goes on, and one after its last step.
+    if ((change.reset || change.has(Part::Mesh) || keyTouched || drawingTouched) && !m_measureTimer.isActive())
         m_measureTimer.start();
 }
 
@@ -184,7 +186,7 @@ void FitGroup::measure()
         m_figures->setText(tr("Against “%1”: the model is not in the key's view.").arg(drawing->name));
     else
         m_figures->setText(
-            tr("Against “%1”:\nSilhouette IoU %2, chamfer distance %3 px")
+            tr("Against “%1”:\nsilhouette IoU %2\nchamfer distance %3 px")
                 .arg(drawing->name, locale.toString(metrics.iou, 'f', 3), locale.toString(metrics.chamferPx, 'f', 2)));
     emit measured();
 }

@@ -34,7 +34,7 @@ OutlineSettingsBox::OutlineSettingsBox(model::Document* document, QWidget* paren
     m_threshold->setObjectName(QStringLiteral("outlineThreshold"));
     m_threshold->setRange(0.0, 1.0);
     m_threshold->setSingleStep(0.02);
-    m_threshold->setDecimals(2);
+    m_threshold->setDecimals(3); // Otsu's threshold of black-on-white line art is a few thousandths
     m_threshold->setToolTip(tr("Ink is where the drawing is darker than this (0 black, 1 white); a drawing with "
                                "transparency uses its alpha instead"));
     thresholdLayout->addWidget(m_automatic);
@@ -140,7 +140,7 @@ void OutlineSettingsBox::refreshStatus()
     }
     m_status->setStyleSheet({});
     const QString how = outline->usedAlpha ? tr("read from the drawing's transparency")
-                                           : tr("threshold %1").arg(outline->thresholdUsed, 0, 'f', 2);
+                                           : tr("threshold %1").arg(outline->thresholdUsed, 0, 'f', 3);
     m_status->setText(
         tr("Outline found (%1): %n contour(s). O shows it in the viewport.", nullptr, int(outline->contours.size()))
             .arg(how));
