@@ -25,6 +25,8 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -204,6 +206,14 @@ private slots:
         window.scenePanel()->select({views::ScenePanel::ItemKind::Drawing, drawing});
         QVERIFY(props->outlineSettings()->isVisible());
         QVERIFY(props->outlineSettings()->statusText().contains(QStringLiteral("Outline found")));
+        // The settings are below the drawing's rows: scroll them into the picture.
+        for (QWidget* w = props->outlineSettings(); w; w = w->parentWidget())
+            if (auto* scroll = qobject_cast<QScrollArea*>(w)) {
+                QApplication::processEvents(); // the box's place, now that it shows
+                scroll->verticalScrollBar()->setValue(
+                    props->outlineSettings()->mapTo(scroll->widget(), QPoint(0, 0)).y() - 150);
+                break;
+            }
         test::waitForRender(vp);
         test::keepScreenshot(&window, "fit-to-drawing-outline-settings");
 
@@ -264,6 +274,37 @@ private slots:
         QCOMPARE(doc->undoStack()->count(), count);
         QVERIFY(doc->data() == data);
         QTRY_VERIFY(window.propertiesPanel()->fitGroup()->figuresText().contains(QStringLiteral("blank_paper")));
+    }
+
+    void liveFiguresOfAMegapixelDrawing()
+    {
+        CELFORM_REQUIRE_SHARED(meshPath, QStringLiteral("meshes/cgal_elephant.off"));
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(showWithMesh(window, meshPath));
+        model::Document* doc = window.document();
+        const algo::TriMesh& mesh = *doc->data().baseMesh;
+        const algo::RasterCamera camera = test::sheetCamera(mesh, Eigen::Vector3d(0.3, 0.2, 1.0).normalized(), 1024);
+        QVERIFY(window.openFile(
+            writePng(m_dir, QStringLiteral("large"), test::silhouetteDrawing(mesh.vertices, mesh.faces, camera))));
+        const model::ObjectId drawing = doc->data().drawings.back().id;
+        const model::ObjectId key = doc->keys().createKey(
+            QStringLiteral("Key"), documentCamera(camera), std::vector<model::ObjectId>{drawing});
+        window.scenePanel()->select({views::ScenePanel::ItemKind::Key, key});
+        const auto first = figures(window);
+        QVERIFY(first && first->valid);
+        QVERIFY2(first->iou > 0.99, qPrintable(QString::number(first->iou)));
+        // Again after an edit of the key (the outline is kept, the scratch too): the live cost.
+        model::Camera moved = documentCamera(camera);
+        moved.fovYDegrees += 1.0;
+        double fastest = 1e9;
+        for (int i = 0; i < 3; ++i) {
+            moved.fovYDegrees += 0.2;
+            doc->keys().setKeyCamera(key, moved);
+            QVERIFY(figures(window));
+            fastest = std::min(fastest, window.propertiesPanel()->fitGroup()->measureMilliseconds());
+        }
+        qInfo("1024 px drawing: the live figures take %.2f ms", fastest);
+        QVERIFY2(fastest < 100.0, qPrintable(QString::number(fastest)));
     }
 
     void outlineSettingsAreUndoableEdits()
