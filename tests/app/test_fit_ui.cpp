@@ -163,6 +163,18 @@ private slots:
         // looks through the fitted camera.
         QUndoStack* stack = doc->undoStack();
         const int start = stack->count();
+        // Cancel leaves everything as it was.
+        const model::ProjectData beforeFit = doc->data();
+        window.action(QStringLiteral("actionFitCamera"))->trigger();
+        auto* running = window.findChild<app::JobRunner*>(QStringLiteral("fitCameraRunner"));
+        QVERIFY(running && running->isRunning());
+        QVERIFY(!window.action(QStringLiteral("actionFitCamera"))->isEnabled()); // one fit at a time
+        running->cancel();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.findChild<app::JobRunner*>(QStringLiteral("fitCameraRunner")), kJobTimeoutMs);
+        QCOMPARE(stack->count(), start);
+        QVERIFY(doc->data() == beforeFit);
+        QTRY_VERIFY(window.action(QStringLiteral("actionFitCamera"))->isEnabled());
+
         QVERIFY(runFit(window, "actionFitCamera", "fitCameraRunner"));
         QCOMPARE(stack->count(), start + 1);
         QCOMPARE(stack->text(start), QStringLiteral("Fit Camera to Drawing"));
