@@ -14,8 +14,6 @@
 #include <QImage>
 #include <QImageWriter>
 #include <QJsonArray>
-#include <QPainter>
-#include <QPainterPath>
 #include <QSaveFile>
 
 namespace celform::app {
@@ -55,21 +53,6 @@ model::DrawingOutline outlineOptions(const Invocation& in, model::DrawingOutline
     return outline;
 }
 
-QPainterPath outlinePath(const algo::Outline& outline)
-{
-    QPainterPath path;
-    path.setFillRule(Qt::OddEvenFill);
-    for (const auto& contour : outline.contours) {
-        if (contour.empty())
-            continue;
-        path.moveTo(contour.front().x(), contour.front().y());
-        for (std::size_t i = 1; i < contour.size(); ++i)
-            path.lineTo(contour[i].x(), contour[i].y());
-        path.closeSubpath();
-    }
-    return path;
-}
-
 QByteArray outlineSvg(const algo::Outline& outline)
 {
     QByteArray svg;
@@ -94,20 +77,6 @@ QByteArray outlineSvg(const algo::Outline& outline)
     return svg;
 }
 
-/// The outline as the artist checks it: the filled figure tinted, its contour in magenta, on a
-/// transparent image of the drawing's size.
-QImage outlineImage(const algo::Outline& outline)
-{
-    QImage image(outline.width, outline.height, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::transparent);
-    QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    const QPainterPath path = outlinePath(outline);
-    painter.fillPath(path, QColor(255, 0, 170, 60));
-    painter.strokePath(path, QPen(QColor(255, 0, 170), 2.0));
-    return image;
-}
-
 void writeOutline(const algo::Outline& outline, const QString& out)
 {
     const QString suffix = out.section(QLatin1Char('.'), -1).toLower();
@@ -120,7 +89,7 @@ void writeOutline(const algo::Outline& outline, const QString& out)
             throw model::IoError(out, file.errorString());
     } else {
         QImageWriter writer(&file, "png");
-        if (!writer.write(outlineImage(outline)))
+        if (!writer.write(model::outlineImage(outline, QColor(255, 0, 170), 2.0)))
             throw model::IoError(out, writer.errorString());
     }
     if (!file.commit())

@@ -61,6 +61,8 @@ public:
     /// frame 0 (one undo step); Properties > Import Deformation asks for the file. Errors are
     /// shown (interactive) or logged (batch); returns success.
     bool importKeyDeformation(model::ObjectId key, const QString& path);
+    /// An error in the Log, the status bar and (interactive mode) a message box.
+    void showError(const QString& message);
 
 public slots:
     /// Offers the recovery files of crashed sessions (interactive mode only).
@@ -82,7 +84,6 @@ private:
     enum class LogLevel { Info, Warning, Error };
     /// Appends to the Log dock; warnings and errors also go to the process log (stderr).
     void log(LogLevel level, const QString& message);
-    void showError(const QString& message);
     /// showError as a function, for the file jobs.
     [[nodiscard]] std::function<void(const QString&)> shownError();
     void showWarnings(const QString& file, const QStringList& warnings);

@@ -6,6 +6,7 @@
 #include "editor/getting_started.h"
 #include "editor/jobs/job_runner.h"
 #include "editor/jobs/light_optimisation_job.h"
+#include "editor/actions/fit_actions.h"
 #include "editor/actions/shading_offset_actions.h"
 #include "editor/settings/preferences.h"
 #include "editor/review_window.h"
@@ -225,8 +226,8 @@ void MainWindow::createActions()
     for (const auto& mode : stereoModes)
         action(QString::fromLatin1(mode.name))->setData(int(mode.output));
     make(QStringLiteral("actionDrawingOutline"), tr("Drawing &Outline Only"), QKeySequence(Qt::Key_O),
-        tr("Show only the lines and silhouette edge of the drawing in the viewport, so the model's contours can be "
-           "matched to them"),
+        tr("Show only the drawing's outline in the viewport, the one Fit to Drawing aims at (its threshold and "
+           "closing radius are in the drawing's Properties), so the model's contours can be matched to it"),
         [this](bool on) { m_viewport->drawingOverlay().setOutline(on); })
         ->setCheckable(true);
     make(QStringLiteral("actionNavigate"), tr("&Navigate Only"), QKeySequence(Qt::Key_Escape),
@@ -288,6 +289,7 @@ void MainWindow::createMenus()
     edit->addAction(action(QStringLiteral("actionDelete")));
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionCreateKeyFromView")));
+    installFitActions(this, edit);
     edit->addSeparator();
     installOffsetActions(this, edit);
 

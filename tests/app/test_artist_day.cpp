@@ -225,6 +225,8 @@ private slots:
             {QStringLiteral("import mesh / import drawing"), {"actionImportMesh", "actionImportDrawing"}},
             {QStringLiteral("preview the view-dependent shape"), {"actionPreview"}},
             {QStringLiteral("new key from the current view"), {"actionCreateKeyFromView"}},
+            {QStringLiteral("fit the camera / the key's shape to the drawing (Edit ▸ Fit to Drawing)"),
+                {"actionFitCamera", "actionFitShape"}},
             {QStringLiteral("leave a tool"), {"actionNavigate"}},
             {QStringLiteral("paint shading offsets (tool)"), {"actionOffsetBrush"}},
             {QStringLiteral("cartoon look on/off"), {"actionShowLook"}},

@@ -8,6 +8,8 @@
 #include "celform/model/render/render_output.h"
 
 #include <QCoreApplication>
+#include <QPainter>
+#include <QPainterPath>
 
 #include <algorithm>
 #include <cstring>
@@ -86,6 +88,31 @@ algo::OutlineSettings outlineSettings(const DrawingOutline& outline)
 algo::Outline drawingOutline(const Drawing& drawing)
 {
     return algo::extractOutline(drawingPixels(drawing.image), outlineSettings(drawing.outline));
+}
+
+QImage outlineImage(const algo::Outline& outline, const QColor& colour, double penWidth)
+{
+    if (!outline.ok() || outline.width <= 0 || outline.height <= 0)
+        return {};
+    QPainterPath path;
+    path.setFillRule(Qt::OddEvenFill);
+    for (const auto& contour : outline.contours) {
+        if (contour.empty())
+            continue;
+        path.moveTo(contour.front().x(), contour.front().y());
+        for (std::size_t i = 1; i < contour.size(); ++i)
+            path.lineTo(contour[i].x(), contour[i].y());
+        path.closeSubpath();
+    }
+    QImage image(outline.width, outline.height, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    QColor tint = colour;
+    tint.setAlpha(60);
+    painter.fillPath(path, tint);
+    painter.strokePath(path, QPen(colour, penWidth, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    return image;
 }
 
 QString outlineProblem(const Drawing& drawing, const algo::Outline& outline)

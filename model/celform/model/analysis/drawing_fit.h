@@ -11,6 +11,7 @@
 #include "celform/algorithms/progress.h"
 #include "celform/model/data/project_data.h"
 
+#include <QColor>
 #include <QImage>
 #include <QString>
 
@@ -27,6 +28,12 @@ algo::OutlineSettings outlineSettings(const DrawingOutline& outline);
 
 /// The drawing's outline with its saved settings; error EmptyImage when its image is not decoded.
 algo::Outline drawingOutline(const Drawing& drawing);
+
+/// The outline as the artist checks it: the filled figure tinted, its contours (holes included)
+/// stroked in colour penWidth drawing pixels wide, on a transparent image of the drawing's size
+/// (ARGB32 premultiplied); null when the outline failed. The editor's outline mode and `celform
+/// outline` show this.
+QImage outlineImage(const algo::Outline& outline, const QColor& colour, double penWidth);
 
 /// Why the outline of a drawing failed, as a sentence naming the drawing (translated); empty when
 /// the outline is sound.

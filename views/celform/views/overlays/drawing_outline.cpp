@@ -1,3 +1,4 @@
+// The lines of a reference drawing (drawing_outline.h).
 #include "celform/views/overlays/drawing_outline.h"
 
 #include <algorithm>
@@ -7,7 +8,7 @@
 
 namespace celform::views {
 
-QImage drawingOutline(const QImage& drawing, const QColor& colour)
+QImage drawingEdges(const QImage& drawing, const QColor& colour)
 {
     if (drawing.isNull())
         return {};

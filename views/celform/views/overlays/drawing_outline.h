@@ -1,6 +1,7 @@
-// The outline-only view of a reference drawing while aligning: only the pixels where the drawing
-// changes (its ink lines and the edge of its silhouette) are kept, in one vivid colour, so the
-// model shows through everywhere else and the artist sees the contours meet.
+// The lines of a reference drawing: only the pixels where the drawing changes (its ink lines and
+// the edge of its silhouette) are kept, in one vivid colour, so the model shows through everywhere
+// else. The outline mode shows these when no outline can be extracted from the drawing (the
+// extracted outline, what Fit to Drawing aims at, otherwise).
 #pragma once
 
 #include <QColor>
@@ -10,6 +11,6 @@ namespace celform::views {
 
 /// Pixels whose luminance or alpha differs from a 4-neighbour's by more than a quarter of the
 /// range, widened by one pixel, in colour; everything else transparent. ARGB32 premultiplied.
-QImage drawingOutline(const QImage& drawing, const QColor& colour = QColor(255, 0, 170));
+QImage drawingEdges(const QImage& drawing, const QColor& colour = QColor(255, 0, 170));
 
 } // namespace celform::views

@@ -1,7 +1,8 @@
 // The reference drawing fixed in the viewport (paper 1, section 3.1.1): which drawing, over the
 // model (with its opacity) or under it as a backdrop, or only its outline in magenta for checking
-// that contours meet; its height fills the view, so a camera aligned here matches the drawing.
-// The viewport draws what this says and follows its signals.
+// that contours meet: the outline Fit to Drawing aims at, extracted with the drawing's saved
+// settings (a banner says why when there is none); its height fills the view, so a camera aligned
+// here matches the drawing. The viewport draws what this says and follows its signals.
 #pragma once
 
 #include "celform/model/data/object_id.h"
@@ -9,12 +10,19 @@
 #include <QImage>
 #include <QObject>
 #include <QPointF>
+#include <QString>
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <optional>
 
+class QLabel;
 class QWidget;
+
+namespace celform::algo {
+struct Outline;
+}
 
 namespace celform::model {
 class Document;
@@ -22,6 +30,8 @@ struct Drawing;
 } // namespace celform::model
 
 namespace celform::views {
+
+class OutlineCache;
 
 class DrawingOverlay : public QObject {
     Q_OBJECT
@@ -35,9 +45,15 @@ public:
     /// Over the model (with the drawing's opacity) or under it, as a backdrop.
     void setOnTop(bool onTop);
     [[nodiscard]] bool onTop() const { return m_onTop; }
-    /// Only the drawing's lines and silhouette edge, in magenta, for checking contours meet.
+    /// Only the drawing's outline, in magenta, for checking contours meet: the outline Fit to
+    /// Drawing reads (model::drawingOutline); the drawing's lines in orange when it has none.
     void setOutline(bool on);
     [[nodiscard]] bool outline() const { return m_outline; }
+    /// Why the drawing shown has no outline (model::outlineProblem), empty when it has one or the
+    /// outline mode is off; the banner over the viewport shows it.
+    [[nodiscard]] QString outlineProblem() const { return m_problem; }
+    /// The drawings' extracted outlines, shared with whoever measures against them.
+    [[nodiscard]] const std::shared_ptr<OutlineCache>& outlineCache() const { return m_outlines; }
 
     /// Widget position (logical pixels) to drawing pixels and back, for the drawing shown.
     [[nodiscard]] std::optional<Eigen::Vector2d> widgetToDrawing(const QPointF& position) const;
@@ -63,17 +79,26 @@ signals:
     void drawingChanged();
     /// What is drawn changed (the drawing, on top, outline).
     void changed();
+    /// The outline mode's problem changed (empty: none now).
+    void outlineProblemChanged(const QString& problem);
 
 private:
     [[nodiscard]] const model::Drawing* current() const;
+    void setProblem(const QString& problem);
+    void placeBanner();
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
     model::Document* m_document;
     QWidget* m_view;
     model::ObjectId m_drawing = 0;
     bool m_onTop = true;
     bool m_outline = false;
+    std::shared_ptr<OutlineCache> m_outlines;
     QImage m_outlineImage; ///< the drawing's outline, made when first shown
-    qint64 m_outlineSource = 0; ///< cacheKey of the image m_outlineImage was made from
+    std::shared_ptr<const algo::Outline> m_outlineSource; ///< the outline m_outlineImage was drawn from
+    qint64 m_edgesSource = 0; ///< cacheKey of the image m_outlineImage's lines were found in
+    QString m_problem;
+    QLabel* m_banner; ///< the problem, over the bottom of the viewport
 };
 
 } // namespace celform::views

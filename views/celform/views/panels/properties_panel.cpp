@@ -7,7 +7,9 @@
 
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/data/io_error.h"
+#include "celform/views/panels/fit_group.h"
 #include "celform/views/panels/gesture_tracker.h"
+#include "celform/views/panels/outline_settings_box.h"
 #include "celform/views/panels/thumbnail.h"
 #include "celform/views/overlays/drawing_overlay.h"
 #include "celform/views/viewport/viewport.h"
@@ -130,6 +132,11 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
                                        "deformation"));
     m_form->addRow(m_importDeformation);
     layout->addWidget(m_selectionBox);
+    // Fit to Drawing: the drawing's outline settings, the key's figures and fits.
+    m_outlineBox = new OutlineSettingsBox(m_document, this);
+    layout->addWidget(m_outlineBox);
+    m_fit = new FitGroup(m_document, this);
+    layout->addWidget(m_fit);
 
     m_brushBox = new QGroupBox(tr("Brush"), this);
     auto* brushForm = new QFormLayout(m_brushBox);
@@ -335,6 +342,10 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     connect(m_strength, qOverload<double>(&QDoubleSpinBox::valueChanged), this, applyProfile);
     connect(m_brushMode, qOverload<int>(&QComboBox::currentIndexChanged), this, &PropertiesPanel::brushModeEdited);
     connect(m_mirror, &QCheckBox::toggled, this, &PropertiesPanel::brushMirrorEdited);
+    // One X mirror for the brush and Fit Shape, shown in both groups.
+    connect(m_mirror, &QCheckBox::toggled, m_fit->mirrorBox(), &QCheckBox::setChecked);
+    connect(m_fit, &FitGroup::mirrorEdited, m_mirror, &QCheckBox::setChecked);
+    connect(m_outlineBox, &OutlineSettingsBox::message, this, &PropertiesPanel::message);
     GestureTracker::track(m_sharpness, m_document);
     connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double value) {
         if (!m_updating)
@@ -404,6 +415,9 @@ void PropertiesPanel::setViewport(Viewport* viewport)
     if (!viewport)
         return;
     connect(viewport, &Viewport::toolChanged, this, &PropertiesPanel::refreshTools);
+    // The outlines the viewport's outline mode shows: extracted once for both.
+    m_outlineBox->setOutlineCache(viewport->drawingOverlay().outlineCache());
+    m_fit->setOutlineCache(viewport->drawingOverlay().outlineCache());
     connect(viewport, &Viewport::cameraChanged, this, [this] {
         if (m_fov->hasFocus())
             return;
@@ -413,6 +427,12 @@ void PropertiesPanel::setViewport(Viewport* viewport)
         m_updating = false;
     });
     refreshTools();
+}
+
+void PropertiesPanel::setFitActions(QAction* fitCamera, QAction* fitShape)
+{
+    m_outlineBox->setFitCameraAction(fitCamera);
+    m_fit->setActions(fitCamera, fitShape);
 }
 
 double PropertiesPanel::defaultBrushRadius() const
@@ -586,6 +606,10 @@ void PropertiesPanel::refresh()
     for (QWidget* w : std::initializer_list<QWidget*>{m_enabled, m_linkedDrawing, m_editKey, m_importDeformation})
         m_form->setRowVisible(w, isKey);
     m_form->setRowVisible(m_name, isDrawing || isKey);
+    m_outlineBox->setVisible(isDrawing);
+    m_outlineBox->setDrawing(isDrawing ? m_selection.id : 0);
+    m_fit->setVisible(isKey);
+    m_fit->setKey(isKey ? m_selection.id : 0);
     if (focused && !focused->isVisibleTo(this) && m_viewport)
         m_viewport->setFocus(Qt::OtherFocusReason);
     m_updating = false;

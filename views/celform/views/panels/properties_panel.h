@@ -18,6 +18,7 @@
 
 #include <functional>
 
+class QAction;
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
@@ -31,6 +32,8 @@ class QSlider;
 
 namespace celform::views {
 
+class FitGroup;
+class OutlineSettingsBox;
 class Viewport;
 
 class PropertiesPanel : public QWidget {
@@ -47,6 +50,11 @@ public:
     [[nodiscard]] QPushButton* previewButton() const { return m_preview; }
     [[nodiscard]] QPushButton* matchPointsButton() const { return m_match; }
     [[nodiscard]] QPushButton* solveCameraButton() const { return m_solve; }
+    /// A drawing's outline settings and a key's Fit to Drawing group.
+    [[nodiscard]] OutlineSettingsBox* outlineSettings() const { return m_outlineBox; }
+    [[nodiscard]] FitGroup* fitGroup() const { return m_fit; }
+    /// The window's Fit Camera to Drawing and Fit Shape to Drawing, for the panel's buttons.
+    void setFitActions(QAction* fitCamera, QAction* fitShape);
 
     /// 8% of the model's diagonal: a useful first brush on any scale (0 without a model).
     [[nodiscard]] double defaultBrushRadius() const;
@@ -120,6 +128,8 @@ private:
     QComboBox* m_linkedDrawing;
     QPushButton* m_editKey;
     QPushButton* m_importDeformation;
+    OutlineSettingsBox* m_outlineBox;
+    FitGroup* m_fit;
 
     QGroupBox* m_brushBox;
     QDoubleSpinBox* m_radius;

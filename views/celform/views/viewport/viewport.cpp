@@ -99,6 +99,11 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
             setTool(Tool::Navigate);
     });
     connect(m_overlay, &DrawingOverlay::changed, this, &Viewport::updateOverlay);
+    // Why the outline mode has no outline to show goes to the status bar as well as the banner.
+    connect(m_overlay, &DrawingOverlay::outlineProblemChanged, this, [this](const QString& problem) {
+        if (!problem.isEmpty())
+            emit message(problem);
+    });
 
     if (m_document)
         connect(m_document, &model::Document::changed, this, &Viewport::documentChanged);
