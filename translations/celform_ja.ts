@@ -39,8 +39,8 @@
         <translation>仰角は -90 度より大きく 90 度より小さい値である必要があります</translation>
     </message>
     <message>
-        <source>the start angle must be a finite number</source>
-        <translation>開始角度は有限の数値である必要があります</translation>
+        <source>the start angle must lie between -%1 and %1 degrees</source>
+        <translation>開始角度は -%1～%1 度の範囲で指定してください</translation>
     </message>
 </context>
 <context>
@@ -60,6 +60,33 @@
     <message>
         <source>%1 takes on, off or a comma-separated list of silhouette, crease, border, material and ridge, not “%2”</source>
         <translation>%1 には on、off、または silhouette、crease、border、material、ridge をカンマ区切りで指定してください（「%2」は無効です）</translation>
+    </message>
+    <message>
+        <source>has no drawing named “%1”</source>
+        <translation>「%1」という名前の参照画がありません</translation>
+    </message>
+    <message>
+        <source>--threshold takes auto or a number from 0 to 1, not “%1”</source>
+        <translation>--threshold には auto または 0～1 の数値を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>--closing takes a radius from 0 to %1 pixels, not “%2”</source>
+        <translation>--closing には 0～%1 ピクセルの半径を指定してください（「%2」は無効です）</translation>
+    </message>
+</context>
+<context>
+    <name>DrawingOutline</name>
+    <message>
+        <source>the outline threshold must lie in 0 to 1 (or be negative for automatic), not %1</source>
+        <translation>輪郭のしきい値は 0～1 の範囲（自動にする場合は負の値）で指定してください（%1 は無効です）</translation>
+    </message>
+    <message>
+        <source>the closing radius must lie in 0 to %1 pixels, not %2</source>
+        <translation>クロージング半径は 0～%1 ピクセルの範囲で指定してください（%2 は無効です）</translation>
+    </message>
+    <message>
+        <source>the smallest figure kept must not be negative, not %1</source>
+        <translation>残す図形の最小サイズに負の値は指定できません（%1 は無効です）</translation>
     </message>
 </context>
 <context>
@@ -400,10 +427,6 @@
         <translation>プロジェクトの設定を変更します。</translation>
     </message>
     <message>
-        <source>Blend sharpness alpha (&gt; 0).</source>
-        <translation>ブレンドのシャープネス α（&gt; 0）。</translation>
-    </message>
-    <message>
         <source>Unspecified-region mode.</source>
         <translation>未指定領域のモード。</translation>
     </message>
@@ -414,10 +437,6 @@
     <message>
         <source>Shading style.</source>
         <translation>シェーディングスタイル。</translation>
-    </message>
-    <message>
-        <source>--sharpness must be positive</source>
-        <translation>--sharpness には正の値を指定してください</translation>
     </message>
     <message>
         <source>--unspecified takes dummy, cosine or cosine2, not “%1”</source>
@@ -1305,6 +1324,116 @@
         <source>MESH is one numbered file of a sequence (walk_0001.obj): read it with its numbered siblings as frames.</source>
         <translation>MESH は連番ファイルの 1 つ（walk_0001.obj）です。同じ連番のほかのファイルとともにフレームとして読み込みます。</translation>
     </message>
+    <message>
+        <source>--drawing and --out are required</source>
+        <translation>--drawing と --out は必須です</translation>
+    </message>
+    <message>
+        <source>--out must name an .svg or .png file, not “%1”</source>
+        <translation>--out には .svg または .png ファイルを指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>--key is required</source>
+        <translation>--key は必須です</translation>
+    </message>
+    <message>
+        <source>give --camera, --shape or both</source>
+        <translation>--camera、--shape、またはその両方を指定してください</translation>
+    </message>
+    <message>
+        <source>--iterations takes a whole number from 1 to 100, not “%1”</source>
+        <translation>--iterations には 1～100 の整数を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>--strength takes a number from 0 to 1, not “%1”</source>
+        <translation>--strength には 0～1 の数値を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>fitting the camera: %1 of %2</source>
+        <translation>カメラを合わせています: %1/%2</translation>
+    </message>
+    <message>
+        <source>fitting the shape: round %1 of %2</source>
+        <translation>形状を合わせています: ラウンド %1/%2</translation>
+    </message>
+    <message>
+        <source>silhouette IoU %1 -&gt; %2, chamfer distance %3 -&gt; %4 px (%5 ms)
+</source>
+        <translation>シルエットIoU %1 -&gt; %2、チャンファー距離 %3 -&gt; %4 px（%5 ms）
+</translation>
+    </message>
+    <message>
+        <source>Writes the outline Fit to Drawing reads from a drawing; the options become the drawing&apos;s outline settings.</source>
+        <translation>「参照画に合わせる」が参照画から読み取る輪郭を書き出します。オプションはその参照画の輪郭設定になります。</translation>
+    </message>
+    <message>
+        <source>The drawing.</source>
+        <translation>参照画。</translation>
+    </message>
+    <message>
+        <source>Ink where the luminance is below T (0 black to 1 white); auto: Otsu&apos;s threshold.</source>
+        <translation>輝度が T 未満の部分をインクとみなします（0 が黒、1 が白）。auto: 大津の手法によるしきい値。</translation>
+    </message>
+    <message>
+        <source>Radius in pixels that closes gaps in open line art.</source>
+        <translation>閉じていない線画のすき間を閉じる半径（ピクセル）。</translation>
+    </message>
+    <message>
+        <source>Keep the holes inner lines enclose (default off).</source>
+        <translation>内側の線が囲む穴を残します（既定: オフ）。</translation>
+    </message>
+    <message>
+        <source>The SVG or PNG file to write.</source>
+        <translation>書き出す SVG または PNG ファイル。</translation>
+    </message>
+    <message>
+        <source>Fits a key&apos;s camera (--camera) and shape (--shape) to its drawing&apos;s outline, and saves the project.</source>
+        <translation>キーのカメラ（--camera）と形状（--shape）を参照画の輪郭に合わせ、プロジェクトを保存します。</translation>
+    </message>
+    <message>
+        <source>The key to fit.</source>
+        <translation>合わせるキー。</translation>
+    </message>
+    <message>
+        <source>Which of the key&apos;s linked drawings (default: the first).</source>
+        <translation>キーにリンクされた参照画のうち、どれを使うか（既定: 最初の参照画）。</translation>
+    </message>
+    <message>
+        <source>Fit the camera: rotation, position and field of view (orthographic: height).</source>
+        <translation>カメラを合わせます: 回転、位置、画角（平行投影では高さ）。</translation>
+    </message>
+    <message>
+        <source>Fit the key&apos;s shape at the drawing&apos;s frame (after the camera).</source>
+        <translation>参照画のフレームでキーの形状を合わせます（カメラの後に行います）。</translation>
+    </message>
+    <message>
+        <source>Only these painted faces may move (default: all).</source>
+        <translation>これらのペイントした面だけを動かせるようにします（既定: すべて）。</translation>
+    </message>
+    <message>
+        <source>The vertices of these faces stay put.</source>
+        <translation>これらの面の頂点は動かしません。</translation>
+    </message>
+    <message>
+        <source>Keep the shape symmetric across x = 0.</source>
+        <translation>形状を x = 0 を挟んで左右対称に保ちます。</translation>
+    </message>
+    <message>
+        <source>Rounds of the shape fit at most (default 10).</source>
+        <translation>形状合わせの最大ラウンド数（既定値 10）。</translation>
+    </message>
+    <message>
+        <source>Fraction of the fitted deformation applied (default 1).</source>
+        <translation>合わせ込んだ変形を適用する割合（既定値 1）。</translation>
+    </message>
+    <message>
+        <source>--sharpness must be above 0 and at most %1</source>
+        <translation>--sharpness には 0 より大きく %1 以下の値を指定してください</translation>
+    </message>
+    <message>
+        <source>Blend sharpness alpha (above 0, at most 100).</source>
+        <translation>ブレンドのシャープネス alpha（0 より大きく 100 以下）。</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ExportDialog</name>
@@ -1408,10 +1537,86 @@
     </message>
 </context>
 <context>
+    <name>celform::app::FitActions</name>
+    <message>
+        <source>silhouette IoU %1 → %2, chamfer distance %3 → %4 px</source>
+        <translation>シルエットIoU %1 → %2、チャンファー距離 %3 → %4 px</translation>
+    </message>
+    <message>
+        <source>Camera fitted to “%1”: %2.</source>
+        <translation>カメラを「%1」に合わせました: %2。</translation>
+    </message>
+    <message>
+        <source>The key “%1” already meets its drawing: nothing moved.</source>
+        <translation>キー「%1」はすでに参照画と一致しています。何も動かしていません。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Shape of “%1” fitted: %2; %n vertices moved.</source>
+        <translation>
+            <numerusform>「%1」の形状を合わせました: %2。%n 個の頂点を動かしました。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Fit &amp;Camera to Drawing</source>
+        <translation>カメラを参照画に合わせる(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Find the camera for which the model&apos;s silhouette meets the drawing&apos;s outline, starting from the drawing&apos;s alignment: the drawing&apos;s camera and its key&apos;s (one undo step)</source>
+        <translation>参照画の位置合わせを出発点として、モデルのシルエットが参照画の輪郭と一致するカメラを求めます。参照画のカメラとそのキーのカメラが対象です（1 回の「元に戻す」で戻せます）</translation>
+    </message>
+    <message>
+        <source>Fit &amp;Shape to Drawing</source>
+        <translation>形状を参照画に合わせる(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Deform the key at its drawing&apos;s frame until its silhouette meets the drawing&apos;s outline, with the Properties panel&apos;s region, pins and strength and the brush&apos;s X mirror (one undo step)</source>
+        <translation>参照画のフレームで、シルエットが参照画の輪郭と一致するまでキーを変形します。「プロパティ」パネルの領域、ピン、強さと、ブラシの X ミラーを使います（1 回の「元に戻す」で戻せます）</translation>
+    </message>
+    <message>
+        <source>Fit to &amp;Drawing</source>
+        <translation>参照画に合わせる(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Not enough memory to fit the model to the drawing.</source>
+        <translation>モデルを参照画に合わせるためのメモリが足りません。</translation>
+    </message>
+    <message>
+        <source>Fit Camera to Drawing</source>
+        <translation>カメラを参照画に合わせる</translation>
+    </message>
+    <message>
+        <source>Fitting the camera to the drawing&apos;s outline…</source>
+        <translation>カメラを参照画の輪郭に合わせています…</translation>
+    </message>
+    <message>
+        <source>Fitting the camera: step %1 of %2…</source>
+        <translation>カメラを合わせています: ステップ %1/%2…</translation>
+    </message>
+    <message>
+        <source>Fit Shape to Drawing</source>
+        <translation>形状を参照画に合わせる</translation>
+    </message>
+    <message>
+        <source>Fitting the key&apos;s shape to the drawing&apos;s outline…</source>
+        <translation>キーの形状を参照画の輪郭に合わせています…</translation>
+    </message>
+    <message>
+        <source>Fitting the shape: round %1 of %2…</source>
+        <translation>形状を合わせています: ラウンド %1/%2…</translation>
+    </message>
+</context>
+<context>
     <name>celform::app::GettingStarted</name>
     <message>
         <source>Getting Started</source>
         <translation>はじめに</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::JobRunner</name>
+    <message>
+        <source>Not enough memory.</source>
+        <translation>メモリが不足しています。</translation>
     </message>
 </context>
 <context>
@@ -1442,10 +1647,6 @@
     <message>
         <source>Not enough memory.</source>
         <translation>メモリが不足しています。</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>キャンセル</translation>
     </message>
     <message>
         <source>Ready</source>
@@ -1944,10 +2145,6 @@ Recover it now?</source>
         <translation>絵の輪郭線のみ(&amp;O)</translation>
     </message>
     <message>
-        <source>Show only the lines and silhouette edge of the drawing in the viewport, so the model&apos;s contours can be matched to them</source>
-        <translation>ビューポートで絵の線とシルエットの縁だけを表示し、モデルの輪郭を合わせやすくします</translation>
-    </message>
-    <message>
         <source>&amp;Getting Started</source>
         <translation>はじめに(&amp;G)</translation>
     </message>
@@ -2088,6 +2285,14 @@ Recover it now?</source>
         <translation>
             <numerusform>%1 を読み込みました: アニメーションするベースモデル、%n フレーム、%2 fps</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Import Key Deformation</source>
+        <translation>キー変形をインポート</translation>
+    </message>
+    <message>
+        <source>Show only the drawing&apos;s outline in the viewport, the one Fit to Drawing aims at (its threshold and closing radius are in the drawing&apos;s Properties), so the model&apos;s contours can be matched to it</source>
+        <translation>ビューポートに参照画の輪郭だけを表示し、モデルの輪郭線を合わせられるようにします。これは「参照画に合わせる」が目標とする輪郭です（しきい値とクロージング半径は参照画の「プロパティ」で設定します）</translation>
     </message>
 </context>
 <context>
@@ -2235,6 +2440,14 @@ Recover it now?</source>
     <message>
         <source>Remove the target layer&apos;s offsets</source>
         <translation>対象レイヤーのオフセットを削除します</translation>
+    </message>
+    <message>
+        <source>Analysing the picture (%1 × %2)…</source>
+        <translation>画像を解析中（%1 × %2）…</translation>
+    </message>
+    <message>
+        <source>Not enough memory to analyse %1 × %2 pixels</source>
+        <translation>%1 × %2 ピクセルを解析するメモリが足りません</translation>
     </message>
 </context>
 <context>
@@ -3114,6 +3327,160 @@ Recover it now?</source>
     </message>
 </context>
 <context>
+    <name>celform::model</name>
+    <message>
+        <source>base</source>
+        <translation>ベース</translation>
+    </message>
+    <message>
+        <source>Shading offsets need a base model.</source>
+        <translation>シェーディングオフセットにはベースモデルが必要です。</translation>
+    </message>
+    <message>
+        <source>There is no key to hold the automatic shading offsets.</source>
+        <translation>自動シェーディングオフセットを保持するキーがありません。</translation>
+    </message>
+    <message>
+        <source>The aggressiveness must be between 0 and 1.</source>
+        <translation>適用度は 0～1 の範囲で指定してください。</translation>
+    </message>
+    <message>
+        <source>The percentile must be between 0 and 1.</source>
+        <translation>パーセンタイルは 0～1 の範囲で指定してください。</translation>
+    </message>
+    <message>
+        <source>Bleeding takes 0 to %1 rounds.</source>
+        <translation>にじみの回数は 0～%1 の範囲で指定してください。</translation>
+    </message>
+    <message>
+        <source>The analysis size must be between 16 and 8192 pixels a side.</source>
+        <translation>解析サイズは一辺 16～8192 ピクセルの範囲で指定してください。</translation>
+    </message>
+    <message>
+        <source>The analysis needs a valid camera (eye, target and up must differ).</source>
+        <translation>解析には有効なカメラが必要です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
+    </message>
+    <message>
+        <source>The key “%1” plays no part in this view: look from nearer its direction.</source>
+        <translation>キー「%1」はこの視点では使われていません。キーの方向にもっと近い視点から見てください。</translation>
+    </message>
+    <message>
+        <source>The automatic shading offsets could not be solved for this picture.</source>
+        <translation>この画像では自動シェーディングオフセットを求められませんでした。</translation>
+    </message>
+    <message>
+        <source>Shading offsets refused: %1.</source>
+        <translation>シェーディングオフセットを適用できません: %1。</translation>
+    </message>
+    <message>
+        <source>The drawing “%1” has no image to read an outline from.</source>
+        <translation>参照画「%1」には輪郭を読み取る画像がありません。</translation>
+    </message>
+    <message>
+        <source>The drawing “%1” is all one tone: no figure stands out from the paper. Set the outline threshold by hand.</source>
+        <translation>参照画「%1」は全体が同じ濃さで、紙から浮かび上がる図形がありません。輪郭のしきい値を手動で設定してください。</translation>
+    </message>
+    <message>
+        <source>The drawing “%1” has no closed outline: its lines never enclose the figure. Raise the closing radius to bridge the gaps.</source>
+        <translation>参照画「%1」には閉じた輪郭がありません。線が図形を囲んでいません。クロージング半径を大きくしてすき間をつないでください。</translation>
+    </message>
+    <message>
+        <source>The figure in the drawing “%1” touches the image border, so its outline is cut off by the frame. Use a drawing with paper around the character.</source>
+        <translation>参照画「%1」の図形が画像の端に接しているため、輪郭が画像の枠で切れています。キャラクターの周りに余白のある参照画を使ってください。</translation>
+    </message>
+    <message>
+        <source>The key “%1” is not linked to a drawing. Link it to the drawing to fit first.</source>
+        <translation>キー「%1」は参照画にリンクされていません。先に、合わせる参照画にリンクしてください。</translation>
+    </message>
+    <message>
+        <source>The drawing to fit no longer exists.</source>
+        <translation>合わせる参照画はすでに存在しません。</translation>
+    </message>
+    <message>
+        <source>The key “%1” is not linked to the drawing “%2”.</source>
+        <translation>キー「%1」は参照画「%2」にリンクされていません。</translation>
+    </message>
+    <message>
+        <source>Fit Camera to Drawing needs a base model and a drawing.</source>
+        <translation>「カメラを参照画に合わせる」にはベースモデルと参照画が必要です。</translation>
+    </message>
+    <message>
+        <source>The camera could not be fitted to the drawing “%1”: %2</source>
+        <translation>カメラを参照画「%1」に合わせられませんでした: %2</translation>
+    </message>
+    <message>
+        <source>Fit Shape to Drawing needs a base model and a key.</source>
+        <translation>「形状を参照画に合わせる」にはベースモデルとキーが必要です。</translation>
+    </message>
+    <message>
+        <source>There is no painted face set “%1” to fit within.</source>
+        <translation>合わせる範囲となるペイント済みの面セット「%1」がありません。</translation>
+    </message>
+    <message>
+        <source>There is no painted face set “%1” to pin.</source>
+        <translation>ピン留めするペイント済みの面セット「%1」がありません。</translation>
+    </message>
+    <message>
+        <source>The strength of a fit must lie in 0 to 1.</source>
+        <translation>合わせ込みの強さは 0～1 の範囲で指定してください。</translation>
+    </message>
+    <message>
+        <source>The key “%1” could not be fitted to the drawing “%2”: %3</source>
+        <translation>キー「%1」を参照画「%2」に合わせられませんでした: %3</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::AnimationEdits</name>
+    <message>
+        <source>Change Frame Rate</source>
+        <translation>フレームレートを変更</translation>
+    </message>
+    <message>
+        <source>Change Frame Range</source>
+        <translation>フレーム範囲を変更</translation>
+    </message>
+    <message>
+        <source>The camera is not valid (eye, target and up must differ).</source>
+        <translation>カメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
+    </message>
+    <message>
+        <source>Frame %1 is out of range.</source>
+        <translation>フレーム %1 は範囲外です。</translation>
+    </message>
+    <message>
+        <source>Key Camera at Frame %1</source>
+        <translation>フレーム %1 にカメラのキーフレームを設定</translation>
+    </message>
+    <message>
+        <source>Remove Camera Key at Frame %1</source>
+        <translation>フレーム %1 のカメラのキーフレームを削除</translation>
+    </message>
+    <message>
+        <source>Clear Camera Path</source>
+        <translation>カメラパスを消去</translation>
+    </message>
+    <message>
+        <source>Import a base model before making a turntable.</source>
+        <translation>ターンテーブルを作成する前にベースモデルをインポートしてください。</translation>
+    </message>
+    <message>
+        <source>Make Turntable</source>
+        <translation>ターンテーブルを作成</translation>
+    </message>
+    <message>
+        <source>The animation of %1 is not usable: %2</source>
+        <translation>%1 のアニメーションを使用できません: %2</translation>
+    </message>
+    <message>
+        <source>has %1 vertices, but the key deformations use vertex %2; a replacement base model needs the same vertex count and order</source>
+        <translation>頂点数が %1 ですが、キー変形では頂点 %2 が使われています。置き換えるベースモデルは頂点数と頂点順序が同じである必要があります</translation>
+    </message>
+    <message>
+        <source>Import Animated Base</source>
+        <translation>アニメーションするベースモデルをインポート</translation>
+    </message>
+</context>
+<context>
     <name>celform::model::AnimationIo</name>
     <message>
         <source>%1 frames per second is not a usable frame rate</source>
@@ -3453,6 +3820,13 @@ Recover it now?</source>
     </message>
 </context>
 <context>
+    <name>celform::model::BlendEvaluator</name>
+    <message>
+        <source>The key “%1” has no view direction (zero or not finite).</source>
+        <translation>キー「%1」に視線方向がありません（ゼロまたは有限でない値です）。</translation>
+    </message>
+</context>
+<context>
     <name>celform::model::Document</name>
     <message>
         <source>has %1 vertices, but the key deformations use vertex %2; a replacement base model needs the same vertex count and order</source>
@@ -3463,124 +3837,8 @@ Recover it now?</source>
         <translation>ベースモデルを置き換え</translation>
     </message>
     <message>
-        <source>Add Drawing “%1”</source>
-        <translation>参照画「%1」を追加</translation>
-    </message>
-    <message>
-        <source>Remove Drawing “%1”</source>
-        <translation>参照画「%1」を削除</translation>
-    </message>
-    <message>
-        <source>Rename Drawing to “%1”</source>
-        <translation>参照画の名前を「%1」に変更</translation>
-    </message>
-    <message>
-        <source>Set Drawing Opacity</source>
-        <translation>参照画の不透明度を設定</translation>
-    </message>
-    <message>
-        <source>Align Drawing “%1”</source>
-        <translation>参照画「%1」に位置合わせ</translation>
-    </message>
-    <message>
-        <source>Add Key “%1”</source>
-        <translation>キー「%1」を追加</translation>
-    </message>
-    <message>
-        <source>Remove Key “%1”</source>
-        <translation>キー「%1」を削除</translation>
-    </message>
-    <message>
-        <source>Rename Key to “%1”</source>
-        <translation>キーの名前を「%1」に変更</translation>
-    </message>
-    <message>
-        <source>Enable Key “%1”</source>
-        <translation>キー「%1」を有効化</translation>
-    </message>
-    <message>
-        <source>Disable Key “%1”</source>
-        <translation>キー「%1」を無効化</translation>
-    </message>
-    <message>
         <source>Untitled</source>
         <translation>無題</translation>
-    </message>
-    <message>
-        <source>Key “%1” already has this view direction; a second key needs a different direction (at least %2° apart).</source>
-        <translation>キー「%1」がすでにこの視線方向を使用しています。別のキーには異なる方向（%2° 以上離れた方向）が必要です。</translation>
-    </message>
-    <message>
-        <source>A key needs a view direction.</source>
-        <translation>キーには視線方向が必要です。</translation>
-    </message>
-    <message>
-        <source>Import a base model before making keys.</source>
-        <translation>キーを作成する前にベースモデルをインポートしてください。</translation>
-    </message>
-    <message>
-        <source>The key&apos;s camera is not valid (eye, target and up must differ).</source>
-        <translation>キーのカメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
-    </message>
-    <message>
-        <source>The key&apos;s camera sits at the centre of the model; move it away first.</source>
-        <translation>キーのカメラがモデルの中心にあります。先にカメラを中心から離してください。</translation>
-    </message>
-    <message>
-        <source>The drawing no longer exists.</source>
-        <translation>この参照画はすでに存在しません。</translation>
-    </message>
-    <message>
-        <source>Align the drawing “%1” first: its camera gives the key&apos;s view direction.</source>
-        <translation>先に参照画「%1」の位置合わせを行ってください。そのカメラの向きがキーの視線方向になります。</translation>
-    </message>
-    <message>
-        <source>Re-align Key “%1”</source>
-        <translation>キー「%1」を再位置合わせ</translation>
-    </message>
-    <message>
-        <source>Unlink Key “%1”</source>
-        <translation>キー「%1」のリンクを解除</translation>
-    </message>
-    <message>
-        <source>Link Key “%1” to a Drawing</source>
-        <translation>キー「%1」を参照画にリンク</translation>
-    </message>
-    <message>
-        <source>has %1 vertices, but the base model has %2: a key deformation needs the base model&apos;s vertex count and order</source>
-        <translation>頂点数が %1 ですが、ベースモデルの頂点数は %2 です。キー変形にはベースモデルと同じ頂点数と頂点順序が必要です</translation>
-    </message>
-    <message>
-        <source>its triangles differ from the base model&apos;s; only the vertex positions are used</source>
-        <translation>三角形の構成がベースモデルと異なります。頂点位置のみを使用します</translation>
-    </message>
-    <message>
-        <source>Import Deformation into “%1”</source>
-        <translation>「%1」に変形をインポート</translation>
-    </message>
-    <message>
-        <source>There is no base model to make a patch on.</source>
-        <translation>パッチを作るベースモデルがありません。</translation>
-    </message>
-    <message>
-        <source>A patch needs a name.</source>
-        <translation>パッチには名前が必要です。</translation>
-    </message>
-    <message>
-        <source>Patch “%1” names a face the base model does not have.</source>
-        <translation>パッチ「%1」がベースモデルにない面を指しています。</translation>
-    </message>
-    <message>
-        <source>Delete Patch “%1”</source>
-        <translation>パッチ「%1」を削除</translation>
-    </message>
-    <message>
-        <source>There is already a patch named “%1”.</source>
-        <translation>「%1」という名前のパッチはすでにあります。</translation>
-    </message>
-    <message>
-        <source>Rename Patch “%1”</source>
-        <translation>パッチ「%1」の名前を変更</translation>
     </message>
     <message>
         <source>Add Highlight Layer</source>
@@ -3607,8 +3865,108 @@ Recover it now?</source>
         <translation>ハイライトのキーフレームを設定</translation>
     </message>
     <message>
+        <source>base</source>
+        <translation>ベース</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::DrawingEdits</name>
+    <message>
+        <source>Add Drawing “%1”</source>
+        <translation>参照画「%1」を追加</translation>
+    </message>
+    <message>
+        <source>Remove Drawing “%1”</source>
+        <translation>参照画「%1」を削除</translation>
+    </message>
+    <message>
+        <source>Rename Drawing to “%1”</source>
+        <translation>参照画の名前を「%1」に変更</translation>
+    </message>
+    <message>
+        <source>Set Drawing Opacity</source>
+        <translation>参照画の不透明度を設定</translation>
+    </message>
+    <message>
+        <source>Align Drawing “%1”</source>
+        <translation>参照画「%1」の位置合わせ</translation>
+    </message>
+    <message>
+        <source>Set Outline of “%1”</source>
+        <translation>「%1」の輪郭を設定</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::Export</name>
+    <message>
+        <source>frames must be within ±%1</source>
+        <translation>フレームは ±%1 の範囲内である必要があります</translation>
+    </message>
+    <message>
+        <source>the first frame %1 is after the last frame %2</source>
+        <translation>最初のフレーム %1 が最後のフレーム %2 より後です</translation>
+    </message>
+    <message>
+        <source>no output file</source>
+        <translation>出力ファイルが指定されていません</translation>
+    </message>
+    <message>
+        <source>the aspect ratio must be positive</source>
+        <translation>アスペクト比は正の値である必要があります</translation>
+    </message>
+    <message>
+        <source>has no base model</source>
+        <translation>ベースモデルがありません</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::FaceSetEdits</name>
+    <message>
+        <source>Paint Patch “%1”</source>
+        <translation>パッチ「%1」をペイント</translation>
+    </message>
+    <message>
+        <source>There is no base model to make a patch on.</source>
+        <translation>パッチを作るベースモデルがありません。</translation>
+    </message>
+    <message>
+        <source>A patch needs a name.</source>
+        <translation>パッチには名前が必要です。</translation>
+    </message>
+    <message>
+        <source>Patch “%1” names a face the base model does not have.</source>
+        <translation>パッチ「%1」がベースモデルにない面を指しています。</translation>
+    </message>
+    <message>
+        <source>Delete Patch “%1”</source>
+        <translation>パッチ「%1」を削除</translation>
+    </message>
+    <message>
+        <source>There is already a patch named “%1”.</source>
+        <translation>「%1」という名前のパッチはすでにあります。</translation>
+    </message>
+    <message>
+        <source>Rename Patch “%1”</source>
+        <translation>パッチ「%1」の名前を変更</translation>
+    </message>
+    <message>
         <source>The highlight layer no longer exists.</source>
         <translation>このハイライトレイヤーはすでに存在しません。</translation>
+    </message>
+    <message>
+        <source>New Patch “%1”</source>
+        <translation>新しいパッチ「%1」</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::HighlightEdits</name>
+    <message>
+        <source>The highlight layer no longer exists.</source>
+        <translation>このハイライトレイヤーはすでに存在しません。</translation>
+    </message>
+    <message>
+        <source>Add Highlight Layer</source>
+        <translation>ハイライトレイヤーを追加</translation>
     </message>
     <message>
         <source>Add Window Highlight</source>
@@ -3653,6 +4011,10 @@ Recover it now?</source>
     <message>
         <source>Delete Highlight Key</source>
         <translation>ハイライトのキーフレームを削除</translation>
+    </message>
+    <message>
+        <source>A highlight is keyed at a finite frame.</source>
+        <translation>ハイライトのキーフレームは有限のフレームに設定してください。</translation>
     </message>
     <message>
         <source>Rotate Highlight</source>
@@ -3701,293 +4063,6 @@ Recover it now?</source>
     <message>
         <source>Change Highlight Combinations</source>
         <translation>ハイライトの組み合わせを変更</translation>
-    </message>
-    <message>
-        <source>Paint Patch “%1”</source>
-        <translation>パッチ「%1」をペイント</translation>
-    </message>
-    <message>
-        <source>New Patch “%1”</source>
-        <translation>新しいパッチ「%1」</translation>
-    </message>
-    <message>
-        <source>Change Blend Sharpness</source>
-        <translation>ブレンドのシャープネスを変更</translation>
-    </message>
-    <message>
-        <source>Change Unspecified Regions</source>
-        <translation>未指定領域のモードを変更</translation>
-    </message>
-    <message>
-        <source>Change Time Interpolation</source>
-        <translation>時間の補間を変更</translation>
-    </message>
-    <message>
-        <source>Change Shading Style</source>
-        <translation>シェーディングスタイルを変更</translation>
-    </message>
-    <message>
-        <source>Change Material Style</source>
-        <translation>マテリアルのスタイルを変更</translation>
-    </message>
-    <message>
-        <source>Change Light Type</source>
-        <translation>ライトの種類を変更</translation>
-    </message>
-    <message>
-        <source>Move Light</source>
-        <translation>ライトを移動</translation>
-    </message>
-    <message>
-        <source>Change Background Colour</source>
-        <translation>背景色を変更</translation>
-    </message>
-    <message>
-        <source>Change Toon Tones</source>
-        <translation>トゥーンの階調を変更</translation>
-    </message>
-    <message>
-        <source>Change Toon Evaluation</source>
-        <translation>トゥーンの評価単位を変更</translation>
-    </message>
-    <message>
-        <source>Change Gooch Shading</source>
-        <translation>Gooch シェーディングを変更</translation>
-    </message>
-    <message>
-        <source>Change Hatching</source>
-        <translation>ハッチングを変更</translation>
-    </message>
-    <message>
-        <source>Show Lines</source>
-        <translation>線を表示</translation>
-    </message>
-    <message>
-        <source>Hide Lines</source>
-        <translation>線を非表示</translation>
-    </message>
-    <message>
-        <source>Change Line Kinds</source>
-        <translation>線の種類を変更</translation>
-    </message>
-    <message>
-        <source>Change Line Style</source>
-        <translation>線のスタイルを変更</translation>
-    </message>
-    <message>
-        <source>Change Stereo Settings</source>
-        <translation>ステレオ設定を変更</translation>
-    </message>
-    <message>
-        <source>The render camera is not valid (eye, target and up must differ).</source>
-        <translation>レンダーカメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
-    </message>
-    <message>
-        <source>Set Render Camera</source>
-        <translation>レンダーカメラを設定</translation>
-    </message>
-    <message>
-        <source>Remove Render Camera</source>
-        <translation>レンダーカメラを削除</translation>
-    </message>
-    <message>
-        <source>The look&apos;s toon tones are not valid.</source>
-        <translation>ルックのトゥーンの階調設定が不正です。</translation>
-    </message>
-    <message>
-        <source>Apply Look</source>
-        <translation>ルックを適用</translation>
-    </message>
-    <message>
-        <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
-        <translation>先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
-    </message>
-    <message>
-        <source>The base model has no vertex %1.</source>
-        <translation>ベースモデルに頂点 %1 はありません。</translation>
-    </message>
-    <message>
-        <source>The brush radius must be a positive number.</source>
-        <translation>ブラシ半径には正の数を指定してください。</translation>
-    </message>
-    <message>
-        <source>The brush needs a valid camera (eye, target and up must differ).</source>
-        <translation>ブラシには有効なカメラが必要です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
-    </message>
-    <message>
-        <source>Brush “%1”</source>
-        <translation>ブラシ「%1」</translation>
-    </message>
-    <message>
-        <source>The light changed while it was being optimised; run Optimise Light for Stereo again.</source>
-        <translation>最適化の途中でライトが変更されました。もう一度「ステレオ用にライトを最適化」を実行してください。</translation>
-    </message>
-    <message>
-        <source>The optimised light is not usable.</source>
-        <translation>最適化したライトは使用できません。</translation>
-    </message>
-    <message>
-        <source>Optimise Light for Stereo</source>
-        <translation>ステレオ用にライトを最適化</translation>
-    </message>
-    <message>
-        <source>base</source>
-        <translation>ベース</translation>
-    </message>
-    <message>
-        <source>Shading offsets need a base model.</source>
-        <translation>シェーディングオフセットにはベースモデルが必要です。</translation>
-    </message>
-    <message>
-        <source>There is no key to hold these shading offsets.</source>
-        <translation>このシェーディングオフセットを保持するキーがありません。</translation>
-    </message>
-    <message>
-        <source>Shading offsets refused: %1.</source>
-        <translation>シェーディングオフセットを適用できません: %1。</translation>
-    </message>
-    <message>
-        <source>Set Shading Offsets (%1)</source>
-        <translation>シェーディングオフセットを設定（%1）</translation>
-    </message>
-    <message>
-        <source>There is no key to clear shading offsets from.</source>
-        <translation>シェーディングオフセットを消去するキーがありません。</translation>
-    </message>
-    <message>
-        <source>Clear Shading Offsets (%1)</source>
-        <translation>シェーディングオフセットを消去（%1）</translation>
-    </message>
-    <message>
-        <source>There is no key whose shading offsets to smooth.</source>
-        <translation>シェーディングオフセットを平滑化するキーがありません。</translation>
-    </message>
-    <message>
-        <source>Smoothing takes 1 to %1 rounds, not %2.</source>
-        <translation>平滑化の回数は 1～%1 の範囲で指定してください（%2 は無効です）。</translation>
-    </message>
-    <message>
-        <source>Smooth Shading Offsets (%1)</source>
-        <translation>シェーディングオフセットを平滑化（%1）</translation>
-    </message>
-    <message>
-        <source>Choose a key to paint shading offsets into first.</source>
-        <translation>先にシェーディングオフセットを描くキーを選んでください。</translation>
-    </message>
-    <message>
-        <source>The brush needs a positive radius and a strength of zero or more.</source>
-        <translation>ブラシには正の半径と 0 以上の強さが必要です。</translation>
-    </message>
-    <message>
-        <source>The shape painted on does not have the base model&apos;s vertices.</source>
-        <translation>描画先の形状の頂点がベースモデルと一致しません。</translation>
-    </message>
-    <message>
-        <source>Paint Shading Offsets (%1)</source>
-        <translation>シェーディングオフセットをペイント（%1）</translation>
-    </message>
-    <message>
-        <source>There is no key to hold the automatic shading offsets.</source>
-        <translation>自動シェーディングオフセットを保持するキーがありません。</translation>
-    </message>
-    <message>
-        <source>The aggressiveness must be between 0 and 1.</source>
-        <translation>適用度は 0～1 の範囲で指定してください。</translation>
-    </message>
-    <message>
-        <source>The percentile must be between 0 and 1.</source>
-        <translation>パーセンタイルは 0～1 の範囲で指定してください。</translation>
-    </message>
-    <message>
-        <source>Bleeding takes 0 to %1 rounds.</source>
-        <translation>にじみの回数は 0～%1 の範囲で指定してください。</translation>
-    </message>
-    <message>
-        <source>The analysis size must be between 16 and 8192 pixels a side.</source>
-        <translation>解析サイズは一辺 16～8192 ピクセルの範囲で指定してください。</translation>
-    </message>
-    <message>
-        <source>The analysis needs a valid camera (eye, target and up must differ).</source>
-        <translation>解析には有効なカメラが必要です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
-    </message>
-    <message>
-        <source>The key “%1” plays no part in this view: look from nearer its direction.</source>
-        <translation>キー「%1」はこの視点では使われていません。キーの方向にもっと近い視点から見てください。</translation>
-    </message>
-    <message>
-        <source>The automatic shading offsets could not be solved for this picture.</source>
-        <translation>この画像では自動シェーディングオフセットを求められませんでした。</translation>
-    </message>
-    <message>
-        <source>Automatic Shading Offsets (%1)</source>
-        <translation>自動シェーディングオフセット（%1）</translation>
-    </message>
-    <message>
-        <source>Change Frame Rate</source>
-        <translation>フレームレートを変更</translation>
-    </message>
-    <message>
-        <source>Change Frame Range</source>
-        <translation>フレーム範囲を変更</translation>
-    </message>
-    <message>
-        <source>The camera is not valid (eye, target and up must differ).</source>
-        <translation>カメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
-    </message>
-    <message>
-        <source>Frame %1 is out of range.</source>
-        <translation>フレーム %1 は範囲外です。</translation>
-    </message>
-    <message>
-        <source>Key Camera at Frame %1</source>
-        <translation>フレーム %1 にカメラのキーフレームを設定</translation>
-    </message>
-    <message>
-        <source>Remove Camera Key at Frame %1</source>
-        <translation>フレーム %1 のカメラのキーフレームを削除</translation>
-    </message>
-    <message>
-        <source>Clear Camera Path</source>
-        <translation>カメラパスを消去</translation>
-    </message>
-    <message>
-        <source>Import a base model before making a turntable.</source>
-        <translation>ターンテーブルを作成する前にベースモデルをインポートしてください。</translation>
-    </message>
-    <message>
-        <source>Make Turntable</source>
-        <translation>ターンテーブルを作成</translation>
-    </message>
-    <message>
-        <source>The animation of %1 is not usable: %2</source>
-        <translation>%1 のアニメーションを使用できません: %2</translation>
-    </message>
-    <message>
-        <source>Import Animated Base</source>
-        <translation>アニメーションするベースモデルをインポート</translation>
-    </message>
-</context>
-<context>
-    <name>celform::model::Export</name>
-    <message>
-        <source>frames must be within ±%1</source>
-        <translation>フレームは ±%1 の範囲内である必要があります</translation>
-    </message>
-    <message>
-        <source>the first frame %1 is after the last frame %2</source>
-        <translation>最初のフレーム %1 が最後のフレーム %2 より後です</translation>
-    </message>
-    <message>
-        <source>no output file</source>
-        <translation>出力ファイルが指定されていません</translation>
-    </message>
-    <message>
-        <source>the aspect ratio must be positive</source>
-        <translation>アスペクト比は正の値である必要があります</translation>
-    </message>
-    <message>
-        <source>has no base model</source>
-        <translation>ベースモデルがありません</translation>
     </message>
 </context>
 <context>
@@ -4201,6 +4276,212 @@ Recover it now?</source>
     <message>
         <source>the importer failed on it (exit code %1): %2</source>
         <translation>インポーターが失敗しました（終了コード %1）: %2</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::KeyEdits</name>
+    <message>
+        <source>Key “%1” already has this view direction; a second key needs a different direction (at least %2° apart).</source>
+        <translation>キー「%1」がすでにこの視線方向を使用しています。別のキーには異なる方向（%2° 以上離れた方向）が必要です。</translation>
+    </message>
+    <message>
+        <source>A key needs a view direction.</source>
+        <translation>キーには視線方向が必要です。</translation>
+    </message>
+    <message>
+        <source>Add Key “%1”</source>
+        <translation>キー「%1」を追加</translation>
+    </message>
+    <message>
+        <source>Import a base model before making keys.</source>
+        <translation>キーを作成する前にベースモデルをインポートしてください。</translation>
+    </message>
+    <message>
+        <source>The key&apos;s camera is not valid (eye, target and up must differ).</source>
+        <translation>キーのカメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
+    </message>
+    <message>
+        <source>The key&apos;s camera sits at the centre of the model; move it away first.</source>
+        <translation>キーのカメラがモデルの中心にあります。先にカメラを中心から離してください。</translation>
+    </message>
+    <message>
+        <source>The drawing no longer exists.</source>
+        <translation>この参照画はすでに存在しません。</translation>
+    </message>
+    <message>
+        <source>Align the drawing “%1” first: its camera gives the key&apos;s view direction.</source>
+        <translation>先に参照画「%1」の位置合わせを行ってください。そのカメラの向きがキーの視線方向になります。</translation>
+    </message>
+    <message>
+        <source>Re-align Key “%1”</source>
+        <translation>キー「%1」を再位置合わせ</translation>
+    </message>
+    <message>
+        <source>Fit Camera to Drawing</source>
+        <translation>カメラを参照画に合わせる</translation>
+    </message>
+    <message>
+        <source>Unlink Key “%1”</source>
+        <translation>キー「%1」のリンクを解除</translation>
+    </message>
+    <message>
+        <source>Link Key “%1” to a Drawing</source>
+        <translation>キー「%1」を参照画にリンク</translation>
+    </message>
+    <message>
+        <source>Remove Key “%1”</source>
+        <translation>キー「%1」を削除</translation>
+    </message>
+    <message>
+        <source>Rename Key to “%1”</source>
+        <translation>キーの名前を「%1」に変更</translation>
+    </message>
+    <message>
+        <source>Enable Key “%1”</source>
+        <translation>キー「%1」を有効化</translation>
+    </message>
+    <message>
+        <source>Disable Key “%1”</source>
+        <translation>キー「%1」を無効化</translation>
+    </message>
+    <message>
+        <source>has %1 vertices, but the base model has %2: a key deformation needs the base model&apos;s vertex count and order</source>
+        <translation>頂点数が %1 ですが、ベースモデルの頂点数は %2 です。キー変形にはベースモデルと同じ頂点数と頂点順序が必要です</translation>
+    </message>
+    <message>
+        <source>its triangles differ from the base model&apos;s; only the vertex positions are used</source>
+        <translation>三角形の構成がベースモデルと異なります。頂点位置のみを使用します</translation>
+    </message>
+    <message>
+        <source>Import Deformation into “%1”</source>
+        <translation>「%1」に変形をインポート</translation>
+    </message>
+    <message>
+        <source>Fit Shape to Drawing</source>
+        <translation>形状を参照画に合わせる</translation>
+    </message>
+    <message>
+        <source>Choose a key to deform first (Scene panel, then Edit Key).</source>
+        <translation>先に変形するキーを選んでください（「シーン」パネルで選択してから「ブラシでキーを編集」）。</translation>
+    </message>
+    <message>
+        <source>The base model has no vertex %1.</source>
+        <translation>ベースモデルに頂点 %1 はありません。</translation>
+    </message>
+    <message>
+        <source>The brush radius must be a positive number.</source>
+        <translation>ブラシ半径には正の数を指定してください。</translation>
+    </message>
+    <message>
+        <source>The brush needs a valid camera (eye, target and up must differ).</source>
+        <translation>ブラシには有効なカメラが必要です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
+    </message>
+    <message>
+        <source>Brush “%1”</source>
+        <translation>ブラシ「%1」</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::LookEdits</name>
+    <message>
+        <source>Change Blend Sharpness</source>
+        <translation>ブレンドのシャープネスを変更</translation>
+    </message>
+    <message>
+        <source>Change Unspecified Regions</source>
+        <translation>未指定領域のモードを変更</translation>
+    </message>
+    <message>
+        <source>Change Time Interpolation</source>
+        <translation>時間の補間を変更</translation>
+    </message>
+    <message>
+        <source>Change Shading Style</source>
+        <translation>シェーディングスタイルを変更</translation>
+    </message>
+    <message>
+        <source>Change Material Style</source>
+        <translation>マテリアルのスタイルを変更</translation>
+    </message>
+    <message>
+        <source>Change Light Type</source>
+        <translation>ライトの種類を変更</translation>
+    </message>
+    <message>
+        <source>Move Light</source>
+        <translation>ライトを移動</translation>
+    </message>
+    <message>
+        <source>The light changed while it was being optimised; run Optimise Light for Stereo again.</source>
+        <translation>最適化の途中でライトが変更されました。もう一度「ステレオ用にライトを最適化」を実行してください。</translation>
+    </message>
+    <message>
+        <source>The optimised light is not usable.</source>
+        <translation>最適化したライトは使用できません。</translation>
+    </message>
+    <message>
+        <source>Optimise Light for Stereo</source>
+        <translation>ステレオ用にライトを最適化</translation>
+    </message>
+    <message>
+        <source>Change Background Colour</source>
+        <translation>背景色を変更</translation>
+    </message>
+    <message>
+        <source>Change Toon Tones</source>
+        <translation>トゥーンの階調を変更</translation>
+    </message>
+    <message>
+        <source>Change Toon Evaluation</source>
+        <translation>トゥーンの評価単位を変更</translation>
+    </message>
+    <message>
+        <source>Change Gooch Shading</source>
+        <translation>Gooch シェーディングを変更</translation>
+    </message>
+    <message>
+        <source>Change Hatching</source>
+        <translation>ハッチングを変更</translation>
+    </message>
+    <message>
+        <source>Show Lines</source>
+        <translation>線を表示</translation>
+    </message>
+    <message>
+        <source>Hide Lines</source>
+        <translation>線を非表示</translation>
+    </message>
+    <message>
+        <source>Change Line Kinds</source>
+        <translation>線の種類を変更</translation>
+    </message>
+    <message>
+        <source>Change Line Style</source>
+        <translation>線のスタイルを変更</translation>
+    </message>
+    <message>
+        <source>Change Stereo Settings</source>
+        <translation>ステレオ設定を変更</translation>
+    </message>
+    <message>
+        <source>The render camera is not valid (eye, target and up must differ).</source>
+        <translation>レンダーカメラが無効です（カメラ位置、注視点、上方向はそれぞれ異なる必要があります）。</translation>
+    </message>
+    <message>
+        <source>Set Render Camera</source>
+        <translation>レンダーカメラを設定</translation>
+    </message>
+    <message>
+        <source>Remove Render Camera</source>
+        <translation>レンダーカメラを削除</translation>
+    </message>
+    <message>
+        <source>The look&apos;s toon tones are not valid.</source>
+        <translation>ルックのトゥーンの階調設定が不正です。</translation>
+    </message>
+    <message>
+        <source>Apply Look</source>
+        <translation>ルックを適用</translation>
     </message>
 </context>
 <context>
@@ -4806,6 +5087,46 @@ Recover it now?</source>
         <source>the base animation has no base model</source>
         <translation>ベースアニメーションにベースモデルがありません</translation>
     </message>
+    <message>
+        <source>was not saved: %1 holds a value that is not a finite number</source>
+        <translation>保存されませんでした: %1 に有限でない値が含まれています</translation>
+    </message>
+    <message>
+        <source>drawing “%1” has an opacity outside 0 to 1</source>
+        <translation>参照画「%1」の不透明度が 0～1 の範囲外です</translation>
+    </message>
+    <message>
+        <source>drawing “%1”: %2</source>
+        <translation>参照画「%1」: %2</translation>
+    </message>
+    <message>
+        <source>key “%1” has a view direction of zero length</source>
+        <translation>キー「%1」の視線方向の長さがゼロです</translation>
+    </message>
+    <message>
+        <source>the blend sharpness is not between 0 and %1</source>
+        <translation>ブレンドのシャープネスが 0～%1 の範囲外です</translation>
+    </message>
+    <message>
+        <source>drawing “%1” has the id %2 of another object</source>
+        <translation>参照画「%1」の ID %2 は別のオブジェクトの ID です</translation>
+    </message>
+    <message>
+        <source>key “%1” has the id %2 of another object</source>
+        <translation>キー「%1」の ID %2 は別のオブジェクトの ID です</translation>
+    </message>
+    <message>
+        <source>key “%1” is linked to drawing %2, which the project does not hold</source>
+        <translation>キー「%1」が、プロジェクトにない参照画 %2 にリンクされています</translation>
+    </message>
+    <message>
+        <source>is damaged: its header has unknown flags (%1)</source>
+        <translation>破損しています: ヘッダーに不明なフラグ（%1）があります</translation>
+    </message>
+    <message>
+        <source>is damaged: its format_version is not a version number</source>
+        <translation>破損しています: format_version がバージョン番号ではありません</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
@@ -4854,6 +5175,65 @@ Recover it now?</source>
     <message>
         <source>the curvature does not match the shape</source>
         <translation>曲率が形状と一致しません</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::ShadingEdits</name>
+    <message>
+        <source>Shading offsets need a base model.</source>
+        <translation>シェーディングオフセットにはベースモデルが必要です。</translation>
+    </message>
+    <message>
+        <source>There is no key to hold these shading offsets.</source>
+        <translation>このシェーディングオフセットを保持するキーがありません。</translation>
+    </message>
+    <message>
+        <source>Shading offsets refused: %1.</source>
+        <translation>シェーディングオフセットを適用できません: %1。</translation>
+    </message>
+    <message>
+        <source>Set Shading Offsets (%1)</source>
+        <translation>シェーディングオフセットを設定（%1）</translation>
+    </message>
+    <message>
+        <source>There is no key to clear shading offsets from.</source>
+        <translation>シェーディングオフセットを消去するキーがありません。</translation>
+    </message>
+    <message>
+        <source>Clear Shading Offsets (%1)</source>
+        <translation>シェーディングオフセットを消去（%1）</translation>
+    </message>
+    <message>
+        <source>There is no key whose shading offsets to smooth.</source>
+        <translation>シェーディングオフセットを平滑化するキーがありません。</translation>
+    </message>
+    <message>
+        <source>Smoothing takes 1 to %1 rounds, not %2.</source>
+        <translation>平滑化の回数は 1～%1 の範囲で指定してください（%2 は無効です）。</translation>
+    </message>
+    <message>
+        <source>Smooth Shading Offsets (%1)</source>
+        <translation>シェーディングオフセットを平滑化（%1）</translation>
+    </message>
+    <message>
+        <source>Choose a key to paint shading offsets into first.</source>
+        <translation>先にシェーディングオフセットを描くキーを選んでください。</translation>
+    </message>
+    <message>
+        <source>The brush needs a positive radius and a strength of zero or more.</source>
+        <translation>ブラシには正の半径と 0 以上の強さが必要です。</translation>
+    </message>
+    <message>
+        <source>The shape painted on does not have the base model&apos;s vertices.</source>
+        <translation>描画先の形状の頂点がベースモデルと一致しません。</translation>
+    </message>
+    <message>
+        <source>Paint Shading Offsets (%1)</source>
+        <translation>シェーディングオフセットをペイント（%1）</translation>
+    </message>
+    <message>
+        <source>Automatic Shading Offsets (%1)</source>
+        <translation>自動シェーディングオフセット（%1）</translation>
     </message>
 </context>
 <context>
@@ -5167,6 +5547,73 @@ Recover it now?</source>
     <message>
         <source>Shading offsets go into the %1.</source>
         <translation>シェーディングオフセットの書き込み先: %1。</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::FitGroup</name>
+    <message>
+        <source>Fit to Drawing</source>
+        <translation>参照画に合わせる</translation>
+    </message>
+    <message>
+        <source>How well the key meets its drawing&apos;s outline, seen through the key&apos;s camera at the drawing&apos;s frame: the overlap of the two filled shapes (IoU, 1 is a perfect match) and the mean distance between their outlines in drawing pixels. Measured on the control mesh&apos;s silhouette</source>
+        <translation>参照画のフレームでキーのカメラから見たとき、キーが参照画の輪郭とどれだけ一致しているか: 塗りつぶした 2 つの形の重なり（IoU、1 で完全に一致）と、両者の輪郭間の平均距離（参照画のピクセル単位）。コントロールメッシュのシルエットで測定します</translation>
+    </message>
+    <message>
+        <source>The faces Fit Shape may move: the whole model, or a painted face set</source>
+        <translation>「形状を参照画に合わせる」で動かせる面: モデル全体、またはペイントした面セット</translation>
+    </message>
+    <message>
+        <source>&amp;Region:</source>
+        <translation>領域(&amp;R):</translation>
+    </message>
+    <message>
+        <source>A painted face set whose vertices stay where they are</source>
+        <translation>頂点を動かさずに固定する、ペイントした面セット</translation>
+    </message>
+    <message>
+        <source>&amp;Pinned:</source>
+        <translation>ピン留め(&amp;P):</translation>
+    </message>
+    <message>
+        <source>How much of the fitted deformation Fit Shape applies: 1 all of it, 0.5 half way</source>
+        <translation>「形状を参照画に合わせる」で合わせ込んだ変形をどれだけ適用するか: 1 ですべて、0.5 で半分</translation>
+    </message>
+    <message>
+        <source>&amp;Strength:</source>
+        <translation>強さ(&amp;S):</translation>
+    </message>
+    <message>
+        <source>&amp;X mirror (the brush&apos;s)</source>
+        <translation>X ミラー（ブラシと共通）(&amp;X)</translation>
+    </message>
+    <message>
+        <source>Keep the fitted shape symmetric across x = 0: the brush&apos;s X mirror, one setting for both</source>
+        <translation>合わせた形状を x = 0 を挟んで左右対称に保ちます。ブラシの X ミラーと共通の設定です</translation>
+    </message>
+    <message>
+        <source>Whole model</source>
+        <translation>モデル全体</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <source>Link the key to a drawing to measure how well it meets it.</source>
+        <translation>キーを参照画にリンクすると、どれだけ一致しているかを測定できます。</translation>
+    </message>
+    <message>
+        <source>Against “%1”: the model is not in the key&apos;s view.</source>
+        <translation>「%1」との比較: モデルがキーの視野に入っていません。</translation>
+    </message>
+    <message>
+        <source>Against “%1”:
+silhouette IoU %2
+chamfer distance %3 px</source>
+        <translation>「%1」との比較:
+シルエットIoU %2
+チャンファー距離 %3 px</translation>
     </message>
 </context>
 <context>
@@ -5964,13 +6411,62 @@ Recover it now?</source>
         <source>Paint shading offsets into the %1: drag adds, Ctrl+drag subtracts, Shift+drag smooths; F resizes the brush.</source>
         <translation>%1 にシェーディングオフセットを描きます: ドラッグで加算、Ctrl + ドラッグで減算、Shift + ドラッグで平滑化。F でブラシの大きさを変更します。</translation>
     </message>
+</context>
+<context>
+    <name>celform::views::OutlineSettingsBox</name>
     <message>
-        <source>Hold the cursor over the model to resize the brush there.</source>
-        <translation>ブラシの大きさを変えるには、カーソルをモデルの上に置いてください。</translation>
+        <source>Outline for Fit to Drawing</source>
+        <translation>「参照画に合わせる」用の輪郭</translation>
     </message>
     <message>
-        <source>Move the mouse to resize the brush; click or Enter to keep, Esc to cancel.</source>
-        <translation>マウスを動かしてブラシの大きさを変えます。クリックか Enter で確定、Esc で取り消し。</translation>
+        <source>A&amp;utomatic</source>
+        <translation>自動(&amp;U)</translation>
+    </message>
+    <message>
+        <source>Choose the threshold from the drawing&apos;s histogram (Otsu&apos;s method); off: set it by hand</source>
+        <translation>参照画のヒストグラムからしきい値を決めます（大津の手法）。オフ: 手動で設定します</translation>
+    </message>
+    <message>
+        <source>Ink is where the drawing is darker than this (0 black, 1 white); a drawing with transparency uses its alpha instead</source>
+        <translation>参照画がこの値より暗い部分をインクとみなします（0 が黒、1 が白）。透明度のある参照画では代わりにアルファを使います</translation>
+    </message>
+    <message>
+        <source>&amp;Threshold:</source>
+        <translation>しきい値(&amp;T):</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Radius in drawing pixels that closes gaps in open line art: gaps up to about twice this wide are bridged. 0 closes nothing</source>
+        <translation>閉じていない線画のすき間を閉じる半径（参照画のピクセル単位）。この値の約 2 倍までの幅のすき間がつながります。0 では何も閉じません</translation>
+    </message>
+    <message>
+        <source>C&amp;losing radius:</source>
+        <translation>クロージング半径(&amp;L):</translation>
+    </message>
+    <message>
+        <source>&amp;Inner lines</source>
+        <translation>内側の線(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Keep the shapes the drawing&apos;s inner lines enclose as holes (off: the outer outline alone, the figure filled)</source>
+        <translation>参照画の内側の線が囲む形を穴として残します（オフ: 外側の輪郭だけを使い、図形は塗りつぶします）</translation>
+    </message>
+    <message>
+        <source>read from the drawing&apos;s transparency</source>
+        <translation>参照画の透明度から読み取り</translation>
+    </message>
+    <message>
+        <source>threshold %1</source>
+        <translation>しきい値 %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Outline found (%1): %n contour(s). O shows it in the viewport.</source>
+        <translation>
+            <numerusform>輪郭を検出しました（%1）: 輪郭線 %n 本。O キーでビューポートに表示します。</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6245,14 +6741,6 @@ Size %4 × %5 × %6</source>
     <message>
         <source>Create Key</source>
         <translation>キーを作成</translation>
-    </message>
-    <message>
-        <source>Import Key Deformation</source>
-        <translation>キー変形をインポート</translation>
-    </message>
-    <message>
-        <source>Import Deformation</source>
-        <translation>変形をインポート</translation>
     </message>
     <message>
         <source>%1 model points, %2 drawing points: %3 pairs (six or more needed)</source>

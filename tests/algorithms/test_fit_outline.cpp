@@ -80,6 +80,16 @@ private slots:
         std::vector<std::int64_t> flat(256, 0);
         flat[0] = 100;
         QCOMPARE(otsuThreshold(flat), -1);
+        // Pure black ink on white paper: every level between ties; the middle one is chosen.
+        std::vector<std::int64_t> ink(256, 0);
+        ink[0] = 300;
+        ink[255] = 7000;
+        QCOMPARE(otsuThreshold(ink), 128);
+        // Levels at 20 and 220 only: between them, again the middle.
+        std::vector<std::int64_t> two(256, 0);
+        two[20] = 10;
+        two[220] = 10;
+        QCOMPARE(otsuThreshold(two), 120);
     }
 
     void filledDiscGivesItsCircle()

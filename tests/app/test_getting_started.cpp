@@ -57,8 +57,8 @@ private slots:
         QVERIFY(shoot(window, QStringLiteral("getting-started-1-open.png")));
         made << QStringLiteral("getting-started-1-open.png");
 
-        // Step 2: the side drawing, the right view, a little orbit, the outline.
-        QVERIFY(clickSceneItem(window, QStringLiteral("tuxpaint_elephant")));
+        // Step 2: the model-sheet drawing of the side, the right view, a little orbit, the outline.
+        QVERIFY(clickSceneItem(window, QStringLiteral("elephant-sheet-side")));
         window.propertiesPanel()->alignButton()->click();
         QCOMPARE(viewport->tool(), Viewport::Tool::Align);
         window.action(QStringLiteral("actionViewFront"))->trigger();
@@ -68,38 +68,56 @@ private slots:
         QVERIFY(viewport->drawingOverlay().outline());
         QVERIFY(shoot(window, QStringLiteral("getting-started-2-align.png")));
         made << QStringLiteral("getting-started-2-align.png");
-        window.action(QStringLiteral("actionDrawingOutline"))->trigger();
         window.action(QStringLiteral("actionNavigate"))->trigger();
 
-        // Step 3: a key, the brush, a stroke, the circle under the cursor.
+        // Step 3: a key, then Fit Camera and Fit Shape, each one undo step.
         QPushButton* createKey = window.propertiesPanel()->createKeyButton();
         QVERIFY(createKey->isEnabled());
         createKey->click();
+        QUndoStack* undo = window.document()->undoStack();
+        const int beforeFits = undo->index();
+        QAction* fitCamera = window.action(QStringLiteral("actionFitCamera"));
+        QAction* fitShape = window.action(QStringLiteral("actionFitShape"));
+        QTRY_VERIFY(fitCamera->isEnabled());
+        fitCamera->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(undo->index(), beforeFits + 1, 60000);
+        QTRY_VERIFY(fitShape->isEnabled());
+        fitShape->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(undo->index(), beforeFits + 2, 60000);
+        QCOMPARE(undo->text(beforeFits), QStringLiteral("Fit Camera to Drawing"));
+        QCOMPARE(undo->text(beforeFits + 1), QStringLiteral("Fit Shape to Drawing"));
+        window.action(QStringLiteral("actionDrawingOutline"))->trigger();
         window.propertiesPanel()->editKeyButton()->click();
         QCOMPARE(viewport->tool(), Viewport::Tool::Brush);
+        window.action(QStringLiteral("actionDrawingOutline"))->trigger();
+        QVERIFY(viewport->drawingOverlay().outline());
+        QVERIFY(shoot(window, QStringLiteral("getting-started-3-fit.png")));
+        made << QStringLiteral("getting-started-3-fit.png");
+        window.action(QStringLiteral("actionDrawingOutline"))->trigger();
+
+        // Step 4: the brush touches up, the circle under the cursor.
         test::waitForRender(viewport);
-        // A point on the model near its centre: pull it towards the drawing's back.
         const QPoint centre = viewport->projectToWidget(viewport->modelCentre()).toPoint();
         QPoint nose = centre;
         for (int dx = 0; dx < 200 && !viewport->pickSurface(nose); dx += 5)
             nose = centre + QPoint(-dx, dx / 2);
         QVERIFY(viewport->pickSurface(nose));
-        const int steps = window.document()->undoStack()->index();
-        test::drag(viewport, Qt::LeftButton, Qt::NoModifier, nose, nose + QPoint(-25, 10));
-        QCOMPARE(window.document()->undoStack()->index(), steps + 1);
+        const int steps = undo->index();
+        test::drag(viewport, Qt::LeftButton, Qt::NoModifier, nose, nose + QPoint(-6, 3));
+        QCOMPARE(undo->index(), steps + 1);
         QMouseEvent hover(QEvent::MouseMove, nose, viewport->mapToGlobal(nose), Qt::NoButton, Qt::NoButton, {});
         QApplication::sendEvent(viewport, &hover);
         QTest::qWait(60);
-        QVERIFY(shoot(window, QStringLiteral("getting-started-3-brush.png")));
-        made << QStringLiteral("getting-started-3-brush.png");
+        QVERIFY(shoot(window, QStringLiteral("getting-started-4-brush.png")));
+        made << QStringLiteral("getting-started-4-brush.png");
 
-        // Step 4: the preview from an orbited view.
+        // Step 5: the preview from an orbited view.
         window.action(QStringLiteral("actionNavigate"))->trigger();
         window.action(QStringLiteral("actionPreview"))->trigger();
         test::drag(viewport, Qt::LeftButton, Qt::AltModifier, c, c + QPoint(-60, 10));
         QVERIFY(viewport->isPreview());
-        QVERIFY(shoot(window, QStringLiteral("getting-started-4-preview.png")));
-        made << QStringLiteral("getting-started-4-preview.png");
+        QVERIFY(shoot(window, QStringLiteral("getting-started-5-preview.png")));
+        made << QStringLiteral("getting-started-5-preview.png");
 
         // The guide shows exactly these pictures.
         QFile guide(m_docs + QStringLiteral("/getting-started.md"));

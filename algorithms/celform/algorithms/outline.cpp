@@ -338,8 +338,11 @@ int otsuThreshold(const std::vector<std::int64_t>& histogram)
     }
     if (levels < 2)
         return -1;
+    // Levels between two populated bins all split the histogram the same way (black ink on
+    // white paper ties every level from 1 to 255): the middle of the tied range is the threshold
+    // an artist expects, not its first level.
     double below = 0.0, sumBelow = 0.0, best = -1.0;
-    int bestT = -1;
+    int bestT = -1, lastT = -1;
     for (std::size_t t = 1; t < histogram.size(); ++t) {
         below += double(histogram[t - 1]);
         sumBelow += double(t - 1) * double(histogram[t - 1]);
@@ -348,12 +351,14 @@ int otsuThreshold(const std::vector<std::int64_t>& histogram)
             continue;
         const double m0 = sumBelow / below, m1 = (sum - sumBelow) / above;
         const double between = below * above * (m0 - m1) * (m0 - m1);
-        if (between > best) {
+        if (between > best * (1.0 + 1e-12)) {
             best = between;
-            bestT = int(t);
+            bestT = lastT = int(t);
+        } else if (between >= best * (1.0 - 1e-12)) {
+            lastT = int(t);
         }
     }
-    return bestT;
+    return bestT < 0 ? -1 : (bestT + lastT) / 2;
 }
 
 double polygonArea(const std::vector<Eigen::Vector2d>& polygon)
