@@ -395,7 +395,6 @@ void MainWindow::optimiseLightForStereo()
                 return;
             }
             const int before = algo::segmentsInWindow(report->segmentsBefore);
-            const int after = algo::segmentsInWindow(report->segmentsAfter);
             if (report->after == report->before) {
                 statusBar()->showMessage(
                     tr("The light already suits the analysis (%1 of %2 segments inside the window).")
@@ -410,20 +409,12 @@ void MainWindow::optimiseLightForStereo()
                 showError(e.message());
                 return;
             }
-            const QString text = tr("Light optimised: depth error MSE %1 → %2, %3 → %4 of %5 segments inside the "
-                                    "window (%6 ms)")
-                                     .arg(report->mseBefore, 0, 'g', 4)
-                                     .arg(report->mseAfter, 0, 'g', 4)
-                                     .arg(before)
-                                     .arg(after)
-                                     .arg(report->segmentsBefore.size())
-                                     .arg(report->milliseconds, 0, 'f', 0);
-            statusBar()->showMessage(text, 10000);
-            log(LogLevel::Info, text);
-            if (report->mseAfter > report->mseBefore)
-                log(LogLevel::Warning,
-                    tr("The segments' ratios improved but the depth error rose: try another start light (move it, "
-                       "then optimise again) or a more lenient window in the Depth tab."));
+            const LightOptimisationSummary summary = summariseLightOptimisation(*report);
+            log(LogLevel::Info, summary.text);
+            if (!summary.warning.isEmpty())
+                log(LogLevel::Warning, summary.warning);
+            // The warning, when there is one, is what the artist must read first.
+            statusBar()->showMessage(summary.warning.isEmpty() ? summary.text : summary.warning, 10000);
         },
         [this](const QString& message) { showError(message); });
 }

@@ -15,6 +15,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
@@ -80,6 +81,27 @@ private slots:
         for (QAction* other : window.findChildren<QAction*>())
             if (other != action)
                 QVERIFY2(!other->shortcuts().contains(action->shortcut()), qPrintable(other->objectName()));
+    }
+
+    // A label with a mnemonic and no buddy shows its '&' as text ("F&rames:").
+    void labelsFocusTheirFields()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
+        app::ExportDialog* dialog
+            = openExportDialog(window, model::ExportFormat::Pc2, 0, 1, QDir::temp().filePath(QStringLiteral("x.pc2")));
+        QVERIFY(dialog);
+        int mnemonics = 0;
+        for (QLabel* label : dialog->findChildren<QLabel*>()) {
+            if (!label->text().contains(QLatin1Char('&')))
+                continue;
+            ++mnemonics;
+            QVERIFY2(label->buddy(), qPrintable(label->text()));
+        }
+        QVERIFY(mnemonics >= 3);
+        QCOMPARE(dialog->findChild<QLabel*>(QStringLiteral("exportFramesLabel"))->buddy(), dialog->firstFrameBox());
+        QCOMPARE(dialog->findChild<QLabel*>(QStringLiteral("exportFileLabel"))->buddy(), dialog->fileEdit());
+        dialog->reject();
     }
 
     void exportsAPointCache()

@@ -6,12 +6,20 @@
 
 #include "editor/jobs/auto_offsets_job.h"
 #include "editor/jobs/job_runner.h"
+#include "editor/jobs/light_optimisation_job.h"
 #include "editor/main_window.h"
 
 #include "celform/model/data/io_error.h"
 #include "celform/model/document/document.h"
+#include "celform/views/overlays/depth_analysis_runner.h"
+#include "celform/views/panels/depth_panel.h"
 #include "celform/views/viewport/viewport.h"
 
+#include <QRegularExpression>
+#include <QStatusBar>
+#include <QTimer>
+#include <QApplication>
+#include <QDialog>
 #include <QMessageBox>
 #include <QProgressDialog>
 #include <QPushButton>
@@ -269,6 +277,74 @@ private slots:
         QCOMPARE(applied, QThread::currentThread());
         QCOMPARE(doc->undoStack()->count(), steps + 1);
         QCOMPARE(doc->undoStack()->text(steps), QStringLiteral("Automatic Shading Offsets (base)"));
+    }
+
+    // Automatic Shading Offsets says the figures the Depth tab then shows: one analysis (the tab's
+    // size and settings), one set of numbers.
+    void automaticOffsetsAgreeWithTheDepthTab()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window));
+        views::DepthAnalysisRunner* depth = window.depthPanel()->runner();
+        // The artist's own analysis settings in the Depth tab (not the defaults) and a smaller
+        // picture: the action must analyse as the tab does.
+        model::AnalysisSettings settings = depth->settings();
+        settings.depthThreshold = 0.005;
+        settings.minSegmentPixels *= 4;
+        depth->setSettings(settings);
+        depth->setMaximumSide(400);
+        depth->setActive(true);
+        QTRY_VERIFY_WITH_TIMEOUT(depth->result() && depth->isCurrent() && !depth->isBusy(), 60000);
+        const double mseBefore = depth->result()->meanSquaredError;
+        QTimer::singleShot(0, &window, [] {
+            for (QWidget* w : QApplication::topLevelWidgets())
+                if (auto* dialog = qobject_cast<QDialog*>(w); dialog && dialog->isVisible())
+                    dialog->accept();
+        });
+        window.action(QStringLiteral("actionAutoOffsets"))->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            window.statusBar()->currentMessage().startsWith(QStringLiteral("Automatic shading")), 120000);
+        const QString said = window.statusBar()->currentMessage();
+        const QRegularExpression figures(
+            QStringLiteral("(\\d+) segments; depth error MSE (\\S+) before, (\\S+) after"));
+        const QRegularExpressionMatch m = figures.match(said);
+        QVERIFY2(m.hasMatch(), qPrintable(said));
+        QTRY_VERIFY_WITH_TIMEOUT(depth->result() && depth->isCurrent() && !depth->isBusy()
+                && std::abs(depth->result()->meanSquaredError - mseBefore) > 0.0,
+            60000);
+        const auto& after = *depth->result();
+        QCOMPARE(m.captured(1).toInt(), int(after.segmentStats.size()));
+        QVERIFY2(std::abs(m.captured(2).toDouble() - mseBefore) <= 1e-3 * mseBefore, qPrintable(said));
+        QVERIFY2(std::abs(m.captured(3).toDouble() - after.meanSquaredError) <= 1e-3 * after.meanSquaredError,
+            qPrintable(said + QStringLiteral(" / tab: ") + QString::number(after.meanSquaredError)));
+    }
+
+    // Optimise Light for Stereo says what it lowered first, and warns when fewer segments end
+    // inside the window ("10 -> 6 of 23 segments" read as a failure).
+    void lightOptimisationSaysWhatImproved()
+    {
+        model::LightOptimisationReport report;
+        report.run.objectiveBefore = 2.0;
+        report.run.objectiveAfter = 0.5;
+        report.mseBefore = 3e-4;
+        report.mseAfter = 2e-4;
+        auto segments = [](int inside, int total) {
+            std::vector<algo::SegmentStats> s(static_cast<std::size_t>(total));
+            for (int i = 0; i < total; ++i)
+                s[std::size_t(i)].inWindow = i < inside;
+            return s;
+        };
+        report.segmentsBefore = segments(10, 23);
+        report.segmentsAfter = segments(6, 23);
+        app::LightOptimisationSummary summary = app::summariseLightOptimisation(report);
+        QVERIFY2(summary.text.contains(QStringLiteral("75 % closer")), qPrintable(summary.text));
+        QVERIFY2(summary.warning.contains(QStringLiteral("10 → 6 of 23")), qPrintable(summary.warning));
+        report.segmentsAfter = segments(14, 23);
+        summary = app::summariseLightOptimisation(report);
+        QVERIFY(summary.warning.isEmpty());
+        QVERIFY(summary.text.contains(QStringLiteral("14 of 23 segments inside it (before: 10)")));
+        report.mseAfter = 4e-4;
+        QVERIFY(app::summariseLightOptimisation(report).warning.contains(QStringLiteral("depth error rose")));
     }
 };
 

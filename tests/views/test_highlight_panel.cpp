@@ -82,6 +82,36 @@ private slots:
         m_doc.reset();
     }
 
+    // The key strip shows the scene's range (it said "of 48" over frames 0-47), and no number is
+    // cut by a squeezed spin box.
+    void followsTheSceneRangeAndShowsWholeNumbers()
+    {
+        QCOMPARE(child<QSpinBox>("highlightLastFrame")->value(), 47);
+        QCOMPARE(child<QSpinBox>("highlightFrame")->maximum(), 47);
+        celform::model::SceneTime time = m_doc->data().time;
+        time.firstFrame = 10;
+        time.lastFrame = 99;
+        m_doc->animation().setSceneTime(time);
+        QCOMPARE(child<QSpinBox>("highlightLastFrame")->value(), 99);
+        QCOMPARE(child<QSpinBox>("highlightFrame")->minimum(), 10);
+        QCOMPARE(child<QSpinBox>("highlightFrame")->maximum(), 99);
+        m_doc->undoStack()->undo();
+        QCOMPARE(child<QSpinBox>("highlightLastFrame")->value(), 47);
+
+        QTest::mouseClick(child<QPushButton>("addHighlightLayer"), Qt::LeftButton);
+        QTest::qWait(20);
+        int checked = 0;
+        for (QDoubleSpinBox* spin : m_panel->findChildren<QDoubleSpinBox*>()) {
+            if (!spin->isVisibleTo(m_panel.get()))
+                continue;
+            ++checked;
+            QVERIFY2(spin->width() >= spin->minimumSizeHint().width(),
+                qPrintable(spin->objectName()
+                    + QStringLiteral(": %1 < %2").arg(spin->width()).arg(spin->minimumSizeHint().width())));
+        }
+        QVERIFY(checked >= 5);
+    }
+
     void keysThroughTheTimeline()
     {
         const auto& tracks = m_doc->data().look.highlights;

@@ -8,6 +8,8 @@
 #include "celform/model/analysis/auto_offsets.h"
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
+#include "celform/views/overlays/depth_analysis_runner.h"
+#include "celform/views/panels/depth_panel.h"
 #include "celform/views/tools/offset_brush_tool.h"
 #include "celform/views/viewport/viewport.h"
 
@@ -87,10 +89,13 @@ void autoOffsetsDialog(MainWindow* window)
     model::AutoOffsetsRequest request;
     request.target = {model::ObjectId(target->currentData().toDouble()), doc->currentFrame()};
     request.camera = viewport->camera();
-    // The picture the viewport shows, at most 1024 pixels a side (the Depth panel's size).
-    const double scale = std::min(1.0, 1024.0 / std::max(1, std::max(viewport->width(), viewport->height())));
-    request.width = std::max(16, int(viewport->width() * scale));
-    request.height = std::max(16, int(viewport->height() * scale));
+    // The Depth tab's own analysis (its picture size and settings), so that the figures said here
+    // are the ones the tab shows once it has analysed the new offsets.
+    const views::DepthAnalysisRunner* depth = window->depthPanel()->runner();
+    const QSize size = depth->analysisSize();
+    request.width = std::max(16, size.width());
+    request.height = std::max(16, size.height());
+    request.analysis = depth->settings();
     request.aggressiveness = float(aggressiveness->value() / 100.0);
     request.percentile = float(percentile->value());
     request.bleed = bleed->value();

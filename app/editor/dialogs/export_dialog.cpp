@@ -83,8 +83,16 @@ ExportDialog::ExportDialog(const model::Document* document, QWidget* parent)
     file->addWidget(browseButton);
     auto* form = new QFormLayout(this);
     form->addRow(tr("&Format:"), m_format);
-    form->addRow(tr("F&rames:"), range);
-    form->addRow(tr("F&ile:"), file);
+    // A row whose field is a layout gets a label without a buddy, which shows its '&' as text:
+    // the labels name the field their mnemonic focuses.
+    auto* framesLabel = new QLabel(tr("F&rames:"), this);
+    framesLabel->setObjectName(QStringLiteral("exportFramesLabel"));
+    framesLabel->setBuddy(m_first);
+    form->addRow(framesLabel, range);
+    auto* fileLabel = new QLabel(tr("F&ile:"), this);
+    fileLabel->setObjectName(QStringLiteral("exportFileLabel"));
+    fileLabel->setBuddy(m_file);
+    form->addRow(fileLabel, file);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
     buttons->addButton(tr("&Export"), QDialogButtonBox::AcceptRole)->setObjectName(QStringLiteral("exportButton"));
     form->addRow(buttons);

@@ -4,6 +4,7 @@
 #include "editor/jobs/job_runner.h"
 
 #include <QCoreApplication>
+#include <QStringList>
 
 namespace celform::app {
 namespace {
@@ -14,6 +15,44 @@ struct LightText {
 };
 
 } // namespace
+
+LightOptimisationSummary summariseLightOptimisation(const model::LightOptimisationReport& report)
+{
+    LightOptimisationSummary summary;
+    const int before = algo::segmentsInWindow(report.segmentsBefore);
+    const int after = algo::segmentsInWindow(report.segmentsAfter);
+    const int segments = int(report.segmentsBefore.size());
+    const double distanceBefore = report.run.objectiveBefore;
+    const double distanceAfter = report.run.objectiveAfter;
+    const double closer = distanceBefore > 0.0 ? 100.0 * (distanceBefore - distanceAfter) / distanceBefore : 0.0;
+    // What the optimiser lowers comes first (paper 3, 4.1: the segments' distance from the window),
+    // then the count inside it, which may fall while the whole comes closer.
+    summary.text = LightText::tr("Light optimised: the segments' bright/dark ratios are %1 % closer to the window "
+                                 "(distance %2 → %3); %4 of %5 segments inside it (before: %6); depth error MSE "
+                                 "%7 → %8 (%9 ms)")
+                       .arg(closer, 0, 'f', 0)
+                       .arg(distanceBefore, 0, 'g', 3)
+                       .arg(distanceAfter, 0, 'g', 3)
+                       .arg(after)
+                       .arg(segments)
+                       .arg(before)
+                       .arg(report.mseBefore, 0, 'g', 4)
+                       .arg(report.mseAfter, 0, 'g', 4)
+                       .arg(report.milliseconds, 0, 'f', 0);
+    QStringList warnings;
+    if (after < before)
+        warnings << LightText::tr("Fewer segments are inside the window than before (%1 → %2 of %3): the ratios "
+                                  "came closer overall, but some that were inside left it. Undo if those mattered, "
+                                  "or weight the segments by area in the Depth tab.")
+                        .arg(before)
+                        .arg(after)
+                        .arg(segments);
+    if (report.mseAfter > report.mseBefore)
+        warnings << LightText::tr("The segments' ratios improved but the depth error rose: try another start light "
+                                  "(move it, then optimise again) or a more lenient window in the Depth tab.");
+    summary.warning = warnings.join(QLatin1Char(' '));
+    return summary;
+}
 
 JobRunner* startLightOptimisation(LightOptimisationJob job, QWidget* parent, LightOptimisationApply apply,
     std::function<void(const QString&)> showError)
@@ -37,7 +76,7 @@ JobRunner* startLightOptimisation(LightOptimisationJob job, QWidget* parent, Lig
         model::DepthAnalyser analyser;
         auto report = std::make_shared<const model::LightOptimisationReport>(
             model::optimiseLight(job.data, job.data.look, job.shape, job.generation, job.frame, job.camera, job.width,
-                job.height, job.request, analyser, &progress));
+                job.height, job.request, analyser, &progress, job.offsets.empty() ? nullptr : &job.offsets));
         return [report, apply] {
             apply(report);
             return !report->cancelled();

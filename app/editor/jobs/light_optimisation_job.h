@@ -6,6 +6,8 @@
 
 #include "celform/model/analysis/light_optimisation.h"
 
+#include <QString>
+
 #include <functional>
 #include <memory>
 
@@ -27,6 +29,15 @@ struct LightOptimisationJob {
     int height = 0;
     model::LightOptimisationRequest request;
 };
+
+/// What the editor says of a finished run: the improvement of what the optimiser lowers, the
+/// segments inside the window, the depth error; and a warning (empty when none) when fewer segments
+/// are inside the window than before or the depth error rose.
+struct LightOptimisationSummary {
+    QString text;
+    QString warning;
+};
+LightOptimisationSummary summariseLightOptimisation(const model::LightOptimisationReport& report);
 
 using LightOptimisationApply = std::function<void(const std::shared_ptr<const model::LightOptimisationReport>&)>;
 

@@ -148,7 +148,8 @@ void HighlightOperationsBox::rebuildRows(const std::vector<algo::HighlightOperat
             spin->setToolTip(Text::tr(s[p]->tip) + Text::tr(" (keyed)"));
             spin->setKeyboardTracking(false); // typing "0.35" is one edit, not four
             spin->setObjectName(QStringLiteral("highlightOperation%1%2").arg(i).arg(p == 0 ? 'a' : 'b'));
-            spin->setMinimumWidth(40);
+            // Wide enough for its longest value ("-360.0"): squeezed, a spin box cuts its number.
+            spin->setMinimumWidth(spin->minimumSizeHint().width());
             spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
             GestureTracker::track(spin, m_document);
             h->addWidget(spin, 1);

@@ -133,17 +133,18 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     m_previousKey->setToolTip(tr("Go to the previous key of the layer"));
     m_frameSpin = new QSpinBox(timeBox);
     m_frameSpin->setObjectName(QStringLiteral("highlightFrame"));
-    m_frameSpin->setRange(0, 48);
     m_frameSpin->setToolTip(tr("Current frame: parameters show the layer at this frame, and edits key it here"));
     m_nextKey = new QToolButton(timeBox);
     m_nextKey->setArrowType(Qt::RightArrow);
     m_nextKey->setToolTip(tr("Go to the next key of the layer"));
+    // The strip shows the scene's frame range (the Timeline's): shown, not set, here.
     m_lastFrame = new QSpinBox(timeBox);
     m_lastFrame->setObjectName(QStringLiteral("highlightLastFrame"));
-    m_lastFrame->setRange(1, 100000);
-    m_lastFrame->setValue(48);
+    m_lastFrame->setRange(-model::kMaxFrame, model::kMaxFrame);
+    m_lastFrame->setReadOnly(true);
+    m_lastFrame->setButtonSymbols(QAbstractSpinBox::NoButtons);
     m_lastFrame->setPrefix(tr("of "));
-    m_lastFrame->setToolTip(tr("Last frame shown on the timeline"));
+    m_lastFrame->setToolTip(tr("The scene's last frame (set the range in the Timeline)"));
     frameRow->addWidget(new QLabel(tr("Frame:"), timeBox));
     frameRow->addWidget(m_previousKey);
     frameRow->addWidget(m_frameSpin);
@@ -167,15 +168,7 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
         if (!m_updating)
             setCurrentFrame(f);
     });
-    connect(m_lastFrame, qOverload<int>(&QSpinBox::valueChanged), this, [this](int last) {
-        m_timeline->setLastFrame(last);
-        {
-            const QSignalBlocker block(m_frameSpin);
-            m_frameSpin->setMaximum(last);
-        }
-        if (currentFrame() > last)
-            setCurrentFrame(last);
-    });
+    syncFrameRange();
     connect(m_previousKey, &QToolButton::clicked, this, [this] { jumpToKey(-1); });
     connect(m_nextKey, &QToolButton::clicked, this, [this] { jumpToKey(1); });
     connect(m_key, &QPushButton::clicked, this, [this] {
@@ -291,7 +284,7 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     for (int axis = 0; axis < 3; ++axis) {
         m_guide[axis] = makeSpin(-1e3, 1e3, 0.1, 3,
             tr("Guide direction (x, y, z): the u axis of the highlight on models without UVs (not keyed)"));
-        m_guide[axis]->setMinimumWidth(40);
+        m_guide[axis]->setMinimumWidth(m_guide[axis]->minimumSizeHint().width());
         m_guide[axis]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         guideLayout->addWidget(m_guide[axis]);
         connect(m_guide[axis], qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, axis](double v) {
@@ -355,9 +348,20 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     refresh();
 }
 
+void HighlightPanel::syncFrameRange()
+{
+    const model::SceneTime& time = m_document->data().time;
+    m_lastFrame->setValue(time.lastFrame);
+    m_timeline->setLastFrame(time.lastFrame);
+    const QSignalBlocker block(m_frameSpin);
+    m_frameSpin->setRange(time.firstFrame, time.lastFrame);
+}
+
 void HighlightPanel::documentChanged(const model::ChangeSet& change)
 {
     using model::Part;
+    if (change.reset || change.has(Part::SceneTime))
+        syncFrameRange();
     if (change.reset || change.has(Part::Highlights) || change.has(Part::FaceSets) || change.has(Part::Mesh)
         || change.has(Part::Playhead))
         refresh();
@@ -438,7 +442,8 @@ void HighlightPanel::setViewport(Viewport* viewport)
 
 void HighlightPanel::setCurrentFrame(int frame)
 {
-    m_document->setCurrentFrame(std::clamp(frame, 0, m_lastFrame->value()));
+    const model::SceneTime& time = m_document->data().time;
+    m_document->setCurrentFrame(std::clamp(frame, time.firstFrame, time.lastFrame));
 }
 
 void HighlightPanel::jumpToKey(int direction)
@@ -455,11 +460,8 @@ void HighlightPanel::jumpToKey(int direction)
         if (direction > 0 && f > now && !target)
             target = f;
     }
-    if (target) {
-        if (*target > m_lastFrame->value())
-            m_lastFrame->setValue(*target);
+    if (target)
         setCurrentFrame(*target);
-    }
 }
 
 int HighlightPanel::selectedLayer() const
@@ -518,8 +520,6 @@ void HighlightPanel::refresh()
     }
     {
         const QSignalBlocker block(m_frameSpin);
-        if (frame > m_lastFrame->value())
-            m_lastFrame->setValue(frame);
         m_frameSpin->setValue(frame);
     }
 

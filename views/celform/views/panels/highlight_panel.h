@@ -56,6 +56,8 @@ signals:
 
 private:
     void documentChanged(const model::ChangeSet& change);
+    /// The frame spin box and the key strip follow the scene's frame range.
+    void syncFrameRange();
     /// Edits the selected layer's key at the playhead through HighlightEdits::setHighlightKey.
     void editKey(const std::function<void(algo::HighlightLayer&)>& change, model::GestureId gesture = {});
     /// Runs a document operation; a refused edit puts the controls back.
