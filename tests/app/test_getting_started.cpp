@@ -18,6 +18,7 @@
 #include <QFile>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollBar>
 #include <QTextBrowser>
 #include <QTreeWidget>
 #include <QUndoStack>
@@ -150,6 +151,14 @@ private slots:
         const QVariant picture = browser->document()->resource(
             QTextDocument::ImageResource, QUrl(QStringLiteral("images/getting-started-2-align.png")));
         QVERIFY(picture.isValid());
+        // An artist's guide: pictures no wider than the text, no build or test instructions.
+        const QImage shown = picture.value<QImage>();
+        QVERIFY(!shown.isNull());
+        QVERIFY2(shown.width() <= browser->viewport()->width(),
+            qPrintable(QStringLiteral("%1 > %2").arg(shown.width()).arg(browser->viewport()->width())));
+        QTRY_COMPARE(browser->horizontalScrollBar()->maximum(), 0);
+        for (const char* developers : {"scripts/", "test suite", "test_getting_started", "build/release", "cmake"})
+            QVERIFY2(!browser->toPlainText().contains(QLatin1String(developers)), developers);
         dialog->close();
     }
 };
