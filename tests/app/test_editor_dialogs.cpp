@@ -588,6 +588,27 @@ private slots:
         QCOMPARE(window.action(QStringLiteral("actionSave"))->text(), QStringLiteral("&Save"));
     }
 
+    // Under a desktop that takes Alt + drag, the Maya style's help says to choose Blender.
+    void preferencesWarnOfDesktopsThatTakeAlt()
+    {
+        const QByteArray saved = qgetenv("XDG_CURRENT_DESKTOP");
+        qputenv("XDG_CURRENT_DESKTOP", "GNOME");
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
+        auto* dialog = openPreferences(window);
+        QVERIFY(dialog);
+        choose(child<QComboBox>(dialog, "prefNavigationStyle"), int(views::NavigationStyle::Maya));
+        const QString maya = child<QLabel>(dialog, "prefNavigationHelp")->text();
+        QVERIFY2(maya.contains(QStringLiteral("GNOME")) && maya.contains(QStringLiteral("Blender")), qPrintable(maya));
+        choose(child<QComboBox>(dialog, "prefNavigationStyle"), int(views::NavigationStyle::Blender));
+        QVERIFY(!child<QLabel>(dialog, "prefNavigationHelp")->text().contains(QStringLiteral("GNOME")));
+        dialog->reject();
+        if (saved.isNull())
+            qunsetenv("XDG_CURRENT_DESKTOP");
+        else
+            qputenv("XDG_CURRENT_DESKTOP", saved);
+    }
+
     void newProjectsStartWithTheChosenStyle()
     {
         app::Preferences prefs;

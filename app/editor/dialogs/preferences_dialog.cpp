@@ -301,12 +301,20 @@ QKeySequenceEdit* PreferencesDialog::shortcutEdit(const QString& actionName) con
 
 void PreferencesDialog::updateState()
 {
-    m_navigationHelp->setText(
-        views::NavigationStyle(m_navigationStyle->currentData().toInt()) == views::NavigationStyle::Maya
-            ? tr("Alt + left drag orbits, Alt + middle drag pans, Alt + right drag dollies; the middle button "
-                 "alone (with Shift: pan, Ctrl: dolly) and the wheel work too.")
-            : tr("Middle drag orbits, Shift + middle drag pans, Ctrl + middle drag dollies, the wheel dollies; "
-                 "Alt + left drag goes to the tool."));
+    const bool maya = views::NavigationStyle(m_navigationStyle->currentData().toInt()) == views::NavigationStyle::Maya;
+    QString navigation = maya
+        ? tr("Alt + left drag orbits, Alt + middle drag pans, Alt + right drag dollies; the middle button "
+             "alone (with Shift: pan, Ctrl: dolly) and the wheel work too.")
+        : tr("Middle drag orbits, Shift + middle drag pans, Ctrl + middle drag dollies, the wheel dollies; "
+             "Alt + left drag goes to the tool.");
+    // Linux desktops (GNOME, KDE, Xfce, ...) move windows with Alt + drag by default, before the
+    // viewport sees it; Qt cannot ask the window manager, so a running desktop is reason to say so.
+    if (maya && !qEnvironmentVariableIsEmpty("XDG_CURRENT_DESKTOP"))
+        navigation += QLatin1Char(' ')
+            + tr("Your desktop (%1) may take Alt + drag to move windows: if the viewport does not orbit, "
+                 "choose Blender, which needs no Alt.")
+                  .arg(qEnvironmentVariable("XDG_CURRENT_DESKTOP"));
+    m_navigationHelp->setText(navigation);
     const Preferences::Language started = m_applier->current().language;
     const bool languageChanged = Preferences::Language(m_language->currentData().toInt()) != started;
     m_languageNote->setText(languageChanged ? tr("<b>Restart Celform to use the new language.</b>")
