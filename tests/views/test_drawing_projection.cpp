@@ -136,6 +136,9 @@ private slots:
         const QRgb edge = shown->pixel(240 + 96, 320);
         QVERIFY2(qRed(edge) > 200 && qAlpha(edge) > 200 && qGreen(edge) < 60, qPrintable(QString::number(edge, 16)));
         QCOMPARE(qAlpha(shown->pixel(10, 10)), 0);
+        // A filled silhouette (the disc) is outlined, not painted over: its inside stays see-through
+        // (it was solid magenta over the model when the outline mode traced every ink edge).
+        QVERIFY2(qAlpha(shown->pixel(240, 320)) < 100, qPrintable(QString::number(shown->pixel(240, 320), 16)));
         // Extracted once, not at every paint.
         for (int i = 0; i < 3; ++i) {
             m_view->update();
