@@ -2,6 +2,7 @@
 #include "editor/main_window.h"
 
 #include "editor/actions/animation_actions.h"
+#include "editor/actions/tool_keys.h"
 #include "editor/actions/tool_panels.h"
 
 #include "editor/dialogs/editor_dialogs.h"
@@ -147,6 +148,7 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
 
     m_viewport = new views::Viewport(m_document, this);
     m_viewport->setObjectName(QStringLiteral("viewport"));
+    routeToolKeys(this, m_viewport);
     new FirstStepsHint(m_document, m_viewport);
     m_viewport->setMinimumSize(320, 240);
     setCentralWidget(m_viewport);

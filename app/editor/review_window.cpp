@@ -219,6 +219,7 @@ bool ReviewWindow::handleKey(int key)
         break;
     case Command::Preview:
         m_viewport->setPreview(!m_viewport->isPreview());
+        m_previewChosen = true;
         break;
     case Command::NarrowerEyes:
         scaleInterocular(1.0 / 1.1);
@@ -273,6 +274,9 @@ void ReviewWindow::stepKey(int delta)
     m_keyIndex = m_keyIndex < 0 ? (delta > 0 ? 0 : count - 1) : ((m_keyIndex + delta) % count + count) % count;
     setTurntable(false);
     m_viewport->setCamera(keys[std::size_t(m_keyIndex)].camera);
+    // At a key's camera the view-dependent shape is the key itself: show it, unless P chose.
+    if (!m_previewChosen)
+        m_viewport->setPreview(true);
 }
 
 void ReviewWindow::scaleInterocular(double factor)

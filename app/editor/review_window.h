@@ -93,6 +93,7 @@ private:
     int m_fpsFrames = 0;
     double m_fps = 0.0;
     int m_keyIndex = -1;
+    bool m_previewChosen = false; ///< P was pressed: the arrows keep the preview as it is
 };
 
 } // namespace celform::app

@@ -43,6 +43,7 @@ const char* const kFirstFrameKey = "render/sequence/first";
 const char* const kLastFrameKey = "render/sequence/last";
 
 /// Camera choices are stored by kind and name, so they survive reopening the project.
+const char* const kCameraShot = "shot";
 const char* const kCameraRender = "render";
 const char* const kCameraView = "view";
 const char* const kCameraDefault = "default";
@@ -276,6 +277,9 @@ void RenderDialog::buildForm()
 void RenderDialog::fillCameras()
 {
     const model::ProjectData* data = m_document ? &m_document->data() : nullptr;
+    // The camera path at each frame, as `celform render` without camera options.
+    if (data && !data->look.cameraPath.empty())
+        m_camera->addItem(tr("Shot camera (the camera path)"), QString::fromLatin1(kCameraShot));
     if (data && data->look.renderCamera)
         m_camera->addItem(tr("Render camera (the project's)"), QString::fromLatin1(kCameraRender));
     if (m_viewport)
@@ -302,8 +306,12 @@ void RenderDialog::restoreOptions()
         folder = QDir::homePath();
     m_output->setText(defaultOutput(folder, settings.value(kFormatKey, QStringLiteral("png")).toString()));
 
-    // Without a remembered choice: the render camera when there is one, as `celform render`.
-    selectData(m_camera, settings.value(kCameraKey, QString::fromLatin1(kCameraRender)));
+    // The shot camera when there is a camera path (what the shot is seen through); else the
+    // remembered choice, at first the render camera when there is one, as `celform render`.
+    if (m_camera->findData(QString::fromLatin1(kCameraShot)) >= 0)
+        selectData(m_camera, QString::fromLatin1(kCameraShot));
+    else
+        selectData(m_camera, settings.value(kCameraKey, QString::fromLatin1(kCameraRender)));
     const int current = m_document ? m_document->data().currentFrame : 0;
     if (m_frame)
         m_frame->setValue(current);
@@ -408,10 +416,15 @@ model::RenderJob RenderDialog::job() const
         job.style = model::ShadingStyle(style);
     if (const int lines = m_lines->currentData().toInt(); lines >= 0)
         job.lines = lines == 1;
-    // The camera: none set is the render camera, else a framed default view (model::renderJobCamera).
+    // The camera: none set is the camera path at each frame, else the render camera, else a framed
+    // default view (model::renderJobCamera), as `celform render` without camera options.
     const QString camera = m_camera->currentData().toString();
     const model::ProjectData* data = m_document ? &m_document->data() : nullptr;
-    if (camera == QLatin1String(kCameraView) && m_viewport) {
+    if (camera == QLatin1String(kCameraShot)) {
+        // Left unset: each frame's camera comes from the path.
+    } else if (camera == QLatin1String(kCameraRender) && data && data->look.renderCamera) {
+        job.camera = *data->look.renderCamera;
+    } else if (camera == QLatin1String(kCameraView) && m_viewport) {
         job.camera = m_viewport->camera();
     } else if (camera == QLatin1String(kCameraDefault)) {
         job.view = model::defaultRenderView();

@@ -8,6 +8,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QMainWindow>
+#include <QMessageBox>
 #include <QStatusBar>
 #include <QStringList>
 #include <QUrl>
@@ -37,6 +38,21 @@ public:
 private:
     QStringList& m_files;
 };
+
+/// "Open when done" found no program to open the result (no file manager or image viewer): says
+/// where it is, in a box that does not wait.
+void tellNotOpened(QMainWindow* window, bool sequence, const QString& path)
+{
+    auto* box = new QMessageBox(QMessageBox::Information, RenderText::tr("Render Finished"),
+        sequence ? RenderText::tr("No file manager could be opened. The frames are in:")
+                 : RenderText::tr("No image viewer could be opened. The image is:"),
+        QMessageBox::Ok, window);
+    box->setObjectName(QStringLiteral("renderNotOpenedBox"));
+    box->setInformativeText(QDir::toNativeSeparators(path));
+    box->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
 
 } // namespace
 
@@ -80,11 +96,11 @@ JobRunner* startRender(
         return details;
     };
 
-    auto work = [data = std::move(data), source, job, written, sequence, openWhenDone, status](
+    auto work = [data = std::move(data), source, job, written, sequence, openWhenDone, status, window](
                     algo::Progress& progress) -> JobRunner::Finish {
         WrittenFiles files(*written);
         const int count = model::renderFrames(data, source, job, &progress, &files);
-        return [count, job, written, sequence, openWhenDone, status] {
+        return [count, job, written, sequence, openWhenDone, status, window] {
             if (count != job.frameCount()) {
                 status(RenderText::tr("Render cancelled; the files written are kept (%L1).").arg(written->size()));
                 return false;
@@ -95,9 +111,11 @@ JobRunner* startRender(
                           .arg(written->size())
                           .arg(QDir::toNativeSeparators(QFileInfo(first).absolutePath()))
                     : RenderText::tr("Rendered %1").arg(QDir::toNativeSeparators(QFileInfo(first).absoluteFilePath())));
-            if (openWhenDone)
-                QDesktopServices::openUrl(QUrl::fromLocalFile(
-                    sequence ? QFileInfo(first).absolutePath() : QFileInfo(first).absoluteFilePath()));
+            if (openWhenDone) {
+                const QString shown = sequence ? QFileInfo(first).absolutePath() : QFileInfo(first).absoluteFilePath();
+                if (!QDesktopServices::openUrl(QUrl::fromLocalFile(shown)))
+                    tellNotOpened(window, sequence, shown);
+            }
             return true;
         };
     };

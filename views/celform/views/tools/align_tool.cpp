@@ -92,6 +92,9 @@ AlignTool::AlignTool(Viewport* viewport)
         if (!m_modelPoints.empty() || !m_drawingPoints.empty())
             clearMatchedPoints();
     });
+    // An undo or redo of the drawing's camera moves the view at once, not when the mode restarts.
+    if (model::Document* document = viewport->document())
+        connect(document, &model::Document::changed, this, &AlignTool::documentChanged);
 }
 
 AlignTool::~AlignTool() = default;
@@ -143,13 +146,29 @@ void AlignTool::commit()
     model::Document* document = m_viewport->document();
     // Only the drawing the mode was started on, and only a camera the artist changed (a resize
     // or another drawing's letterbox keeps the camera and stores nothing).
-    if (!document || !m_drawing || m_viewport->drawingOverlay().drawing() != m_drawing)
+    if (!document || !m_drawing || m_following || m_viewport->drawingOverlay().drawing() != m_drawing)
         return;
     const model::Camera camera = m_viewport->camera();
     if (camera == m_stored)
         return;
     document->drawings().setDrawingCamera(m_drawing, camera, gesture());
     m_stored = camera;
+}
+
+void AlignTool::documentChanged(const model::ChangeSet& change)
+{
+    model::Document* document = m_viewport->document();
+    if (!m_drawing || inGesture() || !change.has(model::Part::Drawings) || !change.touches(m_drawing))
+        return;
+    const model::Drawing* drawing = document->data().drawing(m_drawing);
+    if (!drawing || !drawing->aligned || drawing->camera == m_stored)
+        return;
+    // The view's camera change stores nothing: it is the document's (and an edit pushed from an
+    // undo or redo would break the history).
+    m_following = true;
+    m_viewport->setCamera(drawing->camera);
+    m_following = false;
+    m_stored = m_viewport->camera();
 }
 
 void AlignTool::cameraChanged()

@@ -8,6 +8,7 @@
 
 #include "celform/model/data/camera.h"
 #include "celform/model/data/object_id.h"
+#include "celform/model/document/change_set.h"
 
 #include <QString>
 
@@ -33,6 +34,8 @@ public:
     void cameraChanged() override;
     void navigationStarted() override;
     void navigationEnded() override;
+    /// The view is the drawing's camera while the mode is on.
+    [[nodiscard]] bool holdsCamera() const override { return m_drawing != 0; }
     [[nodiscard]] Qt::CursorShape cursor() const override { return Qt::ArrowCursor; }
     /// The drawing being aligned (0 while the tool is off).
     [[nodiscard]] model::ObjectId drawing() const { return m_drawing; }
@@ -60,12 +63,15 @@ signals:
 private:
     /// Stores the viewport's camera with the drawing when it differs from the last one stored.
     void commit();
+    /// Follows the drawing's camera when the document changes it (undo, redo).
+    void documentChanged(const model::ChangeSet& change);
     void markersChanged();
     void placeBanner();
 
     model::ObjectId m_drawing = 0; ///< bound at activation: another drawing ends the mode
     model::Camera m_stored; ///< the camera last stored (or found) with the drawing
     bool m_matching = false;
+    bool m_following = false; ///< the view takes the drawing's camera from the document
     std::vector<Eigen::Vector3d> m_modelPoints;
     std::vector<Eigen::Vector2d> m_drawingPoints;
     QWidget* m_markers; ///< transparent child of the viewport painting the matched points

@@ -111,6 +111,11 @@ void BrushTool::cancel()
     emit selectionChanged(nullptr, nullptr);
 }
 
+bool BrushTool::holdsCamera() const
+{
+    return m_viewport->displayedKey() != 0;
+}
+
 void BrushTool::deactivate()
 {
     stopHover();

@@ -28,6 +28,8 @@ public:
     [[nodiscard]] const BrushSettings& settings() const { return m_settings; }
 
     void deactivate() override;
+    /// Brushing a key is done in the key's camera, its drawing over it (paper 1, section 3.1.2).
+    [[nodiscard]] bool holdsCamera() const override;
     bool press(const ToolEvent& event) override;
     void move(const ToolEvent& event) override;
     void release(const ToolEvent& event) override;

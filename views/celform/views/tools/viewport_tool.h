@@ -62,6 +62,9 @@ public:
     /// keyPress then handles it and returns whether it did.
     [[nodiscard]] virtual bool wantsKey(int /*key*/, Qt::KeyboardModifiers /*modifiers*/) const { return false; }
     virtual bool keyPress(int /*key*/, Qt::KeyboardModifiers /*modifiers*/) { return false; }
+    /// Whether the tool works in the view of a document camera (a drawing's while aligning, a
+    /// key's while brushing it): Frame All would take the view off it, so it is refused.
+    [[nodiscard]] virtual bool holdsCamera() const { return false; }
 
 signals:
     /// A message for the status bar (an edit refused, a hint); the viewport relays it.

@@ -327,6 +327,15 @@ Eigen::Vector3d Viewport::pivot() const
 
 void Viewport::frameAll()
 {
+    if (ViewportTool* tool = activeTool(); tool && tool->holdsCamera()) {
+        emit message(tr("Frame All would take the view off the camera being edited; leave the tool first (Esc)."));
+        return;
+    }
+    placeFramed();
+}
+
+void Viewport::placeFramed()
+{
     m_camera->frameAll();
     m_scene->cameraPlaced = true;
     cameraEdited();
@@ -584,7 +593,7 @@ void Viewport::resizeGL(int w, int h)
     // A view framed by the program (load, F, Home) stays framed while the window is resized:
     // the widget's first size is only known here, after the constructor framed the model.
     if (m_camera->isFramed())
-        frameAll();
+        placeFramed();
 }
 
 void Viewport::paintGL()
@@ -592,7 +601,7 @@ void Viewport::paintGL()
     if (!m_initialized)
         return;
     if (!m_scene->cameraPlaced)
-        frameAll();
+        placeFramed();
     QElapsedTimer timer;
     timer.start();
     syncScene();

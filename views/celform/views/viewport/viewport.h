@@ -157,10 +157,16 @@ public:
 
     /// Edit > Preferences: how the mouse navigates.
     void setNavigation(const Navigation& navigation);
+
+    /// Whether the active tool takes this key press before the window's shortcuts (the brush's F,
+    /// [ and ], Esc or Enter while resizing). The window sends such presses here wherever the
+    /// focus is, so a tool's keys win inside it.
+    [[nodiscard]] bool toolTakesKey(const QKeyEvent& event) const;
     [[nodiscard]] const Navigation& navigation() const { return m_navigation; }
 
 public slots:
-    /// Keeps the view direction and fits the whole model in the view.
+    /// Keeps the view direction and fits the whole model in the view; refused with a message while
+    /// the tool holds a document camera (ViewportTool::holdsCamera: aligning, brushing a key).
     void frameAll();
     /// Front view (looking down -Z, Y up), framed.
     void resetView();
@@ -207,6 +213,8 @@ private:
     /// in step.
     void cameraEdited();
     void endDrag(bool cancelled);
+    /// frameAll without the tool's refusal: the program's own framing (first paint, a resize).
+    void placeFramed();
     [[nodiscard]] ViewportTool* activeTool() const;
     /// Every tool: the ones setTool() picks and the light gizmo's drag.
     [[nodiscard]] std::vector<ViewportTool*> allTools() const;

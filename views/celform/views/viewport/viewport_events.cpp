@@ -218,6 +218,19 @@ bool Viewport::event(QEvent* event)
     return QOpenGLWidget::event(event);
 }
 
+bool Viewport::toolTakesKey(const QKeyEvent& event) const
+{
+    ViewportTool* tool = activeTool();
+    if (!tool || m_drag != Drag::None)
+        return false;
+    if (tool->wantsKey(event.key(), event.modifiers()))
+        return true;
+    // The brush-size keys are the viewport's, but they belong to the brushes' work.
+    const auto command = viewportKeyCommand(event);
+    return (m_tool == Tool::Brush || m_tool == Tool::OffsetBrush)
+        && (command == ViewportKeyCommand::BrushSmaller || command == ViewportKeyCommand::BrushLarger);
+}
+
 void Viewport::keyPressEvent(QKeyEvent* event)
 {
     if (ViewportTool* tool = activeTool();
