@@ -103,7 +103,7 @@ private slots:
     }
 
     // The first launch (no saved geometry) fits the screen, whatever its size: ctest also runs this
-    // under 1366x768 and 1600x900 screens (tests/app/CMakeLists.txt).
+    // under 1366x768, 1600x900 and 1920x1080 screens (tests/app/CMakeLists.txt).
     void firstWindowFitsTheScreen()
     {
         {
