@@ -3,7 +3,9 @@
 #include "celform/model/document/document.h"
 #include "celform/views/viewport/viewport.h"
 
+#include <QApplication>
 #include <QEvent>
+#include <QUndoStack>
 
 namespace celform::app {
 
@@ -20,22 +22,46 @@ FirstStepsHint::FirstStepsHint(model::Document* document, views::Viewport* viewp
     viewport->installEventFilter(this);
     // While a tool is on, its own banner says what to do.
     connect(viewport, &views::Viewport::toolChanged, this, [this] { refresh(); });
-    connect(document, &model::Document::changed, this, [this](const model::ChangeSet&) { refresh(); });
+    connect(document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
+        if (change.reset) {
+            const model::ProjectData& data = m_document->data();
+            m_showcase = !data.keys.empty() && !data.look.cameraPath.empty();
+            if (m_showcase)
+                qApp->installEventFilter(this);
+        }
+        refresh();
+    });
+    connect(document->undoStack(), &QUndoStack::indexChanged, this, [this] { endShowcase(); });
     refresh();
 }
 
 QString FirstStepsHint::hintText() const
 {
     const model::ProjectData& data = m_document->data();
+    if (m_showcase && m_viewport->tool() == views::Viewport::Tool::Navigate)
+        return tr("Press Space: the model changes shape with the view to match its drawings. Click a key in the "
+                  "Scene panel to see its drawing.");
     if (!m_document->hasMesh())
         return tr("Start with a model: File ▸ New from Mesh (Ctrl+N), or open a project (Ctrl+O). "
                   "Help ▸ Getting Started walks through the rest.");
     if (data.drawings.empty())
         return tr("Import a drawing of the model sheet: File ▸ Import Drawing (Ctrl+Shift+I), or drop an image "
                   "here.");
-    if (data.keys.empty() && m_viewport->tool() == views::Viewport::Tool::Navigate)
+    if (!data.keys.empty() || m_viewport->tool() != views::Viewport::Tool::Navigate)
+        return {};
+    const model::Drawing* selected = data.drawing(m_selectedDrawing);
+    if (!selected)
         return tr("Select a drawing in the Scene panel and press Align to Drawing; then Create Key from Drawing.");
-    return {};
+    if (!selected->aligned)
+        return tr("Press Align to Drawing in the Properties panel and move the camera until the model matches the "
+                  "drawing.");
+    return tr("The camera matches the drawing: press Create Key from Drawing in the Properties panel.");
+}
+
+void FirstStepsHint::setSelectedDrawing(model::ObjectId drawing)
+{
+    m_selectedDrawing = drawing;
+    refresh();
 }
 
 void FirstStepsHint::refresh()
@@ -57,8 +83,24 @@ void FirstStepsHint::place()
     raise();
 }
 
+void FirstStepsHint::endShowcase()
+{
+    if (!m_showcase)
+        return;
+    m_showcase = false;
+    qApp->removeEventFilter(this);
+    refresh();
+}
+
 bool FirstStepsHint::eventFilter(QObject* watched, QEvent* event)
 {
+    // The showcase's caption watches the whole application for the artist's first action (Space
+    // is a window shortcut: its override event is the first the application sees).
+    const QEvent::Type type = event->type();
+    if (m_showcase && watched->isWidgetType() && window() == static_cast<QWidget*>(watched)->window()
+        && (type == QEvent::MouseButtonPress || type == QEvent::KeyPress || type == QEvent::ShortcutOverride
+            || type == QEvent::Wheel))
+        endShowcase();
     if (watched == parentWidget() && event->type() == QEvent::Resize && isVisible())
         place();
     return QLabel::eventFilter(watched, event);

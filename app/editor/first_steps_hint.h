@@ -1,7 +1,11 @@
 // The empty states of the editor: a line at the bottom of the viewport saying what to do next
-// while the project lacks a model, a drawing or a key; hidden once it has all three, and while
-// a tool shows its own banner.
+// while the project lacks a model, a drawing or a key (following the first key's steps: select a
+// drawing, align, create the key); hidden once it has all three, and while a tool shows its own
+// banner. A project opened with keys and a camera path (the showcase) gets a caption saying what
+// to try, until the first click or key press.
 #pragma once
+
+#include "celform/model/data/object_id.h"
 
 #include <QLabel>
 
@@ -21,6 +25,8 @@ public:
 
     /// Text for the document's state now (empty: nothing to suggest).
     [[nodiscard]] QString hintText() const;
+    /// The drawing selected in the Scene panel (0: none), whose alignment says the next step.
+    void setSelectedDrawing(model::ObjectId drawing);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -28,9 +34,13 @@ protected:
 private:
     void refresh();
     void place();
+    /// The first action after opening a showcase: its caption goes.
+    void endShowcase();
 
     model::Document* m_document;
     views::Viewport* m_viewport;
+    model::ObjectId m_selectedDrawing = 0;
+    bool m_showcase = false;
 };
 
 } // namespace celform::app

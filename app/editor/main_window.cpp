@@ -24,6 +24,7 @@
 #include "celform/views/panels/properties_panel.h"
 #include "celform/views/panels/scene_panel.h"
 #include "celform/views/panels/view_sphere_panel.h"
+#include "celform/views/overlays/drawing_overlay.h"
 #include "celform/views/viewport/viewport.h"
 
 #include <QAbstractSpinBox>
@@ -38,6 +39,7 @@
 #include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
@@ -45,6 +47,7 @@
 #include <QMimeData>
 #include <QPainter>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -132,6 +135,35 @@ QString suffixOf(const QString& path)
     return QFileInfo(path).suffix().toLower();
 }
 
+/// The size of the first window, and of the batch mode's screenshots.
+constexpr QSize kDefaultWindowSize(1400, 900);
+
+/// The first launch (no saved geometry): the default size when the screen's available area holds
+/// it, else the whole available area, maximised (a 1366x768 screen would lose the Timeline, the
+/// status bar and the window's own buttons below its edge).
+void fitFirstWindowToScreen(QMainWindow& window)
+{
+    const QScreen* screen = window.screen() ? window.screen() : QGuiApplication::primaryScreen();
+    if (!screen) {
+        window.resize(kDefaultWindowSize);
+        return;
+    }
+    const QRect available = screen->availableGeometry();
+    // Room for the title bar and borders a window manager adds around the window.
+    const QSize frame(16, 48);
+    if (available.width() >= kDefaultWindowSize.width() + frame.width()
+        && available.height() >= kDefaultWindowSize.height() + frame.height()) {
+        window.resize(kDefaultWindowSize);
+        window.move(available.topLeft()
+            + QPoint((available.width() - kDefaultWindowSize.width() - frame.width()) / 2,
+                (available.height() - kDefaultWindowSize.height() - frame.height()) / 2));
+        return;
+    }
+    // Without a window manager to honour the maximised state, the size alone fits the screen.
+    window.setGeometry(QRect(available.topLeft(), available.size() - frame).intersected(available));
+    window.setWindowState(window.windowState() | Qt::WindowMaximized);
+}
+
 } // namespace
 
 MainWindow::MainWindow(Mode mode, QWidget* parent)
@@ -149,11 +181,14 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
     m_viewport = new views::Viewport(m_document, this);
     m_viewport->setObjectName(QStringLiteral("viewport"));
     routeToolKeys(this, m_viewport);
-    new FirstStepsHint(m_document, m_viewport);
+    auto* hint = new FirstStepsHint(m_document, m_viewport);
     m_viewport->setMinimumSize(320, 240);
     setCentralWidget(m_viewport);
 
     createDocks();
+    connect(m_scene, &views::ScenePanel::selectionChanged, hint, [hint](views::ScenePanel::Selection selection) {
+        hint->setSelectedDrawing(selection.kind == views::ScenePanel::ItemKind::Drawing ? selection.id : 0);
+    });
     createActions();
     createMenus();
     installAnimationActions(this); // Timeline dock, playback, shot camera, Observer layout
@@ -191,8 +226,10 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
         restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
         restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     }
-    if (!settings.contains(QStringLiteral("window/geometry")) || m_mode == Mode::Batch)
-        resize(1400, 900);
+    if (m_mode == Mode::Batch)
+        resize(kDefaultWindowSize);
+    else if (!settings.contains(QStringLiteral("window/geometry")))
+        fitFirstWindowToScreen(*this);
     updateTitle();
     updateStatistics();
     updateRecentMenu();
@@ -293,6 +330,7 @@ void MainWindow::createDocks()
     tabifyDockWidget(findChild<QDockWidget*>(QStringLiteral("historyDock")), logDock);
     logDock->hide(); // shown on demand from the View menu; warnings also reach the status bar
     connect(m_scene, &views::ScenePanel::selectionChanged, m_properties, &views::PropertiesPanel::showSelection);
+    m_scene->setDrawingOverlay(&m_viewport->drawingOverlay());
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("sceneDock")),
                     findChild<QDockWidget*>(QStringLiteral("propertiesDock"))},
         {260, 300}, Qt::Horizontal);

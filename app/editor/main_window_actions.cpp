@@ -231,7 +231,19 @@ void MainWindow::createActions()
         [this](bool on) { m_viewport->drawingOverlay().setOutline(on); })
         ->setCheckable(true);
     make(QStringLiteral("actionNavigate"), tr("&Navigate Only"), QKeySequence(Qt::Key_Escape),
-        tr("Leave alignment and brush tools"), [this] { m_viewport->setTool(views::Viewport::Tool::Navigate); });
+        tr("Leave alignment and brush tools; a drawing not asked for with its eye is hidden"), [this] {
+            m_viewport->setTool(views::Viewport::Tool::Navigate);
+            m_viewport->drawingOverlay().showAskedFor();
+        });
+    make(QStringLiteral("actionToggleDrawing"), tr("Show/Hide &Drawing"), QKeySequence(Qt::Key_D),
+        tr("Show the selected drawing over the model whatever is selected, or hide the drawing shown (the eye in "
+           "the Scene panel)"),
+        [this] {
+            views::DrawingOverlay& overlay = m_viewport->drawingOverlay();
+            const views::ScenePanel::Selection selected = m_scene->selection();
+            const bool drawingSelected = selected.kind == views::ScenePanel::ItemKind::Drawing;
+            overlay.toggleShown(overlay.drawing() != 0 || !drawingSelected ? overlay.drawing() : selected.id);
+        });
     make(QStringLiteral("actionCreateKeyFromView"), tr("Create Key from &View"), QKeySequence(Qt::CTRL | Qt::Key_K),
         tr("Make a key viewpoint seen from the current camera, starting as a copy of the base model"), [this] {
             try {
@@ -324,6 +336,7 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(action(QStringLiteral("actionStereoReview")));
     m_viewMenu->addAction(action(QStringLiteral("actionShowLook")));
     m_viewMenu->addAction(action(QStringLiteral("actionDrawingOutline")));
+    m_viewMenu->addAction(action(QStringLiteral("actionToggleDrawing")));
     m_viewMenu->addAction(action(QStringLiteral("actionNavigate")));
     m_viewMenu->addSeparator();
     for (auto* dock : findChildren<QDockWidget*>())

@@ -25,6 +25,9 @@
 #include <QMenu>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QStatusBar>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -231,6 +234,7 @@ private slots:
             {QStringLiteral("paint shading offsets (tool)"), {"actionOffsetBrush"}},
             {QStringLiteral("cartoon look on/off"), {"actionShowLook"}},
             {QStringLiteral("drawing outline only (aligning)"), {"actionDrawingOutline"}},
+            {QStringLiteral("show / hide the selected drawing (the eye in the Scene panel)"), {"actionToggleDrawing"}},
             {QStringLiteral("stereo preview in the viewport on/off"), {"actionStereoToggle"}},
             {QStringLiteral("next depth overlay (none, segments, curvature, depth error)"), {"actionDepthOverlayNext"}},
             {QStringLiteral("optimise the light for stereo (Look menu, Depth tab)"), {"actionOptimiseLight"}},
@@ -619,6 +623,72 @@ private slots:
             c + QPoint(50, 0), 25);
         const double angle = std::acos(std::clamp(upBefore.dot(viewport->camera().trueUp()), -1.0, 1.0)) * 180.0 / M_PI;
         QVERIFY2(std::abs(angle - 15.0) < 1e-6, qPrintable(QString::number(angle)));
+    }
+
+    // Issue 24, item 16: the hint follows the first key's steps (select, align, create).
+    void hintFollowsTheFirstKeysSteps()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(showActive(window));
+        auto* hint = window.viewport()->findChild<QLabel*>(QStringLiteral("firstStepsHint"));
+        QVERIFY(hint && hint->isVisible());
+        const QString unselected = hint->text();
+        QVERIFY(unselected.contains(QStringLiteral("Select a drawing")));
+        QVERIFY(clickSceneItem(window, QStringLiteral("tuxpaint_elephant")));
+        QVERIFY(hint->isVisible());
+        const QString selected = hint->text();
+        QVERIFY2(!selected.contains(QStringLiteral("Select a drawing")), qPrintable(selected));
+        QVERIFY(selected.contains(QStringLiteral("Align to Drawing")));
+        alignByDrag(window);
+        if (QTest::currentTestFailed())
+            return;
+        QVERIFY(hint->isVisible());
+        const QString aligned = hint->text();
+        QVERIFY2(aligned != selected && !aligned.contains(QStringLiteral("press Align")), qPrintable(aligned));
+        QVERIFY(aligned.contains(QStringLiteral("Create Key from Drawing")));
+        // Selecting the base model goes back to the first step's words.
+        window.scenePanel()->select({views::ScenePanel::ItemKind::BaseModel, 0});
+        QCOMPARE(hint->text(), unselected);
+    }
+
+    // Issue 24, item 11: after Create Key from Drawing the panel shows Edit Key with the Brush,
+    // which the status bar points at, though the artist had scrolled down to Create Key.
+    void editKeyButtonInViewAfterCreatingAKey()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(showActive(window, QSize(1366, 700)));
+        QVERIFY(clickSceneItem(window, QStringLiteral("tuxpaint_elephant")));
+        alignByDrag(window);
+        if (QTest::currentTestFailed())
+            return;
+        views::PropertiesPanel* panel = window.propertiesPanel();
+        auto* scroll = panel->findChild<QScrollArea*>();
+        QVERIFY(scroll);
+        QApplication::processEvents();
+        scroll->verticalScrollBar()->setValue(
+            panel->createKeyButton()->mapTo(scroll->widget(), QPoint(0, 0)).y() - scroll->viewport()->height() / 2);
+        QApplication::processEvents();
+        QVERIFY2(scroll->verticalScrollBar()->value() > 0, "the panel does not scroll at this size");
+        // Top to bottom within the viewport (the panel scrolls vertically only).
+        auto inView = [scroll](const QWidget* w) {
+            const int top = w->mapTo(scroll->viewport(), QPoint(0, 0)).y();
+            return w->isVisible() && top >= 0 && top + w->height() <= scroll->viewport()->height();
+        };
+        const QRect createRect(
+            panel->createKeyButton()->mapTo(scroll->viewport(), QPoint(0, 0)), panel->createKeyButton()->size());
+        QVERIFY2(inView(panel->createKeyButton()),
+            qPrintable(QStringLiteral("Create Key at %1,%2 %3x%4 in a %5x%6 view")
+                           .arg(createRect.x())
+                           .arg(createRect.y())
+                           .arg(createRect.width())
+                           .arg(createRect.height())
+                           .arg(scroll->viewport()->width())
+                           .arg(scroll->viewport()->height())));
+        QTest::mouseClick(panel->createKeyButton(), Qt::LeftButton);
+        QCOMPARE(int(window.document()->data().keys.size()), 1);
+        QTRY_VERIFY_WITH_TIMEOUT(inView(panel->editKeyButton()), 2000);
+        QCOMPARE(scroll->horizontalScrollBar()->value(), 0); // the panel's left edge stays
+        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("Edit Key with the Brush")));
     }
 };
 

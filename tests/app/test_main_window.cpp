@@ -22,7 +22,10 @@
 #include <QApplication>
 #include <QMimeData>
 #include <QProcess>
+#include <QScreen>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -97,6 +100,35 @@ private slots:
         test::drag(vp, Qt::MiddleButton, Qt::NoModifier, c, c + QPoint(-80, 0));
         QVERIFY((vp->camera().eye - after.eye).norm() > 1e-3);
         QVERIFY(coverage(renderNow(vp)) > 0.05);
+    }
+
+    // The first launch (no saved geometry) fits the screen, whatever its size: ctest also runs this
+    // under 1366x768, 1600x900 and 1920x1080 screens (tests/app/CMakeLists.txt).
+    void firstWindowFitsTheScreen()
+    {
+        {
+            QSettings settings;
+            settings.remove(QStringLiteral("window/geometry"));
+            settings.remove(QStringLiteral("window/state"));
+        }
+        app::MainWindow window(app::MainWindow::Mode::Interactive);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QApplication::processEvents();
+        const QRect available = window.screen()->availableGeometry();
+        const QString sizes = QStringLiteral("window %1x%2 at %3,%4 (frame %5x%6), screen %7x%8")
+                                  .arg(window.width())
+                                  .arg(window.height())
+                                  .arg(window.x())
+                                  .arg(window.y())
+                                  .arg(window.frameGeometry().width())
+                                  .arg(window.frameGeometry().height())
+                                  .arg(available.width())
+                                  .arg(available.height());
+        QVERIFY2(available.contains(window.frameGeometry()), qPrintable(sizes));
+        // What fell off a 1366x768 screen: the status bar and the bottom of the window.
+        const QRect statusBar(window.statusBar()->mapToGlobal(QPoint(0, 0)), window.statusBar()->size());
+        QVERIFY2(available.contains(statusBar), qPrintable(sizes));
     }
 
     void titleMarksUnsavedChangesAndUndo()

@@ -12,20 +12,36 @@
 
 #include "celform/views/panels/properties_panel.h"
 #include "celform/views/panels/scene_panel.h"
+#include "celform/views/panels/view_sphere_panel.h"
 #include "celform/views/viewport/viewport.h"
 #include "celform/views/overlays/drawing_overlay.h"
 #include "celform/views/tools/align_tool.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QHeaderView>
+#include <QLabel>
 #include <QPushButton>
 #include <QStandardPaths>
+#include <QTreeWidget>
+
+#include <cmath>
 
 using namespace celform;
 
 using test::drag;
 using test::keepScreenshot;
 using test::waitForRender;
+
+namespace {
+
+/// The showcase: keys linked to their drawings and a camera path.
+QString showcaseProject()
+{
+    return QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+}
+
+} // namespace
 
 class TestViewDependentUi : public QObject {
     Q_OBJECT
@@ -185,6 +201,158 @@ private slots:
         keepScreenshot(&window, "5-solved");
         window.action(QStringLiteral("actionUndo"))->trigger();
         QVERIFY(!doc->data().drawing(drawing.id)->aligned);
+    }
+
+    // Issue 24, item 16: in the Viewing Sphere the view's label never lies over a key's, the
+    // view on a key or just beside it included.
+    void sphereViewLabelClearOfKeyLabels()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(showcaseProject()));
+        auto* sphere = window.findChild<views::ViewSpherePanel*>();
+        QVERIFY(sphere && sphere->isVisible());
+        const auto& keys = window.document()->data().keys;
+        QVERIFY(keys.size() >= 2);
+        int views = 0;
+        QStringList overlaps;
+        for (const model::KeyViewpoint& key : keys) {
+            const Eigen::Vector3d d = key.direction.normalized();
+            const Eigen::Vector3d a = d.unitOrthogonal(), b = d.cross(a);
+            for (int step = 0; step <= 16; ++step) {
+                const double angle = step * 2.0 * M_PI / 16.0;
+                const double off = step == 0 ? 0.0 : 0.12;
+                sphere->setViewDirection((d + off * (std::cos(angle) * a + std::sin(angle) * b)).normalized());
+                const std::vector<QRectF> rects = sphere->labelRects();
+                QCOMPARE(rects.size(), keys.size() + 1);
+                ++views;
+                for (std::size_t i = 0; i + 1 < rects.size(); ++i)
+                    if (rects[i].intersects(rects.back()))
+                        overlaps << QStringLiteral("%1 at step %2").arg(keys[i].name).arg(step);
+            }
+        }
+        QVERIFY2(views > 0 && overlaps.isEmpty(), qPrintable(overlaps.join(QStringLiteral(", "))));
+        sphere->repaint(); // the painted layout is the one tested
+        keepScreenshot(sphere, "sphere-labels");
+    }
+
+    // Issue 24, item 6: a drawing shows while selected, aligned or brushed, or when the artist asks
+    // with its eye in the Scene panel (or D); otherwise it hides.
+    void drawingsShowOnlyWhenAskedFor()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(showcaseProject()));
+        // Xvfb has no window manager to activate it: do what one would (window shortcuts need it).
+        window.activateWindow();
+        QApplication::setActiveWindow(&window);
+        QApplication::processEvents();
+        QVERIFY(QApplication::activeWindow() == &window);
+        const auto& drawings = window.document()->data().drawings;
+        QVERIFY(drawings.size() >= 2);
+        const model::ObjectId a = drawings[0].id, b = drawings[1].id;
+        views::ScenePanel* scene = window.scenePanel();
+        views::DrawingOverlay& overlay = window.viewport()->drawingOverlay();
+        QTreeWidget* tree = scene->tree();
+        auto clickEye = [&](const QString& name) {
+            const QList<QTreeWidgetItem*> items = tree->findItems(name, Qt::MatchExactly | Qt::MatchRecursive);
+            QVERIFY(!items.isEmpty());
+            tree->scrollToItem(items.front());
+            const int x = tree->header()->sectionPosition(views::ScenePanel::kEyeColumn)
+                + tree->header()->sectionSize(views::ScenePanel::kEyeColumn) / 2;
+            QTest::mouseClick(
+                tree->viewport(), Qt::LeftButton, {}, QPoint(x, tree->visualItemRect(items.front()).center().y()));
+        };
+        const views::ScenePanel::Selection base{views::ScenePanel::ItemKind::BaseModel, 0};
+
+        // Selected, a drawing shows; the eye hides and shows it.
+        scene->select({views::ScenePanel::ItemKind::Drawing, a});
+        QCOMPARE(overlay.drawing(), a);
+        clickEye(drawings[0].name);
+        QCOMPARE(overlay.drawing(), model::ObjectId(0));
+        clickEye(drawings[0].name);
+        QCOMPARE(overlay.drawing(), a);
+        QCOMPARE(overlay.askedFor(), a);
+        // Asked for, it stays when the base model is selected and after Navigate Only.
+        scene->select(base);
+        QCOMPARE(overlay.drawing(), a);
+        window.action(QStringLiteral("actionNavigate"))->trigger();
+        QCOMPARE(overlay.drawing(), a);
+        clickEye(drawings[0].name);
+        QCOMPARE(overlay.drawing(), model::ObjectId(0));
+        QVERIFY(scene->selection() == base); // the eye does not select its row
+
+        // Not asked for, selecting the base model or Navigate Only hides it.
+        scene->select({views::ScenePanel::ItemKind::Drawing, a});
+        QCOMPARE(overlay.drawing(), a);
+        scene->select(base);
+        QCOMPARE(overlay.drawing(), model::ObjectId(0));
+        scene->select({views::ScenePanel::ItemKind::Drawing, a});
+        QCOMPARE(overlay.drawing(), a);
+        window.viewport()->setFocus();
+        QTest::keyClick(window.viewport(), Qt::Key_Escape);
+        QCOMPARE(overlay.drawing(), model::ObjectId(0));
+
+        // D, the eye's shortcut, for the selected drawing.
+        QTest::keyClick(window.viewport(), Qt::Key_D);
+        QCOMPARE(overlay.drawing(), a);
+        QCOMPARE(overlay.askedFor(), a);
+        QTest::keyClick(window.viewport(), Qt::Key_D);
+        QCOMPARE(overlay.drawing(), model::ObjectId(0));
+
+        // In Preview, selecting another drawing switches the overlay.
+        scene->select(base);
+        if (!window.viewport()->isPreview())
+            window.action(QStringLiteral("actionPreview"))->trigger();
+        QVERIFY(window.viewport()->isPreview());
+        scene->select({views::ScenePanel::ItemKind::Drawing, a});
+        QCOMPARE(overlay.drawing(), a);
+        scene->select({views::ScenePanel::ItemKind::Drawing, b});
+        QCOMPARE(overlay.drawing(), b);
+    }
+
+    // Issue 24, item 17: the showcase opens with a caption saying what to try, gone at the first
+    // action, and a key's drawing one click away.
+    void showcaseOpensWithACaption()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window)); // the plain sample first: no keys, no caption
+        auto* hint = window.viewport()->findChild<QLabel*>(QStringLiteral("firstStepsHint"));
+        QVERIFY(hint);
+        QVERIFY(!hint->text().contains(QStringLiteral("Press Space")));
+        QVERIFY(window.openFile(showcaseProject()));
+        QApplication::processEvents();
+        QVERIFY(!window.document()->data().keys.empty());
+        QVERIFY(!window.document()->data().look.cameraPath.empty());
+        QVERIFY(hint->isVisible());
+        QVERIFY2(hint->text().contains(QStringLiteral("Press Space")), qPrintable(hint->text()));
+        QVERIFY(window.viewport()->rect().contains(hint->geometry()));
+
+        // A key's drawing, one click in the Scene tree.
+        const model::KeyViewpoint& key = window.document()->data().keys.front();
+        QVERIFY(!key.drawingIds.empty());
+        QTreeWidget* tree = window.scenePanel()->tree();
+        const QList<QTreeWidgetItem*> items = tree->findItems(key.name, Qt::MatchExactly | Qt::MatchRecursive);
+        QVERIFY(!items.isEmpty());
+        QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, tree->visualItemRect(items.front()).center());
+        QCOMPARE(window.scenePanel()->selection().id, key.id);
+        auto* thumbnail = window.propertiesPanel()->findChild<QLabel*>(QStringLiteral("selectionThumbnail"));
+        QVERIFY(thumbnail && thumbnail->isVisible() && !thumbnail->pixmap().isNull());
+        // The click was the first action: the caption has gone.
+        QVERIFY(!hint->isVisible());
+
+        // Opened again, Space (play) ends it too.
+        QVERIFY(window.openFile(showcaseProject()));
+        QVERIFY(hint->isVisible() && hint->text().contains(QStringLiteral("Press Space")));
+        window.activateWindow();
+        QApplication::setActiveWindow(&window);
+        window.viewport()->setFocus();
+        QTest::keyClick(window.viewport(), Qt::Key_Space);
+        QVERIFY(!hint->isVisible());
     }
 };
 

@@ -40,6 +40,15 @@ void DrawingOverlay::setDrawing(model::ObjectId drawing)
     emit changed();
 }
 
+void DrawingOverlay::toggleShown(model::ObjectId drawing)
+{
+    if (drawing == 0)
+        return;
+    const bool shown = drawing == m_drawing;
+    m_asked = shown ? 0 : drawing;
+    setDrawing(shown ? 0 : drawing);
+}
+
 void DrawingOverlay::setOnTop(bool onTop)
 {
     if (onTop == m_onTop)

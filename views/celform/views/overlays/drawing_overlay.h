@@ -42,6 +42,16 @@ public:
     /// The drawing shown (0: none).
     void setDrawing(model::ObjectId drawing);
     [[nodiscard]] model::ObjectId drawing() const { return m_drawing; }
+    /// The drawing the artist asked to see (the eye in the Scene panel, the D key), 0 for none: it
+    /// stays shown whatever is selected. Only aligning or brushing a key shows a drawing of itself,
+    /// and selecting one shows it until something else is selected. A view state like the camera,
+    /// so not saved with the project nor an undoable edit. One at a time, as one is shown.
+    [[nodiscard]] model::ObjectId askedFor() const { return m_asked; }
+    /// The eye: drawing shown is hidden (and no longer asked for); hidden, it is shown and asked for.
+    void toggleShown(model::ObjectId drawing);
+    /// Back to what the artist asked for: the drawing asked for, or none (leaving a selection,
+    /// Navigate Only).
+    void showAskedFor() { setDrawing(m_asked); }
     /// Over the model (with the drawing's opacity) or under it, as a backdrop.
     void setOnTop(bool onTop);
     [[nodiscard]] bool onTop() const { return m_onTop; }
@@ -91,6 +101,7 @@ private:
     model::Document* m_document;
     QWidget* m_view;
     model::ObjectId m_drawing = 0;
+    model::ObjectId m_asked = 0;
     bool m_onTop = true;
     bool m_outline = false;
     std::shared_ptr<OutlineCache> m_outlines;

@@ -7,6 +7,7 @@
 #include <QPen>
 #include <QRectF>
 
+#include <algorithm>
 #include <cmath>
 
 namespace celform::views {
@@ -16,6 +17,29 @@ namespace {
 constexpr int kPad = 2;
 
 } // namespace
+
+QFont scaledFont(const QFont& base, double factor)
+{
+    QFont font = base;
+    if (font.pointSizeF() > 0)
+        font.setPointSizeF(std::max(6.5, font.pointSizeF() * factor));
+    else
+        font.setPixelSize(std::max(9, int(std::lround(font.pixelSize() * factor))));
+    return font;
+}
+
+QRectF clampInto(QRectF r, const QRectF& bounds)
+{
+    if (r.right() > bounds.right())
+        r.moveRight(bounds.right());
+    if (r.left() < bounds.left())
+        r.moveLeft(bounds.left());
+    if (r.bottom() > bounds.bottom())
+        r.moveBottom(bounds.bottom());
+    if (r.top() < bounds.top())
+        r.moveTop(bounds.top());
+    return r;
+}
 
 void HaloTextCache::draw(
     QPainter& painter, const QRectF& rect, const QString& text, const QColor& color, const QColor& halo)

@@ -10,10 +10,16 @@
 #include <QImage>
 #include <QString>
 
+#include <QRectF>
+
 class QPainter;
-class QRectF;
 
 namespace celform::views {
+
+/// base scaled by factor (a label's font smaller than the panel's), never below a legible size.
+[[nodiscard]] QFont scaledFont(const QFont& base, double factor);
+/// Moves r inside bounds (as far as it fits).
+[[nodiscard]] QRectF clampInto(QRectF r, const QRectF& bounds);
 
 class HaloTextCache {
 public:

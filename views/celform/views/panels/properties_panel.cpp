@@ -28,7 +28,10 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSlider>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSpinBox>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -49,6 +52,7 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_form->addRow(m_summary);
     m_thumbnail = new QLabel(m_selectionBox);
+    m_thumbnail->setObjectName(QStringLiteral("selectionThumbnail"));
     m_thumbnail->setAlignment(Qt::AlignCenter);
     m_form->addRow(m_thumbnail);
     m_name = new QLineEdit(m_selectionBox);
@@ -286,6 +290,9 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
             if (m_viewport && m_viewport->tool() == Viewport::Tool::Align)
                 m_viewport->setTool(Viewport::Tool::Navigate); // stores the alignment first
             emit keyCreated(m_document->keys().createKeyFromDrawing(m_selection.id));
+            // The status bar points at Edit Key with the Brush: the panel, scrolled down to Create
+            // Key, shows it once the key's rows are laid out.
+            QTimer::singleShot(0, this, [this] { revealRow(m_editKey); });
         } catch (const model::EditRefused& e) {
             emit message(e.message());
             QMessageBox::information(this, tr("Create Key"), e.message());
@@ -480,9 +487,14 @@ void PropertiesPanel::showSelection(ScenePanel::Selection selection)
     if (m_viewport && !(previous == selection)) {
         if (m_viewport->tool() == Viewport::Tool::Align && selection.kind != ScenePanel::ItemKind::Drawing)
             m_viewport->setTool(Viewport::Tool::Navigate);
-        if (selection.kind == ScenePanel::ItemKind::Drawing && !m_viewport->isPreview()
-            && m_viewport->tool() != Viewport::Tool::Brush)
-            m_viewport->drawingOverlay().setDrawing(selection.id);
+        // A selected drawing shows (in Preview too) until something else is selected; then the
+        // one the artist asked for with its eye, or none. Brushing keeps its key's drawing.
+        if (m_viewport->tool() != Viewport::Tool::Brush) {
+            if (selection.kind == ScenePanel::ItemKind::Drawing)
+                m_viewport->drawingOverlay().setDrawing(selection.id);
+            else if (m_viewport->tool() != Viewport::Tool::Align)
+                m_viewport->drawingOverlay().showAskedFor();
+        }
     }
     refresh();
 }
@@ -548,6 +560,12 @@ void PropertiesPanel::refresh()
     bool isDrawing = false, isKey = false;
     m_thumbnail->clear();
     m_thumbnail->setVisible(false);
+    auto showThumbnail = [this](const QImage& image) {
+        if (image.isNull())
+            return;
+        m_thumbnail->setPixmap(drawingThumbnail(image, QSize(220, 160)));
+        m_thumbnail->setVisible(true);
+    };
 
     if (m_selection.kind == ScenePanel::ItemKind::Drawing && data.drawing(m_selection.id)) {
         const auto& d = *data.drawing(m_selection.id);
@@ -558,10 +576,7 @@ void PropertiesPanel::refresh()
                                .arg(d.image.height())
                                .arg(d.imageFormat.toUpper())
                                .arg(d.aligned ? tr("camera aligned") : tr("camera not aligned yet")));
-        if (!d.image.isNull()) {
-            m_thumbnail->setPixmap(drawingThumbnail(d.image, QSize(220, 160)));
-            m_thumbnail->setVisible(true);
-        }
+        showThumbnail(d.image);
         m_name->setText(d.name);
         m_opacity->setValue(int(std::lround(d.opacity * 100)));
         m_opacityValue->setText(QStringLiteral("%1 %").arg(m_opacity->value()));
@@ -584,6 +599,9 @@ void PropertiesPanel::refresh()
         for (const auto& d : data.drawings)
             m_linkedDrawing->addItem(d.name, QVariant::fromValue<qulonglong>(d.id));
         const model::ObjectId linked = k.drawingIds.empty() ? 0 : k.drawingIds.front();
+        // The key's drawing, one click away from the Scene tree.
+        if (const model::Drawing* d = data.drawing(linked))
+            showThumbnail(d->image);
         m_linkedDrawing->setCurrentIndex(
             std::max(0, m_linkedDrawing->findData(QVariant::fromValue<qulonglong>(linked))));
     } else if (data.baseMesh) {
@@ -614,6 +632,20 @@ void PropertiesPanel::refresh()
         m_viewport->setFocus(Qt::OtherFocusReason);
     m_updating = false;
     refreshTools();
+}
+
+void PropertiesPanel::revealRow(QWidget* row)
+{
+    auto* scroll = findChild<QScrollArea*>();
+    if (!scroll || !row->isVisibleTo(this))
+        return;
+    // The rows just shown or hidden lay out first (each layout asks its parent's in turn).
+    for (int pass = 0; pass < 4; ++pass)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    // Vertically only: the panel follows the dock's width, and a wider row would shift it sideways.
+    const int across = scroll->horizontalScrollBar()->value();
+    scroll->ensureWidgetVisible(row, 10, 10);
+    scroll->horizontalScrollBar()->setValue(across);
 }
 
 void PropertiesPanel::refreshBlend()

@@ -91,6 +91,8 @@ signals:
 
 private:
     void refresh();
+    /// Scrolls the panel until row (a widget of it, shown) is in view.
+    void revealRow(QWidget* row);
     void refreshBlend();
     /// One blend settings edit from a control (not while the panel itself updates them).
     void documentChanged(const model::ChangeSet& change);

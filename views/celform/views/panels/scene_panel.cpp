@@ -1,10 +1,15 @@
 // Scene tree: rebuilt from the document when its structure changes, selection kept by id.
 #include "celform/views/panels/scene_panel.h"
 
+#include "celform/views/overlays/drawing_overlay.h"
 #include "celform/views/panels/thumbnail.h"
 
 #include <QHeaderView>
+#include <QIcon>
 #include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
 #include <QSignalBlocker>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -13,6 +18,32 @@ namespace celform::views {
 namespace {
 constexpr int kKindRole = Qt::UserRole + 1;
 constexpr int kIdRole = Qt::UserRole + 2;
+/// An eye, open or shut: the drawing shown over the model or not (a desktop theme's icon when it
+/// has one).
+QIcon eyeIcon(bool open)
+{
+    const QIcon themed = QIcon::fromTheme(open ? QStringLiteral("view-visible") : QStringLiteral("view-hidden"));
+    if (!themed.isNull())
+        return themed;
+    QPixmap pixmap(16, 16);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(QColor(60, 60, 60), 1.4));
+    QPainterPath lid;
+    lid.moveTo(1.5, 8.0);
+    lid.quadTo(8.0, open ? 1.0 : 13.0, 14.5, 8.0);
+    if (open) {
+        lid.quadTo(8.0, 15.0, 1.5, 8.0);
+        painter.drawPath(lid);
+        painter.setBrush(QColor(60, 60, 60));
+        painter.drawEllipse(QPointF(8.0, 8.0), 2.2, 2.2);
+    } else {
+        painter.drawPath(lid);
+    }
+    return QIcon(pixmap);
+}
+
 } // namespace
 
 ScenePanel::ScenePanel(model::Document* document, QWidget* parent)
@@ -21,11 +52,16 @@ ScenePanel::ScenePanel(model::Document* document, QWidget* parent)
 {
     m_tree = new QTreeWidget(this);
     m_tree->setHeaderHidden(true);
-    m_tree->setColumnCount(1);
+    m_tree->setColumnCount(2);
+    m_tree->header()->setStretchLastSection(false);
+    m_tree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_tree->header()->setSectionResizeMode(kEyeColumn, QHeaderView::ResizeToContents);
     m_tree->setSelectionMode(QAbstractItemView::SingleSelection);
     m_tree->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
-    m_tree->setToolTip(tr("The base model, the reference drawings and the key viewpoints of the project.\n"
-                          "Double-click or press F2 to rename; Delete removes; the check box disables a key."));
+    m_tree->setToolTip(
+        tr("The base model, the reference drawings and the key viewpoints of the project.\n"
+           "Double-click or press F2 to rename; Delete removes; the check box disables a key; the eye shows or "
+           "hides a drawing over the model (D)."));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_tree);
@@ -35,6 +71,8 @@ ScenePanel::ScenePanel(model::Document* document, QWidget* parent)
             emit selectionChanged(selection());
     });
     connect(m_tree, &QTreeWidget::itemChanged, this, &ScenePanel::onItemChanged);
+    // The eyes take their clicks before the tree: showing a drawing does not select it.
+    m_tree->viewport()->installEventFilter(this);
     connect(m_document, &model::Document::changed, this, &ScenePanel::documentChanged);
     rebuild();
 }
@@ -63,6 +101,45 @@ void ScenePanel::select(Selection wanted)
         }
     }
     m_tree->clearSelection();
+}
+
+void ScenePanel::setDrawingOverlay(DrawingOverlay* overlay)
+{
+    m_overlay = overlay;
+    connect(overlay, &DrawingOverlay::drawingChanged, this, &ScenePanel::updateEyes);
+    updateEyes();
+}
+
+bool ScenePanel::eventFilter(QObject* watched, QEvent* event)
+{
+    const QEvent::Type type = event->type();
+    if (watched != m_tree->viewport() || !m_overlay
+        || (type != QEvent::MouseButtonPress && type != QEvent::MouseButtonDblClick
+            && type != QEvent::MouseButtonRelease))
+        return QWidget::eventFilter(watched, event);
+    const auto* mouse = static_cast<QMouseEvent*>(event);
+    const QModelIndex index = m_tree->indexAt(mouse->position().toPoint());
+    QTreeWidgetItem* item = m_tree->itemFromIndex(index.siblingAtColumn(0));
+    if (!item || index.column() != kEyeColumn || ItemKind(item->data(0, kKindRole).toInt()) != ItemKind::Drawing)
+        return QWidget::eventFilter(watched, event);
+    if (type != QEvent::MouseButtonRelease && mouse->button() == Qt::LeftButton)
+        m_overlay->toggleShown(model::ObjectId(item->data(0, kIdRole).toULongLong()));
+    return true;
+}
+
+void ScenePanel::updateEyes()
+{
+    if (!m_drawingsRoot)
+        return;
+    const model::ObjectId shown = m_overlay ? m_overlay->drawing() : 0;
+    const QSignalBlocker block(m_tree);
+    for (int i = 0; i < m_drawingsRoot->childCount(); ++i) {
+        QTreeWidgetItem* item = m_drawingsRoot->child(i);
+        const bool open = model::ObjectId(item->data(0, kIdRole).toULongLong()) == shown;
+        item->setIcon(kEyeColumn, eyeIcon(open));
+        item->setToolTip(kEyeColumn,
+            open ? tr("Shown over the model: click to hide (D)") : tr("Hidden: click to show over the model (D)"));
+    }
 }
 
 void ScenePanel::removeSelected()
@@ -168,6 +245,7 @@ void ScenePanel::rebuild()
     }
     m_tree->expandAll();
     m_rebuilding = false;
+    updateEyes();
     select(previous);
     if (!(selection() == previous))
         emit selectionChanged(selection());

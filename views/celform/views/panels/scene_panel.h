@@ -11,6 +11,8 @@ class QTreeWidgetItem;
 
 namespace celform::views {
 
+class DrawingOverlay;
+
 class ScenePanel : public QWidget {
     Q_OBJECT
 public:
@@ -28,9 +30,16 @@ public:
     /// Removes the selected drawing or key (Delete key, Edit menu).
     void removeSelected();
     [[nodiscard]] QTreeWidget* tree() const { return m_tree; }
+    /// The viewport's drawing overlay, whose drawing each drawing's eye shows and hides.
+    void setDrawingOverlay(DrawingOverlay* overlay);
+    /// The column of the drawings' eyes.
+    static constexpr int kEyeColumn = 1;
 
 signals:
     void selectionChanged(celform::views::ScenePanel::Selection selection);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void documentChanged(const model::ChangeSet& change);
@@ -40,6 +49,8 @@ private:
     static QString drawingTip(const model::Drawing& drawing);
     static QString keyTip(const model::KeyViewpoint& key);
     void onItemChanged(QTreeWidgetItem* item, int column);
+    /// Each drawing's eye: open when the overlay shows it.
+    void updateEyes();
 
     model::Document* m_document;
     QTreeWidget* m_tree;
@@ -47,6 +58,7 @@ private:
     QTreeWidgetItem* m_drawingsRoot = nullptr;
     QTreeWidgetItem* m_keysRoot = nullptr;
     bool m_rebuilding = false;
+    DrawingOverlay* m_overlay = nullptr;
 };
 
 } // namespace celform::views

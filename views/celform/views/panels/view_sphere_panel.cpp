@@ -55,16 +55,6 @@ Eigen::Vector3d perpendicular(const Eigen::Vector3d& v)
     return v.cross(axis).normalized();
 }
 
-QFont scaledFont(const QFont& base, double factor)
-{
-    QFont font = base;
-    if (font.pointSizeF() > 0)
-        font.setPointSizeF(std::max(6.5, font.pointSizeF() * factor));
-    else
-        font.setPixelSize(std::max(9, int(std::lround(font.pixelSize() * factor))));
-    return font;
-}
-
 /// A one-pixel pen for the sphere's wireframe. Cosmetic pens take the raster engine's line
 /// rasteriser; a 1.0-wide geometric pen (dashed above all) goes through the path stroker, which
 /// made the hull the dearest part of a repaint on every played frame.
@@ -73,20 +63,6 @@ QPen cosmeticPen(const QColor& color, Qt::PenStyle style)
     QPen pen(color, 1.0, style);
     pen.setCosmetic(true);
     return pen;
-}
-
-/// Moves r inside bounds (as far as it fits).
-QRectF clampInto(QRectF r, const QRectF& bounds)
-{
-    if (r.right() > bounds.right())
-        r.moveRight(bounds.right());
-    if (r.left() < bounds.left())
-        r.moveLeft(bounds.left());
-    if (r.bottom() > bounds.bottom())
-        r.moveBottom(bounds.bottom());
-    if (r.top() < bounds.top())
-        r.moveTop(bounds.top());
-    return r;
 }
 
 } // namespace
@@ -245,6 +221,11 @@ void ViewSpherePanel::rebuildReadout()
 bool ViewSpherePanel::isActive(const SpherePoint& point) const
 {
     return point.key != 0 && point.weight >= kShownWeight;
+}
+
+double ViewSpherePanel::pointRadius(const SpherePoint& point) const
+{
+    return isActive(point) ? kActiveKeyRadius : kKeyRadius;
 }
 
 // --- geometry -------------------------------------------------------------------------------
@@ -462,8 +443,6 @@ void ViewSpherePanel::paintPoints(QPainter& painter, const Frame& f, bool front)
     const QFont labelFont = scaledFont(font(), 0.85);
     QFont activeFont = labelFont;
     activeFont.setBold(true);
-    const QRectF bounds
-        = QRectF(rect()).adjusted(2.0, 2.0, -2.0, 0.0).intersected(QRectF(0.0, 0.0, width(), readoutRect().top()));
 
     for (int i : order) {
         const SpherePoint& point = m_points[std::size_t(i)];
@@ -482,7 +461,7 @@ void ViewSpherePanel::paintPoints(QPainter& painter, const Frame& f, bool front)
             continue;
         }
         const bool active = isActive(point);
-        const double r = active ? kActiveKeyRadius : kKeyRadius;
+        const double r = pointRadius(point);
         if (i == m_hoverPoint) {
             painter.setPen(QPen(palette().color(QPalette::Highlight), 2.0));
             painter.setBrush(Qt::NoBrush);
@@ -492,29 +471,10 @@ void ViewSpherePanel::paintPoints(QPainter& painter, const Frame& f, bool front)
         painter.setBrush(active ? kActiveKey : kKey);
         painter.drawEllipse(s, r, r);
 
-        // The label sits radially outside the point, where the hull's edges are fewest.
         painter.setFont(active ? activeFont : labelFont);
-        const QFontMetricsF fm(painter.font());
-        const QSizeF size(fm.horizontalAdvance(point.name) + 1.0, fm.height());
-        QPointF dir = s - f.centre;
-        const double len = std::hypot(dir.x(), dir.y());
-        dir = len > 0.15 * f.radius ? dir / len : QPointF(0.7071, -0.7071);
-        const QPointF anchor = s + dir * (r + 3.0);
-        // On the outer side when it fits there, else on the roomier side, shortened with "…" when
-        // even that is too narrow: a label is never cut by the panel's edge.
-        const double roomRight = bounds.right() - anchor.x(), roomLeft = anchor.x() - bounds.left();
-        bool right = dir.x() >= -0.2;
-        if (size.width() > (right ? roomRight : roomLeft))
-            right = roomRight >= roomLeft;
-        const double room = std::max(0.0, right ? roomRight : roomLeft);
-        const QString name = size.width() <= room ? point.name : fm.elidedText(point.name, Qt::ElideRight, room - 1.0);
-        QRectF label(QPointF(), QSizeF(std::min(size.width(), room), size.height()));
-        label.moveTop(anchor.y() - size.height() / 2.0 + dir.y() * size.height() / 2.0);
-        if (right)
-            label.moveLeft(anchor.x() + (std::abs(dir.x()) < 0.2 ? 2.0 : 0.0));
-        else
-            label.moveRight(anchor.x());
-        m_labels.draw(painter, clampInto(label, bounds), name, active ? kActiveKey.darker(135) : text, base);
+        QString name;
+        const QRectF label = keyLabelRect(f, point, &name);
+        m_labels.draw(painter, label, name, active ? kActiveKey.darker(135) : text, base);
         painter.restore();
     }
 }
@@ -551,24 +511,9 @@ void ViewSpherePanel::paintView(QPainter& painter, const Frame& f) const
     painter.setBrush(outside ? kFalloff : text);
     painter.drawEllipse(s, 4.5, 4.5);
     painter.setFont(scaledFont(font(), 0.85));
-    const QFontMetricsF fm(painter.font());
-    // Paper 1, section 3.3: outside the keys' coverage the blend fades to the base model by c.
-    const QString label = outside ? tr("view · falloff c = %1", "marker of the current view outside the keys")
-                                        .arg(locale().toString(m_falloff, 'f', 2))
-                                  : tr("view", "marker of the current view direction");
-    // Below the dot, running towards the centre: key labels sit radially outside their points,
-    // so this side is the free one.
-    QRectF box(QPointF(), QSizeF(fm.horizontalAdvance(label) + 1.0, fm.height()));
-    const double dx = s.x() - f.centre.x();
-    box.moveTop(s.y() + 6.0);
-    if (std::abs(dx) < 0.25 * f.radius)
-        box.moveLeft(s.x() - box.width() / 2.0);
-    else if (dx > 0.0)
-        box.moveRight(s.x() + 6.0);
-    else
-        box.moveLeft(s.x() - 6.0);
-    const QRectF bounds(2.0, 2.0, width() - 4.0, readoutRect().top() - 2.0);
-    m_labels.draw(painter, clampInto(box, bounds), label, outside ? kFalloff.darker(150) : text, base);
+    QString label;
+    const QRectF box = viewLabelRect(f, &label);
+    m_labels.draw(painter, box, label, outside ? kFalloff.darker(150) : text, base);
 }
 
 void ViewSpherePanel::paintAxes(QPainter& painter, const Frame& f) const

@@ -10,6 +10,7 @@
 
 #include <QPixmap>
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 #include <QWidget>
 
@@ -42,6 +43,9 @@ public:
     /// Where a key's point is drawn, in widget coordinates; a null point when the key is not on
     /// the sphere (unknown or disabled). Used for tooltips, picking and tests.
     [[nodiscard]] QPointF screenPosition(model::ObjectId key) const;
+    /// Where the labels are painted, in widget coordinates: every key's on the sphere, then the
+    /// view marker's (when there is a view). Used for tests.
+    [[nodiscard]] std::vector<QRectF> labelRects() const;
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
@@ -89,6 +93,8 @@ private:
     /// Index into m_points of the point under pos, preferring the one nearest the viewer; -1.
     [[nodiscard]] int pointAt(const QPointF& pos, bool keysOnly) const;
     [[nodiscard]] bool isActive(const SpherePoint& point) const;
+    /// The radius a key's point is drawn with (larger when it takes part in the blend).
+    [[nodiscard]] double pointRadius(const SpherePoint& point) const;
 
     /// Renders m_background (window colour and the shaded disc) when the size or palette changed.
     void paintBackground(const Frame& f) const;
@@ -100,6 +106,12 @@ private:
     void paintAxes(QPainter& painter, const Frame& f) const;
     void paintReadout(QPainter& painter) const;
     void paintEmptyHint(QPainter& painter, const Frame& f) const;
+    /// Where labels may go: the panel less a margin, above the readout.
+    [[nodiscard]] QRectF labelBounds() const;
+    /// A key's label box (its text, elided to fit, in text when given).
+    [[nodiscard]] QRectF keyLabelRect(const Frame& f, const SpherePoint& point, QString* text) const;
+    /// The view marker's label box, clear of the keys' labels where there is room.
+    [[nodiscard]] QRectF viewLabelRect(const Frame& f, QString* text) const;
 
     model::Document* m_document;
 
