@@ -1535,6 +1535,18 @@
         <source>Select a drawing in the Scene panel and press Align to Drawing; then Create Key from Drawing.</source>
         <translation>シーンパネルで絵を選んで「絵に合わせる」を押し、次に「絵からキーを作成」を押してください。</translation>
     </message>
+    <message>
+        <source>Press Space: the model changes shape with the view to match its drawings. Click a key in the Scene panel to see its drawing.</source>
+        <translation>Space キーを押してください: モデルは参照画に合うよう視点に応じて形を変えます。シーンパネルでキーをクリックすると、その参照画が表示されます。</translation>
+    </message>
+    <message>
+        <source>Press Align to Drawing in the Properties panel and move the camera until the model matches the drawing.</source>
+        <translation>プロパティパネルの「参照画に位置合わせ」を押し、モデルが参照画に合うまでカメラを動かしてください。</translation>
+    </message>
+    <message>
+        <source>The camera matches the drawing: press Create Key from Drawing in the Properties panel.</source>
+        <translation>カメラが参照画に合いました: プロパティパネルの「参照画からキーを作成」を押してください。</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::FitActions</name>
@@ -1640,6 +1652,18 @@
     <message>
         <source>Analysing the picture with the new light…</source>
         <translation>新しいライトで画像を解析中…</translation>
+    </message>
+    <message>
+        <source>Light optimised: the segments&apos; bright/dark ratios are %1 % closer to the window (distance %2 → %3); %4 of %5 segments inside it (before: %6); depth error MSE %7 → %8 (%9 ms)</source>
+        <translation>ライトを最適化しました: セグメントの明暗比がウィンドウに %1 % 近づきました（距離 %2 → %3）。ウィンドウ内のセグメント %5 個中 %4 個（以前: %6）。奥行き誤差 MSE %7 → %8（%9 ms）</translation>
+    </message>
+    <message>
+        <source>Fewer segments are inside the window than before (%1 → %2 of %3): the ratios came closer overall, but some that were inside left it. Undo if those mattered, or weight the segments by area in the Depth tab.</source>
+        <translation>ウィンドウ内のセグメントが以前より減りました（%3 個中 %1 → %2）: 比は全体として近づきましたが、内側にあったものの一部が外れました。それらが重要なら元に戻すか、奥行きタブでセグメントを面積で重み付けしてください。</translation>
+    </message>
+    <message>
+        <source>The segments&apos; ratios improved but the depth error rose: try another start light (move it, then optimise again) or a more lenient window in the Depth tab.</source>
+        <translation>セグメントの比は改善しましたが奥行き誤差が増えました: 別の開始ライトを試す（ライトを動かしてから再度最適化する）か、奥行きタブでより緩いウィンドウを選んでください。</translation>
     </message>
 </context>
 <context>
@@ -2013,10 +2037,6 @@ Recover it now?</source>
         <translation>ナビゲーションのみ(&amp;N)</translation>
     </message>
     <message>
-        <source>Leave alignment and brush tools</source>
-        <translation>位置合わせツールとブラシツールを終了します</translation>
-    </message>
-    <message>
         <source>Create Key from &amp;View</source>
         <translation>現在のビューからキーを作成(&amp;V)</translation>
     </message>
@@ -2265,14 +2285,6 @@ Recover it now?</source>
         <translation>ライトはすでに解析結果に合っています（%2 セグメント中 %1 が範囲内）。</translation>
     </message>
     <message>
-        <source>Light optimised: depth error MSE %1 → %2, %3 → %4 of %5 segments inside the window (%6 ms)</source>
-        <translation>ライトを最適化しました: 奥行き誤差 MSE %1 → %2、範囲内のセグメント %3 → %4 / %5（%6 ms）</translation>
-    </message>
-    <message>
-        <source>The segments&apos; ratios improved but the depth error rose: try another start light (move it, then optimise again) or a more lenient window in the Depth tab.</source>
-        <translation>セグメントの比率は改善しましたが、奥行き誤差が増えました。別の開始位置のライトを試す（ライトを動かしてから再度最適化する）か、「奥行き」タブでより緩い範囲を選んでください。</translation>
-    </message>
-    <message>
         <source>E&amp;xport…</source>
         <translation>エクスポート(&amp;X)…</translation>
     </message>
@@ -2293,6 +2305,18 @@ Recover it now?</source>
     <message>
         <source>Show only the drawing&apos;s outline in the viewport, the one Fit to Drawing aims at (its threshold and closing radius are in the drawing&apos;s Properties), so the model&apos;s contours can be matched to it</source>
         <translation>ビューポートに参照画の輪郭だけを表示し、モデルの輪郭線を合わせられるようにします。これは「参照画に合わせる」が目標とする輪郭です（しきい値とクロージング半径は参照画の「プロパティ」で設定します）</translation>
+    </message>
+    <message>
+        <source>Leave alignment and brush tools; a drawing not asked for with its eye is hidden</source>
+        <translation>位置合わせとブラシのツールを終了します。目のアイコンで表示を指定していない参照画は隠れます</translation>
+    </message>
+    <message>
+        <source>Show/Hide &amp;Drawing</source>
+        <translation>参照画の表示/非表示(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Show the selected drawing over the model whatever is selected, or hide the drawing shown (the eye in the Scene panel)</source>
+        <translation>選択に関係なく選択中の参照画をモデルの上に表示するか、表示中の参照画を隠します（シーンパネルの目のアイコン）</translation>
     </message>
 </context>
 <context>
@@ -2656,6 +2680,10 @@ Recover it now?</source>
         <source>Give each key to one command first</source>
         <translation>先に各キーを 1 つのコマンドだけに割り当ててください</translation>
     </message>
+    <message>
+        <source>Your desktop (%1) may take Alt + drag to move windows: if the viewport does not orbit, choose Blender, which needs no Alt.</source>
+        <translation>お使いのデスクトップ（%1）は Alt + ドラッグをウィンドウの移動に使うことがあります: ビューポートが回転しない場合は、Alt を使わない Blender を選んでください。</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ProgressDialog</name>
@@ -3014,6 +3042,10 @@ Recover it now?</source>
         <source>%1 already exists. Replace it?</source>
         <translation>%1 はすでにあります。置き換えますか？</translation>
     </message>
+    <message>
+        <source>Shot camera (the camera path)</source>
+        <translation>ショットカメラ（カメラパス）</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::RenderRunner</name>
@@ -3072,6 +3104,18 @@ Recover it now?</source>
     <message>
         <source>Rendered %1</source>
         <translation>%1 をレンダーしました</translation>
+    </message>
+    <message>
+        <source>Render Finished</source>
+        <translation>レンダー完了</translation>
+    </message>
+    <message>
+        <source>No file manager could be opened. The frames are in:</source>
+        <translation>ファイルマネージャーを開けませんでした。フレームの保存先:</translation>
+    </message>
+    <message>
+        <source>No image viewer could be opened. The image is:</source>
+        <translation>画像ビューアーを開けませんでした。画像の保存先:</translation>
     </message>
 </context>
 <context>
@@ -5758,10 +5802,6 @@ chamfer distance %3 px</source>
         <translation>/ </translation>
     </message>
     <message>
-        <source>Last frame shown on the timeline</source>
-        <translation>タイムラインに表示する最後のフレーム</translation>
-    </message>
-    <message>
         <source>Frame:</source>
         <translation>フレーム:</translation>
     </message>
@@ -6000,6 +6040,10 @@ chamfer distance %3 px</source>
     <message>
         <source>%1 patch</source>
         <translation>%1 のパッチ</translation>
+    </message>
+    <message>
+        <source>The scene&apos;s last frame (set the range in the Timeline)</source>
+        <translation>シーンの最後のフレーム（範囲はタイムラインで設定します）</translation>
     </message>
 </context>
 <context>
@@ -6838,12 +6882,6 @@ Size %4 × %5 × %6</source>
 <context>
     <name>celform::views::ScenePanel</name>
     <message>
-        <source>The base model, the reference drawings and the key viewpoints of the project.
-Double-click or press F2 to rename; Delete removes; the check box disables a key.</source>
-        <translation>プロジェクトのベースモデル、参照画、キー視点です。
-ダブルクリックまたは F2 キーで名前を変更、Delete キーで削除、チェックボックスでキーを無効化できます。</translation>
-    </message>
-    <message>
         <source>Base model</source>
         <translation>ベースモデル</translation>
     </message>
@@ -6890,6 +6928,20 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     <message>
         <source>Direction (%1, %2, %3)</source>
         <translation>方向 (%1, %2, %3)</translation>
+    </message>
+    <message>
+        <source>The base model, the reference drawings and the key viewpoints of the project.
+Double-click or press F2 to rename; Delete removes; the check box disables a key; the eye shows or hides a drawing over the model (D).</source>
+        <translation>プロジェクトのベースモデル、参照画、キー視点です。
+ダブルクリックまたは F2 で名前を変更、Delete で削除、チェックボックスでキーを無効化、目のアイコンで参照画をモデルの上に表示/非表示します（D）。</translation>
+    </message>
+    <message>
+        <source>Shown over the model: click to hide (D)</source>
+        <translation>モデルの上に表示中: クリックで隠す（D）</translation>
+    </message>
+    <message>
+        <source>Hidden: click to show over the model (D)</source>
+        <translation>非表示: クリックでモデルの上に表示（D）</translation>
     </message>
 </context>
 <context>
@@ -7118,6 +7170,10 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
     <message>
         <source>Resize the brush with the mouse (click or Enter keeps, Esc cancels)</source>
         <translation>マウスでブラシのサイズを変更（クリックか Enter で確定、Esc で取り消し）</translation>
+    </message>
+    <message>
+        <source>Frame All would take the view off the camera being edited; leave the tool first (Esc).</source>
+        <translation>全体を表示すると編集中のカメラから視点が外れます。先にツールを終了してください（Esc）。</translation>
     </message>
 </context>
 <context>
