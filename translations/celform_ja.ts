@@ -1547,6 +1547,10 @@
         <source>The camera matches the drawing: press Create Key from Drawing in the Properties panel.</source>
         <translation>カメラが参照画に合いました: プロパティパネルの「参照画からキーを作成」を押してください。</translation>
     </message>
+    <message>
+        <source>If Alt + drag moves the window instead of the view, choose Blender navigation in Edit ▸ Preferences: it needs no Alt.</source>
+        <translation>Alt + ドラッグでビューではなくウィンドウが動く場合は、「編集」▸「環境設定」で Blender のナビゲーションを選んでください。Alt を使いません。</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::FitActions</name>

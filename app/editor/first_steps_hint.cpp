@@ -52,9 +52,18 @@ QString FirstStepsHint::hintText() const
     const model::Drawing* selected = data.drawing(m_selectedDrawing);
     if (!selected)
         return tr("Select a drawing in the Scene panel and press Align to Drawing; then Create Key from Drawing.");
-    if (!selected->aligned)
-        return tr("Press Align to Drawing in the Properties panel and move the camera until the model matches the "
-                  "drawing.");
+    if (!selected->aligned) {
+        QString align = tr("Press Align to Drawing in the Properties panel and move the camera until the model "
+                           "matches the drawing.");
+        // Linux desktops move windows with Alt + drag by default: the Maya style's orbit never
+        // reaches the viewport there (the Preferences say the same).
+        if (m_viewport->navigation().style == views::NavigationStyle::Maya
+            && !qEnvironmentVariableIsEmpty("XDG_CURRENT_DESKTOP"))
+            align += QLatin1Char(' ')
+                + tr("If Alt + drag moves the window instead of the view, choose Blender navigation in "
+                     "Edit ▸ Preferences: it needs no Alt.");
+        return align;
+    }
     return tr("The camera matches the drawing: press Create Key from Drawing in the Properties panel.");
 }
 

@@ -639,6 +639,18 @@ private slots:
         const QString selected = hint->text();
         QVERIFY2(!selected.contains(QStringLiteral("Select a drawing")), qPrintable(selected));
         QVERIFY(selected.contains(QStringLiteral("Align to Drawing")));
+        // Item 18: under a desktop that takes Alt + drag, the hint says how to navigate without Alt.
+        {
+            const QByteArray saved = qgetenv("XDG_CURRENT_DESKTOP");
+            qputenv("XDG_CURRENT_DESKTOP", "KDE");
+            QVERIFY(clickSceneItem(window, QStringLiteral("openclipart_contour_elephant")));
+            QVERIFY2(hint->text().contains(QStringLiteral("Blender navigation")), qPrintable(hint->text()));
+            qunsetenv("XDG_CURRENT_DESKTOP");
+            QVERIFY(clickSceneItem(window, QStringLiteral("tuxpaint_elephant")));
+            QVERIFY(!hint->text().contains(QStringLiteral("Blender navigation")));
+            if (!saved.isNull())
+                qputenv("XDG_CURRENT_DESKTOP", saved);
+        }
         alignByDrag(window);
         if (QTest::currentTestFailed())
             return;
