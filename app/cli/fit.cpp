@@ -145,7 +145,7 @@ int runFit(const Invocation& in)
     model::ShapeFitRequest request;
     request.regionFaceSet = in.value("region");
     request.pinFaceSet = in.value("pin");
-    request.mirrorX = in.isSet("mirror");
+    request.mirror = in.isSet("mirror");
     if (in.isSet("iterations")) {
         request.maxRounds = parseInt("iterations", in.value("iterations"));
         if (request.maxRounds < 1 || request.maxRounds > 100)
@@ -272,7 +272,9 @@ std::vector<SubCommand> fitCommands()
                 {"region", "FACESET",
                     QT_TRANSLATE_NOOP("celform::app::Cli", "Only these painted faces may move (default: all).")},
                 {"pin", "FACESET", QT_TRANSLATE_NOOP("celform::app::Cli", "The vertices of these faces stay put.")},
-                {"mirror", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Keep the shape symmetric across x = 0.")},
+                {"mirror", nullptr,
+                    QT_TRANSLATE_NOOP(
+                        "celform::app::Cli", "Keep the shape symmetric across the project's mirror plane.")},
                 {"iterations", "N",
                     QT_TRANSLATE_NOOP("celform::app::Cli", "Rounds of the shape fit at most (default 10).")},
                 {"strength", "S",

@@ -5,6 +5,7 @@
 
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/data/mirror_plane.h"
 #include "celform/model/io/mesh_io.h"
 #include "celform/model/render/frame_evaluator.h"
 #include "celform/model/io/project_file.h"
@@ -92,8 +93,16 @@ int runBrush(const Invocation& in)
             throw UsageError{Cli::tr("--strength must be in (0, 1]")};
     }
 
+    const QString mirrorName = in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off");
+    const bool autoMirror = mirrorName == QLatin1String("auto");
+    const std::optional<model::MirrorPlane> chosen = model::mirrorPlaneFromName(mirrorName);
+    if (!autoMirror && (!chosen || mirrorName != mirrorName.toLower()))
+        throw UsageError{Cli::tr("--mirror must be auto, x, y, z or off, not “%1”").arg(mirrorName)};
+
     const QString path = in.argument(0);
     auto doc = openProject(path);
+    // auto: the project's plane (detected on the model when it was imported).
+    const model::MirrorPlane mirror = autoMirror ? doc->data().mirrorPlane : *chosen;
     const model::KeyViewpoint* key = doc->data().keyByName(in.value("key"));
     if (!key)
         throw model::IoError(path, Cli::tr("has no key named “%1”").arg(in.value("key")));
@@ -104,13 +113,19 @@ int runBrush(const Invocation& in)
     const QString keyName = key->name;
     // One stroke of one step, seen through the key's camera, as the editor's brush tool runs it.
     model::BrushStroke stroke
-        = doc->keys().beginBrushStroke(key->id, frame, std::uint32_t(picked), radius, key->camera, false, profile);
+        = doc->keys().beginBrushStroke(key->id, frame, std::uint32_t(picked), radius, key->camera, mirror, profile);
+    if (stroke.twinMissing)
+        printErr(Cli::tr("warning: vertex %1 has no mirror twin across the %2 plane; only its side moved")
+                     .arg(picked)
+                     .arg(model::mirrorPlaneName(mirror)));
     doc->keys().applyBrushStroke(stroke, step);
     doc->keys().endBrushStroke(stroke);
     doc->saveAs(path);
     if (in.isSet("json"))
         printJson({{"key", keyName}, {"picked", picked}, {"frame", frame},
-            {"moved_vertices", double(stroke.selection.indices.size())}});
+            {"moved_vertices", double(stroke.indices.size())}, {"mirror_plane", model::mirrorPlaneName(mirror)},
+            {"mirrored_vertices", double(stroke.mirrorSelection.indices.size())},
+            {"twin", stroke.mirrorSelection.indices.empty() ? -1.0 : double(stroke.mirrorSelection.picked)}});
     return kExitOk;
 }
 
@@ -199,7 +214,7 @@ std::vector<SubCommand> keyCommands()
             runKey},
         {"brush",
             {"celform brush P --key N --vertex I --radius R (--drag DX,DY | --push DZ) [--falloff C] [--strength S] "
-             "[--frame F] [--json]"},
+             "[--mirror auto|x|y|z|off] [--frame F] [--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Deforms a key with the falloff brush, seen from the key's camera."),
             {{"P", kProjectArgument}},
             {{"key", "N", QT_TRANSLATE_NOOP("celform::app::Cli", "Name of the key to deform.")},
@@ -215,6 +230,10 @@ std::vector<SubCommand> keyCommands()
                     QT_TRANSLATE_NOOP(
                         "celform::app::Cli", "Falloff curve: paper ((1 - d/r)^2, the default), smooth or sphere.")},
                 {"strength", "S", QT_TRANSLATE_NOOP("celform::app::Cli", "Strength in (0, 1], 1 by default.")},
+                {"mirror", "auto|x|y|z|off",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "Move the mirror image too, across the plane perpendicular to that model axis through the "
+                        "model's centre; auto: the project's plane (detected on the model); off by default.")},
                 {"frame", "F", kFrameOption},
                 {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print what moved as JSON.")}},
             runBrush},

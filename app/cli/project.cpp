@@ -2,6 +2,7 @@
 #include "cli/command.h"
 #include "cli/options.h"
 
+#include "celform/algorithms/symmetry.h"
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/document/document.h"
 #include "celform/model/io/image_io.h"
@@ -13,6 +14,15 @@
 
 namespace celform::app {
 namespace {
+
+/// The plane detected on the model and how far each axis plane is from mirroring it (the mean
+/// distance of a reflected vertex to the nearest vertex, as a fraction of the model's diagonal).
+QJsonObject symmetryJson(const algo::TriMesh& mesh)
+{
+    const algo::SymmetryEstimate& s = mesh.symmetry();
+    return {{"detected", model::mirrorPlaneName(model::detectMirrorPlane(mesh))},
+        {"error", QJsonObject{{"x", s.error[0]}, {"y", s.error[1]}, {"z", s.error[2]}}}};
+}
 
 int runNew(const Invocation& in)
 {
@@ -53,7 +63,7 @@ int runInfo(const Invocation& in)
 
     using model::vec3Json;
     QJsonObject root{{"file", QFileInfo(path).absoluteFilePath()}, {"format_version", model::kProjectFormatVersion},
-        {"current_frame", data.currentFrame}};
+        {"current_frame", data.currentFrame}, {"mirror_plane", model::mirrorPlaneName(data.mirrorPlane)}};
     if (data.baseMesh) {
         const auto& mesh = *data.baseMesh;
         const auto box = algo::boundingBox(mesh.vertices);
@@ -62,7 +72,8 @@ int runInfo(const Invocation& in)
                 {"triangle_count", double(mesh.faceCount())},
                 {"bounding_box", QJsonObject{{"min", vec3Json(box.min())}, {"max", vec3Json(box.max())}}},
                 {"centroid", vec3Json(algo::centroid(mesh.vertices))}, {"has_uvs", mesh.hasUvs()},
-                {"materials", double(mesh.materials.size())}, {"face_sets", double(data.faceSets.size())}});
+                {"materials", double(mesh.materials.size())}, {"face_sets", double(data.faceSets.size())},
+                {"symmetry", symmetryJson(mesh)}});
     } else {
         root.insert("base_mesh", QJsonValue::Null);
     }
@@ -124,6 +135,7 @@ int runInfo(const Invocation& in)
           << '\n';
     else
         s << Cli::tr("Base model: none") << '\n';
+    s << Cli::tr("Mirror plane: %1").arg(model::mirrorPlaneName(data.mirrorPlane)) << '\n';
     s << Cli::tr("Drawings: %1").arg(data.drawings.size()) << '\n';
     for (std::size_t i = 0; i < data.drawings.size(); ++i)
         s << "  " << data.drawings[i].name << " (" << sizes[i].width() << "x" << sizes[i].height() << ' '

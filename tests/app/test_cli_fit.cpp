@@ -4,6 +4,7 @@
 // refused with the file untouched, and usage errors.
 #include "cli_run.h"
 #include "fit_model_sheet.h"
+#include "test_meshes.h"
 
 #include "celform/model/io/mesh_io.h"
 #include "celform/model/io/project_file.h"
@@ -161,6 +162,47 @@ private slots:
             QCOMPARE(runCelform(args).exitCode, 2);
         QCOMPARE(runCelform({"fit", m_project, "--key", "nobody", "--camera"}).exitCode, 3);
         QCOMPARE(digest(m_project), before);
+    }
+
+    /// Issue 24: `info --json` names the plane detected on the elephant (z: it faces +x), and
+    /// `brush --mirror` moves the other hind leg too; --mirror x finds its twins elsewhere.
+    void brushMirror()
+    {
+        const QString project = path(QStringLiteral("mirror.celform"));
+        QVERIFY(QFile::copy(m_project, project));
+        Run r = runCelform({"info", project, "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject info = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(info["mirror_plane"].toString(), QStringLiteral("z"));
+        const QJsonObject symmetry = info["base_mesh"].toObject()["symmetry"].toObject();
+        QCOMPARE(symmetry["detected"].toString(), QStringLiteral("z"));
+        const QJsonObject error = symmetry["error"].toObject();
+        qInfo("elephant symmetry error: x %.4f, y %.4f, z %.4f", error["x"].toDouble(), error["y"].toDouble(),
+            error["z"].toDouble());
+        QVERIFY(error["z"].toDouble() < error["x"].toDouble() && error["z"].toDouble() < error["y"].toDouble());
+
+        const QString vertex = QString::number(test::elephantHindLegVertex(model::importMesh(m_mesh).mesh));
+        auto brush = [&](const char* mirror) {
+            const Run run = runCelform({"brush", project, "--key", "side", "--vertex", vertex, "--radius", "0.08",
+                "--drag", "0,0.01", "--mirror", QString::fromLatin1(mirror), "--json"});
+            [&] { QCOMPARE(run.exitCode, 0); }();
+            return QJsonDocument::fromJson(run.out.toUtf8()).object();
+        };
+        const QJsonObject off = brush("off");
+        QCOMPARE(off["mirrored_vertices"].toInt(), 0);
+        const QJsonObject automatic = brush("auto");
+        qInfo("brush on vertex %s: off moves %d; auto (%s) moves %d, %d of them mirrored", qPrintable(vertex),
+            off["moved_vertices"].toInt(), qPrintable(automatic["mirror_plane"].toString()),
+            automatic["moved_vertices"].toInt(), automatic["mirrored_vertices"].toInt());
+        QCOMPARE(automatic["mirror_plane"].toString(), QStringLiteral("z"));
+        QVERIFY(automatic["mirrored_vertices"].toInt() > off["moved_vertices"].toInt() / 2);
+        QVERIFY(automatic["moved_vertices"].toInt() > off["moved_vertices"].toInt());
+        // z by name is the same plane (the shape has moved since: a vertex more or less in reach).
+        QVERIFY(std::abs(brush("z")["mirrored_vertices"].toInt() - automatic["mirrored_vertices"].toInt()) <= 3);
+        QCOMPARE(runCelform({"brush", project, "--key", "side", "--vertex", vertex, "--radius", "0.08", "--drag",
+                                "0,0.01", "--mirror", "w"})
+                     .exitCode,
+            2);
     }
 };
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -150,6 +151,24 @@ inline algo::TriMesh torus(float R, float r, int nu, int nv)
             m.faces.row(2 * a + 1) << a, c, d;
         }
     return m;
+}
+
+/// On the shared elephant (it faces +x, roughly symmetric across z): a hind-leg vertex, the lowest
+/// in the back of the model, well on the +z side.
+inline std::uint32_t elephantHindLegVertex(const algo::TriMesh& mesh)
+{
+    const Eigen::AlignedBox3d box = algo::boundingBox(mesh.vertices);
+    const Eigen::Vector3d c = box.center(), size = box.sizes();
+    std::uint32_t picked = 0;
+    double lowest = std::numeric_limits<double>::infinity();
+    for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+        const Eigen::Vector3d p = mesh.vertices.row(v).transpose().cast<double>();
+        if (p.x() < c.x() - 0.2 * size.x() && p.z() > c.z() + 0.2 * size.z() && p.y() < lowest) {
+            lowest = p.y();
+            picked = std::uint32_t(v);
+        }
+    }
+    return picked;
 }
 
 } // namespace celform::test

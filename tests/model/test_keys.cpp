@@ -177,6 +177,48 @@ private slots:
         QVERIFY(std::abs(moved(0, 0) - (1.0 + 0.3 * w)) < 1e-6);
     }
 
+    void mirrorStrokeOnTheElephantMovesTheOtherHindLeg()
+    {
+        // Issue 24: the elephant faces +x and is roughly (not vertex-exactly) symmetric across z.
+        CELFORM_REQUIRE_SHARED(path, QStringLiteral("meshes/cgal_elephant.off"));
+        Document doc;
+        doc.reset(newProject(std::make_shared<const algo::TriMesh>(importMesh(path).mesh), QStringLiteral("elephant")));
+        const algo::TriMesh& mesh = *doc.data().baseMesh;
+        QCOMPARE(doc.data().mirrorPlane, MirrorPlane::Z);
+        const std::uint32_t picked = test::elephantHindLegVertex(mesh);
+        const Eigen::AlignedBox3d box = algo::boundingBox(mesh.vertices);
+        const Eigen::Vector3d c = box.center(), size = box.sizes();
+        const ObjectId key = doc.keys().createKey(QStringLiteral("side"), cameraAt(c + Eigen::Vector3d(0, 0, 5)));
+        auto stroke = [&](MirrorPlane plane, std::size_t& near, std::size_t& far) -> BrushStroke {
+            BrushStroke s
+                = doc.keys().beginBrushStroke(key, 0, picked, 0.06 * size.norm(), doc.data().key(key)->camera, plane);
+            doc.keys().applyBrushStroke(s, {BrushMotion::Drag, 0.0, 0.05});
+            doc.keys().endBrushStroke(s);
+            near = far = 0;
+            for (std::uint32_t v : s.indices)
+                (mesh.vertices(v, 2) > c.z() ? near : far) += 1;
+            return s;
+        };
+        std::size_t near = 0, far = 0;
+        stroke(MirrorPlane::Off, near, far);
+        qInfo("elephant hind leg, vertex %u, no mirror: %zu on its side, %zu on the other", picked, near, far);
+        QVERIFY(near > 10);
+        QCOMPARE(far, std::size_t(0));
+        const BrushStroke mirrored = stroke(MirrorPlane::Z, near, far);
+        qInfo("elephant hind leg, Z mirror: %zu on its side, %zu on the other (twin %u)", near, far,
+            mirrored.mirrorSelection.picked);
+        QVERIFY(!mirrored.twinMissing);
+        QVERIFY(far > near / 2); // the triangulation differs between the legs: not as many
+        // The twin's selection moves the mirror image of the drag (the camera looks along -z: the
+        // reflected up is the same up), and the plane is one undo step to change.
+        const int count = doc.undoStack()->count();
+        doc.keys().setMirrorPlane(MirrorPlane::X);
+        QCOMPARE(doc.data().mirrorPlane, MirrorPlane::X);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.data().mirrorPlane, MirrorPlane::Z);
+        QCOMPARE(doc.undoStack()->count(), count + 1);
+    }
+
     void importDeformation()
     {
         QTemporaryDir dir;

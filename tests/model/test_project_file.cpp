@@ -447,6 +447,28 @@ private slots:
         QCOMPARE(loaded.baseMesh->faceCount(), Eigen::Index(5558));
     }
 
+    void mirrorPlaneIsSavedAndDetectedForOldFiles()
+    {
+        CELFORM_REQUIRE_SHARED(meshPath, QStringLiteral("meshes/cgal_elephant.off"));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("elephant.celform"));
+        ProjectData data = newProject(std::make_shared<algo::TriMesh>(importMesh(meshPath).mesh), "elephant");
+        QCOMPARE(data.mirrorPlane, MirrorPlane::Z); // detected: the elephant faces +x
+        data.mirrorPlane = MirrorPlane::Y;
+        saveProject(data, path);
+        QCOMPARE(loadProject(path).mirrorPlane, MirrorPlane::Y);
+        // A file from before the plane was saved gets the plane detected on its model.
+        editManifest(path, [](QJsonObject& m) { m.remove("mirror_plane"); });
+        QCOMPARE(loadProject(path).mirrorPlane, MirrorPlane::Z);
+        editManifest(path, [](QJsonObject& m) { m.insert("mirror_plane", "w"); });
+        try {
+            (void)loadProject(path);
+            QFAIL("a bad mirror plane was read");
+        } catch (const IoError& e) {
+            QVERIFY2(e.message().contains("mirror plane"), qPrintable(e.message()));
+        }
+    }
+
     void saveKeepsBackupOfPreviousVersion()
     {
         QTemporaryDir dir;

@@ -151,7 +151,7 @@ private slots:
         OffsetBrush brush;
         brush.radius = 0.5;
         brush.strength = 0.1;
-        brush.mirrorX = true;
+        brush.mirror = MirrorPlane::X;
         OffsetStroke stroke = m_doc.shading().beginOffsetStroke({key, 0}, brush, m_doc.data().baseMesh->vertices);
         std::size_t touched = 0;
         for (int i = 0; i < 5; ++i)

@@ -564,7 +564,8 @@ private:
             const Camera camera = k && chance(r, 0.8) ? k->camera : randomCamera(r);
             const std::uint32_t picked = chance(r, 0.03) ? vertexCount() : std::uint32_t(below(r, int(vertexCount())));
             const double radius = chance(r, 0.03) ? -1.0 : uniform(r, 0.0, 0.9);
-            m_stroke = d.keys().beginBrushStroke(key, anyFrame(t), picked, radius, camera, chance(r, 0.4));
+            m_stroke = d.keys().beginBrushStroke(
+                key, anyFrame(t), picked, radius, camera, chance(r, 0.4) ? MirrorPlane::X : MirrorPlane::Off);
         });
         add("brushStep", 0, Kind::Stroke, [this, &d, &r](Rng&) {
             BrushStep step;

@@ -2,6 +2,8 @@
 // selection without scanning the mesh.
 #include "celform/algorithms/brush.h"
 
+#include "celform/algorithms/symmetry.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -592,22 +594,7 @@ Positions brushSmooth(const BrushSelection& selection, const Positions& shape, c
 
 std::vector<std::int32_t> mirrorMap(const Positions& base, double tolerance)
 {
-    const VertexGrid grid(base);
-    std::vector<std::int32_t> map(std::size_t(base.rows()), -1);
-    for (Eigen::Index i = 0; i < base.rows(); ++i) {
-        if (!isFinite(base, i))
-            continue;
-        const Eigen::Vector3d p = base.row(i).transpose().cast<double>();
-        const Eigen::Vector3d mirrored(-p.x(), p.y(), p.z());
-        const std::int64_t j = grid.nearest(mirrored, tolerance);
-        if (j < 0)
-            continue;
-        // A vertex on the plane is its own mirror even when a coincident duplicate has a lower index.
-        const double self = 2.0 * std::abs(p.x());
-        const double other = (base.row(j).transpose().cast<double>() - mirrored).norm();
-        map[std::size_t(i)] = self <= other ? std::int32_t(i) : std::int32_t(j);
-    }
-    return map;
+    return mirrorMap(base, AxisPlane{0, 0.0}, tolerance);
 }
 
 } // namespace celform::algo

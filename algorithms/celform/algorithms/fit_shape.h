@@ -23,10 +23,10 @@ struct FitShapeOptions {
     std::vector<std::int32_t> regionFaces;
     /// Vertices that stay where they are (painted pins).
     std::vector<std::int32_t> pinnedVertices;
-    /// The brush's mirror: per vertex its mirror's index or -1 (TriMesh::xMirror(), mirrorMap());
+    /// The brush's mirror: per vertex its mirror's index or -1 (TriMesh::mirrorTwins(), mirrorMap());
     /// empty: no mirror. Each handle gets a mirrored twin and the result is made symmetric.
     std::vector<std::int32_t> mirror;
-    /// Normal of the mirror plane through the origin (x = 0 by default).
+    /// Normal of the mirror plane (only its direction matters: displacements are reflected).
     Eigen::Vector3d mirrorNormal{1.0, 0.0, 0.0};
     /// The fraction of the fitted deformation applied, in [0, 1].
     double strength = 1.0;

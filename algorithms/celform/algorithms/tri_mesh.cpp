@@ -2,7 +2,10 @@
 #include "celform/algorithms/tri_mesh.h"
 
 #include "celform/algorithms/brush.h"
+#include "celform/algorithms/symmetry.h"
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <mutex>
@@ -56,12 +59,14 @@ Positions vertexNormals(const Positions& vertices, const Faces& faces)
 // --- derived data ----------------------------------------------------------------------------
 
 struct TriMesh::Derived {
-    std::once_flag topologyOnce, vertexFacesOnce, normalsOnce, centreOnce, mirrorOnce;
+    std::once_flag topologyOnce, vertexFacesOnce, normalsOnce, centreOnce, symmetryOnce;
+    std::array<std::once_flag, 3> mirrorOnce;
     EdgeTopology topology;
     VertexFaces vertexFaces;
     Positions normals;
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    std::vector<std::int32_t> mirror;
+    std::array<std::vector<std::int32_t>, 3> mirror;
+    SymmetryEstimate symmetry;
 };
 
 TriMesh::TriMesh()
@@ -152,13 +157,23 @@ const Eigen::Vector3d& TriMesh::centre() const
     return m_derived->centre;
 }
 
-const std::vector<std::int32_t>& TriMesh::xMirror() const
+const std::vector<std::int32_t>& TriMesh::mirrorTwins(int axis) const
 {
-    std::call_once(m_derived->mirrorOnce, [this] {
+    const std::size_t a = std::size_t(std::clamp(axis, 0, 2));
+    std::call_once(m_derived->mirrorOnce[a], [this, a] {
         const double diagonal = boundingBox(vertices).diagonal().norm();
-        m_derived->mirror = mirrorMap(vertices, 1e-4 * (std::isfinite(diagonal) ? diagonal : 0.0));
+        m_derived->mirror[a]
+            = mirrorMap(vertices, centrePlane(vertices, int(a)), 0.05 * (std::isfinite(diagonal) ? diagonal : 0.0));
     });
-    return m_derived->mirror;
+    return m_derived->mirror[a];
+}
+
+const SymmetryEstimate& TriMesh::symmetry() const
+{
+    // Up to 5% of the diagonal: posed models count. The sample elephant (its legs in a walking pose)
+    // scores 3.8% across z, 4.8% across x and 7.3% across y.
+    std::call_once(m_derived->symmetryOnce, [this] { m_derived->symmetry = detectSymmetry(vertices, 0.05); });
+    return m_derived->symmetry;
 }
 
 // --- shapes ----------------------------------------------------------------------------------

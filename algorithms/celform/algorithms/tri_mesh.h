@@ -15,6 +15,8 @@
 
 namespace celform::algo {
 
+struct SymmetryEstimate;
+
 struct Material {
     std::string name;
     Eigen::Vector3f baseColor{0.8f, 0.8f, 0.8f}; ///< linear RGB in [0, 1]
@@ -65,9 +67,12 @@ struct TriMesh {
     [[nodiscard]] const Positions& normals() const;
     /// Mean of the vertex positions (algo::centroid).
     [[nodiscard]] const Eigen::Vector3d& centre() const;
-    /// For X-mirror editing: each vertex's mirror across x = 0 (algo::mirrorMap with a tolerance
-    /// of 1e-4 of the bounding-box diagonal), -1 where there is none.
-    [[nodiscard]] const std::vector<std::int32_t>& xMirror() const;
+    /// For mirrored editing: each vertex's nearest mirror image across the plane perpendicular to
+    /// axis (0-2) through the bounding-box centre (algo::mirrorMap with a tolerance of 5% of the
+    /// diagonal, so approximate symmetry finds twins), -1 where there is none.
+    [[nodiscard]] const std::vector<std::int32_t>& mirrorTwins(int axis) const;
+    /// The model's symmetry plane (algo::detectSymmetry).
+    [[nodiscard]] const SymmetryEstimate& symmetry() const;
     void clearDerived();
 
 private:

@@ -134,7 +134,7 @@ public:
         views::Viewport* viewport = m_window->viewport();
         model::ShapeFitRequest request = m_window->propertiesPanel()->fitGroup()->shapeRequest();
         // The brush's mirror plane holds for the fit too.
-        request.mirrorX = viewport->tool<views::BrushTool>().settings().mirrorX;
+        request.mirror = viewport->tool<views::BrushTool>().settings().mirror;
         QPointer<MainWindow> window = m_window;
         m_runner = startFitShape(
             m_window->document()->data(), target.key, target.drawing, request, m_window,

@@ -168,11 +168,11 @@ void installOffsetActions(MainWindow* window, QMenu* menu)
             viewport->tool<views::OffsetBrushTool>().setStrength(value);
     });
     sub->addAction(strength);
-    QAction* mirror = make("actionOffsetMirrorX", OffsetText::tr("Mirror across &X"), QKeySequence(),
-        OffsetText::tr("Paint the mirror image across x = 0 too"));
+    QAction* mirror = make("actionOffsetMirrorX", OffsetText::tr("&Mirror"), QKeySequence(),
+        OffsetText::tr("Paint the mirror image across the project's mirror plane too (the brush's plane)"));
     mirror->setCheckable(true);
     QObject::connect(mirror, &QAction::toggled, viewport,
-        [viewport](bool on) { viewport->tool<views::OffsetBrushTool>().setMirrorX(on); });
+        [viewport](bool on) { viewport->tool<views::OffsetBrushTool>().setMirror(on); });
     sub->addAction(mirror);
     QAction* intoKey
         = make("actionOffsetTargetKey", OffsetText::tr("Paint into the Displayed &Key's Layer"), QKeySequence(),

@@ -31,7 +31,7 @@ void connectToolPanels(views::Viewport& viewport, views::PropertiesPanel& proper
     QObject::connect(&properties, &PropertiesPanel::brushModeEdited, &brush,
         [&brush](int mode) { brush.settings().mode = views::BrushMode(mode); });
     QObject::connect(
-        &properties, &PropertiesPanel::brushMirrorEdited, &brush, [&brush](bool on) { brush.settings().mirrorX = on; });
+        &properties, &PropertiesPanel::brushMirrorEdited, &brush, [&brush](bool on) { brush.settings().mirror = on; });
     auto showRadius = [&properties, &size] { properties.showBrushRadius(size.radius(), size.pixelRadius()); };
     QObject::connect(&size, &views::BrushSize::radiusChanged, &properties, showRadius);
     QObject::connect(&size, &views::BrushSize::pixelRadiusChanged, &properties, showRadius);

@@ -229,8 +229,10 @@ ShapeFit fitShapeToDrawing(const ProjectData& data, ObjectId keyId, ObjectId dra
         }
         options.pinnedVertices = faceSetVertices(mesh, *pins);
     }
-    if (request.mirrorX)
-        options.mirror = mesh.xMirror();
+    if (const int axis = mirrorAxis(data.mirrorPlane); request.mirror && axis >= 0) {
+        options.mirror = mesh.mirrorTwins(axis);
+        options.mirrorNormal = Eigen::Vector3d::Unit(axis);
+    }
     if (!(request.strength >= 0.0 && request.strength <= 1.0)) {
         result.error = tr("The strength of a fit must lie in 0 to 1.");
         return result;

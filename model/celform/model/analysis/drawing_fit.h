@@ -66,7 +66,7 @@ CameraFit fitCameraToDrawing(
 struct ShapeFitRequest {
     QString regionFaceSet; ///< the faces that may move; empty: the whole model
     QString pinFaceSet; ///< the vertices of these faces stay fixed; empty: none
-    bool mirrorX = false; ///< the brush's mirror across x = 0
+    bool mirror = false; ///< the brush's mirror, across the project's plane (ProjectData::mirrorPlane)
     double strength = 1.0; ///< in [0, 1]
     int maxRounds = 10;
 };

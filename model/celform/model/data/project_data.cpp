@@ -319,6 +319,8 @@ ProjectData newProject(std::shared_ptr<const algo::TriMesh> mesh, const QString&
         if (diagonal > 0 && std::isfinite(diagonal))
             data.look.hatch.spacing = float(0.015 * diagonal);
     }
+    if (mesh)
+        data.mirrorPlane = detectMirrorPlane(*mesh);
     data.baseMesh = std::move(mesh);
     data.baseMeshName = meshName;
     return data;
@@ -330,7 +332,8 @@ bool ProjectData::operator==(const ProjectData& o) const
     const bool animationEqual = animated() == o.animated() && (!animated() || *baseAnimation == *o.baseAnimation);
     return meshEqual && baseMeshName == o.baseMeshName && faceSets == o.faceSets && drawings == o.drawings
         && keys == o.keys && blend == o.blend && look == o.look && shadingOffsets == o.shadingOffsets
-        && nextId == o.nextId && currentFrame == o.currentFrame && time == o.time && animationEqual;
+        && mirrorPlane == o.mirrorPlane && nextId == o.nextId && currentFrame == o.currentFrame && time == o.time
+        && animationEqual;
 }
 
 const algo::FaceSet* ProjectData::faceSet(const QString& name) const

@@ -10,6 +10,7 @@
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/data/camera.h"
 #include "celform/model/data/camera_path.h"
+#include "celform/model/data/mirror_plane.h"
 #include "celform/model/data/object_id.h"
 
 #include <QByteArray>
@@ -295,6 +296,9 @@ struct ProjectData {
     /// empty means all zero. The base layer: every view and frame; keys add their own layers
     /// (KeyViewpoint::shadingOffsetsByFrame, combined by shading_layers.h).
     std::vector<float> shadingOffsets;
+    /// The plane the brushes mirror across when their mirror is on: detected when the model is
+    /// imported (newProject), saved with the project.
+    MirrorPlane mirrorPlane = MirrorPlane::X;
     ObjectId nextId = 1;
     /// The playhead (DESIGN.md, "The document"): the frame every view shows. Saved with the
     /// project, not undoable.

@@ -37,7 +37,10 @@ struct BrushStroke {
     Gesture gesture; ///< the stroke's own: its steps merge into one undo step
     algo::ImageFrame imageFrame; ///< the camera's right, true up and forward
     algo::BrushSelection selection;
-    algo::BrushSelection mirrorSelection; ///< the X-mirror twins; empty without mirroring
+    algo::BrushSelection mirrorSelection; ///< the mirror twins; empty without mirroring
+    int mirrorAxis = -1; ///< the mirror plane's axis (0-2), -1 without mirroring
+    /// Mirroring was asked for but the picked vertex has no mirror image on the model (say so).
+    bool twinMissing = false;
     /// The key's shape at the frame as the stroke left it (#V by 3): rotate, scale and smooth
     /// work on it, and each step updates the rows it moved.
     algo::Positions shape;

@@ -49,6 +49,7 @@ enum class Property {
     HighlightVisible,
     HighlightCombinations,
     FaceSets,
+    MirrorPlane,
 };
 
 /// What a command edits, for merging: a property of one object (id 0: of the document itself)

@@ -307,8 +307,16 @@ void KeyEdits::displaceKeyVertices(ObjectId id, int frame, const std::vector<std
 
 // --- brush strokes ------------------------------------------------------------------------------------
 
+void KeyEdits::setMirrorPlane(MirrorPlane plane)
+{
+    if (data().mirrorPlane == plane)
+        return;
+    push(new PropertyCommand<MirrorPlane>(m_doc, tr("Set Mirror Plane"), {Property::MirrorPlane},
+        [](ProjectData& d) { return &d.mirrorPlane; }, plane, ChangeSet::of(Part::Keys), {}));
+}
+
 BrushStroke KeyEdits::beginBrushStroke(ObjectId id, int frame, std::uint32_t picked, double radius,
-    const Camera& camera, bool mirrorX, const algo::BrushProfile& profile)
+    const Camera& camera, MirrorPlane mirror, const algo::BrushProfile& profile)
 {
     const KeyViewpoint* key = data().key(id);
     if (!key)
@@ -327,8 +335,13 @@ BrushStroke KeyEdits::beginBrushStroke(ObjectId id, int frame, std::uint32_t pic
     // Paper 1, section 3.1.2: every vertex within r of the picked one, on the shape as it is now.
     const algo::VertexGrid grid(stroke.shape);
     stroke.selection = algo::selectForBrush(stroke.shape, grid, picked, radius, profile);
-    if (mirrorX) {
-        const std::int32_t twin = data().baseMesh->xMirror()[picked];
+    stroke.mirrorAxis = mirrorAxis(mirror);
+    if (stroke.mirrorAxis >= 0) {
+        // The twin is found on the base model, where the symmetry is: the vertex nearest to the
+        // picked one's reflection (an exact twin on a symmetric model). Its neighbourhood on the
+        // shape gets the same falloff.
+        const std::int32_t twin = data().baseMesh->mirrorTwins(stroke.mirrorAxis)[picked];
+        stroke.twinMissing = twin < 0;
         if (twin >= 0 && std::uint32_t(twin) != picked)
             stroke.mirrorSelection = algo::selectForBrush(stroke.shape, grid, std::uint32_t(twin), radius, profile);
     }
@@ -363,7 +376,9 @@ void KeyEdits::applyBrushStroke(BrushStroke& stroke, const BrushStep& step)
         return;
     const algo::ImageFrame& frame = stroke.imageFrame;
     // The mirror image of the frame: the twin selection moves as the reflection of the first.
-    const Eigen::Vector3d flip(-1.0, 1.0, 1.0);
+    Eigen::Vector3d flip(1.0, 1.0, 1.0);
+    if (stroke.mirrorAxis >= 0)
+        flip[stroke.mirrorAxis] = -1.0;
     const algo::ImageFrame mirrored{
         -frame.right.cwiseProduct(flip), frame.up.cwiseProduct(flip), frame.forward.cwiseProduct(flip)};
     const algo::TriMesh& mesh = *data().baseMesh;

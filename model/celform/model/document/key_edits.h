@@ -66,12 +66,16 @@ public:
         ObjectId id, int frame, const std::vector<std::uint32_t>& indices, const algo::Positions& displacements);
 
     // --- the falloff brush (paper 1, section 3.1.2): the editor's tool and `celform brush` -----
+    /// Sets the plane the brushes mirror across (ProjectData::mirrorPlane), one undo step.
+    void setMirrorPlane(MirrorPlane plane);
     /// Starts a stroke on key `id` at `frame`: selects the vertices of the key's shape there
-    /// within radius of vertex picked, and with mirrorX their mirror images across x = 0; the
-    /// stroke holds its own gesture. The camera gives the image plane; the profile the falloff
-    /// curve and strength. Throws EditRefused (no such key or vertex, no base model).
+    /// within radius of vertex picked, and with a mirror plane the same neighbourhood around the
+    /// picked vertex's mirror image (the base vertex nearest to its reflection, so approximate
+    /// symmetry works; BrushStroke::twinMissing when there is none); the stroke holds its own
+    /// gesture. The camera gives the image plane; the profile the falloff curve and strength.
+    /// Throws EditRefused (no such key or vertex, no base model).
     [[nodiscard]] BrushStroke beginBrushStroke(ObjectId id, int frame, std::uint32_t picked, double radius,
-        const Camera& camera, bool mirrorX = false, const algo::BrushProfile& profile = {});
+        const Camera& camera, MirrorPlane mirror = MirrorPlane::Off, const algo::BrushProfile& profile = {});
     /// One step of the stroke: displaces the selection (see BrushStep) and stores it; all steps of
     /// a stroke are one undo step.
     void applyBrushStroke(BrushStroke& stroke, const BrushStep& step);

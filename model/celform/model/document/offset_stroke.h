@@ -5,12 +5,14 @@
 #include "celform/algorithms/brush.h"
 #include "celform/algorithms/shading_offsets.h"
 #include "celform/model/data/camera.h"
+#include "celform/model/data/mirror_plane.h"
 #include "celform/model/data/shading_layers.h"
 #include "celform/model/document/gesture.h"
 
 #include <QString>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace celform::model {
@@ -27,7 +29,8 @@ struct OffsetBrush {
     OffsetPaintMode mode = OffsetPaintMode::Add;
     double radius = 0.1; ///< model units, on the shape painted on
     double strength = 0.05; ///< offset added at the centre by one dab (Add, Subtract)
-    bool mirrorX = false; ///< also paint the mirror image across x = 0
+    /// Also paint the mirror image across this plane (ProjectData::mirrorPlane, or Off).
+    MirrorPlane mirror = MirrorPlane::Off;
 };
 
 /// Made by ShadingEdits::beginOffsetStroke; pass it to applyOffsetStroke for each dab.
@@ -40,6 +43,10 @@ struct OffsetStroke {
     algo::VertexGrid grid; ///< over shape
     algo::VertexNeighbours neighbours; ///< for Smooth
     std::vector<float> values; ///< the target's values as the stroke left them (#V)
+    std::optional<algo::AxisPlane> mirrorPlane; ///< the brush's plane on the base model
+    double mirrorReach = 0.0; ///< how far from the reflected centre its twin may lie
+    /// The last dab asked for a mirror image but the model has none there (say so).
+    bool twinMissing = false;
     // Working memory of the dabs.
     std::vector<std::uint32_t> indices, mirrorIndices, merged;
     std::vector<float> distances, mirrorDistances, falloff, after;

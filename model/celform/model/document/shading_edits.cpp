@@ -137,6 +137,8 @@ OffsetStroke ShadingEdits::beginOffsetStroke(
     if (brush.mode == OffsetPaintMode::Smooth)
         stroke.neighbours = algo::buildVertexNeighbours(mesh.faces, std::int32_t(mesh.vertexCount()));
     stroke.values = targetShadingOffsets(data(), target);
+    stroke.mirrorPlane = mirrorGeometry(mesh, brush.mirror);
+    stroke.mirrorReach = 0.05 * algo::boundingBox(mesh.vertices).diagonal().norm();
     stroke.undoText = tr("Paint Shading Offsets (%1)").arg(targetName(data(), target));
     stroke.gesture = m_doc->beginGesture();
     return stroke;
@@ -153,9 +155,17 @@ std::size_t ShadingEdits::applyOffsetStroke(OffsetStroke& stroke, const Eigen::V
     stroke.grid.radiusQuery(centre, brush.radius, stroke.indices, stroke.distances);
     stroke.mirrorIndices.clear();
     stroke.mirrorDistances.clear();
-    if (brush.mirrorX)
-        stroke.grid.radiusQuery(Eigen::Vector3d(-centre.x(), centre.y(), centre.z()), brush.radius,
-            stroke.mirrorIndices, stroke.mirrorDistances);
+    stroke.twinMissing = false;
+    if (stroke.mirrorPlane) {
+        // The reflected centre, moved onto the surface: its nearest vertex (on a model that is only
+        // roughly symmetric the reflection floats off the surface).
+        const Eigen::Vector3d reflected = algo::reflect(*stroke.mirrorPlane, centre);
+        const std::int64_t twin = stroke.grid.nearest(reflected, stroke.mirrorReach);
+        stroke.twinMissing = twin < 0;
+        if (twin >= 0)
+            stroke.grid.radiusQuery(stroke.shape.row(twin).transpose().cast<double>(), brush.radius,
+                stroke.mirrorIndices, stroke.mirrorDistances);
+    }
     // The union of both dabs, ascending; where both reach a vertex the stronger falloff counts.
     stroke.merged.clear();
     stroke.falloff.clear();

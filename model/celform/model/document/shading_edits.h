@@ -34,7 +34,9 @@ public:
     [[nodiscard]] OffsetStroke beginOffsetStroke(
         const ShadingTarget& target, const OffsetBrush& brush, const algo::Positions& shape);
     /// One dab centred at a point of the shape (model space), with the falloff (1 - d/r)^2 and,
-    /// with mirrorX, at its mirror image too. Returns the vertices changed (0: none in reach).
+    /// with a mirror plane, around its mirror image too: the vertex of the shape nearest to the
+    /// centre's reflection, so approximate symmetry works (stroke.twinMissing when there is none
+    /// within 5% of the model's size). Returns the vertices changed (0: none in reach).
     std::size_t applyOffsetStroke(OffsetStroke& stroke, const Eigen::Vector3d& centre);
     void endOffsetStroke(OffsetStroke& stroke);
 

@@ -314,6 +314,7 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
         QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", enumName(data.blend.unspecified)},
             {"time", enumName(data.blend.time)}});
     root.insert("look", lookJson(data.look));
+    root.insert("mirror_plane", mirrorPlaneName(data.mirrorPlane));
     if (!data.shadingOffsets.empty()) {
         root.insert("shading_offsets",
             QJsonObject{{"count", double(data.shadingOffsets.size())},

@@ -552,6 +552,15 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
     data.blend.time = r.enumValue<TimeInterpolation>(blend, "time");
 
     data.look = readLook(r, r.object(root, "look"));
+    // The brushes' mirror plane; files from before it was saved get the plane detected on the model.
+    if (root.contains("mirror_plane")) {
+        const std::optional<MirrorPlane> plane = mirrorPlaneFromName(r.string(root, "mirror_plane"));
+        if (!plane)
+            r.corrupt(ProjectFile::tr("the mirror plane is not off, x, y or z"));
+        data.mirrorPlane = *plane;
+    } else if (data.baseMesh) {
+        data.mirrorPlane = detectMirrorPlane(*data.baseMesh);
+    }
     const QString highlightProblem = highlightTracksProblem(data.look.highlights, data.faceSetNames());
     if (!highlightProblem.isEmpty())
         r.corrupt(highlightProblem);

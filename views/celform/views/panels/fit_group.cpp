@@ -62,9 +62,9 @@ FitGroup::FitGroup(model::Document* document, QWidget* parent)
     m_strength->setValue(1.0);
     m_strength->setToolTip(tr("How much of the fitted deformation Fit Shape applies: 1 all of it, 0.5 half way"));
     form->addRow(tr("&Strength:"), m_strength);
-    m_mirror = new QCheckBox(tr("&X mirror (the brush's)"), this);
+    m_mirror = new QCheckBox(tr("&Mirror (the brush's)"), this);
     m_mirror->setObjectName(QStringLiteral("fitMirror"));
-    m_mirror->setToolTip(tr("Keep the fitted shape symmetric across x = 0: the brush's X mirror, one setting for "
+    m_mirror->setToolTip(tr("Keep the fitted shape symmetric across the brush's mirror plane: one setting for "
                             "both"));
     form->addRow(m_mirror);
     connect(m_mirror, &QCheckBox::toggled, this, &FitGroup::mirrorEdited);
@@ -107,7 +107,7 @@ model::ShapeFitRequest FitGroup::shapeRequest() const
     model::ShapeFitRequest request;
     request.regionFaceSet = m_region->currentData().toString();
     request.pinFaceSet = m_pins->currentData().toString();
-    request.mirrorX = m_mirror->isChecked();
+    request.mirror = m_mirror->isChecked();
     request.strength = m_strength->value();
     return request;
 }

@@ -2,7 +2,7 @@
 // live (the silhouette IoU and the chamfer distance in drawing pixels, measured on the control
 // mesh's silhouette through the key's camera at the drawing's frame; DESIGN.md, "Drawings and
 // cameras"), the Fit Camera and Fit Shape buttons (the window's actions), and what Fit Shape may
-// change: a region of painted faces, pinned faces, the X mirror (the brush's) and the strength.
+// change: a region of painted faces, pinned faces, the mirror (the brush's) and the strength.
 #pragma once
 
 #include "celform/algorithms/fit_metrics.h"
@@ -54,7 +54,7 @@ public:
     [[nodiscard]] QString figuresText() const;
 
 signals:
-    /// The X mirror was switched here (the brush's setting: the panel keeps both in step).
+    /// The mirror was switched here (the brush's setting: the panel keeps both in step).
     void mirrorEdited(bool on);
     /// New figures are shown.
     void measured();

@@ -17,6 +17,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QPointer>
+#include <QSignalBlocker>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -191,9 +192,13 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
                                "flattens spikes); Relax evens the vertices out along the surface and keeps the "
                                "shape and its silhouette"));
     brushForm->addRow(tr("&Mode:"), m_brushMode);
-    m_mirror = new QCheckBox(tr("&X mirror"), m_brushBox);
-    m_mirror->setToolTip(tr("Apply every stroke to the mirrored side too (x → −x), for symmetric characters"));
-    brushForm->addRow(m_mirror);
+    m_mirror = new QComboBox(m_brushBox);
+    m_mirror->setObjectName(QStringLiteral("brushMirror"));
+    for (int i = 0; i < 4; ++i)
+        m_mirror->addItem(QString(), i); // labelled by refreshMirror
+    m_mirror->setToolTip(tr("Apply every stroke to the mirrored side too, across a plane through the model's centre "
+                            "(X, Y or Z in model space; the detected one is marked), for symmetric characters"));
+    brushForm->addRow(tr("M&irror:"), m_mirror);
     layout->addWidget(m_brushBox);
 
     auto* blendBox = new QGroupBox(tr("View-dependent blend"), this);
@@ -348,10 +353,15 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     connect(m_falloff, qOverload<int>(&QComboBox::currentIndexChanged), this, applyProfile);
     connect(m_strength, qOverload<double>(&QDoubleSpinBox::valueChanged), this, applyProfile);
     connect(m_brushMode, qOverload<int>(&QComboBox::currentIndexChanged), this, &PropertiesPanel::brushModeEdited);
-    connect(m_mirror, &QCheckBox::toggled, this, &PropertiesPanel::brushMirrorEdited);
-    // One X mirror for the brush and Fit Shape, shown in both groups.
-    connect(m_mirror, &QCheckBox::toggled, m_fit->mirrorBox(), &QCheckBox::setChecked);
-    connect(m_fit, &FitGroup::mirrorEdited, m_mirror, &QCheckBox::setChecked);
+    // One mirror for the brush and Fit Shape, shown in both groups; the plane is the project's.
+    connect(m_mirror, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        if (index > 0)
+            m_document->keys().setMirrorPlane(model::MirrorPlane(index));
+        m_fit->mirrorBox()->setChecked(index > 0);
+        emit brushMirrorEdited(index > 0);
+    });
+    connect(m_fit, &FitGroup::mirrorEdited, this, &PropertiesPanel::setMirrorOn);
+    refreshMirror();
     connect(m_outlineBox, &OutlineSettingsBox::message, this, &PropertiesPanel::message);
     GestureTracker::track(m_sharpness, m_document);
     connect(m_sharpness, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double value) {
@@ -402,6 +412,8 @@ void PropertiesPanel::documentChanged(const model::ChangeSet& change)
     }
     if (change.reset || change.has(Part::Blend))
         refreshBlend();
+    if (change.reset || change.has(Part::Mesh) || change.has(Part::Keys))
+        refreshMirror();
     const bool selectionTouched = change.touches(m_selection.id) || change.structure;
     if (change.reset || change.has(Part::Mesh)) {
         refresh();
@@ -646,6 +658,41 @@ void PropertiesPanel::revealRow(QWidget* row)
     const int across = scroll->horizontalScrollBar()->value();
     scroll->ensureWidgetVisible(row, 10, 10);
     scroll->horizontalScrollBar()->setValue(across);
+}
+
+void PropertiesPanel::refreshMirror()
+{
+    const auto& data = m_document->data();
+    const model::MirrorPlane detected
+        = data.baseMesh ? model::detectMirrorPlane(*data.baseMesh) : model::MirrorPlane::Off;
+    const QString names[] = {tr("Off"), tr("X"), tr("Y"), tr("Z")};
+    for (int i = 0; i < 4; ++i)
+        m_mirror->setItemText(i, i > 0 && i == int(detected) ? tr("%1 (detected)").arg(names[i]) : names[i]);
+    // While mirroring, the choice shows the project's plane (an undo may have changed it).
+    if (m_mirror->currentIndex() > 0 && m_mirror->currentIndex() != int(data.mirrorPlane)) {
+        const QSignalBlocker block(m_mirror);
+        m_mirror->setCurrentIndex(int(data.mirrorPlane));
+        if (data.mirrorPlane == model::MirrorPlane::Off) {
+            m_fit->mirrorBox()->setChecked(false);
+            emit brushMirrorEdited(false);
+        }
+    }
+}
+
+void PropertiesPanel::setMirrorOn(bool on)
+{
+    if (on == (m_mirror->currentIndex() > 0))
+        return;
+    model::MirrorPlane plane = model::MirrorPlane::Off;
+    if (on) {
+        const auto& data = m_document->data();
+        plane = data.mirrorPlane;
+        if (plane == model::MirrorPlane::Off && data.baseMesh)
+            plane = model::detectMirrorPlane(*data.baseMesh);
+        if (plane == model::MirrorPlane::Off)
+            plane = model::MirrorPlane::X;
+    }
+    m_mirror->setCurrentIndex(int(plane));
 }
 
 void PropertiesPanel::refreshBlend()

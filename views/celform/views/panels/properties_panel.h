@@ -94,6 +94,10 @@ private:
     /// Scrolls the panel until row (a widget of it, shown) is in view.
     void revealRow(QWidget* row);
     void refreshBlend();
+    /// The mirror choice: the detected plane marked, the project's plane shown while mirroring.
+    void refreshMirror();
+    /// Mirroring switched on (at the project's plane, else the detected one) or off.
+    void setMirrorOn(bool on);
     /// One blend settings edit from a control (not while the panel itself updates them).
     void documentChanged(const model::ChangeSet& change);
     void refreshTools();
@@ -140,7 +144,7 @@ private:
     QComboBox* m_falloff;
     QDoubleSpinBox* m_strength;
     QComboBox* m_brushMode;
-    QCheckBox* m_mirror;
+    QComboBox* m_mirror; ///< Off, X, Y, Z (index = model::MirrorPlane)
 
     QDoubleSpinBox* m_sharpness;
     QComboBox* m_unspecified;

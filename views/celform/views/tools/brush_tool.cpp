@@ -52,12 +52,16 @@ bool BrushTool::press(const ToolEvent& event)
     const double radius = size().worldRadius(unitsPerPixel);
     try {
         m_stroke = document->keys().beginBrushStroke(key, document->currentFrame(), std::uint32_t(picked), radius,
-            m_viewport->camera(), m_settings.mirrorX, m_settings.profile);
+            m_viewport->camera(), m_settings.mirror ? document->data().mirrorPlane : model::MirrorPlane::Off,
+            m_settings.profile);
     } catch (const model::EditRefused& e) {
         emit message(e.message());
         return true;
     }
     m_unitsPerPixel = unitsPerPixel;
+    if (m_stroke.twinMissing)
+        emit message(Brush::tr("The mirror finds no twin of this vertex across the %1 plane: only this side moves.")
+                         .arg(model::mirrorPlaneName(document->data().mirrorPlane).toUpper()));
     emit selectionChanged(&m_stroke.selection, &m_stroke.mirrorSelection);
     showAt(event.position, radius / std::max(unitsPerPixel, 1e-12));
     return true;

@@ -15,7 +15,8 @@ enum class BrushMode { Move, Smooth, Relax };
 struct BrushSettings {
     BrushMode mode = BrushMode::Move;
     algo::BrushProfile profile; ///< the falloff curve and strength
-    bool mirrorX = false; ///< the X-mirror twins move as the reflection
+    /// The twins across the project's mirror plane (ProjectData::mirrorPlane) move as the reflection.
+    bool mirror = false;
 };
 
 class BrushTool : public BrushHover {

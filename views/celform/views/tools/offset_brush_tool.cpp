@@ -73,7 +73,7 @@ bool OffsetBrushTool::press(const ToolEvent& event)
     model::OffsetBrush brush;
     brush.radius = size().worldRadius(unitsPerPixel);
     brush.strength = m_strength;
-    brush.mirrorX = m_mirrorX;
+    brush.mirror = m_mirror ? document->data().mirrorPlane : model::MirrorPlane::Off;
     brush.mode = m_mode;
     if (event.modifiers & Qt::ShiftModifier)
         brush.mode = model::OffsetPaintMode::Smooth;
@@ -87,6 +87,10 @@ bool OffsetBrushTool::press(const ToolEvent& event)
     }
     showAt(event.position, brush.radius / std::max(unitsPerPixel, 1e-12));
     document->shading().applyOffsetStroke(m_stroke, hit->second);
+    if (m_stroke.twinMissing)
+        emit message(
+            OffsetBrush::tr("The mirror finds no twin of this point across the %1 plane: only this side is painted.")
+                .arg(model::mirrorPlaneName(brush.mirror).toUpper()));
     return true;
 }
 

@@ -21,8 +21,9 @@ public:
     /// Offset added at the centre by one dab.
     void setStrength(double strength);
     [[nodiscard]] double strength() const { return m_strength; }
-    void setMirrorX(bool on) { m_mirrorX = on; }
-    [[nodiscard]] bool mirrorX() const { return m_mirrorX; }
+    /// Also paint across the project's mirror plane (ProjectData::mirrorPlane).
+    void setMirror(bool on) { m_mirror = on; }
+    [[nodiscard]] bool mirror() const { return m_mirror; }
     /// The layer painted: 0 the base layer, else that key's layer at the playhead.
     void setTargetKey(model::ObjectId key) { m_targetKey = key; }
     [[nodiscard]] model::ObjectId targetKey() const { return m_targetKey; }
@@ -48,7 +49,7 @@ private:
 
     model::OffsetPaintMode m_mode = model::OffsetPaintMode::Add;
     double m_strength = 0.05;
-    bool m_mirrorX = false;
+    bool m_mirror = false;
     model::ObjectId m_targetKey = 0;
     model::OffsetStroke m_stroke;
 };
