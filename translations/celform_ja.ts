@@ -1415,10 +1415,6 @@
         <translation>これらの面の頂点は動かしません。</translation>
     </message>
     <message>
-        <source>Keep the shape symmetric across x = 0.</source>
-        <translation>形状を x = 0 を挟んで左右対称に保ちます。</translation>
-    </message>
-    <message>
         <source>Rounds of the shape fit at most (default 10).</source>
         <translation>形状合わせの最大ラウンド数（既定値 10）。</translation>
     </message>
@@ -1433,6 +1429,26 @@
     <message>
         <source>Blend sharpness alpha (above 0, at most 100).</source>
         <translation>ブレンドのシャープネス alpha（0 より大きく 100 以下）。</translation>
+    </message>
+    <message>
+        <source>Keep the shape symmetric across the project&apos;s mirror plane.</source>
+        <translation>プロジェクトのミラー平面に対して形状を対称に保ちます。</translation>
+    </message>
+    <message>
+        <source>--mirror must be auto, x, y, z or off, not “%1”</source>
+        <translation>--mirror には auto、x、y、z、off のいずれかを指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>warning: vertex %1 has no mirror twin across the %2 plane; only its side moved</source>
+        <translation>警告: 頂点 %1 には %2 平面をはさんだミラーの対応点がありません。その側だけが動きました</translation>
+    </message>
+    <message>
+        <source>Move the mirror image too, across the plane perpendicular to that model axis through the model&apos;s centre; auto: the project&apos;s plane (detected on the model); off by default.</source>
+        <translation>ミラー像も動かします。平面はモデルの中心を通りその軸に垂直です。auto: プロジェクトの平面（モデルから検出）。既定ではオフです。</translation>
+    </message>
+    <message>
+        <source>Mirror plane: %1</source>
+        <translation>ミラー平面: %1</translation>
     </message>
 </context>
 <context>
@@ -2422,14 +2438,6 @@ Recover it now?</source>
         <translation>1 回の打点で中心に加わるオフセット:</translation>
     </message>
     <message>
-        <source>Mirror across &amp;X</source>
-        <translation>X 方向にミラー(&amp;X)</translation>
-    </message>
-    <message>
-        <source>Paint the mirror image across x = 0 too</source>
-        <translation>x = 0 を挟んだ反対側にも鏡像を描きます</translation>
-    </message>
-    <message>
         <source>Paint into the Displayed &amp;Key&apos;s Layer</source>
         <translation>表示中のキーのレイヤーに描く(&amp;K)</translation>
     </message>
@@ -2476,6 +2484,14 @@ Recover it now?</source>
     <message>
         <source>Not enough memory to analyse %1 × %2 pixels</source>
         <translation>%1 × %2 ピクセルを解析するメモリが足りません</translation>
+    </message>
+    <message>
+        <source>&amp;Mirror</source>
+        <translation>ミラー(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Paint the mirror image across the project&apos;s mirror plane too (the brush&apos;s plane)</source>
+        <translation>プロジェクトのミラー平面（ブラシの平面）をはさんだミラー像にも塗ります</translation>
     </message>
 </context>
 <context>
@@ -4428,6 +4444,10 @@ Recover it now?</source>
         <source>Brush “%1”</source>
         <translation>ブラシ「%1」</translation>
     </message>
+    <message>
+        <source>Set Mirror Plane</source>
+        <translation>ミラー平面を設定</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::LookEdits</name>
@@ -5175,6 +5195,10 @@ Recover it now?</source>
         <source>is damaged: its format_version is not a version number</source>
         <translation>破損しています: format_version がバージョン番号ではありません</translation>
     </message>
+    <message>
+        <source>the mirror plane is not off, x, y or z</source>
+        <translation>ミラー平面が off、x、y、z のいずれでもありません</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
@@ -5346,6 +5370,10 @@ Recover it now?</source>
     <message>
         <source>Move the mouse to resize the brush; click or Enter to keep, Esc to cancel.</source>
         <translation>マウスを動かしてブラシの大きさを変えます。クリックか Enter で確定、Esc で取り消し。</translation>
+    </message>
+    <message>
+        <source>The mirror finds no twin of this vertex across the %1 plane: only this side moves.</source>
+        <translation>この頂点には %1 平面をはさんだミラーの対応点がありません: こちら側だけが動きます。</translation>
     </message>
 </context>
 <context>
@@ -5632,14 +5660,6 @@ Recover it now?</source>
         <translation>強さ(&amp;S):</translation>
     </message>
     <message>
-        <source>&amp;X mirror (the brush&apos;s)</source>
-        <translation>X ミラー（ブラシと共通）(&amp;X)</translation>
-    </message>
-    <message>
-        <source>Keep the fitted shape symmetric across x = 0: the brush&apos;s X mirror, one setting for both</source>
-        <translation>合わせた形状を x = 0 を挟んで左右対称に保ちます。ブラシの X ミラーと共通の設定です</translation>
-    </message>
-    <message>
         <source>Whole model</source>
         <translation>モデル全体</translation>
     </message>
@@ -5662,6 +5682,14 @@ chamfer distance %3 px</source>
         <translation>「%1」との比較:
 シルエットIoU %2
 チャンファー距離 %3 px</translation>
+    </message>
+    <message>
+        <source>&amp;Mirror (the brush&apos;s)</source>
+        <translation>ミラー（ブラシと共通）(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Keep the fitted shape symmetric across the brush&apos;s mirror plane: one setting for both</source>
+        <translation>フィットした形状をブラシのミラー平面に対して対称に保ちます（両方で一つの設定）</translation>
     </message>
 </context>
 <context>
@@ -6459,6 +6487,10 @@ chamfer distance %3 px</source>
         <source>Paint shading offsets into the %1: drag adds, Ctrl+drag subtracts, Shift+drag smooths; F resizes the brush.</source>
         <translation>%1 にシェーディングオフセットを描きます: ドラッグで加算、Ctrl + ドラッグで減算、Shift + ドラッグで平滑化。F でブラシの大きさを変更します。</translation>
     </message>
+    <message>
+        <source>The mirror finds no twin of this point across the %1 plane: only this side is painted.</source>
+        <translation>この点には %1 平面をはさんだミラーの対応点がありません: こちら側だけが塗られます。</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::OutlineSettingsBox</name>
@@ -6763,14 +6795,6 @@ Size %4 × %5 × %6</source>
         <translation>モード(&amp;M):</translation>
     </message>
     <message>
-        <source>&amp;X mirror</source>
-        <translation>X ミラー(&amp;X)</translation>
-    </message>
-    <message>
-        <source>Apply every stroke to the mirrored side too (x → −x), for symmetric characters</source>
-        <translation>すべてのストロークをミラー側（x → −x）にも適用します。左右対称のキャラクター向けです</translation>
-    </message>
-    <message>
         <source>&amp;Preview View-Dependent Shape</source>
         <translation>視点依存形状をプレビュー(&amp;P)</translation>
     </message>
@@ -6881,6 +6905,34 @@ Size %4 × %5 × %6</source>
     <message>
         <source>Move drags the selection; Smooth pulls it toward its neighbours while you drag (it flattens spikes); Relax evens the vertices out along the surface and keeps the shape and its silhouette</source>
         <translation>移動は選択部分をドラッグします。スムーズはドラッグ中に隣接頂点の方へ引き寄せます（とがりを平らにします）。リラックスは形とシルエットを保ったまま面に沿って頂点の間隔をそろえます</translation>
+    </message>
+    <message>
+        <source>Apply every stroke to the mirrored side too, across a plane through the model&apos;s centre (X, Y or Z in model space; the detected one is marked), for symmetric characters</source>
+        <translation>すべてのストロークをミラー側にも適用します。平面はモデルの中心を通ります（モデル空間の X、Y、Z。検出された平面に印が付きます）。左右対称のキャラクター向けです</translation>
+    </message>
+    <message>
+        <source>M&amp;irror:</source>
+        <translation>ミラー(&amp;I):</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>オフ</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>%1 (detected)</source>
+        <translation>%1（検出）</translation>
     </message>
 </context>
 <context>
