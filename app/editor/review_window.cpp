@@ -300,7 +300,7 @@ QString ReviewWindow::statusText() const
     if (m_fps > 0.0)
         parts << tr("%1 fps").arg(m_fps, 0, 'f', 1);
     else
-        parts << tr("Idle (last frame %1 ms)").arg(m_viewport->lastFrameMilliseconds(), 0, 'f', 0);
+        parts << tr("Idle (last frame %1 ms)").arg(m_viewport->lastFrameTimes().frame, 0, 'f', 0);
     if (m_turntable.isActive())
         parts << tr("Turntable");
     if (!m_viewport->display().linesShown())

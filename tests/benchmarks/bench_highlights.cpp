@@ -210,7 +210,7 @@ void sliderFrames(benchmark::State& state, bool change)
             state.SkipWithError("the viewport drew no frame");
             return;
         }
-        paintMs += s.viewport->lastFrameMilliseconds();
+        paintMs += s.viewport->lastFrameTimes().frame;
     }
     if (s.viewport->camera() != camera)
         state.SkipWithError("the camera moved");

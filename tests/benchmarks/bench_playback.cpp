@@ -76,8 +76,8 @@ void turntableFrames(benchmark::State& state)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
     }
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
-    state.counters["paint_ms"] = s.viewport->lastFrameMilliseconds();
-    state.counters["lines_ms"] = s.viewport->lastLineMilliseconds();
+    state.counters["paint_ms"] = s.viewport->lastFrameTimes().frame;
+    state.counters["lines_ms"] = s.viewport->lastFrameTimes().lines;
 }
 BENCHMARK(turntableFrames)->Apply([](benchmark::internal::Benchmark* b) { bench::interactiveBenchmark(b, 2.0); });
 
@@ -128,7 +128,7 @@ void windowTurntableFrames(benchmark::State& state)
     for (views::DepthAnalysisRunner* runner : w->findChildren<views::DepthAnalysisRunner*>())
         runner->setHeld(false);
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
-    state.counters["paint_ms"] = viewport->lastFrameMilliseconds();
+    state.counters["paint_ms"] = viewport->lastFrameTimes().frame;
 }
 BENCHMARK(windowTurntableFrames)->Apply([](benchmark::internal::Benchmark* b) { bench::interactiveBenchmark(b, 2.0); });
 

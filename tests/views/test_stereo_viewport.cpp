@@ -278,7 +278,7 @@ private slots:
         QVERIFY(silhouetteInk > silhouetteSamples * 9 / 10);
         QCOMPARE(interiorInk, 0);
         QCOMPARE(offInk, 0);
-        QVERIFY(m_view->lastLineMilliseconds() >= 0.0);
+        QVERIFY(m_view->lastFrameTimes().lines >= 0.0);
     }
 
     void stereoWithLinesAndOutputs_data()
@@ -333,8 +333,8 @@ private slots:
                 c.target = view.pivot() + turn * (c.target - view.pivot());
                 view.setCamera(c);
                 view.renderedImage();
-                total += view.lastFrameMilliseconds();
-                lineTotal += view.lastLineMilliseconds();
+                total += view.lastFrameTimes().frame;
+                lineTotal += view.lastFrameTimes().lines;
             }
             qInfo("armadillo 800x600, lines %s, stereo %d: %.1f ms per frame (lines %.1f ms)", lines ? "on" : "off",
                 int(output), total / frames, lineTotal / frames);

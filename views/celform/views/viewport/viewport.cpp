@@ -533,9 +533,9 @@ const model::Look& Viewport::currentLook() const
     return m_document ? m_document->data().look : defaultLook;
 }
 
-double Viewport::lastLineMilliseconds() const
+Viewport::FrameTimes Viewport::lastFrameTimes() const
 {
-    return m_compositor->lastLineMilliseconds();
+    return {m_frameMilliseconds, m_compositor->lastLineMilliseconds()};
 }
 
 QImage Viewport::renderedImage()

@@ -85,10 +85,13 @@ public:
     /// Number of times the displayed shape was recomputed (in full or in part): a hidden
     /// viewport's stays put while the document changes.
     [[nodiscard]] int shapeUpdates() const { return m_shapeUpdates; }
-    /// Wall time of the last paintGL (VTK render, readbacks, lines, stereo composition), ms.
-    [[nodiscard]] double lastFrameMilliseconds() const { return m_frameMilliseconds; }
-    /// Wall time of the last frame's line extraction and drawing alone, ms.
-    [[nodiscard]] double lastLineMilliseconds() const;
+    /// Wall times of the last paintGL, ms: the whole frame (VTK render, readbacks, lines, stereo
+    /// composition) and the line extraction and drawing alone.
+    struct FrameTimes {
+        double frame = 0.0;
+        double lines = 0.0;
+    };
+    [[nodiscard]] FrameTimes lastFrameTimes() const;
 
     /// How the model is drawn: look or clay, the light gizmo, lines, stereo.
     [[nodiscard]] ViewportDisplay& display() const { return *m_display; }
