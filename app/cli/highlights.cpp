@@ -364,6 +364,8 @@ int runPatch(const Invocation& in)
             printOut(text);
         return kExitOk;
     }
+    const std::optional<model::MirrorPlane> mirrorChoice
+        = parseMirror("mirror", in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off"));
     auto doc = openProject(path);
     if (!doc->hasMesh())
         throw model::IoError(path, Cli::tr("has no base model"));
@@ -374,9 +376,14 @@ int runPatch(const Invocation& in)
     } else {
         const auto selected = selectFaces(in, *doc->data().baseMesh, faceRanges, spheres, path);
         // One dab of the patch brush: the same edit, and undo text, as a drag in the editor.
-        model::FaceSetStroke stroke = doc->faceSets().beginFaceSetStroke(name);
+        const model::MirrorPlane mirror = mirrorChoice.value_or(doc->data().mirrorPlane);
+        model::FaceSetStroke stroke = doc->faceSets().beginFaceSetStroke(name, mirror);
         doc->faceSets().applyFaceSetStroke(stroke, selected, in.isSet("subtract"));
         doc->faceSets().endFaceSetStroke(stroke);
+        if (stroke.twinMissing)
+            printErr(Cli::tr("warning: the selected faces have no mirror twins across the %1 plane; only their side "
+                             "was painted")
+                         .arg(model::mirrorPlaneName(mirror)));
     }
     doc->saveAs(path);
     if (in.isSet("json") && !in.isSet("remove"))
@@ -436,7 +443,7 @@ std::vector<SubCommand> highlightCommands()
         {"patch",
             {"celform patch P --list [--json]",
                 "celform patch P (--add NAME | --subtract NAME) [--sphere X,Y,Z,R]... [--faces A-B,C]... "
-                "[--material M]... [--json]",
+                "[--material M]... [--mirror auto|x|y|z|off] [--json]",
                 "celform patch P --remove NAME"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Makes, lists and removes patches: named face sets that highlight layers are limited to."),
@@ -453,6 +460,9 @@ std::vector<SubCommand> highlightCommands()
                         "celform::app::Cli", "Select the faces with a corner inside a sphere (repeatable).")},
                 {"faces", "A-B,C", QT_TRANSLATE_NOOP("celform::app::Cli", "Select faces by index (repeatable).")},
                 {"material", "M", QT_TRANSLATE_NOOP("celform::app::Cli", "Select a material's faces (repeatable).")},
+                {"mirror", "auto|x|y|z|off",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "Also paint the faces' mirror twins across this plane (auto: the project's; default off).")},
                 {"json", nullptr, kJsonOption}},
             runPatch},
     };

@@ -93,16 +93,13 @@ int runBrush(const Invocation& in)
             throw UsageError{Cli::tr("--strength must be in (0, 1]")};
     }
 
-    const QString mirrorName = in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off");
-    const bool autoMirror = mirrorName == QLatin1String("auto");
-    const std::optional<model::MirrorPlane> chosen = model::mirrorPlaneFromName(mirrorName);
-    if (!autoMirror && (!chosen || mirrorName != mirrorName.toLower()))
-        throw UsageError{Cli::tr("--mirror must be auto, x, y, z or off, not “%1”").arg(mirrorName)};
+    const std::optional<model::MirrorPlane> chosen
+        = parseMirror("mirror", in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off"));
 
     const QString path = in.argument(0);
     auto doc = openProject(path);
     // auto: the project's plane (detected on the model when it was imported).
-    const model::MirrorPlane mirror = autoMirror ? doc->data().mirrorPlane : *chosen;
+    const model::MirrorPlane mirror = chosen.value_or(doc->data().mirrorPlane);
     const model::KeyViewpoint* key = doc->data().keyByName(in.value("key"));
     if (!key)
         throw model::IoError(path, Cli::tr("has no key named “%1”").arg(in.value("key")));

@@ -166,6 +166,16 @@ void checkRenderMemory(const char* option, const QString& text, qint64 bytes)
                              .arg(double(std::max<qint64>(available, 0)) / 1e9, 0, 'f', 1)};
 }
 
+std::optional<model::MirrorPlane> parseMirror(const char* option, const QString& text)
+{
+    if (text == QLatin1String("auto"))
+        return std::nullopt;
+    const std::optional<model::MirrorPlane> chosen = model::mirrorPlaneFromName(text);
+    if (!chosen || text != text.toLower())
+        throw UsageError{Cli::tr("--%1 must be auto, x, y, z or off, not “%2”").arg(QLatin1String(option), text)};
+    return chosen;
+}
+
 bool parseOnOff(const char* option, const QString& text)
 {
     if (text != QLatin1String("on") && text != QLatin1String("off"))

@@ -6,6 +6,7 @@
 #include "cli/command.h"
 
 #include "celform/model/data/camera.h"
+#include "celform/model/data/mirror_plane.h"
 #include "celform/model/data/project_data.h"
 #include "celform/model/render/render_job.h"
 
@@ -54,6 +55,8 @@ QSize parseSize(const char* option, const QString& text);
 /// read rather than ending in "out of memory" or the kernel's OOM killer.
 void checkRenderMemory(const char* option, const QString& text, qint64 bytes);
 bool parseOnOff(const char* option, const QString& text);
+/// `--mirror auto|x|y|z|off`: the plane, or none for auto (the project's detected plane).
+std::optional<model::MirrorPlane> parseMirror(const char* option, const QString& text);
 /// A comma-separated list of line kinds (silhouette, crease, border, material, ridge) as
 /// algo::LineKind bits; at least one, no repeats needed.
 std::uint8_t parseLineKinds(const char* option, const QString& text);

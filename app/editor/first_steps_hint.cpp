@@ -3,9 +3,14 @@
 #include "celform/model/document/document.h"
 #include "celform/views/viewport/viewport.h"
 
+#include "celform/algorithms/tri_mesh.h"
+
 #include <QApplication>
 #include <QEvent>
 #include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
 
 namespace celform::app {
 
@@ -22,6 +27,11 @@ FirstStepsHint::FirstStepsHint(model::Document* document, views::Viewport* viewp
     viewport->installEventFilter(this);
     // While a tool is on, its own banner says what to do.
     connect(viewport, &views::Viewport::toolChanged, this, [this] { refresh(); });
+    // The model moves under the caption as the view changes: keep it clear of the model.
+    connect(viewport, &views::Viewport::cameraChanged, this, [this] {
+        if (isVisible())
+            place();
+    });
     connect(document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
         if (change.reset) {
             const model::ProjectData& data = m_document->data();
@@ -82,13 +92,38 @@ void FirstStepsHint::refresh()
         place();
 }
 
+QRect FirstStepsHint::modelRect() const
+{
+    if (!m_document->hasMesh())
+        return {};
+    const Eigen::AlignedBox3d box = algo::boundingBox(m_document->data().baseMesh->vertices);
+    QRectF rect;
+    for (int corner = 0; corner < 8; ++corner) {
+        const QPointF p = m_viewport->projectToWidget(box.corner(Eigen::AlignedBox3d::CornerType(corner)));
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+            continue;
+        rect = rect.isNull() ? QRectF(p, QSizeF(1.0, 1.0)) : rect.united(QRectF(p, QSizeF(1.0, 1.0)));
+    }
+    return rect.toAlignedRect();
+}
+
 void FirstStepsHint::place()
 {
     const QWidget* viewport = parentWidget();
-    setMaximumWidth(std::max(viewport->width() - 24, 120));
+    // A caption, not a banner: a few lines of a readable measure.
+    setMaximumWidth(std::clamp(viewport->width() - 24, 120, 560));
     adjustSize();
-    // Bottom centre: the corners hold the orientation axes and the axis gizmo.
-    move((viewport->width() - width()) / 2, viewport->height() - height() - 12);
+    // Bottom or top centre (the corners hold the orientation axes and the axis gizmo), whichever
+    // covers less of the model.
+    const int x = (viewport->width() - width()) / 2;
+    const QRect bottom(QPoint(x, viewport->height() - height() - 12), size());
+    const QRect top(QPoint(x, 12), size());
+    const QRect model = modelRect();
+    auto covered = [&](const QRect& r) {
+        const QRect common = r.intersected(model);
+        return common.isEmpty() ? 0 : common.width() * common.height();
+    };
+    move((covered(top) < covered(bottom) ? top : bottom).topLeft());
     raise();
 }
 

@@ -8,6 +8,7 @@
 #include "celform/model/data/object_id.h"
 
 #include <QLabel>
+#include <QRect>
 
 namespace celform::model {
 class Document;
@@ -34,6 +35,8 @@ protected:
 private:
     void refresh();
     void place();
+    /// The base model's bounding box as it falls in the viewport (empty without a model).
+    [[nodiscard]] QRect modelRect() const;
     /// The first action after opening a showcase: its caption goes.
     void endShowcase();
 

@@ -276,6 +276,15 @@ private slots:
         window.action(QStringLiteral("actionFrameAll"))->trigger();
         QVERIFY(sameView(viewport->camera(), keyCamera));
         QVERIFY(sameView(doc->data().key(key)->camera, keyCamera));
+        // Nor do the preset views: Home, the numpad and View > Top, wherever the focus is.
+        QTest::keyClick(tree, Qt::Key_Home);
+        QTest::keyClick(tree, Qt::Key_7, Qt::KeypadModifier);
+        QTest::keyClick(viewport, Qt::Key_Home);
+        window.action(QStringLiteral("actionViewTop"))->trigger();
+        QVERIFY(sameView(viewport->camera(), keyCamera));
+        QVERIFY(sameView(doc->data().key(key)->camera, keyCamera));
+        QVERIFY2(window.statusBar()->currentMessage().contains(QStringLiteral("leave the tool")),
+            qPrintable(window.statusBar()->currentMessage()));
         QTest::keyClick(viewport, Qt::Key_Escape);
         QCOMPARE(viewport->tool(), Viewport::Tool::Navigate);
 

@@ -32,6 +32,7 @@
 #include <QUndoStack>
 
 using namespace celform;
+using test::clickSceneItem;
 using views::Viewport;
 
 namespace {
@@ -46,19 +47,6 @@ bool showActive(app::MainWindow& window, const QSize& size = QSize(1400, 900))
     QApplication::setActiveWindow(&window);
     QApplication::processEvents();
     return QApplication::activeWindow() == &window;
-}
-
-/// Clicks the Scene tree's row named `name`, as the artist does.
-bool clickSceneItem(app::MainWindow& window, const QString& name)
-{
-    QTreeWidget* tree = window.scenePanel()->tree();
-    const QList<QTreeWidgetItem*> items = tree->findItems(name, Qt::MatchExactly | Qt::MatchRecursive);
-    if (items.isEmpty())
-        return false;
-    tree->scrollToItem(items.front());
-    QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, tree->visualItemRect(items.front()).center());
-    QApplication::processEvents();
-    return true;
 }
 
 model::ObjectId drawingId(const app::MainWindow& window, const char* name)

@@ -7,6 +7,7 @@
 #include "fit_model_sheet.h"
 #include "test_support.h"
 #include "ui_test_support.h"
+#include "window_test_support.h"
 
 #include "editor/jobs/job_runner.h"
 #include "editor/main_window.h"
@@ -97,15 +98,6 @@ bool runFit(app::MainWindow& window, const char* action, const char* runner)
     return !window.findChild<app::JobRunner*>(QString::fromLatin1(runner));
 }
 
-/// The key's live figures once the panel has measured them after the last edit.
-std::optional<algo::FitMetrics> figures(app::MainWindow& window)
-{
-    views::FitGroup* group = window.propertiesPanel()->fitGroup();
-    QSignalSpy measured(group, &views::FitGroup::measured);
-    measured.wait(2000);
-    return group->metrics();
-}
-
 } // namespace
 
 class TestFitUi : public QObject {
@@ -153,7 +145,7 @@ private slots:
         QCOMPARE(int(doc->data().keys.size()), 1);
         const model::ObjectId key = doc->data().keys.front().id;
         QCOMPARE(window.scenePanel()->selection().id, key);
-        const auto before = figures(window);
+        const auto before = test::fitFigures(window);
         QVERIFY(before && before->valid);
         qInfo("rough alignment: silhouette IoU %.3f, chamfer %.2f px (measured in %.2f ms)", before->iou,
             before->chamferPx, props->fitGroup()->measureMilliseconds());
@@ -182,7 +174,7 @@ private slots:
         QVERIFY(doc->data().key(key)->camera == fitted);
         QVERIFY((vp->camera().eye - fitted.eye).norm() < 1e-6 * (fitted.eye - fitted.target).norm());
         QCOMPARE(vp->drawingOverlay().drawing(), drawing);
-        const auto afterCamera = figures(window);
+        const auto afterCamera = test::fitFigures(window);
         QVERIFY(afterCamera && afterCamera->iou > before->iou);
         qInfo("after Fit Camera: silhouette IoU %.3f, chamfer %.2f px", afterCamera->iou, afterCamera->chamferPx);
 
@@ -191,7 +183,7 @@ private slots:
         QCOMPARE(stack->count(), start + 2);
         QCOMPARE(stack->text(start + 1), QStringLiteral("Fit Shape to Drawing"));
         QVERIFY(!doc->data().key(key)->offsetsByFrame.empty());
-        const auto afterShape = figures(window);
+        const auto afterShape = test::fitFigures(window);
         QVERIFY(afterShape);
         qInfo("after Fit Shape: silhouette IoU %.3f, chamfer %.2f px (measured in %.2f ms)", afterShape->iou,
             afterShape->chamferPx, props->fitGroup()->measureMilliseconds());
@@ -302,7 +294,7 @@ private slots:
         const model::ObjectId key = doc->keys().createKey(
             QStringLiteral("Key"), documentCamera(camera), std::vector<model::ObjectId>{drawing});
         window.scenePanel()->select({views::ScenePanel::ItemKind::Key, key});
-        const auto first = figures(window);
+        const auto first = test::fitFigures(window);
         QVERIFY(first && first->valid);
         QVERIFY2(first->iou > 0.99, qPrintable(QString::number(first->iou)));
         // Again after an edit of the key (the outline is kept, the scratch too): the live cost.
@@ -312,7 +304,7 @@ private slots:
         for (int i = 0; i < 3; ++i) {
             moved.fovYDegrees += 0.2;
             doc->keys().setKeyCamera(key, moved);
-            QVERIFY(figures(window));
+            QVERIFY(test::fitFigures(window));
             fastest = std::min(fastest, window.propertiesPanel()->fitGroup()->measureMilliseconds());
         }
         qInfo("1024 px drawing: the live figures take %.2f ms", fastest);

@@ -81,11 +81,7 @@ private slots:
         auto* panel = window.findChild<views::HighlightPanel*>();
         QVERIFY(panel);
         // Bring the Highlights tab forward, as an artist would.
-        for (QWidget* w = panel; w; w = w->parentWidget())
-            if (auto* dock = qobject_cast<QDockWidget*>(w)) {
-                dock->raise();
-                break;
-            }
+        test::raiseDockOf(panel);
         waitForRender(vp);
 
         // 1. The Window preset, then its patch painted on the ear with one dab of the brush.

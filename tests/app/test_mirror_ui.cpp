@@ -7,12 +7,16 @@
 #include "window_test_support.h"
 
 #include "celform/model/document/document.h"
+#include "celform/views/panels/highlight_panel.h"
 #include "celform/views/panels/properties_panel.h"
 #include "celform/views/panels/scene_panel.h"
 #include "celform/views/viewport/viewport.h"
 
 #include <QComboBox>
+#include <QDockWidget>
+#include <QMenu>
 #include <QPushButton>
+#include <QToolButton>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QUndoStack>
@@ -101,6 +105,57 @@ private slots:
         // Off: the brush stops mirroring, the project keeps its plane.
         mirror->setCurrentIndex(0);
         QCOMPARE(doc->data().mirrorPlane, model::MirrorPlane::Y);
+    }
+
+    // Patch painting mirrors the same way: the Highlights dock's Mirror button by Paint, one dab on
+    // a hind leg paints the other hind leg's faces too, in the same undo step.
+    void patchPaintingMirrors()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window));
+        model::Document* doc = window.document();
+        Viewport* vp = window.viewport();
+        QCOMPARE(doc->data().mirrorPlane, model::MirrorPlane::Z);
+        const algo::TriMesh& mesh = *doc->data().baseMesh;
+        auto* panel = window.findChild<views::HighlightPanel*>();
+        QVERIFY(panel);
+        test::raiseDockOf(panel);
+        auto* presets = panel->findChild<QToolButton*>(QStringLiteral("addHighlightPreset"));
+        QVERIFY(presets && presets->menu() && !presets->menu()->actions().isEmpty());
+        presets->menu()->actions().front()->trigger(); // a layer on a new patch
+        auto* mirrorButton = panel->findChild<QToolButton*>(QStringLiteral("highlightPatchMirror"));
+        QVERIFY(mirrorButton);
+        QVERIFY(!mirrorButton->toolTip().isEmpty());
+        mirrorButton->click();
+        QVERIFY(mirrorButton->isChecked());
+        auto* paint = panel->findChild<QToolButton*>(QStringLiteral("highlightPaintPatch"));
+        paint->click();
+        QCOMPARE(vp->tool(), Viewport::Tool::Patch);
+
+        const Eigen::AlignedBox3d box = algo::boundingBox(mesh.vertices);
+        model::Camera side;
+        side.target = box.center();
+        side.eye = box.center() + Eigen::Vector3d(0.0, 0.1, 2.5) * box.diagonal().norm();
+        side.up = Eigen::Vector3d::UnitY();
+        vp->setCamera(side);
+        test::waitForRender(vp);
+        const std::uint32_t leg = test::elephantHindLegVertex(mesh);
+        const QPoint at = vp->projectToWidget(mesh.vertices.row(leg).transpose().cast<double>()).toPoint();
+        QVERIFY2(vp->rect().contains(at) && vp->pickVertex(at) >= 0, "the hind leg is not under the cursor");
+        const int steps = doc->undoStack()->index();
+        test::drag(vp, Qt::LeftButton, Qt::NoModifier, at, at + QPoint(0, -6), 2);
+        QCOMPARE(doc->undoStack()->index(), steps + 1);
+        const QString patch = doc->data().look.highlights.front().patch;
+        const algo::FaceSet* set = doc->data().faceSet(patch);
+        QVERIFY(set);
+        std::size_t near = 0, far = 0;
+        const double centreZ = box.center().z();
+        for (const std::int32_t f : set->faces)
+            (mesh.vertices(mesh.faces(f, 0), 2) > centreZ ? near : far) += 1;
+        qInfo("patch mirror: %zu faces on the leg's side, %zu on the other", near, far);
+        QVERIFY(near > 0);
+        QVERIFY(far >= near / 2);
+        test::keepScreenshot(&window, "mirror-patch");
     }
 };
 

@@ -228,9 +228,14 @@ private slots:
                 const std::vector<QRectF> rects = sphere->labelRects();
                 QCOMPARE(rects.size(), keys.size() + 1);
                 ++views;
-                for (std::size_t i = 0; i + 1 < rects.size(); ++i)
+                for (std::size_t i = 0; i + 1 < rects.size(); ++i) {
                     if (rects[i].intersects(rects.back()))
                         overlaps << QStringLiteral("%1 at step %2").arg(keys[i].name).arg(step);
+                    for (std::size_t j = i + 1; j + 1 < rects.size(); ++j)
+                        if (rects[i].intersects(rects[j]))
+                            overlaps
+                                << QStringLiteral("%1 over %2 at step %3").arg(keys[i].name, keys[j].name).arg(step);
+                }
             }
         }
         QVERIFY2(views > 0 && overlaps.isEmpty(), qPrintable(overlaps.join(QStringLiteral(", "))));
@@ -331,6 +336,18 @@ private slots:
         QVERIFY(hint->isVisible());
         QVERIFY2(hint->text().contains(QStringLiteral("Press Space")), qPrintable(hint->text()));
         QVERIFY(window.viewport()->rect().contains(hint->geometry()));
+        // The caption stays clear of the model: few points under it pick the surface.
+        waitForRender(window.viewport());
+        int covered = 0, samples = 0;
+        const QRect under = hint->geometry();
+        for (int i = 0; i < 12; ++i)
+            for (int j = 0; j < 4; ++j, ++samples)
+                if (window.viewport()->pickSurface(QPointF(under.left() + (i + 0.5) * under.width() / 12.0,
+                        under.top() + (j + 0.5) * under.height() / 4.0)))
+                    ++covered;
+        QVERIFY2(covered * 10 <= samples,
+            qPrintable(QStringLiteral("%1 of %2 points under the caption are the model").arg(covered).arg(samples)));
+        keepScreenshot(&window, "showcase-caption");
 
         // A key's drawing, one click in the Scene tree.
         const model::KeyViewpoint& key = window.document()->data().keys.front();

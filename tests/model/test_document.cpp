@@ -329,6 +329,73 @@ private slots:
         QCOMPARE(m_doc.undoStack()->index(), index);
     }
 
+    // Issue 24, item 5: patch painting mirrors as the brushes do. A dab's faces bring the faces
+    // whose centroids lie nearest their reflections; on a half model there are none, and the
+    // stroke says so.
+    void faceSetStrokeMirrors()
+    {
+        ProjectData data;
+        data.baseMesh = test::icosphere(2); // symmetric across x = 0 through its centre
+        m_doc.reset(std::move(data));
+        const algo::TriMesh& mesh = *m_doc.data().baseMesh;
+        auto centroid = [&](std::int32_t f) {
+            return Eigen::Vector3d((mesh.vertices.row(mesh.faces(f, 0)) + mesh.vertices.row(mesh.faces(f, 1))
+                                       + mesh.vertices.row(mesh.faces(f, 2)))
+                                       .transpose()
+                                       .cast<double>()
+                / 3.0);
+        };
+        std::vector<std::int32_t> dab;
+        for (std::int32_t f = 0; f < mesh.faceCount() && dab.size() < 5; ++f)
+            if (centroid(f).x() > 0.3)
+                dab.push_back(f);
+        QCOMPARE(int(dab.size()), 5);
+        const int index = m_doc.undoStack()->index();
+        FaceSetStroke stroke = m_doc.faceSets().beginFaceSetStroke(QStringLiteral("m"), MirrorPlane::X);
+        QCOMPARE(m_doc.faceSets().applyFaceSetStroke(stroke, dab, false), std::size_t(10));
+        QVERIFY(!stroke.twinMissing);
+        m_doc.faceSets().endFaceSetStroke(stroke);
+        QCOMPARE(m_doc.undoStack()->index(), index + 1);
+        const auto& faces = m_doc.data().faceSet(QStringLiteral("m"))->faces;
+        for (const std::int32_t f : dab) {
+            const Eigen::Vector3d twin = centroid(f).cwiseProduct(Eigen::Vector3d(-1.0, 1.0, 1.0));
+            QVERIFY(std::any_of(
+                faces.begin(), faces.end(), [&](std::int32_t g) { return (centroid(g) - twin).norm() < 1e-6; }));
+        }
+        // Ctrl+drag takes the twins out as well.
+        FaceSetStroke erase = m_doc.faceSets().beginFaceSetStroke(QStringLiteral("m"), MirrorPlane::X);
+        m_doc.faceSets().applyFaceSetStroke(erase, dab, true);
+        m_doc.faceSets().endFaceSetStroke(erase);
+        QVERIFY(m_doc.data().faceSet(QStringLiteral("m"))->faces.empty());
+
+        // Half a sphere (x >= 0 only): nothing within reach of the reflection.
+        algo::TriMesh half = *test::icosphere(2);
+        std::vector<Eigen::Vector3i> kept;
+        for (Eigen::Index f = 0; f < half.faceCount(); ++f) {
+            bool right = true;
+            for (int k = 0; k < 3; ++k)
+                right = right && half.vertices(half.faces(f, k), 0) >= -1e-6f;
+            if (right)
+                kept.push_back(half.faces.row(f).transpose());
+        }
+        half.faces.resize(Eigen::Index(kept.size()), 3);
+        for (std::size_t i = 0; i < kept.size(); ++i)
+            half.faces.row(Eigen::Index(i)) = kept[i].transpose();
+        ProjectData halfData;
+        halfData.baseMesh = std::make_shared<algo::TriMesh>(half);
+        m_doc.reset(std::move(halfData));
+        const algo::TriMesh& h = *m_doc.data().baseMesh;
+        std::int32_t far = 0;
+        for (std::int32_t f = 0; f < h.faceCount(); ++f)
+            if (h.vertices(h.faces(f, 0), 0) > h.vertices(h.faces(far, 0), 0))
+                far = f;
+        FaceSetStroke lonely = m_doc.faceSets().beginFaceSetStroke(QStringLiteral("m"), MirrorPlane::X);
+        m_doc.faceSets().applyFaceSetStroke(lonely, {far}, false);
+        m_doc.faceSets().endFaceSetStroke(lonely);
+        QVERIFY(lonely.twinMissing);
+        QCOMPARE(m_doc.data().faceSet(QStringLiteral("m"))->faces, std::vector<std::int32_t>{far});
+    }
+
     // A highlight drag (moves, a rotation, a scaling) is one undo step; moves are offsets from
     // the press, so the last one decides where the highlight ends.
     void highlightDragIsOneStep()

@@ -63,6 +63,8 @@ void connectToolPanels(views::Viewport& viewport, views::PropertiesPanel& proper
         [&viewport](model::ObjectId layer) { viewport.tool<views::HighlightTool>().setTarget(layer); });
     QObject::connect(&highlights, &views::HighlightPanel::patchTargetChosen, &viewport,
         [&viewport](const QString& faceSet) { viewport.tool<views::PatchTool>().setTarget(faceSet); });
+    QObject::connect(&highlights, &views::HighlightPanel::patchMirrorToggled, &viewport,
+        [&viewport](bool on) { viewport.tool<views::PatchTool>().setMirror(on); });
 
     auto* offsets = &viewport.tool<views::OffsetBrushTool>();
     auto showTarget = [&depth, offsets] { depth.showOffsetTarget(offsets->targetText()); };

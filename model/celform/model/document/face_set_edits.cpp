@@ -6,6 +6,8 @@
 #include "celform/model/document/document_commands.h"
 #include "celform/model/document/face_set_command.h"
 
+#include "celform/algorithms/tri_mesh.h"
+
 #include <algorithm>
 #include <iterator>
 
@@ -34,13 +36,25 @@ void FaceSetEdits::setFaceSet(
 
 // --- the patch brush ----------------------------------------------------------------------------
 
-FaceSetStroke FaceSetEdits::beginFaceSetStroke(const QString& target)
+FaceSetStroke FaceSetEdits::beginFaceSetStroke(const QString& target, MirrorPlane mirror)
 {
     refuseFaces(target, {});
     FaceSetStroke stroke;
     stroke.target = target;
     stroke.name = target.toStdString();
     stroke.undoText = tr("Paint Patch “%1”").arg(target);
+    const algo::TriMesh& mesh = *data().baseMesh;
+    stroke.mirrorPlane = mirrorGeometry(mesh, mirror);
+    if (stroke.mirrorPlane) {
+        algo::Positions centroids(mesh.faceCount(), 3);
+        for (Eigen::Index f = 0; f < mesh.faceCount(); ++f)
+            centroids.row(f) = (mesh.vertices.row(mesh.faces(f, 0)) + mesh.vertices.row(mesh.faces(f, 1))
+                                   + mesh.vertices.row(mesh.faces(f, 2)))
+                / 3.f;
+        stroke.centroids = algo::VertexGrid(centroids);
+        // As the offset brush: a twin further than 5 % of the model's size is no twin.
+        stroke.mirrorReach = 0.05 * algo::boundingBox(mesh.vertices).diagonal().norm();
+    }
     stroke.gesture = m_doc->beginGesture();
     return stroke;
 }
@@ -50,6 +64,27 @@ std::size_t FaceSetEdits::applyFaceSetStroke(FaceSetStroke& stroke, const std::v
     if (!stroke.active() || !data().baseMesh)
         return 0;
     stroke.dab.assign(faces.begin(), faces.end());
+    stroke.twinMissing = false;
+    if (stroke.mirrorPlane && !faces.empty()) {
+        const algo::TriMesh& mesh = *data().baseMesh;
+        std::size_t twins = 0;
+        for (const std::int32_t f : faces) {
+            if (f < 0 || f >= mesh.faceCount())
+                continue; // refused below, with the set unchanged
+            const Eigen::Vector3d centroid = (mesh.vertices.row(mesh.faces(f, 0)) + mesh.vertices.row(mesh.faces(f, 1))
+                                                 + mesh.vertices.row(mesh.faces(f, 2)))
+                                                 .transpose()
+                                                 .cast<double>()
+                / 3.0;
+            const std::int64_t twin
+                = stroke.centroids.nearest(algo::reflect(*stroke.mirrorPlane, centroid), stroke.mirrorReach);
+            if (twin >= 0) {
+                stroke.dab.push_back(std::int32_t(twin));
+                ++twins;
+            }
+        }
+        stroke.twinMissing = twins == 0;
+    }
     std::sort(stroke.dab.begin(), stroke.dab.end());
     stroke.dab.erase(std::unique(stroke.dab.begin(), stroke.dab.end()), stroke.dab.end());
     // Only what the dab changes: the faces it adds that the set lacks, or takes that it holds.

@@ -25,9 +25,12 @@ public:
     // --- the patch brush -------------------------------------------------------------------------
     /// Starts painting the face set named target (made by the first dab when missing); the stroke
     /// holds its own gesture, so all its dabs are one undo step, which stores only the faces the
-    /// drag added and took. Throws EditRefused without a base model or for an empty name.
-    [[nodiscard]] FaceSetStroke beginFaceSetStroke(const QString& target);
-    /// One dab: adds faces to the set (erase: takes them from it). Returns the faces changed.
+    /// drag added and took. mirror: also paint each dab's mirror image across that plane of the
+    /// base model (Off: none). Throws EditRefused without a base model or for an empty name.
+    [[nodiscard]] FaceSetStroke beginFaceSetStroke(const QString& target, MirrorPlane mirror = MirrorPlane::Off);
+    /// One dab: adds faces to the set (erase: takes them from it), with their mirror twins when the
+    /// stroke mirrors (stroke.twinMissing tells a dab none of whose faces has one). Returns the
+    /// faces changed.
     /// Throws EditRefused for a face out of range (nothing changed then).
     std::size_t applyFaceSetStroke(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces, bool erase);
     void endFaceSetStroke(FaceSetStroke& stroke);

@@ -3,11 +3,16 @@
 // working memory its dabs reuse, so a drag allocates once.
 #pragma once
 
+#include "celform/model/data/mirror_plane.h"
 #include "celform/model/document/gesture.h"
+
+#include "celform/algorithms/brush.h"
+#include "celform/algorithms/symmetry.h"
 
 #include <QString>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +24,14 @@ struct FaceSetStroke {
     std::string name; ///< target, as the face sets store it
     Gesture gesture; ///< the stroke's own: its dabs merge into one undo step
     QString undoText;
+    /// Also paint the mirror image across this plane (the brush's; issue 24 item 5): each dab face's
+    /// twin is the face whose centroid lies nearest the reflection of its centroid, so a model that
+    /// is only roughly symmetric mirrors too.
+    std::optional<algo::AxisPlane> mirrorPlane;
+    algo::VertexGrid centroids; ///< the base model's face centroids, when mirroring
+    double mirrorReach = 0.0; ///< how far from a reflected centroid its twin may lie
+    /// The last dab asked for a mirror image but found no twin of any of its faces (say so).
+    bool twinMissing = false;
     // Working memory of the dabs.
     std::vector<std::int32_t> dab; ///< the dab's faces, ascending, repeats dropped
     std::vector<std::int32_t> changed; ///< the faces the dab adds (or takes)

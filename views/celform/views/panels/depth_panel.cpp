@@ -245,6 +245,7 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     connect(m_runner, &DepthAnalysisRunner::analysed, this, &DepthPanel::showResult);
     connect(m_runner, &DepthAnalysisRunner::busyChanged, this, &DepthPanel::showBusy);
     m_mse->setText(tr("Depth error: —"));
+    letRowsNarrow(this);
 }
 
 void DepthPanel::showOffsetTarget(const QString& target)

@@ -225,6 +225,14 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
     m_paintPatch->setToolTip(tr("Paint the layer's patch on the model: drag adds faces, Ctrl+drag removes them, "
                                 "[ and ] change the radius. A layer on all faces gets a new patch first."));
     patchLayout->addWidget(m_paintPatch);
+    auto* mirrorPatch = new QToolButton(patchRow);
+    mirrorPatch->setObjectName(QStringLiteral("highlightPatchMirror"));
+    mirrorPatch->setText(tr("Mirror"));
+    mirrorPatch->setCheckable(true);
+    mirrorPatch->setToolTip(tr("Paint the mirror image across the project's mirror plane too (the brush's plane, "
+                               "Properties > Mirror)"));
+    connect(mirrorPatch, &QToolButton::toggled, this, &HighlightPanel::patchMirrorToggled);
+    patchLayout->addWidget(mirrorPatch);
     auto* patchMenuButton = new QToolButton(patchRow);
     patchMenuButton->setObjectName(QStringLiteral("highlightPatchMenu"));
     patchMenuButton->setText(tr("…"));
@@ -346,6 +354,7 @@ HighlightPanel::HighlightPanel(model::Document* document, QWidget* parent)
 
     connect(m_document, &model::Document::changed, this, &HighlightPanel::documentChanged);
     refresh();
+    letRowsNarrow(this);
 }
 
 void HighlightPanel::syncFrameRange()

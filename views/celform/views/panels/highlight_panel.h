@@ -53,6 +53,8 @@ signals:
     void highlightTargetChosen(celform::model::ObjectId layer);
     /// The face set the viewport's patch brush paints into.
     void patchTargetChosen(const QString& faceSet);
+    /// The patch brush paints the mirror image too (the Mirror button by Paint).
+    void patchMirrorToggled(bool on);
 
 private:
     void documentChanged(const model::ChangeSet& change);

@@ -381,6 +381,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
             refresh();
     });
     refresh();
+    letRowsNarrow(this);
 }
 
 QDoubleSpinBox* LookPanel::makeSpin(double min, double max, double step, int decimals, const QString& tip)

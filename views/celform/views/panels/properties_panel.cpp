@@ -400,6 +400,7 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
     GestureTracker::track(m_opacity, m_document);
     refresh();
     refreshBlend();
+    letRowsNarrow(this);
 }
 
 void PropertiesPanel::documentChanged(const model::ChangeSet& change)

@@ -2,10 +2,14 @@
 // panel, scrolling vertically only (the panel follows the dock's width).
 #pragma once
 
+#include <QComboBox>
+#include <QFormLayout>
 #include <QFrame>
 #include <QScrollArea>
 #include <QVBoxLayout>
 #include <QWidget>
+
+#include <algorithm>
 
 namespace celform::views {
 
@@ -24,6 +28,20 @@ inline QVBoxLayout* scrollingPanelLayout(QWidget* panel)
     scroll->setWidget(content);
     outer->addWidget(scroll);
     return layout;
+}
+
+/// Lets the panel's rows narrow to a 1366x768 screen's dock (about 300 px) instead of being cut
+/// at its right edge (the scroll area never scrolls sideways): a form's field goes below its label
+/// when the two do not fit side by side, and combo boxes stop asking for their longest item's
+/// width. Call once the panel's rows are made.
+inline void letRowsNarrow(QWidget* panel)
+{
+    for (QFormLayout* form : panel->findChildren<QFormLayout*>())
+        form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    for (QComboBox* combo : panel->findChildren<QComboBox*>()) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(std::max(combo->minimumContentsLength(), 12));
+    }
 }
 
 } // namespace celform::views

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace celform::views {
 
@@ -16,6 +18,41 @@ QRectF ViewSpherePanel::labelBounds() const
 }
 
 QRectF ViewSpherePanel::keyLabelRect(const Frame& f, const SpherePoint& point, QString* text) const
+{
+    // Keys that fall close on screen (two keys a right angle apart seen along their bisector) would
+    // print their names over each other: each key's label steps down, or up, off the labels of the
+    // keys before it (in the points' order, so painting and hit tests agree).
+    const auto index = std::size_t(&point - m_points.data());
+    const QRectF bounds = labelBounds();
+    std::vector<QRectF> placed;
+    QRectF result;
+    for (std::size_t i = 0; i <= index && i < m_points.size(); ++i) {
+        if (m_points[i].key == 0 && i != index)
+            continue;
+        const QRectF preferred = keyLabelPlace(f, m_points[i], i == index ? text : nullptr);
+        auto free = [&](const QRectF& r) {
+            return std::none_of(placed.begin(), placed.end(), [&](const QRectF& e) { return e.intersects(r); });
+        };
+        result = preferred;
+        if (!free(preferred)) {
+            bool found = false;
+            for (int step = 1; step <= 4 && !found; ++step)
+                for (const double sign : {1.0, -1.0}) {
+                    const QRectF moved
+                        = clampInto(preferred.translated(0.0, sign * step * (preferred.height() + 1.0)), bounds);
+                    if (free(moved)) {
+                        result = moved;
+                        found = true;
+                        break;
+                    }
+                }
+        }
+        placed.push_back(result);
+    }
+    return result;
+}
+
+QRectF ViewSpherePanel::keyLabelPlace(const Frame& f, const SpherePoint& point, QString* text) const
 {
     QFont labelFont = scaledFont(font(), 0.85);
     labelFont.setBold(isActive(point));
@@ -78,16 +115,41 @@ QRectF ViewSpherePanel::viewLabelRect(const Frame& f, QString* text) const
     right.moveTop(s.y() - box.height() / 2.0);
     left.moveRight(s.x() - 8.0);
     left.moveTop(right.top());
-    const QRectF first = clampInto(box, bounds);
-    for (const QRectF& candidate :
-        {first, clampInto(above, bounds), clampInto(right, bounds), clampInto(left, bounds)}) {
-        const bool free = std::none_of(m_points.begin(), m_points.end(), [&](const SpherePoint& point) {
-            return point.key != 0 && keyLabelRect(f, point, nullptr).intersects(candidate);
-        });
-        if (free)
-            return candidate;
+    QRectF farBelow = box, farAbove = above;
+    farBelow.moveTop(s.y() + 8.0 + box.height());
+    farAbove.moveBottom(s.y() - 8.0 - box.height());
+    // The candidates in order of preference; the first free of every key's label and dot wins (a
+    // dot over "view" read as "ew"), else the one covering the least of them, labels counting most.
+    std::vector<QRectF> labels, dots;
+    for (const SpherePoint& point : m_points) {
+        if (point.key == 0)
+            continue;
+        labels.push_back(keyLabelRect(f, point, nullptr));
+        const double r = pointRadius(point) + 1.5;
+        const QPointF p = project(f, point.direction);
+        dots.emplace_back(p.x() - r, p.y() - r, 2.0 * r, 2.0 * r);
     }
-    return first;
+    auto area = [](const QRectF& a, const QRectF& b) {
+        const QRectF common = a.intersected(b);
+        return common.isEmpty() ? 0.0 : common.width() * common.height();
+    };
+    QRectF best;
+    double bestCost = std::numeric_limits<double>::infinity();
+    for (const QRectF& candidate : {box, above, right, left, farBelow, farAbove}) {
+        const QRectF placed = clampInto(candidate, bounds);
+        double cost = 0.0;
+        for (const QRectF& l : labels)
+            cost += 10.0 * area(l, placed);
+        for (const QRectF& d : dots)
+            cost += area(d, placed);
+        if (cost == 0.0)
+            return placed;
+        if (cost < bestCost) {
+            bestCost = cost;
+            best = placed;
+        }
+    }
+    return best;
 }
 
 std::vector<QRectF> ViewSpherePanel::labelRects() const

@@ -312,6 +312,7 @@ void ViewSpherePanel::paintEvent(QPaintEvent*)
     paintHull(painter, f, true);
     paintView(painter, f);
     paintPoints(painter, f, true);
+    paintViewLabel(painter, f);
     paintAxes(painter, f);
     paintReadout(painter);
 }
@@ -510,10 +511,18 @@ void ViewSpherePanel::paintView(QPainter& painter, const Frame& f) const
     painter.setPen(QPen(outside ? kFalloff.darker(130) : base, 1.5));
     painter.setBrush(outside ? kFalloff : text);
     painter.drawEllipse(s, 4.5, 4.5);
+}
+
+void ViewSpherePanel::paintViewLabel(QPainter& painter, const Frame& f) const
+{
+    if (m_viewDirection.norm() == 0.0)
+        return;
+    const bool outside = m_hitFacet < 0;
     painter.setFont(scaledFont(font(), 0.85));
     QString label;
     const QRectF box = viewLabelRect(f, &label);
-    m_labels.draw(painter, box, label, outside ? kFalloff.darker(150) : text, base);
+    m_labels.draw(painter, box, label, outside ? kFalloff.darker(150) : palette().color(QPalette::Text),
+        palette().color(QPalette::Base));
 }
 
 void ViewSpherePanel::paintAxes(QPainter& painter, const Frame& f) const

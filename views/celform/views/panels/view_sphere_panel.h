@@ -103,6 +103,8 @@ private:
     void paintHitFacet(QPainter& painter, const Frame& f) const;
     void paintPoints(QPainter& painter, const Frame& f, bool front) const;
     void paintView(QPainter& painter, const Frame& f) const;
+    /// The view marker's label, painted last so no key's dot or label covers it.
+    void paintViewLabel(QPainter& painter, const Frame& f) const;
     void paintAxes(QPainter& painter, const Frame& f) const;
     void paintReadout(QPainter& painter) const;
     void paintEmptyHint(QPainter& painter, const Frame& f) const;
@@ -110,6 +112,8 @@ private:
     [[nodiscard]] QRectF labelBounds() const;
     /// A key's label box (its text, elided to fit, in text when given).
     [[nodiscard]] QRectF keyLabelRect(const Frame& f, const SpherePoint& point, QString* text) const;
+    /// Where a key's label goes on its own (keyLabelRect then keeps it off the earlier keys').
+    [[nodiscard]] QRectF keyLabelPlace(const Frame& f, const SpherePoint& point, QString* text) const;
     /// The view marker's label box, clear of the keys' labels where there is room.
     [[nodiscard]] QRectF viewLabelRect(const Frame& f, QString* text) const;
 

@@ -110,8 +110,13 @@ void AlignTool::activate()
     }
     // Start from the stored alignment, so refining it does not jump; nothing is stored until the
     // artist moves the camera.
-    if (drawing->aligned)
+    // Moving the view there is not the artist's move: it stores nothing (the previous mode's
+    // camera is still in m_stored until the line below).
+    if (drawing->aligned) {
+        m_following = true;
         m_viewport->setCamera(drawing->camera);
+        m_following = false;
+    }
     m_stored = m_viewport->camera();
     m_banner->setText(tr("Aligning to “%1”: move the camera until the model matches the drawing "
                          "(Alt+drag, the wheel, Alt+Shift+drag rolls, add Ctrl to snap to 15°; numpad 1/3/7 "

@@ -50,7 +50,8 @@ bool PatchTool::press(const ToolEvent& event)
         return true;
     }
     try {
-        m_stroke = document->faceSets().beginFaceSetStroke(m_target);
+        m_stroke = document->faceSets().beginFaceSetStroke(
+            m_target, m_mirror ? document->data().mirrorPlane : model::MirrorPlane::Off);
     } catch (const model::EditRefused& e) {
         emit message(e.message());
         return true;
@@ -81,6 +82,10 @@ void PatchTool::paint(const ToolEvent& event)
         return;
     try {
         document->faceSets().applyFaceSetStroke(m_stroke, dab, event.modifiers & Qt::ControlModifier);
+        if (m_stroke.twinMissing)
+            emit message(
+                Patch::tr("The mirror finds no twin of these faces across the %1 plane: only this side is painted.")
+                    .arg(model::mirrorPlaneName(document->data().mirrorPlane).toUpper()));
     } catch (const model::EditRefused& e) {
         emit message(e.message());
     }

@@ -25,6 +25,9 @@ public:
     /// Its faces are tinted while the tool is on.
     void setTarget(const QString& name);
     [[nodiscard]] QString target() const { return m_target; }
+    /// Also paint across the project's mirror plane (ProjectData::mirrorPlane), as the brushes do.
+    void setMirror(bool on) { m_mirror = on; }
+    [[nodiscard]] bool mirror() const { return m_mirror; }
 
     void activate() override;
     bool press(const ToolEvent& event) override;
@@ -45,6 +48,7 @@ private:
 
     const BrushSize& m_size;
     QString m_target;
+    bool m_mirror = false;
     model::FaceSetStroke m_stroke; ///< the drag's, open from press to release
     // Working memory of facesUnderBrush(), sized once per mesh.
     std::vector<char> m_seen;

@@ -325,12 +325,19 @@ Eigen::Vector3d Viewport::pivot() const
     return m_camera->pivot();
 }
 
+bool Viewport::refusedWhileHeld(const QString& action)
+{
+    ViewportTool* tool = activeTool();
+    if (!tool || !tool->holdsCamera())
+        return false;
+    emit message(tr("%1 would take the view off the camera being edited; leave the tool first (Esc).").arg(action));
+    return true;
+}
+
 void Viewport::frameAll()
 {
-    if (ViewportTool* tool = activeTool(); tool && tool->holdsCamera()) {
-        emit message(tr("Frame All would take the view off the camera being edited; leave the tool first (Esc)."));
+    if (refusedWhileHeld(tr("Frame All")))
         return;
-    }
     placeFramed();
 }
 
@@ -350,6 +357,11 @@ void Viewport::resetView()
 
 void Viewport::setViewPreset(ViewPreset preset)
 {
+    // While brushing a key, a preset view (numpad, Home, the axis gizmo) would swing the key's
+    // camera away from its drawing just as Frame All would (issue 24, item 4). Aligning takes them:
+    // the axis views are where a rough alignment starts (the align banner says so).
+    if (m_tool != Tool::Align && refusedWhileHeld(tr("A preset view")))
+        return;
     // The eye's side of the model and the up vector of each view (Y up; top looks down with -Z up).
     Eigen::Vector3d side = Eigen::Vector3d::UnitZ(), up = Eigen::Vector3d::UnitY();
     switch (preset) {

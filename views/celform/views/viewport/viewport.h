@@ -169,7 +169,8 @@ public:
 
 public slots:
     /// Keeps the view direction and fits the whole model in the view; refused with a message while
-    /// the tool holds a document camera (ViewportTool::holdsCamera: aligning, brushing a key).
+    /// the tool holds a document camera (ViewportTool::holdsCamera: aligning, brushing a key), as
+    /// are the preset views and the reset view.
     void frameAll();
     /// Front view (looking down -Z, Y up), framed.
     void resetView();
@@ -218,6 +219,9 @@ private:
     void endDrag(bool cancelled);
     /// frameAll without the tool's refusal: the program's own framing (first paint, a resize).
     void placeFramed();
+    /// True, with a status-bar message naming the action, while the active tool holds a document
+    /// camera (aligning, brushing a key): framing must not move that camera.
+    bool refusedWhileHeld(const QString& action);
     [[nodiscard]] ViewportTool* activeTool() const;
     /// Every tool: the ones setTool() picks and the light gizmo's drag.
     [[nodiscard]] std::vector<ViewportTool*> allTools() const;

@@ -249,7 +249,8 @@ void Viewport::keyPressEvent(QKeyEvent* event)
         frameAll();
         break;
     case ViewportKeyCommand::FrontView:
-        resetView();
+        if (m_tool == Tool::Align || !refusedWhileHeld(tr("The front view")))
+            resetView();
         break;
     case ViewportKeyCommand::BrushResize: // the brush tool's own (viewportKeyCommand never gives it)
         break;
