@@ -401,6 +401,13 @@ private slots:
                 .exitCode,
             2);
         QCOMPARE(runCelform({"patch", p, "--add", "two", "--faces", ",0,,3,"}).exitCode, 0);
+        // --mirror as the brush's: a bad plane is a usage error; auto takes the project's plane.
+        const QByteArray painted = fileBytes(p);
+        const Run bad = runCelform({"patch", p, "--add", "m", "--faces", "0", "--mirror", "w"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains(QStringLiteral("--mirror")), qPrintable(bad.err));
+        QCOMPARE(fileBytes(p), painted);
+        QCOMPARE(runCelform({"patch", p, "--add", "m", "--faces", "0", "--mirror", "auto"}).exitCode, 0);
     }
 
     // `eval --view 0,0,0` exited 0 while render refused it: both are usage errors.
