@@ -4,7 +4,12 @@
 #include "test_support.h"
 
 #include "celform/algorithms/render.h"
+#include "celform/algorithms/srgb_encode.h"
 
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
 #include <set>
 
 using namespace celform::algo;
@@ -63,6 +68,50 @@ RenderLook plainLook(Style style)
 class TestRender : public QObject {
     Q_OBJECT
 private slots:
+    // Issue 29: the table quantiser gives the power function's bytes exactly: at every step of
+    // the code (a value and its neighbours one float apart), on two million random values, and
+    // on the edges (NaN, infinities, negatives, above one).
+    void srgbQuantiserMatchesThePowerFunction()
+    {
+        int mismatches = 0;
+        auto check = [&](float v) {
+            if (celform::algo::srgbEncode8(v) != celform::algo::srgbEncode8Reference(v) && ++mismatches <= 5)
+                qWarning("%.9g: table %d, reference %d", double(v), celform::algo::srgbEncode8(v),
+                    celform::algo::srgbEncode8Reference(v));
+        };
+        // Each code's first value: bisect the reference's step from k - 1 to k.
+        for (int k = 1; k <= 255; ++k) {
+            float lo = 0.f, hi = 1.f;
+            for (int i = 0; i < 60; ++i) {
+                const float mid = 0.5f * (lo + hi);
+                (celform::algo::srgbEncode8Reference(mid) >= k ? hi : lo) = mid;
+            }
+            float v = std::nextafter(lo, 0.f);
+            for (int i = 0; i < 4; ++i, v = std::nextafter(v, 2.f))
+                check(v);
+        }
+        std::mt19937 random(29);
+        std::uniform_real_distribution<float> unit(-0.1f, 1.1f);
+        for (int i = 0; i < 2000000; ++i)
+            check(unit(random));
+        for (float v : {0.f, -0.f, 1.f, -1.f, 2.f, 1e-30f, std::numeric_limits<float>::denorm_min(),
+                 std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                 std::numeric_limits<float>::quiet_NaN(), std::nextafter(1.f, 0.f)})
+            check(v);
+        QCOMPARE(mismatches, 0);
+        QCOMPARE(int(celform::algo::srgbEncode8(std::numeric_limits<float>::quiet_NaN())), 0);
+        QCOMPARE(int(celform::algo::srgbEncode8(0.5f)), 188); // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354
+
+        // RGBA: colour encoded, alpha scaled linearly.
+        const float in[8] = {0.5f, 0.f, 1.f, 0.5f, 0.2140f, 0.0031308f, 2.f, 0.25f};
+        std::uint8_t out[8] = {};
+        celform::algo::quantise8(in, out, 8, 4, 3, true);
+        const std::uint8_t expected[8] = {188, 0, 255, 128, 127, 10, 255, 64};
+        QCOMPARE(std::memcmp(out, expected, 8), 0);
+        celform::algo::quantise8(in, out, 8, 4, 3, false); // data: every channel linear
+        QCOMPARE(int(out[0]), 128);
+    }
+
     void toonHasExactlyItsTones_data()
     {
         QTest::addColumn<int>("tones");

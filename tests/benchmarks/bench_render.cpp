@@ -1,11 +1,17 @@
 // Offline render speed: the dragon (871k triangles) at 1920x1080, toon shading with lines, the
 // whole frame (normals, G-buffer, line extraction and drawing, shading). Goal: under 0.5 s here.
 #include "celform/algorithms/render.h"
+#include "celform/algorithms/srgb_encode.h"
 #include "celform/model/io/mesh_io.h"
 
 #include "bench_data.h"
 
 #include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
 
 #include <QDir>
 #include <QFileInfo>
@@ -62,4 +68,54 @@ BENCHMARK(BM_RenderDragon1080pToon)
     ->UseRealTime()
     ->Repetitions(5)
     ->ReportAggregatesOnly(true);
+// Issue 29: the 8-bit encoding of a 1920x1080 RGBA frame, the power function per channel (the
+// writer before) against the exact table (the writer now), with a memcpy of the frame's floats as
+// the baseline of the same run.
+std::vector<float> frameValues()
+{
+    std::vector<float> values(std::size_t(1920) * 1080 * 4);
+    std::uint32_t state = 12345;
+    for (float& v : values) {
+        state = state * 1664525u + 1013904223u;
+        v = float(state >> 8) / float(1u << 24);
+    }
+    return values;
+}
+
+void BM_EncodeFramePow(benchmark::State& state)
+{
+    const std::vector<float> in = frameValues();
+    std::vector<std::uint8_t> out(in.size());
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < in.size(); ++i)
+            out[i]
+                = (i & 3) == 3 ? std::uint8_t(std::lround(in[i] * 255.f)) : celform::algo::srgbEncode8Reference(in[i]);
+        benchmark::DoNotOptimize(out.data());
+    }
+}
+
+void BM_EncodeFrameTable(benchmark::State& state)
+{
+    const std::vector<float> in = frameValues();
+    std::vector<std::uint8_t> out(in.size());
+    for (auto _ : state) {
+        celform::algo::quantise8(in.data(), out.data(), in.size(), 4, 3, true);
+        benchmark::DoNotOptimize(out.data());
+    }
+}
+
+void BM_EncodeFrameMemcpyBaseline(benchmark::State& state)
+{
+    const std::vector<float> in = frameValues();
+    std::vector<float> out(in.size());
+    for (auto _ : state) {
+        std::memcpy(out.data(), in.data(), in.size() * sizeof(float));
+        benchmark::DoNotOptimize(out.data());
+    }
+}
+
+BENCHMARK(BM_EncodeFramePow)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EncodeFrameTable)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EncodeFrameMemcpyBaseline)->Unit(benchmark::kMillisecond);
+
 BENCHMARK_MAIN();

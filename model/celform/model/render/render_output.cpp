@@ -5,6 +5,8 @@
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/raster_codec.h"
 
+#include "celform/algorithms/srgb_encode.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -90,13 +92,12 @@ void writeChannels(const QString& path, int width, int height, const std::vector
     std::vector<unsigned char> bytes;
     if (!isFloat) {
         bytes.resize(data.size());
-        for (std::size_t i = 0; i < data.size(); ++i) {
-            const int c = int(i % std::size_t(channels));
-            float v = std::clamp(data[i], 0.f, 1.f);
-            if (encodeSrgb && c < 3 && names[std::size_t(c)] != "A")
-                v = algo::linearToSrgb(v);
-            bytes[i] = static_cast<unsigned char>(std::lround(v * 255.f));
-        }
+        // The colour channels come first (at most three), alpha or data after them.
+        int colour = std::min(channels, 3);
+        for (int c = 0; c < colour; ++c)
+            if (names[std::size_t(c)] == "A")
+                colour = c;
+        algo::quantise8(data.data(), bytes.data(), data.size(), channels, colour, encodeSrgb);
     }
     // Nothing below throws between making the temporary file and removing or renaming it.
     const QString temporary = createTemporaryBeside(path);

@@ -6,9 +6,8 @@
 
 namespace celform::views {
 
-/// The 8-bit sRGB code of a linear value (clamped to [0, 1]; NaN gives 0), from a 16384-entry
-/// table fine enough that every 8-bit value decoded to linear encodes back to itself (the
-/// steepest step of the sRGB curve is 12.92, a sixth of a code value here).
+/// The 8-bit sRGB code of a linear value (clamped to [0, 1]; NaN gives 0): algo::srgbEncode8, the
+/// code the offline renderer writes, from a table.
 std::uint8_t srgbByte(float linear);
 
 } // namespace celform::views
