@@ -1435,10 +1435,6 @@
         <translation>プロジェクトのミラー平面に対して形状を対称に保ちます。</translation>
     </message>
     <message>
-        <source>--mirror must be auto, x, y, z or off, not “%1”</source>
-        <translation>--mirror には auto、x、y、z、off のいずれかを指定してください（「%1」は無効です）</translation>
-    </message>
-    <message>
         <source>warning: vertex %1 has no mirror twin across the %2 plane; only its side moved</source>
         <translation>警告: 頂点 %1 には %2 平面をはさんだミラーの対応点がありません。その側だけが動きました</translation>
     </message>
@@ -1449,6 +1445,18 @@
     <message>
         <source>Mirror plane: %1</source>
         <translation>ミラー平面: %1</translation>
+    </message>
+    <message>
+        <source>warning: the selected faces have no mirror twins across the %1 plane; only their side was painted</source>
+        <translation>警告: 選択した面には %1 平面をまたぐミラーの相手がありません。その側だけを塗りました</translation>
+    </message>
+    <message>
+        <source>Also paint the faces&apos; mirror twins across this plane (auto: the project&apos;s; default off).</source>
+        <translation>この平面をまたぐ面のミラーの相手も塗ります (auto: プロジェクトの平面。既定は off)。</translation>
+    </message>
+    <message>
+        <source>--%1 must be auto, x, y, z or off, not “%2”</source>
+        <translation>--%1 には auto、x、y、z、off のいずれかを指定してください (“%2” は使えません)</translation>
     </message>
 </context>
 <context>
@@ -6077,6 +6085,14 @@ chamfer distance %3 px</source>
         <source>The scene&apos;s last frame (set the range in the Timeline)</source>
         <translation>シーンの最後のフレーム（範囲はタイムラインで設定します）</translation>
     </message>
+    <message>
+        <source>Mirror</source>
+        <translation>ミラー</translation>
+    </message>
+    <message>
+        <source>Paint the mirror image across the project&apos;s mirror plane too (the brush&apos;s plane, Properties &gt; Mirror)</source>
+        <translation>プロジェクトのミラー平面 (ブラシの平面、プロパティ &gt; ミラー) をまたいだ鏡像も塗ります</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::LookPanel</name>
@@ -6558,6 +6574,10 @@ chamfer distance %3 px</source>
     <message>
         <source>Choose or create a patch in the Highlights dock first.</source>
         <translation>まずハイライトドックでパッチを選ぶか作成してください。</translation>
+    </message>
+    <message>
+        <source>The mirror finds no twin of these faces across the %1 plane: only this side is painted.</source>
+        <translation>%1 平面の反対側にこれらの面の相手が見つかりません。こちら側だけを塗ります。</translation>
     </message>
 </context>
 <context>
@@ -7228,8 +7248,20 @@ Drag to orbit, double-click a key to edit it, double-click empty space to reset 
         <translation>マウスでブラシのサイズを変更（クリックか Enter で確定、Esc で取り消し）</translation>
     </message>
     <message>
-        <source>Frame All would take the view off the camera being edited; leave the tool first (Esc).</source>
-        <translation>全体を表示すると編集中のカメラから視点が外れます。先にツールを終了してください（Esc）。</translation>
+        <source>%1 would take the view off the camera being edited; leave the tool first (Esc).</source>
+        <translation>%1 を行うと編集中のカメラから視点が外れます。先にツールを終了してください (Esc)。</translation>
+    </message>
+    <message>
+        <source>Frame All</source>
+        <translation>全体を表示</translation>
+    </message>
+    <message>
+        <source>A preset view</source>
+        <translation>プリセットの視点</translation>
+    </message>
+    <message>
+        <source>The front view</source>
+        <translation>正面の視点</translation>
     </message>
 </context>
 <context>
