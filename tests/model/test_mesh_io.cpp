@@ -196,6 +196,7 @@ private slots:
     void objVertexOrderUvsAndMaterials();
     void objRelativeIndices();
     void gltfNodeTransforms();
+    void gltfBufferOutsideItsFolder();
     void malformed_data();
     void malformed();
     void realMeshes_data();
@@ -328,6 +329,46 @@ void TestMeshIo::gltfNodeTransforms()
     QCOMPARE(box.min().x(), 20.0);
     QCOMPARE(box.max().x(), 22.0);
     QCOMPARE(box.max().y(), 2.0);
+}
+
+// Issue 27, item 8: a glTF buffer named "../x.bin" lies outside the model's folder: refused by
+// default, naming it; read when CELFORM_ALLOW_OUTSIDE_REFERENCES=1; a buffer beside it is read.
+void TestMeshIo::gltfBufferOutsideItsFolder()
+{
+    QByteArray buffer;
+    for (float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
+        appendBinary<float>(buffer, c, false);
+    for (quint16 i : {0, 1, 2, 0})
+        appendBinary<quint16>(buffer, i, false);
+    auto json = [](const char* uri) {
+        return QByteArray(R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+          "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],
+          "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+                       {"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}],
+          "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}],
+          "buffers":[{"byteLength":44,"uri":")")
+            + uri + R"("}]})";
+    };
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("model")));
+    writeFile(dir, QStringLiteral("secret.bin"), buffer);
+    writeFile(dir, QStringLiteral("model/tri.bin"), buffer);
+    const QString outside = writeFile(dir, QStringLiteral("model/outside.gltf"), json("../secret.bin"));
+    const QString beside = writeFile(dir, QStringLiteral("model/beside.gltf"), json("tri.bin"));
+    try {
+        importMesh(outside);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QCOMPARE(e.file(), outside);
+        QVERIFY2(e.problem().contains(QStringLiteral("secret.bin")) && e.problem().contains(QStringLiteral("outside")),
+            qPrintable(e.message()));
+    }
+    CELFORM_IMPORT_OR_FAIL(r, importMesh(beside))
+    QCOMPARE(r.mesh.faceCount(), 1);
+    qputenv("CELFORM_ALLOW_OUTSIDE_REFERENCES", "1");
+    CELFORM_IMPORT_OR_FAIL(allowed, importMesh(outside))
+    qunsetenv("CELFORM_ALLOW_OUTSIDE_REFERENCES");
+    QCOMPARE(allowed.mesh.faceCount(), 1);
 }
 
 void TestMeshIo::malformed_data()

@@ -27,9 +27,22 @@ namespace {
 // tinygltf's file access, confined like mesh_io's Assimp reader: regular files only (a buffer
 // naming a FIFO would block for ever, /dev/zero be read without end), no shell expansion of
 // paths, no writing, and no image files (Celform takes only the base colour of a material).
-bool fileExists(const std::string& file, void*)
+/// The folder of the file being read and the first reference refused outside it.
+struct Confinement {
+    QString folder;
+    QString refused;
+};
+
+bool fileExists(const std::string& file, void* user)
 {
-    return QFileInfo(QString::fromStdString(file)).isFile();
+    const QString path = QString::fromStdString(file);
+    auto* confinement = static_cast<Confinement*>(user);
+    if (confinement && !meshio::referenceAllowed(confinement->folder, path)) {
+        if (confinement->refused.isEmpty())
+            confinement->refused = path;
+        return false;
+    }
+    return QFileInfo(path).isFile();
 }
 
 std::string expandPath(const std::string& file, void*)
@@ -37,9 +50,16 @@ std::string expandPath(const std::string& file, void*)
     return file;
 }
 
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& file, void*)
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& file, void* user)
 {
     const QString path = QString::fromStdString(file);
+    auto* confinement = static_cast<Confinement*>(user);
+    if (confinement && !meshio::referenceAllowed(confinement->folder, path)) {
+        if (confinement->refused.isEmpty())
+            confinement->refused = path;
+        *err = "outside the file's folder";
+        return false;
+    }
     static const QStringList kImages = {QStringLiteral("png"), QStringLiteral("jpg"), QStringLiteral("jpeg"),
         QStringLiteral("webp"), QStringLiteral("ktx2"), QStringLiteral("dds"), QStringLiteral("bmp")};
     const QFileInfo info(path);
@@ -166,7 +186,8 @@ Source load(const QString& path)
     src.path = path;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skipImage, nullptr);
-    loader.SetFsCallbacks({&fileExists, &expandPath, &readWholeFile, &refuseWrite, nullptr});
+    Confinement confinement{QFileInfo(path).absolutePath(), {}};
+    loader.SetFsCallbacks({&fileExists, &expandPath, &readWholeFile, &refuseWrite, &confinement});
     std::string err;
     std::string warn;
     const std::string folder = QFile::encodeName(QFileInfo(path).absolutePath()).toStdString();
@@ -175,6 +196,8 @@ Source load(const QString& path)
         ? loader.LoadBinaryFromMemory(
             &src.model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, folder)
         : loader.LoadASCIIFromString(&src.model, &err, &warn, bytes.data(), size, folder);
+    if (!ok && !confinement.refused.isEmpty())
+        throw IoError(path, meshio::outsideReferenceProblem(confinement.refused));
     if (!ok)
         throw IoError(path, AnimationIo::tr("not a readable glTF file: %1").arg(readableError(err)));
     // Compressed geometry leaves its accessors without data: read as zeros, it would look valid.

@@ -23,15 +23,37 @@ namespace {
 /// Assimp's file access, opening regular files only: a glTF buffer, an FBX texture or a COLLADA
 /// reference naming a FIFO would block the open for ever, /dev/zero would be read without end.
 /// (DefaultIOSystem::Exists() opens the file too, to see whether it can.)
+/// Also only files in the model's folder or below it (referenceAllowed).
 class RegularFilesOnly : public Assimp::DefaultIOSystem {
 public:
-    bool Exists(const char* file) const override { return isRegular(file) && DefaultIOSystem::Exists(file); }
+    explicit RegularFilesOnly(QString folder)
+        : m_folder(std::move(folder))
+    { }
+    bool Exists(const char* file) const override
+    {
+        return isRegular(file) && allowed(file) && DefaultIOSystem::Exists(file);
+    }
     Assimp::IOStream* Open(const char* file, const char* mode) override
     {
-        return isRegular(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
+        return isRegular(file) && allowed(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
     }
+    /// The first reference refused for lying outside the folder, if any.
+    [[nodiscard]] const QString& refused() const { return m_refused; }
 
 private:
+    bool allowed(const char* file) const
+    {
+        const QString name = QFile::decodeName(file);
+        if (referenceAllowed(m_folder, name))
+            return true;
+        if (m_refused.isEmpty())
+            m_refused = name;
+        return false;
+    }
+
+    QString m_folder;
+    mutable QString m_refused;
+
     static bool isRegular(const char* file)
     {
         struct stat info { };
@@ -109,7 +131,8 @@ void readWithAssimp(const QString& path, MeshImport& out)
         checkGlbHeader(path, bytes);
     }
     Assimp::Importer importer;
-    importer.SetIOHandler(new RegularFilesOnly); // the importer owns it
+    auto* files = new RegularFilesOnly(QFileInfo(path).absolutePath());
+    importer.SetIOHandler(files); // the importer owns it
     // STL repeats each corner with the facet normal; without removing normals the welding
     // below would keep every triangle separate.
     importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
@@ -118,6 +141,8 @@ void readWithAssimp(const QString& path, MeshImport& out)
     const unsigned flags = aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices | aiProcess_Triangulate;
     const aiScene* scene = importer.ReadFile(QFile::encodeName(path).constData(), flags);
     if (!scene || !scene->mRootNode) {
+        if (!files->refused().isEmpty())
+            throw IoError(path, outsideReferenceProblem(files->refused()));
         const QString why = readableAssimpError(importer.GetErrorString());
         throw IoError(path, MeshIo::tr("not a readable %1 file: %2").arg(suffix.toUpper(), why));
     }

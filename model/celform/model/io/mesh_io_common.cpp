@@ -17,6 +17,24 @@ void requireRegularFile(const QString& path)
         throw IoError(path, MeshIo::tr("this is not a regular file (a pipe, a socket or a device)"));
 }
 
+bool referenceAllowed(const QString& modelFolder, const QString& file)
+{
+    if (qEnvironmentVariableIntValue("CELFORM_ALLOW_OUTSIDE_REFERENCES") == 1)
+        return true;
+    const QString target = QFileInfo(file).canonicalFilePath();
+    if (target.isEmpty())
+        return true; // missing: the reader says so
+    const QString folder = QFileInfo(modelFolder).canonicalFilePath();
+    return !folder.isEmpty() && target.startsWith(folder + QLatin1Char('/'));
+}
+
+QString outsideReferenceProblem(const QString& reference)
+{
+    return MeshIo::tr("it refers to “%1”, outside its folder; such references are not read unless "
+                      "CELFORM_ALLOW_OUTSIDE_REFERENCES=1 is set")
+        .arg(reference);
+}
+
 FileBytes::FileBytes(const QString& path)
     : m_file(path)
 {

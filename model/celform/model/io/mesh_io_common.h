@@ -50,6 +50,14 @@ void checkTriangleCount(const QString& path, std::int64_t triangles);
 /// followed). Checked before anything opens the file: opening a FIFO with no writer blocks for
 /// ever, and a directory or a device such as /dev/zero has no end to read to.
 void requireRegularFile(const QString& path);
+/// Whether a model may read a file it refers to (a glTF buffer, an FBX texture): one in the
+/// model's folder or below it. A reference that climbs out with "../" or names an absolute path
+/// elsewhere is refused, so that a downloaded model cannot read the user's other files, unless
+/// the environment sets CELFORM_ALLOW_OUTSIDE_REFERENCES=1. A file that does not exist is left to
+/// the reader to report.
+[[nodiscard]] bool referenceAllowed(const QString& modelFolder, const QString& file);
+/// The refusal's text, naming the reference and the way to allow it.
+[[nodiscard]] QString outsideReferenceProblem(const QString& reference);
 
 /// Whole-file access: mapped where possible, so a 16 MB PLY costs no copy.
 class FileBytes {
