@@ -33,16 +33,21 @@ struct Confinement {
     QString refused;
 };
 
+/// False, noting the first such path, for a file outside the folder being read.
+bool allowed(void* user, const QString& path)
+{
+    auto* confinement = static_cast<Confinement*>(user);
+    if (!confinement || meshio::referenceAllowed(confinement->folder, path))
+        return true;
+    if (confinement->refused.isEmpty())
+        confinement->refused = path;
+    return false;
+}
+
 bool fileExists(const std::string& file, void* user)
 {
     const QString path = QString::fromStdString(file);
-    auto* confinement = static_cast<Confinement*>(user);
-    if (confinement && !meshio::referenceAllowed(confinement->folder, path)) {
-        if (confinement->refused.isEmpty())
-            confinement->refused = path;
-        return false;
-    }
-    return QFileInfo(path).isFile();
+    return allowed(user, path) && QFileInfo(path).isFile();
 }
 
 std::string expandPath(const std::string& file, void*)
@@ -53,10 +58,7 @@ std::string expandPath(const std::string& file, void*)
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& file, void* user)
 {
     const QString path = QString::fromStdString(file);
-    auto* confinement = static_cast<Confinement*>(user);
-    if (confinement && !meshio::referenceAllowed(confinement->folder, path)) {
-        if (confinement->refused.isEmpty())
-            confinement->refused = path;
+    if (!allowed(user, path)) {
         *err = "outside the file's folder";
         return false;
     }
