@@ -184,7 +184,7 @@ std::vector<Track> readFirstAnimation(const Source& src, const Hierarchy& nodes,
             throw IoError(src.path, AnimationIo::tr("animation sampler %1 has no keys").arg(channel.sampler));
         for (std::size_t k = 0; k < track.times.size(); ++k)
             if (!std::isfinite(track.times[k]) || track.times[k] < 0.0f
-                || (k > 0 && track.times[k] < track.times[k - 1]))
+                || (k > 0 && track.times[k] <= track.times[k - 1])) // glTF 2.0: strictly increasing
                 throw IoError(src.path,
                     AnimationIo::tr("animation sampler %1: key %2 has time %3, not after the key before it")
                         .arg(channel.sampler)
