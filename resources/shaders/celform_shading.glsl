@@ -34,6 +34,29 @@ float cfToonIntensity(float lambert)
     return cfIntensities[tone];
 }
 
+// toneCoverage (issue 25, "Shading without stair steps"): the share of the pixel at or above the
+// threshold when lambert varies across it by width = fwidth(lambert), a one-pixel linear ramp
+// (the box filter's coverage of a straight boundary); width 0 is the hard step. NaN covers none.
+float cfToneCoverage(float lambert, float threshold, float width)
+{
+    if (!(width > 0.0))
+        return lambert >= threshold ? 1.0 : 0.0;
+    if (!(lambert == lambert))
+        return 0.0;
+    return clamp((lambert - threshold) / width + 0.5, 0.0, 1.0);
+}
+
+// toonIntensityAntialiased: the darkest intensity plus each threshold's coverage times the step
+// to the next tone's intensity.
+float cfToonIntensityAntialiased(float lambert, float width)
+{
+    float intensity = cfIntensities[0];
+    for (int i = 0; i < 7; ++i)
+        if (i < cfToneCount - 1)
+            intensity += cfToneCoverage(lambert, cfThresholds[i], width) * (cfIntensities[i + 1] - cfIntensities[i]);
+    return intensity;
+}
+
 // lookupIntensity (comic paper, "Shading"): clamp to [-1, 1] (NaN to -1), entry
 // min(31, floor((s + 1) * 16)).
 float cfLookupIntensity(float lambert)

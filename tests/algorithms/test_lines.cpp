@@ -4,6 +4,7 @@
 
 #include "celform/algorithms/lines.h"
 #include "celform/algorithms/mesh_analysis.h"
+#include "celform/algorithms/stroke_refine.h"
 #include "celform/model/io/mesh_io.h"
 
 #include <algorithm>
@@ -115,6 +116,50 @@ std::vector<Eigen::Vector3f> project(const Positions& p, float angle, float dept
         out[std::size_t(v)] = Eigen::Vector3f(200.f + 50.f * q.x(), 200.f - 50.f * q.y(), depthOffset - q.z());
     }
     return out;
+}
+
+/// A fold along the x axis, `angles.size()` unit segments long: a flat flank (z = 0, y >= 0) and,
+/// per segment, a flank of its own turned by angles[i] degrees about the axis, so the spine edge
+/// of segment i has a dihedral angle of exactly angles[i]. The turned flanks do not share
+/// vertices (their side edges are borders), so only the spine can be a crease.
+TriMesh fold(const std::vector<float>& angles)
+{
+    const int n = int(angles.size());
+    TriMesh m;
+    m.vertices.resize(2 * (n + 1) + 2 * n, 3);
+    for (int i = 0; i <= n; ++i) {
+        m.vertices.row(i) << float(i), 0.f, 0.f; // spine
+        m.vertices.row(n + 1 + i) << float(i), 1.f, 0.f; // flat flank
+    }
+    std::vector<std::array<int, 3>> tris;
+    for (int i = 0; i < n; ++i) {
+        const float phi = angles[std::size_t(i)] * float(M_PI / 180.0);
+        const int b0 = 2 * (n + 1) + 2 * i, b1 = b0 + 1, a0 = n + 1 + i, a1 = a0 + 1;
+        m.vertices.row(b0) << float(i), -std::cos(phi), std::sin(phi);
+        m.vertices.row(b1) << float(i + 1), -std::cos(phi), std::sin(phi);
+        tris.push_back({i, i + 1, a1});
+        tris.push_back({i, a1, a0});
+        tris.push_back({i + 1, i, b0});
+        tris.push_back({i + 1, b0, b1});
+    }
+    m.faces.resize(Eigen::Index(tris.size()), 3);
+    for (std::size_t f = 0; f < tris.size(); ++f)
+        m.faces.row(Eigen::Index(f)) << tris[f][0], tris[f][1], tris[f][2];
+    return m;
+}
+
+/// A straight styled stroke from a to b in `points` points, width 2, depth 10.
+StyledStroke straight(const Eigen::Vector2f& a, const Eigen::Vector2f& b, int points = 5, std::uint8_t kinds = kCrease)
+{
+    StyledStroke s;
+    s.kinds = kinds;
+    for (int k = 0; k < points; ++k) {
+        const float t = float(k) / float(points - 1);
+        s.points.push_back((1.f - t) * a + t * b);
+        s.depths.push_back(10.f);
+        s.widths.push_back(2.f);
+    }
+    return s;
 }
 
 } // namespace
@@ -313,6 +358,143 @@ private slots:
             QVERIFY(t.faces(e, 1) >= 0 && !t.nonManifold[std::size_t(e)]);
         // Every 45-degree crease is a 20-degree crease.
         QVERIFY(std::includes(at20.edges.begin(), at20.edges.end(), at45.edges.begin(), at45.edges.end()));
+    }
+
+    void cubeCreasesSurviveHysteresis()
+    {
+        const TriMesh m = cube();
+        const EdgeTopology t = buildEdgeTopology(m.faces, 8);
+        LineSettings s = only(kCrease);
+        s.creaseAngleDegrees = 45.f;
+        s.creaseLowAngleDegrees = 30.f;
+        FeatureEdges fe;
+        extractFeatureEdges(m.vertices, m.faces, t, {}, orthographic({-1, -2, -3}), s, fe);
+        const EdgeSet creases = edgesWith(t, fe, kCrease);
+        QCOMPARE(creases.size(), std::size_t(12));
+        for (const auto& [a, b] : creases)
+            QVERIFY(isCubeEdge(a, b));
+        for (const std::uint8_t k : fe.kinds)
+            QCOMPARE(int(k), int(kCrease)); // the internal weak mark never leaks out
+        // Without a seed above the high angle, hysteresis adds nothing.
+        s.creaseAngleDegrees = 100.f;
+        s.creaseLowAngleDegrees = 30.f;
+        extractFeatureEdges(m.vertices, m.faces, t, {}, orthographic({-1, -2, -3}), s, fe);
+        QVERIFY(fe.edges.empty());
+    }
+
+    void noisyCreaseChainDoesNotBreak()
+    {
+        // Ten spine edges at 50 degrees, one of them at 42: just under the 45-degree crease angle.
+        std::vector<float> angles(10, 50.f);
+        angles[4] = 42.f;
+        const TriMesh m = fold(angles);
+        const EdgeTopology t = buildEdgeTopology(m.faces, std::int32_t(m.vertexCount()));
+        LineSettings s = only(kCrease);
+        FeatureEdges fe;
+        s.creaseLowAngleDegrees = s.creaseAngleDegrees; // no hysteresis: the chain breaks in two
+        extractFeatureEdges(m.vertices, m.faces, t, {}, orthographic({0, -1, -1}), s, fe);
+        QCOMPARE(fe.edges.size(), std::size_t(9));
+        QCOMPARE(chainStrokes(t, fe).size(), std::size_t(2));
+        s.creaseLowAngleDegrees = 30.f; // hysteresis: one stroke of ten edges along the spine
+        extractFeatureEdges(m.vertices, m.faces, t, {}, orthographic({0, -1, -1}), s, fe);
+        QCOMPARE(fe.edges.size(), std::size_t(10));
+        const std::vector<Stroke> strokes = chainStrokes(t, fe);
+        QCOMPARE(strokes.size(), std::size_t(1));
+        QCOMPARE(strokes[0].vertices.size(), std::size_t(11));
+        // A weak edge that reaches no crease is no crease: all at 42 degrees, nothing.
+        const TriMesh weak = fold(std::vector<float>(10, 42.f));
+        extractFeatureEdges(weak.vertices, weak.faces, buildEdgeTopology(weak.faces, std::int32_t(weak.vertexCount())),
+            {}, orthographic({0, -1, -1}), s, fe);
+        QVERIFY(fe.edges.empty());
+    }
+
+    void gapsJoinedUpToTheirWidth()
+    {
+        // 1.5 px apart: one stroke; 3 px apart: two (the gap is 2 px).
+        std::vector<StyledStroke> near{straight({0, 0}, {20, 0}), straight({21.5f, 0}, {40, 0})};
+        joinStrokeGaps(near, 2.f);
+        QCOMPARE(near.size(), std::size_t(1));
+        QCOMPARE(near[0].points.front(), Eigen::Vector2f(0, 0));
+        QCOMPARE(near[0].points.back(), Eigen::Vector2f(40, 0));
+        QCOMPARE(near[0].points.size(), near[0].widths.size());
+        QCOMPARE(near[0].points.size(), near[0].depths.size());
+        std::vector<StyledStroke> far{straight({0, 0}, {20, 0}), straight({23.f, 0}, {40, 0})};
+        joinStrokeGaps(far, 2.f);
+        QCOMPARE(far.size(), std::size_t(2));
+        // Reversed pieces are joined end to end too, and outlines never join inner lines.
+        std::vector<StyledStroke> reversed{straight({0, 0}, {20, 0}), straight({40, 0}, {21.f, 0})};
+        joinStrokeGaps(reversed, 2.f);
+        QCOMPARE(reversed.size(), std::size_t(1));
+        QCOMPARE(strokeLength(reversed[0]), 40.f);
+        std::vector<StyledStroke> classes{straight({0, 0}, {20, 0}), straight({21.f, 0}, {40, 0}, 5, kSilhouette)};
+        joinStrokeGaps(classes, 2.f);
+        QCOMPARE(classes.size(), std::size_t(2));
+    }
+
+    void shortStrokesDropped()
+    {
+        std::vector<StyledStroke> strokes{straight({0, 0}, {5, 0}), straight({0, 10}, {30, 10})};
+        dropShortStrokes(strokes, 10.f);
+        QCOMPARE(strokes.size(), std::size_t(1));
+        QCOMPARE(strokeLength(strokes[0]), 30.f);
+        // refineStrokes: minLength is a fraction of the image height (10 px of 1000).
+        std::vector<StyledStroke> again{straight({0, 0}, {5, 0}), straight({0, 10}, {30, 10})};
+        LineStyle style;
+        style.minLength = 0.01f;
+        refineStrokes(again, style, 1000);
+        QCOMPARE(again.size(), std::size_t(1));
+    }
+
+    void taperNarrowsTheEnds()
+    {
+        std::vector<StyledStroke> strokes{straight({0, 0}, {100, 0}, 21)};
+        taperStrokes(strokes, 12.f);
+        const StyledStroke& s = strokes[0];
+        QCOMPARE(s.widths.front(), 2.f * kTaperTip);
+        QCOMPARE(s.widths.back(), 2.f * kTaperTip);
+        QCOMPARE(s.widths[10], 2.f); // the middle keeps its width
+        QVERIFY(s.widths[1] > s.widths[0] && s.widths[2] > s.widths[1]);
+        // Closed strokes have no ends.
+        StyledStroke ring = straight({0, 0}, {10, 0}, 3);
+        ring.closed = true;
+        std::vector<StyledStroke> rings{ring};
+        taperStrokes(rings, 12.f);
+        QCOMPARE(rings[0].widths, ring.widths);
+    }
+
+    void reductionThinsFarLines()
+    {
+        StyledStroke nearStroke = straight({0, 0}, {20, 0});
+        StyledStroke farStroke = straight({0, 10}, {20, 10});
+        std::fill(farStroke.depths.begin(), farStroke.depths.end(), 30.f);
+        std::vector<StyledStroke> strokes{nearStroke, farStroke};
+        reduceWidthWithDepth(strokes, 0.5f);
+        QCOMPARE(strokes[0].widths.front(), 2.f);
+        QCOMPARE(strokes[1].widths.front(), 1.f);
+    }
+
+    void smoothingKeepsEndsAndCorners()
+    {
+        // A gentle arc gets rounder; a right angle stays a corner; ends stay put.
+        StyledStroke arc;
+        arc.kinds = kCrease;
+        for (int k = 0; k <= 8; ++k) {
+            const float a = float(k) * 0.1f;
+            arc.points.emplace_back(100.f * std::cos(a), 100.f * std::sin(a));
+            arc.depths.push_back(10.f);
+            arc.widths.push_back(2.f);
+        }
+        StyledStroke corner = straight({0, 0}, {20, 0}, 3);
+        corner.points.emplace_back(20.f, 20.f);
+        corner.depths.push_back(10.f);
+        corner.widths.push_back(2.f);
+        std::vector<StyledStroke> strokes{arc, corner};
+        smoothStrokes(strokes, 2);
+        QCOMPARE(strokes[0].points.front(), arc.points.front());
+        QCOMPARE(strokes[0].points.back(), arc.points.back());
+        QVERIFY(strokes[0].points.size() > arc.points.size());
+        QVERIFY(std::count(strokes[1].points.begin(), strokes[1].points.end(), Eigen::Vector2f(20, 0)) == 1);
+        QCOMPARE(strokes[1].points.size(), strokes[1].widths.size());
     }
 
     void chainCubeHexagon()

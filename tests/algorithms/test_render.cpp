@@ -124,6 +124,7 @@ private slots:
         QFETCH(int, tones);
         const TriMesh mesh = sphere();
         RenderLook look = plainLook(Style::Toon);
+        look.toneAntialiasing = ToneAntialiasing::Off;
         look.toon.thresholds.clear();
         look.toon.intensities.clear();
         for (int i = 0; i < tones; ++i) {
@@ -141,7 +142,7 @@ private slots:
                     const float* p = out.beauty.at(x, y);
                     colours.insert({p[0], p[1], p[2]});
                 }
-        // No anti-aliasing inside the model: one colour per tone, no more, no less.
+        // Without tone anti-aliasing: one colour per tone, no more, no less.
         QCOMPARE(int(colours.size()), tones);
     }
 
@@ -165,6 +166,48 @@ private slots:
         }
         QVERIFY(boundary > 0);
         QVERIFY2(std::abs(boundary - std::sqrt(0.75)) < 0.02, qPrintable(QString::number(boundary)));
+    }
+
+    void antialiasedToneBoundary()
+    {
+        // Issue 25: coverage blends only the pixels the hard boundary runs through, and agrees
+        // with 4x supersampling of the tone.
+        const TriMesh mesh = sphere();
+        RenderLook look = plainLook(Style::Toon);
+        RenderCache cache;
+        RenderPasses hard, coverage, supersampled;
+        look.toneAntialiasing = ToneAntialiasing::Off;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, hard);
+        look.toneAntialiasing = ToneAntialiasing::Coverage;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, coverage);
+        look.toneAntialiasing = ToneAntialiasing::Supersample4;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, supersampled);
+        const int w = 200;
+        int blended = 0, strayBlend = 0;
+        double difference = 0;
+        for (int y = 1; y + 1 < w; ++y)
+            for (int x = 1; x + 1 < w; ++x) {
+                const auto i = std::size_t(y * w + x);
+                if (hard.id[i] < 0)
+                    continue;
+                const float c = coverage.tone[i];
+                if (c == hard.tone[i])
+                    continue;
+                ++blended;
+                difference += std::abs(double(c) - double(supersampled.tone[i]));
+                bool boundary = false; // a neighbour of the other hard tone
+                for (const int d : {-1, 1})
+                    boundary = boundary || hard.tone[i + std::size_t(d)] != hard.tone[i]
+                        || hard.tone[std::size_t(int(i) + d * w)] != hard.tone[i];
+                strayBlend += boundary ? 0 : 1;
+                QVERIFY(c > 0.25f && c < 0.75f);
+            }
+        // The boundary circle r = 0.866 is 2 * pi * 0.866 * (200 / 2.4) = 453 px long.
+        qInfo("%d blended boundary pixels, %d away from the hard boundary, mean |coverage - 4x| %.3f", blended,
+            strayBlend, blended ? difference / blended : 0.0);
+        QVERIFY(blended > 200 && blended < 1400);
+        QVERIFY(strayBlend <= blended / 20);
+        QVERIFY(difference / blended < 0.15);
     }
 
     void shadingOffsetMovesTheBoundary()

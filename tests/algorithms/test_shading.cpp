@@ -126,6 +126,31 @@ private slots:
         QCOMPARE(celform::algo::toonIntensity(ramp, lambert), intensity);
     }
 
+    void antialiasedToneBoundary()
+    {
+        // Issue 25: a one-pixel ramp centred on the threshold, the hard step without a width.
+        ToonRamp ramp; // threshold 0.5, intensities 0.25 and 0.75
+        QCOMPARE(toneCoverage(0.5f, 0.5f, 0.1f), 0.5f);
+        QCOMPARE(toneCoverage(0.45f, 0.5f, 0.1f), 0.0f);
+        QCOMPARE(toneCoverage(0.55f, 0.5f, 0.1f), 1.0f);
+        QVERIFY(std::abs(toneCoverage(0.525f, 0.5f, 0.1f) - 0.75f) < 1e-6f);
+        QCOMPARE(toneCoverage(0.5f, 0.5f, 0.0f), 1.0f);
+        QCOMPARE(toneCoverage(0.49f, 0.5f, 0.0f), 0.0f);
+        QCOMPARE(toneCoverage(std::nanf(""), 0.5f, 0.1f), 0.0f);
+        QCOMPARE(toonIntensityAntialiased(ramp, 0.5f, 0.1f), 0.5f);
+        // Away from the boundary, and with no width, exactly the hard tones.
+        for (const float s : {-1.0f, 0.0f, 0.4f, 0.6f, 1.0f}) {
+            QCOMPARE(toonIntensityAntialiased(ramp, s, 0.1f), celform::algo::toonIntensity(ramp, s));
+            QCOMPARE(toonIntensityAntialiased(ramp, s, 0.0f), celform::algo::toonIntensity(ramp, s));
+        }
+        // Three tones: each boundary blends its own two neighbours.
+        ToonRamp three;
+        three.thresholds = {0.0f, 0.5f};
+        three.intensities = {0.2f, 0.5f, 0.9f};
+        QVERIFY(std::abs(toonIntensityAntialiased(three, 0.0f, 0.2f) - 0.35f) < 1e-6f);
+        QVERIFY(std::abs(toonIntensityAntialiased(three, 0.5f, 0.2f) - 0.7f) < 1e-6f);
+    }
+
     void lookupTable_data()
     {
         QTest::addColumn<ToonRamp>("ramp");
@@ -459,6 +484,7 @@ private slots:
         QVERIFY(!source.contains(
             QRegularExpression(QStringLiteral("^\\s*#\\s*version"), QRegularExpression::MultilineOption)));
         for (const char* signature : {"float cfToonIntensity(float lambert)", "float cfLookupIntensity(float lambert)",
+                 "float cfToonIntensityAntialiased(float lambert, float width)",
                  "vec3 cfGoochShade(vec3 base, vec3 n, vec3 l1)",
                  "float cfHatchCoverage(vec3 position, vec3 normal, int tone, int toneCount, float footprint)"})
             QVERIFY2(source.contains(QLatin1String(signature)), signature);
@@ -477,14 +503,15 @@ private slots:
         // As VTK would: a GLSL 1.50 fragment shader around the snippet, calling every function.
         out.write("#version 150\n");
         out.write(source.toUtf8());
-        out.write("\nout vec4 fragColor;\n"
-                  "void main()\n"
-                  "{\n"
-                  "    float t = cfToonIntensity(0.3) + cfLookupIntensity(-0.2);\n"
-                  "    vec3 g = cfGoochShade(vec3(0.5), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.6, 0.8));\n"
-                  "    float h = cfHatchCoverage(vec3(0.1, 0.2, 0.3), vec3(0.0, 0.0, 1.0), 0, 3, 0.001);\n"
-                  "    fragColor = vec4(g * t, h);\n"
-                  "}\n");
+        out.write(
+            "\nout vec4 fragColor;\n"
+            "void main()\n"
+            "{\n"
+            "    float t = cfToonIntensity(0.3) + cfLookupIntensity(-0.2) + cfToonIntensityAntialiased(0.5, 0.01);\n"
+            "    vec3 g = cfGoochShade(vec3(0.5), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.6, 0.8));\n"
+            "    float h = cfHatchCoverage(vec3(0.1, 0.2, 0.3), vec3(0.0, 0.0, 1.0), 0, 3, 0.001);\n"
+            "    fragColor = vec4(g * t, h);\n"
+            "}\n");
         out.close();
         QProcess process;
         process.start(validator, {path});

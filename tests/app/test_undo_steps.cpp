@@ -35,6 +35,22 @@ class TestUndoSteps : public QObject {
         return texts;
     }
 
+    /// The Look dock raised, and its panel.
+    static views::LookPanel* raisedLookPanel(app::MainWindow& window)
+    {
+        window.findChild<QDockWidget*>(QStringLiteral("lookDock"))->raise();
+        return window.findChild<views::LookPanel*>();
+    }
+
+    /// The Look panel's spin box whose tool tip starts with tip, or null.
+    static QDoubleSpinBox* spinWithTip(const views::LookPanel* look, const char* tip)
+    {
+        for (auto* spin : look->findChildren<QDoubleSpinBox*>())
+            if (spin->toolTip().startsWith(QLatin1String(tip)))
+                return spin;
+        return nullptr;
+    }
+
 private slots:
     void unrelatedEditsAreSeparateSteps()
     {
@@ -138,8 +154,7 @@ private slots:
         model::Document* doc = window.document();
         QUndoStack* stack = doc->undoStack();
         const int start = stack->count();
-        window.findChild<QDockWidget*>(QStringLiteral("lookDock"))->raise();
-        auto* look = window.findChild<views::LookPanel*>();
+        auto* look = raisedLookPanel(window);
         QVERIFY(look);
         QCheckBox* ridges = nullptr;
         for (auto* check : look->findChildren<QCheckBox*>())
@@ -147,10 +162,7 @@ private slots:
                 ridges = check;
         QVERIFY(ridges);
         QVERIFY(!ridges->isChecked());
-        QDoubleSpinBox* threshold = nullptr;
-        for (auto* spin : look->findChildren<QDoubleSpinBox*>())
-            if (spin->toolTip().startsWith(QStringLiteral("Apparent ridges are drawn")))
-                threshold = spin;
+        QDoubleSpinBox* threshold = spinWithTip(look, "Apparent ridges are drawn");
         QVERIFY(threshold);
         QVERIFY(!threshold->isEnabled()); // until ridges are on
         const algo::LineSettings before = doc->data().look.lines;
@@ -166,6 +178,40 @@ private slots:
         stack->undo();
         QVERIFY(doc->data().look.lines == before);
         QVERIFY(!ridges->isChecked());
+    }
+
+    void strokeCleanUpControlsAreOneStepEach()
+    {
+        // Issue 25's line controls in the Look panel: a held key on the taper, the minimum length
+        // and the crease hysteresis is one step each, and undo restores the file's values.
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window));
+        model::Document* doc = window.document();
+        QUndoStack* stack = doc->undoStack();
+        const int start = stack->count();
+        auto* look = raisedLookPanel(window);
+        QVERIFY(look);
+        QDoubleSpinBox* taper = spinWithTip(look, "Length over which strokes thin");
+        QDoubleSpinBox* minLength = spinWithTip(look, "Strokes shorter than this");
+        QDoubleSpinBox* low = spinWithTip(look, "Hysteresis:");
+        QVERIFY(taper && minLength && low);
+        const algo::LineStyle style = doc->data().look.lineStyle;
+        const algo::LineSettings settings = doc->data().look.lines;
+        QCOMPARE(taper->value(), double(style.taper));
+        QVERIFY(std::abs(minLength->value() - 100.0 * double(style.minLength)) < 1e-4);
+        celform::test::holdKey(taper, Qt::Key_Up, 3);
+        QVERIFY(doc->data().look.lineStyle.taper > style.taper);
+        celform::test::holdKey(minLength, Qt::Key_Down, 2);
+        QVERIFY(doc->data().look.lineStyle.minLength < style.minLength);
+        celform::test::holdKey(low, Qt::Key_Down, 2);
+        QVERIFY(doc->data().look.lines.creaseLowAngleDegrees < settings.creaseLowAngleDegrees);
+        QCOMPARE(stack->count() - start, 3);
+        stack->undo();
+        QVERIFY(doc->data().look.lines == settings);
+        stack->undo();
+        stack->undo();
+        QVERIFY(doc->data().look.lineStyle == style);
+        QCOMPARE(taper->value(), double(style.taper));
     }
 };
 

@@ -1,5 +1,7 @@
 // Offline render speed: the dragon (871k triangles) at 1920x1080, toon shading with lines, the
 // whole frame (normals, G-buffer, line extraction and drawing, shading). Goal: under 0.5 s here.
+// Issue 25: the toon frame without lines three ways, tone boundaries hard (the baseline, today's
+// frame), anti-aliased by coverage (the default) and by 4x supersampling of the tone alone.
 #include "celform/algorithms/render.h"
 #include "celform/algorithms/srgb_encode.h"
 #include "celform/model/io/mesh_io.h"
@@ -22,7 +24,8 @@ using namespace celform;
 
 using bench::dragon;
 
-void renderDragon(benchmark::State& state, bool lines)
+void renderDragon(
+    benchmark::State& state, bool lines, algo::ToneAntialiasing antialiasing = algo::RenderLook{}.toneAntialiasing)
 {
     const algo::TriMesh* mesh = dragon();
     if (!mesh) {
@@ -39,6 +42,7 @@ void renderDragon(benchmark::State& state, bool lines)
     algo::RenderLook look;
     look.style = algo::Style::Toon;
     look.lines = lines;
+    look.toneAntialiasing = antialiasing;
     algo::RenderCache cache; // topology is built once, as in a sequence
     algo::RenderPasses out;
     for (auto _ : state) {
@@ -55,6 +59,14 @@ void BM_RenderDragon1080pToon(benchmark::State& state)
 {
     renderDragon(state, false);
 }
+void BM_RenderDragon1080pToonHardTones(benchmark::State& state)
+{
+    renderDragon(state, false, algo::ToneAntialiasing::Off);
+}
+void BM_RenderDragon1080pToonSupersampledTones(benchmark::State& state)
+{
+    renderDragon(state, false, algo::ToneAntialiasing::Supersample4);
+}
 
 } // namespace
 
@@ -64,6 +76,16 @@ BENCHMARK(BM_RenderDragon1080pToonLines)
     ->Repetitions(5)
     ->ReportAggregatesOnly(true);
 BENCHMARK(BM_RenderDragon1080pToon)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_RenderDragon1080pToonHardTones)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_RenderDragon1080pToonSupersampledTones)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Repetitions(5)

@@ -113,6 +113,12 @@ ProjectData richProject()
     data.look.lines.borders = false;
     data.look.lineStyle.jitter = 1.25f;
     data.look.lineStyle.seed = 77;
+    data.look.lines.creaseLowAngleDegrees = 21.f;
+    data.look.lineStyle.joinGap = 3.5f;
+    data.look.lineStyle.smoothing = 3;
+    data.look.lineStyle.minLength = 0.02f;
+    data.look.lineStyle.taper = 7.f;
+    data.look.lineStyle.reduction = 0.25f;
     data.look.stereo.output = algo::StereoOutput::Dubois;
     data.look.stereo.interocular = 0.07;
     data.look.stereo.toeIn = true;
@@ -360,6 +366,55 @@ private slots:
             m.insert(QStringLiteral("look"), look);
         });
         QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
+    }
+
+    void strokeCleanUpIsStoredAndOptional()
+    {
+        // Issue 25: crease hysteresis and the stroke clean-up round-trip; older files get the
+        // hand-drawn defaults; values out of range are damage.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("strokes.celform"));
+        saveProject(richProject(), path);
+        const ProjectData saved = loadProject(path);
+        QCOMPARE(saved.look.lines.creaseLowAngleDegrees, 21.f);
+        QCOMPARE(saved.look.lineStyle.joinGap, 3.5f);
+        QCOMPARE(saved.look.lineStyle.smoothing, 3);
+        QCOMPARE(saved.look.lineStyle.minLength, 0.02f);
+        QCOMPARE(saved.look.lineStyle.taper, 7.f);
+        QCOMPARE(saved.look.lineStyle.reduction, 0.25f);
+        auto editLines = [&](const char* object, const std::function<void(QJsonObject&)>& change) {
+            editManifest(path, [&](QJsonObject& m) {
+                QJsonObject look = m.value(QStringLiteral("look")).toObject();
+                QJsonObject o = look.value(QLatin1String(object)).toObject();
+                change(o);
+                look.insert(QLatin1String(object), o);
+                m.insert(QStringLiteral("look"), look);
+            });
+        };
+        editLines("line_kinds", [](QJsonObject& k) { k.remove(QStringLiteral("crease_low_angle_degrees")); });
+        editLines("line_style", [](QJsonObject& l) {
+            for (const char* key : {"join_gap", "smoothing", "min_length", "taper", "reduction"})
+                l.remove(QLatin1String(key));
+        });
+        const ProjectData old = loadProject(path);
+        QCOMPARE(old.look.lines.creaseLowAngleDegrees, algo::LineSettings().creaseLowAngleDegrees);
+        algo::LineStyle expected = algo::LineStyle();
+        expected.color = old.look.lineStyle.color;
+        expected.outlineWidth = old.look.lineStyle.outlineWidth;
+        expected.innerWidth = old.look.lineStyle.innerWidth;
+        expected.jitter = old.look.lineStyle.jitter;
+        expected.widthVariation = old.look.lineStyle.widthVariation;
+        expected.overshoot = old.look.lineStyle.overshoot;
+        expected.seed = old.look.lineStyle.seed;
+        QVERIFY(old.look.lineStyle == expected);
+        for (const auto& [key, bad] : std::vector<std::pair<const char*, double>>{
+                 {"join_gap", -1}, {"smoothing", 1.5}, {"smoothing", 9}, {"min_length", 2}, {"reduction", 1.5}}) {
+            saveProject(richProject(), path);
+            const QString k = QLatin1String(key);
+            const double v = bad;
+            editLines("line_style", [&](QJsonObject& l) { l.insert(k, v); });
+            QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
+        }
     }
 
     void normalSmoothingIsStoredAndChecked()

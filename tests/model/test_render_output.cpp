@@ -1,9 +1,15 @@
 // The document's highlight tracks resolved for the renderer (model::renderHighlightsFor): patch
 // masks, smoothed normals and frames, and the cache that keeps a track's per-vertex geometry across
-// parameter edits and frames without changing a single value.
+// parameter edits and frames without changing a single value. Issue 25's line figures: stray
+// dashes on the elephant sample and a coarse shared mesh at 1280x960, before and after the
+// stroke clean-up.
 #include "test_meshes.h"
+#include "test_support.h"
 
 #include "celform/model/data/project_data.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/io/project_file.h"
+#include "celform/model/render/render_job.h"
 #include "celform/model/render/render_output.h"
 
 #include <QtTest/QtTest>
@@ -11,6 +17,74 @@
 using namespace celform;
 
 namespace {
+
+/// Line coverage that shows: a quarter, so that faint tapered dashes count too.
+constexpr float kInk = 0.25f;
+
+/// Line dashes of a picture: 8-connected pieces of the lines pass (coverage above kInk) whose
+/// bounding box has a diagonal under maxPixels.
+int shortDashes(const algo::RenderPasses& passes, int width, int height, double maxPixels)
+{
+    std::vector<char> seen(passes.lines.size(), 0);
+    std::vector<int> stack;
+    int dashes = 0;
+    for (int start = 0; start < width * height; ++start) {
+        if (seen[std::size_t(start)] || passes.lines[std::size_t(start)] <= kInk)
+            continue;
+        int x0 = width, y0 = height, x1 = -1, y1 = -1;
+        stack.assign(1, start);
+        seen[std::size_t(start)] = 1;
+        while (!stack.empty()) {
+            const int i = stack.back();
+            stack.pop_back();
+            const int x = i % width, y = i / width;
+            x0 = std::min(x0, x);
+            x1 = std::max(x1, x);
+            y0 = std::min(y0, y);
+            y1 = std::max(y1, y);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= width || ny >= height)
+                        continue;
+                    const auto j = std::size_t(ny * width + nx);
+                    if (!seen[j] && passes.lines[j] > kInk) {
+                        seen[j] = 1;
+                        stack.push_back(int(j));
+                    }
+                }
+        }
+        if (std::hypot(x1 - x0 + 1, y1 - y0 + 1) < maxPixels)
+            ++dashes;
+    }
+    return dashes;
+}
+
+/// The lines of a project at 1280x960 from direction (0.3, 0.2, 1) with a directional light at
+/// (0.5, 0.8, 0.6), as `celform render --view 0.3,0.2,1 --light directional:0.5,0.8,0.6`; with
+/// `before`, the line clean-up of issue 25 is off (no hysteresis, joining, smoothing, minimum
+/// length, taper or reduction), as the lines were drawn before it.
+int dashesOf(const model::ProjectData& data, bool before)
+{
+    model::RenderJob job;
+    job.view = Eigen::Vector3d(0.3, 0.2, 1.0);
+    job.size = QSize(1280, 960);
+    job.light = model::Light{model::LightType::Directional, Eigen::Vector3d(0.5, 0.8, 0.6)};
+    model::Look look = model::renderJobLook(data, job);
+    if (before) {
+        look.lines.creaseLowAngleDegrees = look.lines.creaseAngleDegrees;
+        look.lineStyle.joinGap = 0.f;
+        look.lineStyle.smoothing = 0;
+        look.lineStyle.minLength = 0.f;
+        look.lineStyle.taper = 0.f;
+        look.lineStyle.reduction = 0.f;
+    }
+    const model::Camera camera = model::renderJobCamera(data, look, job, 0);
+    algo::RenderCache cache;
+    const algo::RenderPasses passes
+        = model::renderShape(data, look, data.baseMesh->vertices, 0, camera, 1280, 960, algo::StereoOutput::Off, cache);
+    return shortDashes(passes, 1280, 960, 30.0);
+}
 
 model::ProjectData sphereWithTracks()
 {
@@ -52,6 +126,27 @@ class TestRenderOutput : public QObject {
     Q_OBJECT
 
 private slots:
+    void fewShortDashesOnTheElephant()
+    {
+        const model::ProjectData data
+            = model::loadProject(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform"));
+        const int before = dashesOf(data, true), after = dashesOf(data, false);
+        qInfo("elephant sample: %d line dashes under 30 px before the clean-up, %d after", before, after);
+        QVERIFY(after <= 3);
+        QVERIFY(after < before);
+    }
+
+    void fewShortDashesOnACoarseMesh()
+    {
+        CELFORM_REQUIRE_SHARED(path, QStringLiteral("meshes/npm_bunny.off"));
+        const model::ProjectData data = model::newProject(
+            std::make_shared<const algo::TriMesh>(model::importMesh(path).mesh), QStringLiteral("npm_bunny"));
+        const int before = dashesOf(data, true), after = dashesOf(data, false);
+        qInfo("bunny (3.7k triangles): %d line dashes under 30 px before the clean-up, %d after", before, after);
+        QVERIFY(after <= 3);
+        QVERIFY(after <= before);
+    }
+
     void tracksResolveWithPatchAndSmoothing()
     {
         const model::ProjectData data = sphereWithTracks();

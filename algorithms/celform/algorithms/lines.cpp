@@ -39,6 +39,88 @@ std::vector<FaceRecord>& faceScratch()
     return scratch;
 }
 
+/// The edge pass's list of every edge with its kind (features first), kept per thread.
+struct EdgeScratch {
+    std::vector<std::int32_t> edges;
+    std::vector<std::uint8_t> kinds;
+};
+EdgeScratch& edgeScratch()
+{
+    thread_local EdgeScratch scratch;
+    return scratch;
+}
+
+/// Working memory of the crease hysteresis, kept per thread like faceScratch.
+struct HysteresisScratch {
+    std::vector<std::uint8_t> reached; ///< per vertex: touched by an accepted crease
+    std::vector<std::pair<std::int32_t, std::int32_t>> weakAt; ///< (vertex, index into out), sorted
+    std::vector<std::int32_t> queue;
+};
+HysteresisScratch& hysteresisScratch()
+{
+    thread_local HysteresisScratch scratch;
+    return scratch;
+}
+
+/// Internal mark of the edge pass: dihedral angle between the low and the high crease angle.
+constexpr std::uint8_t kWeakCrease = 0x80;
+
+/// Crease hysteresis (after Canny's edge linking, here along mesh edges): weak creases reached
+/// from an accepted crease through shared vertices and other weak creases become creases; the
+/// rest are dropped. Keeps out in ascending edge order.
+void linkWeakCreases(const EdgeTopology& topology, std::int32_t vertexCount, FeatureEdges& out)
+{
+    HysteresisScratch& h = hysteresisScratch();
+    h.weakAt.clear();
+    for (std::size_t i = 0; i < out.edges.size(); ++i)
+        if (out.kinds[i] & kWeakCrease)
+            for (int k = 0; k < 2; ++k)
+                h.weakAt.emplace_back(topology.edges(out.edges[i], k), std::int32_t(i));
+    if (h.weakAt.empty())
+        return;
+    std::sort(h.weakAt.begin(), h.weakAt.end());
+    h.reached.assign(std::size_t(vertexCount), 0);
+    for (std::size_t i = 0; i < out.edges.size(); ++i)
+        if (out.kinds[i] & kCrease)
+            for (int k = 0; k < 2; ++k)
+                h.reached[std::size_t(topology.edges(out.edges[i], k))] = 1;
+    h.queue.clear();
+    for (const auto& [v, i] : h.weakAt)
+        if (h.reached[std::size_t(v)])
+            h.queue.push_back(i);
+    while (!h.queue.empty()) {
+        const std::int32_t i = h.queue.back();
+        h.queue.pop_back();
+        std::uint8_t& kind = out.kinds[std::size_t(i)];
+        if (!(kind & kWeakCrease))
+            continue;
+        kind = std::uint8_t((kind & ~kWeakCrease) | kCrease);
+        for (int k = 0; k < 2; ++k) {
+            const std::int32_t v = topology.edges(out.edges[std::size_t(i)], k);
+            if (h.reached[std::size_t(v)])
+                continue;
+            h.reached[std::size_t(v)] = 1;
+            auto it = std::lower_bound(
+                h.weakAt.begin(), h.weakAt.end(), std::make_pair(v, std::numeric_limits<std::int32_t>::min()));
+            for (; it != h.weakAt.end() && it->first == v; ++it)
+                if (out.kinds[std::size_t(it->second)] & kWeakCrease)
+                    h.queue.push_back(it->second);
+        }
+    }
+    // Weak creases left unreached go; edges that were only that leave the list.
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < out.edges.size(); ++i) {
+        const auto kind = std::uint8_t(out.kinds[i] & ~kWeakCrease);
+        if (kind == 0)
+            continue;
+        out.edges[kept] = out.edges[i];
+        out.kinds[kept] = kind;
+        ++kept;
+    }
+    out.edges.resize(kept);
+    out.kinds.resize(kept);
+}
+
 /// lowbias32 integer hash (Chris Wellons): cheap and well mixed, so neighbouring vertex indices
 /// get unrelated noise.
 std::uint32_t mixBits(std::uint32_t x)
@@ -76,6 +158,7 @@ void styleRun(const std::vector<std::int32_t>& ids, bool closed, std::uint8_t ki
         return;
     StyledStroke s;
     s.kinds = kinds;
+    s.closed = closed;
     const float base = (kinds & kOutlineBits) ? style.outlineWidth : style.innerWidth;
     s.points.resize(m);
     s.depths.resize(m);
@@ -128,36 +211,44 @@ void styleRun(const std::vector<std::int32_t>& ids, bool closed, std::uint8_t ki
         s.points.push_back(s.points.front());
         s.depths.push_back(s.depths.front());
         s.widths.push_back(s.widths.front());
-    } else if (style.overshoot > 0.0f) {
-        // Comic paper: lines "often overshoot the desired direction somewhat". Each end is
-        // extended along its end tangent (first non-degenerate segment from that end).
-        auto extension = [&](std::size_t end, int step) -> std::optional<Eigen::Vector2f> {
-            for (std::size_t k = 1; k < m; ++k) {
-                const std::size_t j = step > 0 ? end + k : end - k;
-                const Eigen::Vector2f d = s.points[end] - s.points[j];
-                const float len = d.norm();
-                if (len > 0.0f)
-                    return Eigen::Vector2f(s.points[end] + d * (style.overshoot / len));
-            }
-            return std::nullopt;
-        };
-        const auto head = extension(0, +1);
-        const auto tail = extension(m - 1, -1);
-        if (tail) {
-            s.points.push_back(*tail);
-            s.depths.push_back(s.depths[m - 1]);
-            s.widths.push_back(s.widths[m - 1] * kOvershootTaper);
-        }
-        if (head) {
-            s.points.insert(s.points.begin(), *head);
-            s.depths.insert(s.depths.begin(), s.depths.front());
-            s.widths.insert(s.widths.begin(), s.widths.front() * kOvershootTaper);
-        }
+    } else {
+        overshootEnds(s, style.overshoot);
     }
     out.push_back(std::move(s));
 }
 
 } // namespace
+
+void overshootEnds(StyledStroke& s, float overshoot)
+{
+    const std::size_t m = s.points.size();
+    if (overshoot <= 0.0f || s.closed || m < 2)
+        return;
+    // Comic paper: lines "often overshoot the desired direction somewhat". Each end is
+    // extended along its end tangent (first non-degenerate segment from that end).
+    auto extension = [&](std::size_t end, int step) -> std::optional<Eigen::Vector2f> {
+        for (std::size_t k = 1; k < m; ++k) {
+            const std::size_t j = step > 0 ? end + k : end - k;
+            const Eigen::Vector2f d = s.points[end] - s.points[j];
+            const float len = d.norm();
+            if (len > 0.0f)
+                return Eigen::Vector2f(s.points[end] + d * (overshoot / len));
+        }
+        return std::nullopt;
+    };
+    const auto head = extension(0, +1);
+    const auto tail = extension(m - 1, -1);
+    if (tail) {
+        s.points.push_back(*tail);
+        s.depths.push_back(s.depths[m - 1]);
+        s.widths.push_back(s.widths[m - 1] * kOvershootTaper);
+    }
+    if (head) {
+        s.points.insert(s.points.begin(), *head);
+        s.depths.insert(s.depths.begin(), s.depths.front());
+        s.widths.insert(s.widths.begin(), s.widths.front() * kOvershootTaper);
+    }
+}
 
 void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeTopology& topology,
     const std::vector<std::int32_t>& faceMaterials, const LineView& view, const LineSettings& settings,
@@ -172,8 +263,6 @@ void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeT
     const bool useMaterials = settings.materialBoundaries && faceMaterials.size() == nf && nf > 0;
     if (!settings.silhouettes && !settings.creases && !settings.borders && !useMaterials)
         return;
-    out.edges.reserve(std::max(out.edges.capacity(), ne / 32));
-    out.kinds.reserve(out.edges.capacity());
 
     // Face pass: unit normal and facing once per face. Facing is sign(dot(n_f, p - eye)) with p
     // the face's first vertex (paper 3, section 4.2.2: per-triangle view vectors; the comic
@@ -222,25 +311,29 @@ void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeT
                 vz[i] = az[i] - eye.z();
             }
         }
-        FaceRecord* r = records.data() + f0;
+        // Pure float arithmetic with selects into small arrays (vectorizes), then the packing
+        // into 16-bit records in a loop of its own.
+        alignas(32) float qx[kBlock], qy[kBlock], qz[kBlock], side[kBlock];
         for (std::size_t i = 0; i < count; ++i) {
             const float nx = uy[i] * wz[i] - uz[i] * wy[i];
             const float ny = uz[i] * wx[i] - ux[i] * wz[i];
             const float nz = ux[i] * wy[i] - uy[i] * wx[i];
             const float len2 = nx * nx + ny * ny + nz * nz;
-            // Branch-free (selects only) so the loop vectorizes; degenerate faces get len2 = 1.
+            // Degenerate faces (zero or overflowing normal) get a zero normal and no facing.
             const bool proper = (len2 > 0.0f) & (len2 <= std::numeric_limits<float>::max());
             const float inverse = kNormalScale / std::sqrt(proper ? len2 : 1.0f);
-            const float px = nx * inverse, py = ny * inverse, pz = nz * inverse;
-            const float qx = proper ? px : 0.0f;
-            const float qy = proper ? py : 0.0f;
-            const float qz = proper ? pz : 0.0f;
+            qx[i] = proper ? nx * inverse : 0.0f;
+            qy[i] = proper ? ny * inverse : 0.0f;
+            qz[i] = proper ? nz * inverse : 0.0f;
             const float d = nx * vx[i] + ny * vy[i] + nz * vz[i];
-            const std::int16_t side = d < 0.0f ? 1 : -1;
-            r[i].normal[0] = toFixed(qx);
-            r[i].normal[1] = toFixed(qy);
-            r[i].normal[2] = toFixed(qz);
-            r[i].facing = proper ? side : std::int16_t(0);
+            side[i] = proper ? (d < 0.0f ? 1.0f : -1.0f) : 0.0f;
+        }
+        FaceRecord* r = records.data() + f0;
+        for (std::size_t i = 0; i < count; ++i) {
+            r[i].normal[0] = toFixed(qx[i]);
+            r[i].normal[1] = toFixed(qy[i]);
+            r[i].normal[2] = toFixed(qz[i]);
+            r[i].facing = std::int16_t(side[i]);
         }
     }
 
@@ -251,6 +344,14 @@ void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeT
     const std::int32_t cosCreaseFixed = cosCrease < -1.0f
         ? std::numeric_limits<std::int32_t>::min()
         : std::int32_t(std::lrint(double(cosCrease) * double(kNormalScale) * double(kNormalScale)));
+    // Hysteresis: below the high threshold's cosine but below the low one's is a weak crease.
+    const bool hysteresis = settings.creases && settings.creaseLowAngleDegrees < settings.creaseAngleDegrees;
+    const float cosLow
+        = std::cos(std::max(settings.creaseLowAngleDegrees, 0.0f) * float(3.14159265358979323846 / 180.0));
+    const std::int32_t cosLowFixed = hysteresis
+        ? std::max(
+            cosCreaseFixed, std::int32_t(std::lrint(double(cosLow) * double(kNormalScale) * double(kNormalScale))))
+        : cosCreaseFixed;
     const FaceRecord* rec = records.data();
     constexpr std::size_t kPrefetchDistance = 16;
     const std::int32_t* edgeFaces = topology.faces.data();
@@ -258,39 +359,53 @@ void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeT
     const bool anyNonManifold = topology.nonManifoldEdges > 0;
     const std::uint8_t borderBit = settings.borders ? kBorder : 0;
     const std::uint8_t nonManifoldBit = settings.creases ? kCrease : 0;
+    const std::uint8_t silhouetteBit = settings.silhouettes ? kSilhouette : 0;
+    const std::uint8_t creaseBit = settings.creases ? kCrease : 0;
+    const std::uint8_t weakBit = settings.creases ? kWeakCrease : 0;
+    // Branch-free append: every edge is written at the end of the scratch list and the end moves
+    // on only for a feature edge (about 2 % of them), so no branch depends on the data.
+    EdgeScratch& found = edgeScratch();
+    if (found.edges.size() < ne) {
+        found.edges.resize(ne);
+        found.kinds.resize(ne);
+    }
+    std::int32_t* foundEdges = found.edges.data();
+    std::uint8_t* foundKinds = found.kinds.data();
+    std::size_t count = 0;
     for (std::size_t e = 0; e < ne; ++e) {
 #if defined(__GNUC__)
-        // rec[f1] is the one scattered read of the loop; fetch it a few edges ahead.
+        // rec[f1] is the scattered read of the loop; fetch it a few edges ahead.
         if (e + kPrefetchDistance < ne)
             __builtin_prefetch(rec + std::max(edgeFaces[2 * (e + kPrefetchDistance) + 1], 0));
 #endif
         const std::int32_t f0 = edgeFaces[2 * e], f1 = edgeFaces[2 * e + 1];
-        std::uint8_t kind = 0;
-        if (f1 < 0) {
-            kind = borderBit;
-        } else if (anyNonManifold && nonManifold[e]) {
-            // More than two faces: which two the topology kept is arbitrary, so front/back and
-            // dihedral tests would be too. Such an edge is a geometric feature (fins, touching
-            // parts), drawn as a crease.
-            kind = nonManifoldBit;
-        } else {
-            const FaceRecord r0 = rec[f0], r1 = rec[f1];
-            if (settings.silhouettes && r0.facing * r1.facing < 0)
-                kind |= kSilhouette;
-            if (settings.creases && r0.facing != 0 && r1.facing != 0) {
-                const std::int32_t dot = std::int32_t(r0.normal[0]) * r1.normal[0]
-                    + std::int32_t(r0.normal[1]) * r1.normal[1] + std::int32_t(r0.normal[2]) * r1.normal[2];
-                if (dot < cosCreaseFixed)
-                    kind |= kCrease;
-            }
-            if (useMaterials && faceMaterials[std::size_t(f0)] != faceMaterials[std::size_t(f1)])
-                kind |= kMaterialBoundary;
-        }
-        if (kind != 0) {
-            out.edges.push_back(std::int32_t(e));
-            out.kinds.push_back(kind);
-        }
+        const bool open = f1 < 0;
+        const std::int32_t other = open ? f0 : f1;
+        const FaceRecord r0 = rec[f0], r1 = rec[other];
+        // Both faces proper: product +-1; a silhouette: -1 (front and back).
+        const std::int32_t facing = std::int32_t(r0.facing) * r1.facing;
+        const std::int32_t dot = std::int32_t(r0.normal[0]) * r1.normal[0] + std::int32_t(r0.normal[1]) * r1.normal[1]
+            + std::int32_t(r0.normal[2]) * r1.normal[2];
+        // Crease: strong (dot below the crease angle's cosine), weak (below the low angle's:
+        // hysteresis) or neither; degenerate faces make none.
+        const std::uint8_t crease = dot < cosCreaseFixed ? creaseBit : (dot < cosLowFixed ? weakBit : 0);
+        std::uint8_t kind = std::uint8_t((facing < 0 ? silhouetteBit : 0) | (facing != 0 ? crease : 0));
+        if (useMaterials) // loop-invariant
+            kind |= faceMaterials[std::size_t(f0)] != faceMaterials[std::size_t(other)] ? kMaterialBoundary : 0;
+        // More than two faces: which two the topology kept is arbitrary, so front/back and
+        // dihedral tests would be too. Such an edge is a geometric feature (fins, touching
+        // parts), drawn as a crease.
+        if (anyNonManifold) // loop-invariant
+            kind = nonManifold[e] ? nonManifoldBit : kind;
+        kind = open ? borderBit : kind;
+        foundEdges[count] = std::int32_t(e);
+        foundKinds[count] = kind;
+        count += kind != 0 ? 1 : 0;
     }
+    out.edges.assign(foundEdges, foundEdges + count);
+    out.kinds.assign(foundKinds, foundKinds + count);
+    if (hysteresis)
+        linkWeakCreases(topology, std::int32_t(shape.rows()), out);
 }
 
 std::vector<Stroke> chainStrokes(const EdgeTopology& topology, const FeatureEdges& features)

@@ -25,6 +25,11 @@ struct LineSettings {
     bool borders = true;
     bool materialBoundaries = true;
     float creaseAngleDegrees = 45.0f; ///< angle between the two face normals
+    /// Hysteresis (as Canny's edge linking): an edge whose angle lies between this and
+    /// creaseAngleDegrees is a crease when it is connected, through such edges, to a crease above
+    /// creaseAngleDegrees, so a chain on a coarse surface does not break into dashes. At or above
+    /// creaseAngleDegrees: no hysteresis.
+    float creaseLowAngleDegrees = 35.0f;
     /// Apparent ridges (paper 3, section 4.2), off by default: they cost a curvature pass per shape.
     bool ridges = false;
     /// Scale-free ridge threshold: view-dependent curvature times the median edge length
@@ -34,7 +39,8 @@ struct LineSettings {
     {
         return silhouettes == o.silhouettes && creases == o.creases && borders == o.borders
             && materialBoundaries == o.materialBoundaries && creaseAngleDegrees == o.creaseAngleDegrees
-            && ridges == o.ridges && ridgeThreshold == o.ridgeThreshold;
+            && creaseLowAngleDegrees == o.creaseLowAngleDegrees && ridges == o.ridges
+            && ridgeThreshold == o.ridgeThreshold;
     }
 };
 
@@ -82,10 +88,19 @@ struct LineStyle {
     float widthVariation = 0.0f; ///< relative, 0 = constant width
     float overshoot = 0.0f; ///< extension at stroke ends, pixels
     std::uint32_t seed = 1;
+    // Image-space clean-up (stroke_refine.h), after projection. Defaults look hand-drawn.
+    float joinGap = 2.0f; ///< open stroke ends at most this far apart (pixels) are joined
+    int smoothing = 2; ///< Chaikin corner-cutting rounds (0 = the projected polyline)
+    float minLength = 0.01f; ///< shorter strokes are dropped; a fraction of the image height
+    float taper = 6.0f; ///< length (pixels) over which open strokes thin towards their ends, 0 = off
+    /// Pencil+'s "reduction": the farthest line is this much thinner (fraction of its width)
+    /// than the nearest, linearly in camera depth between them. 0 = off.
+    float reduction = 0.4f;
     bool operator==(const LineStyle& o) const
     {
         return color == o.color && outlineWidth == o.outlineWidth && innerWidth == o.innerWidth && jitter == o.jitter
-            && widthVariation == o.widthVariation && overshoot == o.overshoot && seed == o.seed;
+            && widthVariation == o.widthVariation && overshoot == o.overshoot && seed == o.seed && joinGap == o.joinGap
+            && smoothing == o.smoothing && minLength == o.minLength && taper == o.taper && reduction == o.reduction;
     }
 };
 
@@ -96,7 +111,11 @@ struct StyledStroke {
     std::vector<float> depths;
     std::vector<float> widths;
     std::uint8_t kinds = 0;
+    bool closed = false; ///< the last point repeats the first
 };
+
+/// Extends both ends of an open stroke by overshoot pixels along its end tangents (comic paper).
+void overshootEnds(StyledStroke& stroke, float overshoot);
 
 /// Projects strokes with project(vertex position) -> (x, y, depth) and applies the style.
 /// Points behind the camera (depth <= 0) split a stroke.

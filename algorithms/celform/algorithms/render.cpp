@@ -3,6 +3,8 @@
 // same pixels on every machine (DESIGN.md, "Rendering").
 #include "celform/algorithms/render.h"
 
+#include "celform/algorithms/stroke_refine.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -34,25 +36,49 @@ float offsetAt(const RenderLook& look, std::int32_t v)
         : 0.f;
 }
 
-/// Position and normal change towards the neighbouring pixel in one direction, for the highlight
-/// mask's box filter: the next pixel if it lies on the same surface (covered, depth within 2%),
-/// else the previous one mirrored, else none.
-void pixelDelta(const GBuffer& g, int x, int y, int dx, int dy, Eigen::Vector3f& dP, Eigen::Vector3f& dN)
+/// The pixel next to (x, y) in one direction that continues its surface (covered, depth within
+/// 2 %), for screen-space differences: the next pixel (sign 1), else the previous one (sign -1,
+/// its difference mirrored), else none (sign 0).
+struct SurfaceNeighbour {
+    std::size_t i = 0, j = 0;
+    float sign = 0.f;
+};
+SurfaceNeighbour surfaceNeighbour(const GBuffer& g, int x, int y, int dx, int dy)
 {
-    dP.setZero();
-    dN.setZero();
-    const std::size_t i = std::size_t(y) * std::size_t(g.width) + std::size_t(x);
+    SurfaceNeighbour n;
+    n.i = std::size_t(y) * std::size_t(g.width) + std::size_t(x);
     for (const int sign : {1, -1}) {
         const int nx = x + sign * dx, ny = y + sign * dy;
         if (nx < 0 || ny < 0 || nx >= g.width || ny >= g.height)
             continue;
         const std::size_t j = std::size_t(ny) * std::size_t(g.width) + std::size_t(nx);
-        if (g.faceId[j] < 0 || std::abs(g.depth[j] - g.depth[i]) > 0.02f * std::abs(g.depth[i]))
-            continue;
-        dP = float(sign) * (g.position[j] - g.position[i]);
-        dN = float(sign) * (g.normal[j] - g.normal[i]);
-        return;
+        if (g.faceId[j] >= 0 && std::abs(g.depth[j] - g.depth[n.i]) <= 0.02f * std::abs(g.depth[n.i])) {
+            n.j = j;
+            n.sign = float(sign);
+            break;
+        }
     }
+    return n;
+}
+
+/// Position and normal change towards the neighbouring pixel in one direction (surfaceNeighbour),
+/// for the highlight mask's box filter and the supersampled tone; zero without a neighbour.
+void pixelDelta(const GBuffer& g, int x, int y, int dx, int dy, Eigen::Vector3f& dP, Eigen::Vector3f& dN)
+{
+    const SurfaceNeighbour n = surfaceNeighbour(g, x, y, dx, dy);
+    dP.setZero();
+    dN.setZero();
+    if (n.sign == 0.f)
+        return;
+    dP = n.sign * (g.position[n.j] - g.position[n.i]);
+    dN = n.sign * (g.normal[n.j] - g.normal[n.i]);
+}
+
+/// The same difference of a per-pixel value (the screen-space derivative of the tone's N.L).
+float valueDelta(const GBuffer& g, const std::vector<float>& value, int x, int y, int dx, int dy)
+{
+    const SurfaceNeighbour n = surfaceNeighbour(g, x, y, dx, dy);
+    return n.sign == 0.f ? 0.f : n.sign * (value[n.j] - value[n.i]);
 }
 
 /// Coverage and colour of the look's highlight layers at a covered pixel; n faces the viewer.
@@ -167,14 +193,13 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         const std::vector<Stroke> strokes = chainStrokes(topology, features);
         auto project
             = [&](const Eigen::Vector3f& p) { return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>()); };
-        std::vector<StyledStroke> styled = styleStrokes(strokes, shape, look.lineStyle, project);
-        if (look.lineSettings.ridges) {
-            // Apparent ridges from the line view's eye, clustered in its pixels (paper 3, 4.2.1).
-            const RidgeSnakes& snakes
-                = cachedRidgeSnakes(shape, mesh, lv, look.lineSettings.ridgeThreshold, cache.ridges);
-            std::vector<StyledStroke> ridges = styleSnakes(snakes, look.lineStyle, project);
-            styled.insert(styled.end(), std::make_move_iterator(ridges.begin()), std::make_move_iterator(ridges.end()));
-        }
+        // Apparent ridges from the line view's eye, clustered in its pixels (paper 3, 4.2.1).
+        const RidgeSnakes* snakes = look.lineSettings.ridges
+            ? &cachedRidgeSnakes(shape, mesh, lv, look.lineSettings.ridgeThreshold, cache.ridges)
+            : nullptr;
+        // The viewport's LineOverlay::draw takes the same path (stroke_refine.h).
+        const std::vector<StyledStroke> styled
+            = pictureStrokes(strokes, snakes, shape, look.lineStyle, camera.height, project);
         drawStrokes(styled, g, out.lines);
     }
 
@@ -191,6 +216,54 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                 = lookupIntensity(table, n.dot(lightDirection(look, p)) + offsetAt(look, std::int32_t(v)));
         }
     }
+
+    // N.L + offset per covered pixel, on the side facing the viewer: the toon tone's input and,
+    // through differences between pixels, its screen-space derivative (issue 25).
+    const Eigen::Vector3f eyeF = camera.eye.cast<float>();
+    auto facingNormal = [&](std::size_t i) {
+        const Eigen::Vector3f& n = g.normal[i];
+        // Seen from behind (the inside of an open mesh), a surface is lit from the side that
+        // faces the viewer, as in every DCC viewport.
+        return n.dot(eyeF - g.position[i]) < 0.f ? Eigen::Vector3f(-n) : n;
+    };
+    auto pixelOffset = [&](std::size_t i) {
+        const std::int32_t f = g.faceId[i];
+        const Eigen::Vector3f bary = g.barycentric[i];
+        return bary.x() * offsetAt(look, faces(f, 0)) + bary.y() * offsetAt(look, faces(f, 1))
+            + bary.z() * offsetAt(look, faces(f, 2));
+    };
+    std::vector<float> lambertAt(pixelCount, 0.f);
+    for (std::size_t i = 0; i < pixelCount; ++i)
+        if (g.faceId[i] >= 0)
+            lambertAt[i] = facingNormal(i).dot(lightDirection(look, g.position[i])) + pixelOffset(i);
+    const bool toneAa = look.toonEvaluation == ToonEvaluation::PerPixel;
+    // The per-pixel tone, anti-aliased as the look asks.
+    auto pixelTone = [&](int x, int y, std::size_t i) {
+        const float lambert = lambertAt[i];
+        if (!toneAa || look.toneAntialiasing == ToneAntialiasing::Off)
+            return toonIntensity(look.toon, lambert);
+        if (look.toneAntialiasing == ToneAntialiasing::Coverage) {
+            const float fwidth
+                = std::abs(valueDelta(g, lambertAt, x, y, 1, 0)) + std::abs(valueDelta(g, lambertAt, x, y, 0, 1));
+            return toonIntensityAntialiased(look.toon, lambert, fwidth);
+        }
+        // Supersample4: the tone at the four points of a 2x2 grid in the pixel, normal and position
+        // moved along their differences to the neighbouring pixels.
+        Eigen::Vector3f dPdx, dNdx, dPdy, dNdy;
+        pixelDelta(g, x, y, 1, 0, dPdx, dNdx);
+        pixelDelta(g, x, y, 0, 1, dPdy, dNdy);
+        const Eigen::Vector3f n = facingNormal(i);
+        const float side = n.dot(g.normal[i]) < 0.f ? -1.f : 1.f;
+        const float offset = pixelOffset(i);
+        float sum = 0.f;
+        for (const float ox : {-0.25f, 0.25f})
+            for (const float oy : {-0.25f, 0.25f}) {
+                const Eigen::Vector3f p = g.position[i] + ox * dPdx + oy * dPdy;
+                const Eigen::Vector3f m = (n + side * (ox * dNdx + oy * dNdy)).normalized();
+                sum += toonIntensity(look.toon, m.dot(lightDirection(look, p)) + offset);
+            }
+        return 0.25f * sum;
+    };
 
     const double tanHalf = std::tan(camera.fovYDegrees * kPi / 360.0);
     out.beauty = ImageRGBA(width, height);
@@ -217,17 +290,11 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                     ? look.materialStyles[std::size_t(material)]
                     : look.style;
                 const Eigen::Vector3f position = g.position[i];
-                Eigen::Vector3f n = g.normal[i];
-                // Seen from behind (the inside of an open mesh), a surface is lit from the side
-                // that faces the viewer, as in every DCC viewport.
-                if (n.dot((eye.cast<float>() - position)) < 0.f)
-                    n = -n;
+                const Eigen::Vector3f n = facingNormal(i);
                 const Eigen::Vector3f l = lightDirection(look, position);
                 const Eigen::Vector3f bary = g.barycentric[i];
                 const std::int32_t a = faces(f, 0), b = faces(f, 1), c = faces(f, 2);
-                const float offset
-                    = bary.x() * offsetAt(look, a) + bary.y() * offsetAt(look, b) + bary.z() * offsetAt(look, c);
-                const float lambert = n.dot(l) + offset;
+                const float lambert = lambertAt[i];
                 float intensity = 0.f;
                 switch (style) {
                 case Style::Lambert:
@@ -247,7 +314,7 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                         const float faceOffset = (offsetAt(look, a) + offsetAt(look, b) + offsetAt(look, c)) / 3.f;
                         intensity = toonIntensity(look.toon, fn.dot(lightDirection(look, centre)) + faceOffset);
                     } else {
-                        intensity = toonIntensity(look.toon, lambert);
+                        intensity = pixelTone(x, y, i);
                     }
                     color = base * intensity;
                     break;

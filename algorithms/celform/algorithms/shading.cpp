@@ -102,6 +102,27 @@ float toonIntensity(const ToonRamp& ramp, float lambert)
     return ramp.intensities[static_cast<std::size_t>(toonTone(ramp, lambert))];
 }
 
+float toneCoverage(float lambert, float threshold, float fwidth)
+{
+    if (!(fwidth > 0.0f))
+        return lambert >= threshold ? 1.0f : 0.0f;
+    if (std::isnan(lambert))
+        return 0.0f; // as the hard step: NaN counts no threshold
+    return std::clamp((lambert - threshold) / fwidth + 0.5f, 0.0f, 1.0f);
+}
+
+float toonIntensityAntialiased(const ToonRamp& ramp, float lambert, float fwidth)
+{
+    if (ramp.intensities.empty())
+        return 1.0f;
+    const std::size_t steps = std::min(ramp.thresholds.size(), ramp.intensities.size() - 1);
+    float intensity = ramp.intensities[0];
+    for (std::size_t i = 0; i < steps; ++i)
+        intensity
+            += toneCoverage(lambert, ramp.thresholds[i], fwidth) * (ramp.intensities[i + 1] - ramp.intensities[i]);
+    return intensity;
+}
+
 std::array<float, 32> toonLookupTable(const ToonRamp& ramp)
 {
     std::array<float, kLutSize> table{};

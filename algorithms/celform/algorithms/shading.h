@@ -33,6 +33,16 @@ enum class ToonEvaluation {
 int toonTone(const ToonRamp& ramp, float lambert);
 /// The tone's intensity.
 float toonIntensity(const ToonRamp& ramp, float lambert);
+/// Issue 25, "Shading without stair steps": how much of a pixel lies at or above a threshold t
+/// when the Lambert value s varies linearly across it with screen-space derivative width
+/// fwidth = |ds/dx| + |ds/dy| (as GLSL's fwidth): clamp((s - t) / fwidth + 1/2, 0, 1), the box
+/// filter's coverage of a straight boundary (exact when the boundary is axis-aligned). fwidth = 0
+/// gives the hard step of toonTone. The viewport's GLSL (look_shading.cpp) uses the same ramp.
+float toneCoverage(float lambert, float threshold, float fwidth);
+/// The tone's intensity with anti-aliased boundaries: the darkest intensity plus, per threshold,
+/// its coverage times the step to the next intensity. Equals toonIntensity where fwidth = 0 or
+/// no boundary lies within half a pixel.
+float toonIntensityAntialiased(const ToonRamp& ramp, float lambert, float fwidth);
 /// The comic paper's 32-entry table: entry i holds the ramp's intensity at the centre of the
 /// i-th of 32 equal steps of N.L over [-1, 1].
 std::array<float, 32> toonLookupTable(const ToonRamp& ramp);

@@ -5,6 +5,7 @@
 #include "celform/model/io/project_file_format.h"
 
 #include "celform/algorithms/mesh_analysis.h"
+#include "celform/algorithms/stroke_refine.h"
 #include "celform/model/io/image_io.h"
 #include "celform/model/data/io_error.h"
 
@@ -205,6 +206,15 @@ std::vector<float> readFloats(const Reader& r, const QJsonObject& o, const char*
     return values;
 }
 
+/// A number in [lo, hi] (a whole one when whole is set), else the file is damaged.
+float rangedNumber(const Reader& r, const QJsonObject& o, const char* name, double lo, double hi, bool whole = false)
+{
+    const double d = r.number(o, name);
+    if (d < lo || d > hi || (whole && d != std::floor(d)))
+        r.corrupt(ProjectFile::tr("the entry “%1” is out of range").arg(QLatin1String(name)));
+    return float(d);
+}
+
 Eigen::Matrix3f readMatrix3(const Reader& r, const QJsonObject& o, const char* name)
 {
     const QJsonArray rows = r.array(o, name);
@@ -331,6 +341,9 @@ Look readLook(const Reader& r, const QJsonObject& look)
         out.lines.borders = r.boolean(k, "borders");
         out.lines.materialBoundaries = r.boolean(k, "material_boundaries");
         out.lines.creaseAngleDegrees = float(r.number(k, "crease_angle_degrees"));
+        // Crease hysteresis came with issue 25: older files get the default low angle.
+        if (k.contains(QLatin1String("crease_low_angle_degrees")))
+            out.lines.creaseLowAngleDegrees = rangedNumber(r, k, "crease_low_angle_degrees", 0.0, 180.0);
         // Apparent ridges came later: files without them load with ridges off.
         if (k.contains(QLatin1String("ridges")))
             out.lines.ridges = r.boolean(k, "ridges");
@@ -353,6 +366,17 @@ Look readLook(const Reader& r, const QJsonObject& look)
         if (seed < 0 || seed > double(std::numeric_limits<std::uint32_t>::max()) || seed != std::floor(seed))
             r.corrupt(ProjectFile::tr("the count “%1” is out of range").arg(QLatin1String("seed")));
         out.lineStyle.seed = std::uint32_t(seed);
+        // The stroke clean-up came with issue 25: older files get its hand-drawn defaults.
+        if (l.contains(QLatin1String("join_gap")))
+            out.lineStyle.joinGap = rangedNumber(r, l, "join_gap", 0.0, 100.0);
+        if (l.contains(QLatin1String("smoothing")))
+            out.lineStyle.smoothing = int(rangedNumber(r, l, "smoothing", 0.0, double(algo::kMaxSmoothing), true));
+        if (l.contains(QLatin1String("min_length")))
+            out.lineStyle.minLength = rangedNumber(r, l, "min_length", 0.0, 1.0);
+        if (l.contains(QLatin1String("taper")))
+            out.lineStyle.taper = rangedNumber(r, l, "taper", 0.0, 1000.0);
+        if (l.contains(QLatin1String("reduction")))
+            out.lineStyle.reduction = rangedNumber(r, l, "reduction", 0.0, 1.0);
     }
     if (look.contains("stereo")) {
         const QJsonObject st = r.object(look, "stereo");

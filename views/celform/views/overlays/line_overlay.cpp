@@ -1,8 +1,10 @@
 // Viewport lines: the offline renderer's stroke pipeline (algo::extractFeatureEdges, chainStrokes,
-// styleStrokes, drawStrokes) run against depth read back from GL instead of a CPU G-buffer.
+// pictureStrokes, drawStrokes) run against depth read back from GL instead of a CPU G-buffer.
 #include "celform/views/overlays/line_overlay.h"
 
 #include "celform/views/overlays/srgb_bytes.h"
+
+#include "celform/algorithms/stroke_refine.h"
 
 #include <algorithm>
 #include <array>
@@ -113,11 +115,9 @@ QRect LineOverlay::draw(const algo::Positions& shape, const algo::LineStyle& sty
     auto project = [&camera](const Eigen::Vector3f& p) {
         return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>());
     };
-    std::vector<algo::StyledStroke> styled = algo::styleStrokes(m_strokes, shape, style, project);
-    if (!m_snakes.strokes.empty()) {
-        std::vector<algo::StyledStroke> ridges = algo::styleSnakes(m_snakes, style, project);
-        styled.insert(styled.end(), std::make_move_iterator(ridges.begin()), std::make_move_iterator(ridges.end()));
-    }
+    // The CPU renderer's path (render.cpp), so both draw the same strokes.
+    const std::vector<algo::StyledStroke> styled
+        = algo::pictureStrokes(m_strokes, m_snakes.strokes.empty() ? nullptr : &m_snakes, shape, style, h, project);
     // drawStrokes reads only depth and face id: a face id of 0 marks "on the model".
     algo::GBuffer g;
     g.width = w;

@@ -8,6 +8,8 @@
 #include "celform/views/panels/gesture_tracker.h"
 #include "celform/model/data/io_error.h"
 
+#include "celform/algorithms/stroke_refine.h"
+
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
@@ -269,6 +271,17 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
             [v](algo::LineSettings& s) { s.creaseAngleDegrees = float(v); });
     });
     m_refreshers.push_back([this, crease] { crease->setValue(m_document->data().look.lines.creaseAngleDegrees); });
+    QDoubleSpinBox* creaseLow = makeSpin(0, 179, 1, 0,
+        tr("Hysteresis: an edge above this angle continues a crease that is already above the crease angle, "
+           "so creases on a coarse surface do not break into dashes. At or above the crease angle: off"));
+    creaseLow->setSuffix(QStringLiteral("°"));
+    linesForm->addRow(tr("Crease continues abo&ve:"), creaseLow);
+    connect(creaseLow, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        edit(&model::Look::lines, &model::LookEdits::setLineSettings,
+            [v](algo::LineSettings& s) { s.creaseLowAngleDegrees = float(v); });
+    });
+    m_refreshers.push_back(
+        [this, creaseLow] { creaseLow->setValue(m_document->data().look.lines.creaseLowAngleDegrees); });
     // Apparent ridges (paper 3, section 4.2): view-dependent lines, off by default.
     auto* ridges = new QCheckBox(tr("Apparent ridges"), linesBox);
     ridges->setToolTip(tr("Lines where the surface, as seen from the camera, bends most sharply (Judd et al. "
@@ -304,7 +317,15 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         {tr("&Jitter:"), &algo::LineStyle::jitter, 0, 20, 0.25, tr("Hand-drawn jagged offset, pixels")},
         {tr("Width &variation:"), &algo::LineStyle::widthVariation, 0, 1, 0.05,
             tr("Relative change of width along strokes")},
-        {tr("O&vershoot:"), &algo::LineStyle::overshoot, 0, 50, 0.5, tr("Extension of stroke ends, pixels")}};
+        {tr("O&vershoot:"), &algo::LineStyle::overshoot, 0, 50, 0.5, tr("Extension of stroke ends, pixels")},
+        {tr("&Gap joining:"), &algo::LineStyle::joinGap, 0, 20, 0.5,
+            tr("Stroke ends at most this far apart are joined into one stroke, pixels")},
+        {tr("Ta&per:"), &algo::LineStyle::taper, 0, 200, 1,
+            tr("Length over which strokes thin towards their ends, as a brush lifted off the paper, pixels "
+               "(0: no taper)")},
+        {tr("&Reduction:"), &algo::LineStyle::reduction, 0, 1, 0.05,
+            tr("How much thinner the farthest line is than the nearest, as a fraction of its width (Pencil+'s "
+               "reduction by distance)")}};
     for (const auto& [label, member, lo, hi, step, tip] : styleControls) {
         QDoubleSpinBox* spin = makeSpin(lo, hi, step, 2, tip);
         linesForm->addRow(label, spin);
@@ -315,6 +336,24 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         });
         m_refreshers.push_back([this, spin, m] { spin->setValue(m_document->data().look.lineStyle.*m); });
     }
+    auto* smoothing = new QSpinBox(linesBox);
+    smoothing->setRange(0, algo::kMaxSmoothing);
+    smoothing->setToolTip(tr("Rounds of Chaikin smoothing of the projected strokes (corners stay sharp)"));
+    linesForm->addRow(tr("S&moothing:"), smoothing);
+    connect(smoothing, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
+        edit(&model::Look::lineStyle, &model::LookEdits::setLineStyle, [v](algo::LineStyle& s) { s.smoothing = v; });
+    });
+    m_refreshers.push_back([this, smoothing] { smoothing->setValue(m_document->data().look.lineStyle.smoothing); });
+    QDoubleSpinBox* minLength = makeSpin(
+        0, 20, 0.1, 1, tr("Strokes shorter than this, as a percentage of the picture's height, are dropped"));
+    minLength->setSuffix(QStringLiteral(" %"));
+    linesForm->addRow(tr("Minimum &length:"), minLength);
+    connect(minLength, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        edit(&model::Look::lineStyle, &model::LookEdits::setLineStyle,
+            [v](algo::LineStyle& s) { s.minLength = float(v / 100.0); });
+    });
+    m_refreshers.push_back(
+        [this, minLength] { minLength->setValue(100.0 * double(m_document->data().look.lineStyle.minLength)); });
     layout->addWidget(linesBox);
 
     // --- stereo ---------------------------------------------------------------------------------------

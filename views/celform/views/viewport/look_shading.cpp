@@ -170,6 +170,9 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
       cfN = -cfN;
     vec3 cfL = cfLightDirection(cfP);
     float cfLambert = dot(cfN, cfL) + cfOffset;
+    // Screen-space width of N.L, taken in uniform control flow: the anti-aliased tone boundary
+    // (render.cpp's ToneAntialiasing::Coverage from the same differences between pixels).
+    float cfLambertWidth = fwidth(cfLambert);
     vec3 cfColor;
     if (cfStyleIndex == 0) {
       float cfIntensity = 0.15 + 0.85 * max(0.0, cfLambert);
@@ -191,7 +194,7 @@ const char* const kFragmentImpl = R"glsl(//VTK::Light::Impl
         cfIntensity = 0.0; // not reached: PerFace always builds the table
 #endif
       } else {
-        cfIntensity = cfToonIntensity(cfLambert);
+        cfIntensity = cfToonIntensityAntialiased(cfLambert, cfLambertWidth);
       }
       cfColor = cfBase * cfIntensity;
     } else if (cfStyleIndex == 2) {
