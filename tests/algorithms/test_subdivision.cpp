@@ -13,20 +13,11 @@
 
 using namespace celform::algo;
 using celform::test::icosphere;
+using celform::test::tetrahedronMesh;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-TriMesh tetrahedron()
-{
-    TriMesh m;
-    m.vertices.resize(4, 3);
-    m.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-    m.faces.resize(4, 3);
-    m.faces << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
-    return m;
-}
 
 /// A flat disc: vertex 0 in the middle, n border vertices around it on the unit circle (z = 0).
 TriMesh fan(int n, bool closed)
@@ -155,7 +146,7 @@ class TestSubdivision : public QObject {
 private slots:
     void tetrahedronMasksByHand()
     {
-        const TriMesh m = tetrahedron();
+        const TriMesh m = tetrahedronMesh();
         const SubdivisionStencil s = buildSubdivisionStencil(m.faces, 4, 1);
         QCOMPARE(s.vertexCount(), 4 + 6);
         QCOMPARE(s.faceCount(), Eigen::Index(16));
@@ -269,7 +260,7 @@ private slots:
 
     void attributesFollowTheStencil()
     {
-        TriMesh m = tetrahedron();
+        TriMesh m = tetrahedronMesh();
         const SubdivisionStencil s = buildSubdivisionStencil(m.faces, 4, 2);
         // Shading offsets: an affine stencil keeps constants and interpolates the rest.
         std::vector<float> offsets = {0.25f, 0.25f, 0.25f, 0.25f}, out;
