@@ -326,13 +326,36 @@ template <typename In, typename Out> void applyRows(const SparseRows& m, const I
     }
 }
 
-void normalRow(const SubdivisionStencil& s, std::int32_t r, const float* control, float* out)
+/// Sum of a row's weights times float triples, in float: tangents only give a direction.
+inline void tangentRow(const SparseRows& m, std::int32_t r, const float* in, float& x, float& y, float& z)
 {
-    const Eigen::Vector3d n = row3(s.tangentU, r, control).cross(row3(s.tangentV, r, control));
-    const double len = n.norm();
-    const Eigen::Vector3d unit = len > 0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::UnitZ();
-    for (int c = 0; c < 3; ++c)
-        out[std::size_t(r) * 3 + std::size_t(c)] = float(unit(c));
+    x = y = z = 0.f;
+    for (std::int32_t k = m.start[std::size_t(r)], end = m.start[std::size_t(r) + 1]; k < end; ++k) {
+        const float w = float(m.weights[std::size_t(k)]);
+        const float* p = in + std::size_t(m.cols[std::size_t(k)]) * 3;
+        x += w * p[0];
+        y += w * p[1];
+        z += w * p[2];
+    }
+}
+
+void normalRow(const SubdivisionStencil& s, std::int32_t r, const float* positions, float* out)
+{
+    float ux, uy, uz, vx, vy, vz;
+    tangentRow(s.tangentU, r, positions, ux, uy, uz);
+    tangentRow(s.tangentV, r, positions, vx, vy, vz);
+    const float nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const float len2 = nx * nx + ny * ny + nz * nz;
+    float* o = out + std::size_t(r) * 3;
+    if (len2 > 0.f) {
+        const float inv = 1.f / std::sqrt(len2);
+        o[0] = nx * inv;
+        o[1] = ny * inv;
+        o[2] = nz * inv;
+    } else {
+        o[0] = o[1] = 0.f;
+        o[2] = 1.f;
+    }
 }
 
 void fallbackNormals(const SubdivisionStencil& s, const Positions& positions, Positions& out)
@@ -360,7 +383,6 @@ std::size_t SubdivisionStencil::bytes() const
     };
     return rowsBytes(positions) + rowsBytes(tangentU) + rowsBytes(tangentV)
         + std::size_t(faces.size()) * sizeof(std::int32_t) + parentFace.size() * sizeof(std::int32_t)
-        + std::size_t(cornerBarycentric.size()) * sizeof(float)
         + (positionReach.size() + tangentReach.size() + positionReachStart.size() + tangentReachStart.size())
         * sizeof(std::int32_t);
 }
@@ -391,33 +413,16 @@ SubdivisionStencil buildSubdivisionStencil(const Faces& faces, std::int32_t vert
     Sparse stencil(vertexCount, vertexCount);
     stencil.setIdentity();
     s.faces = faces;
-    s.parentFace.resize(std::size_t(faces.rows()));
-    std::iota(s.parentFace.begin(), s.parentFace.end(), 0);
-    Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> bary(faces.rows() * 3, 3);
-    for (Eigen::Index f = 0; f < faces.rows(); ++f)
-        bary.middleRows(f * 3, 3).setIdentity();
     std::int32_t count = vertexCount;
     for (int l = 0; l < s.level; ++l) {
         Step step = loopStep(s.faces, count);
         if (l == 0) {
             s.creaseEdges = step.creaseEdges;
             s.nonManifoldEdges = step.nonManifoldEdges;
+            stencil = std::move(step.matrix);
+        } else {
+            stencil = Sparse(step.matrix * stencil);
         }
-        stencil = Sparse(step.matrix * stencil);
-        std::vector<std::int32_t> parents(s.parentFace.size() * 4);
-        Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> next(bary.rows() * 4, 3);
-        for (std::size_t f = 0; f < s.parentFace.size(); ++f) {
-            const Eigen::Index b = Eigen::Index(f) * 3;
-            const Eigen::RowVector3d a = bary.row(b), bb = bary.row(b + 1), c = bary.row(b + 2);
-            const Eigen::RowVector3d ab = (a + bb) / 2, bc = (bb + c) / 2, ca = (c + a) / 2;
-            const std::array<Eigen::RowVector3d, 12> children{a, ab, ca, ab, bb, bc, ca, bc, c, ab, bc, ca};
-            for (int i = 0; i < 12; ++i)
-                next.row(Eigen::Index(f) * 12 + i) = children[std::size_t(i)];
-            for (int i = 0; i < 4; ++i)
-                parents[f * 4 + std::size_t(i)] = s.parentFace[f];
-        }
-        bary = std::move(next);
-        s.parentFace = std::move(parents);
         s.faces = std::move(step.faces);
         count = step.vertexCount;
     }
@@ -426,12 +431,15 @@ SubdivisionStencil buildSubdivisionStencil(const Faces& faces, std::int32_t vert
         s.creaseEdges = step.creaseEdges;
         s.nonManifoldEdges = step.nonManifoldEdges;
     }
-    s.cornerBarycentric = bary.cast<float>();
+    // Children of a control face are its 4^L consecutive faces.
+    s.parentFace.resize(std::size_t(s.faces.rows()));
+    for (std::size_t f = 0; f < s.parentFace.size(); ++f)
+        s.parentFace[f] = std::int32_t(f >> (2 * s.level));
     s.positions = toRows(stencil);
     Sparse tu, tv;
     tangentMasks(s.faces, count, tu, tv, s.fallbackVertices, s.fallbackStart, s.fallbackFaces);
-    s.tangentU = toRows(Sparse(tu * stencil));
-    s.tangentV = toRows(Sparse(tv * stencil));
+    s.tangentU = toRows(tu);
+    s.tangentV = toRows(tv);
     reachOf(s.positions, nullptr, s.positionReachStart, s.positionReach);
     reachOf(s.tangentU, &s.tangentV, s.tangentReachStart, s.tangentReach);
     return s;
@@ -469,12 +477,12 @@ void applySubdivision(const SubdivisionStencil& s, const std::vector<float>& con
     }
 }
 
-void limitNormals(const SubdivisionStencil& s, const Positions& control, const Positions& positions, Positions& out)
+void limitNormals(const SubdivisionStencil& s, const Positions& positions, Positions& out)
 {
     if (out.rows() != s.vertexCount())
         out.resize(s.vertexCount(), 3);
     for (std::int32_t r = 0; r < s.vertexCount(); ++r)
-        normalRow(s, r, control.data(), out.data());
+        normalRow(s, r, positions.data(), out.data());
     fallbackNormals(s, positions, out);
 }
 
@@ -506,23 +514,51 @@ std::size_t updateSubdivision(const SubdivisionStencil& s, const Positions& cont
                 scratch.positionRows.push_back(r);
             }
         }
-        for (std::int32_t k = s.tangentReachStart[c]; k < s.tangentReachStart[c + 1]; ++k) {
-            const std::int32_t r = s.tangentReach[std::size_t(k)];
-            if (scratch.tangentStamp[std::size_t(r)] != scratch.stamp) {
-                scratch.tangentStamp[std::size_t(r)] = scratch.stamp;
-                scratch.tangentRows.push_back(r);
-            }
-        }
     }
+    // The positions first, then the normals of every vertex whose ring holds a moved one.
     for (const std::int32_t r : scratch.positionRows) {
         const Eigen::Vector3d v = row3(s.positions, r, control.data());
         positions.row(r) = v.cast<float>();
+        for (std::int32_t k = s.tangentReachStart[std::size_t(r)]; k < s.tangentReachStart[std::size_t(r) + 1]; ++k) {
+            const std::int32_t t = s.tangentReach[std::size_t(k)];
+            if (scratch.tangentStamp[std::size_t(t)] != scratch.stamp) {
+                scratch.tangentStamp[std::size_t(t)] = scratch.stamp;
+                scratch.tangentRows.push_back(t);
+            }
+        }
     }
     for (const std::int32_t r : scratch.tangentRows)
-        normalRow(s, r, control.data(), normals.data());
+        normalRow(s, r, positions.data(), normals.data());
     if (!scratch.positionRows.empty())
         fallbackNormals(s, positions, normals);
     return scratch.positionRows.size();
+}
+
+Eigen::RowVector3d cornerBarycentric(const SubdivisionStencil& s, Eigen::Index face, int corner)
+{
+    // Walk down from the control face: at each level the child's digit (base 4, most significant
+    // first) picks its corners among the parent's corners and edge midpoints (loopStep's order).
+    std::array<Eigen::RowVector3d, 3> c{
+        Eigen::RowVector3d(1, 0, 0), Eigen::RowVector3d(0, 1, 0), Eigen::RowVector3d(0, 0, 1)};
+    for (int l = s.level - 1; l >= 0; --l) {
+        const int child = int((face >> (2 * l)) & 3);
+        const Eigen::RowVector3d ab = (c[0] + c[1]) / 2, bc = (c[1] + c[2]) / 2, ca = (c[2] + c[0]) / 2;
+        switch (child) {
+        case 0:
+            c = {c[0], ab, ca};
+            break;
+        case 1:
+            c = {ab, c[1], bc};
+            break;
+        case 2:
+            c = {ca, bc, c[2]};
+            break;
+        default:
+            c = {ab, bc, ca};
+            break;
+        }
+    }
+    return c[std::size_t(corner)];
 }
 
 TexCoords subdividedCornerUvs(const SubdivisionStencil& s, const TexCoords& uvs, const Faces& uvFaces)
@@ -531,7 +567,7 @@ TexCoords subdividedCornerUvs(const SubdivisionStencil& s, const TexCoords& uvs,
     for (Eigen::Index f = 0; f < s.faces.rows(); ++f) {
         const std::int32_t parent = s.parentFace[std::size_t(f)];
         for (int k = 0; k < 3; ++k) {
-            const Eigen::RowVector3f b = s.cornerBarycentric.row(f * 3 + k);
+            const Eigen::RowVector3f b = cornerBarycentric(s, f, k).cast<float>();
             out.row(f * 3 + k) = b(0) * uvs.row(uvFaces(parent, 0)) + b(1) * uvs.row(uvFaces(parent, 1))
                 + b(2) * uvs.row(uvFaces(parent, 2));
         }

@@ -43,8 +43,9 @@ struct SubdivisionStencil {
     std::int32_t controlVertices = 0;
     std::int32_t controlFaces = 0;
     SparseRows positions; ///< S: #V_L by #V
-    /// The limit tangents of each level-L vertex as stencils of the control positions; its normal is
-    /// tangentU x tangentV (outward for counter-clockwise faces).
+    /// The limit tangent masks of each level-L vertex over the level-L positions (its ring); its
+    /// normal is tangentU x tangentV (outward for counter-clockwise faces). Applied to the level-L
+    /// positions rather than composed with S: a ring of weights per row instead of a ring of rings.
     SparseRows tangentU, tangentV;
     /// Level-L vertices whose ring is not a disc or a half-disc (non-manifold input): their
     /// normals are the area-weighted normals of their faces, faces listed in fallbackFaces
@@ -52,11 +53,8 @@ struct SubdivisionStencil {
     std::vector<std::int32_t> fallbackVertices, fallbackStart, fallbackFaces;
     Faces faces; ///< the level-L triangles
     std::vector<std::int32_t> parentFace; ///< per level-L face, its control face
-    /// Per level-L face corner (3 per face), its barycentric coordinates in the control face (for
-    /// attributes per face corner such as UVs).
-    Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor> cornerBarycentric;
-    /// For partial updates: the level-L rows whose position (positionReach) and whose tangents
-    /// (tangentReach) read each control vertex, in compressed rows per control vertex.
+    /// For partial updates, in compressed rows: per control vertex, the level-L rows whose position
+    /// reads it (positionReach); per level-L vertex, the rows whose tangents read it (tangentReach).
     std::vector<std::int32_t> positionReachStart, positionReach, tangentReachStart, tangentReach;
     std::int64_t creaseEdges = 0; ///< border and non-manifold edges of the control mesh
     std::int64_t nonManifoldEdges = 0;
@@ -82,9 +80,9 @@ void applySubdivision(const SubdivisionStencil& s, const Eigen::MatrixX3d& contr
 /// Per-vertex scalars (shading offsets) through the same stencil; out resized once.
 void applySubdivision(const SubdivisionStencil& s, const std::vector<float>& control, std::vector<float>& out);
 
-/// Unit limit normals of the level-L vertices (#V_L by 3) from the control positions; positions
-/// (the level-L positions of the same control shape) serve the fallback vertices.
-void limitNormals(const SubdivisionStencil& s, const Positions& control, const Positions& positions, Positions& out);
+/// Unit limit normals of the level-L vertices (#V_L by 3) from their positions (applySubdivision's
+/// result); out resized once.
+void limitNormals(const SubdivisionStencil& s, const Positions& positions, Positions& out);
 
 /// Working memory of partial updates, kept by the caller: sized on first use, then no allocation.
 struct SubdivisionScratch {
@@ -98,6 +96,9 @@ struct SubdivisionScratch {
 /// Returns the number of position rows recomputed.
 std::size_t updateSubdivision(const SubdivisionStencil& s, const Positions& control,
     const std::vector<std::uint32_t>& changed, Positions& positions, Positions& normals, SubdivisionScratch& scratch);
+
+/// The barycentric coordinates of corner (0-2) of a level-L face in its control face.
+Eigen::RowVector3d cornerBarycentric(const SubdivisionStencil& s, Eigen::Index face, int corner);
 
 /// Per level-L face corner, texture coordinates interpolated in the control face (uvFaces:
 /// the control mesh's per-corner UV indices): a #F_L*3 by 2 table whose corner k of face f is row
