@@ -655,6 +655,45 @@ private slots:
         QVERIFY2(bogus.err.contains(QStringLiteral("ridge")), qPrintable(bogus.err));
     }
 
+    void subdivisionSettingsAndOverrides()
+    {
+        // celform set stores both levels (one undoable edit each run), info --json reports them,
+        // render --subdivision overrides the project's level, and bad levels are usage errors that
+        // change nothing.
+        const QString project = m_dir.filePath(QStringLiteral("smooth.celform"));
+        QFile::remove(project);
+        QVERIFY(QFile::copy(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform"), project));
+        QFile::setPermissions(project, QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+        auto info = [&] {
+            const Run r = runCelform({"info", project, "--json"});
+            return QJsonDocument::fromJson(r.out.toUtf8()).object();
+        };
+        QCOMPARE(info().value(QStringLiteral("subdivision")).toInt(), 0);
+        QCOMPARE(info().value(QStringLiteral("viewport_subdivision")).toInt(), -1);
+        for (const QStringList& bad :
+            {QStringList{"--subdivision", "4"}, QStringList{"--subdivision", "-1"}, QStringList{"--subdivision", "two"},
+                QStringList{"--viewport-subdivision", "-2"}, QStringList{"--viewport-subdivision", "9"}}) {
+            const Run r = runCelform(QStringList{"set", project} + bad);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("subdivision")), qPrintable(r.err));
+        }
+        QCOMPARE(runCelform({"set", project, "--subdivision", "2", "--viewport-subdivision", "1"}).exitCode, 0);
+        QCOMPARE(info().value(QStringLiteral("subdivision")).toInt(), 2);
+        QCOMPARE(info().value(QStringLiteral("viewport_subdivision")).toInt(), 1);
+        auto render = [&](const QStringList& extra, const char* name) {
+            const QString png = m_dir.filePath(QLatin1String(name));
+            const Run r = runCelform(QStringList{"render", project, "--size", "160x120", "--out", png} + extra);
+            [&] { QVERIFY2(r.exitCode == 0, qPrintable(r.err)); }();
+            return QImage(png);
+        };
+        const QImage projectLevel = render({}, "level_project.png");
+        QCOMPARE(render({"--subdivision", "2"}, "level2.png"), projectLevel);
+        QVERIFY(render({"--subdivision", "0"}, "level0.png") != projectLevel);
+        const Run bad = runCelform({"render", project, "--subdivision", "5", "--out", m_dir.filePath("bad.png")});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains(QStringLiteral("0 to 3")), qPrintable(bad.err));
+    }
+
     void highlightLayers()
     {
         const QString bunny = bunnyProject();
