@@ -692,6 +692,24 @@ private slots:
         const Run bad = runCelform({"render", project, "--subdivision", "5", "--out", m_dir.filePath("bad.png")});
         QCOMPARE(bad.exitCode, 2);
         QVERIFY2(bad.err.contains(QStringLiteral("0 to 3")), qPrintable(bad.err));
+        // Exports keep the control mesh unless told: level 1 has V + E points (E = 3F/2, closed).
+        const QString control = m_dir.filePath(QStringLiteral("control.pc2")),
+                      smooth = m_dir.filePath(QStringLiteral("smooth.pc2"));
+        QCOMPARE(runCelform({"export", project, "--format", "pc2", "--frames", "0-0", "--out", control}).exitCode, 0);
+        QCOMPARE(
+            runCelform({"export", project, "--format", "pc2", "--frames", "0-0", "--subdivision", "1", "--out", smooth})
+                .exitCode,
+            0);
+        const QJsonObject mesh = info().value(QStringLiteral("base_mesh")).toObject();
+        const qint64 v = mesh.value(QStringLiteral("vertex_count")).toInteger(),
+                     f = mesh.value(QStringLiteral("triangle_count")).toInteger();
+        const qint64 header = 32;
+        QCOMPARE(QFileInfo(control).size(), header + v * 12);
+        QCOMPARE(QFileInfo(smooth).size(), header + (v + 3 * f / 2) * 12);
+        QCOMPARE(runCelform({"export", project, "--format", "glb", "--subdivision", "1", "--out",
+                                m_dir.filePath(QStringLiteral("x.glb"))})
+                     .exitCode,
+            2);
     }
 
     void highlightLayers()
