@@ -325,7 +325,8 @@ std::vector<SubCommand> analysisCommands()
         {"analyze",
             {"celform analyze P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] [--size WxH] "
              "[--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] [--light point:X,Y,Z|directional:X,Y,Z] "
-             "[--window LO,HI|lenient|medium|strict] [--depth-threshold FRACTION] [--min-pixels N] [--json] "
+             "[--subdivision N] [--window LO,HI|lenient|medium|strict] [--depth-threshold FRACTION] [--min-pixels N] "
+             "[--json] "
              "[--out FILE.exr]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error."),

@@ -41,6 +41,12 @@ int runExport(const Invocation& in)
             throw UsageError{Cli::tr("--frames takes A-B for an export, without a step: “%1”").arg(in.value("frames"))};
     }
 
+    if (in.isSet("subdivision"))
+        job.subdivision = parseSubdivision("subdivision", in.value("subdivision"));
+    if (job.subdivision > 0 && (*format == model::ExportFormat::Gltf || *format == model::ExportFormat::Glb))
+        throw UsageError{Cli::tr("--subdivision applies to pc2 and obj-seq exports; glTF keeps the base model "
+                                 "for its morph targets")};
+
     const QString path = in.argument(0);
     const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
     if (!data.baseMesh)
@@ -70,7 +76,8 @@ int runExport(const Invocation& in)
 std::vector<SubCommand> exportCommands()
 {
     return {
-        {"export", {"celform export P --format gltf|glb|pc2|obj-seq [--frames A-B] --out FILE [--json]"},
+        {"export",
+            {"celform export P --format gltf|glb|pc2|obj-seq [--frames A-B] [--subdivision N] --out FILE [--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Exports the animation as seen through the camera path: a glTF scene with the keys as morph "
                 "targets, a PC2 point cache or an OBJ per frame."),
@@ -81,6 +88,10 @@ std::vector<SubCommand> exportCommands()
                      "obj-seq (one OBJ per frame).")},
                 {"frames", "A-B",
                     QT_TRANSLATE_NOOP("celform::app::Cli", "Frames to export, A-B inclusive (default the project's).")},
+                {"subdivision", "N",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "Loop subdivision level of the exported surface, 0 to 3, for pc2 and obj-seq (default 0: "
+                        "the base model's vertices, in its order).")},
                 {"out", "FILE",
                     QT_TRANSLATE_NOOP("celform::app::Cli",
                         "The file; for obj-seq a pattern where a run of # is the frame number (else _FFFF goes "

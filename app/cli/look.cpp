@@ -51,7 +51,9 @@ StereoOutput parseStereo(const QString& text)
 
 int runSet(const Invocation& in)
 {
-    if (in.countSet({"sharpness", "unspecified", "time", "light", "style", "render-view"}) == 0)
+    if (in.countSet({"sharpness", "unspecified", "time", "light", "style", "render-view", "subdivision",
+            "viewport-subdivision"})
+        == 0)
         throw UsageError{Cli::tr("nothing to set")};
     // Every option is parsed before the file is opened: a usage error changes nothing.
     std::optional<double> sharpness;
@@ -69,9 +71,25 @@ int runSet(const Invocation& in)
         ? std::nullopt
         : optionalValue(in, "render-view", [](const QString& v) { return parseDirection("render-view", v); });
 
+    const auto subdivision
+        = optionalValue(in, "subdivision", [](const QString& v) { return parseSubdivision("subdivision", v); });
+    const auto viewportSubdivision = optionalValue(
+        in, "viewport-subdivision", [](const QString& v) { return parseSubdivision("viewport-subdivision", v, true); });
+
     const QString path = in.argument(0);
     auto doc = openProject(path);
     // One document operation per property, as the editor's panels make them.
+    if (subdivision || viewportSubdivision) {
+        model::SubdivisionLook s = doc->data().look.subdivision;
+        s.level = subdivision.value_or(s.level);
+        s.viewportLevel = viewportSubdivision.value_or(s.viewportLevel);
+        if (s.viewportLevel > s.level)
+            printErr(Cli::tr("warning: the viewport's subdivision level %1 is above the render level %2; the "
+                             "viewport shows level %2")
+                         .arg(s.viewportLevel)
+                         .arg(s.level));
+        doc->look().setSubdivision(s);
+    }
     if (sharpness)
         doc->look().setSharpness(*sharpness);
     if (unspecified)
@@ -233,7 +251,8 @@ std::vector<SubCommand> lookCommands()
     return {
         {"set",
             {"celform set P [--sharpness A] [--unspecified dummy|cosine|cosine2] [--time natural|periodic] "
-             "[--light point:X,Y,Z|directional:X,Y,Z] [--style toon|gooch|comic|lambert] [--render-view X,Y,Z|none]"},
+             "[--light point:X,Y,Z|directional:X,Y,Z] [--style toon|gooch|comic|lambert] [--render-view X,Y,Z|none] "
+             "[--subdivision N] [--viewport-subdivision N]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Changes project settings."), {{"P", kProjectArgument}},
             {{"sharpness", "A",
                  QT_TRANSLATE_NOOP("celform::app::Cli", "Blend sharpness alpha (above 0, at most 100).")},
@@ -247,12 +266,19 @@ std::vector<SubCommand> lookCommands()
                 {"render-view", "X,Y,Z|none",
                     QT_TRANSLATE_NOOP("celform::app::Cli",
                         "The render camera: looking at the model's centroid from this direction, framed; none "
-                        "removes it.")}},
+                        "removes it.")},
+                {"subdivision", "N",
+                    QT_TRANSLATE_NOOP(
+                        "celform::app::Cli", "Loop subdivision level that renders use, 0 (the control mesh) to 3.")},
+                {"viewport-subdivision", "N",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "The viewport's subdivision level: -1 follows the render level; a lower level is a "
+                        "speed setting.")}},
             runSet},
         {"render",
             {"celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames "
              "A-B[:STEP]] [--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] "
-             "[--ridge-threshold T] [--light point:X,Y,Z|directional:X,Y,Z] "
+             "[--ridge-threshold T] [--light point:X,Y,Z|directional:X,Y,Z] [--subdivision N] "
              "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
              "[--pass beauty|lines|tone|highlights|depth|normal|id|segments|curvature|depth-error] [--out "
              "FILE.png|.exr|.tif|.jpg] [--threads N] [--skip-existing] [--json]"},

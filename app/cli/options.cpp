@@ -4,6 +4,7 @@
 #include "cli/options.h"
 
 #include "celform/algorithms/lines.h"
+#include "celform/algorithms/subdivision.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -96,6 +97,19 @@ int parseInt(const char* option, const QString& text)
     const int v = text.trimmed().toInt(&ok);
     if (!ok)
         throw UsageError{Cli::tr("--%1 needs a whole number, not “%2”").arg(QLatin1String(option), text)};
+    return v;
+}
+
+int parseSubdivision(const char* option, const QString& text, bool allowSame)
+{
+    bool ok = false;
+    const int v = text.trimmed().toInt(&ok);
+    if (!ok || v < (allowSame ? -1 : 0) || v > algo::kMaxSubdivisionLevel)
+        throw UsageError{(allowSame ? Cli::tr("--%1 takes -1 (the render level) or a level from 0 to %2, not “%3”")
+                                    : Cli::tr("--%1 takes a subdivision level from 0 to %2, not “%3”"))
+                             .arg(QLatin1String(option))
+                             .arg(algo::kMaxSubdivisionLevel)
+                             .arg(text)};
     return v;
 }
 
@@ -323,7 +337,11 @@ std::vector<OptionSpec> lookOverrideSpecs()
                 "Draw the lines (on) or not (off), or only these kinds: silhouette, crease, border, material, "
                 "ridge (apparent ridges), comma-separated.")},
         {"light", "TYPE:X,Y,Z",
-            QT_TRANSLATE_NOOP("celform::app::Cli", "Key light of this picture (default: the project's).")}};
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Key light of this picture (default: the project's).")},
+        {"subdivision", "N",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Loop subdivision level of this picture, 0 (the control mesh) to 3 (default: the project's "
+                "render level).")}};
 }
 
 void readCameraOptions(const Invocation& in, model::RenderJob& job)
@@ -352,6 +370,8 @@ void readPictureOptions(const Invocation& in, model::RenderJob& job)
             job.lineKinds = parseLineKinds("lines", v);
     }
     job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
+    job.subdivision
+        = optionalValue(in, "subdivision", [](const QString& v) { return parseSubdivision("subdivision", v); });
 }
 
 } // namespace celform::app

@@ -37,6 +37,9 @@ double parseNumber(const char* option, const QString& text);
 /// A number the document stores as a float: finite as a float too.
 double parseFloat(const char* option, const QString& text);
 int parseInt(const char* option, const QString& text);
+/// A Loop subdivision level, 0 to algo::kMaxSubdivisionLevel (with allowSame, also -1: "the render
+/// level"); UsageError otherwise.
+int parseSubdivision(const char* option, const QString& text, bool allowSame = false);
 /// A frame number within +-model::kMaxFrame.
 int parseFrame(const char* option, const QString& text);
 /// The frames of `--frames A-B[:STEP]`: first, first + step, ... up to last.

@@ -106,6 +106,9 @@ int runInfo(const Invocation& in)
             {"time", data.blend.time == model::TimeInterpolation::PeriodicSpline ? "periodic" : "natural"}});
     if (data.look.renderCamera)
         root.insert("render_camera", model::cameraJson(*data.look.renderCamera));
+    // Loop subdivision: the render level and the viewport's (-1: the render level).
+    root.insert("subdivision", data.look.subdivision.level);
+    root.insert("viewport_subdivision", data.look.subdivision.viewportLevel);
     // The scene's time: frame F is the animation at time F / fps.
     root.insert("fps", data.time.fps);
     root.insert("frame_range", QJsonArray{data.time.firstFrame, data.time.lastFrame});

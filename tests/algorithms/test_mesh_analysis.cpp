@@ -1,28 +1,19 @@
 // Mesh validation and topology statistics on meshes whose answers are known by hand.
+#include "test_meshes.h"
 #include "test_support.h"
 
 #include "celform/algorithms/mesh_analysis.h"
 
 using namespace celform::algo;
 
-namespace {
-TriMesh tetrahedron()
-{
-    TriMesh m;
-    m.vertices.resize(4, 3);
-    m.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-    m.faces.resize(4, 3);
-    m.faces << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
-    return m;
-}
-} // namespace
+using celform::test::tetrahedronMesh;
 
 class TestMeshAnalysis : public QObject {
     Q_OBJECT
 private slots:
     void closedTetrahedronIsClean()
     {
-        const TopologyReport r = analyseTopology(tetrahedron());
+        const TopologyReport r = analyseTopology(tetrahedronMesh());
         QCOMPARE(r.components, 1);
         QCOMPARE(r.boundaryEdges, 0);
         QCOMPARE(r.nonManifoldEdges, 0);
@@ -33,7 +24,7 @@ private slots:
 
     void openFaceMakesOneHole()
     {
-        TriMesh m = tetrahedron();
+        TriMesh m = tetrahedronMesh();
         m.faces.conservativeResize(3, 3); // drop one face: a triangular hole
         const TopologyReport r = analyseTopology(m);
         QCOMPARE(r.boundaryEdges, 3);
@@ -43,7 +34,7 @@ private slots:
 
     void twoPiecesAndNonManifoldEdge()
     {
-        TriMesh m = tetrahedron();
+        TriMesh m = tetrahedronMesh();
         // A second tetrahedron far away, then a fin sharing edge (0,1) of the first: 3 faces there.
         m.vertices.conservativeResize(9, 3);
         m.vertices.bottomRows(5) << 10, 0, 0, 11, 0, 0, 10, 1, 0, 10, 0, 1, 0.5f, -1, 0;
@@ -57,14 +48,14 @@ private slots:
 
     void flippedFaceIsInconsistent()
     {
-        TriMesh m = tetrahedron();
+        TriMesh m = tetrahedronMesh();
         m.faces.row(3) << 1, 3, 2;
         QCOMPARE(analyseTopology(m).inconsistentEdges, 3);
     }
 
     void degenerateFaces()
     {
-        TriMesh m = tetrahedron();
+        TriMesh m = tetrahedronMesh();
         m.faces.row(0) << 0, 0, 1;
         QCOMPARE(analyseTopology(m).degenerateFaces, 1);
     }
@@ -73,7 +64,7 @@ private slots:
     // the edge buckets were walked from a null pointer (UBSan: non-zero offset to null pointer).
     void noFaceWithThreeCorners()
     {
-        TriMesh m = tetrahedron();
+        TriMesh m = tetrahedronMesh();
         for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
             m.faces(f, 1) = m.faces(f, 0);
         const TopologyReport r = analyseTopology(m);
@@ -83,11 +74,11 @@ private slots:
 
     void fatalDefects()
     {
-        TriMesh m = tetrahedron();
+        TriMesh m = tetrahedronMesh();
         QVERIFY(!findFatalDefect(m));
         m.vertices(2, 1) = std::numeric_limits<float>::quiet_NaN();
         QVERIFY(findFatalDefect(m)->find("vertex 2") != std::string::npos);
-        m = tetrahedron();
+        m = tetrahedronMesh();
         m.faces(1, 2) = 4;
         QVERIFY(findFatalDefect(m)->find("face 1") != std::string::npos);
         m.faces(1, 2) = -1;
@@ -97,7 +88,7 @@ private slots:
 
     void centroidAndBounds()
     {
-        const TriMesh m = tetrahedron();
+        const TriMesh m = tetrahedronMesh();
         QVERIFY(centroid(m.vertices).isApprox(Eigen::Vector3d(0.25, 0.25, 0.25)));
         const auto box = boundingBox(m.vertices);
         QVERIFY(box.min().isApprox(Eigen::Vector3d::Zero()));

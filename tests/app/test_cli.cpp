@@ -662,6 +662,63 @@ private slots:
         QVERIFY2(bogus.err.contains(QStringLiteral("ridge")), qPrintable(bogus.err));
     }
 
+    void subdivisionSettingsAndOverrides()
+    {
+        // celform set stores both levels (one undoable edit each run), info --json reports them,
+        // render --subdivision overrides the project's level, and bad levels are usage errors that
+        // change nothing.
+        const QString project = m_dir.filePath(QStringLiteral("smooth.celform"));
+        QFile::remove(project);
+        QVERIFY(QFile::copy(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant-plain.celform"), project));
+        QFile::setPermissions(project, QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+        auto info = [&] {
+            const Run r = runCelform({"info", project, "--json"});
+            return QJsonDocument::fromJson(r.out.toUtf8()).object();
+        };
+        QCOMPARE(info().value(QStringLiteral("subdivision")).toInt(), 0);
+        QCOMPARE(info().value(QStringLiteral("viewport_subdivision")).toInt(), -1);
+        for (const QStringList& bad :
+            {QStringList{"--subdivision", "4"}, QStringList{"--subdivision", "-1"}, QStringList{"--subdivision", "two"},
+                QStringList{"--viewport-subdivision", "-2"}, QStringList{"--viewport-subdivision", "9"}}) {
+            const Run r = runCelform(QStringList{"set", project} + bad);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("subdivision")), qPrintable(r.err));
+        }
+        QCOMPARE(runCelform({"set", project, "--subdivision", "2", "--viewport-subdivision", "1"}).exitCode, 0);
+        QCOMPARE(info().value(QStringLiteral("subdivision")).toInt(), 2);
+        QCOMPARE(info().value(QStringLiteral("viewport_subdivision")).toInt(), 1);
+        auto render = [&](const QStringList& extra, const char* name) {
+            const QString png = m_dir.filePath(QLatin1String(name));
+            const Run r = runCelform(QStringList{"render", project, "--size", "160x120", "--out", png} + extra);
+            [&] { QVERIFY2(r.exitCode == 0, qPrintable(r.err)); }();
+            return QImage(png);
+        };
+        const QImage projectLevel = render({}, "level_project.png");
+        QCOMPARE(render({"--subdivision", "2"}, "level2.png"), projectLevel);
+        QVERIFY(render({"--subdivision", "0"}, "level0.png") != projectLevel);
+        const Run bad = runCelform({"render", project, "--subdivision", "5", "--out", m_dir.filePath("bad.png")});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains(QStringLiteral("0 to 3")), qPrintable(bad.err));
+        // Exports keep the control mesh unless told: level 1 has V + E points (E = 3F/2, closed).
+        const QString control = m_dir.filePath(QStringLiteral("control.pc2")),
+                      smooth = m_dir.filePath(QStringLiteral("smooth.pc2"));
+        QCOMPARE(runCelform({"export", project, "--format", "pc2", "--frames", "0-0", "--out", control}).exitCode, 0);
+        QCOMPARE(
+            runCelform({"export", project, "--format", "pc2", "--frames", "0-0", "--subdivision", "1", "--out", smooth})
+                .exitCode,
+            0);
+        const QJsonObject mesh = info().value(QStringLiteral("base_mesh")).toObject();
+        const qint64 v = mesh.value(QStringLiteral("vertex_count")).toInteger(),
+                     f = mesh.value(QStringLiteral("triangle_count")).toInteger();
+        const qint64 header = 32;
+        QCOMPARE(QFileInfo(control).size(), header + v * 12);
+        QCOMPARE(QFileInfo(smooth).size(), header + (v + 3 * f / 2) * 12);
+        QCOMPARE(runCelform({"export", project, "--format", "glb", "--subdivision", "1", "--out",
+                                m_dir.filePath(QStringLiteral("x.glb"))})
+                     .exitCode,
+            2);
+    }
+
     void highlightLayers()
     {
         const QString bunny = bunnyProject();

@@ -26,6 +26,17 @@ inline std::shared_ptr<algo::TriMesh> octahedron()
     return m;
 }
 
+/// A tetrahedron at the origin's corner (vertices 0, x, y, z), faces counter-clockwise from outside.
+inline algo::TriMesh tetrahedronMesh()
+{
+    algo::TriMesh m;
+    m.vertices.resize(4, 3);
+    m.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+    m.faces.resize(4, 3);
+    m.faces << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
+    return m;
+}
+
 /// The mesh with every triangle split in four at its edges' midpoints (corner triangles first, the
 /// middle one last); onSphere puts the new vertices on the unit sphere (for icosphere).
 inline std::shared_ptr<algo::TriMesh> subdivided(const algo::TriMesh& mesh, bool onSphere = false)

@@ -417,6 +417,54 @@ private slots:
         }
     }
 
+    void subdivisionIsStoredAndOptional()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("smooth.celform"));
+        ProjectData data = richProject();
+        data.look.subdivision = {2, 1};
+        saveProject(data, path);
+        QCOMPARE(loadProject(path).look.subdivision, (SubdivisionLook{2, 1}));
+        QCOMPARE(loadProject(path).look.subdivision.viewport(), 1);
+        // Files from before subdivision show the control mesh.
+        editManifest(path, [](QJsonObject& m) {
+            QJsonObject look = m.value(QStringLiteral("look")).toObject();
+            look.remove(QStringLiteral("subdivision"));
+            m.insert(QStringLiteral("look"), look);
+        });
+        QCOMPARE(loadProject(path).look.subdivision, SubdivisionLook{});
+        QCOMPARE(SubdivisionLook{}.level, 0);
+        // Levels out of range, or not whole, are damage.
+        for (const auto& [render, viewport] : {std::pair{4.0, -1.0}, std::pair{-1.0, -1.0}, std::pair{1.5, -1.0},
+                 std::pair{2.0, -2.0}, std::pair{2.0, 4.0}}) {
+            editManifest(path, [&](QJsonObject& m) {
+                QJsonObject look = m.value(QStringLiteral("look")).toObject();
+                look.insert(QStringLiteral("subdivision"),
+                    QJsonObject{
+                        {QStringLiteral("render_level"), render}, {QStringLiteral("viewport_level"), viewport}});
+                m.insert(QStringLiteral("look"), look);
+            });
+            QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
+        }
+    }
+
+    void subdivisionEditIsOneUndoStep()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("edit.celform"));
+        saveProject(richProject(), path);
+        Document doc;
+        doc.open(path);
+        doc.look().setSubdivision({2, -1});
+        QCOMPARE(doc.data().look.subdivision.level, 2);
+        QCOMPARE(doc.undoStack()->count(), 1);
+        QVERIFY_THROWS_EXCEPTION(EditRefused, doc.look().setSubdivision({4, -1}));
+        QVERIFY_THROWS_EXCEPTION(EditRefused, doc.look().setSubdivision({1, -3}));
+        QCOMPARE(doc.undoStack()->count(), 1);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.data().look.subdivision, SubdivisionLook{});
+    }
+
     void normalSmoothingIsStoredAndChecked()
     {
         QTemporaryDir dir;

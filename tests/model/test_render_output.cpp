@@ -6,11 +6,14 @@
 #include "test_meshes.h"
 #include "test_support.h"
 
+#include "celform/model/data/framed_camera.h"
 #include "celform/model/data/project_data.h"
 #include "celform/model/io/mesh_io.h"
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
+#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/render/render_output.h"
+#include "celform/model/render/subdivided_surface.h"
 
 #include <QtTest/QtTest>
 
@@ -120,6 +123,41 @@ void compareGeometry(const std::vector<algo::RenderHighlight>& a, const std::vec
     }
 }
 
+/// A coarse, lumpy closed mesh: an octahedron split once with its new vertices pushed out and down.
+model::ProjectData coarseModel()
+{
+    model::ProjectData data;
+    auto mesh = test::subdivided(*test::octahedron());
+    for (Eigen::Index v = 6; v < mesh->vertexCount(); ++v)
+        mesh->vertices.row(v) *= 1.3f;
+    data.baseMesh = mesh;
+    return data;
+}
+
+/// The frame of data's surface at level (0: the control mesh) seen from (0.3, 0.2, 1), small.
+algo::RenderPasses renderAtLevel(const model::ProjectData& data, int level)
+{
+    model::Look look = data.look;
+    look.showLines = false;
+    const model::Camera camera = model::cameraFromView(data, Eigen::Vector3d(0.3, 0.2, 1).normalized(), 1.0);
+    algo::RenderCache cache;
+    const auto surface = model::subdividedSurface(data, level);
+    if (!surface)
+        return model::renderShape(
+            data, look, data.baseMesh->vertices, 0, camera, 160, 160, algo::StereoOutput::Off, cache);
+    algo::Positions shape;
+    surface->apply(data.baseMesh->vertices, shape);
+    return model::renderShape(surface->display, look, shape, 0, camera, 160, 160, algo::StereoOutput::Off, cache);
+}
+
+std::vector<bool> silhouette(const algo::RenderPasses& p)
+{
+    std::vector<bool> mask(p.depth.size());
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        mask[i] = std::isfinite(p.depth[i]);
+    return mask;
+}
+
 } // namespace
 
 class TestRenderOutput : public QObject {
@@ -145,6 +183,77 @@ private slots:
         qInfo("bunny (3.7k triangles): %d line dashes under 30 px before the clean-up, %d after", before, after);
         QVERIFY(after <= 3);
         QVERIFY(after <= before);
+    }
+
+    void subdividedRenderIsSmoothAndKeepsTheSilhouette()
+    {
+        const model::ProjectData data = coarseModel();
+        const algo::RenderPasses l0 = renderAtLevel(data, 0), l2 = renderAtLevel(data, 2), l3 = renderAtLevel(data, 3);
+        const std::vector<bool> s0 = silhouette(l0), s2 = silhouette(l2), s3 = silhouette(l3);
+        int both = 0, either = 0, differ = 0;
+        for (std::size_t i = 0; i < s2.size(); ++i) {
+            both += s2[i] && s3[i];
+            either += s2[i] || s3[i];
+            differ += s0[i] != s2[i] || l0.tone[i] != l2.tone[i];
+        }
+        const double iou = double(both) / std::max(1, either);
+        qInfo("silhouette IoU level 2 vs 3: %.4f; pixels differing from level 0: %d", iou, differ);
+        QVERIFY(iou >= 0.97);
+        QVERIFY(differ > 100);
+    }
+
+    void subdividedSurfaceCarriesFaceSetsMaterialsAndOffsets()
+    {
+        model::ProjectData data = coarseModel();
+        auto mesh = std::make_shared<algo::TriMesh>(*data.baseMesh);
+        mesh->materials = {{"a", {1, 0, 0}}, {"b", {0, 0, 1}}};
+        mesh->faceMaterials.assign(std::size_t(mesh->faceCount()), 0);
+        mesh->faceMaterials[3] = 1;
+        data.baseMesh = mesh;
+        data.faceSets.push_back({"patch", {2, 5}});
+        data.shadingOffsets.assign(std::size_t(mesh->vertexCount()), 0.5f);
+        const auto surface = model::subdividedSurface(data, 2);
+        QVERIFY(surface);
+        QCOMPARE(model::subdividedSurface(data, 2), surface); // cached
+        const algo::TriMesh& shown = *surface->display.baseMesh;
+        QCOMPARE(shown.faceCount(), mesh->faceCount() * 16);
+        for (Eigen::Index f = 0; f < shown.faceCount(); ++f)
+            QCOMPARE(shown.faceMaterials[std::size_t(f)], f / 16 == 3 ? 1 : 0);
+        const algo::FaceSet* patch = surface->display.faceSet(QStringLiteral("patch"));
+        QVERIFY(patch);
+        QCOMPARE(int(patch->faces.size()), 32);
+        QCOMPARE(patch->faces.front(), 32);
+        QCOMPARE(int(surface->display.shadingOffsets.size()), int(shown.vertexCount()));
+        for (const float o : surface->display.shadingOffsets)
+            QVERIFY(std::abs(o - 0.5f) < 1e-6f);
+        QVERIFY(!model::subdividedSurface(data, 0));
+        QVERIFY(model::subdivisionMemoryProblem(*mesh, 3).isEmpty());
+    }
+
+    void keyDeformationShowsThroughUnchanged()
+    {
+        // One key seen from the front moves two vertices: the subdivided frame is S times the
+        // deformed control shape, exactly, and differs from the subdivided base.
+        model::ProjectData data = coarseModel();
+        model::KeyViewpoint key;
+        key.id = 1;
+        key.name = QStringLiteral("front");
+        key.camera = model::cameraFromView(data, Eigen::Vector3d::UnitZ(), 1.0);
+        key.offsetsByFrame[0]
+            = model::SparseOffsets{{4, 7}, {Eigen::Vector3f(0, 0, 0.4f), Eigen::Vector3f(0.2f, 0, 0)}};
+        data.keys.push_back(key);
+        model::FrameEvaluator evaluator;
+        QVERIFY(evaluator.prepare(data));
+        evaluator.evaluateDirection(data, 0, Eigen::Vector3d::UnitZ());
+        const algo::Positions& deformed = evaluator.shape();
+        QVERIFY((deformed - data.baseMesh->vertices).cwiseAbs().maxCoeff() > 0.1f);
+        const auto surface = model::subdividedSurface(data, 2);
+        algo::Positions shown, expected, base;
+        surface->apply(deformed, shown);
+        algo::applySubdivision(*surface->stencil, deformed, expected);
+        algo::applySubdivision(*surface->stencil, data.baseMesh->vertices, base);
+        QCOMPARE(shown, expected);
+        QVERIFY((shown - base).cwiseAbs().maxCoeff() > 0.05f);
     }
 
     void tracksResolveWithPatchAndSmoothing()

@@ -414,6 +414,7 @@ private:
         l.backgroundColor = randomColor(m_rng);
         l.toon = randomRamp();
         l.toonEvaluation = algo::ToonEvaluation(below(m_rng, 3));
+        l.subdivision = {below(m_rng, 4), below(m_rng, 4) - 1};
         l.gooch = randomGooch();
         l.hatch = randomHatch();
         l.showLines = chance(m_rng, 0.5);
@@ -629,6 +630,10 @@ private:
         add("setRenderCamera", 3, Kind::Edit, [this, &d, &r](Rng&) {
             d.look().setRenderCamera(
                 chance(r, 0.2) ? std::optional<Camera>() : std::optional<Camera>(randomCamera(r)), m_gesture);
+        });
+        add("setSubdivision", 2, Kind::Edit, [this, &d, &r](Rng&) {
+            // Now and then a level out of range, which is refused.
+            d.look().setSubdivision({below(r, 5), below(r, 5) - 1}, m_gesture);
         });
         add("setLook", 2, Kind::Edit, [this, &d](Rng&) { d.look().setLook(randomLook()); });
 

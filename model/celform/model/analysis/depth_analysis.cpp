@@ -4,6 +4,7 @@
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/render/render_output.h"
+#include "celform/model/render/subdivided_surface.h"
 #include "celform/model/data/shading_layers.h"
 #include "celform/model/data/blend_evaluator.h"
 
@@ -124,6 +125,20 @@ FrameAnalysis analyseProject(
     const AnalysisView view = resolveAnalysisView(data, source, job);
     DepthAnalyser analyser;
     FrameAnalysis out;
+    // The analysis sees the render level's surface (issue 25).
+    if (const QString problem
+        = subdivisionMemoryProblem(*data.baseMesh, view.look.subdivision.level, job.bytesNeeded());
+        !problem.isEmpty())
+        throw IoError(source, problem);
+    if (const auto surface = subdividedSurface(data, view.look.subdivision.level)) {
+        algo::Positions shape;
+        std::vector<float> offsets;
+        surface->apply(view.shape, shape);
+        surface->apply(view.offsets, offsets);
+        analyser.analyse(surface->display, view.look, shape, 0, job.firstFrame, view.camera, job.size.width(),
+            job.size.height(), settings, out, &offsets);
+        return out;
+    }
     analyser.analyse(data, view.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(), job.size.height(),
         settings, out, &view.offsets);
     return out;

@@ -3,6 +3,7 @@
 
 #include "celform/algorithms/blend.h"
 #include "celform/algorithms/sorted_merge.h"
+#include "celform/algorithms/subdivision.h"
 
 #include <QCoreApplication>
 
@@ -206,6 +207,21 @@ void ProjectData::offsetsAt(const KeyViewpoint& key, int frame, TimeInterpolatio
             }
         }
     }
+}
+
+QString subdivisionProblem(const SubdivisionLook& s)
+{
+    const int subdivision = s.level, viewportSubdivision = s.viewportLevel;
+    if (subdivision < 0 || subdivision > algo::kMaxSubdivisionLevel)
+        return QCoreApplication::translate("Look", "the subdivision level must be 0 to %1, not %2")
+            .arg(algo::kMaxSubdivisionLevel)
+            .arg(subdivision);
+    if (viewportSubdivision < -1 || viewportSubdivision > algo::kMaxSubdivisionLevel)
+        return QCoreApplication::translate(
+            "Look", "the viewport's subdivision level must be -1 (the render level) or 0 to %1, not %2")
+            .arg(algo::kMaxSubdivisionLevel)
+            .arg(viewportSubdivision);
+    return {};
 }
 
 QString sceneTimeProblem(const SceneTime& time)

@@ -222,6 +222,19 @@ struct HighlightTrack {
 [[nodiscard]] int highlightOperationArity(algo::HighlightOperationType type);
 
 /// The cartoon look (DESIGN.md, "Look"): shading style and parameters, lines, key light, stereo.
+/// Loop subdivision of the displayed and rendered surface (issue 25; algo/subdivision.h).
+struct SubdivisionLook {
+    /// 0 (the control mesh) to algo::kMaxSubdivisionLevel: what `celform render`, the depth
+    /// analysis and, by default, the viewport use.
+    int level = 0;
+    /// The viewport's level: -1 follows level; otherwise a lower level as a speed setting.
+    int viewportLevel = -1;
+    /// The level the viewport shows: viewportLevel when set, never above level.
+    [[nodiscard]] int viewport() const { return viewportLevel < 0 ? level : std::min(viewportLevel, level); }
+    bool operator==(const SubdivisionLook& o) const { return level == o.level && viewportLevel == o.viewportLevel; }
+    bool operator!=(const SubdivisionLook& o) const { return !(*this == o); }
+};
+
 struct Look {
     ShadingStyle style = ShadingStyle::Toon;
     /// Per-material style (material index -> style); materials not listed use style.
@@ -236,6 +249,7 @@ struct Look {
     algo::LineSettings lines;
     algo::LineStyle lineStyle;
     StereoLook stereo;
+    SubdivisionLook subdivision;
     std::vector<HighlightTrack> highlights; ///< drawn in order, later over earlier
     /// The shot's camera: `celform render` looks through it unless told otherwise; none means a
     /// framed default view. Set from the editor's view (View menu) or `celform set --render-view`.
@@ -254,11 +268,14 @@ struct Look {
         return style == o.style && materialStyles == o.materialStyles && light == o.light
             && backgroundColor == o.backgroundColor && toon == o.toon && toonEvaluation == o.toonEvaluation
             && gooch == o.gooch && hatch == o.hatch && showLines == o.showLines && lines == o.lines
-            && lineStyle == o.lineStyle && stereo == o.stereo && highlights == o.highlights
-            && renderCamera == o.renderCamera && cameraPath == o.cameraPath;
+            && lineStyle == o.lineStyle && stereo == o.stereo && subdivision == o.subdivision
+            && highlights == o.highlights && renderCamera == o.renderCamera && cameraPath == o.cameraPath;
     }
     bool operator!=(const Look& o) const { return !(*this == o); }
 };
+
+/// The first problem of subdivision levels (render 0-3; viewport -1 or 0-3), empty when valid.
+[[nodiscard]] QString subdivisionProblem(const SubdivisionLook& subdivision);
 
 /// The scene's time: frames per second and the frame range the timeline plays and a
 /// sequence render or export covers by default. Frame F is at time F / fps.

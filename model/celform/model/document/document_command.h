@@ -50,6 +50,7 @@ enum class Property {
     HighlightCombinations,
     FaceSets,
     MirrorPlane,
+    Subdivision,
 };
 
 /// What a command edits, for merging: a property of one object (id 0: of the document itself)

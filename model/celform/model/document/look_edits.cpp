@@ -165,6 +165,15 @@ void LookEdits::setStereo(const StereoLook& stereo, GestureId gesture)
         push(cmd);
 }
 
+void LookEdits::setSubdivision(const SubdivisionLook& subdivision, GestureId gesture)
+{
+    if (const QString problem = subdivisionProblem(subdivision); !problem.isEmpty())
+        throw EditRefused(problem);
+    if (QUndoCommand* cmd
+        = lookCommand(m_doc, tr("Change Subdivision"), Property::Subdivision, &Look::subdivision, subdivision, gesture))
+        push(cmd);
+}
+
 void LookEdits::setRenderCamera(const std::optional<Camera>& camera, GestureId gesture)
 {
     if (camera == data().look.renderCamera)
@@ -187,6 +196,8 @@ void LookEdits::setLook(const Look& look)
         throw EditRefused(tr("The look's toon tones are not valid."));
     if (wanted.renderCamera && !wanted.renderCamera->isValid())
         throw EditRefused(tr("The render camera is not valid (eye, target and up must differ)."));
+    if (const QString problem = subdivisionProblem(wanted.subdivision); !problem.isEmpty())
+        throw EditRefused(problem);
     push(new PropertyCommand<Look>(m_doc, tr("Apply Look"), {Property::WholeLook},
         [](ProjectData& d) { return &d.look; }, std::move(wanted), ChangeSet::of(Part::Look), {}));
 }

@@ -38,6 +38,9 @@ public:
     void setLineSettings(const algo::LineSettings& settings, GestureId gesture = {});
     void setLineStyle(const algo::LineStyle& style, GestureId gesture = {});
     void setStereo(const StereoLook& stereo, GestureId gesture = {});
+    /// The render and viewport subdivision levels (issue 25) as one step; throws EditRefused for
+    /// levels out of range (subdivisionProblem).
+    void setSubdivision(const SubdivisionLook& subdivision, GestureId gesture = {});
     /// The shot's camera (none: a framed default view). Refuses an invalid camera.
     void setRenderCamera(const std::optional<Camera>& camera, GestureId gesture = {});
     /// Replaces the whole look but its highlight layers in one step ("Apply Look", presets);

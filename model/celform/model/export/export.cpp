@@ -4,6 +4,7 @@
 
 #include "celform/model/data/io_error.h"
 #include "celform/model/render/render_job.h"
+#include "celform/model/render/subdivided_surface.h"
 
 #include <QCoreApplication>
 #include <QSaveFile>
@@ -69,6 +70,12 @@ QString exportJobProblem(const ExportJob& job)
         return QCoreApplication::translate("celform::model::Export", "no output file");
     if (!(job.aspect > 0.0))
         return QCoreApplication::translate("celform::model::Export", "the aspect ratio must be positive");
+    if (const QString problem = subdivisionProblem({job.subdivision, -1}); !problem.isEmpty())
+        return problem;
+    if (job.subdivision > 0 && (job.format == ExportFormat::Gltf || job.format == ExportFormat::Glb))
+        return QCoreApplication::translate("celform::model::Export",
+            "glTF exports hold the keys as morph targets of the base model and take no subdivision; export "
+            "pc2 or obj-seq with --subdivision");
     return {};
 }
 
@@ -83,6 +90,19 @@ FrameWalk::FrameWalk(const ProjectData& data, const QString& source, const Expor
     QString error;
     if (!m_evaluator.prepare(data, &error))
         throw IoError(source, error);
+    if (const QString problem = subdivisionMemoryProblem(*data.baseMesh, job.subdivision); !problem.isEmpty())
+        throw IoError(source, problem);
+    m_surface = subdividedSurface(data, job.subdivision);
+}
+
+const algo::Faces& FrameWalk::faces() const
+{
+    return m_surface ? m_surface->display.baseMesh->faces : m_data.baseMesh->faces;
+}
+
+Eigen::Index FrameWalk::vertexCount() const
+{
+    return m_surface ? m_surface->stencil->vertexCount() : m_data.baseMesh->vertexCount();
 }
 
 bool FrameWalk::next()
@@ -96,6 +116,9 @@ bool FrameWalk::next()
     ++m_frame;
     m_camera = cameraAtFrame(m_data, m_data.look, m_frame, m_job.aspect);
     m_evaluator.evaluate(m_data, m_frame, m_camera.eye);
+    // The smooth surface after the blend, the animation and the key deformations (issue 25).
+    if (m_surface)
+        m_surface->apply(m_evaluator.shape(), m_subdivided);
     ++m_done;
     algo::report(m_progress, m_done, m_job.frameCount());
     return true;

@@ -17,6 +17,8 @@ class QSaveFile;
 
 namespace celform::model {
 
+struct SubdividedSurface;
+
 enum class ExportFormat { Gltf, Glb, Pc2, ObjSequence };
 
 /// The command line's names of the formats: gltf, glb, pc2, obj-seq.
@@ -38,6 +40,9 @@ struct ExportJob {
     /// without one "_FFFF" goes before the suffix (as a rendered sequence names its files).
     QString output;
     double aspect = kExportAspect;
+    /// Loop subdivision level of the exported surface (0-3; PC2 and OBJ sequences). 0, the
+    /// default, keeps the base model's vertices and their order.
+    int subdivision = 0;
 
     [[nodiscard]] int frameCount() const { return lastFrame - firstFrame + 1; }
     /// The file frame f goes to (the output itself for a one-file format).
@@ -76,6 +81,11 @@ public:
     [[nodiscard]] int frame() const { return m_frame; }
     [[nodiscard]] const Camera& camera() const { return m_camera; }
     [[nodiscard]] const FrameEvaluator& evaluator() const { return m_evaluator; }
+    /// The frame's shape at the job's subdivision level (the evaluator's at level 0).
+    [[nodiscard]] const algo::Positions& shape() const { return m_surface ? m_subdivided : m_evaluator.shape(); }
+    /// The faces of shape() and its vertex count.
+    [[nodiscard]] const algo::Faces& faces() const;
+    [[nodiscard]] Eigen::Index vertexCount() const;
     [[nodiscard]] bool cancelled() const { return m_cancelled; }
     [[nodiscard]] int done() const { return m_done; }
 
@@ -84,6 +94,8 @@ private:
     const ExportJob& m_job;
     algo::Progress* m_progress;
     FrameEvaluator m_evaluator;
+    std::shared_ptr<const SubdividedSurface> m_surface; ///< null at level 0
+    algo::Positions m_subdivided;
     Camera m_camera;
     int m_frame = 0;
     int m_done = 0;

@@ -12,10 +12,10 @@ void writeObjSequence(const ProjectData& data, const QString& source, const Expo
 {
     FrameWalk walk(data, source, job, progress);
     algo::TriMesh mesh;
-    mesh.faces = data.baseMesh->faces;
+    mesh.faces = walk.faces();
     while (walk.next()) {
         // Same size every frame: the assignment copies into the rows already there.
-        mesh.vertices = walk.evaluator().shape();
+        mesh.vertices = walk.shape();
         const QString path = job.framePath(walk.frame());
         exportMesh(mesh, path);
         result.files << path;

@@ -46,7 +46,7 @@ void writePc2(const ProjectData& data, const QString& source, const ExportJob& j
     Pc2Header header{};
     std::memcpy(header.signature, "POINTCACHE2", 12); // with its terminating zero
     header.version = 1;
-    header.points = std::int32_t(data.baseMesh->vertexCount());
+    header.points = std::int32_t(walk.vertexCount());
     header.startFrame = float(job.firstFrame);
     header.sampleRate = 1.0f; // one sample per frame
     header.samples = job.frameCount();
@@ -54,7 +54,7 @@ void writePc2(const ProjectData& data, const QString& source, const ExportJob& j
     // Positions are row-major floats (x y z per vertex): each frame is one write of the shape.
     const qint64 frameBytes = qint64(header.points) * 3 * qint64(sizeof(float));
     while (walk.next()) {
-        write(file, walk.evaluator().shape().data(), frameBytes);
+        write(file, walk.shape().data(), frameBytes);
         ++result.frames;
     }
     finishFile(file, walk.cancelled(), result);

@@ -211,6 +211,8 @@ QJsonObject lookJson(const Look& look)
             QJsonObject{{"output", enumName(st.output)}, {"interocular", st.interocular},
                 {"convergence", st.convergence}, {"toe_in", st.toeIn}, {"swap_eyes", st.swapEyes},
                 {"dubois_left", matrix3(st.dubois.left)}, {"dubois_right", matrix3(st.dubois.right)}}},
+        {"subdivision",
+            QJsonObject{{"render_level", look.subdivision.level}, {"viewport_level", look.subdivision.viewportLevel}}},
         {"highlights", highlightsJson(look.highlights)}};
     if (look.renderCamera)
         out.insert("render_camera", cameraJson(*look.renderCamera));

@@ -388,6 +388,16 @@ Look readLook(const Reader& r, const QJsonObject& look)
         out.stereo.dubois.left = readMatrix3(r, st, "dubois_left");
         out.stereo.dubois.right = readMatrix3(r, st, "dubois_right");
     }
+    // Subdivision came later: files without it show the control mesh.
+    if (look.contains("subdivision")) {
+        const QJsonObject s = r.object(look, "subdivision");
+        const double render = r.number(s, "render_level"), viewport = r.number(s, "viewport_level");
+        out.subdivision.level = int(std::clamp(render, -2.0, 99.0));
+        out.subdivision.viewportLevel = int(std::clamp(viewport, -2.0, 99.0));
+        if (render != std::floor(render) || viewport != std::floor(viewport)
+            || !subdivisionProblem(out.subdivision).isEmpty())
+            r.corrupt(ProjectFile::tr("the subdivision levels are out of range"));
+    }
     if (look.contains("highlights"))
         out.highlights = readHighlights(r, r.array(look, "highlights"));
     if (look.contains("render_camera")) {

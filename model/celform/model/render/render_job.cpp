@@ -7,6 +7,7 @@
 #include "celform/model/analysis/depth_analysis.h"
 #include "celform/model/analysis/depth_analysis_output.h"
 #include "celform/model/render/frame_schedule.h"
+#include "celform/model/render/subdivided_surface.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/render/render_output.h"
 #include "celform/model/data/shading_layers.h"
@@ -112,6 +113,8 @@ Look renderJobLook(const ProjectData& data, const RenderJob& job)
         look.lines.ridgeThreshold = *job.ridgeThreshold;
     if (job.light)
         look.light = *job.light;
+    if (job.subdivision)
+        look.subdivision.level = *job.subdivision;
     return look;
 }
 
@@ -137,6 +140,13 @@ ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& sourc
     if (!resolved.blender.update(data, &error))
         throw IoError(source, error);
     resolved.direction = BlendEvaluator::viewDirection(data, resolved.camera.eye, job.firstFrame);
+    if (const QString problem = subdivisionProblem(resolved.look.subdivision); !problem.isEmpty())
+        throw IoError(source, problem);
+    if (const QString problem = subdivisionMemoryProblem(
+            *data.baseMesh, resolved.look.subdivision.level, job.bytesNeeded() * std::max(1, job.threads));
+        !problem.isEmpty())
+        throw IoError(source, problem);
+    resolved.surface = subdividedSurface(data, resolved.look.subdivision.level);
     return resolved;
 }
 
@@ -167,22 +177,34 @@ public:
         const Camera camera = renderJobCamera(data, m_resolved.look, m_job, f);
         m_evaluator.evaluate(data, f, camera.eye);
         const algo::Positions& next = m_evaluator.shape();
-        if (m_shape.generation == 0 || next.rows() != m_shape.positions.rows() || next != m_shape.positions) {
-            m_shape.positions = next;
+        const SubdividedSurface* surface = m_resolved.surface.get();
+        if (m_shape.generation == 0 || next.rows() != m_control.rows() || next != m_control) {
+            m_control = next;
+            // The smooth surface comes after the blend, the animation and the key deformations.
+            if (surface)
+                surface->apply(m_control, m_shape.positions);
+            else
+                m_shape.positions = m_control;
             m_shape.touch();
         }
         effectiveShadingOffsets(data, m_evaluator.blender(), m_evaluator.direction(), f, m_offsets);
+        if (surface) {
+            surface->apply(m_offsets, m_subdividedOffsets);
+            std::swap(m_offsets, m_subdividedOffsets);
+        }
+        // The subdivided base model, face sets and offsets stand in for the control ones.
+        const ProjectData& shown = surface ? surface->display : data;
         // The analysis passes (segments, curvature, depth error) come from the depth analysis of
         // the centre eye's picture.
         if (m_analysisPicture) {
-            m_analyser.analyse(data, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
+            m_analyser.analyse(shown, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
                 m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_offsets);
             if (cancelled())
                 return false;
             writeImage(analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile), target);
             return true;
         }
-        const algo::RenderPasses passes = renderShape(data, m_resolved.look, m_shape.positions, f, camera,
+        const algo::RenderPasses passes = renderShape(shown, m_resolved.look, m_shape.positions, f, camera,
             m_job.size.width(), m_job.size.height(), m_job.stereo, m_cache, m_shape.generation, &m_offsets);
         if (cancelled())
             return false;
@@ -205,8 +227,10 @@ private:
     algo::RenderCache m_cache;
     DepthAnalyser m_analyser;
     FrameAnalysis m_analysed;
-    algo::Shape m_shape;
+    algo::Positions m_control; // the frame's control shape (before subdivision)
+    algo::Shape m_shape; // the shape rendered: m_control, or its subdivided surface
     std::vector<float> m_offsets; // in effect at the camera's view and the frame (shading_layers.h)
+    std::vector<float> m_subdividedOffsets;
 };
 
 } // namespace

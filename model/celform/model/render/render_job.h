@@ -18,9 +18,12 @@
 
 #include <algorithm>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace celform::model {
+
+struct SubdividedSurface;
 
 /// The most frames one render writes.
 constexpr int kMaxFramesPerRender = 100'000;
@@ -51,6 +54,8 @@ struct RenderJob {
     std::optional<std::uint8_t> lineKinds;
     std::optional<float> ridgeThreshold; ///< `--ridge-threshold T`, >= 0
     std::optional<Light> light;
+    /// `--subdivision N`: the Loop subdivision level (0-3) instead of the look's render level.
+    std::optional<int> subdivision;
     algo::StereoOutput stereo = algo::StereoOutput::Off;
     /// One of renderPassNames(); empty: the beauty pass, or every pass as channels of an .exr.
     QString pass;
@@ -83,7 +88,7 @@ QStringList renderSuffixes();
 /// (ulimit -v) less what this process uses, if one is set.
 qint64 availableRenderMemory();
 
-/// The project's look with the job's overrides (style, lines, light) applied.
+/// The project's look with the job's overrides (style, lines, light, subdivision) applied.
 Look renderJobLook(const ProjectData& data, const RenderJob& job);
 
 /// The camera a job looks through at a frame (see RenderJob::camera). Needs a base mesh.
@@ -97,10 +102,12 @@ struct ResolvedRenderJob {
     Camera camera;
     BlendEvaluator blender;
     Eigen::Vector3d direction;
+    /// The surface at the look's subdivision level (subdivided_surface.h); null at level 0.
+    std::shared_ptr<const SubdividedSurface> surface;
 };
 
-/// Resolves a job for a project; throws IoError naming source when there is no base model or the
-/// keys cannot be blended.
+/// Resolves a job for a project; throws IoError naming source when there is no base model, the
+/// keys cannot be blended or the subdivision level does not fit in memory.
 ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job);
 
 /// Told of each frame a render finishes, beside the progress that counts them: the command line
