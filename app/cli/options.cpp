@@ -313,7 +313,11 @@ std::vector<OptionSpec> lookOverrideSpecs()
                 "Draw the lines (on) or not (off), or only these kinds: silhouette, crease, border, material, "
                 "ridge (apparent ridges), comma-separated.")},
         {"light", "TYPE:X,Y,Z",
-            QT_TRANSLATE_NOOP("celform::app::Cli", "Key light of this picture (default: the project's).")}};
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Key light of this picture (default: the project's).")},
+        {"ridge-threshold", "T",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Apparent-ridge threshold for this picture: view-dependent curvature times the median edge "
+                "length (default: the project's, 0.3 in new projects; lower draws more).")}};
 }
 
 void readCameraOptions(const Invocation& in, model::RenderJob& job)
@@ -342,6 +346,13 @@ void readPictureOptions(const Invocation& in, model::RenderJob& job)
             job.lineKinds = parseLineKinds("lines", v);
     }
     job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
+    if (in.isSet("ridge-threshold")) {
+        const double t = parseFloat("ridge-threshold", in.value("ridge-threshold"));
+        if (t < 0)
+            throw UsageError{
+                Cli::tr("--ridge-threshold takes a number >= 0, not “%1”").arg(in.value("ridge-threshold"))};
+        job.ridgeThreshold = float(t);
+    }
 }
 
 } // namespace celform::app
