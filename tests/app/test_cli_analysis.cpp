@@ -89,7 +89,7 @@ private slots:
     {
         auto features = [](const char* threshold) {
             const Run r = runCelform({QStringLiteral("analyze"), sample(), QStringLiteral("--size"),
-                QStringLiteral("240x180"), QStringLiteral("--lines"), QStringLiteral("ridge"),
+                QStringLiteral("160x120"), QStringLiteral("--lines"), QStringLiteral("ridge"),
                 QStringLiteral("--ridge-threshold"), QLatin1String(threshold), QStringLiteral("--json")});
             if (r.exitCode != 0)
                 qWarning("%s", qPrintable(r.err));
