@@ -15,6 +15,7 @@
 
 #include <QFileInfo>
 #include <QJsonArray>
+#include <QSaveFile>
 
 namespace celform::app {
 namespace {
@@ -61,8 +62,98 @@ model::AnalysisSettings readAnalysisSettings(const Invocation& in)
     return settings;
 }
 
+QJsonArray windowJson(const RatioWindow& window)
+{
+    // The window as given (floats printed without their binary tails).
+    return QJsonArray{QString::number(double(window.low), 'g', 6).toDouble(),
+        QString::number(double(window.high), 'g', 6).toDouble()};
+}
+
+/// One analysed frame as `analyze --json` prints it (each element of `frames` with --frames).
+QJsonObject frameJson(int frame, const model::Camera& camera, const model::FrameAnalysis& analysed)
+{
+    const algo::DepthAnalysis& a = analysed.analysis;
+    QJsonArray segments;
+    for (std::size_t i = 0; i < a.stats.size(); ++i) {
+        const algo::SegmentStats& s = a.stats[i];
+        segments.append(QJsonObject{{"id", int(i)}, {"pixels", s.pixels}, {"bright", s.bright},
+            {"ratio", double(s.ratio)}, {"in_window", s.inWindow},
+            {"curvature", s.meanCurvature > 0.f ? "positive" : (s.meanCurvature < 0.f ? "negative" : "flat")},
+            {"centroid", QJsonArray{double(s.centroid.x()), double(s.centroid.y())}}});
+    }
+    return {{"frame", frame},
+        {"camera",
+            QJsonObject{{"eye", model::vec3Json(camera.eye)}, {"target", model::vec3Json(camera.target)},
+                {"up", model::vec3Json(camera.up)}}},
+        {"depth_threshold", analysed.depthThreshold}, {"segments", segments},
+        {"depth_error",
+            QJsonObject{{"mse", a.meanSquaredError}, {"rmse", std::sqrt(a.meanSquaredError)}, {"max", a.maxAbsError},
+                {"model_pixels", double(a.modelPixels)}, {"feature_pixels", double(a.featurePixels)}}},
+        {"milliseconds", analysed.milliseconds}, {"curvature_milliseconds", analysed.curvatureMilliseconds}};
+}
+
+/// `analyze --frames A-B[:STEP]`: every frame in one process through one analyser (issue 26);
+/// --json prints {"size", "window", "frames": [...]}, --csv writes a row per frame, --out takes a
+/// # pattern (one EXR per frame).
+int runAnalyseFrames(const Invocation& in, model::RenderJob job, const model::AnalysisSettings& settings)
+{
+    const FrameRange range = parseFrameRange("frames", in.value("frames"));
+    job.firstFrame = range.first;
+    job.lastFrame = range.last;
+    job.step = range.step;
+    job.output = in.value("out");
+    if (in.isSet("out") && !job.output.contains(QLatin1Char('#')))
+        throw UsageError{
+            Cli::tr("--out with --frames needs a # where the frame number goes, not “%1”").arg(job.output)};
+    const QString path = in.argument(0);
+    const model::ProjectData data = model::loadProject(path);
+    QJsonArray frames;
+    QString csv = QStringLiteral("frame,mse,rmse,segments,segments_in_window,milliseconds\n");
+    QString text;
+    model::analyseProjectFrames(data, path, job, settings,
+        [&](int frame, const model::AnalysisView& view, const model::FrameAnalysis& analysed) {
+            if (in.isSet("out"))
+                model::writeAnalysisExr(analysed, job.framePath(frame));
+            const algo::DepthAnalysis& a = analysed.analysis;
+            const int inside = algo::segmentsInWindow(a.stats);
+            if (in.isSet("json"))
+                frames.append(frameJson(frame, view.camera, analysed));
+            csv += QStringLiteral("%1,%2,%3,%4,%5,%6\n")
+                       .arg(frame)
+                       .arg(a.meanSquaredError, 0, 'g', 9)
+                       .arg(std::sqrt(a.meanSquaredError), 0, 'g', 9)
+                       .arg(a.stats.size())
+                       .arg(inside)
+                       .arg(analysed.milliseconds, 0, 'f', 2);
+            text += Cli::tr("frame %1: %2 segments, %3 inside the window; depth error MSE %4 (%5 ms)")
+                        .arg(frame)
+                        .arg(a.stats.size())
+                        .arg(inside)
+                        .arg(a.meanSquaredError, 0, 'g', 6)
+                        .arg(analysed.milliseconds, 0, 'f', 1)
+                + QLatin1Char('\n');
+        });
+    if (in.isSet("csv")) {
+        QSaveFile file(in.value("csv"));
+        const QByteArray bytes = csv.toUtf8();
+        if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
+            throw model::IoError(in.value("csv"), file.errorString());
+    }
+    if (in.isSet("json")) {
+        printJson({{"size", QJsonArray{job.size.width(), job.size.height()}}, {"window", windowJson(settings.window)},
+            {"frames", frames}});
+        return kExitOk;
+    }
+    printOut(text);
+    return kExitOk;
+}
+
 int runAnalyse(const Invocation& in)
 {
+    if (in.isSet("frame") && in.isSet("frames"))
+        throw UsageError{Cli::tr("give either --frame or --frames")};
+    if (in.isSet("csv") && !in.isSet("frames"))
+        throw UsageError{Cli::tr("--csv goes with --frames")};
     model::RenderJob job;
     readPictureOptions(in, job);
     const model::AnalysisSettings settings = readAnalysisSettings(in);
@@ -71,6 +162,8 @@ int runAnalyse(const Invocation& in)
         throw UsageError{Cli::tr("--out must end in .exr, not “%1”").arg(out)};
     job.pass = QStringLiteral("segments");
     checkRenderMemory("size", QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height()), job.bytesNeeded());
+    if (in.isSet("frames"))
+        return runAnalyseFrames(in, job, settings);
 
     const QString path = in.argument(0);
     const model::ProjectData data = model::loadProject(path);
@@ -80,29 +173,11 @@ int runAnalyse(const Invocation& in)
 
     const algo::DepthAnalysis& a = frame.analysis;
     if (in.isSet("json")) {
-        QJsonArray segments;
-        for (std::size_t i = 0; i < a.stats.size(); ++i) {
-            const algo::SegmentStats& s = a.stats[i];
-            segments.append(QJsonObject{{"id", int(i)}, {"pixels", s.pixels}, {"bright", s.bright},
-                {"ratio", double(s.ratio)}, {"in_window", s.inWindow},
-                {"curvature", s.meanCurvature > 0.f ? "positive" : (s.meanCurvature < 0.f ? "negative" : "flat")},
-                {"centroid", QJsonArray{double(s.centroid.x()), double(s.centroid.y())}}});
-        }
         const model::Camera camera = model::renderJobCamera(data, model::renderJobLook(data, job), job, job.firstFrame);
-        printJson({{"frame", job.firstFrame}, {"size", QJsonArray{job.size.width(), job.size.height()}},
-            {"camera",
-                QJsonObject{{"eye", model::vec3Json(camera.eye)}, {"target", model::vec3Json(camera.target)},
-                    {"up", model::vec3Json(camera.up)}}},
-            // The window as given (floats printed without their binary tails).
-            {"window",
-                QJsonArray{QString::number(double(settings.window.low), 'g', 6).toDouble(),
-                    QString::number(double(settings.window.high), 'g', 6).toDouble()}},
-            {"depth_threshold", frame.depthThreshold}, {"segments", segments},
-            {"depth_error",
-                QJsonObject{{"mse", a.meanSquaredError}, {"rmse", std::sqrt(a.meanSquaredError)},
-                    {"max", a.maxAbsError}, {"model_pixels", double(a.modelPixels)},
-                    {"feature_pixels", double(a.featurePixels)}}},
-            {"milliseconds", frame.milliseconds}, {"curvature_milliseconds", frame.curvatureMilliseconds}});
+        QJsonObject json = frameJson(job.firstFrame, camera, frame);
+        json.insert("size", QJsonArray{job.size.width(), job.size.height()});
+        json.insert("window", windowJson(settings.window));
+        printJson(json);
         return kExitOk;
     }
     const int inside = algo::segmentsInWindow(a.stats);
@@ -205,6 +280,21 @@ int runOptimiseLight(const Invocation& in)
             throw UsageError{Cli::tr("--seed takes a whole number of at least 0, not “%1”").arg(in.value("seed"))};
     }
 
+    if (in.isSet("objective") && !model::lightObjectiveFromName(in.value("objective"), request.objective))
+        throw UsageError{
+            Cli::tr("--objective must be ratios, depth-error or both, not “%1”").arg(in.value("objective"))};
+    if (in.isSet("start")) {
+        const std::pair<const char*, model::LightStart> starts[]
+            = {{"current", model::LightStart::Current}, {"camera", model::LightStart::Camera}};
+        request.start = parseChoice(in.value("start"), starts, Cli::tr("--start must be current or camera, not “%1”"));
+    }
+    if (in.isSet("falloff")) {
+        request.optimiser.falloff = parseNumber("falloff", in.value("falloff"));
+        if (!(request.optimiser.falloff >= 0.0 && request.optimiser.falloff <= 1.0))
+            throw UsageError{
+                Cli::tr("--falloff takes a ratio width in [0, 1] (0: discrete), not “%1”").arg(in.value("falloff"))};
+    }
+
     const QString path = in.argument(0);
     auto doc = openProject(path);
     const model::LightOptimisationReport report = model::optimiseLightForJob(doc->data(), path, job, request);
@@ -223,9 +313,18 @@ int runOptimiseLight(const Invocation& in)
                 {"ratio_after", double(a.ratio)}, {"in_window_before", b.inWindow}, {"in_window_after", a.inWindow}});
         }
         QJsonArray iterations;
-        for (const algo::LightIteration& it : report.run.iterations)
-            iterations.append(QJsonObject{{"tried", it.tried}, {"objective", it.objective},
-                {"light", model::vec3Json(it.light)}, {"step", it.step}, {"accepted", it.accepted}});
+        for (const algo::LightIteration& it : report.run.iterations) {
+            QJsonArray ratios;
+            for (float r : it.ratios)
+                ratios.append(double(r));
+            iterations.append(
+                QJsonObject{{"tried", it.tried}, {"objective", it.objective}, {"light", model::vec3Json(it.light)},
+                    {"step", it.step}, {"accepted", it.accepted}, {"ratios", ratios}});
+        }
+        QJsonArray search;
+        for (const algo::LightSearchVisit& v : report.search.visits)
+            search.append(QJsonObject{
+                {"light", model::vec3Json(v.light)}, {"mse", v.value}, {"step", v.step}, {"accepted", v.accepted}});
         printJson({{"frame", report.frame}, {"size", QJsonArray{report.width, report.height}},
             {"camera",
                 QJsonObject{{"eye", model::vec3Json(report.camera.eye)},
@@ -235,9 +334,16 @@ int runOptimiseLight(const Invocation& in)
             {"window",
                 QJsonArray{QString::number(double(request.analysis.window.low), 'g', 6).toDouble(),
                     QString::number(double(request.analysis.window.high), 'g', 6).toDouble()}},
-            {"seed", QString::number(request.optimiser.seed)}, {"light_before", lightJson(report.before)},
-            {"light_after", lightJson(report.after)}, {"objective_before", report.run.objectiveBefore},
-            {"objective_after", report.run.objectiveAfter}, {"iterations", iterations}, {"segments", segments},
+            {"seed", QString::number(request.optimiser.seed)},
+            {"objective", model::lightObjectiveName(request.objective)},
+            {"start", request.start == model::LightStart::Camera ? "camera" : "current"},
+            {"falloff", request.optimiser.falloff}, {"light_before", lightJson(report.before)},
+            {"light_start", lightJson(report.start)}, {"light_after", lightJson(report.after)},
+            {"objective_before", report.ratiosBefore}, {"objective_after", report.ratiosAfter},
+            {"objectives",
+                QJsonObject{{"ratios", QJsonObject{{"before", report.ratiosBefore}, {"after", report.ratiosAfter}}},
+                    {"depth_error", QJsonObject{{"before", report.mseBefore}, {"after", report.mseAfter}}}}},
+            {"iterations", iterations}, {"search", search}, {"segments", segments},
             {"segments_in_window",
                 QJsonArray{
                     algo::segmentsInWindow(report.segmentsBefore), algo::segmentsInWindow(report.segmentsAfter)}},
@@ -292,12 +398,21 @@ std::vector<SubCommand> analysisCommands()
     std::vector<OptionSpec> analyseOptions = camera_options::specs();
     const std::vector<OptionSpec> picture
         = {{"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to analyse (default 0).")},
+            {"frames", "A-B[:STEP]",
+                QT_TRANSLATE_NOOP("celform::app::Cli",
+                    "Frames to analyse, A-B inclusive, every STEP-th (default 1), through the shot camera unless a "
+                    "camera is given; --json lists them under \"frames\", --out needs a # for the frame number.")},
+            {"csv", "FILE",
+                QT_TRANSLATE_NOOP("celform::app::Cli",
+                    "With --frames: a row per frame (frame, mse, rmse, segments, segments_in_window, "
+                    "milliseconds).")},
             {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Picture size (default 1280x720).")}};
     const std::vector<OptionSpec> look = lookOverrideSpecs();
     const std::vector<OptionSpec> analysis = {window, depthThreshold, minPixels, {"json", nullptr, kJsonOption},
         {"out", "FILE.exr",
             QT_TRANSLATE_NOOP("celform::app::Cli",
-                "Write the picture and the buffers (curvature, segment ids, depth, depth error, features) as EXR "
+                "Write the picture and the buffers (curvature, segment ids, depth, depth error, features, N.L and "
+                "the light gradient) as EXR "
                 "channels.")}};
     for (const auto* part : {&picture, &look, &analysis})
         analyseOptions.insert(analyseOptions.end(), part->begin(), part->end());
@@ -317,17 +432,29 @@ std::vector<SubCommand> analysisCommands()
                 "annealing (shrinking random steps) or random (independent random lights, the best kept).")},
         {"iterations", "N", QT_TRANSLATE_NOOP("celform::app::Cli", "Iterations (default 64).")},
         {"seed", "S", QT_TRANSLATE_NOOP("celform::app::Cli", "Seed of the annealing and random methods (default 1).")},
+        {"objective", "ratios|depth-error|both",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "ratios (the thesis's, may raise the depth error), depth-error (a search minimising the depth "
+                "error from the ratios' answer) or both (the default: the ratios' light unless it raises the depth "
+                "error, else the best depth error met; never above the start's).")},
+        {"start", "current|camera",
+            QT_TRANSLATE_NOOP(
+                "celform::app::Cli", "Start from the project's light (current, the default) or at the camera.")},
+        {"falloff", "W",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Width of figure 5.8's linear fall-off outside the window (default 0.1; 0: discrete).")},
         depthThreshold, minPixels,
         {"dry-run", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Report the light found without saving it.")},
         {"json", nullptr, kJsonOption}};
     optimiseOptions.insert(optimiseOptions.end(), optimiseMore.begin(), optimiseMore.end());
     return {
         {"analyze",
-            {"celform analyze P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] [--size WxH] "
+            {"celform analyze P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames "
+             "A-B[:STEP]] "
+             "[--size WxH] "
              "[--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] [--light point:X,Y,Z|directional:X,Y,Z] "
-             "[--subdivision N] [--window LO,HI|lenient|medium|strict] [--depth-threshold FRACTION] [--min-pixels N] "
-             "[--json] "
-             "[--out FILE.exr]"},
+             "[--ridge-threshold T] [--subdivision N] [--window LO,HI|lenient|medium|strict] "
+             "[--depth-threshold FRACTION] [--min-pixels N] [--json] [--csv FILE] [--out FILE.exr]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error."),
             {{"P", kProjectArgument}}, analyseOptions, runAnalyse},
@@ -345,8 +472,9 @@ std::vector<SubCommand> analysisCommands()
         {"optimize-light",
             {"celform optimize-light P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] "
              "[--size WxH] [--window LO,HI|lenient|medium|strict] [--weight constant|area] "
-             "[--method gradient|annealing|random] [--iterations N] [--seed S] [--depth-threshold FRACTION] "
-             "[--min-pixels N] [--dry-run] [--json]"},
+             "[--method gradient|annealing|random] [--iterations N] [--seed S] "
+             "[--objective ratios|depth-error|both] [--start current|camera] [--falloff W] "
+             "[--depth-threshold FRACTION] [--min-pixels N] [--dry-run] [--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Moves the key light so that every segment's bright/dark ratio gets into the window, and saves "
                 "the project."),

@@ -18,8 +18,43 @@ namespace {
 
 const char* const kFrameOption = QT_TRANSLATE_NOOP("celform::app::Cli", "Frame of the deformation (default 0).");
 
+/// `key set`: a key's deformation at a frame from a mesh (paper 1, section 4.2: keyed frames such
+/// as the front and side views at frames 10 and 30), replacing one stored there; one undo step.
+int runKeySet(const Invocation& in)
+{
+    if (!in.isSet("key") || !in.isSet("mesh"))
+        throw UsageError{Cli::tr("key set needs --key and --mesh")};
+    if (in.isSet("name") || in.isSet("from-base") || in.isSet("drawing")
+        || in.countSet({"view", "eye", "target", "up"}) > 0)
+        throw UsageError{Cli::tr("key set takes only --key, --mesh, --frame and --json")};
+    const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    const QString path = in.argument(1);
+    auto doc = openProject(path);
+    if (!doc->hasMesh())
+        throw model::IoError(path, Cli::tr("has no base model"));
+    const model::KeyViewpoint* key = doc->data().keyByName(in.value("key"));
+    if (!key)
+        throw model::IoError(path, Cli::tr("has no key named “%1”").arg(in.value("key")));
+    const model::ObjectId id = key->id;
+    for (const QString& w :
+        doc->keys().importKeyDeformation(id, model::importMesh(in.value("mesh")), in.value("mesh"), frame))
+        printErr(Cli::tr("warning: %1: %2").arg(in.value("mesh"), w));
+    doc->saveAs(path);
+    if (in.isSet("json")) {
+        const model::KeyViewpoint& set = *doc->data().key(id);
+        QJsonArray frames;
+        for (const auto& [f, offsets] : set.offsetsByFrame)
+            frames.append(f);
+        printJson({{"id", double(set.id)}, {"name", set.name}, {"frame", frame},
+            {"moved_vertices", double(set.offsetsByFrame.at(frame).indices.size())}, {"keyed_frames", frames}});
+    }
+    return kExitOk;
+}
+
 int runKey(const Invocation& in)
 {
+    if (in.argument(0) == QLatin1String("set"))
+        return runKeySet(in);
     if (in.argument(0) != QLatin1String("add"))
         throw UsageError{Cli::tr("unknown key action “%1”").arg(in.argument(0))};
     if (!in.isSet("name") || in.isSet("mesh") == in.isSet("from-base"))
@@ -191,6 +226,7 @@ std::vector<OptionSpec> evalOptions()
 std::vector<SubCommand> keyCommands()
 {
     std::vector<OptionSpec> keyOptions = {{"name", "N", QT_TRANSLATE_NOOP("celform::app::Cli", "Name of the new key.")},
+        {"key", "NAME", QT_TRANSLATE_NOOP("celform::app::Cli", "set: the key whose deformation is set.")},
         {"mesh", "KEY.obj",
             QT_TRANSLATE_NOOP(
                 "celform::app::Cli", "Key deformation: a mesh with the base model's vertex count and order.")},
@@ -205,10 +241,13 @@ std::vector<SubCommand> keyCommands()
     return {
         {"key",
             {"celform key add P --name N (--mesh KEY.obj | --from-base) (--view X,Y,Z | --eye X,Y,Z --target X,Y,Z "
-             "--up X,Y,Z) [--frame F] [--drawing IMAGE] [--json]"},
-            QT_TRANSLATE_NOOP("celform::app::Cli", "Adds a key viewpoint with its key deformation."),
-            {{"add", QT_TRANSLATE_NOOP("celform::app::Cli", "The action (add).")}, {"P", kProjectArgument}}, keyOptions,
-            runKey},
+             "--up X,Y,Z) [--frame F] [--drawing IMAGE] [--json]",
+                "celform key set P --key NAME --mesh M.obj [--frame F] [--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Adds a key viewpoint with its key deformation (add), or sets an existing key's deformation at a "
+                "frame from a mesh, replacing one stored there (set)."),
+            {{"add", QT_TRANSLATE_NOOP("celform::app::Cli", "The action (add or set).")}, {"P", kProjectArgument}},
+            keyOptions, runKey},
         {"brush",
             {"celform brush P --key N --vertex I --radius R (--drag DX,DY | --push DZ) [--falloff C] [--strength S] "
              "[--mirror auto|x|y|z|off] [--frame F] [--json]"},

@@ -119,13 +119,6 @@ int runRender(const Invocation& in)
         throw UsageError{Cli::tr("give either --frame or --frames")};
     model::RenderJob job;
     readPictureOptions(in, job);
-    if (in.isSet("ridge-threshold")) {
-        const double t = parseFloat("ridge-threshold", in.value("ridge-threshold"));
-        if (t < 0)
-            throw UsageError{
-                Cli::tr("--ridge-threshold takes a number >= 0, not “%1”").arg(in.value("ridge-threshold"))};
-        job.ridgeThreshold = float(t);
-    }
     if (in.isSet("frames")) {
         const FrameRange range = parseFrameRange("frames", in.value("frames"));
         job.firstFrame = range.first;
@@ -229,23 +222,18 @@ std::vector<SubCommand> lookCommands()
                     "(a # in --out, or _####, is the frame number).")},
             {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Image size (default 1280x720).")}};
     const std::vector<OptionSpec> look = lookOverrideSpecs();
-    const std::vector<OptionSpec> rest
-        = {{"ridge-threshold", "T",
-               QT_TRANSLATE_NOOP("celform::app::Cli",
-                   "Apparent-ridge threshold for this render: view-dependent curvature times the median edge "
-                   "length (default: the project's, 0.3 in new projects; lower draws more).")},
-            {"stereo", "MODE", QT_TRANSLATE_NOOP("celform::app::Cli", "Stereo output.")},
-            {"pass", "NAME", QT_TRANSLATE_NOOP("celform::app::Cli", "Write one render pass.")},
-            {"out", "FILE",
-                QT_TRANSLATE_NOOP("celform::app::Cli", "Output image (default: the project's name with .png).")},
-            {"threads", "N",
-                QT_TRANSLATE_NOOP("celform::app::Cli",
-                    "Frames rendered at once (default: one per processor; fewer when memory is short). The "
-                    "files are the same for any N.")},
-            {"skip-existing", nullptr,
-                QT_TRANSLATE_NOOP("celform::app::Cli",
-                    "Leave frames whose file exists as they are (to resume an interrupted render).")},
-            {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print the frames written and skipped as JSON.")}};
+    const std::vector<OptionSpec> rest = {{"stereo", "MODE", QT_TRANSLATE_NOOP("celform::app::Cli", "Stereo output.")},
+        {"pass", "NAME", QT_TRANSLATE_NOOP("celform::app::Cli", "Write one render pass.")},
+        {"out", "FILE",
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Output image (default: the project's name with .png).")},
+        {"threads", "N",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Frames rendered at once (default: one per processor; fewer when memory is short). The "
+                "files are the same for any N.")},
+        {"skip-existing", nullptr,
+            QT_TRANSLATE_NOOP(
+                "celform::app::Cli", "Leave frames whose file exists as they are (to resume an interrupted render).")},
+        {"json", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Print the frames written and skipped as JSON.")}};
     for (const auto* part : {&more, &look, &rest})
         renderOptions.insert(renderOptions.end(), part->begin(), part->end());
     return {

@@ -30,7 +30,9 @@ int runOffsets(const Invocation& in)
     if (in.countSet({"auto", "clear", "smooth"}) != 1)
         throw UsageError{Cli::tr("exactly one of --auto, --clear or --smooth is required")};
     const bool automatic = in.isSet("auto");
-    if (!automatic && in.countSet({"view", "eye", "target", "up", "size", "aggressiveness", "percentile", "bleed"}) > 0)
+    if (!automatic
+        && in.countSet({"view", "eye", "target", "up", "size", "aggressiveness", "percentile", "bleed", "segments"})
+            > 0)
         throw UsageError{Cli::tr("camera, picture and solve options go with --auto only")};
     // The camera and picture as `celform analyze` takes them; the look is the project's own.
     model::RenderJob job;
@@ -50,6 +52,12 @@ int runOffsets(const Invocation& in)
         request.bleed = parseInt("bleed", in.value("bleed"));
         if (request.bleed < 0 || request.bleed > model::kMaxOffsetRounds)
             throw UsageError{Cli::tr("--bleed must be a whole number from 0 to %1").arg(model::kMaxOffsetRounds)};
+    }
+    if (in.isSet("segments")) {
+        const std::pair<const char*, model::OffsetSegments> choices[]
+            = {{"outside", model::OffsetSegments::Outside}, {"all", model::OffsetSegments::All}};
+        request.segments
+            = parseChoice(in.value("segments"), choices, Cli::tr("--segments must be outside or all, not “%1”"));
     }
     int rounds = 0;
     if (in.isSet("smooth")) {
@@ -86,6 +94,7 @@ int runOffsets(const Invocation& in)
         json.insert("aggressiveness", double(request.aggressiveness));
         json.insert("percentile", double(request.percentile));
         json.insert("bleed", request.bleed);
+        json.insert("segments_solved", request.segments == model::OffsetSegments::All ? "all" : "outside");
         json.insert("segments", segments);
         json.insert("depth_error_mse", QJsonObject{{"before", result.mseBefore}, {"after", result.mseAfter}});
         json.insert("iterations", result.report.iterations);
@@ -127,8 +136,11 @@ std::vector<SubCommand> offsetsCommands()
     const std::vector<OptionSpec> more = {
         {"auto", nullptr,
             QT_TRANSLATE_NOOP("celform::app::Cli",
-                "Automatic per-segment offsets for the view: each segment of the depth analysis gets the ratio "
-                "1 - Q.")},
+                "Automatic per-segment offsets for the view: each segment of the depth analysis outside the "
+                "ratio window 0.35-0.65 (or every segment, --segments all) gets the ratio 1 - Q.")},
+        {"segments", "outside|all",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Which segments --auto solves: outside the window (the default, thesis 4.3) or all.")},
         {"clear", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Remove the target's offsets.")},
         {"smooth", "N",
             QT_TRANSLATE_NOOP("celform::app::Cli", "N rounds of smoothing over the mesh's vertex neighbours.")},
@@ -149,7 +161,8 @@ std::vector<SubCommand> offsetsCommands()
     return {
         {"offsets",
             {"celform offsets P --auto [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] "
-             "[--size WxH] [--aggressiveness A] [--percentile Q] [--bleed N] [--key NAME] [--json]",
+             "[--size WxH] [--aggressiveness A] [--percentile Q] [--bleed N] [--segments outside|all] [--key NAME] "
+             "[--json]",
                 "celform offsets P --clear [--key NAME] [--frame F] [--json]",
                 "celform offsets P --smooth N [--key NAME] [--frame F] [--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",

@@ -341,7 +341,11 @@ std::vector<OptionSpec> lookOverrideSpecs()
         {"subdivision", "N",
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Loop subdivision level of this picture, 0 (the control mesh) to 3 (default: the project's "
-                "render level).")}};
+                "render level).")},
+        {"ridge-threshold", "T",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Apparent-ridge threshold for this picture: view-dependent curvature times the median edge "
+                "length (default: the project's, 0.3 in new projects; lower draws more).")}};
 }
 
 void readCameraOptions(const Invocation& in, model::RenderJob& job)
@@ -372,6 +376,13 @@ void readPictureOptions(const Invocation& in, model::RenderJob& job)
     job.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
     job.subdivision
         = optionalValue(in, "subdivision", [](const QString& v) { return parseSubdivision("subdivision", v); });
+    if (in.isSet("ridge-threshold")) {
+        const double t = parseFloat("ridge-threshold", in.value("ridge-threshold"));
+        if (t < 0)
+            throw UsageError{
+                Cli::tr("--ridge-threshold takes a number >= 0, not “%1”").arg(in.value("ridge-threshold"))};
+        job.ridgeThreshold = float(t);
+    }
 }
 
 } // namespace celform::app

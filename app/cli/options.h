@@ -115,14 +115,15 @@ void checkCombination(const Invocation& in, bool required);
 [[nodiscard]] Eigen::Vector3d view(const Invocation& in);
 } // namespace camera_options
 
-/// The look overrides readPictureOptions reads, --style, --lines and --light: their entries for the
-/// option lists of `render` and `analyze`.
+/// The look overrides readPictureOptions reads, --style, --lines, --light and --ridge-threshold:
+/// their entries for the option lists of `render` and `analyze`.
 std::vector<OptionSpec> lookOverrideSpecs();
 
 /// The camera (--view, or --eye, --target and --up), --frame and --size, read into job.
 void readCameraOptions(const Invocation& in, model::RenderJob& job);
 /// The picture options `render` and `analyze` share, read into job: the camera (--view, or --eye,
-/// --target and --up), --frame, --size, and the look overrides --style, --lines and --light.
+/// --target and --up), --frame, --size, and the look overrides --style, --lines, --light and
+/// --ridge-threshold.
 void readPictureOptions(const Invocation& in, model::RenderJob& job);
 
 } // namespace celform::app

@@ -508,7 +508,8 @@ bool MainWindow::importKeyDeformation(model::ObjectId key, const QString& path)
     if (!outcome)
         return false;
     try {
-        showWarnings(path, m_document->keys().importKeyDeformation(key, *outcome, path));
+        // At the playhead (issue 26): a new keyed frame there, or the one stored there replaced.
+        showWarnings(path, m_document->keys().importKeyDeformation(key, *outcome, path, m_document->currentFrame()));
     } catch (const model::IoError& e) {
         showError(e.message());
         return false;

@@ -58,8 +58,8 @@ public:
     bool save();
     bool saveAs(const QString& path = {});
     /// Reads a mesh as a job (JobRunner, as every import) and makes it a key's deformation at
-    /// frame 0 (one undo step); Properties > Import Deformation asks for the file. Errors are
-    /// shown (interactive) or logged (batch); returns success.
+    /// the playhead's frame, replacing one stored there (one undo step); Properties > Import Deformation asks for the
+    /// file. Errors are shown (interactive) or logged (batch); returns success.
     bool importKeyDeformation(model::ObjectId key, const QString& path);
     /// An error in the Log, the status bar and (interactive mode) a message box.
     void showError(const QString& message);

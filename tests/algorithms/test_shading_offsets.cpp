@@ -245,6 +245,49 @@ private slots:
         QCOMPARE(values[2], 0.f);
     }
 
+    // Issue 26, fix 6: a vertex touched by five segments counts every one's votes. The fifth
+    // segment to reach the centre of a fan of five triangles votes the most; four fixed slots
+    // dropped it silently.
+    void fifthSegmentVotesCount()
+    {
+        Faces faces(5, 3);
+        for (int f = 0; f < 5; ++f)
+            faces.row(f) << 0, 1 + f, 1 + (f + 1) % 5;
+        const VertexNeighbours neighbours = buildVertexNeighbours(faces, 6);
+        // One row of pixels: segments 0-3 one pixel each on faces 0-3, barely touching vertex 0;
+        // segment 4 four pixels on face 4, mostly on vertex 0.
+        const int width = 8;
+        std::vector<std::int32_t> faceId{0, 1, 2, 3, 4, 4, 4, 4}, labels{0, 1, 2, 3, 4, 4, 4, 4};
+        std::vector<Eigen::Vector3f> barycentric(width, Eigen::Vector3f(0.9f, 0.05f, 0.05f));
+        for (int i = 0; i < 4; ++i)
+            barycentric[std::size_t(i)] = Eigen::Vector3f(0.1f, 0.45f, 0.45f);
+        std::vector<float> baseline(width, 0.f);
+        SegmentOffsetInput in;
+        in.width = width;
+        in.height = 1;
+        in.faceId = faceId.data();
+        in.barycentric = barycentric.data();
+        in.baseline = baseline.data();
+        in.labels = labels.data();
+        in.segmentCount = 5;
+        in.faces = &faces;
+        in.neighbours = &neighbours;
+        std::vector<float> field(6, 0.f);
+        SegmentOffsetScratch scratch;
+        SegmentOffsetReport report;
+        QVERIFY(solveSegmentOffsets(in, SegmentOffsetSettings{}, field, scratch, &report));
+        QCOMPARE(report.vertexSegment[0], 4);
+        // Only the chosen segments are solved (issue 26, fix 5): leaving out segment 4, the
+        // centre keeps its value and segment 4 counts as uncovered.
+        const std::vector<std::uint8_t> solve{1, 1, 1, 1, 0};
+        in.solve = solve.data();
+        field.assign(6, 0.f);
+        QVERIFY(solveSegmentOffsets(in, SegmentOffsetSettings{}, field, scratch, &report));
+        QCOMPARE(report.vertexSegment[0], -1);
+        QCOMPARE(report.covered[4], std::uint8_t(0));
+        QCOMPARE(field[0], 0.f);
+    }
+
     void refusesBadInput()
     {
         Scene scene = makeScene(dentedSphere(), 96, Eigen::Vector3f(-0.6f, 0.7f, 0.4f));

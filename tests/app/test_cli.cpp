@@ -5,6 +5,7 @@
 
 #include "cli/command_line.h"
 
+#include "celform/model/io/mesh_io.h"
 #include "celform/model/io/project_file.h"
 
 #include <QJsonArray>
@@ -450,6 +451,41 @@ private slots:
             {"render", p, "--size", "4096x4096", "--stereo", "anaglyph", "--out", png}, 2ll << 30, 60000);
         QCOMPARE(r.exitCode, 2);
         QVERIFY(!QFileInfo::exists(png));
+    }
+
+    // Issue 26, fix 3: `key set` keys an existing key at a second frame from a mesh.
+    void keySetKeysASecondFrame()
+    {
+        const QString project = bunnyProject();
+        if (project.isEmpty())
+            QSKIP("shared test data not found: ../shared/data/meshes/npm_bunny.off");
+        const QString p = m_dir.filePath(QStringLiteral("keyset.celform"));
+        QFile::remove(p);
+        QVERIFY(QFile::copy(project, p));
+        QCOMPARE(runCelform({"key", "add", p, "--name", "front", "--from-base", "--view", "0,0,1"}).exitCode, 0);
+        const QString base = m_dir.filePath(QStringLiteral("keyset-base.obj"));
+        QCOMPARE(runCelform({"eval", p, "--view", "0,0,1", "--frame", "30", "--out", base}).exitCode, 0);
+        celform::model::MeshImport side = celform::model::importMesh(base);
+        side.mesh.vertices(7, 1) += 0.05f;
+        const QString mesh = m_dir.filePath(QStringLiteral("keyset-side.obj"));
+        celform::model::exportMesh(side.mesh, mesh);
+        Run r = runCelform({"key", "set", p, "--key", "front", "--mesh", mesh, "--frame", "30", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject set = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(set["frame"].toInt(), 30);
+        QCOMPARE(set["keyed_frames"].toArray().size(), 2);
+        QVERIFY(set["moved_vertices"].toInt() >= 1);
+        const QString at30 = m_dir.filePath(QStringLiteral("keyset-30.obj"));
+        QCOMPARE(runCelform({"eval", p, "--view", "0,0,1", "--frame", "30", "--out", at30}).exitCode, 0);
+        const celform::model::MeshImport shown = celform::model::importMesh(at30);
+        QVERIFY((shown.mesh.vertices.row(7) - side.mesh.vertices.row(7)).norm() < 1e-5f);
+        // Frame 0 keeps the copy of the base.
+        const QString at0 = m_dir.filePath(QStringLiteral("keyset-0.obj"));
+        QCOMPARE(runCelform({"eval", p, "--view", "0,0,1", "--frame", "0", "--out", at0}).exitCode, 0);
+        QVERIFY((celform::model::importMesh(at0).mesh.vertices.row(7) - side.mesh.vertices.row(7)).norm() > 0.04f);
+        // An unknown key is bad input; a missing --mesh is a usage error.
+        QCOMPARE(runCelform({"key", "set", p, "--key", "nobody", "--mesh", mesh}).exitCode, 3);
+        QCOMPARE(runCelform({"key", "set", p, "--key", "front"}).exitCode, 2);
     }
 
     void viewDependentWorkflow()

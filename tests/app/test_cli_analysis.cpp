@@ -83,6 +83,70 @@ private slots:
             < error.value(QStringLiteral("feature_pixels")).toDouble());
     }
 
+    // Issue 26, fix 7: analyze takes --ridge-threshold as render does; a lower threshold draws
+    // more ridges, so more feature pixels.
+    void analyzeTakesTheRidgeThreshold()
+    {
+        auto features = [](const char* threshold) {
+            const Run r = runCelform({QStringLiteral("analyze"), sample(), QStringLiteral("--size"),
+                QStringLiteral("160x120"), QStringLiteral("--lines"), QStringLiteral("ridge"),
+                QStringLiteral("--ridge-threshold"), QLatin1String(threshold), QStringLiteral("--json")});
+            if (r.exitCode != 0)
+                qWarning("%s", qPrintable(r.err));
+            return QJsonDocument::fromJson(r.out.toUtf8())
+                .object()
+                .value(QStringLiteral("depth_error"))
+                .toObject()
+                .value(QStringLiteral("feature_pixels"))
+                .toDouble(-1.0);
+        };
+        const double few = features("5");
+        const double many = features("0.05");
+        QVERIFY2(few >= 0.0 && many > few, qPrintable(QStringLiteral("%1 %2").arg(few).arg(many)));
+        QCOMPARE(
+            runCelform({QStringLiteral("analyze"), sample(), QStringLiteral("--ridge-threshold"), QStringLiteral("-1")})
+                .exitCode,
+            2);
+    }
+
+    // Issue 26, "along the timeline": a frame range in one process, JSON per frame, a CSV row per
+    // frame and one EXR per frame through a # pattern.
+    void analyzeTakesAFrameRange()
+    {
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("shot.csv"));
+        const QString exr = dir.filePath(QStringLiteral("shot_##.exr"));
+        // The sample with its 48-frame turntable (a camera path).
+        const QString shot = QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform");
+        const Run r = runCelform({QStringLiteral("analyze"), shot, QStringLiteral("--size"), QStringLiteral("160x120"),
+            QStringLiteral("--frames"), QStringLiteral("0-8:4"), QStringLiteral("--json"), QStringLiteral("--csv"), csv,
+            QStringLiteral("--out"), exr});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonArray frames = json.value(QStringLiteral("frames")).toArray();
+        QCOMPARE(frames.size(), 3);
+        QCOMPARE(frames[2].toObject().value(QStringLiteral("frame")).toInt(), 8);
+        QVERIFY(frames[0].toObject().value(QStringLiteral("depth_error")).toObject().contains(QStringLiteral("mse")));
+        // The shot camera moves: frame 0's eye is not frame 8's.
+        QVERIFY(frames[0].toObject().value(QStringLiteral("camera")).toObject().value(QStringLiteral("eye"))
+            != frames[2].toObject().value(QStringLiteral("camera")).toObject().value(QStringLiteral("eye")));
+        QCOMPARE(json.value(QStringLiteral("size")).toArray().size(), 2);
+        QFile rows(csv);
+        QVERIFY(rows.open(QIODevice::ReadOnly | QIODevice::Text));
+        const QStringList lines = QString::fromUtf8(rows.readAll()).trimmed().split(QLatin1Char('\n'));
+        QCOMPARE(lines.size(), 4);
+        QCOMPARE(lines[0], QStringLiteral("frame,mse,rmse,segments,segments_in_window,milliseconds"));
+        QVERIFY(lines[2].startsWith(QStringLiteral("4,")));
+        for (const char* name : {"shot_00.exr", "shot_04.exr", "shot_08.exr"})
+            QVERIFY2(QFile::exists(dir.filePath(QLatin1String(name))), name);
+        // --out without a # and --csv without --frames are usage errors.
+        QCOMPARE(runCelform({QStringLiteral("analyze"), sample(), QStringLiteral("--frames"), QStringLiteral("0-1"),
+                                QStringLiteral("--out"), dir.filePath(QStringLiteral("a.exr"))})
+                     .exitCode,
+            2);
+        QCOMPARE(runCelform({QStringLiteral("analyze"), sample(), QStringLiteral("--csv"), csv}).exitCode, 2);
+    }
+
     void analyzeWritesTheBuffersAsExr()
     {
         QTemporaryDir dir;
@@ -101,7 +165,9 @@ private slots:
         const QString info = QString::fromUtf8(p.readAllStandardOutput());
         QVERIFY2(info.contains(QStringLiteral("320 x  240")) || info.contains(QStringLiteral("320 x 240")),
             qPrintable(info));
-        for (const char* channel : {"curvature.K", "segment.ID", "depth.Z", "depth_error.Z", "feature.Y"})
+        // Issue 26, fix 8: N.L and the light gradient (figure 4.3) too.
+        for (const char* channel : {"curvature.K", "segment.ID", "depth.Z", "depth_error.Z", "feature.Y",
+                 "shading.NdotL", "light_gradient.X", "light_gradient.Y", "light_gradient.Z"})
             QVERIFY2(info.contains(QLatin1String(channel)), channel);
     }
 

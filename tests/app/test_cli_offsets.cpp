@@ -86,6 +86,8 @@ private slots:
         QTest::newRow("aggressiveness") << QStringList{"--auto", "--aggressiveness", "1.5"} << 2;
         QTest::newRow("percentile") << QStringList{"--auto", "--percentile", "-0.1"} << 2;
         QTest::newRow("bleed") << QStringList{"--auto", "--bleed", "-1"} << 2;
+        QTest::newRow("segments") << QStringList{"--auto", "--segments", "inside"} << 2;
+        QTest::newRow("segments without auto") << QStringList{"--clear", "--segments", "all"} << 2;
         QTest::newRow("smooth zero") << QStringList{"--smooth", "0"} << 2;
         QTest::newRow("camera without auto") << QStringList{"--clear", "--view", "0,0,1"} << 2;
         QTest::newRow("unknown key") << QStringList{"--clear", "--key", "nobody"} << 3;

@@ -324,8 +324,8 @@ private slots:
     void lightOptimisationSaysWhatImproved()
     {
         model::LightOptimisationReport report;
-        report.run.objectiveBefore = 2.0;
-        report.run.objectiveAfter = 0.5;
+        report.ratiosBefore = 2.0;
+        report.ratiosAfter = 0.5;
         report.mseBefore = 3e-4;
         report.mseAfter = 2e-4;
         auto segments = [](int inside, int total) {
@@ -345,6 +345,10 @@ private slots:
         QVERIFY(summary.text.contains(QStringLiteral("14 of 23 segments inside it (before: 10)")));
         report.mseAfter = 4e-4;
         QVERIFY(app::summariseLightOptimisation(report).warning.contains(QStringLiteral("depth error rose")));
+        // With the default objective (both) a search that ran is said (issue 26).
+        report.mseAfter = 2e-4;
+        report.search.visits.resize(3);
+        QVERIFY(app::summariseLightOptimisation(report).text.contains(QStringLiteral("lowest depth error")));
     }
 };
 

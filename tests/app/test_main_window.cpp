@@ -221,6 +221,37 @@ private slots:
         QVERIFY(doc.data() == before);
     }
 
+    // Issue 26, fixes 2 and 3: Import Deformation imports at the playhead's frame, into a new
+    // keyed frame of the key or replacing the one stored there, one undo step each.
+    void keyDeformationImportsAtThePlayhead()
+    {
+        QTemporaryDir dir;
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(window.openFile(test::sampleProject()));
+        model::Document& doc = *window.document();
+        const model::ObjectId id = doc.keys().createKey(QStringLiteral("imported"), window.viewport()->camera());
+        doc.setCurrentFrame(12);
+        algo::TriMesh shape = *doc.data().baseMesh;
+        shape.vertices = doc.data().keyShape(*doc.data().key(id), 12);
+        shape.vertices(0, 1) += 0.25f;
+        const QString path = dir.filePath(QStringLiteral("deformed.obj"));
+        model::exportMesh(shape, path);
+        const int steps = doc.undoStack()->count();
+        QVERIFY(window.importKeyDeformation(id, path));
+        QCOMPARE(doc.undoStack()->count(), steps + 1);
+        QCOMPARE(doc.data().key(id)->offsetsByFrame.count(12), std::size_t(1));
+        QVERIFY((doc.data().keyShape(*doc.data().key(id), 12).row(0) - shape.vertices.row(0)).norm() < 1e-4f);
+        // Frame 0 keeps the key's copy of the base.
+        QVERIFY(
+            (doc.data().keyShape(*doc.data().key(id), 0).row(0) - doc.data().baseMesh->vertices.row(0)).norm() < 1e-6f);
+        // Again at the same frame: the stored deformation is replaced, one more step.
+        shape.vertices(0, 1) -= 0.5f;
+        model::exportMesh(shape, path);
+        QVERIFY(window.importKeyDeformation(id, path));
+        QCOMPARE(doc.undoStack()->count(), steps + 2);
+        QVERIFY((doc.data().keyShape(*doc.data().key(id), 12).row(0) - shape.vertices.row(0)).norm() < 1e-4f);
+    }
+
     void badFileLeavesDocumentAlone()
     {
         QTemporaryDir dir;

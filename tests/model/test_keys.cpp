@@ -249,6 +249,31 @@ private slots:
         QVERIFY(m_doc.data() == before);
     }
 
+    // Issue 26, fix 1: on an animated base the imported mesh is the shape at the frame, so the
+    // deformation is the mesh minus the base AT that frame, not minus the rest pose.
+    void importDeformationSubtractsTheBaseAtTheFrame()
+    {
+        ProjectData data = m_doc.data();
+        auto slide = std::make_shared<algo::BaseAnimation>(); // +x one unit per frame
+        slide->frameCount = 5;
+        algo::Positions delta = algo::Positions::Zero(6, 3);
+        delta.col(0).setOnes();
+        slide->morphTargets.push_back(delta);
+        slide->morphWeights = {0.f, 1.f, 2.f, 3.f, 4.f};
+        data.baseAnimation = slide;
+        m_doc.reset(std::move(data));
+        const ObjectId key = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}), {}, {}, 3);
+        algo::Positions scratch;
+        MeshImport imported;
+        imported.mesh = *m_doc.data().baseMesh;
+        imported.mesh.vertices = m_doc.data().basePositions(3, scratch);
+        imported.mesh.vertices(4, 2) += 0.5f;
+        QVERIFY(m_doc.keys().importKeyDeformation(key, imported, QStringLiteral("k.obj"), 3).isEmpty());
+        const SparseOffsets& offsets = m_doc.data().key(key)->offsetsByFrame.at(3);
+        QCOMPARE(offsets.indices, std::vector<std::uint32_t>{4});
+        QCOMPARE(offsets.deltas.front(), Eigen::Vector3f(0, 0, 0.5f));
+    }
+
     void blendAtKeyIsTheKeyAndBetweenIsBarycentric()
     {
         // Keys at +X, +Y, +Z with distinct offsets on vertex 4; Dummy mode adds the other axes.

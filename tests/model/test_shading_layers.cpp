@@ -7,6 +7,7 @@
 
 #include "celform/model/analysis/auto_offsets.h"
 #include "celform/model/analysis/depth_analysis.h"
+#include "celform/model/data/blend_evaluator.h"
 #include "celform/model/document/document.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/project_file.h"
@@ -223,6 +224,7 @@ private slots:
         request.width = 160;
         request.height = 160;
         request.percentile = 0.5f;
+        request.segments = OffsetSegments::All;
         const AutoOffsetsResult result = solveAutoOffsets(m_doc.data(), request);
         QVERIFY(!result.after.empty());
         // The solve reads the document and changes nothing; applying it is one undo step.
@@ -242,6 +244,71 @@ private slots:
         QCOMPARE(m_doc.data().shadingOffsets.size(), std::size_t(m_doc.data().baseMesh->vertexCount()));
         m_doc.undoStack()->undo();
         QVERIFY(m_doc.data().shadingOffsets.empty());
+    }
+
+    // Issue 26, fix 5: by default only the segments outside the window are solved (thesis 4.3).
+    void automaticOffsetsSolveOnlySegmentsOutsideTheWindow()
+    {
+        ProjectData data;
+        data.baseMesh = test::icosphere(4);
+        data.look.light.vector = Eigen::Vector3d(1.0, 0.2, 0.3);
+        m_doc.reset(std::move(data));
+        AutoOffsetsRequest request;
+        request.camera = cameraAt({0, 0, 5});
+        request.width = 96;
+        request.height = 96;
+        request.percentile = 0.5f;
+        const AutoOffsetsResult all = solveAutoOffsets(m_doc.data(), request);
+        QVERIFY(!all.before.empty());
+        const float ratio = all.before.front().ratio;
+        // A window around the sphere's ratio: nothing to solve, the values stay zero.
+        request.analysis.window = {std::max(0.f, ratio - 0.05f), std::min(1.f, ratio + 0.05f)};
+        const AutoOffsetsResult inside = solveAutoOffsets(m_doc.data(), request);
+        QCOMPARE(inside.report.covered.front(), std::uint8_t(0));
+        QCOMPARE(inside.after.front().ratio, inside.before.front().ratio);
+        for (float v : inside.values)
+            QCOMPARE(v, 0.f);
+        // --segments all solves it anyway.
+        request.segments = OffsetSegments::All;
+        const AutoOffsetsResult forced = solveAutoOffsets(m_doc.data(), request);
+        QCOMPARE(forced.report.covered.front(), std::uint8_t(1));
+        QVERIFY(std::abs(forced.after.front().ratio - 0.5f) <= 1.f / float(forced.after.front().pixels) + 1e-6f);
+    }
+
+    // Issue 26, fix 4: a key layer seen with a tiny weight stores values within the solve's bound,
+    // not the field divided by the weight (about +-2,500 for weights near 0.001).
+    void keyLayerOffsetsStayWithinTheLimit()
+    {
+        const ObjectId front = m_doc.keys().createKey(QStringLiteral("front"), cameraAt({0, 0, 5}));
+        const ObjectId side = m_doc.keys().createKey(QStringLiteral("side"), cameraAt({5, 0, 0}));
+        Q_UNUSED(front);
+        BlendEvaluator blend;
+        blend.update(m_doc.data());
+        // A view near the front key where the side key weighs little but more than 1e-3.
+        Eigen::Vector3d view = Eigen::Vector3d::UnitZ();
+        double weight = 0.0;
+        for (double angle = 0.0; angle < 1.5 && !(weight > 1e-3 && weight < 0.05); angle += 0.002) {
+            view = Eigen::Vector3d(std::sin(angle), 0.0, std::cos(angle));
+            weight = 0.0;
+            for (const KeyShare& share : blend.weights(m_doc.data(), view).shares)
+                if (share.key == side)
+                    weight = share.weight;
+        }
+        QVERIFY2(weight > 1e-3 && weight < 0.05, qPrintable(QString::number(weight)));
+        AutoOffsetsRequest request;
+        request.target = {side, 0};
+        request.camera = cameraAt(5.0 * view);
+        request.width = 96;
+        request.height = 96;
+        request.percentile = 0.05f; // nearly all bright: large offsets
+        request.segments = OffsetSegments::All;
+        const AutoOffsetsResult result = solveAutoOffsets(m_doc.data(), request);
+        const algo::SegmentOffsetSettings bound;
+        float largest = 0.f;
+        for (float v : result.values)
+            largest = std::max(largest, std::abs(v));
+        QVERIFY2(largest <= bound.limit, qPrintable(QString::number(double(largest))));
+        QVERIFY(largest > 0.f);
     }
 };
 

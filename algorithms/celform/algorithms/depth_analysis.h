@@ -87,8 +87,9 @@ Eigen::Vector3f shadingLightDerivative(const Eigen::Vector3f& l, const Eigen::Ve
 /// Fills out from a rendered picture and its G-buffer:
 /// - gbuffer: the centre eye's G-buffer (faceId, depth, barycentric, position);
 /// - normals: per pixel the shading normal (turned towards the viewer), as RenderPasses::normal;
-/// - beauty: the picture whose colour changes are the depth cues (feature pixels compare its colours
-///   quantised to 8 bits, as written to a file);
+/// - beauty: the picture whose colour changes are the depth cues (feature pixels compare its linear
+///   float colours, channels differing by more than 1/4096 — a sixteenth of an 8-bit step — as
+///   thesis 4.4's "any difference in RGB values"; nothing is quantised);
 /// - faces and vertexCurvature: the mesh and its smoothed Gaussian curvature per vertex.
 /// Off-model pixels are background: never features, no depth error, transparent to segments.
 /// With no feature pixel at all, the depth error is zero. Allocates only when sizes change.

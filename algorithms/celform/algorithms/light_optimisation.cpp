@@ -286,6 +286,7 @@ LightOptimisationResult optimiseLight(const ShadingSamples& samples, const Light
         if (usable) {
             evaluateLight(samples, candidate, settings, gradients, work.candidate);
             record.tried = work.candidate.objective;
+            record.ratios = ratios(samples, work.candidate);
             // Gradient: the thesis moves the light every iteration until it settles at a fixed point
             // (4.1.3, 5.0.2); a segment whose ratio sits at 0 or 1 pulls before its ratio can
             // answer, so single steps may make the sum worse on the way. Annealing (listing 4.2)

@@ -106,6 +106,9 @@ struct LightIteration {
     Eigen::Vector3d light = Eigen::Vector3d::Zero(); ///< the best light so far
     double step = 0.0; ///< the step tried (gradient, annealing); 0 for random positions
     bool accepted = false; ///< the light tried became the answer
+    /// Each segment's bright ratio under the light tried (empty when none was usable), so that
+    /// figure 5.8's ratios over the iterations can be plotted.
+    std::vector<float> ratios;
 };
 
 struct LightOptimisationResult {

@@ -151,23 +151,26 @@ bool solveSegmentOffsets(const SegmentOffsetInput& in, const SegmentOffsetSettin
     // Vertex to segment: a vote of the pixels of the faces around each vertex, weighted by the
     // pixels' barycentric coordinates (the thesis projects each vertex onto the label image;
     // voting also reaches vertices that fall between pixel centres or just behind a silhouette).
-    const std::pair<std::int32_t, float> emptySlot{-1, 0.f};
-    sc.votes.assign(nv, {emptySlot, emptySlot, emptySlot, emptySlot});
+    // Every vote is kept (no fixed number of slots per vertex): the corners' votes are grouped
+    // by vertex (counting sort), then each vertex's are summed per segment in place.
+    const auto chosen = [&in](std::int32_t s) { return !in.solve || in.solve[s] != 0; };
+    sc.voteStart.assign(nv + 1, 0);
+    for (std::size_t i = 0; i < count; ++i)
+        if (in.labels[i] >= 0)
+            for (int c = 0; c < 3; ++c)
+                ++sc.voteStart[std::size_t(faces(in.faceId[i], c)) + 1];
+    for (std::size_t v = 0; v < nv; ++v)
+        sc.voteStart[v + 1] += sc.voteStart[v];
+    sc.votes.resize(std::size_t(sc.voteStart[nv]));
+    sc.voteCursor.assign(sc.voteStart.begin(), sc.voteStart.end() - 1);
     for (std::size_t i = 0; i < count; ++i) {
         const std::int32_t s = in.labels[i];
         if (s < 0)
             continue;
         const std::int32_t f = in.faceId[i];
         for (int c = 0; c < 3; ++c) {
-            auto& slots = sc.votes[std::size_t(faces(f, c))];
-            const float w = std::max(in.barycentric[i][c], 0.f) + 1e-6f;
-            for (auto& slot : slots) {
-                if (slot.first == s || slot.first < 0) {
-                    slot.first = s;
-                    slot.second += w;
-                    break;
-                }
-            }
+            const std::size_t v = std::size_t(faces(f, c));
+            sc.votes[std::size_t(sc.voteCursor[v]++)] = {s, std::max(in.barycentric[i][c], 0.f) + 1e-6f};
         }
     }
     std::vector<std::int32_t> localSegment;
@@ -176,12 +179,28 @@ bool solveSegmentOffsets(const SegmentOffsetInput& in, const SegmentOffsetSettin
     sc.free.assign(nv, 0);
     sc.hasVertices.assign(ns, 0);
     for (std::size_t v = 0; v < nv; ++v) {
+        // Sum the vertex's votes per segment at the front of its range (few segments meet at a
+        // vertex, so the linear search is short); the first segment to reach the best sum wins.
+        auto* begin = sc.votes.data() + sc.voteStart[v];
+        auto* const end = sc.votes.data() + sc.voteStart[v + 1];
+        auto* distinct = begin;
+        for (auto* vote = begin; vote != end; ++vote) {
+            auto* same = std::find_if(begin, distinct, [vote](const auto& d) { return d.first == vote->first; });
+            if (same == distinct)
+                *distinct++ = *vote;
+            else
+                same->second += vote->second;
+        }
         float best = 0.f;
-        for (const auto& slot : sc.votes[v])
-            if (slot.first >= 0 && slot.second > best) {
-                best = slot.second;
-                vertexSegment[v] = slot.first;
+        for (auto* d = begin; d != distinct; ++d)
+            if (d->second > best) {
+                best = d->second;
+                vertexSegment[v] = d->first;
             }
+        // A vertex of a segment left alone (not chosen) keeps its value, so that segment's
+        // ratio stays as it is.
+        if (vertexSegment[v] >= 0 && !chosen(vertexSegment[v]))
+            vertexSegment[v] = -1;
         if (vertexSegment[v] >= 0) {
             sc.free[v] = 1;
             sc.hasVertices[std::size_t(vertexSegment[v])] = 1;

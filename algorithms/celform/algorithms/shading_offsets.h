@@ -59,11 +59,16 @@ struct SegmentOffsetInput {
     std::int32_t segmentCount = 0;
     const Faces* faces = nullptr;
     const VertexNeighbours* neighbours = nullptr; ///< of faces, over the field's vertices
+    /// Per segment, 1 for the segments to solve (null: all). The others get no vertices and are
+    /// left alone, as uncovered ones: thesis 4.3 offsets only the segments the light left with an
+    /// undesirable ratio (model::solveAutoOffsets chooses those outside the window by default).
+    const std::uint8_t* solve = nullptr;
 };
 
 /// Working memory kept between solves so that repeated solves do not allocate.
 struct SegmentOffsetScratch {
-    std::vector<std::array<std::pair<std::int32_t, float>, 4>> votes;
+    std::vector<std::pair<std::int32_t, float>> votes; ///< (segment, weight), grouped by vertex
+    std::vector<std::int32_t> voteStart, voteCursor;
     std::vector<std::int32_t> segmentStart, segmentPixels, cursor;
     std::vector<float> values, solved, smoothing, constants, steps, lastError;
     std::vector<std::uint8_t> free, hasVertices;
@@ -82,7 +87,8 @@ struct SegmentOffsetReport {
 /// Automatic per-segment offsets (paper 3, section 4.3). Each vertex belongs to the segment whose
 /// pixels, over the faces around it, vote for it most (each pixel votes for its face's three
 /// corners with their barycentric weights), so vertices hidden between pixel centres count too;
-/// vertices no labelled pixel sees belong to none and keep their value. Every segment s gets a
+/// vertices no labelled pixel sees belong to none and keep their value. Every segment's votes
+/// count, however many segments meet at a vertex. Every segment s gets a
 /// constant c_s on its vertices; the field is bled over the mesh (smoothVertexValues, segment
 /// vertices free); and since bleeding and the per-pixel interpolation change what each pixel
 /// gets, the constants are iterated: c_s += threshold - cut_s, cut_s being the value halfway

@@ -22,8 +22,10 @@ LightOptimisationSummary summariseLightOptimisation(const model::LightOptimisati
     const int before = algo::segmentsInWindow(report.segmentsBefore);
     const int after = algo::segmentsInWindow(report.segmentsAfter);
     const int segments = int(report.segmentsBefore.size());
-    const double distanceBefore = report.run.objectiveBefore;
-    const double distanceAfter = report.run.objectiveAfter;
+    // The ratios' objective of the light kept, which with the default objective (both) may be
+    // the depth-error search's rather than the ratios' run's best.
+    const double distanceBefore = report.ratiosBefore;
+    const double distanceAfter = report.ratiosAfter;
     const double closer = distanceBefore > 0.0 ? 100.0 * (distanceBefore - distanceAfter) / distanceBefore : 0.0;
     // What the optimiser lowers comes first (paper 3, 4.1: the segments' distance from the window),
     // then the count inside it, which may fall while the whole comes closer.
@@ -39,6 +41,9 @@ LightOptimisationSummary summariseLightOptimisation(const model::LightOptimisati
                        .arg(report.mseBefore, 0, 'g', 4)
                        .arg(report.mseAfter, 0, 'g', 4)
                        .arg(report.milliseconds, 0, 'f', 0);
+    if (!report.search.visits.empty())
+        summary.text += LightText::tr("; the ratios' light raised the depth error, so a search kept the light with "
+                                      "the lowest depth error it met");
     QStringList warnings;
     if (after < before)
         warnings << LightText::tr("Fewer segments are inside the window than before (%1 → %2 of %3): the ratios "

@@ -7,6 +7,7 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 
+#include <algorithm>
 #include <cmath>
 
 namespace celform::model {
@@ -115,6 +116,16 @@ AutoOffsetsResult solveAutoOffsets(const ProjectData& data, const AutoOffsetsReq
     input.segmentCount = std::int32_t(analysed.analysis.stats.size());
     input.faces = &mesh.faces;
     input.neighbours = &neighbours;
+    // Thesis 4.3 improves "segments that did not get a desirable bright/dark ratio from the solved
+    // light position": by default only those outside the window with the offsets now in effect.
+    std::vector<std::uint8_t> solve;
+    if (request.segments == OffsetSegments::Outside) {
+        // The segments follow curvature and depth, not the shading: both analyses have the same.
+        solve.assign(analysed.analysis.stats.size(), 1);
+        for (std::size_t s = 0; s < solve.size() && s < result.before.size(); ++s)
+            solve[s] = result.before[s].inWindow ? 0 : 1;
+        input.solve = solve.data();
+    }
     algo::SegmentOffsetSettings settings;
     settings.threshold = data.look.toon.thresholds.empty() ? 0.f : data.look.toon.thresholds.front();
     settings.percentile = request.percentile;
@@ -123,9 +134,17 @@ AutoOffsetsResult solveAutoOffsets(const ProjectData& data, const AutoOffsetsReq
     algo::SegmentOffsetScratch scratch;
     if (!algo::solveSegmentOffsets(input, settings, field, scratch, &result.report))
         throw EditRefused(tr("The automatic shading offsets could not be solved for this picture."));
+    // A key layer holds its share divided by the key's weight here; weights reach down to 1e-3, so
+    // the quotient is clamped to the solve's own bound (the field then holds what is stored).
     std::vector<float> values(n);
-    for (std::size_t v = 0; v < n; ++v)
-        values[v] = target.isBase() ? field[v] : float(double(field[v]) / weight);
+    for (std::size_t v = 0; v < n; ++v) {
+        if (target.isBase())
+            values[v] = field[v];
+        else {
+            values[v] = std::clamp(float(double(field[v]) / weight), -settings.limit, settings.limit);
+            field[v] = float(weight * double(values[v]));
+        }
+    }
     const QString problem = shadingOffsetsProblem(values, std::int64_t(n));
     if (!problem.isEmpty())
         throw EditRefused(tr("Shading offsets refused: %1.").arg(problem));

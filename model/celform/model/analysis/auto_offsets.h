@@ -15,6 +15,12 @@
 
 namespace celform::model {
 
+/// Which segments the automatic offsets solve.
+enum class OffsetSegments {
+    Outside, ///< those whose ratio is outside the window (thesis 4.3; the default)
+    All, ///< every covered segment, to exactly 1 - Q
+};
+
 /// What solveAutoOffsets is asked for.
 struct AutoOffsetsRequest {
     ShadingTarget target; ///< for the base, target.frame is the frame analysed
@@ -24,7 +30,8 @@ struct AutoOffsetsRequest {
     float aggressiveness = 1.f; ///< A in [0, 1]
     float percentile = 0.5f; ///< Q in [0, 1]: fraction of each segment left dark
     int bleed = 2; ///< rounds of bleeding over the mesh, [0, kMaxOffsetRounds]
-    AnalysisSettings analysis;
+    OffsetSegments segments = OffsetSegments::Outside;
+    AnalysisSettings analysis; ///< its window chooses the segments outside it
 };
 
 /// What it found: the target's new values, and the analysis before and after (segments are the
@@ -40,10 +47,12 @@ struct AutoOffsetsResult {
 };
 
 /// Solves the offsets of request.target for the view of request.camera at the target's frame: the
-/// offsets in effect there give each segment of the depth analysis the ratio 1 - Q
-/// (aggressiveness 1). Throws EditRefused (no base model or key, settings out of range, a key
-/// without weight in that view, a picture that cannot be solved). Three analyses; progress
-/// counts them.
+/// offsets in effect there give each segment of the depth analysis outside the window (or every
+/// segment, OffsetSegments::All) the ratio 1 - Q (aggressiveness 1). A key layer's values are its
+/// share of the field divided by the key's weight in this view, clamped to the solve's limit
+/// (algo::SegmentOffsetSettings::limit), so a key seen with little weight never stores huge values. Throws EditRefused
+/// (no base model or key, settings out of range, a key without weight in that view, a picture that cannot be solved).
+/// Three analyses; progress counts them.
 AutoOffsetsResult solveAutoOffsets(
     const ProjectData& data, const AutoOffsetsRequest& request, algo::Progress* progress = nullptr);
 

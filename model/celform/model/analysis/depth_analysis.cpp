@@ -12,6 +12,7 @@
 #include <QElapsedTimer>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace celform::model {
@@ -117,6 +118,31 @@ AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source,
     blender.shape(data, view.direction, job.firstFrame, view.shape);
     effectiveShadingOffsets(data, blender, view.direction, job.firstFrame, view.offsets);
     return view;
+}
+
+void analyseProjectFrames(const ProjectData& data, const QString& source, const RenderJob& job,
+    const AnalysisSettings& settings,
+    const std::function<void(int frame, const AnalysisView& view, const FrameAnalysis& analysis)>& visit)
+{
+    DepthAnalyser analyser;
+    FrameAnalysis out;
+    RenderJob one = job;
+    algo::Positions last;
+    // A generation of this sequence's own: kept while the shape stays the same (a still base seen
+    // from the keys' side), so the curvature is computed once; a new one when it moves.
+    static std::atomic<std::uint64_t> next{std::uint64_t(3) << 61};
+    std::uint64_t generation = 0;
+    for (int frame = job.firstFrame; frame <= job.lastFrame; frame += std::max(1, job.step)) {
+        one.firstFrame = one.lastFrame = frame;
+        const AnalysisView view = resolveAnalysisView(data, source, one);
+        if (generation == 0 || view.shape.rows() != last.rows() || view.shape != last) {
+            generation = next++;
+            last = view.shape;
+        }
+        analyser.analyse(data, view.look, view.shape, generation, frame, view.camera, job.size.width(),
+            job.size.height(), settings, out, &view.offsets);
+        visit(frame, view, out);
+    }
 }
 
 FrameAnalysis analyseProject(

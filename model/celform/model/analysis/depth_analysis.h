@@ -17,6 +17,7 @@
 #include <QStringList>
 
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -95,5 +96,14 @@ struct AnalysisView {
     std::vector<float> offsets;
 };
 AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source, const RenderJob& job);
+
+/// `celform analyze --frames`: frames job.firstFrame to job.lastFrame every job.step, each resolved
+/// and analysed as analyseProject does (the job's camera, or the shot camera at that frame),
+/// through one analyser and one FrameAnalysis, so the sequence reuses its buffers, and the
+/// curvature while the shape does not change. visit sees each frame's view and analysis before
+/// the next overwrites them. Throws IoError as analyseProject does.
+void analyseProjectFrames(const ProjectData& data, const QString& source, const RenderJob& job,
+    const AnalysisSettings& settings,
+    const std::function<void(int frame, const AnalysisView& view, const FrameAnalysis& analysis)>& visit);
 
 } // namespace celform::model

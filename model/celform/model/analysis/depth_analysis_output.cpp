@@ -161,7 +161,10 @@ void writeAnalysisExr(const FrameAnalysis& frame, const QString& path)
             path, QCoreApplication::translate("celform::model::RenderOutput", "the analysis needs an .exr file"));
     const int w = a.width, h = a.height;
     const std::vector<std::string> names
-        = {"R", "G", "B", "A", "curvature.K", "segment.ID", "depth.Z", "depth_error.Z", "feature.Y"};
+        = {"R", "G", "B", "A", "curvature.K", "segment.ID", "depth.Z", "depth_error.Z", "feature.Y",
+            // Figure 4.3: the shading N.L (plus the shading offset, the value the toon threshold
+            // cuts) and its derivative with respect to the light position (eq. 4.2).
+            "shading.NdotL", "light_gradient.X", "light_gradient.Y", "light_gradient.Z"};
     const std::size_t channels = names.size();
     const std::size_t count = std::size_t(w) * std::size_t(h);
     std::vector<float> data(count * channels);
@@ -174,6 +177,11 @@ void writeAnalysisExr(const FrameAnalysis& frame, const QString& path)
         p[6] = std::isfinite(a.depth[i]) ? a.depth[i] : 0.f;
         p[7] = a.depthError[i];
         p[8] = float(a.feature[i]);
+        p[9] = a.lambert.size() == count ? a.lambert[i] : 0.f;
+        const Eigen::Vector3f g = a.lightGradient.size() == count ? a.lightGradient[i] : Eigen::Vector3f::Zero();
+        p[10] = g.x();
+        p[11] = g.y();
+        p[12] = g.z();
     }
     writeImageChannels(path, w, h, names, data, false);
 }

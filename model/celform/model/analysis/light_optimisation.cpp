@@ -36,6 +36,17 @@ std::uint64_t privateGeneration()
 
 } // namespace
 
+/// The thesis's start (5.0.3): a light at the camera, towards the eye or at it.
+Light cameraLight(const Light& current, const Camera& camera)
+{
+    Light light = current;
+    if (light.type == LightType::Point)
+        light.vector = camera.eye;
+    else
+        light.vector = (camera.eye - camera.target).normalized();
+    return light;
+}
+
 LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height,
     const LightOptimisationRequest& request, DepthAnalyser& analyser, algo::Progress* progress,
@@ -45,24 +56,31 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     timer.start();
     LightOptimisationReport report;
     report.before = look.light;
-    report.after = look.light;
+    report.start = request.start == LightStart::Camera ? cameraLight(look.light, camera) : look.light;
+    report.after = report.start;
     report.frame = frame;
     report.width = width;
     report.height = height;
     report.camera = camera;
     if (generation == 0)
         generation = privateGeneration();
+    Look lit = look;
+    lit.light = report.start;
 
     FrameAnalysis frameAnalysis;
     analyser.analyse(
-        data, look, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis, shadingOffsets);
+        data, lit, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis, shadingOffsets);
     const algo::DepthAnalysis& before = frameAnalysis.analysis;
     report.segmentsBefore = before.stats;
     report.segmentsAfter = before.stats;
     report.mseBefore = report.mseAfter = before.meanSquaredError;
     report.featuresBefore = report.featuresAfter = before.featurePixels;
-    // One bar over the whole run: the analysis before, the iterations, the analysis after.
-    const std::int64_t steps = std::int64_t(std::max(0, request.optimiser.iterations)) + 2;
+    // One bar over the whole run: the analysis before, the iterations, the analysis after, and
+    // the depth-error search with its analysis when the objective asks for one.
+    const bool searches = request.objective != LightObjective::Ratios;
+    const std::int64_t iterationSteps = std::int64_t(std::max(0, request.optimiser.iterations));
+    const std::int64_t searchSteps = searches ? std::int64_t(std::max(1, request.search.maxEvaluations)) + 1 : 0;
+    const std::int64_t steps = iterationSteps + 2 + searchSteps;
     algo::report(progress, 1, steps);
     const auto cancelled = [&] {
         report.run.cancelled = true;
@@ -71,7 +89,7 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
         return report;
     };
     if (algo::cancelRequested(progress)) {
-        report.run.before = report.run.after = poseOf(look.light);
+        report.run.before = report.run.after = poseOf(report.start);
         return cancelled();
     }
 
@@ -90,9 +108,11 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     iterations.start();
     algo::LightOptimisationWorkspace workspace;
     algo::ProgressPart iterationsPart(progress, 1, steps);
-    report.run = algo::optimiseLight(samples, poseOf(look.light), settings, workspace, &iterationsPart);
+    report.run = algo::optimiseLight(samples, poseOf(report.start), settings, workspace, &iterationsPart);
     report.optimiseMilliseconds = double(iterations.nsecsElapsed()) / 1e6;
+    report.ratiosBefore = report.ratiosAfter = report.run.objectiveBefore;
     if (report.run.cancelled) {
+        report.after = report.before;
         report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
         return report;
     }
@@ -101,28 +121,87 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     for (const algo::LightIteration& it : report.run.iterations)
         if (it.accepted)
             accepted.push_back(it.light);
-    if (accepted.empty()) { // nothing better than the artist's light: it stays as it is
+    const bool point = report.start.type == LightType::Point;
+    const auto finish = [&] {
+        // The ratios' objective of the light kept, over the same samples (the segments follow the
+        // shape and the camera, not the light).
+        algo::LightEvaluation evaluation;
+        algo::evaluateLight(samples, poseOf(report.after), settings, false, evaluation);
+        report.ratiosAfter = evaluation.objective;
         report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
         algo::report(progress, steps, steps);
         return report;
-    }
+    };
+    if (accepted.empty() && !searches) // nothing better than the start by the ratios
+        return finish();
 
-    // The analysis with the new light: the depth error the artist will see. The ratios are the
-    // search's objective; the depth error (4.4) is reported beside them and may rise where the
-    // start light's rim of shadow along the outline gave more features than the new shading line.
-    report.after = lightOf({report.before.type == LightType::Point, accepted.back()});
-    Look moved = look;
-    moved.light = report.after;
-    analyser.analyse(
-        data, moved, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis, shadingOffsets);
-    report.segmentsAfter = frameAnalysis.analysis.stats;
-    report.mseAfter = frameAnalysis.analysis.meanSquaredError;
-    report.featuresAfter = frameAnalysis.analysis.featurePixels;
+    // The analysis with the ratios' light: the depth error the artist will see. It may rise where
+    // the start light's rim of shadow along the outline gave more features than the new shading
+    // line (docs/light-optimisation.md).
+    struct Candidate {
+        Light light;
+        std::vector<algo::SegmentStats> stats;
+        double mse = 0.0;
+        std::int64_t features = 0;
+    };
+    Candidate best{report.start, before.stats, before.meanSquaredError, before.featurePixels};
+    auto analyseCandidate = [&](const Light& light) {
+        Look moved = look;
+        moved.light = light;
+        analyser.analyse(data, moved, shape, generation, frame, camera, width, height, request.analysis, frameAnalysis,
+            shadingOffsets);
+        return Candidate{light, frameAnalysis.analysis.stats, frameAnalysis.analysis.meanSquaredError,
+            frameAnalysis.analysis.featurePixels};
+    };
+    Candidate ratios = best;
+    if (!accepted.empty())
+        ratios = analyseCandidate(lightOf({point, accepted.back()}));
     if (algo::cancelRequested(progress)) // during the analysis after: the light stays as it was
         return cancelled();
-    report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
-    algo::report(progress, steps, steps);
-    return report;
+    algo::report(progress, iterationSteps + 2, steps);
+    const bool keepRatios = request.objective == LightObjective::Ratios
+        || (request.objective == LightObjective::Both && ratios.mse <= best.mse);
+    if (keepRatios) {
+        best = ratios;
+    } else {
+        // The depth error directly (4.4): a compass search at reduced size from the ratios'
+        // answer, then the best it found checked at the analysed size. The start and the ratios'
+        // light are candidates too, so the MSE kept is never above the start's.
+        if (ratios.mse < best.mse)
+            best = ratios;
+        const int divisor = std::max(1, request.searchDivisor);
+        const int smallWidth = std::min(width, std::max(64, width / divisor));
+        const int smallHeight = std::min(height, std::max(64, height / divisor));
+        FrameAnalysis small;
+        auto mseOf = [&](const algo::LightPose& pose) {
+            Look moved = look;
+            moved.light = lightOf(pose);
+            analyser.analyse(data, moved, shape, generation, frame, camera, smallWidth, smallHeight, request.analysis,
+                small, shadingOffsets);
+            return small.analysis.meanSquaredError;
+        };
+        algo::LightSearchSettings search = request.search;
+        search.scale = settings.scale;
+        algo::ProgressPart searchPart(progress, iterationSteps + 2, steps);
+        report.search = algo::searchLight(poseOf(ratios.light), mseOf, search, &searchPart);
+        if (report.search.cancelled)
+            return cancelled();
+        // The start at the small size too: the search's answer must beat it there to be checked.
+        const double startSmall = mseOf(poseOf(report.start));
+        const Light found = lightOf(report.search.best);
+        if (report.search.bestValue < startSmall && !(found == best.light) && !(found == ratios.light)) {
+            const Candidate checked = analyseCandidate(found);
+            if (algo::cancelRequested(progress))
+                return cancelled();
+            if (checked.mse < best.mse)
+                best = checked;
+        }
+    }
+    report.after = best.light;
+    report.segmentsAfter = best.stats;
+    report.mseAfter = best.mse;
+    report.featuresAfter = best.features;
+    return finish();
 }
 
 LightOptimisationReport optimiseLightForJob(const ProjectData& data, const QString& source, const RenderJob& job,
@@ -162,6 +241,29 @@ bool lightMethodFromName(const QString& name, algo::LightMethod& method)
 QString segmentWeightName(algo::SegmentWeight weight)
 {
     return weight == algo::SegmentWeight::Area ? QStringLiteral("area") : QStringLiteral("constant");
+}
+
+QString lightObjectiveName(LightObjective objective)
+{
+    switch (objective) {
+    case LightObjective::Ratios:
+        return QStringLiteral("ratios");
+    case LightObjective::DepthError:
+        return QStringLiteral("depth-error");
+    case LightObjective::Both:
+        return QStringLiteral("both");
+    }
+    return {};
+}
+
+bool lightObjectiveFromName(const QString& name, LightObjective& objective)
+{
+    for (const LightObjective o : {LightObjective::Ratios, LightObjective::DepthError, LightObjective::Both})
+        if (name == lightObjectiveName(o)) {
+            objective = o;
+            return true;
+        }
+    return false;
 }
 
 bool segmentWeightFromName(const QString& name, algo::SegmentWeight& weight)

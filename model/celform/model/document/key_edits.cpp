@@ -232,7 +232,12 @@ QStringList KeyEdits::importKeyDeformation(ObjectId id, const MeshImport& import
     QStringList warnings;
     if (imported.mesh.faces.rows() != base.faces.rows() || imported.mesh.faces != base.faces)
         warnings << tr("its triangles differ from the base model's; only the vertex positions are used");
-    setKeyDeformation(id, frame, SparseOffsets::difference(imported.mesh.vertices, base.vertices),
+    // The mesh is the shape at the frame, so the deformation is taken from the base as it stands
+    // there (paper 1, section 4: offsets ride on the animated base), not from the rest pose, or
+    // the shape at frame would carry the base's motion twice.
+    algo::Positions scratch;
+    setKeyDeformation(id, frame,
+        SparseOffsets::difference(imported.mesh.vertices, data().basePositions(frame, scratch)),
         tr("Import Deformation into “%1”").arg(key->name));
     return warnings;
 }

@@ -49,7 +49,9 @@ public:
     /// Replaces a key's deformation at a frame (one undo step).
     void setKeyDeformation(ObjectId id, int frame, SparseOffsets deformation, const QString& undoText);
     /// Makes the difference of a mesh with the base model's vertex count and order from the base
-    /// the key's deformation at frame (one undo step). The mesh is read before, outside the
+    /// at frame (the animated base there, not its rest pose) the key's deformation at frame,
+    /// replacing any stored there (one undo step; `key add --mesh`, `key set`, the editor's Import
+    /// Key Deformation). The mesh is read before, outside the
     /// document (model::importMesh; the editor reads it as a job); meshPath names it in errors.
     /// Throws IoError (vertex count mismatch). Returns warnings.
     QStringList importKeyDeformation(ObjectId id, const MeshImport& imported, const QString& meshPath, int frame = 0);

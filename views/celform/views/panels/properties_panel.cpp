@@ -133,8 +133,9 @@ PropertiesPanel::PropertiesPanel(model::Document* document, QWidget* parent)
                              "Ctrl+Shift+drag scales; [ and ] change the radius"));
     m_form->addRow(m_editKey);
     m_importDeformation = new QPushButton(tr("&Import Deformation…"), m_selectionBox);
-    m_importDeformation->setToolTip(tr("Use a mesh made in another tool (same vertex count and order) as this key's "
-                                       "deformation"));
+    m_importDeformation->setToolTip(
+        tr("Use a mesh made in another tool (same vertex count and order) as this key's "
+           "deformation at the playhead's frame (a new keyed frame, or replacing the one there)"));
     m_form->addRow(m_importDeformation);
     layout->addWidget(m_selectionBox);
     // Fit to Drawing: the drawing's outline settings, the key's figures and fits.
