@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Quick start 2: set up, build, and run the whole test suite under a virtual X server; then the
 # hardening steps: the sanitize build (Clang, ASan + UBSan, no editor) and its tests, and every
-# fuzz target for CELFORM_CI_FUZZ_SECONDS (default 10) each. Every step runs; the script fails if
+# fuzz target for CELFORM_CI_FUZZ_SECONDS (default 6) each. Every step runs; the script fails if
 # any did.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,7 +28,7 @@ step "sanitize build" bash -c 'nice cmake --preset sanitize && nice cmake --buil
 step "sanitize tests" ctest --preset sanitize
 # A fixed seed and a fresh corpus: the same inputs on every run of the same code.
 step "fuzz" env FUZZ_NO_BUILD=1 FUZZ_SEED=1 FUZZ_OUT=build/fuzz-ci FUZZ_FORK=0 \
-  bash -c 'rm -rf build/fuzz-ci && exec scripts/fuzz.sh "${CELFORM_CI_FUZZ_SECONDS:-10}"'
+  bash -c 'rm -rf build/fuzz-ci && exec scripts/fuzz.sh "${CELFORM_CI_FUZZ_SECONDS:-6}"'
 
 if [ ${#failed[@]} -gt 0 ]; then
   echo "test: failed: ${failed[*]}" >&2
