@@ -90,6 +90,17 @@
     </message>
 </context>
 <context>
+    <name>Look</name>
+    <message>
+        <source>the subdivision level must be 0 to %1, not %2</source>
+        <translation>細分化レベルは 0 から %1 の範囲で指定してください (%2 は使えません)</translation>
+    </message>
+    <message>
+        <source>the viewport&apos;s subdivision level must be -1 (the render level) or 0 to %1, not %2</source>
+        <translation>ビューポートの細分化レベルは -1 (レンダーのレベル) または 0 から %1 で指定してください (%2 は使えません)</translation>
+    </message>
+</context>
+<context>
     <name>MeshIo</name>
     <message>
         <source>line %1: face %2 has the index %3, which is too large</source>
@@ -325,14 +336,6 @@
     <message>
         <source>--%1 needs a whole number, not “%2”</source>
         <translation>--%1 には整数を指定してください（「%2」は無効です）</translation>
-    </message>
-    <message>
-        <source>Adds a key viewpoint with its key deformation.</source>
-        <translation>キー視点をキー変形とともに追加します。</translation>
-    </message>
-    <message>
-        <source>The action (add).</source>
-        <translation>操作（add）。</translation>
     </message>
     <message>
         <source>Name of the new key.</source>
@@ -965,10 +968,6 @@
         <translation>これより小さいセグメントはノイズとして除きます（既定値 64）。</translation>
     </message>
     <message>
-        <source>Write the picture and the buffers (curvature, segment ids, depth, depth error, features) as EXR channels.</source>
-        <translation>画像とバッファ（曲率、セグメント番号、奥行き、奥行き誤差、特徴）を EXR のチャンネルとして書き出します。</translation>
-    </message>
-    <message>
         <source>Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error.</source>
         <translation>画像の立体視奥行き解析: セグメントとその明暗比、および奥行き誤差。</translation>
     </message>
@@ -1077,10 +1076,6 @@
         <translation>線を描くか（on）描かないか（off）、または描く線の種類だけをカンマ区切りで指定: silhouette、crease、border、material、ridge（見かけの稜線）。</translation>
     </message>
     <message>
-        <source>Apparent-ridge threshold for this render: view-dependent curvature times the median edge length (default: the project&apos;s, 0.3 in new projects; lower draws more).</source>
-        <translation>このレンダリングでの見かけの稜線のしきい値: 視点依存の曲率 × エッジ長の中央値（既定: プロジェクトの値、新規プロジェクトでは 0.3。小さいほど多く描きます）。</translation>
-    </message>
-    <message>
         <source>exactly one of --auto, --clear or --smooth is required</source>
         <translation>--auto、--clear、--smooth のいずれか 1 つだけを指定してください</translation>
     </message>
@@ -1107,10 +1102,6 @@
     <message>
         <source>%1 segments, %2 inside the ratio window before, %3 after; depth error MSE %4 before, %5 after (%6 ms)</source>
         <translation>セグメント %1 個、比率の範囲内: 適用前 %2 個、適用後 %3 個。奥行き誤差 MSE: 適用前 %4、適用後 %5（%6 ms）</translation>
-    </message>
-    <message>
-        <source>Automatic per-segment offsets for the view: each segment of the depth analysis gets the ratio 1 - Q.</source>
-        <translation>視点に合わせたセグメントごとの自動オフセット: 奥行き解析の各セグメントの比率を 1 - Q にします。</translation>
     </message>
     <message>
         <source>Remove the target&apos;s offsets.</source>
@@ -1458,6 +1449,122 @@
         <source>--%1 must be auto, x, y, z or off, not “%2”</source>
         <translation>--%1 には auto、x、y、z、off のいずれかを指定してください (“%2” は使えません)</translation>
     </message>
+    <message>
+        <source>--out with --frames needs a # where the frame number goes, not “%1”</source>
+        <translation>--frames と使う --out にはフレーム番号を入れる # が必要です (“%1” は使えません)</translation>
+    </message>
+    <message>
+        <source>frame %1: %2 segments, %3 inside the window; depth error MSE %4 (%5 ms)</source>
+        <translation>フレーム %1: セグメント %2 個、ウィンドウ内 %3 個。奥行き誤差 MSE %4 (%5 ms)</translation>
+    </message>
+    <message>
+        <source>--csv goes with --frames</source>
+        <translation>--csv は --frames と一緒に使います</translation>
+    </message>
+    <message>
+        <source>--objective must be ratios, depth-error or both, not “%1”</source>
+        <translation>--objective には ratios、depth-error、both のいずれかを指定してください (“%1” は使えません)</translation>
+    </message>
+    <message>
+        <source>--start must be current or camera, not “%1”</source>
+        <translation>--start には current または camera を指定してください (“%1” は使えません)</translation>
+    </message>
+    <message>
+        <source>--falloff takes a ratio width in [0, 1] (0: discrete), not “%1”</source>
+        <translation>--falloff には [0, 1] の比の幅を指定します (0: 離散)。“%1” は使えません</translation>
+    </message>
+    <message>
+        <source>Frames to analyse, A-B inclusive, every STEP-th (default 1), through the shot camera unless a camera is given; --json lists them under &quot;frames&quot;, --out needs a # for the frame number.</source>
+        <translation>解析するフレーム。A から B まで STEP おき (既定 1)。カメラの指定がなければショットカメラで見ます。--json は &quot;frames&quot; に一覧し、--out にはフレーム番号の # が必要です。</translation>
+    </message>
+    <message>
+        <source>With --frames: a row per frame (frame, mse, rmse, segments, segments_in_window, milliseconds).</source>
+        <translation>--frames と使い、フレームごとに 1 行 (frame, mse, rmse, segments, segments_in_window, milliseconds) を書きます。</translation>
+    </message>
+    <message>
+        <source>Write the picture and the buffers (curvature, segment ids, depth, depth error, features, N.L and the light gradient) as EXR channels.</source>
+        <translation>画像とバッファ (曲率、セグメント ID、奥行き、奥行き誤差、特徴、N.L、光の勾配) を EXR のチャンネルとして書き出します。</translation>
+    </message>
+    <message>
+        <source>ratios (the thesis&apos;s, may raise the depth error), depth-error (a search minimising the depth error from the ratios&apos; answer) or both (the default: the ratios&apos; light unless it raises the depth error, else the best depth error met; never above the start&apos;s).</source>
+        <translation>ratios (論文の方法。奥行き誤差が増えることがあります)、depth-error (ratios の答えから奥行き誤差を最小にする探索)、both (既定: 奥行き誤差を増やさない限り ratios の光、そうでなければ見つかった最良の奥行き誤差。開始時より悪くなりません)。</translation>
+    </message>
+    <message>
+        <source>Start from the project&apos;s light (current, the default) or at the camera.</source>
+        <translation>プロジェクトの光 (current、既定) またはカメラの位置から始めます。</translation>
+    </message>
+    <message>
+        <source>Width of figure 5.8&apos;s linear fall-off outside the window (default 0.1; 0: discrete).</source>
+        <translation>ウィンドウ外の図 5.8 の線形減衰の幅 (既定 0.1、0: 離散)。</translation>
+    </message>
+    <message>
+        <source>--subdivision applies to pc2 and obj-seq exports; glTF keeps the base model for its morph targets</source>
+        <translation>--subdivision は pc2 と obj-seq の書き出しに使えます。glTF はモーフターゲットのためにベースモデルのままです</translation>
+    </message>
+    <message>
+        <source>Loop subdivision level of the exported surface, 0 to 3, for pc2 and obj-seq (default 0: the base model&apos;s vertices, in its order).</source>
+        <translation>書き出す面の Loop 細分化レベル。0 から 3、pc2 と obj-seq 用 (既定 0: ベースモデルの頂点をその順序で)。</translation>
+    </message>
+    <message>
+        <source>key set needs --key and --mesh</source>
+        <translation>key set には --key と --mesh が必要です</translation>
+    </message>
+    <message>
+        <source>key set takes only --key, --mesh, --frame and --json</source>
+        <translation>key set に使えるのは --key、--mesh、--frame、--json だけです</translation>
+    </message>
+    <message>
+        <source>set: the key whose deformation is set.</source>
+        <translation>set: 変形を設定するキー。</translation>
+    </message>
+    <message>
+        <source>Adds a key viewpoint with its key deformation (add), or sets an existing key&apos;s deformation at a frame from a mesh, replacing one stored there (set).</source>
+        <translation>キー変形付きのキー視点を追加する (add)、または既存のキーのあるフレームの変形をメッシュから設定し、そこにあるものを置き換えます (set)。</translation>
+    </message>
+    <message>
+        <source>The action (add or set).</source>
+        <translation>操作 (add または set)。</translation>
+    </message>
+    <message>
+        <source>warning: the viewport&apos;s subdivision level %1 is above the render level %2; the viewport shows level %2</source>
+        <translation>警告: ビューポートの細分化レベル %1 がレンダーのレベル %2 より上です。ビューポートはレベル %2 を表示します</translation>
+    </message>
+    <message>
+        <source>Loop subdivision level that renders use, 0 (the control mesh) to 3.</source>
+        <translation>レンダーで使う Loop 細分化レベル。0 (制御メッシュ) から 3。</translation>
+    </message>
+    <message>
+        <source>The viewport&apos;s subdivision level: -1 follows the render level; a lower level is a speed setting.</source>
+        <translation>ビューポートの細分化レベル。-1 はレンダーのレベルに従い、低いレベルは速度のための設定です。</translation>
+    </message>
+    <message>
+        <source>--segments must be outside or all, not “%1”</source>
+        <translation>--segments には outside または all を指定してください (“%1” は使えません)</translation>
+    </message>
+    <message>
+        <source>Automatic per-segment offsets for the view: each segment of the depth analysis outside the ratio window 0.35-0.65 (or every segment, --segments all) gets the ratio 1 - Q.</source>
+        <translation>視点ごとのセグメント別自動オフセット: 奥行き解析の各セグメントのうち比のウィンドウ 0.35-0.65 の外にあるもの (--segments all ではすべて) に比 1 - Q を与えます。</translation>
+    </message>
+    <message>
+        <source>Which segments --auto solves: outside the window (the default, thesis 4.3) or all.</source>
+        <translation>--auto が解くセグメント: ウィンドウの外 (既定、論文 4.3) またはすべて。</translation>
+    </message>
+    <message>
+        <source>--%1 takes -1 (the render level) or a level from 0 to %2, not “%3”</source>
+        <translation>--%1 には -1 (レンダーのレベル) または 0 から %2 のレベルを指定します (“%3” は使えません)</translation>
+    </message>
+    <message>
+        <source>--%1 takes a subdivision level from 0 to %2, not “%3”</source>
+        <translation>--%1 には 0 から %2 の細分化レベルを指定します (“%3” は使えません)</translation>
+    </message>
+    <message>
+        <source>Loop subdivision level of this picture, 0 (the control mesh) to 3 (default: the project&apos;s render level).</source>
+        <translation>この画像の Loop 細分化レベル。0 (制御メッシュ) から 3 (既定: プロジェクトのレンダーレベル)。</translation>
+    </message>
+    <message>
+        <source>Apparent-ridge threshold for this picture: view-dependent curvature times the median edge length (default: the project&apos;s, 0.3 in new projects; lower draws more).</source>
+        <translation>この画像の見かけの稜線のしきい値: 視点依存の曲率に辺の長さの中央値を掛けた値 (既定: プロジェクトの値、新規では 0.3。低いほど多く描きます)。</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ExportDialog</name>
@@ -1692,6 +1799,10 @@
     <message>
         <source>The segments&apos; ratios improved but the depth error rose: try another start light (move it, then optimise again) or a more lenient window in the Depth tab.</source>
         <translation>セグメントの比は改善しましたが奥行き誤差が増えました: 別の開始ライトを試す（ライトを動かしてから再度最適化する）か、奥行きタブでより緩いウィンドウを選んでください。</translation>
+    </message>
+    <message>
+        <source>; the ratios&apos; light raised the depth error, so a search kept the light with the lowest depth error it met</source>
+        <translation>。ratios の光では奥行き誤差が増えたため、探索で見つかった奥行き誤差が最小の光を採用しました</translation>
     </message>
 </context>
 <context>
@@ -3990,6 +4101,10 @@ Recover it now?</source>
         <source>has no base model</source>
         <translation>ベースモデルがありません</translation>
     </message>
+    <message>
+        <source>glTF exports hold the keys as morph targets of the base model and take no subdivision; export pc2 or obj-seq with --subdivision</source>
+        <translation>glTF の書き出しはキーをベースモデルのモーフターゲットとして持つため細分化できません。--subdivision は pc2 か obj-seq で書き出してください</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::FaceSetEdits</name>
@@ -4559,6 +4674,10 @@ Recover it now?</source>
         <source>Apply Look</source>
         <translation>ルックを適用</translation>
     </message>
+    <message>
+        <source>Change Subdivision</source>
+        <translation>細分化の変更</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::MeshIo</name>
@@ -4916,6 +5035,10 @@ Recover it now?</source>
         <source>&quot;%1&quot; files do not keep their vertex order; use .obj, .ply or .off</source>
         <translation>「%1」形式のファイルは頂点順序を保持しません。.obj、.ply、.off を使用してください</translation>
     </message>
+    <message>
+        <source>it refers to “%1”, outside its folder; such references are not read unless CELFORM_ALLOW_OUTSIDE_REFERENCES=1 is set</source>
+        <translation>フォルダの外にある “%1” を参照しています。CELFORM_ALLOW_OUTSIDE_REFERENCES=1 を設定しない限り、このような参照は読み込みません</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ProjectFile</name>
@@ -5207,6 +5330,10 @@ Recover it now?</source>
         <source>the mirror plane is not off, x, y or z</source>
         <translation>ミラー平面が off、x、y、z のいずれでもありません</translation>
     </message>
+    <message>
+        <source>the subdivision levels are out of range</source>
+        <translation>細分化レベルが範囲外です</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
@@ -5232,6 +5359,10 @@ Recover it now?</source>
     <message>
         <source>the render failed</source>
         <translation>レンダーに失敗しました</translation>
+    </message>
+    <message>
+        <source>subdivision level %1 turns %2 triangles into %3 and needs about %4 GB, more than the %5 GB available; choose a lower level</source>
+        <translation>細分化レベル %1 では %2 個の三角形が %3 個になり、約 %4 GB 必要です。使える %5 GB を超えるので、低いレベルを選んでください</translation>
     </message>
 </context>
 <context>
@@ -6488,6 +6619,54 @@ chamfer distance %3 px</source>
         <source>Ridge &amp;threshold:</source>
         <translation>稜線のしきい値(&amp;T):</translation>
     </message>
+    <message>
+        <source>Hysteresis: an edge above this angle continues a crease that is already above the crease angle, so creases on a coarse surface do not break into dashes. At or above the crease angle: off</source>
+        <translation>ヒステリシス: この角度を超える辺は、すでに折り目の角度を超えている折り目を続けます。粗い面でも折り目が破線に途切れません。折り目の角度以上ではオフです</translation>
+    </message>
+    <message>
+        <source>Crease continues abo&amp;ve:</source>
+        <translation>折り目の継続角度(&amp;V):</translation>
+    </message>
+    <message>
+        <source>&amp;Gap joining:</source>
+        <translation>隙間の結合(&amp;G):</translation>
+    </message>
+    <message>
+        <source>Stroke ends at most this far apart are joined into one stroke, pixels</source>
+        <translation>端どうしがこの距離 (ピクセル) 以内のストロークを 1 本につなぎます</translation>
+    </message>
+    <message>
+        <source>Ta&amp;per:</source>
+        <translation>入り抜き(&amp;P):</translation>
+    </message>
+    <message>
+        <source>Length over which strokes thin towards their ends, as a brush lifted off the paper, pixels (0: no taper)</source>
+        <translation>筆を紙から離すようにストロークが端に向かって細くなる長さ (ピクセル、0: 入り抜きなし)</translation>
+    </message>
+    <message>
+        <source>&amp;Reduction:</source>
+        <translation>距離による減衰(&amp;R):</translation>
+    </message>
+    <message>
+        <source>How much thinner the farthest line is than the nearest, as a fraction of its width (Pencil+&apos;s reduction by distance)</source>
+        <translation>最も遠い線が最も近い線よりどれだけ細いか、幅に対する割合 (Pencil+ の距離による減衰)</translation>
+    </message>
+    <message>
+        <source>Rounds of Chaikin smoothing of the projected strokes (corners stay sharp)</source>
+        <translation>投影したストロークに Chaikin 平滑化をかける回数 (角は鋭いまま)</translation>
+    </message>
+    <message>
+        <source>S&amp;moothing:</source>
+        <translation>平滑化(&amp;M):</translation>
+    </message>
+    <message>
+        <source>Strokes shorter than this, as a percentage of the picture&apos;s height, are dropped</source>
+        <translation>画像の高さに対する割合でこれより短いストロークは描きません</translation>
+    </message>
+    <message>
+        <source>Minimum &amp;length:</source>
+        <translation>最小の長さ(&amp;L):</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::OffsetBrushTool</name>
@@ -6787,10 +6966,6 @@ Size %4 × %5 × %6</source>
         <translation>変形をインポート(&amp;I)…</translation>
     </message>
     <message>
-        <source>Use a mesh made in another tool (same vertex count and order) as this key&apos;s deformation</source>
-        <translation>他のツールで作成したメッシュ（頂点数と頂点順序が同じもの）をこのキーの変形として使用します</translation>
-    </message>
-    <message>
         <source>Brush</source>
         <translation>ブラシ</translation>
     </message>
@@ -6953,6 +7128,10 @@ Size %4 × %5 × %6</source>
     <message>
         <source>%1 (detected)</source>
         <translation>%1（検出）</translation>
+    </message>
+    <message>
+        <source>Use a mesh made in another tool (same vertex count and order) as this key&apos;s deformation at the playhead&apos;s frame (a new keyed frame, or replacing the one there)</source>
+        <translation>他のツールで作ったメッシュ (頂点数と順序が同じもの) を、再生ヘッドのフレームでのこのキーの変形として使います (新しいキーフレーム、またはそこにあるものを置き換え)</translation>
     </message>
 </context>
 <context>
