@@ -435,8 +435,9 @@ private slots:
         QCOMPARE(loadProject(path).look.subdivision, SubdivisionLook{});
         QCOMPARE(SubdivisionLook{}.level, 0);
         // Levels out of range, or not whole, are damage.
-        for (const auto& [render, viewport] : {std::pair{4.0, -1.0}, std::pair{-1.0, -1.0}, std::pair{1.5, -1.0},
+        for (const auto& levels : {std::pair{4.0, -1.0}, std::pair{-1.0, -1.0}, std::pair{1.5, -1.0},
                  std::pair{2.0, -2.0}, std::pair{2.0, 4.0}}) {
+            const double render = levels.first, viewport = levels.second; // C++17 lambdas take no bindings
             editManifest(path, [&](QJsonObject& m) {
                 QJsonObject look = m.value(QStringLiteral("look")).toObject();
                 look.insert(QStringLiteral("subdivision"),
