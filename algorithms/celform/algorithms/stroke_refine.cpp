@@ -338,8 +338,12 @@ StrokeContacts findStrokeContacts(const std::vector<StyledStroke>& strokes, floa
         std::int64_t key;
         std::uint32_t stroke, point;
     };
-    auto keyOf = [&](std::int64_t cx, std::int64_t cy) { return (cx << 32) ^ (cy & 0xffffffffLL); };
-    auto cellOf = [&](float v) { return std::int64_t(std::floor(v / cell)); };
+    // Unsigned bits: a negative cell shifted left is undefined in C++17.
+    auto keyOf = [&](std::int64_t cx, std::int64_t cy) {
+        return std::int64_t((std::uint64_t(cx) << 32) ^ (std::uint64_t(cy) & 0xffffffffULL));
+    };
+    // Clamped first: a point projected from near the eye may lie far beyond any int64 cell.
+    auto cellOf = [&](float v) { return std::int64_t(std::floor(std::clamp(v / cell, -1e9f, 1e9f))); };
     std::vector<Entry> grid;
     for (std::size_t i = 0; i < strokes.size(); ++i)
         for (std::size_t k = 0; k < strokes[i].points.size(); ++k) {
