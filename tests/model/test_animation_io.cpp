@@ -640,8 +640,8 @@ void TestAnimationIo::badFiles_data()
 
     // Issue 27, item 8: sampler times must increase strictly (glTF 2.0, 3.11), not merely not fall.
     GltfBuilder repeated = movingTriangle({0.5f, 0.5f, 0.5f}, {0, 0, 0, 1, 0, 0, 2, 0, 0}, "LINEAR");
-    QTest::newRow("repeated sampler times") << "same.gltf" << bytesOf(repeated, "s.gltf")
-                                            << "key 1 has time 0.5, not after the key before it";
+    QTest::newRow("repeated sampler times")
+        << "same.gltf" << bytesOf(repeated, "s.gltf") << "key 1 has time 0.5, not after the key before it";
     GltfBuilder endless = movingTriangle({0, 1e30f}, {0, 0, 0, 1, 0, 0}, "LINEAR");
     QTest::newRow("endless animation") << "forever.gltf" << bytesOf(endless, "f.gltf") << "frames Celform can load";
     GltfBuilder draco = morphTriangle();
