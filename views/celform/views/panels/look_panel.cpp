@@ -107,7 +107,9 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     lightLayout->setContentsMargins(0, 0, 0, 0);
     for (int axis = 0; axis < 3; ++axis) {
         QDoubleSpinBox* spin = makeSpin(-1e4, 1e4, 0.05, 3, tr("Light vector (x, y, z)"));
-        spin->setMinimumWidth(40); // three in a row must fit a narrow dock
+        // Room for "-0.000" and the arrows: in a narrow dock the row goes below its label
+        // (letRowsNarrow) rather than cutting the values to "0.40(".
+        spin->setMinimumWidth(spin->fontMetrics().horizontalAdvance(QStringLiteral("-0.000")) + 28);
         spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         lightLayout->addWidget(spin);
         connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, axis](double v) {
