@@ -49,6 +49,22 @@ private:
     Document m_doc;
     std::size_t m_n = 0;
 
+    /// The document holds an icosphere lit from (1, 0.2, 0.3); the request sees it from +z at
+    /// size x size pixels, the window's percentile 0.5.
+    AutoOffsetsRequest litSphere(int size)
+    {
+        ProjectData data;
+        data.baseMesh = test::icosphere(4);
+        data.look.light.vector = Eigen::Vector3d(1.0, 0.2, 0.3);
+        m_doc.reset(std::move(data));
+        AutoOffsetsRequest request;
+        request.camera = cameraAt({0, 0, 5});
+        request.width = size;
+        request.height = size;
+        request.percentile = 0.5f;
+        return request;
+    }
+
 private slots:
     void init()
     {
@@ -215,15 +231,7 @@ private slots:
     void automaticOffsetsThroughTheDocument()
     {
         // A lit sphere seen from the side of the light: one segment, its ratio goes to 1 - Q.
-        ProjectData data;
-        data.baseMesh = test::icosphere(4);
-        data.look.light.vector = Eigen::Vector3d(1.0, 0.2, 0.3);
-        m_doc.reset(std::move(data));
-        AutoOffsetsRequest request;
-        request.camera = cameraAt({0, 0, 5});
-        request.width = 160;
-        request.height = 160;
-        request.percentile = 0.5f;
+        AutoOffsetsRequest request = litSphere(160);
         request.segments = OffsetSegments::All;
         const AutoOffsetsResult result = solveAutoOffsets(m_doc.data(), request);
         QVERIFY(!result.after.empty());
@@ -249,15 +257,7 @@ private slots:
     // Issue 26, fix 5: by default only the segments outside the window are solved (thesis 4.3).
     void automaticOffsetsSolveOnlySegmentsOutsideTheWindow()
     {
-        ProjectData data;
-        data.baseMesh = test::icosphere(4);
-        data.look.light.vector = Eigen::Vector3d(1.0, 0.2, 0.3);
-        m_doc.reset(std::move(data));
-        AutoOffsetsRequest request;
-        request.camera = cameraAt({0, 0, 5});
-        request.width = 96;
-        request.height = 96;
-        request.percentile = 0.5f;
+        AutoOffsetsRequest request = litSphere(96);
         const AutoOffsetsResult all = solveAutoOffsets(m_doc.data(), request);
         QVERIFY(!all.before.empty());
         const float ratio = all.before.front().ratio;
