@@ -17,39 +17,37 @@ QRectF ViewSpherePanel::labelBounds() const
     return QRectF(rect()).adjusted(2.0, 2.0, -2.0, 0.0).intersected(QRectF(0.0, 0.0, width(), readoutRect().top()));
 }
 
-QRectF ViewSpherePanel::keyLabelRect(const Frame& f, const SpherePoint& point, QString* text) const
+std::vector<QRectF> ViewSpherePanel::keyLabelRects(const Frame& f) const
 {
     // Keys that fall close on screen (two keys a right angle apart seen along their bisector) would
     // print their names over each other: each key's label steps down, or up, off the labels of the
-    // keys before it (in the points' order, so painting and hit tests agree).
-    const auto index = std::size_t(&point - m_points.data());
+    // keys before it (in the points' order, so painting and hit tests agree). One pass for all.
     const QRectF bounds = labelBounds();
+    std::vector<QRectF> rects(m_points.size());
     std::vector<QRectF> placed;
-    QRectF result;
-    for (std::size_t i = 0; i <= index && i < m_points.size(); ++i) {
-        if (m_points[i].key == 0 && i != index)
+    auto free = [&](const QRectF& r) {
+        return std::none_of(placed.begin(), placed.end(), [&](const QRectF& e) { return e.intersects(r); });
+    };
+    for (std::size_t i = 0; i < m_points.size(); ++i) {
+        if (m_points[i].key == 0)
             continue;
-        const QRectF preferred = keyLabelPlace(f, m_points[i], i == index ? text : nullptr);
-        auto free = [&](const QRectF& r) {
-            return std::none_of(placed.begin(), placed.end(), [&](const QRectF& e) { return e.intersects(r); });
-        };
-        result = preferred;
-        if (!free(preferred)) {
-            bool found = false;
-            for (int step = 1; step <= 4 && !found; ++step)
-                for (const double sign : {1.0, -1.0}) {
-                    const QRectF moved
-                        = clampInto(preferred.translated(0.0, sign * step * (preferred.height() + 1.0)), bounds);
-                    if (free(moved)) {
-                        result = moved;
-                        found = true;
-                        break;
-                    }
+        const QRectF preferred = keyLabelPlace(f, m_points[i], nullptr);
+        QRectF result = preferred;
+        for (int step = 1; step <= 4 && !free(result); ++step)
+            for (const double sign : {1.0, -1.0}) {
+                const QRectF moved
+                    = clampInto(preferred.translated(0.0, sign * step * (preferred.height() + 1.0)), bounds);
+                if (free(moved)) {
+                    result = moved;
+                    break;
                 }
-        }
+            }
+        if (!free(result))
+            result = preferred;
+        rects[i] = result;
         placed.push_back(result);
     }
-    return result;
+    return rects;
 }
 
 QRectF ViewSpherePanel::keyLabelPlace(const Frame& f, const SpherePoint& point, QString* text) const
@@ -120,11 +118,10 @@ QRectF ViewSpherePanel::viewLabelRect(const Frame& f, QString* text) const
     farAbove.moveBottom(s.y() - 8.0 - box.height());
     // The candidates in order of preference; the first free of every key's label and dot wins (a
     // dot over "view" read as "ew"), else the one covering the least of them, labels counting most.
-    std::vector<QRectF> labels, dots;
+    std::vector<QRectF> labels = keyLabelRects(f), dots;
     for (const SpherePoint& point : m_points) {
         if (point.key == 0)
             continue;
-        labels.push_back(keyLabelRect(f, point, nullptr));
         const double r = pointRadius(point) + 1.5;
         const QPointF p = project(f, point.direction);
         dots.emplace_back(p.x() - r, p.y() - r, 2.0 * r, 2.0 * r);
@@ -158,9 +155,10 @@ std::vector<QRectF> ViewSpherePanel::labelRects() const
     if (m_empty != EmptyState::None)
         return rects;
     const Frame f = frame();
-    for (const SpherePoint& point : m_points)
-        if (point.key != 0)
-            rects.push_back(keyLabelRect(f, point, nullptr));
+    const std::vector<QRectF> keys = keyLabelRects(f);
+    for (std::size_t i = 0; i < m_points.size(); ++i)
+        if (m_points[i].key != 0)
+            rects.push_back(keys[i]);
     if (m_viewDirection.norm() > 0.0)
         rects.push_back(viewLabelRect(f, nullptr));
     return rects;

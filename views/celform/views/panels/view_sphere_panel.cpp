@@ -442,6 +442,7 @@ void ViewSpherePanel::paintPoints(QPainter& painter, const Frame& f, bool front)
     const QColor base = palette().color(QPalette::Base);
     const QColor text = palette().color(QPalette::Text);
     const QFont labelFont = scaledFont(font(), 0.85);
+    const std::vector<QRectF> labels = keyLabelRects(f); // once: each key's is placed off the others'
     QFont activeFont = labelFont;
     activeFont.setBold(true);
 
@@ -474,7 +475,8 @@ void ViewSpherePanel::paintPoints(QPainter& painter, const Frame& f, bool front)
 
         painter.setFont(active ? activeFont : labelFont);
         QString name;
-        const QRectF label = keyLabelRect(f, point, &name);
+        (void)keyLabelPlace(f, point, &name);
+        const QRectF label = labels[std::size_t(i)];
         m_labels.draw(painter, label, name, active ? kActiveKey.darker(135) : text, base);
         painter.restore();
     }

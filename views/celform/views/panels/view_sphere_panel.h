@@ -111,8 +111,10 @@ private:
     /// Where labels may go: the panel less a margin, above the readout.
     [[nodiscard]] QRectF labelBounds() const;
     /// A key's label box (its text, elided to fit, in text when given).
-    [[nodiscard]] QRectF keyLabelRect(const Frame& f, const SpherePoint& point, QString* text) const;
-    /// Where a key's label goes on its own (keyLabelRect then keeps it off the earlier keys').
+    /// Every key's label rectangle, by point index (empty for dummies), kept off each other.
+    [[nodiscard]] std::vector<QRectF> keyLabelRects(const Frame& f) const;
+    /// Where a key's label goes on its own, and its text (elided to fit); keyLabelRects then keeps
+    /// it off the earlier keys'.
     [[nodiscard]] QRectF keyLabelPlace(const Frame& f, const SpherePoint& point, QString* text) const;
     /// The view marker's label box, clear of the keys' labels where there is room.
     [[nodiscard]] QRectF viewLabelRect(const Frame& f, QString* text) const;
