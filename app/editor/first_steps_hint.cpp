@@ -92,11 +92,17 @@ void FirstStepsHint::refresh()
         place();
 }
 
-QRect FirstStepsHint::modelRect() const
+QRect FirstStepsHint::modelRect()
 {
     if (!m_document->hasMesh())
         return {};
-    const Eigen::AlignedBox3d box = algo::boundingBox(m_document->data().baseMesh->vertices);
+    // The box is the base model's: measured once per model, not at every step of an orbit.
+    const std::shared_ptr<const algo::TriMesh>& mesh = m_document->data().baseMesh;
+    if (m_boxOf.lock() != mesh) {
+        m_box = algo::boundingBox(mesh->vertices);
+        m_boxOf = mesh;
+    }
+    const Eigen::AlignedBox3d& box = m_box;
     QRectF rect;
     for (int corner = 0; corner < 8; ++corner) {
         const QPointF p = m_viewport->projectToWidget(box.corner(Eigen::AlignedBox3d::CornerType(corner)));

@@ -7,8 +7,14 @@
 
 #include "celform/model/data/object_id.h"
 
+#include "celform/algorithms/tri_mesh.h"
+
+#include <Eigen/Geometry>
+
 #include <QLabel>
 #include <QRect>
+
+#include <memory>
 
 namespace celform::model {
 class Document;
@@ -36,7 +42,7 @@ private:
     void refresh();
     void place();
     /// The base model's bounding box as it falls in the viewport (empty without a model).
-    [[nodiscard]] QRect modelRect() const;
+    [[nodiscard]] QRect modelRect();
     /// The first action after opening a showcase: its caption goes.
     void endShowcase();
 
@@ -44,6 +50,8 @@ private:
     views::Viewport* m_viewport;
     model::ObjectId m_selectedDrawing = 0;
     bool m_showcase = false;
+    std::weak_ptr<const algo::TriMesh> m_boxOf; ///< the model m_box was measured on
+    Eigen::AlignedBox3d m_box;
 };
 
 } // namespace celform::app
