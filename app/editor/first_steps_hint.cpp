@@ -29,7 +29,7 @@ FirstStepsHint::FirstStepsHint(model::Document* document, views::Viewport* viewp
     connect(viewport, &views::Viewport::toolChanged, this, [this] { refresh(); });
     // The model moves under the caption as the view changes: keep it clear of the model.
     connect(viewport, &views::Viewport::cameraChanged, this, [this] {
-        if (isVisible())
+        if (isVisibleTo(parentWidget()))
             place();
     });
     connect(document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
@@ -151,7 +151,9 @@ bool FirstStepsHint::eventFilter(QObject* watched, QEvent* event)
         && (type == QEvent::MouseButtonPress || type == QEvent::KeyPress || type == QEvent::ShortcutOverride
             || type == QEvent::Wheel))
         endShowcase();
-    if (watched == parentWidget() && event->type() == QEvent::Resize && isVisible())
+    // Before the window shows, the caption is not "visible" yet but its place still follows the
+    // viewport's size (a --screenshot run placed it for the viewport's first, tiny size).
+    if (watched == parentWidget() && (type == QEvent::Resize || type == QEvent::Show) && isVisibleTo(parentWidget()))
         place();
     return QLabel::eventFilter(watched, event);
 }
