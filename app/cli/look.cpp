@@ -6,6 +6,7 @@
 #include "celform/model/document/document.h"
 #include "celform/model/render/frame_schedule.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/io/image_io.h"
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
 #include "celform/model/render/render_output.h"
@@ -182,9 +183,14 @@ int runRender(const Invocation& in)
         }
     } lines;
     lines.count = count;
-    // A render reads the project and writes pictures; the overrides apply to this render only.
+    // A render reads the project and writes pictures; the overrides apply to this render only. The
+    // drawings are not in the picture: their pixels are not decoded (nor OpenImageIO loaded for them,
+    // issue 29), but a drawing that opening the project would refuse is refused here too, as by info.
+    const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
+    for (const auto& d : data.drawings)
+        model::decodedImageSize(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name));
     try {
-        model::renderFrames(model::loadProject(path), path, job, nullptr, &lines);
+        model::renderFrames(data, path, job, nullptr, &lines);
     } catch (const model::RenderFrameError& e) {
         printErr(QStringLiteral("celform: ") + Cli::tr("frame %1: %2").arg(e.frame()).arg(e.message()));
         return kExitBadInput;

@@ -2,7 +2,8 @@
 // masks, smoothed normals and frames, and the cache that keeps a track's per-vertex geometry across
 // parameter edits and frames without changing a single value. Issue 25's line figures: stray
 // dashes on the elephant sample and a coarse shared mesh at 1280x960, before and after the
-// stroke clean-up.
+// stroke clean-up. Issue 29: a job's frames are written on one writer thread while the next frame
+// renders, in order, with failures and cancelling as before.
 #include "test_meshes.h"
 #include "test_support.h"
 
@@ -12,10 +13,17 @@
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
 #include "celform/model/render/frame_evaluator.h"
+#include "celform/model/render/frame_schedule.h"
 #include "celform/model/render/render_output.h"
 #include "celform/model/render/subdivided_surface.h"
 
 #include <QtTest/QtTest>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 
 using namespace celform;
 
@@ -158,12 +166,118 @@ std::vector<bool> silhouette(const algo::RenderPasses& p)
     return mask;
 }
 
+/// Hears the frames a schedule reports done, in order.
+struct DoneFrames : model::RenderFrameListener {
+    std::vector<int> frames;
+    void frameDone(int frame, const QString&, bool skipped) override
+    {
+        if (!skipped)
+            frames.push_back(frame);
+    }
+};
+
+model::RenderJob scheduleJob(int frames, int threads)
+{
+    model::RenderJob job;
+    job.firstFrame = 0;
+    job.lastFrame = frames - 1;
+    job.threads = threads;
+    job.output = QStringLiteral("/nonexistent/frame_####.png"); // the renderers below write nothing
+    return job;
+}
+
 } // namespace
 
 class TestRenderOutput : public QObject {
     Q_OBJECT
 
 private slots:
+    void framesAreWrittenWhileTheNextRenders()
+    {
+        // Frame 0's write waits until frame 1's render has begun: with the write on the render
+        // thread (no overlap) it would time out and the frame fail.
+        std::mutex mutex;
+        std::condition_variable changed;
+        int rendering = -1;
+        const model::RenderJob job = scheduleJob(4, 1);
+        DoneFrames done;
+        const int written = model::scheduleFrames(job, nullptr, &done, [&]() -> model::FrameRenderer {
+            return [&](int frame, const QString&, const std::function<bool()>&) -> model::FrameWrite {
+                {
+                    const std::lock_guard<std::mutex> lock(mutex);
+                    rendering = frame;
+                }
+                changed.notify_all();
+                return [&, frame] {
+                    std::unique_lock<std::mutex> lock(mutex);
+                    if (frame < 3
+                        && !changed.wait_for(lock, std::chrono::seconds(10), [&] { return rendering > frame; }))
+                        throw model::IoError(QStringLiteral("frame"), QStringLiteral("no overlap"));
+                };
+            };
+        });
+        QCOMPARE(written, 4);
+        QCOMPARE(done.frames, (std::vector<int>{0, 1, 2, 3}));
+    }
+
+    void aRendererNeverRunsAheadOfItsWrites()
+    {
+        // A renderer may keep two frames' data: when it renders frame n, frame n - 2 is written.
+        std::atomic<int> lastWritten{-1};
+        std::atomic<bool> ahead{false};
+        for (const int threads : {1, 2}) {
+            const model::RenderJob job = scheduleJob(12, threads);
+            DoneFrames done;
+            const int written = model::scheduleFrames(job, nullptr, &done, [&]() -> model::FrameRenderer {
+                auto mine = std::make_shared<std::vector<int>>(); // this renderer's frames, written or not
+                auto writtenByMe = std::make_shared<std::atomic<int>>(0);
+                return [&, mine, writtenByMe](
+                           int frame, const QString&, const std::function<bool()>&) -> model::FrameWrite {
+                    if (int(mine->size()) - writtenByMe->load() >= 2)
+                        ahead = true;
+                    mine->push_back(frame);
+                    return [&, frame, writtenByMe] {
+                        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+                        lastWritten = frame;
+                        ++*writtenByMe;
+                    };
+                };
+            });
+            QCOMPARE(written, 12);
+            QCOMPARE(int(done.frames.size()), 12);
+            if (threads == 1)
+                QCOMPARE(done.frames, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}));
+        }
+        QVERIFY(!ahead);
+    }
+
+    void aFailedWriteNamesItsFrameAndStopsTheJob()
+    {
+        const model::RenderJob job = scheduleJob(20, 1);
+        DoneFrames done;
+        std::atomic<int> rendered{0};
+        try {
+            model::scheduleFrames(job, nullptr, &done, [&]() -> model::FrameRenderer {
+                return [&](int frame, const QString&, const std::function<bool()>&) -> model::FrameWrite {
+                    ++rendered;
+                    return [frame] {
+                        if (frame == 3)
+                            throw model::IoError(
+                                QStringLiteral("frame_0003.png"), QStringLiteral("No space left on device"));
+                    };
+                };
+            });
+            QFAIL("the failed write was not reported");
+        } catch (const model::RenderFrameError& e) {
+            QCOMPARE(e.frame(), 3);
+            QCOMPARE(e.file(), QStringLiteral("frame_0003.png"));
+            QVERIFY(e.problem().contains(QStringLiteral("No space")));
+        }
+        // Frame 4 may have rendered while frame 3 was being written: it is dropped.
+        QCOMPARE(done.frames, (std::vector<int>{0, 1, 2}));
+        QVERIFY2(rendered <= 5, "frames went on rendering after the failure");
+    }
+
     void fewShortDashesOnTheElephant()
     {
         const model::ProjectData data

@@ -318,13 +318,18 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
     // Per vertex, once: camera coordinates, snapped pixel position and outcode.
     const Eigen::Index vertexCount = shape.rows();
     const std::size_t vertexSlots = std::size_t(vertexCount);
-    std::vector<Eigen::Vector3d> cam(vertexSlots);
-    std::vector<RasterVertex> screen(vertexSlots);
+    // Kept per thread: a sequence of frames allocates them once (issue 29); every slot is written
+    // below before it is read.
+    thread_local std::vector<Eigen::Vector3d> cam;
+    thread_local std::vector<RasterVertex> screen;
+    cam.resize(vertexSlots);
+    screen.resize(vertexSlots);
     for (Eigen::Index v = 0; v < vertexCount; ++v) {
         const std::size_t s = std::size_t(v);
         const Eigen::Vector3d c = frame.toCamera(shape.row(v).transpose().cast<double>());
         cam[s] = c;
         RasterVertex& r = screen[s];
+        r = RasterVertex{}; // the previous frame's values must not show through
         r.depth = c.z();
         std::uint8_t oc = 0;
         if (!c.allFinite()) {

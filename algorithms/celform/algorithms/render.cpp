@@ -173,9 +173,11 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     const int width = camera.width, height = camera.height;
     const auto pixelCount = std::size_t(width) * std::size_t(height);
     const Faces& faces = mesh.faces;
-    const Positions normals = vertexNormals(shape, faces);
+    RenderScratch& scratch = cache.scratch;
+    vertexNormals(shape, faces, scratch.normals);
+    const Positions& normals = scratch.normals;
 
-    GBuffer g;
+    GBuffer& g = scratch.gbuffer;
     rasterise(shape, faces, normals, camera, g);
 
     // Lines: topology once per mesh, features and strokes per frame, from the line view's eye
@@ -188,7 +190,7 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         view.eye = lv.eye.cast<float>();
         view.direction = lv.forward().cast<float>();
         view.orthographic = lv.orthographic;
-        FeatureEdges features;
+        FeatureEdges& features = scratch.features;
         extractFeatureEdges(shape, faces, topology, mesh.faceMaterials, view, look.lineSettings, features);
         const std::vector<Stroke> strokes = chainStrokes(topology, features);
         auto project
@@ -204,7 +206,7 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     }
 
     // Per-vertex and per-face inputs of the comic paper's two coarser toon evaluations.
-    std::vector<float> vertexIntensity;
+    std::vector<float>& vertexIntensity = scratch.vertexIntensity;
     std::array<float, 32> table{};
     if (look.toonEvaluation == ToonEvaluation::PerVertexLut) {
         table = toonLookupTable(look.toon);
@@ -232,7 +234,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         return bary.x() * offsetAt(look, faces(f, 0)) + bary.y() * offsetAt(look, faces(f, 1))
             + bary.z() * offsetAt(look, faces(f, 2));
     };
-    std::vector<float> lambertAt(pixelCount, 0.f);
+    std::vector<float>& lambertAt = scratch.lambert;
+    lambertAt.assign(pixelCount, 0.f);
     for (std::size_t i = 0; i < pixelCount; ++i)
         if (g.faceId[i] >= 0)
             lambertAt[i] = facingNormal(i).dot(lightDirection(look, g.position[i])) + pixelOffset(i);
@@ -266,7 +269,10 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     };
 
     const double tanHalf = std::tan(camera.fovYDegrees * kPi / 360.0);
-    out.beauty = ImageRGBA(width, height);
+    // Every pixel of the beauty is written below: only its size is set here.
+    out.beauty.width = width;
+    out.beauty.height = height;
+    out.beauty.pixels.resize(pixelCount * 4);
     out.tone.assign(pixelCount, 0.f);
     out.highlights.assign(pixelCount, 0.f);
     out.depth = g.depth;
@@ -354,7 +360,7 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         }
     }
     if (gbuffer)
-        *gbuffer = std::move(g);
+        std::swap(*gbuffer, g);
 }
 
 } // namespace celform::algo

@@ -97,11 +97,23 @@ struct RidgeRenderCache {
     RidgeSnakes snakes;
 };
 
+/// A frame's working buffers, kept between frames so that a sequence allocates them once: after
+/// the first frame of a size, a frame touches no fresh page for them (issue 29). Their contents
+/// are overwritten by every frame; nothing is carried from one frame to the next.
+struct RenderScratch {
+    GBuffer gbuffer;
+    Positions normals;
+    FeatureEdges features;
+    std::vector<float> lambert; ///< N.L + offset per pixel
+    std::vector<float> vertexIntensity; ///< the comic paper's per-vertex table lookup
+};
+
 /// What renderFrame keeps between frames (the edge topology is the mesh's own, TriMesh::
 /// edgeTopology()).
 struct RenderCache {
     std::vector<HighlightGeometry> highlights; ///< most recently used last, a few entries
     RidgeRenderCache ridges;
+    RenderScratch scratch;
 };
 
 /// The ridge snakes of shape seen from lineCamera, through cache (curvature once per shape).
@@ -111,7 +123,8 @@ const RidgeSnakes& cachedRidgeSnakes(const Positions& shape, const TriMesh& mesh
 /// Renders shape (the view-dependent blend for this camera, #V by 3) with mesh's faces and
 /// materials. lineView lets stereo pairs take their lines from the centre eye (paper 3, section
 /// 4.2.2); null uses camera itself. gbuffer, when not null, receives the frame's G-buffer (the
-/// depth analysis reads it). Deterministic.
+/// depth analysis reads it; its earlier storage goes to the cache's scratch in exchange). out's
+/// buffers are reused when they have the size already. Deterministic.
 void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera& camera, const RenderLook& look,
     RenderCache& cache, RenderPasses& out, const RasterCamera* lineView = nullptr, GBuffer* gbuffer = nullptr);
 

@@ -37,7 +37,14 @@ Eigen::AlignedBox3d boundingBox(const Positions& vertices)
 
 Positions vertexNormals(const Positions& vertices, const Faces& faces)
 {
-    Positions normals = Positions::Zero(vertices.rows(), 3);
+    Positions normals;
+    vertexNormals(vertices, faces, normals);
+    return normals;
+}
+
+void vertexNormals(const Positions& vertices, const Faces& faces, Positions& normals)
+{
+    normals.setZero(vertices.rows(), 3); // keeps the storage when the size is the same
     for (Eigen::Index f = 0; f < faces.rows(); ++f) {
         const Eigen::Vector3f a = vertices.row(faces(f, 0));
         const Eigen::Vector3f b = vertices.row(faces(f, 1));
@@ -53,7 +60,6 @@ Positions vertexNormals(const Positions& vertices, const Faces& faces)
         else
             normals.row(i) << 0.f, 0.f, 1.f;
     }
-    return normals;
 }
 
 // --- derived data ----------------------------------------------------------------------------

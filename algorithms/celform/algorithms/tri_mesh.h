@@ -103,5 +103,7 @@ Eigen::AlignedBox3d boundingBox(const Positions& vertices);
 /// Per-vertex unit normals, area-weighted average of the incident face normals (#V by 3).
 /// Vertices without a face get (0, 0, 1).
 Positions vertexNormals(const Positions& vertices, const Faces& faces);
+/// The same into normals, whose storage is reused when it has the size already.
+void vertexNormals(const Positions& vertices, const Faces& faces, Positions& normals);
 
 } // namespace celform::algo

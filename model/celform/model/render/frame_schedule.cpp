@@ -1,12 +1,16 @@
 // The threads of a render job (frame_schedule.h). Frames are taken in order from one counter, so
-// with one thread this is the plain loop over the frames; every file is written by the thread
-// that rendered it, atomically (render_output.h), so the threads only share the counter, the
-// progress, the listener and the first failure, all behind one mutex.
+// with one thread this is the plain loop over the frames. Files are written, atomically
+// (render_output.h), by one writer thread in the order the frames were rendered, while their
+// render threads go on with the next frames; the threads share the counter, the progress, the
+// listener and the first failure, all behind one mutex.
 #include "celform/model/render/frame_schedule.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
 
+#include <condition_variable>
+#include <deque>
+#include <future>
 #include <mutex>
 #include <new>
 #include <optional>
@@ -27,20 +31,87 @@ struct Failure {
     QString problem;
 };
 
+/// The job's one writer thread: runs the writes handed to it, in order. Without a thread to be had,
+/// a write runs on the thread that hands it over.
+class Writer {
+public:
+    Writer()
+    {
+        try {
+            m_thread = std::thread([this] { run(); });
+        } catch (const std::system_error&) { }
+    }
+    ~Writer()
+    {
+        {
+            const std::lock_guard<std::mutex> lock(m_mutex);
+            m_closing = true;
+        }
+        m_wake.notify_one();
+        if (m_thread.joinable())
+            m_thread.join();
+    }
+    Writer(const Writer&) = delete;
+    Writer& operator=(const Writer&) = delete;
+
+    /// Queues task; the future is ready once it has run.
+    std::future<void> submit(std::function<void()> task)
+    {
+        std::packaged_task<void()> packaged(std::move(task));
+        std::future<void> done = packaged.get_future();
+        if (!m_thread.joinable()) {
+            packaged();
+            return done;
+        }
+        {
+            const std::lock_guard<std::mutex> lock(m_mutex);
+            m_tasks.push_back(std::move(packaged));
+        }
+        m_wake.notify_one();
+        return done;
+    }
+
+private:
+    void run()
+    {
+        for (;;) {
+            std::packaged_task<void()> task;
+            {
+                std::unique_lock<std::mutex> lock(m_mutex);
+                m_wake.wait(lock, [this] { return m_closing || !m_tasks.empty(); });
+                if (m_tasks.empty())
+                    return; // closing, and nothing left
+                task = std::move(m_tasks.front());
+                m_tasks.pop_front();
+            }
+            task();
+        }
+    }
+
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    std::deque<std::packaged_task<void()>> m_tasks;
+    bool m_closing = false;
+    std::thread m_thread;
+};
+
 class Schedule {
 public:
-    Schedule(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener)
+    Schedule(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener, Writer& writer)
         : m_job(job)
+        , m_writer(writer)
         , m_progress(progress)
         , m_listener(listener)
         , m_count(job.frameCount())
     { }
 
     /// One thread's loop: the next frame until none is left, the render is cancelled or a
-    /// frame has failed.
+    /// frame has failed. Its frames' writes go to the writer, one at a time: the next frame renders
+    /// while the last one is written.
     void work(const std::function<FrameRenderer()>& makeRenderer)
     {
         FrameRenderer render;
+        std::future<void> writing; // this thread's frame being written
         const std::function<bool()> cancelled = [this] {
             const std::lock_guard<std::mutex> lock(m_mutex);
             return userCancelled();
@@ -57,28 +128,63 @@ public:
                 }
                 if (!render)
                     render = makeRenderer();
-                if (!render(frame, file, cancelled))
-                    return; // cancelled before the write: userCancelled() has set m_stop
-                const std::lock_guard<std::mutex> lock(m_mutex);
-                ++m_done;
-                ++m_written;
-                frameDone(frame, file, false);
-            } catch (const IoError& e) {
-                fail({frame, e.file(), e.problem()});
-            } catch (const std::bad_alloc&) {
-                fail({frame, file, ScheduleText::tr("not enough memory to render it")});
-            } catch (const std::exception& e) {
-                fail({frame, file, QString::fromLocal8Bit(e.what())});
+                FrameWrite write = render(frame, file, cancelled);
+                if (!write)
+                    break; // cancelled before the write: userCancelled() has set m_stop
+                if (writing.valid())
+                    writing.wait(); // the renderer's buffers of the frame before last are free again
+                writing = m_writer.submit(
+                    [this, frame, file, write = std::move(write)] { writeFrame(frame, file, write); });
             } catch (...) {
-                fail({frame, file, ScheduleText::tr("the render failed")});
+                failWith(frame, file);
             }
         }
+        // The renderer (whose buffers the write reads) goes when this thread's loop ends.
+        if (writing.valid())
+            writing.wait();
     }
 
     [[nodiscard]] int written() const { return m_written; }
     [[nodiscard]] const std::optional<Failure>& failure() const { return m_failure; }
 
 private:
+    /// On the writer thread: writes a frame unless the render was cancelled or failed meanwhile.
+    void writeFrame(int frame, const QString& file, const FrameWrite& write)
+    {
+        {
+            const std::lock_guard<std::mutex> lock(m_mutex);
+            // Rendered but not written: dropped when cancelled, or when it comes after a frame
+            // that failed (the files written stay the frames before the failure).
+            if (userCancelled() || (m_failure && m_failure->frame < frame))
+                return;
+        }
+        try {
+            write();
+            const std::lock_guard<std::mutex> lock(m_mutex);
+            ++m_done;
+            ++m_written;
+            frameDone(frame, file, false);
+        } catch (...) {
+            failWith(frame, file);
+        }
+    }
+
+    /// The failure being handled (in a catch block) as the frame's.
+    void failWith(int frame, const QString& file)
+    {
+        try {
+            throw;
+        } catch (const IoError& e) {
+            fail({frame, e.file(), e.problem()});
+        } catch (const std::bad_alloc&) {
+            fail({frame, file, ScheduleText::tr("not enough memory to render it")});
+        } catch (const std::exception& e) {
+            fail({frame, file, QString::fromLocal8Bit(e.what())});
+        } catch (...) {
+            fail({frame, file, ScheduleText::tr("the render failed")});
+        }
+    }
+
     /// The next frame's index, or none when the threads are to stop.
     std::optional<int> nextIndex()
     {
@@ -114,6 +220,7 @@ private:
     }
 
     const RenderJob& m_job;
+    Writer& m_writer;
     algo::Progress* m_progress;
     RenderFrameListener* m_listener;
     const int m_count;
@@ -130,7 +237,8 @@ private:
 int scheduleFrames(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener,
     const std::function<FrameRenderer()>& makeRenderer)
 {
-    Schedule schedule(job, progress, listener);
+    Writer writer;
+    Schedule schedule(job, progress, listener, writer);
     const int threads = std::clamp(job.threads, 1, std::max(job.frameCount(), 1));
     std::vector<std::thread> helpers;
     helpers.reserve(std::size_t(threads - 1));

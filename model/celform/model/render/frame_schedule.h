@@ -11,18 +11,28 @@
 
 namespace celform::model {
 
-/// Renders one frame and writes its file. It may keep buffers and caches between its calls, as
-/// long as the file it writes for a frame does not depend on the frames it rendered before.
-/// cancelled() is asked between the render and the write: when it says stop, nothing is written
-/// and the renderer returns false. Failures are thrown (IoError naming the file, bad_alloc).
-using FrameRenderer = std::function<bool(int frame, const QString& file, const std::function<bool()>& cancelled)>;
+/// Writes a rendered frame's file. It runs on the job's writer thread while the thread that
+/// rendered the frame goes on with its next one (issue 29: encoding and writing overlap rendering,
+/// even with one render thread). Failures are thrown (IoError naming the file, bad_alloc).
+using FrameWrite = std::function<void()>;
+
+/// Renders one frame and returns how to write its file. It may keep buffers and caches between its
+/// calls, as long as the file it writes for a frame does not depend on the frames it rendered
+/// before. At most one of its writes runs at a time, and a call starts only once the write before
+/// the previous one has finished: the data of two frames' writes (used in turn) is all it keeps
+/// apart from its passes. cancelled() is asked between the render and making the write: when it
+/// says stop, the renderer returns an empty FrameWrite. Failures are thrown as FrameWrite's.
+using FrameRenderer = std::function<FrameWrite(int frame, const QString& file, const std::function<bool()>& cancelled)>;
 
 /// Runs the job's frames, in order of frame, on min(job.threads, frame count) threads (the
 /// calling thread is one of them), each with a renderer of its own made by makeRenderer on that
-/// thread before its first frame. With job.skipExisting a frame whose file exists (a regular file, or a
+/// thread before its first frame, and one writer thread besides them that writes the files in the
+/// order they were rendered. A frame counts as done (listener, progress) once its file is written;
+/// the progress is asked again before each write, and a frame rendered but not yet written when it
+/// says stop is dropped. With job.skipExisting a frame whose file exists (a regular file, or a
 /// link to one) is reported to listener as skipped and not rendered. After a failure no new frame starts; the frames
-/// under way on other threads are finished and written. Returns how many files were written; throws RenderFrameError
-/// for the lowest frame that failed.
+/// under way before the failed one are finished and written, later ones are dropped. Returns how many files were
+/// written; throws RenderFrameError for the lowest frame that failed.
 int scheduleFrames(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener,
     const std::function<FrameRenderer()>& makeRenderer);
 

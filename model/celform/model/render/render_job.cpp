@@ -19,6 +19,7 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -169,7 +170,7 @@ public:
         m_evaluator.prepare(data);
     }
 
-    bool render(int f, const QString& target, const std::function<bool()>& cancelled)
+    FrameWrite render(int f, const QString& target, const std::function<bool()>& cancelled)
     {
         const ProjectData& data = m_data;
         // The one evaluation of a frame (frame_evaluator.h): the camera at the frame (the path's
@@ -194,26 +195,40 @@ public:
         }
         // The subdivided base model, face sets and offsets stand in for the control ones.
         const ProjectData& shown = surface ? surface->display : data;
+        // Two frames' file data, used in turn: the writer may still be writing the last one.
+        EncodedImage& encoded = m_encoded[m_nextEncoded];
+        m_nextEncoded ^= 1;
+        static const std::vector<std::string> rgba = {"R", "G", "B", "A"};
         // The analysis passes (segments, curvature, depth error) come from the depth analysis of
         // the centre eye's picture.
         if (m_analysisPicture) {
             m_analyser.analyse(shown, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
                 m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_offsets);
             if (cancelled())
-                return false;
-            writeImage(analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile), target);
-            return true;
+                return {};
+            const algo::ImageRGBA image = analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile);
+            encodeChannels(
+                target, image.width, image.height, rgba, image.pixels.data(), image.pixels.size(), true, encoded);
+        } else {
+            renderShape(shown, m_resolved.look, m_shape.positions, f, camera, m_job.size.width(), m_job.size.height(),
+                m_job.stereo, m_cache, m_passes, m_shape.generation, &m_offsets);
+            if (cancelled())
+                return {};
+            if (m_allPasses) {
+                encodePassesExr(m_passes, target, encoded);
+            } else {
+                const QString pass = m_job.pass.isEmpty() ? QStringLiteral("beauty") : m_job.pass;
+                // The beauty is encoded from the passes as they are; another pass through an image.
+                const algo::ImageRGBA* image = &m_passes.beauty;
+                if (pass != QLatin1String("beauty")) {
+                    passImage(m_passes, pass, m_floatFile, m_image);
+                    image = &m_image;
+                }
+                encodeChannels(target, image->width, image->height, rgba, image->pixels.data(), image->pixels.size(),
+                    true, encoded);
+            }
         }
-        const algo::RenderPasses passes = renderShape(shown, m_resolved.look, m_shape.positions, f, camera,
-            m_job.size.width(), m_job.size.height(), m_job.stereo, m_cache, m_shape.generation, &m_offsets);
-        if (cancelled())
-            return false;
-        if (m_allPasses)
-            writePassesExr(passes, target);
-        else
-            writeImage(
-                passImage(passes, m_job.pass.isEmpty() ? QStringLiteral("beauty") : m_job.pass, m_floatFile), target);
-        return true;
+        return [&encoded, target] { writeEncoded(encoded, target); };
     }
 
 private:
@@ -231,6 +246,10 @@ private:
     algo::Shape m_shape; // the shape rendered: m_control, or its subdivided surface
     std::vector<float> m_offsets; // in effect at the camera's view and the frame (shading_layers.h)
     std::vector<float> m_subdividedOffsets;
+    algo::RenderPasses m_passes; // the frame's passes, their storage kept from frame to frame
+    algo::ImageRGBA m_image; // a pass other than the beauty as an image
+    std::array<EncodedImage, 2> m_encoded;
+    int m_nextEncoded = 0;
 };
 
 } // namespace
@@ -241,8 +260,12 @@ int renderFrames(const ProjectData& data, const QString& source, const RenderJob
     const ResolvedRenderJob resolved = resolveRenderJob(data, source, job);
     return scheduleFrames(job, progress, listener, [&]() -> FrameRenderer {
         auto worker = std::make_shared<FrameWorker>(data, job, resolved);
-        return [worker](int frame, const QString& file, const std::function<bool()>& cancelled) {
-            return worker->render(frame, file, cancelled);
+        return [worker](int frame, const QString& file, const std::function<bool()>& cancelled) -> FrameWrite {
+            FrameWrite write = worker->render(frame, file, cancelled);
+            if (!write)
+                return {};
+            // The write keeps the worker (and the data it writes) alive until it has run.
+            return [worker, write = std::move(write)] { write(); };
         };
     });
 }

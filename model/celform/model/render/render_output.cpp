@@ -7,10 +7,13 @@
 
 #include "celform/algorithms/srgb_encode.h"
 
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QImage>
+#include <QImageWriter>
 #include <QSysInfo>
 
 #include <algorithm>
@@ -56,20 +59,13 @@ QString createTemporaryBeside(const QString& path)
     }
 }
 
-/// Puts the finished temporary file in the target's place. Its bytes go to the disk first: after
-/// a crash of the machine the target holds the old file or the whole new one, never an empty one.
+/// Puts the finished, closed temporary file in the target's place. Images are not synced to the
+/// disk first (issue 29: a farm frame costs a disk flush otherwise): a reader sees the old file or
+/// the whole new one, and a frame cut short by a crash of the machine is found and rendered again
+/// by --skip-existing.
 void commit(const QString& temporary, const QString& path)
 {
     const QByteArray from = QFile::encodeName(temporary);
-    const int fd = ::open(from.constData(), O_RDONLY | O_CLOEXEC);
-    const bool synced = fd >= 0 && ::fsync(fd) == 0;
-    const int syncError = errno;
-    if (fd >= 0)
-        ::close(fd);
-    if (!synced) {
-        QFile::remove(temporary);
-        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(syncError)));
-    }
     if (std::rename(from.constData(), QFile::encodeName(path).constData()) != 0) {
         const int renameError = errno;
         QFile::remove(temporary);
@@ -77,9 +73,13 @@ void commit(const QString& temporary, const QString& path)
     }
 }
 
-/// Writes channels of float data; 8-bit formats get sRGB-encoded colour channels.
-void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
-    const std::vector<float>& data, bool encodeSrgb)
+} // namespace
+
+/// Checks the suffix and makes the file's data: 8-bit formats get the values quantised, sRGB-encoded
+/// in the colour channels when encodeSrgb; EXR takes the floats as they are. out's buffers are
+/// reused.
+void encodeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const float* data, std::size_t count, bool encodeSrgb, EncodedImage& out)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     const bool isFloat = suffix == QLatin1String("exr");
@@ -87,27 +87,126 @@ void writeChannels(const QString& path, int width, int height, const std::vector
         QStringLiteral("jpg"), QStringLiteral("jpeg"), QStringLiteral("exr")};
     if (!known.contains(suffix))
         throw IoError(path, RenderOutput::tr("has an unknown image type; use .png, .tif, .jpg or .exr"));
+    out.width = width;
+    out.height = height;
+    out.names = names;
+    out.isFloat = isFloat;
     const int channels = int(names.size());
-    const RasterCodec& codec = rasterCodec(path);
-    std::vector<unsigned char> bytes;
-    if (!isFloat) {
-        bytes.resize(data.size());
-        // The colour channels come first (at most three), alpha or data after them.
-        int colour = std::min(channels, 3);
-        for (int c = 0; c < colour; ++c)
-            if (names[std::size_t(c)] == "A")
-                colour = c;
-        algo::quantise8(data.data(), bytes.data(), data.size(), channels, colour, encodeSrgb);
+    if (isFloat) {
+        out.floats.assign(data, data + count);
+        return;
     }
+    out.bytes.resize(count);
+    // The colour channels come first (at most three), alpha or data after them.
+    int colour = std::min(channels, 3);
+    for (int c = 0; c < colour; ++c)
+        if (names[std::size_t(c)] == "A")
+            colour = c;
+    algo::quantise8(data, out.bytes.data(), count, channels, colour, encodeSrgb);
+}
+
+namespace {
+
+/// The QImage format of 8-bit pixels with these channels, for Qt's PNG writer; Invalid for others.
+QImage::Format qtFormatOf(const std::vector<std::string>& names)
+{
+    if (names == std::vector<std::string>{"R", "G", "B", "A"})
+        return QImage::Format_RGBA8888;
+    if (names == std::vector<std::string>{"R", "G", "B"})
+        return QImage::Format_RGB888;
+    if (names.size() == 1)
+        return QImage::Format_Grayscale8;
+    return QImage::Format_Invalid;
+}
+
+/// Writes all of bytes to a new file, closing it; the system's reason when it fails.
+QString writeWhole(const QString& file, const QByteArray& bytes)
+{
+    const int fd = ::open(QFile::encodeName(file).constData(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (fd < 0)
+        return qt_error_string(errno);
+    const char* at = bytes.constData();
+    qsizetype left = bytes.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd, at, std::size_t(left));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            const int error = n < 0 ? errno : ENOSPC;
+            ::close(fd);
+            return qt_error_string(error);
+        }
+        at += n;
+        left -= n;
+    }
+    if (::close(fd) != 0)
+        return qt_error_string(errno);
+    return {};
+}
+
+/// An 8-bit PNG through Qt's writer (libpng, in Qt Gui, which the program has loaded already):
+/// issue 29 measured loading the OpenImageIO module and its library graph (about 275 libraries)
+/// as the larger part of a one-frame render's start; the pixels are the same. Empty when written,
+/// else the problem; nullopt when Qt does not take these channels.
+std::optional<QString> writePngWithQt(const EncodedImage& image, const QString& file)
+{
+    const QImage::Format format = qtFormatOf(image.names);
+    if (format == QImage::Format_Invalid || image.isFloat)
+        return std::nullopt;
+    const qsizetype rowBytes = qsizetype(image.width) * qsizetype(image.names.size());
+    const QImage wrapped(image.bytes.data(), image.width, image.height, rowBytes, format);
+    // Kept per thread: the file's bytes of one frame, written to the disk whole.
+    thread_local QByteArray encoded;
+    encoded.resize(0);
+    QBuffer buffer(&encoded);
+    buffer.open(QIODevice::WriteOnly);
+    QImageWriter writer(&buffer, "png");
+    if (!writer.write(wrapped))
+        return writer.errorString();
+    return writeWhole(file, encoded);
+}
+
+} // namespace
+
+void writeEncoded(const EncodedImage& image, const QString& path)
+{
     // Nothing below throws between making the temporary file and removing or renaming it.
     const QString temporary = createTemporaryBeside(path);
-    const QString error = isFloat ? codec.write(temporary, width, height, names, true, data.data())
-                                  : codec.write(temporary, width, height, names, false, bytes.data());
+    if (QFileInfo(path).suffix().compare(QLatin1String("png"), Qt::CaseInsensitive) == 0) {
+        if (const std::optional<QString> problem = writePngWithQt(image, temporary)) {
+            if (!problem->isEmpty()) {
+                QFile::remove(temporary);
+                throw IoError(path, RenderOutput::tr("could not be written: %1").arg(*problem));
+            }
+            commit(temporary, path);
+            return;
+        }
+    }
+    const RasterCodec* codec = nullptr;
+    try {
+        codec = &rasterCodec(path);
+    } catch (...) {
+        QFile::remove(temporary);
+        throw;
+    }
+    const QString error = image.isFloat
+        ? codec->write(temporary, image.width, image.height, image.names, true, image.floats.data())
+        : codec->write(temporary, image.width, image.height, image.names, false, image.bytes.data());
     if (!error.isEmpty()) {
         QFile::remove(temporary);
         throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
     }
     commit(temporary, path);
+}
+
+namespace {
+
+void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const std::vector<float>& data, bool encodeSrgb)
+{
+    EncodedImage encoded;
+    encodeChannels(path, width, height, names, data.data(), data.size(), encodeSrgb, encoded);
+    writeEncoded(encoded, path);
 }
 
 } // namespace
@@ -298,13 +397,22 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
     std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
 {
+    algo::RenderPasses passes;
+    renderShape(
+        data, look, shape, frame, camera, width, height, stereo, cache, passes, shapeGeneration, shadingOffsets);
+    return passes;
+}
+
+void renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
+    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
+    algo::RenderPasses& passes, std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
+{
     algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets);
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
-    algo::RenderPasses passes;
     algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);
     if (stereo == algo::StereoOutput::Off)
-        return passes;
+        return;
     const auto [left, right] = algo::stereoPair(centre, resolvedStereo(look.stereo, camera, data.baseMesh->centre()));
     algo::RenderPasses l, r;
     algo::renderFrame(shape, *data.baseMesh, left, renderLook, cache, l, &centre);
@@ -328,7 +436,6 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
     case algo::StereoOutput::Off:
         break;
     }
-    return passes;
 }
 
 QStringList renderPassNames()
@@ -340,15 +447,32 @@ QStringList renderPassNames()
 
 algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile)
 {
+    if (pass == QLatin1String("beauty"))
+        return passes.beauty;
+    algo::ImageRGBA image;
+    passImage(passes, pass, forFloatFile, image);
+    return image;
+}
+
+void passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile, algo::ImageRGBA& image)
+{
     const int w = passes.beauty.width, h = passes.beauty.height;
-    algo::ImageRGBA image(w, h, Eigen::Vector4f(0, 0, 0, 1));
+    if (pass == QLatin1String("beauty")) {
+        image = passes.beauty; // copy-assigned into the storage image has
+        return;
+    }
+    image.width = w;
+    image.height = h;
+    image.pixels.resize(std::size_t(w) * std::size_t(h) * 4);
+    for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
+        image.pixels[i] = image.pixels[i + 1] = image.pixels[i + 2] = 0.f;
+        image.pixels[i + 3] = 1.f;
+    }
     auto grey = [&](const std::vector<float>& values) {
         for (int i = 0; i < w * h; ++i)
             for (int c = 0; c < 3; ++c)
                 image.pixels[std::size_t(i) * 4 + std::size_t(c)] = values[std::size_t(i)];
     };
-    if (pass == QLatin1String("beauty"))
-        return passes.beauty;
     if (pass == QLatin1String("lines")) {
         grey(passes.lines);
     } else if (pass == QLatin1String("tone")) {
@@ -399,7 +523,6 @@ algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass,
         throw IoError(pass,
             RenderOutput::tr("is not a render pass; use one of %1").arg(renderPassNames().join(QStringLiteral(", "))));
     }
-    return image;
 }
 
 void writeImage(const algo::ImageRGBA& image, const QString& path)
@@ -413,15 +536,20 @@ void writeImageChannels(const QString& path, int width, int height, const std::v
     writeChannels(path, width, height, names, data, encodeSrgb);
 }
 
-void writePassesExr(const algo::RenderPasses& passes, const QString& path)
+void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedImage& out)
 {
+    if (QFileInfo(path).suffix().toLower() != QLatin1String("exr"))
+        throw IoError(path, RenderOutput::tr("all passes together need an .exr file"));
     const int w = passes.beauty.width, h = passes.beauty.height;
-    const std::vector<std::string> names = {"R", "G", "B", "A", "lines.Y", "tone.Y", "highlights.Y", "depth.Z",
-        "normal.X", "normal.Y", "normal.Z", "id.ID"};
-    const std::size_t channels = names.size();
-    std::vector<float> data(std::size_t(w) * std::size_t(h) * channels);
+    out.width = w;
+    out.height = h;
+    out.names = {"R", "G", "B", "A", "lines.Y", "tone.Y", "highlights.Y", "depth.Z", "normal.X", "normal.Y", "normal.Z",
+        "id.ID"};
+    out.isFloat = true;
+    const std::size_t channels = out.names.size();
+    out.floats.resize(std::size_t(w) * std::size_t(h) * channels);
     for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {
-        float* p = data.data() + i * channels;
+        float* p = out.floats.data() + i * channels;
         for (int c = 0; c < 4; ++c)
             p[c] = passes.beauty.pixels[i * 4 + std::size_t(c)];
         p[4] = passes.lines[i];
@@ -433,9 +561,13 @@ void writePassesExr(const algo::RenderPasses& passes, const QString& path)
         p[10] = passes.normal[i].z();
         p[11] = float(passes.id[i]);
     }
-    if (QFileInfo(path).suffix().toLower() != QLatin1String("exr"))
-        throw IoError(path, RenderOutput::tr("all passes together need an .exr file"));
-    writeChannels(path, w, h, names, data, false);
+}
+
+void writePassesExr(const algo::RenderPasses& passes, const QString& path)
+{
+    EncodedImage encoded;
+    encodePassesExr(passes, path, encoded);
+    writeEncoded(encoded, path);
 }
 
 } // namespace celform::model

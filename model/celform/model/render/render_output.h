@@ -47,6 +47,12 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
     std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr);
 
+/// The same into passes, whose buffers are reused when they have the size already (a sequence's
+/// frames, issue 29).
+void renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
+    const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
+    algo::RenderPasses& passes, std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr);
+
 /// The pass names of `celform render --pass`.
 QStringList renderPassNames();
 
@@ -54,6 +60,33 @@ QStringList renderPassNames();
 /// 8-bit files (raw in EXR), depth normalised to [0, 1] over the model for 8-bit files (raw in
 /// EXR, 0 off the model), ids as distinct colours (raw in EXR). Throws IoError for a bad name.
 algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile);
+/// The same into image, whose storage is reused.
+void passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile, algo::ImageRGBA& image);
+
+/// An image made ready for its file (encodeChannels): 8-bit values or floats with their channel
+/// names, apart from the buffers it came from, so that another thread can write it while the next
+/// frame renders. Its buffers are reused from frame to frame.
+struct EncodedImage {
+    int width = 0;
+    int height = 0;
+    std::vector<std::string> names;
+    bool isFloat = false; ///< an EXR: floats; else bytes
+    std::vector<unsigned char> bytes;
+    std::vector<float> floats;
+};
+
+/// Checks path's suffix (png, tif, tiff, jpg, jpeg, exr; else IoError naming it) and makes count
+/// interleaved floats of the named channels into out: quantised to 8 bits (sRGB-encoded colour
+/// channels when encodeSrgb), or kept as floats for EXR.
+void encodeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const float* data, std::size_t count, bool encodeSrgb, EncodedImage& out);
+
+/// Every pass as the channels of writePassesExr, into out. Throws IoError unless path is an .exr.
+void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedImage& out);
+
+/// Writes an encoded image to path atomically (a temporary file beside it, closed, then renamed;
+/// not synced to the disk). Throws IoError naming path.
+void writeEncoded(const EncodedImage& image, const QString& path);
 
 /// Writes an image by suffix (png, tif, tiff, jpg, jpeg, exr), atomically (temporary file beside
 /// it, then a rename). Throws IoError naming the file.

@@ -1,0 +1,214 @@
+// A shot at the speed of its frames (issue 29): the dragon (871k triangles) at 1920x1080, toon with
+// lines, 10 frames along a turntable. In one run:
+// - frame/in_process: renderFrame() on the project's shape, the figure the others are read against
+//   (bench_render's frame);
+// - sequence/in_process_png: renderFrames() over the 10 frames, files written, per frame; its
+//   counter minflt_per_frame is the minor page faults of a frame after the first (getrusage:
+//   faults of 10 frames less those of 1, over 9);
+// - process/*: `celform render --frames 0-9` as a whole process (fork, exec, wait4), per frame,
+//   with --threads 1 and 2, PNG and EXR, and a single frame (start-up, project load and the line
+//   topology included).
+// Goals: process/png_threads1 <= 1.25x frame/in_process, process/png_threads2 <= 0.7x, EXR <= 1.2x
+// PNG, process/single_frame <= frame/in_process + 300 ms, minflt_per_frame <= 2000 (PNG).
+// Run: bench_sequence (medians of 3); CELFORM_BENCH_EXECUTABLE=/path/to/celform measures another
+// build's processes. Skips without ../shared/data.
+#include "celform/algorithms/render.h"
+#include "celform/model/data/project_data.h"
+#include "celform/model/io/project_file.h"
+#include "celform/model/render/render_job.h"
+#include "celform/model/render/render_output.h"
+
+#include "bench_data.h"
+
+#include <benchmark/benchmark.h>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QString>
+#include <QTemporaryDir>
+
+#include <chrono>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+using namespace celform;
+
+constexpr int kFrames = 10;
+
+/// Runs a program to its end with its output on /dev/null; seconds, or a negative number on failure.
+double runProcess(const std::vector<std::string>& args)
+{
+    std::vector<char*> argv;
+    for (const std::string& a : args)
+        argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int null = open("/dev/null", O_WRONLY);
+        dup2(null, STDOUT_FILENO);
+        dup2(null, STDERR_FILENO);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = -1;
+    if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return -1;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The celform measured: CELFORM_BENCH_EXECUTABLE (an older build, for a before and after in one
+/// run), else this build's.
+std::string executable()
+{
+    const char* other = getenv("CELFORM_BENCH_EXECUTABLE");
+    return other && *other ? other : CELFORM_EXECUTABLE;
+}
+
+/// The dragon's project with a 10-frame turntable, made once with the command line.
+struct Shot {
+    QTemporaryDir dir;
+    std::string celform = executable();
+    std::string project;
+    bool ok = false;
+
+    Shot()
+    {
+        const QString mesh
+            = QDir(QStringLiteral(CELFORM_SHARED_DATA_DIR)).filePath(QStringLiteral("meshes/stanford_dragon.ply"));
+        if (!dir.isValid() || !QFileInfo::exists(mesh))
+            return;
+        project = dir.filePath(QStringLiteral("dragon.celform")).toStdString();
+        ok = runProcess({celform, "new", mesh.toStdString(), "--out", project}) >= 0
+            && runProcess({celform, "camera", project, "--turntable", std::to_string(kFrames)}) >= 0
+            && runProcess({celform, "set", project, "--style", "toon"}) >= 0;
+    }
+    [[nodiscard]] std::string out(const char* pattern) const
+    {
+        return dir.filePath(QString::fromLatin1(pattern)).toStdString();
+    }
+};
+
+Shot& shot()
+{
+    static Shot s;
+    return s;
+}
+
+model::RenderJob job(int frames, const char* pattern)
+{
+    model::RenderJob j;
+    j.firstFrame = 0;
+    j.lastFrame = frames - 1;
+    j.size = QSize(1920, 1080);
+    j.lines = true;
+    j.output = QString::fromStdString(shot().out(pattern));
+    return j;
+}
+
+long minorFaults()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_minflt;
+}
+
+void BM_FrameInProcess(benchmark::State& state)
+{
+    if (!shot().ok) {
+        state.SkipWithError("shared test data not found (../shared/data)");
+        return;
+    }
+    const model::ProjectData data = model::loadProject(QString::fromStdString(shot().project));
+    const model::RenderJob j = job(1, "unused.png");
+    const model::ResolvedRenderJob resolved = model::resolveRenderJob(data, QStringLiteral("dragon"), j);
+    const algo::TriMesh& mesh = *data.baseMesh;
+    const algo::RasterCamera camera
+        = model::rasterCamera(model::renderJobCamera(data, resolved.look, j, 0), 1920, 1080);
+    const algo::RenderLook look = model::renderLookFor(data, resolved.look);
+    algo::RenderCache cache;
+    algo::RenderPasses out;
+    for (auto _ : state) {
+        algo::renderFrame(mesh.vertices, mesh, camera, look, cache, out);
+        benchmark::DoNotOptimize(out.beauty.pixels.data());
+    }
+}
+
+void BM_SequenceInProcess(benchmark::State& state)
+{
+    if (!shot().ok) {
+        state.SkipWithError("shared test data not found (../shared/data)");
+        return;
+    }
+    const model::ProjectData data = model::loadProject(QString::fromStdString(shot().project));
+    for (auto _ : state) {
+        const long before = minorFaults();
+        model::renderFrames(data, QStringLiteral("dragon"), job(1, "one_####.png"));
+        const long afterOne = minorFaults();
+        const auto start = std::chrono::steady_clock::now();
+        model::renderFrames(data, QStringLiteral("dragon"), job(kFrames, "seq_####.png"));
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const long afterAll = minorFaults();
+        state.SetIterationTime(seconds / kFrames);
+        state.counters["minflt_per_frame"] = double((afterAll - afterOne) - (afterOne - before)) / (kFrames - 1);
+    }
+}
+
+void process(benchmark::State& state, std::vector<std::string> extra, int frames)
+{
+    if (!shot().ok) {
+        state.SkipWithError("shared test data not found (../shared/data)");
+        return;
+    }
+    std::vector<std::string> args = {shot().celform, "render", shot().project, "--size", "1920x1080", "--lines", "on"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    for (auto _ : state) {
+        const double seconds = runProcess(args);
+        if (seconds < 0) {
+            state.SkipWithError("celform render failed");
+            return;
+        }
+        state.SetIterationTime(seconds / frames);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    unsetenv("DISPLAY");
+    unsetenv("WAYLAND_DISPLAY");
+    const auto common = [](benchmark::internal::Benchmark* b) {
+        b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+    };
+    benchmark::RegisterBenchmark("frame/in_process", BM_FrameInProcess)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond)
+        ->Repetitions(3)
+        ->ReportAggregatesOnly(true);
+    common(benchmark::RegisterBenchmark("sequence/in_process_png", BM_SequenceInProcess));
+    const std::string frames = "0-" + std::to_string(kFrames - 1);
+    const std::string png = shot().out("p_####.png");
+    const std::string exr = shot().out("e_####.exr");
+    common(benchmark::RegisterBenchmark("process/png_threads1", process,
+        std::vector<std::string>{"--frames", frames, "--threads", "1", "--out", png}, kFrames));
+    common(benchmark::RegisterBenchmark("process/png_threads2", process,
+        std::vector<std::string>{"--frames", frames, "--threads", "2", "--out", png}, kFrames));
+    common(benchmark::RegisterBenchmark("process/exr_threads1", process,
+        std::vector<std::string>{"--frames", frames, "--threads", "1", "--out", exr}, kFrames));
+    common(benchmark::RegisterBenchmark("process/single_frame", process,
+        std::vector<std::string>{"--frame", "0", "--out", shot().out("single.png")}, 1));
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
