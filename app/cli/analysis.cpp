@@ -9,6 +9,7 @@
 #include "celform/model/document/document.h"
 #include "celform/model/analysis/light_optimisation.h"
 #include "celform/model/analysis/light_track_optimisation.h"
+#include "celform/model/analysis/segment_tracking.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
@@ -71,14 +72,16 @@ QJsonArray windowJson(const RatioWindow& window)
 }
 
 /// One analysed frame as `analyze --json` prints it (each element of `frames` with --frames).
-QJsonObject frameJson(int frame, const model::Camera& camera, const model::FrameAnalysis& analysed)
+/// ids: the segments' stable numbers along the frames (null: their indices).
+QJsonObject frameJson(
+    int frame, const model::Camera& camera, const model::FrameAnalysis& analysed, const std::vector<int>* ids = nullptr)
 {
     const algo::DepthAnalysis& a = analysed.analysis;
     QJsonArray segments;
     for (std::size_t i = 0; i < a.stats.size(); ++i) {
         const algo::SegmentStats& s = a.stats[i];
-        segments.append(QJsonObject{{"id", int(i)}, {"pixels", s.pixels}, {"bright", s.bright},
-            {"ratio", double(s.ratio)}, {"in_window", s.inWindow},
+        segments.append(QJsonObject{{"id", ids && i < ids->size() ? (*ids)[i] : int(i)}, {"pixels", s.pixels},
+            {"bright", s.bright}, {"ratio", double(s.ratio)}, {"in_window", s.inWindow},
             {"curvature", s.meanCurvature > 0.f ? "positive" : (s.meanCurvature < 0.f ? "negative" : "flat")},
             {"centroid", QJsonArray{double(s.centroid.x()), double(s.centroid.y())}}});
     }
@@ -111,14 +114,24 @@ int runAnalyseFrames(const Invocation& in, model::RenderJob job, const model::An
     QJsonArray frames;
     QString csv = QStringLiteral("frame,mse,rmse,segments,segments_in_window,milliseconds\n");
     QString text;
+    // Stable segment numbers along the frames (issue 26): through the faces each segment covers.
+    model::SegmentTracker tracker;
+    std::int64_t compared = 0;
+    double same = 0.0;
     model::analyseProjectFrames(data, path, job, settings,
         [&](int frame, const model::AnalysisView& view, const model::FrameAnalysis& analysed) {
             if (in.isSet("out"))
                 model::writeAnalysisExr(analysed, job.framePath(frame));
             const algo::DepthAnalysis& a = analysed.analysis;
             const int inside = algo::segmentsInWindow(a.stats);
-            if (in.isSet("json"))
-                frames.append(frameJson(frame, view.camera, analysed));
+            const std::vector<int>& ids = tracker.track(a.segments, analysed.passes.id);
+            compared += tracker.comparedPixels();
+            same += tracker.stability() * double(tracker.comparedPixels());
+            if (in.isSet("json")) {
+                QJsonObject json = frameJson(frame, view.camera, analysed, &ids);
+                json.insert("segment_stability", tracker.stability());
+                frames.append(json);
+            }
             csv += QStringLiteral("%1,%2,%3,%4,%5,%6\n")
                        .arg(frame)
                        .arg(a.meanSquaredError, 0, 'g', 9)
@@ -142,7 +155,7 @@ int runAnalyseFrames(const Invocation& in, model::RenderJob job, const model::An
     }
     if (in.isSet("json")) {
         printJson({{"size", QJsonArray{job.size.width(), job.size.height()}}, {"window", windowJson(settings.window)},
-            {"frames", frames}});
+            {"frames", frames}, {"segment_stability", compared > 0 ? same / double(compared) : 1.0}});
         return kExitOk;
     }
     printOut(text);

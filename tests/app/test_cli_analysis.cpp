@@ -9,6 +9,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSet>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 
@@ -131,6 +132,15 @@ private slots:
         QVERIFY(frames[0].toObject().value(QStringLiteral("camera")).toObject().value(QStringLiteral("eye"))
             != frames[2].toObject().value(QStringLiteral("camera")).toObject().value(QStringLiteral("eye")));
         QCOMPARE(json.value(QStringLiteral("size")).toArray().size(), 2);
+        // Stable segment numbers (issue 26): unique within a frame, mostly kept from frame to frame.
+        for (const QJsonValue& f : frames) {
+            QSet<int> ids;
+            for (const QJsonValue& s : f.toObject().value(QStringLiteral("segments")).toArray())
+                ids.insert(s.toObject().value(QStringLiteral("id")).toInt());
+            QCOMPARE(ids.size(), f.toObject().value(QStringLiteral("segments")).toArray().size());
+        }
+        const double stability = json.value(QStringLiteral("segment_stability")).toDouble(-1.0);
+        QVERIFY2(stability >= 0.5 && stability <= 1.0, qPrintable(QString::number(stability)));
         QFile rows(csv);
         QVERIFY(rows.open(QIODevice::ReadOnly | QIODevice::Text));
         const QStringList lines = QString::fromUtf8(rows.readAll()).trimmed().split(QLatin1Char('\n'));
