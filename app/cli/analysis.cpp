@@ -8,6 +8,8 @@
 #include "celform/model/analysis/depth_analysis_output.h"
 #include "celform/model/document/document.h"
 #include "celform/model/analysis/light_optimisation.h"
+#include "celform/model/analysis/light_track_optimisation.h"
+#include "celform/model/analysis/segment_tracking.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
@@ -70,14 +72,16 @@ QJsonArray windowJson(const RatioWindow& window)
 }
 
 /// One analysed frame as `analyze --json` prints it (each element of `frames` with --frames).
-QJsonObject frameJson(int frame, const model::Camera& camera, const model::FrameAnalysis& analysed)
+/// ids: the segments' stable numbers along the frames (null: their indices).
+QJsonObject frameJson(
+    int frame, const model::Camera& camera, const model::FrameAnalysis& analysed, const std::vector<int>* ids = nullptr)
 {
     const algo::DepthAnalysis& a = analysed.analysis;
     QJsonArray segments;
     for (std::size_t i = 0; i < a.stats.size(); ++i) {
         const algo::SegmentStats& s = a.stats[i];
-        segments.append(QJsonObject{{"id", int(i)}, {"pixels", s.pixels}, {"bright", s.bright},
-            {"ratio", double(s.ratio)}, {"in_window", s.inWindow},
+        segments.append(QJsonObject{{"id", ids && i < ids->size() ? (*ids)[i] : int(i)}, {"pixels", s.pixels},
+            {"bright", s.bright}, {"ratio", double(s.ratio)}, {"in_window", s.inWindow},
             {"curvature", s.meanCurvature > 0.f ? "positive" : (s.meanCurvature < 0.f ? "negative" : "flat")},
             {"centroid", QJsonArray{double(s.centroid.x()), double(s.centroid.y())}}});
     }
@@ -110,14 +114,24 @@ int runAnalyseFrames(const Invocation& in, model::RenderJob job, const model::An
     QJsonArray frames;
     QString csv = QStringLiteral("frame,mse,rmse,segments,segments_in_window,milliseconds\n");
     QString text;
+    // Stable segment numbers along the frames (issue 26): through the faces each segment covers.
+    model::SegmentTracker tracker;
+    std::int64_t compared = 0;
+    double same = 0.0;
     model::analyseProjectFrames(data, path, job, settings,
         [&](int frame, const model::AnalysisView& view, const model::FrameAnalysis& analysed) {
             if (in.isSet("out"))
                 model::writeAnalysisExr(analysed, job.framePath(frame));
             const algo::DepthAnalysis& a = analysed.analysis;
             const int inside = algo::segmentsInWindow(a.stats);
-            if (in.isSet("json"))
-                frames.append(frameJson(frame, view.camera, analysed));
+            const std::vector<int>& ids = tracker.track(a.segments, analysed.passes.id);
+            compared += tracker.comparedPixels();
+            same += tracker.stability() * double(tracker.comparedPixels());
+            if (in.isSet("json")) {
+                QJsonObject json = frameJson(frame, view.camera, analysed, &ids);
+                json.insert("segment_stability", tracker.stability());
+                frames.append(json);
+            }
             csv += QStringLiteral("%1,%2,%3,%4,%5,%6\n")
                        .arg(frame)
                        .arg(a.meanSquaredError, 0, 'g', 9)
@@ -141,7 +155,7 @@ int runAnalyseFrames(const Invocation& in, model::RenderJob job, const model::An
     }
     if (in.isSet("json")) {
         printJson({{"size", QJsonArray{job.size.width(), job.size.height()}}, {"window", windowJson(settings.window)},
-            {"frames", frames}});
+            {"frames", frames}, {"segment_stability", compared > 0 ? same / double(compared) : 1.0}});
         return kExitOk;
     }
     printOut(text);
@@ -249,10 +263,67 @@ int runCurvature(const Invocation& in)
     return kExitOk;
 }
 
-QJsonObject lightJson(const model::Light& light)
+/// `optimize-light --frames A-B[:STEP]`: a light track over the shot (issue 26), saved as light
+/// keys at the sampled frames in one undo step.
+int runOptimiseLightTrack(const Invocation& in, model::RenderJob job, const model::LightOptimisationRequest& request)
 {
-    return {{"type", light.type == model::LightType::Point ? "point" : "directional"},
-        {"vector", model::vec3Json(light.vector)}};
+    const FrameRange range = parseFrameRange("frames", in.value("frames"));
+    job.firstFrame = range.first;
+    job.lastFrame = range.last;
+    job.step = range.step;
+    model::LightTrackRequest trackRequest;
+    trackRequest.light = request;
+    if (in.isSet("max-turn")) {
+        trackRequest.maxTurnDegrees = parseNumber("max-turn", in.value("max-turn"));
+        if (!(trackRequest.maxTurnDegrees > 0.0 && trackRequest.maxTurnDegrees <= 180.0))
+            throw UsageError{
+                Cli::tr("--max-turn takes degrees per frame in (0, 180], not “%1”").arg(in.value("max-turn"))};
+    }
+    const QString path = in.argument(0);
+    auto doc = openProject(path);
+    const model::LightTrackReport report = model::optimiseLightTrack(doc->data(), path, job, trackRequest);
+    const bool save = !in.isSet("dry-run") && report.after != report.before;
+    if (save) {
+        doc->look().applyOptimisedLightTrack(report.before, report.after);
+        doc->saveAs(path);
+    }
+    if (in.isSet("json")) {
+        QJsonArray frames;
+        for (const model::LightTrackFrame& f : report.frames)
+            frames.append(QJsonObject{{"frame", f.frame}, {"light_before", model::lightJson(f.original)},
+                {"light_start", model::lightJson(f.start)}, {"light_after", model::lightJson(f.light)},
+                {"depth_error",
+                    QJsonObject{{"mse_before", f.mseOriginal}, {"mse_start", f.mseStart}, {"mse_after", f.mse}}},
+                {"turn_degrees", f.turnDegrees}, {"limited", f.limited}, {"milliseconds", f.milliseconds}});
+        printJson({{"size", QJsonArray{report.width, report.height}},
+            {"objective", model::lightObjectiveName(request.objective)}, {"max_turn", trackRequest.maxTurnDegrees},
+            {"frames", frames},
+            {"depth_error",
+                QJsonObject{{"mean_mse_before", report.meanMseOriginal()}, {"mean_mse_after", report.meanMse()}}},
+            {"largest_turn_degrees", report.largestTurnDegrees()}, {"light_keys", model::lightTrackJson(report.after)},
+            {"saved", save}, {"milliseconds", report.milliseconds}});
+        return kExitOk;
+    }
+    QString text;
+    for (const model::LightTrackFrame& f : report.frames)
+        text += Cli::tr("frame %1: depth error MSE %2 -> %3, turned %4° from the previous key%5")
+                    .arg(f.frame)
+                    .arg(f.mseOriginal, 0, 'g', 6)
+                    .arg(f.mse, 0, 'g', 6)
+                    .arg(f.turnDegrees, 0, 'f', 2)
+                    .arg(f.limited ? Cli::tr(" (limited)") : QString())
+            + QLatin1Char('\n');
+    text += Cli::tr("mean depth error MSE: %1 -> %2; largest turn %3° between keys; %4 ms")
+                .arg(report.meanMseOriginal(), 0, 'g', 6)
+                .arg(report.meanMse(), 0, 'g', 6)
+                .arg(report.largestTurnDegrees(), 0, 'f', 2)
+                .arg(report.milliseconds, 0, 'f', 0)
+        + QLatin1Char('\n');
+    if (!save)
+        text += (in.isSet("dry-run") ? Cli::tr("not saved (--dry-run)") : Cli::tr("the light track stays as it is"))
+            + QLatin1Char('\n');
+    printOut(text);
+    return kExitOk;
 }
 
 int runOptimiseLight(const Invocation& in)
@@ -295,12 +366,20 @@ int runOptimiseLight(const Invocation& in)
                 Cli::tr("--falloff takes a ratio width in [0, 1] (0: discrete), not “%1”").arg(in.value("falloff"))};
     }
 
+    if (in.isSet("frame") && in.isSet("frames"))
+        throw UsageError{Cli::tr("give either --frame or --frames")};
+    if (in.isSet("max-turn") && !in.isSet("frames"))
+        throw UsageError{Cli::tr("--max-turn goes with --frames")};
+    if (in.isSet("frames"))
+        return runOptimiseLightTrack(in, job, request);
+
     const QString path = in.argument(0);
     auto doc = openProject(path);
     const model::LightOptimisationReport report = model::optimiseLightForJob(doc->data(), path, job, request);
     const bool save = !in.isSet("dry-run") && !(report.after == report.before);
     if (save) {
-        doc->look().applyOptimisedLight(report.before, report.after);
+        // With a light track the light found is keyed at the frame, else it is the single light.
+        doc->look().applyOptimisedLight(report.before, report.after, report.frame);
         doc->saveAs(path);
     }
 
@@ -337,8 +416,8 @@ int runOptimiseLight(const Invocation& in)
             {"seed", QString::number(request.optimiser.seed)},
             {"objective", model::lightObjectiveName(request.objective)},
             {"start", request.start == model::LightStart::Camera ? "camera" : "current"},
-            {"falloff", request.optimiser.falloff}, {"light_before", lightJson(report.before)},
-            {"light_start", lightJson(report.start)}, {"light_after", lightJson(report.after)},
+            {"falloff", request.optimiser.falloff}, {"light_before", model::lightJson(report.before)},
+            {"light_start", model::lightJson(report.start)}, {"light_after", model::lightJson(report.after)},
             {"objective_before", report.ratiosBefore}, {"objective_after", report.ratiosAfter},
             {"objectives",
                 QJsonObject{{"ratios", QJsonObject{{"before", report.ratiosBefore}, {"after", report.ratiosAfter}}},
@@ -419,7 +498,16 @@ std::vector<SubCommand> analysisCommands()
 
     std::vector<OptionSpec> optimiseOptions = camera_options::specs();
     const std::vector<OptionSpec> optimiseMore = {
-        {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame to optimise for (default 0).")},
+        {"frame", "F",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Frame to optimise for (default 0); with a light track the light found is keyed there.")},
+        {"frames", "A-B[:STEP]",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Optimise a light track: the light at frames A-B every STEP-th (default 1) through the shot camera, "
+                "each frame starting from the previous one's light, saved as light keys.")},
+        {"max-turn", "DEG",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "With --frames: the most a key turns from the previous one per frame, in degrees (default 3).")},
         {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Size of the analysed picture (default 1280x720).")},
         window,
         {"weight", "constant|area",
@@ -470,8 +558,9 @@ std::vector<SubCommand> analysisCommands()
                 {"out", "FILE.ply", QT_TRANSLATE_NOOP("celform::app::Cli", "The PLY file to write.")}},
             runCurvature},
         {"optimize-light",
-            {"celform optimize-light P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] "
-             "[--size WxH] [--window LO,HI|lenient|medium|strict] [--weight constant|area] "
+            {"celform optimize-light P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] "
+             "[--frame F | --frames A-B[:STEP] [--max-turn DEG]] [--size WxH] [--window LO,HI|lenient|medium|strict] "
+             "[--weight constant|area] "
              "[--method gradient|annealing|random] [--iterations N] [--seed S] "
              "[--objective ratios|depth-error|both] [--start current|camera] [--falloff W] "
              "[--depth-threshold FRACTION] [--min-pixels N] [--dry-run] [--json]"},

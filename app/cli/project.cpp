@@ -114,6 +114,8 @@ int runInfo(const Invocation& in)
     root.insert("frame_range", QJsonArray{data.time.firstFrame, data.time.lastFrame});
     root.insert("current_frame", data.currentFrame);
     root.insert("camera_keys", int(data.look.cameraPath.keys.size()));
+    // The light track (issue 26): the keyed lights, empty when the single light serves every frame.
+    root.insert("light_keys", model::lightTrackJson(data.look.lightTrack));
     if (data.animated()) {
         const algo::BaseAnimation& a = *data.baseAnimation;
         root.insert("base_animation",
@@ -152,6 +154,8 @@ int runInfo(const Invocation& in)
           << '\n';
     if (!data.look.cameraPath.empty())
         s << Cli::tr("Camera path: %1 keys").arg(data.look.cameraPath.keys.size()) << '\n';
+    if (!data.look.lightTrack.empty())
+        s << Cli::tr("Light track: %1 keys").arg(data.look.lightTrack.keys.size()) << '\n';
     s << Cli::tr("Key viewpoints: %1").arg(data.keys.size()) << '\n';
     for (const auto& k : data.keys)
         s << "  " << k.name << " (" << k.direction.x() << ", " << k.direction.y() << ", " << k.direction.z() << ")\n";

@@ -100,6 +100,8 @@ private:
     void processDropQueue();
     /// Optimise Light for Stereo through the viewport's camera at the Depth tab's analysis size.
     void optimiseLightForStereo();
+    /// Look > Optimise Light Along Shot (issue 26): a light track over the scene's frames.
+    void optimiseLightAlongShot();
 
     Mode m_mode;
     model::Document* m_document;
@@ -120,6 +122,7 @@ private:
     QStringList m_dropQueue;
     bool m_processingDrops = false;
     QPointer<JobRunner> m_lightRunner;
+    QPointer<JobRunner> m_lightTrackRunner;
 };
 
 } // namespace celform::app

@@ -6,6 +6,7 @@
 #include "editor/getting_started.h"
 #include "editor/jobs/job_runner.h"
 #include "editor/jobs/light_optimisation_job.h"
+#include "editor/jobs/light_track_job.h"
 #include "editor/actions/fit_actions.h"
 #include "editor/actions/shading_offset_actions.h"
 #include "editor/settings/preferences.h"
@@ -213,6 +214,10 @@ void MainWindow::createActions()
         tr("Move the key light so that every segment of the Depth tab gets a shading line across it: the depth "
            "error falls (one undo step; method in the Depth tab)"),
         [this] { optimiseLightForStereo(); }));
+    make(QStringLiteral("actionOptimiseLightAlongShot"), tr("Optimise Light Along &Shot"), QKeySequence(),
+        tr("Optimise the light at every frame of the scene's range through the shot camera, each frame starting "
+           "from the last, and key it there: a light track that turns no more than 3° a frame (one undo step)"),
+        [this] { optimiseLightAlongShot(); });
     make(QStringLiteral("actionStereoToggle"), tr("Toggle Stereo &Preview"), QKeySequence(Qt::CTRL | Qt::Key_3),
         tr("Switch the viewport between mono and the last stereo mode (anaglyph at first)"), [this] {
             const bool on = m_viewport->display().stereo() == algo::StereoOutput::Off;
@@ -308,6 +313,7 @@ void MainWindow::createMenus()
     QMenu* look = menuBar()->addMenu(tr("&Look"));
     look->setObjectName(QStringLiteral("menuLook"));
     look->addAction(action(QStringLiteral("actionOptimiseLight")));
+    look->addAction(action(QStringLiteral("actionOptimiseLightAlongShot")));
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("actionFrameAll")));
     QMenu* presets = m_viewMenu->addMenu(tr("View &From"));
@@ -417,7 +423,7 @@ void MainWindow::optimiseLightForStereo()
                 return;
             }
             try {
-                m_document->look().applyOptimisedLight(report->before, report->after);
+                m_document->look().applyOptimisedLight(report->before, report->after, report->frame);
             } catch (const model::EditRefused& e) {
                 showError(e.message());
                 return;
@@ -428,6 +434,44 @@ void MainWindow::optimiseLightForStereo()
                 log(LogLevel::Warning, summary.warning);
             // The warning, when there is one, is what the artist must read first.
             statusBar()->showMessage(summary.warning.isEmpty() ? summary.text : summary.warning, 10000);
+        },
+        [this](const QString& message) { showError(message); });
+}
+
+void MainWindow::optimiseLightAlongShot()
+{
+    if ((m_lightTrackRunner && m_lightTrackRunner->isRunning()) || (m_lightRunner && m_lightRunner->isRunning()))
+        return;
+    const model::ProjectData& data = m_document->data();
+    if (!data.baseMesh) {
+        showError(tr("Open a model first: the light is optimised for the pictures of a model."));
+        return;
+    }
+    LightTrackJob job;
+    job.data = data;
+    job.frames.firstFrame = data.time.firstFrame;
+    job.frames.lastFrame = data.time.lastFrame;
+    job.frames.step = 1;
+    job.frames.size = m_depth->runner()->analysisSize();
+    job.frames.pass = QStringLiteral("segments");
+    job.request.light.analysis = m_depth->runner()->settings();
+    job.request.light.optimiser = m_depth->lightSettings();
+    m_lightTrackRunner = startLightTrackOptimisation(
+        std::move(job), this,
+        [this](const std::shared_ptr<const model::LightTrackReport>& report) {
+            if (report->cancelled) {
+                statusBar()->showMessage(tr("Light track optimisation cancelled: the light is unchanged."), 4000);
+                return;
+            }
+            try {
+                m_document->look().applyOptimisedLightTrack(report->before, report->after);
+            } catch (const model::EditRefused& e) {
+                showError(e.message());
+                return;
+            }
+            const QString summary = summariseLightTrack(*report);
+            log(LogLevel::Info, summary);
+            statusBar()->showMessage(summary, 10000);
         },
         [this](const QString& message) { showError(message); });
 }

@@ -9,6 +9,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSet>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 
@@ -131,6 +132,15 @@ private slots:
         QVERIFY(frames[0].toObject().value(QStringLiteral("camera")).toObject().value(QStringLiteral("eye"))
             != frames[2].toObject().value(QStringLiteral("camera")).toObject().value(QStringLiteral("eye")));
         QCOMPARE(json.value(QStringLiteral("size")).toArray().size(), 2);
+        // Stable segment numbers (issue 26): unique within a frame, mostly kept from frame to frame.
+        for (const QJsonValue& f : frames) {
+            QSet<int> ids;
+            for (const QJsonValue& s : f.toObject().value(QStringLiteral("segments")).toArray())
+                ids.insert(s.toObject().value(QStringLiteral("id")).toInt());
+            QCOMPARE(ids.size(), f.toObject().value(QStringLiteral("segments")).toArray().size());
+        }
+        const double stability = json.value(QStringLiteral("segment_stability")).toDouble(-1.0);
+        QVERIFY2(stability >= 0.5 && stability <= 1.0, qPrintable(QString::number(stability)));
         QFile rows(csv);
         QVERIFY(rows.open(QIODevice::ReadOnly | QIODevice::Text));
         const QStringList lines = QString::fromUtf8(rows.readAll()).trimmed().split(QLatin1Char('\n'));
@@ -145,6 +155,83 @@ private slots:
                      .exitCode,
             2);
         QCOMPARE(runCelform({QStringLiteral("analyze"), sample(), QStringLiteral("--csv"), csv}).exitCode, 2);
+    }
+
+    void optimiseLightAlongTheShot()
+    {
+        // issue 26: `optimize-light --frames` keys the light at the sampled frames of the shot
+        // (the sample's turntable), each no worse than where it started and within the turn limit.
+        QTemporaryDir dir;
+        const QString shot = dir.filePath(QStringLiteral("shot.celform"));
+        QVERIFY(QFile::copy(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform"), shot));
+        const QStringList small = {
+            QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--iterations"), QStringLiteral("12")};
+        const Run r = runCelform(
+            QStringList{QStringLiteral("optimize-light"), shot, QStringLiteral("--frames"), QStringLiteral("0-8:4"),
+                QStringLiteral("--max-turn"), QStringLiteral("2"), QStringLiteral("--json")}
+            + small);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonArray frames = json.value(QStringLiteral("frames")).toArray();
+        QCOMPARE(frames.size(), 3);
+        for (qsizetype i = 0; i < frames.size(); ++i) {
+            const QJsonObject f = frames[i].toObject();
+            QCOMPARE(f.value(QStringLiteral("frame")).toInt(), int(4 * i));
+            const QJsonObject error = f.value(QStringLiteral("depth_error")).toObject();
+            QVERIFY(error.value(QStringLiteral("mse_after")).toDouble()
+                <= error.value(QStringLiteral("mse_start")).toDouble());
+            QVERIFY(f.value(QStringLiteral("turn_degrees")).toDouble() <= 2.0 * 4 + 1e-6);
+        }
+        QVERIFY(json.value(QStringLiteral("largest_turn_degrees")).toDouble() <= 8.0 + 1e-6);
+        QVERIFY(json.value(QStringLiteral("saved")).toBool());
+
+        // Saved as light keys: info lists them; analyze at a keyed frame sees the keyed light.
+        const Run info = runCelform({QStringLiteral("info"), shot, QStringLiteral("--json")});
+        const QJsonArray keys
+            = QJsonDocument::fromJson(info.out.toUtf8()).object().value(QStringLiteral("light_keys")).toArray();
+        QCOMPARE(keys.size(), 3);
+        QCOMPARE(keys[1].toObject().value(QStringLiteral("frame")).toInt(), 4);
+        QCOMPARE(keys[1].toObject().value(QStringLiteral("light")),
+            frames[1].toObject().value(QStringLiteral("light_after")));
+        const Run analysed = runCelform({QStringLiteral("analyze"), shot, QStringLiteral("--size"),
+            QStringLiteral("160x120"), QStringLiteral("--frames"), QStringLiteral("4-4"), QStringLiteral("--json")});
+        QVERIFY2(analysed.exitCode == 0, qPrintable(analysed.err));
+        const double mse = QJsonDocument::fromJson(analysed.out.toUtf8())
+                               .object()
+                               .value(QStringLiteral("frames"))
+                               .toArray()[0]
+                               .toObject()
+                               .value(QStringLiteral("depth_error"))
+                               .toObject()
+                               .value(QStringLiteral("mse"))
+                               .toDouble();
+        QCOMPARE(mse,
+            frames[1]
+                .toObject()
+                .value(QStringLiteral("depth_error"))
+                .toObject()
+                .value(QStringLiteral("mse_after"))
+                .toDouble());
+
+        // A plain optimize-light with a track keys the light at its frame.
+        const Run one = runCelform(QStringList{QStringLiteral("optimize-light"), shot, QStringLiteral("--frame"),
+                                       QStringLiteral("2"), QStringLiteral("--json")}
+            + small);
+        QVERIFY2(one.exitCode == 0, qPrintable(one.err));
+        const bool saved = QJsonDocument::fromJson(one.out.toUtf8()).object().value(QStringLiteral("saved")).toBool();
+        const Run again = runCelform({QStringLiteral("info"), shot, QStringLiteral("--json")});
+        QCOMPARE(
+            QJsonDocument::fromJson(again.out.toUtf8()).object().value(QStringLiteral("light_keys")).toArray().size(),
+            saved ? 4 : 3);
+
+        // --max-turn without --frames, and --frame with --frames, are usage errors.
+        QCOMPARE(runCelform({QStringLiteral("optimize-light"), shot, QStringLiteral("--max-turn"), QStringLiteral("2")})
+                     .exitCode,
+            2);
+        QCOMPARE(runCelform({QStringLiteral("optimize-light"), shot, QStringLiteral("--frame"), QStringLiteral("1"),
+                                QStringLiteral("--frames"), QStringLiteral("0-2")})
+                     .exitCode,
+            2);
     }
 
     void analyzeWritesTheBuffersAsExr()

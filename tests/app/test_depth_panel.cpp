@@ -9,7 +9,9 @@
 #include "celform/model/analysis/depth_analysis.h"
 #include "celform/model/document/document.h"
 #include "celform/views/overlays/depth_analysis_runner.h"
+#include "celform/views/panels/depth_chart.h"
 #include "celform/views/panels/depth_panel.h"
+#include "celform/views/timeline/timeline_ruler.h"
 #include "celform/views/viewport/viewport.h"
 
 #include <QAction>
@@ -247,6 +249,70 @@ private slots:
         test::keepScreenshot(&window, "depth-optimised-light");
         doc->undoStack()->undo();
         QCOMPARE(doc->data().look.light, start);
+    }
+
+    void optimiseLightAlongShotAndChartIt()
+    {
+        // issue 26: the Depth tab charts the depth error over the shot, clicking the chart moves
+        // the playhead, and Look > Optimise Light Along Shot keys the light at every frame as one
+        // undo step, cancellable, marked on the Timeline. Three frames of the sample's turntable
+        // keep it quick.
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(showDepthDock(window));
+        model::Document* doc = window.document();
+        model::SceneTime time = doc->data().time;
+        time.firstFrame = 0;
+        time.lastFrame = 2;
+        doc->animation().setSceneTime(time);
+        views::DepthPanel* panel = window.depthPanel();
+
+        auto* chartButton = panel->findChild<QToolButton*>(QStringLiteral("chartShotButton"));
+        QVERIFY(chartButton);
+        QTest::mouseClick(chartButton, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(panel->shotRunner()->isCurrent(), 60000);
+        views::DepthChart* chart = panel->chart();
+        QCOMPARE(chart->samples().size(), std::size_t(3));
+        for (const views::ShotDepthSample& s : chart->samples())
+            QVERIFY(s.mse > 0.0 && s.inWindow >= 0.0 && s.inWindow <= 1.0);
+        QCOMPARE(chart->samples()[2].frame, 2);
+        QTest::mouseClick(chart, Qt::LeftButton, {}, QPoint(int(chart->xForFrame(2)), chart->height() / 2));
+        QCOMPARE(doc->currentFrame(), 2);
+        QTest::mouseClick(chart, Qt::LeftButton, {}, QPoint(int(chart->xForFrame(0)), chart->height() / 2));
+        QCOMPARE(doc->currentFrame(), 0);
+
+        // Cancel straight away: nothing changes.
+        QAction* along = window.action(QStringLiteral("actionOptimiseLightAlongShot"));
+        QVERIFY(along);
+        const int steps = doc->undoStack()->count();
+        along->trigger();
+        auto* progress = window.findChild<QProgressDialog*>(QStringLiteral("lightTrackProgress"));
+        QVERIFY(progress);
+        emit progress->canceled();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.findChild<QProgressDialog*>(QStringLiteral("lightTrackProgress")), 60000);
+        QVERIFY(doc->data().look.lightTrack.empty());
+        QCOMPARE(doc->undoStack()->count(), steps);
+
+        // The run: a key per frame in one undo step, each turning at most 3° a frame.
+        along->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(doc->undoStack()->count() == steps + 1, 120000);
+        QCOMPARE(doc->undoStack()->text(steps), QStringLiteral("Optimise Light Along Shot"));
+        const model::LightTrack& track = doc->data().look.lightTrack;
+        QCOMPARE(track.keys.size(), std::size_t(3));
+        const Eigen::Vector3d centre = doc->data().baseMesh->centre();
+        for (std::size_t k = 1; k < track.keys.size(); ++k)
+            QVERIFY(model::lightTurnDegrees(track.keys[k - 1].light, track.keys[k].light, centre) <= 3.0 + 1e-6
+                || track.keys[k].light.type == model::LightType::Point);
+        // The chart now shows an older light; the Timeline marks the keys.
+        QVERIFY(!panel->shotRunner()->isCurrent());
+        auto* ruler = window.findChild<views::TimelineRuler*>(QStringLiteral("timelineRuler"));
+        QVERIFY(ruler);
+        int lightMarks = 0;
+        for (const views::TimelineMark& mark : ruler->marks())
+            lightMarks += mark.kind == views::TimelineMarkKind::Light ? 1 : 0;
+        QCOMPARE(lightMarks, 3);
+        test::keepScreenshot(&window, "depth-light-track");
+        doc->undoStack()->undo();
+        QVERIFY(doc->data().look.lightTrack.empty());
     }
 };
 

@@ -74,7 +74,7 @@ private slots:
                 const model::Light found = movedLight(start);
                 return [&, start, found] {
                     applied = QThread::currentThread();
-                    doc->look().applyOptimisedLight(start, found);
+                    doc->look().applyOptimisedLight(start, found, 0);
                     return true;
                 };
             },
@@ -127,7 +127,7 @@ private slots:
                 return [&, start, cancelled] {
                     if (cancelled)
                         return false;
-                    doc->look().applyOptimisedLight(start, movedLight(start));
+                    doc->look().applyOptimisedLight(start, movedLight(start), 0);
                     return true;
                 };
             },

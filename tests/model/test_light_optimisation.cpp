@@ -51,6 +51,75 @@ class TestLightOptimisationModel : public QObject {
     Q_OBJECT
 
 private slots:
+    void lightTrackInterpolates()
+    {
+        // issue 26: directional keys turn along the great circle at a constant rate (slerp); the
+        // end keys hold outside; point keys follow a spline through their positions.
+        model::LightTrack track;
+        const model::Light fallback{model::LightType::Directional, {0.0, 1.0, 0.0}};
+        QCOMPARE(track.at(3, fallback), fallback);
+        track.setKey(10, {model::LightType::Directional, {1.0, 0.0, 0.0}});
+        track.setKey(0, {model::LightType::Directional, {0.0, 0.0, 1.0}});
+        QCOMPARE(track.keys.front().frame, 0);
+        QCOMPARE(track.at(-5, fallback).vector, Eigen::Vector3d(0, 0, 1));
+        QCOMPARE(track.at(15, fallback).vector, Eigen::Vector3d(1, 0, 0));
+        const Eigen::Vector3d half = track.at(5, fallback).vector;
+        QVERIFY(std::abs(half.norm() - 1.0) < 1e-12);
+        QVERIFY((half - Eigen::Vector3d(std::sqrt(0.5), 0.0, std::sqrt(0.5))).norm() < 1e-12);
+        const model::Light quarter = track.at(2.5, fallback);
+        QVERIFY(std::abs(model::lightTurnDegrees(track.keys[0].light, quarter, Eigen::Vector3d::Zero()) - 22.5) < 1e-9);
+        // Point lights: through the keys, and between a directional and a point key the earlier holds.
+        model::LightTrack points;
+        points.setKey(0, {model::LightType::Point, {0.0, 0.0, 0.0}});
+        points.setKey(10, {model::LightType::Point, {10.0, 0.0, 0.0}});
+        points.setKey(20, {model::LightType::Point, {20.0, 0.0, 0.0}});
+        QVERIFY((points.at(5, fallback).vector - Eigen::Vector3d(5, 0, 0)).norm() < 1e-9);
+        points.setKey(30, {model::LightType::Directional, {0.0, 1.0, 0.0}});
+        QCOMPARE(points.at(25, fallback).type, model::LightType::Point);
+        // The turn limit: turned back along the great circle to the limit.
+        const model::Light limited
+            = model::limitLightTurn(track.keys[0].light, track.keys[1].light, Eigen::Vector3d::Zero(), 3.0);
+        QVERIFY(std::abs(model::lightTurnDegrees(track.keys[0].light, limited, Eigen::Vector3d::Zero()) - 3.0) < 1e-9);
+        QVERIFY(model::lightTrackProblem(track).isEmpty());
+        track.keys.push_back(track.keys.front()); // frame 0 after frame 10
+        QVERIFY(!model::lightTrackProblem(track).isEmpty());
+    }
+
+    void lightTrackEditsAreUndoable()
+    {
+        model::Document doc;
+        doc.reset(projectOn(test::dentedSphere(3, {0.4f, 0.3f, 0.87f})));
+        const model::Light single = doc.data().look.light;
+        model::LightTrack track;
+        track.setKey(0, {model::LightType::Directional, {0.0, 0.0, 1.0}});
+        track.setKey(8, {model::LightType::Directional, {0.0, 1.0, 0.0}});
+        doc.look().applyOptimisedLightTrack({}, track);
+        QCOMPARE(doc.undoStack()->count(), 1);
+        QCOMPARE(doc.undoStack()->text(0), QStringLiteral("Optimise Light Along Shot"));
+        QCOMPARE(doc.data().look.lightTrack, track);
+        QCOMPARE(doc.data().look.lightAt(8).vector, Eigen::Vector3d(0, 1, 0));
+        // A stale run is refused; an invalid track is refused.
+        QVERIFY_THROWS_EXCEPTION(model::EditRefused, doc.look().applyOptimisedLightTrack({}, track));
+        model::LightTrack bad = track;
+        bad.keys[1].light.vector.setZero();
+        QVERIFY_THROWS_EXCEPTION(model::EditRefused, doc.look().setLightTrack(bad, QStringLiteral("Bad")));
+        // With a track, moving the light keys the current frame; a single-frame optimisation keys its frame.
+        doc.setCurrentFrame(4);
+        doc.look().setLight({model::LightType::Directional, {1.0, 0.0, 0.0}});
+        QCOMPARE(doc.data().look.lightTrack.keys.size(), std::size_t(3));
+        QCOMPARE(doc.data().look.lightAt(4).vector, Eigen::Vector3d(1, 0, 0));
+        QCOMPARE(doc.data().look.light, single);
+        doc.look().applyOptimisedLight(doc.data().look.lightAt(6), {model::LightType::Directional, {0, 0, -1}}, 6);
+        QVERIFY(doc.data().look.lightTrack.hasKey(6));
+        QCOMPARE(doc.undoStack()->count(), 3);
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QCOMPARE(doc.data().look.lightTrack, track);
+        doc.undoStack()->undo();
+        QVERIFY(doc.data().look.lightTrack.empty());
+        QCOMPARE(doc.data().look.lightAt(8), single);
+    }
+
     void oneUndoStepAndNothingStale()
     {
         model::Document doc;
@@ -60,7 +129,7 @@ private slots:
         QVERIFY(!(report.after == report.before));
         QCOMPARE(report.before, start);
 
-        doc.look().applyOptimisedLight(report.before, report.after);
+        doc.look().applyOptimisedLight(report.before, report.after, report.frame);
         QCOMPARE(doc.undoStack()->count(), 1);
         QCOMPARE(doc.undoStack()->text(0), QStringLiteral("Optimise Light for Stereo"));
         QCOMPARE(doc.data().look.light, report.after);
@@ -70,11 +139,12 @@ private slots:
         QCOMPARE(doc.data().look.light, report.after);
 
         // A report made from another light is refused, the document unchanged.
-        QVERIFY_THROWS_EXCEPTION(model::EditRefused, doc.look().applyOptimisedLight(report.before, report.after));
+        QVERIFY_THROWS_EXCEPTION(
+            model::EditRefused, doc.look().applyOptimisedLight(report.before, report.after, report.frame));
         QCOMPARE(doc.undoStack()->count(), 1);
         // A run that kept the light changes nothing.
         doc.undoStack()->undo();
-        doc.look().applyOptimisedLight(start, start);
+        doc.look().applyOptimisedLight(start, start, 0);
         QCOMPARE(doc.data().look.light, start);
         QCOMPARE(doc.undoStack()->index(), 0);
     }

@@ -449,6 +449,45 @@ private slots:
         }
     }
 
+    void lightTrackIsStoredAndOptional()
+    {
+        // issue 26: the light track is saved (format 3) and files without it (formats 1 and 2)
+        // open with the single light serving every frame.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("track.celform"));
+        ProjectData data = richProject();
+        data.look.lightTrack.setKey(0, Light{LightType::Directional, {0.0, 0.0, 1.0}});
+        data.look.lightTrack.setKey(10, Light{LightType::Directional, {1.0, 0.0, 0.0}});
+        data.look.lightTrack.setKey(20, Light{LightType::Point, {1.0, 2.0, 3.0}});
+        saveProject(data, path);
+        const ProjectData read = loadProject(path);
+        QCOMPARE(read.look.lightTrack, data.look.lightTrack);
+        QCOMPARE(read.look.light, data.look.light);
+        editManifest(path, [](QJsonObject& m) {
+            QCOMPARE(m.value(QStringLiteral("format_version")).toInt(), 3);
+            QJsonObject look = m.value(QStringLiteral("look")).toObject();
+            look.remove(QStringLiteral("light_keys"));
+            m.insert(QStringLiteral("look"), look);
+            m.insert(QStringLiteral("format_version"), 2);
+        });
+        QVERIFY(loadProject(path).look.lightTrack.empty());
+        QCOMPARE(loadProject(path).look.lightAt(7), data.look.light);
+        // Keys out of order, or a directional light without a direction, are damage.
+        for (const QJsonArray& keys :
+            {QJsonArray{
+                 QJsonObject{{"frame", 5}, {"light", QJsonObject{{"type", "point"}, {"vector", QJsonArray{0, 0, 1}}}}},
+                 QJsonObject{{"frame", 5}, {"light", QJsonObject{{"type", "point"}, {"vector", QJsonArray{0, 1, 1}}}}}},
+                QJsonArray{QJsonObject{
+                    {"frame", 1}, {"light", QJsonObject{{"type", "directional"}, {"vector", QJsonArray{0, 0, 0}}}}}}}) {
+            editManifest(path, [&](QJsonObject& m) {
+                QJsonObject look = m.value(QStringLiteral("look")).toObject();
+                look.insert(QStringLiteral("light_keys"), keys);
+                m.insert(QStringLiteral("look"), look);
+            });
+            QVERIFY_THROWS_EXCEPTION(IoError, loadProject(path));
+        }
+    }
+
     void subdivisionEditIsOneUndoStep()
     {
         QTemporaryDir dir;

@@ -615,6 +615,14 @@ private:
             d.look().setShadingStyle(ShadingStyle(below(r, 4)), below(t, 5) - 1, m_gesture);
         });
         add("setLight", 4, Kind::Edit, [this, &d](Rng&) { d.look().setLight(randomLight(), m_gesture); });
+        add("setLightTrack", 2, Kind::Edit, [this, &d, &r](Rng&) {
+            // issue 26: a light track of up to three keys (invalid lights are refused); with one,
+            // setLight above keys the current frame.
+            LightTrack track;
+            for (int k = below(r, 4); k > 0; --k)
+                track.setKey(below(r, 60) - 10, randomLight());
+            d.look().setLightTrack(track, QStringLiteral("Set Light Track"));
+        });
         add("setBackgroundColor", 2, Kind::Edit,
             [this, &d, &r](Rng&) { d.look().setBackgroundColor(randomColor(r), m_gesture); });
         add("setToonRamp", 2, Kind::Edit, [this, &d](Rng&) { d.look().setToonRamp(randomRamp(), m_gesture); });

@@ -74,7 +74,7 @@ void DepthAnalyser::analyse(const ProjectData& data, const Look& look, const alg
 
     // The centre eye's picture with its G-buffer (thesis 4.5.2: "the camera position when
     // rendering to this G-buffer is in the middle of the two eyes").
-    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets);
+    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &m_cache, generation);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::renderFrame(shape, mesh, centre, renderLook, m_cache, out.passes, nullptr, &m_gbuffer);
@@ -122,7 +122,8 @@ AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source,
 
 void analyseProjectFrames(const ProjectData& data, const QString& source, const RenderJob& job,
     const AnalysisSettings& settings,
-    const std::function<void(int frame, const AnalysisView& view, const FrameAnalysis& analysis)>& visit)
+    const std::function<void(int frame, const AnalysisView& view, const FrameAnalysis& analysis)>& visit,
+    algo::Progress* progress)
 {
     DepthAnalyser analyser;
     FrameAnalysis out;
@@ -132,6 +133,8 @@ void analyseProjectFrames(const ProjectData& data, const QString& source, const 
     // from the keys' side), so the curvature is computed once; a new one when it moves.
     static std::atomic<std::uint64_t> next{std::uint64_t(3) << 61};
     std::uint64_t generation = 0;
+    const int count = job.lastFrame < job.firstFrame ? 0 : (job.lastFrame - job.firstFrame) / std::max(1, job.step) + 1;
+    int done = 0;
     for (int frame = job.firstFrame; frame <= job.lastFrame; frame += std::max(1, job.step)) {
         one.firstFrame = one.lastFrame = frame;
         const AnalysisView view = resolveAnalysisView(data, source, one);
@@ -142,6 +145,10 @@ void analyseProjectFrames(const ProjectData& data, const QString& source, const 
         analyser.analyse(data, view.look, view.shape, generation, frame, view.camera, job.size.width(),
             job.size.height(), settings, out, &view.offsets);
         visit(frame, view, out);
+        algo::report(progress, std::int64_t(done) + 1, std::int64_t(count));
+        if (algo::cancelRequested(progress))
+            return;
+        ++done;
     }
 }
 

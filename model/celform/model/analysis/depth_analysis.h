@@ -101,9 +101,11 @@ AnalysisView resolveAnalysisView(const ProjectData& data, const QString& source,
 /// and analysed as analyseProject does (the job's camera, or the shot camera at that frame),
 /// through one analyser and one FrameAnalysis, so the sequence reuses its buffers, and the
 /// curvature while the shape does not change. visit sees each frame's view and analysis before
-/// the next overwrites them. Throws IoError as analyseProject does.
+/// the next overwrites them. Throws IoError as analyseProject does. progress counts a step per
+/// frame and is asked after each whether to stop (then the frames after it are not analysed).
 void analyseProjectFrames(const ProjectData& data, const QString& source, const RenderJob& job,
     const AnalysisSettings& settings,
-    const std::function<void(int frame, const AnalysisView& view, const FrameAnalysis& analysis)>& visit);
+    const std::function<void(int frame, const AnalysisView& view, const FrameAnalysis& analysis)>& visit,
+    algo::Progress* progress = nullptr);
 
 } // namespace celform::model

@@ -47,7 +47,7 @@ Light cameraLight(const Light& current, const Camera& camera)
     return light;
 }
 
-LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look, const algo::Positions& shape,
+LightOptimisationReport optimiseLight(const ProjectData& data, const Look& given, const algo::Positions& shape,
     std::uint64_t generation, int frame, const Camera& camera, int width, int height,
     const LightOptimisationRequest& request, DepthAnalyser& analyser, algo::Progress* progress,
     const std::vector<float>* shadingOffsets)
@@ -55,6 +55,11 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& look,
     QElapsedTimer timer;
     timer.start();
     LightOptimisationReport report;
+    // The light at the frame (the light track's there), and a look whose single light is the one
+    // each analysis below tries.
+    Look look = given;
+    look.light = given.lightAt(double(frame));
+    look.lightTrack = {};
     report.before = look.light;
     report.start = request.start == LightStart::Camera ? cameraLight(look.light, camera) : look.light;
     report.after = report.start;

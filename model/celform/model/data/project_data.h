@@ -10,6 +10,7 @@
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/data/camera.h"
 #include "celform/model/data/camera_path.h"
+#include "celform/model/data/light_track.h"
 #include "celform/model/data/mirror_plane.h"
 #include "celform/model/data/object_id.h"
 
@@ -130,16 +131,6 @@ struct BlendSettings {
 };
 
 enum class ShadingStyle { Lambert, Toon, Gooch, Comic };
-enum class LightType { Directional, Point };
-
-/// The key light (DESIGN.md, "Look"), in model space.
-struct Light {
-    LightType type = LightType::Directional;
-    /// Directional: unit vector from the model towards the light. Point: position in model space.
-    Eigen::Vector3d vector{0.4, 0.6, 0.7};
-    bool operator==(const Light& o) const { return type == o.type && vector == o.vector; }
-};
-
 /// Stereo settings of the look (paper 3, section 3.1). Distances of zero or less mean "auto":
 /// convergence at the model's centre, interocular a thirtieth of the convergence distance.
 struct StereoLook {
@@ -239,7 +230,10 @@ struct Look {
     ShadingStyle style = ShadingStyle::Toon;
     /// Per-material style (material index -> style); materials not listed use style.
     std::map<int, ShadingStyle> materialStyles;
-    Light light;
+    Light light; ///< the key light when lightTrack has no keys
+    /// The shot's light over time (issue 26): when it has keys, the light at every frame, and
+    /// light is not used (lightAt).
+    LightTrack lightTrack;
     Eigen::Vector3f backgroundColor{0.93f, 0.93f, 0.91f};
     algo::ToonRamp toon;
     algo::ToonEvaluation toonEvaluation = algo::ToonEvaluation::PerPixel;
@@ -258,6 +252,8 @@ struct Look {
     /// every frame and renderCamera is not used.
     CameraPath cameraPath;
 
+    /// The light at a frame: the light track's there, else the single light.
+    [[nodiscard]] Light lightAt(double frame) const { return lightTrack.at(frame, light); }
     [[nodiscard]] ShadingStyle styleOf(int material) const
     {
         const auto it = materialStyles.find(material);
@@ -265,7 +261,7 @@ struct Look {
     }
     bool operator==(const Look& o) const
     {
-        return style == o.style && materialStyles == o.materialStyles && light == o.light
+        return style == o.style && materialStyles == o.materialStyles && light == o.light && lightTrack == o.lightTrack
             && backgroundColor == o.backgroundColor && toon == o.toon && toonEvaluation == o.toonEvaluation
             && gooch == o.gooch && hatch == o.hatch && showLines == o.showLines && lines == o.lines
             && lineStyle == o.lineStyle && stereo == o.stereo && subdivision == o.subdivision

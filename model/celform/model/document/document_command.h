@@ -51,6 +51,7 @@ enum class Property {
     FaceSets,
     MirrorPlane,
     Subdivision,
+    LightTrack,
 };
 
 /// What a command edits, for merging: a property of one object (id 0: of the document itself)

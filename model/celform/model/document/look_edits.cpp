@@ -79,26 +79,67 @@ void LookEdits::setShadingStyle(ShadingStyle style, int material, GestureId gest
 
 void LookEdits::setLight(const Light& light, GestureId gesture)
 {
-    if (light == data().look.light || !light.vector.allFinite())
-        return;
-    if (light.type == LightType::Directional && light.vector.norm() == 0.0)
+    if (!lightProblem(light).isEmpty())
         return; // a directional light needs a direction
-    const QString text = light.type != data().look.light.type ? tr("Change Light Type") : tr("Move Light");
+    const Look& look = data().look;
+    if (!look.lightTrack.empty()) {
+        // The light on screen is the track's: move it by keying the current frame.
+        const int frame = data().currentFrame;
+        if (look.lightTrack.hasKey(frame) && look.lightAt(frame) == light)
+            return;
+        LightTrack track = look.lightTrack;
+        track.setKey(frame, light);
+        push(new PropertyCommand<LightTrack>(m_doc, tr("Key Light at Frame %1").arg(frame), {Property::LightTrack},
+            fieldOf(&ProjectData::look, &Look::lightTrack), std::move(track), ChangeSet::of(Part::Look), gesture));
+        return;
+    }
+    if (light == look.light)
+        return;
+    const QString text = light.type != look.light.type ? tr("Change Light Type") : tr("Move Light");
     push(new PropertyCommand<Light>(m_doc, text, {Property::Light}, fieldOf(&ProjectData::look, &Look::light), light,
         ChangeSet::of(Part::Look), gesture));
 }
 
-void LookEdits::applyOptimisedLight(const Light& startedFrom, const Light& found)
+void LookEdits::applyOptimisedLight(const Light& startedFrom, const Light& found, int frame)
 {
     if (found == startedFrom)
         return;
-    if (!(startedFrom == data().look.light))
+    const Look& look = data().look;
+    if (!(startedFrom == look.lightAt(frame)))
         throw EditRefused(tr("The light changed while it was being optimised; run Optimise Light for Stereo again."));
-    const Light& light = found;
-    if (!light.vector.allFinite() || (light.type == LightType::Directional && light.vector.norm() == 0.0))
+    if (!lightProblem(found).isEmpty())
         throw EditRefused(tr("The optimised light is not usable."));
+    if (!look.lightTrack.empty()) {
+        // A shot with a light track: the light found is keyed at its frame (issue 26).
+        LightTrack track = look.lightTrack;
+        track.setKey(frame, found);
+        push(new PropertyCommand<LightTrack>(m_doc, tr("Optimise Light for Stereo"), {Property::LightTrack},
+            fieldOf(&ProjectData::look, &Look::lightTrack), std::move(track), ChangeSet::of(Part::Look), {}));
+        return;
+    }
     push(new PropertyCommand<Light>(m_doc, tr("Optimise Light for Stereo"), {Property::Light},
-        fieldOf(&ProjectData::look, &Look::light), light, ChangeSet::of(Part::Look), {}));
+        fieldOf(&ProjectData::look, &Look::light), found, ChangeSet::of(Part::Look), {}));
+}
+
+void LookEdits::setLightTrack(const LightTrack& track, const QString& undoText)
+{
+    const QString problem = lightTrackProblem(track);
+    if (!problem.isEmpty())
+        throw EditRefused(problem);
+    if (track == data().look.lightTrack)
+        return;
+    push(new PropertyCommand<LightTrack>(m_doc, undoText, {Property::LightTrack},
+        fieldOf(&ProjectData::look, &Look::lightTrack), track, ChangeSet::of(Part::Look), {}));
+}
+
+void LookEdits::applyOptimisedLightTrack(const LightTrack& startedFrom, const LightTrack& found)
+{
+    if (found == startedFrom)
+        return;
+    if (startedFrom != data().look.lightTrack)
+        throw EditRefused(
+            tr("The light track changed while it was being optimised; run Optimise Light Along Shot again."));
+    setLightTrack(found, tr("Optimise Light Along Shot"));
 }
 
 void LookEdits::setBackgroundColor(const Eigen::Vector3f& color, GestureId gesture)
@@ -197,6 +238,8 @@ void LookEdits::setLook(const Look& look)
     if (wanted.renderCamera && !wanted.renderCamera->isValid())
         throw EditRefused(tr("The render camera is not valid (eye, target and up must differ)."));
     if (const QString problem = subdivisionProblem(wanted.subdivision); !problem.isEmpty())
+        throw EditRefused(problem);
+    if (const QString problem = lightTrackProblem(wanted.lightTrack); !problem.isEmpty())
         throw EditRefused(problem);
     push(new PropertyCommand<Look>(m_doc, tr("Apply Look"), {Property::WholeLook},
         [](ProjectData& d) { return &d.look; }, std::move(wanted), ChangeSet::of(Part::Look), {}));

@@ -22,12 +22,21 @@ public:
     // --- the look ------------------------------------------------------------------------------
     /// The style of every material (material < 0: clears per-material styles) or of one.
     void setShadingStyle(ShadingStyle style, int material = -1, GestureId gesture = {});
-    /// The key light; a change of vector is "Move Light", of type "Change Light Type".
+    /// The key light; a change of vector is "Move Light", of type "Change Light Type". When the
+    /// look has a light track, keys the light at the current frame instead.
     void setLight(const Light& light, GestureId gesture = {});
     /// Optimise Light for Stereo (paper 3, 4.1): stores the light a finished run of
-    /// model::optimiseLight found (found) as one undo step; nothing when it kept the light. Throws
-    /// EditRefused when the light is no longer the one the run started from (startedFrom).
-    void applyOptimisedLight(const Light& startedFrom, const Light& found);
+    /// model::optimiseLight at frame found (found) as one undo step; nothing when it kept the
+    /// light. With a light track the light is keyed at frame, else it is the single light. Throws
+    /// EditRefused when the light at frame is no longer the one the run started from (startedFrom).
+    void applyOptimisedLight(const Light& startedFrom, const Light& found, int frame);
+    /// Replaces the light track (one undo step named undoText; empty: the single light serves
+    /// every frame again). Throws EditRefused (lightTrackProblem).
+    void setLightTrack(const LightTrack& track, const QString& undoText);
+    /// Optimise Light Along Shot (issue 26): stores the track a finished run of
+    /// model::optimiseLightTrack found as one undo step; nothing when it is unchanged. Throws
+    /// EditRefused when the track is no longer the one the run started from.
+    void applyOptimisedLightTrack(const LightTrack& startedFrom, const LightTrack& found);
     void setBackgroundColor(const Eigen::Vector3f& color, GestureId gesture = {});
     /// Refused (no change) when the ramp is not valid.
     void setToonRamp(const algo::ToonRamp& ramp, GestureId gesture = {});

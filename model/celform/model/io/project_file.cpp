@@ -182,8 +182,7 @@ QJsonObject lookJson(const Look& look)
     const auto& l = look.lineStyle;
     const auto& st = look.stereo;
     QJsonObject out{{"style", enumName(look.style)}, {"material_styles", materialStyles},
-        {"light", QJsonObject{{"type", enumName(look.light.type)}, {"vector", vec3(look.light.vector)}}},
-        {"background", vec3f(look.backgroundColor)},
+        {"light", lightJson(look.light)}, {"background", vec3f(look.backgroundColor)},
         {"toon",
             QJsonObject{{"thresholds", floats(look.toon.thresholds)}, {"intensities", floats(look.toon.intensities)},
                 {"evaluation", enumName(look.toonEvaluation)}}},
@@ -218,6 +217,8 @@ QJsonObject lookJson(const Look& look)
         out.insert("render_camera", cameraJson(*look.renderCamera));
     if (!look.cameraPath.empty())
         out.insert("camera_path", cameraPathJson(look.cameraPath));
+    if (!look.lightTrack.empty())
+        out.insert("light_keys", lightTrackJson(look.lightTrack));
     return out;
 }
 
@@ -370,6 +371,19 @@ QJsonArray cameraPathJson(const CameraPath& path)
     QJsonArray keys;
     for (const CameraKey& k : path.keys)
         keys.append(QJsonObject{{"frame", k.frame}, {"camera", cameraJson(k.camera)}});
+    return keys;
+}
+
+QJsonObject lightJson(const Light& light)
+{
+    return {{"type", enumName(light.type)}, {"vector", vec3(light.vector)}};
+}
+
+QJsonArray lightTrackJson(const LightTrack& track)
+{
+    QJsonArray keys;
+    for (const LightKey& k : track.keys)
+        keys.append(QJsonObject{{"frame", k.frame}, {"light", lightJson(k.light)}});
     return keys;
 }
 

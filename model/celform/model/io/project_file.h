@@ -11,8 +11,8 @@
 namespace celform::model {
 
 /// The format version this build writes; it reads this and every older one.
-/// 2: scene time, camera paths and animated bases.
-constexpr int kProjectFormatVersion = 2;
+/// 2: scene time, camera paths and animated bases. 3: the light track (look.light_keys).
+constexpr int kProjectFormatVersion = 3;
 
 /// A 3D vector as the project file stores it, [x, y, z]; the command line's JSON uses the same form.
 QJsonArray vec3Json(const Eigen::Vector3d& v);
@@ -24,6 +24,12 @@ QJsonObject cameraJson(const Camera& camera);
 /// A camera path as the project file stores it: [{frame, camera}, ...]; `celform camera --list
 /// --json` prints the same form.
 QJsonArray cameraPathJson(const CameraPath& path);
+
+/// A light as the project file stores it ({type, vector}); `celform info --json` prints the same.
+QJsonObject lightJson(const Light& light);
+/// A light track as the project file stores it: [{frame, light}, ...]; `celform info --json`
+/// prints it as light_keys.
+QJsonArray lightTrackJson(const LightTrack& track);
 
 /// A highlight track as the project file stores it (docs/file-format.md); `celform highlight
 /// --list --json` prints the same form.

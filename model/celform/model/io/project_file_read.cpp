@@ -414,6 +414,18 @@ Look readLook(const Reader& r, const QJsonObject& look)
         if (!problem.isEmpty())
             r.corrupt(ProjectFile::tr("the camera path is invalid: %1").arg(problem));
     }
+    // The light track (format 3); absent in older files: the single light serves every frame.
+    if (look.contains("light_keys")) {
+        for (const QJsonValue& v : r.array(look, "light_keys")) {
+            const QJsonObject k = v.toObject();
+            const QJsonObject keyed = r.object(k, "light");
+            out.lightTrack.keys.push_back(
+                {r.frame(k, "frame"), Light{r.enumValue<LightType>(keyed, "type"), r.vector3(keyed, "vector")}});
+        }
+        const QString problem = lightTrackProblem(out.lightTrack);
+        if (!problem.isEmpty())
+            r.corrupt(ProjectFile::tr("the light track is invalid: %1").arg(problem));
+    }
     return out;
 }
 

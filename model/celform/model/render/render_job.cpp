@@ -112,8 +112,10 @@ Look renderJobLook(const ProjectData& data, const RenderJob& job)
     }
     if (job.ridgeThreshold)
         look.lines.ridgeThreshold = *job.ridgeThreshold;
-    if (job.light)
+    if (job.light) { // --light holds at every frame: it replaces the light track too
         look.light = *job.light;
+        look.lightTrack = {};
+    }
     if (job.subdivision)
         look.subdivision.level = *job.subdivision;
     return look;

@@ -211,7 +211,8 @@ void writeChannels(const QString& path, int width, int height, const std::vector
 
 } // namespace
 
-algo::RenderLook renderLookFor(const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets)
+algo::RenderLook renderLookFor(
+    const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets, int frame)
 {
     algo::RenderLook r;
     auto toAlgo = [](ShadingStyle s) {
@@ -234,8 +235,9 @@ algo::RenderLook renderLookFor(const ProjectData& data, const Look& look, const 
         r.materialColors.push_back(m < materials ? data.baseMesh->materials[m].baseColor : r.defaultColor);
     }
     r.background = look.backgroundColor;
-    r.pointLight = look.light.type == LightType::Point;
-    r.light = look.light.vector.cast<float>();
+    const Light light = look.lightAt(double(frame));
+    r.pointLight = light.type == LightType::Point;
+    r.light = light.vector.cast<float>();
     r.toon = look.toon;
     r.toonEvaluation = look.toonEvaluation;
     r.gooch = look.gooch;
@@ -407,7 +409,7 @@ void renderShape(const ProjectData& data, const Look& look, const algo::Position
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
     algo::RenderPasses& passes, std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
 {
-    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets);
+    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);

@@ -14,12 +14,19 @@
 
 namespace celform::model {
 
-/// The renderer's view of the document's look (styles per material, light, tones, lines).
-/// look may override the document's (a render with --style or --light). shadingOffsets: the
-/// offsets in effect at the view and frame (shading_layers.h, effectiveShadingOffsets; kept by the
-/// caller, empty for none); null means the base layer alone.
+/// The renderer's view of the document's look (styles per material, light, tones, lines) at a
+/// frame (the light track's light there, Look::lightAt). look may override the document's (a
+/// render with --style or --light). shadingOffsets: the offsets in effect at the view and frame
+/// (shading_layers.h, effectiveShadingOffsets; kept by the caller, empty for none); null means the
+/// base layer alone.
 algo::RenderLook renderLookFor(
-    const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets = nullptr);
+    const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets, int frame);
+/// The same at the document's current frame.
+inline algo::RenderLook renderLookFor(
+    const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets = nullptr)
+{
+    return renderLookFor(data, look, shadingOffsets, data.currentFrame);
+}
 
 /// The look's visible highlight tracks resolved at a frame for the renderer: keys interpolated,
 /// combinations by name replaced by the other tracks' shapes at the same frame, patch face

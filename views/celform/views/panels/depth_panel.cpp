@@ -1,6 +1,9 @@
 // The Depth dock (depth_panel.h).
 #include "celform/views/panels/depth_panel.h"
 
+#include "celform/views/panels/depth_chart.h"
+#include "celform/views/overlays/shot_depth_runner.h"
+
 #include "celform/model/analysis/depth_analysis_output.h"
 #include "celform/model/document/document.h"
 #include "celform/views/panels/color_swatch.h"
@@ -45,6 +48,7 @@ QIcon swatch(const Eigen::Vector3f& linear)
 
 DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* parent)
     : QWidget(parent)
+    , m_document(document)
     , m_runner(new DepthAnalysisRunner(document, viewport, this))
     , m_overlay(new DepthOverlay(viewport, m_runner))
 {
@@ -110,6 +114,60 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
     m_status = new QLabel(body);
     m_status->setObjectName(QStringLiteral("depthStatus"));
     layout->addWidget(m_status);
+
+    // The depth error along the shot (issue 26): every frame of the scene's range through the shot
+    // camera, analysed on a thread of its own when asked, kept until the document changes.
+    auto* shotBox = new QGroupBox(tr("Along the Shot"), body);
+    auto* shotLayout = new QVBoxLayout(shotBox);
+    m_chart = new DepthChart(document, shotBox);
+    shotLayout->addWidget(m_chart);
+    auto* shotRow = new QHBoxLayout;
+    m_chartButton = new QToolButton(shotBox);
+    m_chartButton->setObjectName(QStringLiteral("chartShotButton"));
+    m_chartButton->setText(tr("Chart Shot"));
+    m_chartButton->setToolTip(tr("Analyse every frame of the scene's range through the shot camera at the "
+                                 "analysis size and chart the depth error"));
+    m_chartCancel = new QToolButton(shotBox);
+    m_chartCancel->setObjectName(QStringLiteral("chartShotCancel"));
+    m_chartCancel->setText(tr("Cancel"));
+    m_chartCancel->setEnabled(false);
+    m_chartStatus = new QLabel(shotBox);
+    m_chartStatus->setObjectName(QStringLiteral("chartShotStatus"));
+    m_chartStatus->setWordWrap(true);
+    shotRow->addWidget(m_chartButton);
+    shotRow->addWidget(m_chartCancel);
+    shotRow->addWidget(m_chartStatus, 1);
+    shotLayout->addLayout(shotRow);
+    layout->addWidget(shotBox);
+    m_shotRunner = new ShotDepthRunner(document, this);
+    connect(m_chartButton, &QToolButton::clicked, this, &DepthPanel::chartShot);
+    connect(m_chartCancel, &QToolButton::clicked, m_shotRunner, &ShotDepthRunner::cancel);
+    connect(m_shotRunner, &ShotDepthRunner::progressed, this,
+        [this](int done, int total) { m_chartStatus->setText(tr("Analysing frame %1 of %2…").arg(done).arg(total)); });
+    connect(m_shotRunner, &ShotDepthRunner::finished, this, [this](bool completed, const QString& error) {
+        m_chartCancel->setEnabled(false);
+        m_chartButton->setEnabled(true);
+        if (completed) {
+            m_chart->setSamples(m_shotRunner->samples());
+            double sum = 0.0;
+            for (const ShotDepthSample& s : m_shotRunner->samples())
+                sum += s.mse;
+            const auto n = m_shotRunner->samples().size();
+            m_chartStatus->setText(
+                tr("%n frame(s), mean MSE %1", nullptr, int(n)).arg(n ? sum / double(n) : 0.0, 0, 'g', 4));
+        } else {
+            m_chartStatus->setText(error.isEmpty() ? tr("Cancelled") : error);
+        }
+    });
+    connect(m_shotRunner, &ShotDepthRunner::staled, this, [this] {
+        m_chart->setStale(true);
+        m_chartStatus->setText(tr("Changed since charted: Chart Shot again"));
+    });
+    connect(document, &model::Document::changed, this, [this, document](const model::ChangeSet& change) {
+        if (change.reset || change.has(model::Part::SceneTime))
+            m_chart->setRange(document->data().time.firstFrame, document->data().time.lastFrame);
+    });
+    m_chart->setRange(document->data().time.firstFrame, document->data().time.lastFrame);
 
     // Optimise Light for Stereo (thesis 4.1, 5.0.2-5.0.3): the method and how segments count.
     auto* lightBox = new QGroupBox(tr("Light for Stereo"), body);
@@ -361,6 +419,16 @@ void DepthPanel::showResult()
         QTableWidgetItem* in = item(3, s.inWindow ? tr("Yes") : tr("No"));
         in->setForeground(s.inWindow ? QColor(20, 130, 40) : QColor(190, 40, 30));
     }
+}
+
+void DepthPanel::chartShot()
+{
+    // The analysis size and settings of the live analysis, over the scene's whole range.
+    const model::SceneTime& time = m_document->data().time;
+    m_chartButton->setEnabled(false);
+    m_chartCancel->setEnabled(true);
+    m_chartStatus->setText(tr("Analysing the shot…"));
+    m_shotRunner->start(time.firstFrame, time.lastFrame, 1, m_runner->analysisSize(), m_runner->settings());
 }
 
 } // namespace celform::views

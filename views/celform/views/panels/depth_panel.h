@@ -26,6 +26,8 @@ class Document;
 namespace celform::views {
 
 class DepthAnalysisRunner;
+class DepthChart;
+class ShotDepthRunner;
 class Viewport;
 
 class DepthPanel : public QWidget {
@@ -39,6 +41,11 @@ public:
     void setOverlayKind(DepthOverlay::Kind kind);
     [[nodiscard]] QTableWidget* segmentTable() const { return m_table; }
     [[nodiscard]] QLabel* errorLabel() const { return m_mse; }
+    /// The chart of the depth error over the shot, and what fills it.
+    [[nodiscard]] DepthChart* chart() const { return m_chart; }
+    [[nodiscard]] ShotDepthRunner* shotRunner() const { return m_shotRunner; }
+    /// Analyses the scene's frame range for the chart (the Chart Shot button).
+    void chartShot();
     /// The button of the Optimise Light for Stereo action (the window owns the action).
     void setOptimiseLightAction(QAction* action);
     /// The method and weight chosen in the panel (the window, the scale and the centre come from
@@ -62,6 +69,7 @@ private:
     void showResult();
     void showBusy(bool busy);
 
+    model::Document* m_document;
     DepthAnalysisRunner* m_runner;
     DepthOverlay* m_overlay;
     bool m_shown = false;
@@ -80,6 +88,11 @@ private:
     QComboBox* m_method;
     QComboBox* m_weight;
     QToolButton* m_optimise;
+    DepthChart* m_chart;
+    ShotDepthRunner* m_shotRunner;
+    QToolButton* m_chartButton;
+    QToolButton* m_chartCancel;
+    QLabel* m_chartStatus;
 };
 
 } // namespace celform::views

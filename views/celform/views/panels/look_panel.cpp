@@ -91,7 +91,7 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     shadingForm->addRow(tr("&Light:"), lightType);
     connect(lightType, qOverload<int>(&QComboBox::activated), this, [this, lightType](int index) {
         const auto type = model::LightType(lightType->itemData(index).toInt());
-        edit(&model::Look::light, &model::LookEdits::setLight, [type](model::Light& l) {
+        editLight([type](model::Light& l) {
             if (l.type == type)
                 return;
             l.type = type;
@@ -99,9 +99,8 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
                 l.vector.normalize();
         });
     });
-    m_refreshers.push_back([this, lightType] {
-        lightType->setCurrentIndex(lightType->findData(int(m_document->data().look.light.type)));
-    });
+    m_refreshers.push_back(
+        [this, lightType] { lightType->setCurrentIndex(lightType->findData(int(currentLight().type))); });
     auto* lightRow = new QWidget(shadingBox);
     auto* lightLayout = new QHBoxLayout(lightRow);
     lightLayout->setContentsMargins(0, 0, 0, 0);
@@ -112,10 +111,9 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         spin->setMinimumWidth(spin->fontMetrics().horizontalAdvance(QStringLiteral("-0.000")) + 28);
         spin->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         lightLayout->addWidget(spin);
-        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, axis](double v) {
-            edit(&model::Look::light, &model::LookEdits::setLight, [axis, v](model::Light& l) { l.vector[axis] = v; });
-        });
-        m_refreshers.push_back([this, spin, axis] { spin->setValue(m_document->data().look.light.vector[axis]); });
+        connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+            [this, axis](double v) { editLight([axis, v](model::Light& l) { l.vector[axis] = v; }); });
+        m_refreshers.push_back([this, spin, axis] { spin->setValue(currentLight().vector[axis]); });
     }
     shadingForm->addRow(tr("Light &vector:"), lightRow);
     shadingForm->addRow(tr("&Background:"),
@@ -418,7 +416,9 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
     layout->addStretch(1);
 
     connect(m_document, &model::Document::changed, this, [this](const model::ChangeSet& change) {
-        if (change.has(model::Part::Look) || change.has(model::Part::Mesh))
+        // With a light track the light shown is the one at the playhead.
+        if (change.has(model::Part::Look) || change.has(model::Part::Mesh)
+            || (change.has(model::Part::Playhead) && !m_document->data().look.lightTrack.empty()))
             refresh();
     });
     refresh();

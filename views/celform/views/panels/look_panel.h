@@ -33,6 +33,20 @@ private:
     /// Edits a copy of one property of the look and hands it to the document's setter for it,
     /// in the gesture of the control that sent the change (a spin box held down is one step); a
     /// refused value puts the controls back.
+    /// The light shown: the light track's at the current frame, else the single light.
+    [[nodiscard]] model::Light currentLight() const
+    {
+        return m_document->data().look.lightAt(m_document->data().currentFrame);
+    }
+    /// Changes the light shown (LookEdits::setLight keys it at the current frame on a track).
+    template <typename Change> void editLight(Change&& change)
+    {
+        if (m_updating)
+            return;
+        model::Light light = currentLight();
+        change(light);
+        m_document->look().setLight(light, GestureTracker::of(sender()));
+    }
     template <typename T, typename Change>
     void edit(T model::Look::*field, void (model::LookEdits::*set)(const T&, model::GestureId), Change&& change)
     {

@@ -81,13 +81,14 @@ TimelinePanel::TimelinePanel(model::Document* document, QWidget* parent)
     auto* legend = new QLabel(this);
     legend->setObjectName(QStringLiteral("timelineLegend"));
     legend->setTextFormat(Qt::RichText);
-    legend->setText(QStringLiteral("<span style='color:%1'>▼</span> %2 &nbsp;<span style='color:%3'>◆</span> %4 "
-                                   "&nbsp;<span style='color:%5'>●</span> %6")
-                        .arg(markColor(TimelineMarkKind::Camera).name(), tr("camera"),
-                            markColor(TimelineMarkKind::Deformation).name(), tr("deformation"),
-                            markColor(TimelineMarkKind::Highlight).name(), tr("highlight")));
-    legend->setToolTip(tr("Key marks on the ruler: camera keys (top row), key deformations (middle) and highlight "
-                          "keys (bottom)"));
+    legend->setText(
+        QStringLiteral("<span style='color:%1'>▼</span> %2 &nbsp;<span style='color:%3'>■</span> %4 "
+                       "&nbsp;<span style='color:%5'>◆</span> %6 &nbsp;<span style='color:%7'>●</span> %8")
+            .arg(markColor(TimelineMarkKind::Camera).name(), tr("camera"), markColor(TimelineMarkKind::Light).name(),
+                tr("light"), markColor(TimelineMarkKind::Deformation).name(), tr("deformation"),
+                markColor(TimelineMarkKind::Highlight).name(), tr("highlight")));
+    legend->setToolTip(tr("Key marks on the ruler, top to bottom: camera keys, light keys, key deformations and "
+                          "highlight keys"));
 
     auto* controls = new QHBoxLayout;
     controls->setContentsMargins(0, 0, 0, 0);
@@ -151,7 +152,7 @@ void TimelinePanel::documentChanged(const model::ChangeSet& change)
     using model::Part;
     if (change.reset || change.has(Part::SceneTime) || change.has(Part::Playhead))
         refreshTime();
-    if (change.reset || change.has(Part::CameraPath) || change.has(Part::Highlights)
+    if (change.reset || change.has(Part::CameraPath) || change.has(Part::Highlights) || change.has(Part::Look)
         || (change.has(Part::Keys) && !change.offsetsOnly))
         refreshMarks();
     if (change.reset)

@@ -22,12 +22,12 @@ constexpr double kMarkRadius = 4.5;
 /// Frame steps between ticks and between labels, smallest first.
 constexpr int kSteps[] = {1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000, 100000, 1000000};
 
-/// The three kinds in the order of their rows, top to bottom.
+/// The kinds in the order of their rows, top to bottom.
 constexpr TimelineMarkKind kKinds[]
-    = {TimelineMarkKind::Camera, TimelineMarkKind::Deformation, TimelineMarkKind::Highlight};
+    = {TimelineMarkKind::Camera, TimelineMarkKind::Light, TimelineMarkKind::Deformation, TimelineMarkKind::Highlight};
 
 /// A mark's outline: camera keys are triangles pointing down (a lens), key deformations diamonds
-/// (the usual key mark), highlight keys circles (a highlight spot).
+/// (the usual key mark), highlight keys circles (a highlight spot), light keys squares.
 QPainterPath markShape(TimelineMarkKind kind, QPointF c, double r)
 {
     QPainterPath path;
@@ -48,6 +48,9 @@ QPainterPath markShape(TimelineMarkKind kind, QPointF c, double r)
     case TimelineMarkKind::Highlight:
         path.addEllipse(c, r * 0.85, r * 0.85);
         break;
+    case TimelineMarkKind::Light:
+        path.addRect(QRectF(c.x() - r * 0.75, c.y() - r * 0.75, r * 1.5, r * 1.5));
+        break;
     }
     return path;
 }
@@ -65,6 +68,8 @@ std::vector<TimelineMark> timelineMarks(const model::ProjectData& data)
             marks.push_back({int(std::lround(key.frame)), TimelineMarkKind::Highlight});
     for (const model::CameraKey& key : data.look.cameraPath.keys)
         marks.push_back({key.frame, TimelineMarkKind::Camera});
+    for (const model::LightKey& key : data.look.lightTrack.keys)
+        marks.push_back({key.frame, TimelineMarkKind::Light});
     std::sort(marks.begin(), marks.end());
     marks.erase(std::unique(marks.begin(), marks.end()), marks.end());
     return marks;
@@ -90,6 +95,8 @@ QColor markColor(TimelineMarkKind kind)
         return QColor(235, 140, 40);
     case TimelineMarkKind::Highlight:
         return QColor(225, 200, 40);
+    case TimelineMarkKind::Light:
+        return QColor(170, 110, 230);
     }
     return Qt::gray;
 }
@@ -103,6 +110,8 @@ QString markName(TimelineMarkKind kind)
         return TimelineRuler::tr("key deformation");
     case TimelineMarkKind::Highlight:
         return TimelineRuler::tr("highlight key");
+    case TimelineMarkKind::Light:
+        return TimelineRuler::tr("light key");
     }
     return {};
 }
@@ -194,7 +203,7 @@ bool TimelineRuler::event(QEvent* event)
                 keyed << markName(mark.kind);
         QString text = keyed.isEmpty() ? tr("Frame %1").arg(frame)
                                        : tr("Frame %1: %2").arg(frame).arg(keyed.join(QStringLiteral(", ")));
-        text += QStringLiteral("\n") + tr("▼ camera keys · ◆ key deformations · ● highlight keys");
+        text += QStringLiteral("\n") + tr("▼ camera keys · ■ light keys · ◆ key deformations · ● highlight keys");
         text += QStringLiteral("\n") + tr("Click or drag to move the current frame");
         QToolTip::showText(help->globalPos(), text, this);
         return true;
@@ -211,7 +220,7 @@ void TimelineRuler::paintEvent(QPaintEvent*)
     const double bottom = height() - 4.0;
     const double left = xForFrame(m_first), right = xForFrame(m_last);
     // Alternate shading of the mark rows, so each kind reads as its own track.
-    for (int row = 0; row < 3; ++row)
+    for (int row = 0; row < int(std::size(kKinds)); ++row)
         if (row % 2 == 1)
             p.fillRect(QRectF(kMargin, kLabelHeight + row * kRowHeight, width() - 2.0 * kMargin, kRowHeight),
                 pal.color(QPalette::AlternateBase));

@@ -1,5 +1,5 @@
 // The Timeline dock's ruler: the scene's frame range with ticks, the key marks of every
-// kind (key deformations, highlight keys, camera keys) in their own shapes and colours, and the
+// kind (key deformations, highlight keys, camera keys, light keys) in their own shapes and colours, and the
 // playhead. Clicking or dragging scrubs the document's playhead within the range.
 #pragma once
 
@@ -17,7 +17,7 @@ struct ProjectData;
 namespace celform::views {
 
 /// What a mark on the ruler stands for.
-enum class TimelineMarkKind { Deformation, Highlight, Camera };
+enum class TimelineMarkKind { Deformation, Highlight, Camera, Light };
 
 struct TimelineMark {
     int frame = 0;
@@ -27,7 +27,7 @@ struct TimelineMark {
 };
 
 /// Every keyed frame of the project: each key viewpoint's deformation frames, each highlight
-/// layer's key frames (rounded to whole frames) and the camera path's keys. Sorted, no repeats.
+/// layer's key frames (rounded to whole frames), the camera path's keys and the light track's keys. Sorted, no repeats.
 [[nodiscard]] std::vector<TimelineMark> timelineMarks(const model::ProjectData& data);
 /// The distinct frames of marks, ascending.
 [[nodiscard]] std::vector<int> markFrames(const std::vector<TimelineMark>& marks);
@@ -51,8 +51,8 @@ public:
     [[nodiscard]] double xForFrame(int frame) const;
     /// The vertical centre of a kind's row of marks.
     [[nodiscard]] double yForKind(TimelineMarkKind kind) const;
-    [[nodiscard]] QSize sizeHint() const override { return {480, 58}; }
-    [[nodiscard]] QSize minimumSizeHint() const override { return {120, 58}; }
+    [[nodiscard]] QSize sizeHint() const override { return {480, 70}; }
+    [[nodiscard]] QSize minimumSizeHint() const override { return {120, 70}; }
 
 protected:
     void paintEvent(QPaintEvent* event) override;

@@ -53,7 +53,7 @@ std::optional<Eigen::Vector2d> HighlightTool::centringTranslation(const QPointF&
     // Paper 2, "translation": H~ = (H + alpha du + beta dv) / |...|. With H = h_n N + h_u du + h_v dv
     // in this orthonormal frame, H~ is parallel to N (the highlight's centre) for alpha = -h_u and
     // beta = -h_v.
-    const model::Light& light = document->data().look.light;
+    const model::Light light = document->data().look.lightAt(document->currentFrame());
     algo::HighlightLight highlightLight;
     highlightLight.point = light.type == model::LightType::Point;
     highlightLight.vector = light.vector.cast<float>();

@@ -38,7 +38,7 @@ void LightTool::move(const ToolEvent& event)
     // The handle moves on a sphere about the model's centre: the arrow tip's for a directional
     // light, the light's own distance for a point light. It stays on the side (towards or away
     // from the viewer) it was on; off the sphere it follows the silhouette.
-    model::Light light = document->data().look.light;
+    model::Light light = document->data().look.lightAt(document->currentFrame()); // the track's, when keyed
     const Eigen::Vector3d centre = m_viewport->modelCentre();
     const Eigen::Vector3d handle = m_viewport->display().lightGizmoHandle();
     double radius = (handle - centre).norm();

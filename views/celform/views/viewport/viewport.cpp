@@ -177,7 +177,8 @@ void Viewport::documentChanged(const model::ChangeSet& change)
         updateOverlay();
         repaint = true;
     }
-    if (change.has(Part::Look)) {
+    // With a light track the light follows the playhead too.
+    if (change.has(Part::Look) || (change.has(Part::Playhead) && !m_document->data().look.lightTrack.empty())) {
         updateLightGizmo();
         applyShadingState();
     }
@@ -535,8 +536,8 @@ Eigen::Vector3d Viewport::modelCentre() const
 
 void Viewport::updateLightGizmo()
 {
-    m_scene->setLightGizmo(
-        m_document ? m_document->data().look.light : model::Light{}, modelCentre(), m_display->lightGizmoRadius());
+    m_scene->setLightGizmo(m_document ? m_document->data().look.lightAt(m_document->currentFrame()) : model::Light{},
+        modelCentre(), m_display->lightGizmoRadius());
 }
 
 const model::Look& Viewport::currentLook() const

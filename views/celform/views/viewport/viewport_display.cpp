@@ -49,7 +49,8 @@ double ViewportDisplay::lightGizmoRadius() const
 
 Eigen::Vector3d ViewportDisplay::lightGizmoHandle() const
 {
-    const model::Light light = m_document ? m_document->data().look.light : model::Light{};
+    const model::Light light
+        = m_document ? m_document->data().look.lightAt(m_document->currentFrame()) : model::Light{};
     if (light.type == model::LightType::Point)
         return light.vector;
     Eigen::Vector3d direction = light.vector.normalized();
