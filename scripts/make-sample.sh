@@ -62,6 +62,8 @@ for key in side front; do
 done
 "$celform" brush "$show" --key side --vertex 691 --radius 0.12 --drag 0.01,0.01 >/dev/null
 "$celform" camera "$show" --turntable 48 --elevation 10
+# Issue 25: the showcase is drawn on its smooth surface (Loop level 2), tones and lines as a studio's.
+"$celform" set "$show" --subdivision 2
 rm -f "$show.bak"
 echo "wrote $show"
 

@@ -2,6 +2,7 @@
 #include "editor/main_window.h"
 
 #include "editor/actions/animation_actions.h"
+#include "editor/actions/subdivision_actions.h"
 #include "editor/actions/tool_keys.h"
 #include "editor/actions/tool_panels.h"
 
@@ -192,6 +193,7 @@ MainWindow::MainWindow(Mode mode, QWidget* parent)
     createActions();
     createMenus();
     installAnimationActions(this); // Timeline dock, playback, shot camera, Observer layout
+    installSubdivisionActions(this); // View: control mesh, smooth surface, cage; the level's note
 
     m_statistics = new QLabel(this);
     statusBar()->addPermanentWidget(m_statistics);

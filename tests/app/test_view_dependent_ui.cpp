@@ -14,6 +14,7 @@
 #include "celform/views/panels/scene_panel.h"
 #include "celform/views/panels/view_sphere_panel.h"
 #include "celform/views/viewport/viewport.h"
+#include "celform/views/viewport/viewport_display.h"
 #include "celform/views/overlays/drawing_overlay.h"
 #include "celform/views/tools/align_tool.h"
 
@@ -22,6 +23,8 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QSpinBox>
+#include <QUndoStack>
 #include <QStandardPaths>
 #include <QTreeWidget>
 
@@ -322,6 +325,101 @@ private slots:
 
     // Issue 24, item 17: the showcase opens with a caption saying what to try, gone at the first
     // action, and a key's drawing one click away.
+    // Issue 25 in the editor: the Look dock's levels are undoable and change what the viewport
+    // displays; 1 and 3 switch between the control mesh and the smooth surface, 2 draws the cage;
+    // the status bar names a viewport level other than the render level and a capped one.
+    void smoothSurfaceLevelsKeysAndCage()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showActive(window));
+        model::Document* doc = window.document();
+        views::Viewport* vp = window.viewport();
+        const views::ViewportDisplay& display = vp->display();
+        const std::int64_t faces = doc->data().baseMesh->faceCount();
+        auto* render = window.findChild<QSpinBox*>(QStringLiteral("renderSubdivision"));
+        auto* viewportLevel = window.findChild<QSpinBox*>(QStringLiteral("viewportSubdivision"));
+        auto* note = window.findChild<QLabel*>(QStringLiteral("subdivisionStatus"));
+        QVERIFY(render && viewportLevel && note);
+        test::raiseDockOf(render);
+        QCOMPARE(display.subdivision().triangles, faces);
+        waitForRender(vp);
+        const QImage cage0 = vp->renderedImage();
+        const double controlFrame = vp->lastFrameTimes().frame;
+
+        // The render level from the Look dock: one undo step, displayed at once.
+        render->setValue(2);
+        QCOMPARE(doc->data().look.subdivision.level, 2);
+        QCOMPARE(display.subdivision().level, 2);
+        QCOMPARE(display.subdivision().triangles, 16 * faces);
+        QVERIFY(note->isHidden()); // the viewport shows the render level
+        waitForRender(vp);
+        waitForRender(vp);
+        const QImage smooth = vp->renderedImage();
+        QVERIFY(smooth != cage0);
+        // A figure for the report (Xvfb's software GL draws the triangles): steady frames, and frames
+        // while orbiting in preview, where every frame blends and re-subdivides the shape.
+        views::Viewport::FrameTimes still{1e9, 0.0}; // the quickest of three (a loaded machine varies)
+        for (int i = 0; i < 3; ++i) {
+            waitForRender(vp);
+            if (vp->lastFrameTimes().frame < still.frame)
+                still = vp->lastFrameTimes();
+        }
+        vp->setPreview(true);
+        model::Camera turned = vp->camera();
+        turned.eye = turned.target + Eigen::AngleAxisd(0.05, turned.up) * (turned.eye - turned.target);
+        vp->setCamera(turned);
+        waitForRender(vp);
+        qInfo("frame at level 0: %.1f ms; at level 2: %.1f ms (lines %.1f ms), orbiting the blend %.1f ms",
+            controlFrame, still.frame, still.lines, vp->lastFrameTimes().frame);
+        vp->setPreview(false);
+        doc->undoStack()->undo();
+        QCOMPARE(doc->data().look.subdivision.level, 0);
+        QCOMPARE(render->value(), 0);
+        QCOMPARE(display.subdivision().triangles, faces);
+        doc->undoStack()->redo();
+        QCOMPARE(render->value(), 2);
+        QCOMPARE(display.subdivision().triangles, 16 * faces);
+
+        // A lower viewport level is a speed setting the status bar names.
+        viewportLevel->setValue(1);
+        QCOMPARE(doc->data().look.subdivision.viewportLevel, 1);
+        QCOMPARE(display.subdivision().triangles, 4 * faces);
+        QVERIFY(note->isVisible());
+        QVERIFY2(note->text().contains(QLatin1String("1")) && note->text().contains(QLatin1String("2")),
+            qPrintable(note->text()));
+
+        // Maya's keys: 1 the control mesh, 3 the smooth surface.
+        vp->setFocus();
+        QTest::keyClick(vp, Qt::Key_1);
+        QVERIFY(!display.smoothShown());
+        QCOMPARE(display.subdivision().level, 0);
+        QVERIFY(window.action(QStringLiteral("actionShowControlMesh"))->isChecked());
+        waitForRender(vp);
+        QVERIFY(vp->renderedImage() != smooth);
+        QTest::keyClick(vp, Qt::Key_3);
+        QVERIFY(display.smoothShown());
+        QCOMPARE(display.subdivision().level, 1);
+
+        // The cage over the smooth surface (View > Show Control Cage, 2).
+        waitForRender(vp);
+        const QImage withoutCage = vp->renderedImage();
+        QTest::keyClick(vp, Qt::Key_2);
+        QVERIFY(display.cageShown());
+        QVERIFY(window.action(QStringLiteral("actionShowControlCage"))->isChecked());
+        waitForRender(vp);
+        QVERIFY(vp->renderedImage() != withoutCage);
+        QTest::keyClick(vp, Qt::Key_2);
+        QVERIFY(!display.cageShown());
+
+        // A big mesh is shown a level lower, and the status bar says so.
+        vp->display().setTriangleCap(4 * faces);
+        viewportLevel->setValue(-1); // same as render: level 2 wanted
+        QCOMPARE(display.subdivision().level, 1);
+        QVERIFY(display.subdivision().capped);
+        QVERIFY2(note->isVisible() && note->text().contains(QLatin1String("capped")), qPrintable(note->text()));
+        waitForRender(vp);
+    }
+
     void showcaseOpensWithACaption()
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);

@@ -124,8 +124,21 @@ QRect LineOverlay::draw(const algo::Positions& shape, const algo::LineStyle& sty
     g.height = h;
     g.depth = depth;
     g.faceId.resize(depth.size());
-    for (std::size_t i = 0; i < depth.size(); ++i)
-        g.faceId[i] = std::isfinite(depth[i]) ? 0 : -1;
+    // GL's depth at the model's outline is that of the rim's nearer side a pixel in, where the
+    // outline stroke itself would fail the depth test: within kOutlineBand pixels of the
+    // background a stroke is not depth tested, as off the model.
+    constexpr int kOutlineBand = 2;
+    auto background = [&](int x, int y) {
+        return x < 0 || y < 0 || x >= w || y >= h
+            || !std::isfinite(depth[std::size_t(y) * std::size_t(w) + std::size_t(x)]);
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            bool outline = background(x, y);
+            for (int d = 1; d <= kOutlineBand && !outline; ++d)
+                outline = background(x - d, y) || background(x + d, y) || background(x, y - d) || background(x, y + d);
+            g.faceId[std::size_t(y) * std::size_t(w) + std::size_t(x)] = outline ? -1 : 0;
+        }
     algo::drawStrokes(styled, g, coverage);
 
     float x0 = std::numeric_limits<float>::max(), y0 = x0, x1 = -x0, y1 = -x0;

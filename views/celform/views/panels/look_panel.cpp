@@ -9,6 +9,7 @@
 #include "celform/model/data/io_error.h"
 
 #include "celform/algorithms/stroke_refine.h"
+#include "celform/algorithms/subdivision.h"
 
 #include <QCheckBox>
 #include <QColorDialog>
@@ -121,6 +122,40 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
             tr("Colour behind the model"), [](const model::Look& l) { return l.backgroundColor; },
             [this](const Eigen::Vector3f& c) { m_document->look().setBackgroundColor(c); }));
     layout->addWidget(shadingBox);
+
+    // --- smooth surface (issue 25) --------------------------------------------------------------
+    auto* surfaceBox = new QGroupBox(tr("Smooth surface"), content);
+    surfaceBox->setToolTip(tr("Loop subdivision of the base model: tones and lines are drawn on a smooth "
+                              "surface instead of the facets of a coarse mesh"));
+    auto* surfaceForm = new QFormLayout(surfaceBox);
+    auto* renderLevel = new QSpinBox(surfaceBox);
+    renderLevel->setObjectName(QStringLiteral("renderSubdivision"));
+    renderLevel->setRange(0, algo::kMaxSubdivisionLevel);
+    renderLevel->setToolTip(tr("Subdivision level of renders and of the depth analysis: 0 is the control mesh, "
+                               "each level has four times the triangles of the one before"));
+    surfaceForm->addRow(tr("&Render level:"), renderLevel);
+    connect(renderLevel, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
+        edit(&model::Look::subdivision, &model::LookEdits::setSubdivision,
+            [v](model::SubdivisionLook& s) { s.level = v; });
+    });
+    auto* viewportLevel = new QSpinBox(surfaceBox);
+    viewportLevel->setObjectName(QStringLiteral("viewportSubdivision"));
+    viewportLevel->setRange(-1, algo::kMaxSubdivisionLevel);
+    viewportLevel->setSpecialValueText(tr("Same as render"));
+    viewportLevel->setToolTip(tr("Subdivision level the viewport shows: the render level by default, so that the "
+                                 "viewport shows what renders show; a lower level is faster to draw (never above "
+                                 "the render level). Keys 1 and 3 switch between the control mesh and this level"));
+    surfaceForm->addRow(tr("&Viewport level:"), viewportLevel);
+    connect(viewportLevel, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
+        edit(&model::Look::subdivision, &model::LookEdits::setSubdivision,
+            [v](model::SubdivisionLook& s) { s.viewportLevel = v; });
+    });
+    m_refreshers.push_back([this, renderLevel, viewportLevel] {
+        const model::SubdivisionLook& s = m_document->data().look.subdivision;
+        renderLevel->setValue(s.level);
+        viewportLevel->setValue(s.viewportLevel);
+    });
+    layout->addWidget(surfaceBox);
 
     // --- toon tones ----------------------------------------------------------------------------
     m_toonBox = new QGroupBox(tr("Toon tones"), content);

@@ -512,12 +512,12 @@ void LookShading::setActive(bool active)
     m->installShaders(m->uniforms.hlLayerCount, m->faceTable.needed());
 }
 
-void LookShading::update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame,
-    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
+void LookShading::update(const model::ProjectData& data, const model::Look& documentLook, const algo::Positions& shape,
+    const float* normals, int frame, std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
 {
     // The renderer's own resolution of the look (styles, colours and Gooch presets per material),
     // so the two paths cannot disagree on what the document means.
-    const algo::RenderLook look = model::renderLookFor(data, data.look, shadingOffsets);
+    const algo::RenderLook look = model::renderLookFor(data, documentLook, shadingOffsets);
     const std::vector<float>& offsets = shadingOffsets ? *shadingOffsets : data.shadingOffsets;
     const algo::TriMesh* mesh = data.baseMesh.get();
     const Eigen::Index count = shape.rows();
@@ -548,7 +548,7 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
     // The highlight layers, then each face's material, PerFace tones and patches, as render.cpp
     // resolves them.
     const std::vector<algo::RenderHighlight> layers
-        = updateHighlights(data, shape, normals, frame, count, shapeGeneration);
+        = updateHighlights(data, documentLook, shape, normals, frame, count, shapeGeneration);
     m->faceTable.update(look, *mesh, shape, offsets, layers);
 
     // Per vertex: the shading offset and the PerVertexLut intensity.
@@ -580,12 +580,13 @@ void LookShading::update(const model::ProjectData& data, const algo::Positions& 
 }
 
 std::vector<algo::RenderHighlight> LookShading::updateHighlights(const model::ProjectData& data,
-    const algo::Positions& shape, const float* normals, int frame, Eigen::Index count, std::uint64_t shapeGeneration)
+    const model::Look& documentLook, const algo::Positions& shape, const float* normals, int frame, Eigen::Index count,
+    std::uint64_t shapeGeneration)
 {
     // The offline renderer's resolution of the tracks at the frame (keys, combinations, patches,
     // per-vertex frames), so both paths draw the same layers.
     std::vector<algo::RenderHighlight> layers
-        = model::renderHighlightsFor(data, data.look, shape, frame, &m->highlightCache, shapeGeneration);
+        = model::renderHighlightsFor(data, documentLook, shape, frame, &m->highlightCache, shapeGeneration);
     Uniforms& u = m->uniforms;
     u.hlLayerCount = int(std::min<std::size_t>(layers.size(), kMaxHighlightLayers));
     u.hlColor.fill(0.f);

@@ -56,14 +56,16 @@ public:
     LookShading(const LookShading&) = delete;
     LookShading& operator=(const LookShading&) = delete;
 
-    /// Refreshes the per-vertex arrays and the uniforms for the document and the displayed shape
-    /// (#V by 3, with its vertex normals, row-major #V by 3 floats).
+    /// Refreshes the per-vertex arrays and the uniforms for the displayed project (the document's,
+    /// or its subdivided stand-in: model::SubdividedSurface) with the document's look and the
+    /// displayed shape (#V by 3, with its vertex normals, row-major #V by 3 floats).
     /// frame selects the highlight tracks' keys (model::renderHighlightsFor at that frame).
     /// shapeGeneration (algo::Shape) lets the highlight geometry be reused while the shape is still.
     /// shadingOffsets: the offsets in effect for the shape shown (model::effectiveShadingOffsets;
     /// empty for none); null means the base layer alone.
-    void update(const model::ProjectData& data, const algo::Positions& shape, const float* normals, int frame = 0,
-        std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr);
+    void update(const model::ProjectData& data, const model::Look& documentLook, const algo::Positions& shape,
+        const float* normals, int frame = 0, std::uint64_t shapeGeneration = 0,
+        const std::vector<float>* shadingOffsets = nullptr);
     /// On: the look's shader; off: VTK's own lighting (the viewport's clay look) as configured
     /// before. Rebuilds the shaders only when the state changes.
     void setActive(bool active);
@@ -72,8 +74,9 @@ public:
 private:
     /// Highlight uniforms and per-vertex frames and normals, as renderFrame resolves them; returns
     /// the layers the shaders draw (for their patches' face masks).
-    std::vector<algo::RenderHighlight> updateHighlights(const model::ProjectData& data, const algo::Positions& shape,
-        const float* normals, int frame, Eigen::Index count, std::uint64_t shapeGeneration);
+    std::vector<algo::RenderHighlight> updateHighlights(const model::ProjectData& data, const model::Look& documentLook,
+        const algo::Positions& shape, const float* normals, int frame, Eigen::Index count,
+        std::uint64_t shapeGeneration);
 
     struct Impl;
     std::unique_ptr<Impl> m;

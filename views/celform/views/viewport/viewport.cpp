@@ -21,7 +21,9 @@
 #include "celform/views/viewport/viewport_compositor.h"
 #include "celform/views/viewport/viewport_display.h"
 #include "celform/views/viewport/viewport_scene.h"
+#include "celform/views/viewport/control_cage.h"
 #include "celform/views/viewport/displayed_shape.h"
+#include "celform/views/viewport/subdivided_display.h"
 
 #include <QElapsedTimer>
 #include <QKeyEvent>
@@ -47,6 +49,8 @@ Viewport::Viewport(model::Document* document, QWidget* parent)
     , m_camera(std::make_unique<ViewportCamera>(m_scene->renderer()))
     , m_compositor(std::make_unique<ViewportCompositor>(this, *m_scene, *m_camera))
     , m_shape(std::make_unique<DisplayedShape>())
+    , m_surface(std::make_unique<SubdividedDisplay>())
+    , m_cage(std::make_unique<ControlCage>(m_scene->renderer()))
     , m_display(
           std::make_unique<ViewportDisplay>(document, *m_camera, [this](bool shading) { displayChanged(shading); }))
     , m_overlay(new DrawingOverlay(document, this))
@@ -181,7 +185,11 @@ void Viewport::documentChanged(const model::ChangeSet& change)
     if (change.has(Part::Look) || (change.has(Part::Playhead) && !m_document->data().look.lightTrack.empty())) {
         updateLightGizmo();
         applyShadingState();
+        repaint = true; // the subdivision levels are in the look
     }
+    // The subdivided stand-in project carries the face sets and base offsets through the stencil.
+    if (change.has(Part::FaceSets) || change.has(Part::ShadingOffsets))
+        m_surface->invalidate();
     if (change.has(Part::Look) || change.has(Part::Highlights) || change.has(Part::FaceSets)
         || change.has(Part::ShadingOffsets) || change.has(Part::Playhead)) {
         m_lookStale = true;
@@ -201,6 +209,8 @@ void Viewport::rebuildMesh()
     m_scene->setMesh(mesh.get());
     m_compositor->clearLines();
     m_shape->invalidate();
+    m_surface->invalidate();
+    m_cage->show(nullptr, nullptr);
     m_uploadedGeneration = 0;
     m_lookStale = true;
     m_patchStale = true;
@@ -214,41 +224,70 @@ void Viewport::rebuildMesh()
     applyShadingState();
 }
 
+void Viewport::syncSubdivision()
+{
+    const model::ProjectData& data = m_document->data();
+    if (!m_surface->setLevel(data, m_display->subdivision().level))
+        return;
+    // A new topology on screen: the scene's arrays, the lines' edges and the per-vertex look are
+    // made again; brush colours of the old vertices are dropped (the next brush hover shows them).
+    m_scene->setMesh(m_surface->view(data, *m_shape).mesh);
+    m_compositor->clearLines();
+    m_uploadedGeneration = 0;
+    m_lookStale = true;
+    m_patchStale = true;
+    if (m_scene->selectionShown()) {
+        m_scene->setSelectionColors(nullptr, nullptr, 0);
+        applyShadingState();
+    }
+}
+
 void Viewport::syncScene()
 {
     if (!m_document || !m_document->hasMesh() || !m_scene->hasMesh())
         return;
     const model::ProjectData& data = m_document->data();
     const Eigen::Vector3d direction = m_observed ? m_observed->viewDirection() : viewDirection();
-    // The VTK arrays hold the shape as it is before this refresh: a partial refresh needs only
-    // its rows uploaded.
-    const bool uploadedBefore = m_uploadedGeneration != 0 && m_uploadedGeneration == m_shape->shape().generation;
+    syncSubdivision();
+    // The VTK arrays hold the displayed shape as it is before this refresh: a partial refresh
+    // needs only its rows uploaded.
+    const std::uint64_t controlBefore = m_shape->shape().generation;
+    const bool uploadedBefore
+        = m_uploadedGeneration != 0 && m_uploadedGeneration == m_surface->view(data, *m_shape).shape->generation;
     if (m_shape->refresh(*m_document, direction))
         ++m_shapeUpdates;
-    const algo::Shape& shape = m_shape->shape();
-    if (shape.positions.rows() != data.baseMesh->vertexCount())
+    if (m_shape->shape().positions.rows() != data.baseMesh->vertexCount())
         return; // a mesh change is on its way
+    // Issue 25: the smooth surface comes after the blend, the animation and the key deformations.
+    m_surface->refresh(*m_shape, controlBefore);
+    const SubdividedDisplay::View shown = m_surface->view(data, *m_shape);
+    const algo::Shape& shape = *shown.shape;
     if (shape.generation != m_uploadedGeneration) {
-        if (uploadedBefore && !m_shape->changedVertices().empty())
-            m_scene->uploadRows(shape.positions, m_shape->normals(), m_shape->changedVertices());
+        if (uploadedBefore && !shown.changed->empty())
+            m_scene->uploadRows(shape.positions, *shown.normals, *shown.changed);
         else
-            m_scene->uploadShape(shape.positions, m_shape->normals());
+            m_scene->uploadShape(shape.positions, *shown.normals);
         m_uploadedGeneration = shape.generation;
         m_lookStale = true;
         m_patchStale = true;
     }
+    m_cage->show(m_display->cageShown() && m_surface->level() > 0 ? data.baseMesh.get() : nullptr, &m_shape->shape());
     // The look's per-vertex data only when the look is drawn (the brush's clay look skips it).
     if (m_lookStale && m_display->isShadingEnabled() && !m_scene->selectionShown()) {
         updateShadingOffsets(direction);
-        m_scene->look().update(data, shape.positions, m_shape->normals().data(), m_document->currentFrame(),
-            shape.generation, &m_shadingOffsets);
+        m_scene->look().update(*shown.data, data.look, shape.positions, shown.normals->data(),
+            m_document->currentFrame(), shape.generation, &m_surface->perVertex(m_shadingOffsets, m_surfaceOffsets));
         m_lookStale = false;
     }
     if (m_patchStale) {
-        const algo::FaceSet* set = m_tool == Tool::Patch ? data.faceSet(tool<PatchTool>().target()) : nullptr;
+        // The patch painted shows on the displayed surface: its children faces there.
+        const algo::FaceSet* set = nullptr;
+        if (m_tool == Tool::Patch)
+            if (const algo::FaceSet* painted = data.faceSet(tool<PatchTool>().target()))
+                set = m_surface->level() > 0 ? shown.data->faceSet(QString::fromStdString(painted->name)) : painted;
         // Lifted by a thousandth of the model's size along the normals: no depth fighting with
         // the model under it, and too little to see.
-        m_scene->setPatchOverlay(shape.positions, m_shape->normals(), data.baseMesh->faces, set,
+        m_scene->setPatchOverlay(shape.positions, *shown.normals, shown.mesh->faces, set,
             float(1e-3 * m_camera->bounds().diagonal().norm()));
         m_patchStale = false;
     }
@@ -619,8 +658,12 @@ void Viewport::paintGL()
     timer.start();
     syncScene();
     ViewportCompositor::Frame frame;
-    frame.shape = &m_shape->shape();
-    frame.mesh = m_document && m_document->hasMesh() ? m_document->data().baseMesh.get() : nullptr;
+    // Lines and highlights are those of the displayed surface, as `celform render` draws them.
+    if (m_document && m_document->hasMesh()) {
+        const SubdividedDisplay::View shown = m_surface->view(m_document->data(), *m_shape);
+        frame.shape = shown.shape;
+        frame.mesh = shown.mesh;
+    }
     frame.look = &currentLook();
     const ViewportDisplay& display = *m_display;
     frame.lines = display.linesShown();

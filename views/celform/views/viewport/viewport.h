@@ -37,12 +37,14 @@ namespace celform::views {
 
 class AxisGizmo;
 class BrushSize;
+class ControlCage;
 class DisplayedShape;
 class DrawingOverlay;
 class ViewportCamera;
 class ViewportCompositor;
 class ViewportDisplay;
 class ViewportScene;
+class SubdividedDisplay;
 
 enum class NavigationStyle { Maya, Blender };
 enum class OrbitMode { Turntable, Trackball };
@@ -117,7 +119,8 @@ public:
     [[nodiscard]] vtkRenderer* modelRenderer() const;
     /// The view direction of this camera, from the base centroid towards the eye (DESIGN.md).
     [[nodiscard]] Eigen::Vector3d viewDirection() const;
-    /// The vertex positions on screen (#V by 3): base, key or blend, brought up to date first.
+    /// The control shape shown (#V by 3): base, key or blend, brought up to date first. The
+    /// surface on screen is its subdivision at the displayed level (issue 25); tools edit this.
     [[nodiscard]] const algo::Positions& displayedShape();
     /// The generation of the shape displayedShape() returns (algo::Shape): caches compare it.
     [[nodiscard]] std::uint64_t displayedShapeGeneration();
@@ -225,6 +228,8 @@ private:
     [[nodiscard]] ViewportTool* activeTool() const;
     /// Every tool: the ones setTool() picks and the light gizmo's drag.
     [[nodiscard]] std::vector<ViewportTool*> allTools() const;
+    /// The displayed level follows the display settings: a new topology goes to the scene.
+    void syncSubdivision();
     /// The brush selection shown in red (brush tool), or none.
     void showBrushSelection(const algo::BrushSelection* selection, const algo::BrushSelection* mirror);
     /// The look's state (shader, background, gizmo) again after a display setting changed.
@@ -238,11 +243,14 @@ private:
     std::unique_ptr<ViewportScene> m_scene;
     std::unique_ptr<ViewportCamera> m_camera;
     std::unique_ptr<ViewportCompositor> m_compositor;
-    std::unique_ptr<DisplayedShape> m_shape;
+    std::unique_ptr<DisplayedShape> m_shape; ///< the control shape at the playhead
+    std::unique_ptr<SubdividedDisplay> m_surface; ///< what is displayed of it (issue 25)
+    std::unique_ptr<ControlCage> m_cage;
     std::unique_ptr<ViewportDisplay> m_display;
     DrawingOverlay* m_overlay; ///< child QObject
     BrushSize* m_brushSize; ///< child QObject, the radius the brushes share
     std::vector<float> m_shadingOffsets; ///< in effect for m_shape (displayedShadingOffsets)
+    std::vector<float> m_surfaceOffsets; ///< m_shadingOffsets on the displayed surface
     std::map<Tool, std::unique_ptr<ViewportTool>> m_tools;
     std::unique_ptr<ViewportTool> m_lightTool; ///< Ctrl+drag on the gizmo, whatever the tool
     AxisGizmo* m_axisGizmo = nullptr; ///< child widget, top right

@@ -1,6 +1,7 @@
 // The viewport's drawing options (viewport_display.h).
 #include "celform/views/viewport/viewport_display.h"
 
+#include "celform/algorithms/subdivision.h"
 #include "celform/model/document/document.h"
 #include "celform/model/render/render_output.h"
 #include "celform/views/viewport/viewport_camera.h"
@@ -105,6 +106,50 @@ void ViewportDisplay::setEyeOnly(Eye eye)
 {
     m_eyeOnly = eye;
     m_changed(false);
+}
+
+void ViewportDisplay::setSmoothShown(bool on)
+{
+    if (on == m_smooth)
+        return;
+    m_smooth = on;
+    m_changed(false);
+}
+
+void ViewportDisplay::setCageShown(bool on)
+{
+    if (on == m_cage)
+        return;
+    m_cage = on;
+    m_changed(false);
+}
+
+void ViewportDisplay::setTriangleCap(std::int64_t triangles)
+{
+    if (triangles == m_triangleCap || triangles <= 0)
+        return;
+    m_triangleCap = triangles;
+    m_changed(false);
+}
+
+ViewportDisplay::Subdivision ViewportDisplay::subdivision() const
+{
+    Subdivision s;
+    if (!hasMesh())
+        return s;
+    const model::SubdivisionLook& look = m_document->data().look.subdivision;
+    s.renderLevel = std::clamp(look.level, 0, algo::kMaxSubdivisionLevel);
+    s.viewportLevel = std::clamp(look.viewport(), 0, algo::kMaxSubdivisionLevel);
+    const std::int64_t faces = m_document->data().baseMesh->faceCount();
+    const int wanted = m_smooth ? s.viewportLevel : 0;
+    // Issue 25: a big mesh is shown a level lower, so that the viewport stays interactive; the
+    // status bar says so. The control mesh is always shown whole.
+    s.level = wanted;
+    while (s.level > 0 && algo::subdividedFaceCount(faces, s.level) > m_triangleCap)
+        --s.level;
+    s.capped = s.level < wanted;
+    s.triangles = algo::subdividedFaceCount(faces, s.level);
+    return s;
 }
 
 } // namespace celform::views

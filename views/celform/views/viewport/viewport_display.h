@@ -60,6 +60,27 @@ public:
     void setEyeOnly(Eye eye);
     [[nodiscard]] Eye eyeOnly() const { return m_eyeOnly; }
 
+    // --- the smooth surface (issue 25) -----------------------------------------------------------
+    /// Maya's 3 (on, the default) and 1 (off): the subdivided surface at the look's viewport level,
+    /// or the control mesh.
+    void setSmoothShown(bool on);
+    [[nodiscard]] bool smoothShown() const { return m_smooth; }
+    /// The control mesh drawn as a wireframe over the subdivided surface (Maya's cage).
+    void setCageShown(bool on);
+    [[nodiscard]] bool cageShown() const { return m_cage; }
+    /// Most triangles the viewport displays: a bigger surface is shown a level lower.
+    void setTriangleCap(std::int64_t triangles);
+    /// What the viewport displays of the subdivision, derived from the look, the base model's
+    /// size and the settings above.
+    struct Subdivision {
+        int level = 0; ///< displayed (0: the control mesh)
+        int viewportLevel = 0; ///< the look's viewport level
+        int renderLevel = 0; ///< the look's render level
+        bool capped = false; ///< level lowered below the wanted one by the triangle cap
+        std::int64_t triangles = 0; ///< displayed
+    };
+    [[nodiscard]] Subdivision subdivision() const;
+
 private:
     [[nodiscard]] bool hasMesh() const;
 
@@ -72,6 +93,9 @@ private:
     std::optional<model::StereoLook> m_stereoLook;
     std::optional<bool> m_linesOverride;
     Eye m_eyeOnly = Eye::Both;
+    bool m_smooth = true;
+    bool m_cage = false;
+    std::int64_t m_triangleCap = 2'000'000;
 };
 
 } // namespace celform::views

@@ -1,6 +1,6 @@
 // VTK objects of the viewport: a vtkGenericOpenGLRenderWindow drawing into the QOpenGLWidget's
-// framebuffer (docs/pitfalls.md, "VTK in a Qt 6 widget") with four layers: 0 background (the drawing when it is under the
-// model, else the model), 1 the model over a drawing, 2 a drawing over the model, 3 the axes triad.
+// framebuffer (docs/pitfalls.md, "VTK in a Qt 6 widget") with four layers: 0 background (the drawing when it is under
+// the model, else the model), 1 the model over a drawing, 2 a drawing over the model, 3 the axes triad.
 #include "celform/views/viewport/viewport_scene.h"
 
 #include "celform/algorithms/shading.h"
@@ -607,7 +607,10 @@ std::optional<ViewportScene::Pick> ViewportScene::pick(double x, double y) const
 
 void ViewportScene::captureDepthOnNextRender(bool on)
 {
-    m->windowDepth.clear();
+    // Turning the capture off after the render keeps what it read: the compositor reads it then
+    // (clearing it here left the lines without depth, so hidden lines were drawn too).
+    if (on)
+        m->windowDepth.clear();
     m->captureDepth = on;
 }
 

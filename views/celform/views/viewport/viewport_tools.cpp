@@ -6,6 +6,7 @@
 #include "celform/model/document/document.h"
 #include "celform/views/viewport/viewport_scene.h"
 #include "celform/views/viewport/displayed_shape.h"
+#include "celform/views/viewport/subdivided_display.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,7 +56,17 @@ void Viewport::setTool(Tool tool)
 
 void Viewport::showBrushSelection(const algo::BrushSelection* selection, const algo::BrushSelection* mirror)
 {
-    const Eigen::Index rows = m_document && m_document->hasMesh() ? m_document->data().baseMesh->vertexCount() : 0;
+    Eigen::Index rows = 0;
+    if (m_document && m_document->hasMesh() && m_scene->hasMesh()) {
+        // The selection is of control vertices; the colours go on the displayed ones.
+        syncSubdivision();
+        const model::ProjectData& data = m_document->data();
+        rows = m_surface->view(data, *m_shape).mesh->vertexCount();
+        if (m_surface->level() > 0 && (selection || mirror)) {
+            selection = m_surface->selection(selection, mirror, data.baseMesh->vertexCount());
+            mirror = nullptr;
+        }
+    }
     const bool wasShown = m_scene->selectionShown();
     m_scene->setSelectionColors(selection, mirror, rows);
     if (wasShown != m_scene->selectionShown())
@@ -72,9 +83,12 @@ std::optional<std::pair<std::int64_t, Eigen::Vector3d>> Viewport::pickSurface(co
     makeCurrent();
     const auto hit = m_scene->pick(position.x() * dpr, (height() - position.y()) * dpr);
     doneCurrent();
-    if (!hit || hit->face >= m_document->data().baseMesh->faceCount())
+    const model::ProjectData& data = m_document->data();
+    if (!hit || hit->face >= m_surface->view(data, *m_shape).mesh->faceCount())
         return std::nullopt;
-    return std::make_pair(hit->face, hit->position);
+    // Issue 25: the tools pick on the control mesh (its face, and the point with the same
+    // barycentric coordinates there), whatever surface is displayed.
+    return m_surface->toControl(hit->face, hit->position, data.baseMesh->faces, m_shape->positions());
 }
 
 std::int64_t Viewport::pickVertex(const QPointF& position)
