@@ -8,6 +8,7 @@
 
 #include "celform/model/export/export.h"
 #include "celform/model/io/mesh_io.h"
+#include "celform/model/io/project_file.h"
 
 #include <tiny_gltf.h>
 
@@ -496,6 +497,35 @@ private slots:
         QCOMPARE(int(points.size()), level1.points * 3);
         QVERIFY(std::equal(points.begin(), points.end(), level1.positions.begin() + std::ptrdiff_t(points.size())));
         readUsd(smooth);
+    }
+
+    void usdaCancelledLeavesNoFile()
+    {
+        // Cancelled in the first walk (the points) and in the second (the normals): no file.
+        struct CancelAfter : algo::Progress {
+            std::int64_t after = 0, reports = 0, total = 0;
+            void progress(std::int64_t, std::int64_t t, const std::string&) override
+            {
+                ++reports;
+                total = t;
+            }
+            bool isCancelRequested() const override { return reports >= after; }
+        };
+        const model::ProjectData data = model::loadProject(m_project, model::DrawingImages::Skip);
+        model::ExportJob job;
+        job.format = model::ExportFormat::Usda;
+        job.lastFrame = 5;
+        job.output = m_dir.filePath(QStringLiteral("cancelled.usda"));
+        for (const std::int64_t after : {2, 8}) {
+            CancelAfter progress;
+            progress.after = after;
+            const model::ExportResult result = model::exportProject(data, QStringLiteral("sphere"), job, &progress);
+            QVERIFY(result.cancelled);
+            QCOMPARE(progress.total, std::int64_t(12)); // both walks on one bar
+            QVERIFY(!QFile::exists(job.output));
+        }
+        QCOMPARE(
+            QDir(m_dir.path()).entryList({QStringLiteral("cancelled*")}, QDir::Files | QDir::Hidden), QStringList());
     }
 
     void badOptions_data()

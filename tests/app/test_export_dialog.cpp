@@ -181,7 +181,7 @@ private slots:
         for (const char* part : {"endTimeCode = 1", "point3f[] points.timeSamples", "def Camera \"camera\"",
                  "def SkelAnimation \"weights\"", "def BlendShape"})
             QVERIFY2(text.contains(part), part);
-        // The normals' spill file is gone: only the layer is left.
+        // Only the layer is left (the atomic write's temporary file is gone).
         QCOMPARE(filesIn(dir.path()), QStringList{QStringLiteral("shot.usda")});
     }
 

@@ -3,19 +3,18 @@
 // UsdGeomCamera with a time-sampled transform and lens, and on request the enabled keys as
 // UsdSkelBlendShapes with their weights animated by a SkelAnimation (as the glTF export's morph
 // targets). Written by hand (USD's text grammar; Pixar's "USD File Formats"), streamed frame by
-// frame: the points of a frame are formatted into one reused buffer and written; the normals go
-// to a spill file beside the output and are appended after the points (one attribute's samples
-// must be one block), so no buffer holds the whole shot. Atomic, as every one-file format.
+// frame: the points of a frame are formatted into one reused buffer and written. One attribute's
+// samples must be one block, so the normals take a second walk over the frames (evaluating a
+// frame again costs little next to formatting and writing it), and no buffer holds the whole
+// shot. Atomic, as every one-file format.
 #include "celform/model/export/export.h"
 #include "celform/model/export/usda_text.h"
 
 #include "celform/model/data/io_error.h"
 
 #include <QCoreApplication>
-#include <QDir>
 #include <QFileInfo>
 #include <QSaveFile>
-#include <QTemporaryFile>
 
 #include <algorithm>
 #include <cmath>
@@ -266,29 +265,15 @@ void writeCamera(UsdaText& t, const std::vector<CameraSample>& frames, Projectio
     t << "        uniform token[] xformOpOrder = [\"xformOp:transform\"]\n    }\n}\n";
 }
 
-/// Copies the spill file's text into the output in pieces of a few megabytes.
-void append(QFileDevice& out, QTemporaryFile& spill)
-{
-    if (!spill.flush() || !spill.seek(0))
-        throw IoError(spill.fileName(), spill.errorString());
-    std::vector<char> piece(std::size_t(4) << 20);
-    for (;;) {
-        const qint64 n = spill.read(piece.data(), qint64(piece.size()));
-        if (n < 0)
-            throw IoError(spill.fileName(), spill.errorString());
-        if (n == 0)
-            break;
-        if (out.write(piece.data(), n) != n)
-            throw IoError(out.fileName(), out.errorString());
-    }
-}
-
 } // namespace
 
 void writeUsda(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result)
 {
-    FrameWalk walk(data, source, job, progress);
+    // Two walks over the frames, the points and then the normals: one progress bar for both.
+    algo::ProgressPart pointsPart(progress, 0, 2 * std::int64_t(job.frameCount()));
+    algo::ProgressPart normalsPart(progress, job.frameCount(), 2 * std::int64_t(job.frameCount()));
+    FrameWalk walk(data, source, job, progress ? &pointsPart : nullptr);
     const algo::TriMesh& mesh = walk.mesh();
     const std::string meshName = usdIdentifier(
         data.baseMeshName.isEmpty() ? "base" : QFileInfo(data.baseMeshName).completeBaseName().toStdString());
@@ -300,9 +285,6 @@ void writeUsda(const ProjectData& data, const QString& source, const ExportJob& 
     QSaveFile file(job.output);
     if (!file.open(QIODevice::WriteOnly))
         throw IoError(job.output, file.errorString());
-    QTemporaryFile spill(QFileInfo(job.output).absoluteDir().filePath(QStringLiteral(".celform-normals-XXXXXX")));
-    if (!spill.open())
-        throw IoError(spill.fileTemplate(), spill.errorString());
 
     UsdaText t;
     writeHeader(t, data, job, mesh, meshName, shapes);
@@ -310,7 +292,7 @@ void writeUsda(const ProjectData& data, const QString& source, const ExportJob& 
     write(file, t);
 
     // Every frame: its points (less the blend shapes' share when they are written) to the file,
-    // its normals to the spill file, its camera and weights and extent kept (a few numbers).
+    // its camera and weights and extent kept (a few numbers).
     const double modelSize = algo::boundingBox(mesh.vertices).diagonal().norm();
     std::vector<CameraSample> cameras;
     std::vector<float> weights, extents;
@@ -351,13 +333,6 @@ void writeUsda(const ProjectData& data, const QString& source, const ExportJob& 
         t.tuples(shape->data(), std::size_t(shape->rows()), 3);
         t << ",\n";
         write(file, t);
-
-        vertexNormals(walk.shape(), walk.faces(), normals);
-        t.clear();
-        t << in << "    " << walk.frame() << ": ";
-        t.tuples(normals.data(), std::size_t(normals.rows()), 3);
-        t << ",\n";
-        write(spill, t);
         ++result.frames;
     }
     if (walk.cancelled()) {
@@ -365,10 +340,23 @@ void writeUsda(const ProjectData& data, const QString& source, const ExportJob& 
         return;
     }
 
+    // The second walk: the normals of the whole shape at every frame.
     t.clear();
     t << in << "}\n" << in << "normal3f[] normals.timeSamples = {\n";
     write(file, t);
-    append(file, spill);
+    FrameWalk again(data, source, job, progress ? &normalsPart : nullptr);
+    while (again.next()) {
+        vertexNormals(again.shape(), again.faces(), normals);
+        t.clear();
+        t << in << "    " << again.frame() << ": ";
+        t.tuples(normals.data(), std::size_t(normals.rows()), 3);
+        t << ",\n";
+        write(file, t);
+    }
+    if (again.cancelled()) {
+        finishFile(file, true, result);
+        return;
+    }
     t.clear();
     t << in << "}\n" << in << "float3[] extent.timeSamples = {\n";
     for (std::size_t f = 0; f < cameras.size(); ++f) {
