@@ -320,9 +320,10 @@ void writeUsda(const ProjectData& data, const QString& source, const ExportJob& 
             }
             shape = &points;
         }
-        if (shape->rows() > 0) {
+        // The extent bounds what is drawn: the whole shape, blend shapes applied.
+        if (walk.shape().rows() > 0) {
             const Eigen::AlignedBox3f box(
-                shape->colwise().minCoeff().transpose(), shape->colwise().maxCoeff().transpose());
+                walk.shape().colwise().minCoeff().transpose(), walk.shape().colwise().maxCoeff().transpose());
             extents.insert(extents.end(),
                 {box.min().x(), box.min().y(), box.min().z(), box.max().x(), box.max().y(), box.max().z()});
         } else
