@@ -51,6 +51,14 @@ if grep -qs "\"version\": \"$validator_version\"" build/tools/node_modules/gltf-
 else
   npm install --prefix build/tools "gltf-validator@$validator_version" --no-audit --no-fund
 fi
+# TinyUSDZ's WebAssembly reader for test_export's USD files (pinned; tests/tools/read_usd.mjs
+# loads it under Node; it brings three.js, which the shim does not use).
+tinyusdz_version=0.9.0-rc10
+if grep -qs "\"version\": \"$tinyusdz_version\"" build/tools/node_modules/tinyusdz/package.json; then
+  echo "setup: tinyusdz $tinyusdz_version is installed"
+else
+  npm install --prefix build/tools "tinyusdz@$tinyusdz_version" --no-audit --no-fund
+fi
 
 # Paths below the checkout hash as relative ones: checkouts share ccache's entries.
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"

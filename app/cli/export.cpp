@@ -1,6 +1,6 @@
 // `celform export`: the view-dependent model's animation for other tools:
 // a glTF scene (text or binary) with key morph targets, their weights and the camera path, a PC2
-// point cache, or one OBJ mesh per frame. The model's exporters do the work (export.h).
+// point cache, one OBJ mesh per frame, or a time-sampled USD layer. The model's exporters do the work (export.h).
 #include "cli/command.h"
 #include "cli/options.h"
 #include "cli/stderr_progress.h"
@@ -21,7 +21,7 @@ int runExport(const Invocation& in)
         throw UsageError{Cli::tr("--format and --out are required")};
     const auto format = model::exportFormatFromName(in.value("format"));
     if (!format)
-        throw UsageError{Cli::tr("--format must be gltf, glb, pc2 or obj-seq, not “%1”").arg(in.value("format"))};
+        throw UsageError{Cli::tr("--format must be gltf, glb, pc2, obj-seq or usda, not “%1”").arg(in.value("format"))};
     model::ExportJob job;
     job.format = *format;
     job.output = in.value("out");
@@ -44,8 +44,14 @@ int runExport(const Invocation& in)
     if (in.isSet("subdivision"))
         job.subdivision = parseSubdivision("subdivision", in.value("subdivision"));
     if (job.subdivision > 0 && (*format == model::ExportFormat::Gltf || *format == model::ExportFormat::Glb))
-        throw UsageError{Cli::tr("--subdivision applies to pc2 and obj-seq exports; glTF keeps the base model "
-                                 "for its morph targets")};
+        throw UsageError{Cli::tr("--subdivision applies to pc2, obj-seq and usda exports; glTF keeps the base "
+                                 "model for its morph targets")};
+    job.blendShapes = in.isSet("blend-shapes");
+    if (job.blendShapes && *format != model::ExportFormat::Usda)
+        throw UsageError{Cli::tr("--blend-shapes applies to usda exports (glTF always holds the keys as morph "
+                                 "targets)")};
+    if (job.blendShapes && job.subdivision > 0)
+        throw UsageError{Cli::tr("--blend-shapes holds the keys on the base model and takes no --subdivision")};
 
     const QString path = in.argument(0);
     const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
@@ -77,21 +83,26 @@ std::vector<SubCommand> exportCommands()
 {
     return {
         {"export",
-            {"celform export P --format gltf|glb|pc2|obj-seq [--frames A-B] [--subdivision N] --out FILE [--json]"},
+            {"celform export P --format gltf|glb|pc2|obj-seq|usda [--frames A-B] [--subdivision N] [--blend-shapes] "
+             "--out FILE [--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Exports the animation as seen through the camera path: a glTF scene with the keys as morph "
-                "targets, a PC2 point cache or an OBJ per frame."),
+                "targets, a PC2 point cache, an OBJ per frame or a USD layer with time-sampled points and camera."),
             {{"P", kProjectArgument}},
             {{"format", "F",
                  QT_TRANSLATE_NOOP("celform::app::Cli",
                      "gltf or glb (keys as morph targets, weights and camera animated), pc2 (point cache) or "
-                     "obj-seq (one OBJ per frame).")},
+                     "obj-seq (one OBJ per frame) or usda (USD text: time-sampled mesh and camera).")},
                 {"frames", "A-B",
                     QT_TRANSLATE_NOOP("celform::app::Cli", "Frames to export, A-B inclusive (default the project's).")},
                 {"subdivision", "N",
                     QT_TRANSLATE_NOOP("celform::app::Cli",
-                        "Loop subdivision level of the exported surface, 0 to 3, for pc2 and obj-seq (default 0: "
-                        "the base model's vertices, in its order).")},
+                        "Loop subdivision level of the exported surface, 0 to 3, for pc2, obj-seq and usda (default "
+                        "0: the base model's vertices, in its order).")},
+                {"blend-shapes", nullptr,
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "usda: the enabled keys as UsdSkel blend shapes with animated weights; the points then hold "
+                        "the shape without them.")},
                 {"out", "FILE",
                     QT_TRANSLATE_NOOP("celform::app::Cli",
                         "The file; for obj-seq a pattern where a run of # is the frame number (else _FFFF goes "

@@ -1,12 +1,14 @@
 // `celform export` run as a user runs it: a PC2 cache whose every frame is
 // the shape `celform eval --frame F` writes, an OBJ per frame, glTF files read back (targets,
 // samples, weights against `celform eval --json`) and passed by the Khronos glTF Validator, and
-// the exit codes of bad options and unwritable files.
+// the exit codes of bad options and unwritable files; USD layers read by TinyUSDZ (npm package
+// tinyusdz) and their time samples, read from the text, against `celform eval`.
 #include "cli_run.h"
 #include "test_meshes.h"
 
 #include "celform/model/export/export.h"
 #include "celform/model/io/mesh_io.h"
+#include "celform/model/io/project_file.h"
 
 #include <tiny_gltf.h>
 
@@ -21,6 +23,7 @@
 
 #include <Eigen/Geometry>
 
+#include <charconv>
 #include <cstring>
 
 using namespace celform;
@@ -118,12 +121,67 @@ double gltfAgainstCache(const tinygltf::Model& m, const Pc2& pc2)
     return worst;
 }
 
-/// Where the validator's package is: the environment's CELFORM_GLTF_VALIDATOR_PREFIX, else
-/// build/tools in the checkout (scripts/setup.sh installs it there).
+/// Where the npm packages are: the environment's CELFORM_GLTF_VALIDATOR_PREFIX, else
+/// build/tools in the checkout (scripts/setup.sh installs the validator and tinyusdz there).
 QString validatorPrefix()
 {
     const QString env = qEnvironmentVariable("CELFORM_GLTF_VALIDATOR_PREFIX");
     return env.isEmpty() ? QStringLiteral(CELFORM_SOURCE_DIR "/build/tools") : env;
+}
+
+/// The numbers of a USDA value starting at text[at] (an array of tuples, a tuple or a number) up
+/// to the end of its line.
+std::vector<float> usdaNumbers(const QByteArray& text, qsizetype at)
+{
+    std::vector<float> out;
+    const char* p = text.constData() + at;
+    const char* end = text.constData() + text.size();
+    while (p < end && *p != '\n') {
+        if ((*p >= '0' && *p <= '9') || *p == '-' || *p == '.') {
+            float v = 0;
+            const auto r = std::from_chars(p, end, v);
+            if (r.ec != std::errc())
+                return {};
+            out.push_back(v);
+            p = r.ptr;
+        } else
+            ++p;
+    }
+    return out;
+}
+
+/// The value of an attribute's sample at a frame: the numbers of the line "F: ..." inside the
+/// block "<declaration>.timeSamples = {". Empty when there is none.
+std::vector<float> usdaSample(const QByteArray& text, const char* declaration, int frame)
+{
+    const qsizetype block = text.indexOf(QByteArray(declaration) + ".timeSamples = {\n");
+    if (block < 0)
+        return {};
+    const qsizetype close = text.indexOf("\n", block);
+    const QByteArray key = ' ' + QByteArray::number(frame) + ": ";
+    for (qsizetype line = close + 1; line < text.size();) {
+        const qsizetype next = text.indexOf('\n', line);
+        const QByteArray head = text.mid(line, std::min<qsizetype>(next - line, 64)).trimmed();
+        if (head.startsWith('}'))
+            return {};
+        if ((' ' + head).startsWith(key))
+            return usdaNumbers(text, line + text.mid(line, next - line).indexOf(':') + 1);
+        line = next + 1;
+    }
+    return {};
+}
+
+/// The numbers of an attribute's default value: "<declaration> = ...".
+std::vector<float> usdaValue(const QByteArray& text, const QByteArray& declaration, qsizetype from = 0)
+{
+    const qsizetype at = text.indexOf(declaration + " = ", from);
+    return at < 0 ? std::vector<float>{} : usdaNumbers(text, at + declaration.size() + 3);
+}
+
+QByteArray readAll(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 } // namespace
@@ -341,6 +399,135 @@ private slots:
         QCOMPARE(model::exportProject(data, QStringLiteral("animated"), job).warnings.size(), 1);
     }
 
+    void usdaOfTheSampleTurntableMatchesEval()
+    {
+        // The bundled sample on a short turntable: TinyUSDZ reads the layer, and the points of
+        // every frame are the shape `celform eval --frame F` writes, float for float.
+        const QString p = m_dir.filePath(QStringLiteral("sample.celform"));
+        QVERIFY(QFile::copy(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform"), p));
+        QFile::setPermissions(p, QFile::ReadOwner | QFile::WriteOwner);
+        QCOMPARE(runCelform({"camera", p, "--turntable", "3"}).exitCode, 0);
+        const QString out = m_dir.filePath(QStringLiteral("sample.usda"));
+        const Run r = runCelform({"export", p, "--format", "usda", "--out", out, "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value("frames").toInt(), 3);
+        const QByteArray text = readAll(out);
+        QVERIFY(text.startsWith("#usda 1.0\n"));
+        for (const char* metadata : {"upAxis = \"Y\"", "metersPerUnit = 1", "timeCodesPerSecond = 24",
+                 "startTimeCode = 0", "endTimeCode = 2", "def Camera \"camera\"", "normal3f[] normals.timeSamples"})
+            QVERIFY2(text.contains(metadata), metadata);
+        std::size_t faces = 0;
+        for (int f = 0; f < 3; ++f) {
+            const QString obj = m_dir.filePath(QStringLiteral("sample_eval_%1.obj").arg(f));
+            const Run e = runCelform({"eval", p, "--frame", QString::number(f), "--out", obj});
+            QVERIFY2(e.exitCode == 0, qPrintable(e.err));
+            const algo::TriMesh evaluated = model::importMesh(obj, model::ImportIsolation::ThisProcess).mesh;
+            faces = std::size_t(evaluated.faceCount());
+            const std::vector<float> points = usdaSample(text, "point3f[] points", f);
+            QCOMPARE(points.size(), std::size_t(evaluated.vertices.size()));
+            for (std::size_t i = 0; i < points.size(); ++i)
+                QVERIFY2(points[i] == evaluated.vertices.data()[i],
+                    qPrintable(QStringLiteral("frame %1 value %2: %3 against eval's %4")
+                                   .arg(f)
+                                   .arg(i)
+                                   .arg(points[i])
+                                   .arg(evaluated.vertices.data()[i])));
+            // The camera: a transform and a lens at every frame.
+            QCOMPARE(usdaSample(text, "matrix4d xformOp:transform", f).size(), std::size_t(16));
+            QCOMPARE(usdaSample(text, "float focalLength", f).size(), std::size_t(1));
+        }
+        QCOMPARE(usdaValue(text, "int[] faceVertexIndices").size(), faces * 3);
+        QVERIFY(usdaSample(text, "point3f[] points", 0) != usdaSample(text, "point3f[] points", 1));
+        QVERIFY(usdaSample(text, "point3f[] points", 3).empty());
+        QString report;
+        readUsd(out, &report);
+        QVERIFY2(report.contains(QStringLiteral("faceVertexIndices %1").arg(faces * 3)), qPrintable(report));
+    }
+
+    void usdaBlendShapesAddUpToTheShape()
+    {
+        // --blend-shapes: points + the keys' offsets times their animated weights is the cache.
+        const QString out = m_dir.filePath(QStringLiteral("shapes.usda"));
+        const Run r = runCelform({"export", m_project, "--format", "usda", "--blend-shapes", "--out", out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString cache = m_dir.filePath(QStringLiteral("shapes.pc2"));
+        QCOMPARE(runCelform({"export", m_project, "--format", "pc2", "--out", cache}).exitCode, 0);
+        const Pc2 pc2 = readPc2(cache);
+        const QByteArray text = readAll(out);
+        QVERIFY(text.contains("uniform token[] skel:blendShapes = [\"side\", \"front\"]"));
+        QVERIFY(text.contains("def SkelAnimation"));
+        double worst = 0.0;
+        bool weighted = false;
+        for (int f = 0; f < kFrames; ++f) {
+            std::vector<float> shape = usdaSample(text, "point3f[] points", f);
+            const std::vector<float> weights = usdaSample(text, "float[] blendShapeWeights", f);
+            QCOMPARE(int(shape.size()), m_vertices * 3);
+            QCOMPARE(weights.size(), std::size_t(2));
+            qsizetype at = 0;
+            for (std::size_t k = 0; k < 2; ++k) {
+                at = text.indexOf("def BlendShape", at + 1);
+                const std::vector<float> offsets = usdaValue(text, "uniform vector3f[] offsets", at);
+                const std::vector<float> indices = usdaValue(text, "uniform int[] pointIndices", at);
+                QCOMPARE(offsets.size(), indices.size() * 3);
+                for (std::size_t i = 0; i < indices.size(); ++i)
+                    for (std::size_t c = 0; c < 3; ++c)
+                        shape[std::size_t(indices[i]) * 3 + c] += weights[k] * offsets[i * 3 + c];
+                weighted = weighted || weights[k] > 0.0f;
+            }
+            for (std::size_t i = 0; i < shape.size(); ++i)
+                worst = std::max(worst, double(std::abs(shape[i] - pc2.positions[std::size_t(f) * shape.size() + i])));
+        }
+        QVERIFY(weighted);
+        QVERIFY2(worst < 1e-5, qPrintable(QString::number(worst)));
+        readUsd(out);
+
+        // A subdivided surface: the PC2 cache's points at the same level, exactly.
+        const QString smooth = m_dir.filePath(QStringLiteral("smooth.usda"));
+        QCOMPARE(runCelform({"export", m_project, "--format", "usda", "--subdivision", "1", "--frames", "2-3", "--out",
+                                smooth})
+                     .exitCode,
+            0);
+        QCOMPARE(runCelform(
+                     {"export", m_project, "--format", "pc2", "--subdivision", "1", "--frames", "2-3", "--out", cache})
+                     .exitCode,
+            0);
+        const Pc2 level1 = readPc2(cache);
+        const QByteArray smoothText = readAll(smooth);
+        const std::vector<float> points = usdaSample(smoothText, "point3f[] points", 3);
+        QCOMPARE(int(points.size()), level1.points * 3);
+        QVERIFY(std::equal(points.begin(), points.end(), level1.positions.begin() + std::ptrdiff_t(points.size())));
+        readUsd(smooth);
+    }
+
+    void usdaCancelledLeavesNoFile()
+    {
+        // Cancelled in the first walk (the points) and in the second (the normals): no file.
+        struct CancelAfter : algo::Progress {
+            std::int64_t after = 0, reports = 0, total = 0;
+            void progress(std::int64_t, std::int64_t t, const std::string&) override
+            {
+                ++reports;
+                total = t;
+            }
+            bool isCancelRequested() const override { return reports >= after; }
+        };
+        const model::ProjectData data = model::loadProject(m_project, model::DrawingImages::Skip);
+        model::ExportJob job;
+        job.format = model::ExportFormat::Usda;
+        job.lastFrame = 5;
+        job.output = m_dir.filePath(QStringLiteral("cancelled.usda"));
+        for (const std::int64_t after : {2, 8}) {
+            CancelAfter progress;
+            progress.after = after;
+            const model::ExportResult result = model::exportProject(data, QStringLiteral("sphere"), job, &progress);
+            QVERIFY(result.cancelled);
+            QCOMPARE(progress.total, std::int64_t(12)); // both walks on one bar
+            QVERIFY(!QFile::exists(job.output));
+        }
+        QCOMPARE(
+            QDir(m_dir.path()).entryList({QStringLiteral("cancelled*")}, QDir::Files | QDir::Hidden), QStringList());
+    }
+
     void badOptions_data()
     {
         QTest::addColumn<QStringList>("extra");
@@ -351,6 +538,9 @@ private slots:
         QTest::newRow("frames not a range") << QStringList{"--format", "pc2", "--frames", "abc", "--out", "x.pc2"};
         QTest::newRow("frames with a step") << QStringList{"--format", "pc2", "--frames", "0-8:2", "--out", "x.pc2"};
         QTest::newRow("suffix unlike format") << QStringList{"--format", "glb", "--out", "x.gltf"};
+        QTest::newRow("blend shapes in pc2") << QStringList{"--format", "pc2", "--blend-shapes", "--out", "x.pc2"};
+        QTest::newRow("blend shapes subdivided")
+            << QStringList{"--format", "usda", "--blend-shapes", "--subdivision", "1", "--out", "x.usda"};
     }
 
     void badOptions()
@@ -478,6 +668,27 @@ private:
             = QString::fromUtf8(p.readAllStandardOutput()) + QString::fromUtf8(p.readAllStandardError());
         qInfo().noquote() << "glTF Validator on" << QFileInfo(file).fileName() << ":" << report.trimmed();
         QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, qPrintable(report));
+    }
+
+    /// Reads a USD file with TinyUSDZ (tests/tools/read_usd.mjs): it must load without errors;
+    /// the reader's report in report.
+    void readUsd(const QString& file, QString* report = nullptr)
+    {
+        const QString node = QStandardPaths::findExecutable(QStringLiteral("node"));
+        if (node.isEmpty())
+            QSKIP("node (Node.js) is not installed: TinyUSDZ cannot run (scripts/setup.sh installs it)");
+        const QString prefix = validatorPrefix();
+        if (!QFileInfo::exists(prefix + QStringLiteral("/node_modules/tinyusdz/package.json")))
+            QSKIP(qPrintable(QStringLiteral("the tinyusdz package is not in %1 (run scripts/setup.sh)").arg(prefix)));
+        QProcess p;
+        p.start(node, {QStringLiteral(CELFORM_SOURCE_DIR "/tests/tools/read_usd.mjs"), file, prefix});
+        QVERIFY(p.waitForFinished(120000));
+        const QString text = QString::fromUtf8(p.readAllStandardOutput()) + QString::fromUtf8(p.readAllStandardError());
+        qInfo().noquote() << "TinyUSDZ on" << QFileInfo(file).fileName() << ":" << text.trimmed();
+        QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0 && text.startsWith("errors 0 meshes 1"),
+            qPrintable(text));
+        if (report)
+            *report = text;
     }
 
     QTemporaryDir m_dir;

@@ -13,6 +13,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QLabel>
@@ -149,6 +150,39 @@ private slots:
         QCOMPARE(start, 2.0f);
         QCOMPARE(samples, 8);
         QCOMPARE(filesIn(dir.path()), QStringList{QStringLiteral("shot.pc2")});
+    }
+
+    void exportsAUsdLayerWithBlendShapes()
+    {
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
+        // The sample with its two keys.
+        QVERIFY(window.openFile(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform")));
+        QCOMPARE(window.document()->data().keys.size(), std::size_t(2));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("shot.usda"));
+        auto* dialog = openExportDialog(window, model::ExportFormat::Pc2, 0, 1, path);
+        QVERIFY(dialog);
+        QVERIFY(!dialog->blendShapesBox()->isEnabled()); // USD only
+        dialog->formatBox()->setCurrentIndex(dialog->formatBox()->findData(int(model::ExportFormat::Usda)));
+        QVERIFY(dialog->blendShapesBox()->isEnabled());
+        QCOMPARE(dialog->fileEdit()->text(), QDir::toNativeSeparators(path));
+        dialog->blendShapesBox()->click();
+        exportButton(dialog)->click();
+        auto* runner = window.findChild<app::JobRunner*>();
+        QVERIFY(runner);
+        QSignalSpy finished(runner, &app::JobRunner::finished);
+        QVERIFY(finished.wait(120000));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray text = f.readAll();
+        QVERIFY(text.startsWith("#usda 1.0\n"));
+        for (const char* part : {"endTimeCode = 1", "point3f[] points.timeSamples", "def Camera \"camera\"",
+                 "def SkelAnimation \"weights\"", "def BlendShape"})
+            QVERIFY2(text.contains(part), part);
+        // Only the layer is left (the atomic write's temporary file is gone).
+        QCOMPARE(filesIn(dir.path()), QStringList{QStringLiteral("shot.usda")});
     }
 
     void cancelLeavesNoFile()

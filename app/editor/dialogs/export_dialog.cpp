@@ -8,6 +8,7 @@
 #include "celform/model/document/document.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -43,6 +44,8 @@ QString formatLabel(model::ExportFormat format)
         return ExportDialog::tr("PC2 point cache (.pc2): the shape at every frame");
     case model::ExportFormat::ObjSequence:
         return ExportDialog::tr("OBJ sequence: one .obj per frame");
+    case model::ExportFormat::Usda:
+        return ExportDialog::tr("USD (.usda): time-sampled points, normals and camera");
     }
     return {};
 }
@@ -55,6 +58,7 @@ ExportDialog::ExportDialog(const model::Document* document, QWidget* parent)
     , m_first(new QSpinBox(this))
     , m_last(new QSpinBox(this))
     , m_file(new QLineEdit(this))
+    , m_blendShapes(new QCheckBox(tr("&Keys as blend shapes (animated weights)"), this))
 {
     setObjectName(QStringLiteral("exportDialog"));
     setWindowTitle(tr("Export"));
@@ -93,6 +97,10 @@ ExportDialog::ExportDialog(const model::Document* document, QWidget* parent)
     fileLabel->setObjectName(QStringLiteral("exportFileLabel"));
     fileLabel->setBuddy(m_file);
     form->addRow(fileLabel, file);
+    m_blendShapes->setObjectName(QStringLiteral("exportBlendShapes"));
+    m_blendShapes->setToolTip(tr("USD: the enabled keys as UsdSkel blend shapes whose weights follow the camera "
+                                 "path; the points then hold the shape without them"));
+    form->addRow(QString(), m_blendShapes);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
     buttons->addButton(tr("&Export"), QDialogButtonBox::AcceptRole)->setObjectName(QStringLiteral("exportButton"));
     form->addRow(buttons);
@@ -100,6 +108,7 @@ ExportDialog::ExportDialog(const model::Document* document, QWidget* parent)
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(browseButton, &QPushButton::clicked, this, &ExportDialog::browse);
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::formatChanged);
+    formatChanged();
 }
 
 model::ExportJob ExportDialog::job() const
@@ -108,6 +117,7 @@ model::ExportJob ExportDialog::job() const
     job.format = model::ExportFormat(m_format->currentData().toInt());
     job.firstFrame = m_first->value();
     job.lastFrame = m_last->value();
+    job.blendShapes = job.format == model::ExportFormat::Usda && m_blendShapes->isChecked();
     job.output = QDir::fromNativeSeparators(m_file->text().trimmed());
     if (!job.output.isEmpty())
         job.output = QFileInfo(job.output).absoluteFilePath();
@@ -129,8 +139,10 @@ void ExportDialog::accept()
 
 void ExportDialog::formatChanged()
 {
+    const auto format = model::ExportFormat(m_format->currentData().toInt());
+    m_blendShapes->setEnabled(format == model::ExportFormat::Usda);
     // Keep the file's name, change its suffix.
-    const QString wanted = suffixOf(model::ExportFormat(m_format->currentData().toInt()));
+    const QString wanted = suffixOf(format);
     const QFileInfo info(QDir::fromNativeSeparators(m_file->text().trimmed()));
     if (info.fileName().isEmpty() || info.suffix().toLower() == wanted)
         return;
@@ -155,8 +167,8 @@ void installExportAction(MainWindow* window)
 {
     QAction* action = addWindowAction(window, QStringLiteral("actionExport"), MainWindow::tr("E&xport…"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E),
-        MainWindow::tr("Export the animation seen through the camera path as glTF, a PC2 point cache or OBJ "
-                       "files, as celform export does"));
+        MainWindow::tr("Export the animation seen through the camera path as glTF, a PC2 point cache, OBJ "
+                       "files or USD, as celform export does"));
     QObject::connect(action, &QAction::triggered, window, [window] {
         auto* dialog = new ExportDialog(window->document(), window);
         dialog->setAttribute(Qt::WA_DeleteOnClose);

@@ -1,5 +1,5 @@
-// File > Export…: the format, the frame range (the project's by default) and
-// the file; the export itself runs as a job of the JobRunner (jobs/export_job.h).
+// File > Export…: the format, the frame range (the project's by default), for USD the keys as
+// blend shapes, and the file; the export itself runs as a job of the JobRunner (jobs/export_job.h).
 #pragma once
 
 #include "celform/model/export/export.h"
@@ -7,6 +7,7 @@
 #include <QDialog>
 #include <QObject>
 
+class QCheckBox;
 class QComboBox;
 class QLineEdit;
 class QSpinBox;
@@ -31,6 +32,8 @@ public:
     [[nodiscard]] QSpinBox* firstFrameBox() const { return m_first; }
     [[nodiscard]] QSpinBox* lastFrameBox() const { return m_last; }
     [[nodiscard]] QLineEdit* fileEdit() const { return m_file; }
+    /// USD only (enabled for it): the keys as blend shapes (celform export --blend-shapes).
+    [[nodiscard]] QCheckBox* blendShapesBox() const { return m_blendShapes; }
 
     void accept() override;
 
@@ -42,6 +45,7 @@ private:
     QSpinBox* m_first;
     QSpinBox* m_last;
     QLineEdit* m_file;
+    QCheckBox* m_blendShapes;
 };
 
 /// Adds File > Export… (Ctrl+Shift+E) before the window's Quit, enabled with a base model.

@@ -18,7 +18,7 @@ struct Names {
     const char* name;
 };
 constexpr Names kNames[] = {{ExportFormat::Gltf, "gltf"}, {ExportFormat::Glb, "glb"}, {ExportFormat::Pc2, "pc2"},
-    {ExportFormat::ObjSequence, "obj-seq"}};
+    {ExportFormat::ObjSequence, "obj-seq"}, {ExportFormat::Usda, "usda"}};
 
 } // namespace
 
@@ -76,6 +76,11 @@ QString exportJobProblem(const ExportJob& job)
         return QCoreApplication::translate("celform::model::Export",
             "glTF exports hold the keys as morph targets of the base model and take no subdivision; export "
             "pc2 or obj-seq with --subdivision");
+    if (job.blendShapes && job.format != ExportFormat::Usda)
+        return QCoreApplication::translate("celform::model::Export", "blend shapes are written by usda exports only");
+    if (job.blendShapes && job.subdivision > 0)
+        return QCoreApplication::translate("celform::model::Export",
+            "blend shapes hold the keys on the base model's vertices and take no subdivision");
     return {};
 }
 
@@ -97,7 +102,12 @@ FrameWalk::FrameWalk(const ProjectData& data, const QString& source, const Expor
 
 const algo::Faces& FrameWalk::faces() const
 {
-    return m_surface ? m_surface->display.baseMesh->faces : m_data.baseMesh->faces;
+    return mesh().faces;
+}
+
+const algo::TriMesh& FrameWalk::mesh() const
+{
+    return m_surface ? *m_surface->display.baseMesh : *m_data.baseMesh;
 }
 
 Eigen::Index FrameWalk::vertexCount() const
@@ -156,6 +166,9 @@ ExportResult exportProject(
     case ExportFormat::Gltf:
     case ExportFormat::Glb:
         exporting::writeGltf(data, source, job, progress, result);
+        break;
+    case ExportFormat::Usda:
+        exporting::writeUsda(data, source, job, progress, result);
         break;
     }
     return result;

@@ -1,7 +1,7 @@
 // Exporting the view-dependent model's animation for other tools: every frame
 // of a range evaluated by FrameEvaluator through the shot's camera, as `celform eval` and the
-// renderer see it, written as a glTF 2.0 scene (text or binary), a PC2 point cache or a sequence
-// of OBJ meshes. docs/export.md describes what each format holds.
+// renderer see it, written as a glTF 2.0 scene (text or binary), a PC2 point cache, a sequence
+// of OBJ meshes or a time-sampled USD layer (text). docs/export.md describes what each format holds.
 #pragma once
 
 #include "celform/algorithms/progress.h"
@@ -19,9 +19,9 @@ namespace celform::model {
 
 struct SubdividedSurface;
 
-enum class ExportFormat { Gltf, Glb, Pc2, ObjSequence };
+enum class ExportFormat { Gltf, Glb, Pc2, ObjSequence, Usda };
 
-/// The command line's names of the formats: gltf, glb, pc2, obj-seq.
+/// The command line's names of the formats: gltf, glb, pc2, obj-seq, usda.
 [[nodiscard]] QString exportFormatName(ExportFormat format);
 [[nodiscard]] std::optional<ExportFormat> exportFormatFromName(const QString& name);
 /// Every format, in the order of exportFormatName's list.
@@ -40,9 +40,12 @@ struct ExportJob {
     /// without one "_FFFF" goes before the suffix (as a rendered sequence names its files).
     QString output;
     double aspect = kExportAspect;
-    /// Loop subdivision level of the exported surface (0-3; PC2 and OBJ sequences). 0, the
+    /// Loop subdivision level of the exported surface (0-3; PC2, OBJ sequences and USD). 0, the
     /// default, keeps the base model's vertices and their order.
     int subdivision = 0;
+    /// USD only: the enabled keys as UsdSkelBlendShapes with their weights animated (as glTF's
+    /// morph targets); the mesh's points then hold the shape without them (subdivision 0 only).
+    bool blendShapes = false;
 
     [[nodiscard]] int frameCount() const { return lastFrame - firstFrame + 1; }
     /// The file frame f goes to (the output itself for a one-file format).
@@ -85,6 +88,8 @@ public:
     [[nodiscard]] const algo::Positions& shape() const { return m_surface ? m_subdivided : m_evaluator.shape(); }
     /// The faces of shape() and its vertex count.
     [[nodiscard]] const algo::Faces& faces() const;
+    /// The mesh at the job's subdivision level (the base model at level 0): faces, UVs.
+    [[nodiscard]] const algo::TriMesh& mesh() const;
     [[nodiscard]] Eigen::Index vertexCount() const;
     [[nodiscard]] bool cancelled() const { return m_cancelled; }
     [[nodiscard]] int done() const { return m_done; }
@@ -111,6 +116,8 @@ void writePc2(const ProjectData& data, const QString& source, const ExportJob& j
 void writeObjSequence(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result);
 void writeGltf(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
+    ExportResult& result);
+void writeUsda(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result);
 
 } // namespace exporting
