@@ -16,6 +16,9 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   # A window manager for the scripted editor run on a 1366x768 screen (tests/app/with-window-manager.sh).
   openbox x11-utils
+  # The farm templates' checks (test_cli_farm): Debian's Python reads the Open Job Description
+  # template (YAML) and the OpenCue job spec (XML); Node runs the Flamenco job compiler.
+  python3-yaml
   # The sanitize preset and the fuzz targets: Clang with its sanitizer and libFuzzer runtimes
   # (LeakSanitizer needs libclang-rt-14-dev), and llvm-symbolizer for readable stacks.
   clang libclang-rt-14-dev llvm

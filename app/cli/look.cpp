@@ -113,6 +113,35 @@ int runSet(const Invocation& in)
     return kExitOk;
 }
 
+/// The vector-line options of `celform render` (docs/lines.md, "Vector lines"): an .svg output
+/// is the lines pass as strokes, --svg-tones adds the tone regions to it, --strokes writes the
+/// strokes' JSON of the lines pass. job.output and job.pass are read already.
+void readVectorLineOptions(const Invocation& in, model::RenderJob& job)
+{
+    if (job.writesVectorLines()) {
+        if (!in.isSet("pass"))
+            job.pass = QStringLiteral("lines");
+        if (job.pass != QLatin1String("lines"))
+            throw UsageError{Cli::tr("an .svg output holds the lines pass; give --pass lines, not “%1”").arg(job.pass)};
+        const QList<algo::StereoOutput> eyes = {algo::StereoOutput::Off, algo::StereoOutput::SideBySide,
+            algo::StereoOutput::TopBottom, algo::StereoOutput::Anaglyph};
+        if (!eyes.contains(job.stereo))
+            throw UsageError{Cli::tr("an .svg output takes --stereo off, sbs, tb or anaglyph")};
+    }
+    job.svgTones = in.isSet("svg-tones");
+    if (job.svgTones && !job.writesVectorLines())
+        throw UsageError{Cli::tr("--svg-tones needs an .svg output")};
+    job.strokesOutput = in.value("strokes");
+    if (in.isSet("strokes")) {
+        if (job.pass != QLatin1String("lines"))
+            throw UsageError{Cli::tr("--strokes needs the lines pass (--pass lines)")};
+        if (QFileInfo(job.strokesOutput).suffix().toLower() != QLatin1String("json"))
+            throw UsageError{Cli::tr("--strokes must end in .json, not “%1”").arg(job.strokesOutput)};
+        if (job.stereo != algo::StereoOutput::Off && !job.writesVectorLines())
+            throw UsageError{Cli::tr("a stereo render writes its strokes beside an .svg output only")};
+    }
+}
+
 int runRender(const Invocation& in)
 {
     // Every option is checked before any work: a usage error renders nothing.
@@ -139,19 +168,25 @@ int runRender(const Invocation& in)
     if (in.isSet("pass") && !model::renderPassNames().contains(job.pass))
         throw UsageError{Cli::tr("--pass takes one of %1, not “%2”")
                              .arg(model::renderPassNames().join(QStringLiteral(", ")), job.pass)};
-    if (job.stereo != algo::StereoOutput::Off && in.isSet("pass") && job.pass != QLatin1String("beauty"))
-        throw UsageError{Cli::tr("a stereo render writes the beauty pass only")};
     const QString path = in.argument(0);
     job.output = in.isSet("out")
         ? in.value("out")
         : QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".png"));
-    if (!model::renderSuffixes().contains(QFileInfo(job.output).suffix().toLower()))
-        throw UsageError{Cli::tr("--out must end in .png, .exr, .tif or .jpg, not “%1”").arg(job.output)};
+    readVectorLineOptions(in, job);
+    if (job.stereo != algo::StereoOutput::Off && in.isSet("pass") && job.pass != QLatin1String("beauty")
+        && !job.writesVectorLines())
+        throw UsageError{Cli::tr("a stereo render writes the beauty pass only")};
+    if (!model::renderSuffixes().contains(QFileInfo(job.output).suffix().toLower()) && !job.writesVectorLines())
+        throw UsageError{Cli::tr("--out must end in .png, .exr, .tif, .jpg or .svg, not “%1”").arg(job.output)};
     // A farm's chunk of one frame (--frames 100-100) is named as the same frame of a longer range.
-    if (in.isSet("frames") && !job.output.contains(QLatin1Char('#'))) {
-        const QFileInfo out(job.output);
-        job.output = out.dir().filePath(out.completeBaseName() + QStringLiteral("_####.") + out.suffix());
-    }
+    auto numbered = [&](const QString& pattern) {
+        if (!in.isSet("frames") || pattern.isEmpty() || pattern.contains(QLatin1Char('#')))
+            return pattern;
+        const QFileInfo out(pattern);
+        return out.dir().filePath(out.completeBaseName() + QStringLiteral("_####.") + out.suffix());
+    };
+    job.output = numbered(job.output);
+    job.strokesOutput = numbered(job.strokesOutput);
     const QString size = QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height());
     checkRenderMemory("size", size, job.bytesNeeded());
     const int wanted = std::min(job.threads, job.frameCount());
@@ -231,7 +266,15 @@ std::vector<SubCommand> lookCommands()
     const std::vector<OptionSpec> rest = {{"stereo", "MODE", QT_TRANSLATE_NOOP("celform::app::Cli", "Stereo output.")},
         {"pass", "NAME", QT_TRANSLATE_NOOP("celform::app::Cli", "Write one render pass.")},
         {"out", "FILE",
-            QT_TRANSLATE_NOOP("celform::app::Cli", "Output image (default: the project's name with .png).")},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Output image (default: the project's name with .png); an .svg holds the lines pass as vector "
+                "strokes.")},
+        {"svg-tones", nullptr,
+            QT_TRANSLATE_NOOP("celform::app::Cli", "With an .svg output: the tone regions as filled layers too.")},
+        {"strokes", "FILE.json",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "With --pass lines: each stroke's points, widths, kind and depth as JSON too (a # is the frame "
+                "number, as in --out).")},
         {"threads", "N",
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Frames rendered at once (default: one per processor; fewer when memory is short). The "
@@ -275,7 +318,8 @@ std::vector<SubCommand> lookCommands()
              "[--ridge-threshold T] [--light point:X,Y,Z|directional:X,Y,Z] [--subdivision N] "
              "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
              "[--pass beauty|lines|tone|highlights|depth|normal|id|segments|curvature|depth-error] [--out "
-             "FILE.png|.exr|.tif|.jpg] [--threads N] [--skip-existing] [--json]"},
+             "FILE.png|.exr|.tif|.jpg|.svg] [--svg-tones] [--strokes FILE.json] [--threads N] [--skip-existing] "
+             "[--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli", "Renders the project's look without a display (CPU renderer)."),
             {{"P", kProjectArgument}}, renderOptions, runRender},
     };

@@ -1,13 +1,17 @@
 // Feature lines on meshes whose answers are known by hand (a cube seen from a corner, an open
-// box, a fin), counts on real meshes, stroke chaining and the hand-drawn style.
+// box, a fin), counts on real meshes, stroke chaining and the hand-drawn style; the visible parts
+// of strokes and the outlines of pixel regions the SVG lines write.
 #include "test_support.h"
 
 #include "celform/algorithms/lines.h"
 #include "celform/algorithms/mesh_analysis.h"
+#include "celform/algorithms/region_outline.h"
 #include "celform/algorithms/stroke_refine.h"
+#include "celform/algorithms/stroke_visibility.h"
 #include "celform/model/io/mesh_io.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <set>
 #include <utility>
@@ -678,6 +682,68 @@ private slots:
         QCOMPARE(styled[2].points.size(), std::size_t(4));
         QCOMPARE(styled[2].points[0], Eigen::Vector2f(0, 0));
         QCOMPARE(styled[2].points[3], Eigen::Vector2f(4, 0));
+    }
+
+    // A stroke across a depth buffer whose middle columns are a surface in front of it: two
+    // visible runs, cut half way between the samples on either side of each edge, keeping their
+    // widths; a stroke in front stays whole, and one closed over the image stays closed.
+    void visiblePartsCutAtTheSurface()
+    {
+        const int w = 20, h = 5;
+        std::vector<float> depth(std::size_t(w * h), std::numeric_limits<float>::infinity());
+        std::vector<std::int32_t> id(depth.size(), -1);
+        for (int y = 0; y < h; ++y)
+            for (int x = 8; x < 12; ++x) {
+                depth[std::size_t(y * w + x)] = 1.f;
+                id[std::size_t(y * w + x)] = 0;
+            }
+        StyledStroke behind;
+        behind.points = {{1.f, 2.5f}, {19.f, 2.5f}};
+        behind.depths = {2.f, 2.f};
+        behind.widths = {1.f, 1.f};
+        behind.kinds = kCrease;
+        StyledStroke front = behind;
+        front.depths = {0.5f, 0.5f};
+        const auto parts = visibleStrokeParts({behind, front}, depth, id, w, h);
+        QCOMPARE(parts.size(), std::size_t(3));
+        QCOMPARE(parts[0].points.front().x(), 1.f);
+        QVERIFY(std::abs(parts[0].points.back().x() - 7.75f) < 0.3f);
+        QVERIFY(std::abs(parts[1].points.front().x() - 12.f) < 0.3f);
+        QCOMPARE(parts[1].points.back().x(), 19.f);
+        QCOMPARE(parts[0].kinds, std::uint8_t(kCrease));
+        QCOMPARE(parts[2].points.size(), std::size_t(2));
+        QCOMPARE(parts[2].widths[0], 1.f);
+    }
+
+    // Outlines along pixel edges: a square with a hole is an outer loop and a reversed inner one,
+    // and two pixels touching at a corner are two loops.
+    void regionOutlinesFollowPixelEdges()
+    {
+        const int w = 5, h = 5;
+        std::vector<char> mask(std::size_t(w * h), 0);
+        for (int y = 1; y < 4; ++y)
+            for (int x = 1; x < 4; ++x)
+                mask[std::size_t(y * w + x)] = !(x == 2 && y == 2);
+        auto loops = traceRegionOutlines(mask, w, h);
+        QCOMPARE(loops.size(), std::size_t(2));
+        auto area = [](const std::vector<Eigen::Vector2i>& loop) {
+            int twice = 0;
+            for (std::size_t k = 0; k < loop.size(); ++k) {
+                const Eigen::Vector2i a = loop[k], b = loop[(k + 1) % loop.size()];
+                twice += a.x() * b.y() - b.x() * a.y();
+            }
+            return twice / 2;
+        };
+        QCOMPARE(loops[0].size(), std::size_t(4)); // corners only
+        QCOMPARE(std::abs(area(loops[0])), 9);
+        QCOMPARE(std::abs(area(loops[1])), 1);
+        QVERIFY(area(loops[0]) * area(loops[1]) < 0); // the hole runs the other way
+        std::vector<char> diagonal(std::size_t(w * h), 0);
+        diagonal[std::size_t(1 * w + 1)] = diagonal[std::size_t(2 * w + 2)] = 1;
+        loops = traceRegionOutlines(diagonal, w, h);
+        QCOMPARE(loops.size(), std::size_t(2));
+        QCOMPARE(loops[0].size(), std::size_t(4));
+        QCOMPARE(loops[1].size(), std::size_t(4));
     }
 };
 

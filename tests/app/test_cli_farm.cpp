@@ -15,6 +15,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QThread>
 
@@ -406,6 +407,90 @@ private slots:
             QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
         }
         compareFolders(expected, dir);
+    }
+
+    // The templates beside the Slurm script (docs/farm.md), read with real parsers (PyYAML and
+    // ElementTree from Debian's Python, Node for the Flamenco job compiler), give the commands a
+    // farm would run; those run on two "nodes" (two processes at a time, alternate chunks) give
+    // the shot one process renders.
+    void farmTemplatesRenderTheShot_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("open job description") << QStringLiteral("openjd");
+        QTest::newRow("opencue") << QStringLiteral("opencue");
+        QTest::newRow("flamenco") << QStringLiteral("flamenco");
+    }
+
+    void farmTemplatesRenderTheShot()
+    {
+        QFETCH(QString, kind);
+        const QString python = QStringLiteral("/usr/bin/python3");
+        const QString node = QStandardPaths::findExecutable(QStringLiteral("node"));
+        const QString farm = QStringLiteral(CELFORM_SOURCE_DIR "/scripts/farm/");
+        const QString tools = QStringLiteral(CELFORM_SOURCE_DIR "/tests/app/");
+        const QString dir = folder(QStringLiteral("template_") + kind);
+        const QString out = QDir(dir).filePath(QStringLiteral("shot_####.exr"));
+        const QString binary = QStringLiteral(CELFORM_EXECUTABLE);
+        QString program;
+        QStringList args;
+        if (kind == QLatin1String("flamenco")) {
+            if (node.isEmpty())
+                QSKIP("node is not installed (scripts/setup.sh)");
+            QProcess check;
+            check.start(node, {QStringLiteral("--check"), farm + QStringLiteral("flamenco-celform-render.js")});
+            QVERIFY(check.waitForFinished(60000));
+            QVERIFY2(check.exitCode() == 0, check.readAllStandardError().constData());
+            const QJsonObject settings{{"project", sample()}, {"frames", "0-5"}, {"chunk_size", 2},
+                {"render_output_path", out}, {"size", "96x54"}, {"threads", 1}, {"celform", binary}};
+            program = node;
+            args = QStringList{tools + QStringLiteral("flamenco_shim.js"),
+                farm + QStringLiteral("flamenco-celform-render.js"),
+                QString::fromUtf8(QJsonDocument(settings).toJson(QJsonDocument::Compact))};
+        } else {
+            QProcess check;
+            check.start(python, {QStringLiteral("-c"), QStringLiteral("import yaml")});
+            if (!check.waitForFinished(60000) || check.exitCode() != 0)
+                QSKIP("Debian's python3-yaml is not installed (scripts/setup.sh)");
+            program = python;
+            args = kind == QLatin1String("openjd")
+                ? QStringList{tools + QStringLiteral("farm_template_commands.py"), QStringLiteral("openjd"),
+                    farm + QStringLiteral("openjd-render.yaml"), QStringLiteral("Project=") + sample(),
+                    QStringLiteral("Output=") + out, QStringLiteral("Frames=0-5"), QStringLiteral("ChunkSize=2"),
+                    QStringLiteral("Size=96x54"), QStringLiteral("Threads=1"), QStringLiteral("Celform=") + binary}
+                : QStringList{tools + QStringLiteral("farm_template_commands.py"), QStringLiteral("opencue"),
+                    farm + QStringLiteral("opencue-render.xml"), QStringLiteral("CELFORM_BINARY=") + binary,
+                    QStringLiteral("CELFORM_PROJECT=") + sample(), QStringLiteral("CELFORM_OUTPUT=") + out,
+                    QStringLiteral("CELFORM_SIZE=96x54"), QStringLiteral("CELFORM_RANGE=0-5"),
+                    QStringLiteral("CELFORM_LAST=5"), QStringLiteral("CELFORM_CHUNK=4"),
+                    QStringLiteral("CELFORM_SHOW=test"), QStringLiteral("CELFORM_SHOT=sh010"),
+                    QStringLiteral("CELFORM_USER=celform")};
+        }
+        QProcess expand;
+        expand.start(program, args);
+        QVERIFY(expand.waitForFinished(60000));
+        QVERIFY2(expand.exitCode() == 0, expand.readAllStandardError().constData());
+        const QJsonArray commands = QJsonDocument::fromJson(expand.readAllStandardOutput()).array();
+        // Chunks of 2 frames (0-1, 2-3, 4-5), or of 4 for OpenCue (0-3, and 4-7 clamped to 4-5).
+        QCOMPARE(commands.size(), kind == QLatin1String("opencue") ? 2 : 3);
+        // Two nodes at once, each taking every other chunk.
+        for (qsizetype round = 0; round < commands.size(); round += 2) {
+            std::vector<std::unique_ptr<QProcess>> nodes;
+            for (qsizetype c = round; c < std::min(round + 2, commands.size()); ++c) {
+                QStringList argv;
+                for (const QJsonValue& a : commands[c].toArray())
+                    argv << a.toString();
+                QVERIFY(argv.join(QLatin1Char(' ')).contains(binary + QStringLiteral(" render ")));
+                auto p = std::make_unique<QProcess>();
+                p->setProcessEnvironment(nodeEnvironment());
+                p->start(argv.takeFirst(), argv);
+                nodes.push_back(std::move(p));
+            }
+            for (const auto& p : nodes) {
+                QVERIFY(p->waitForFinished(120000));
+                QVERIFY2(p->exitCode() == 0, p->readAllStandardError().constData());
+            }
+        }
+        compareFolders(reference(QStringLiteral("exr")), dir);
     }
 
     // A step renders every STEP-th frame from A, up to B.

@@ -200,9 +200,12 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
             ? &cachedRidgeSnakes(shape, mesh, lv, look.lineSettings.ridgeThreshold, cache.ridges)
             : nullptr;
         // The viewport's LineOverlay::draw takes the same path (stroke_refine.h).
-        const std::vector<StyledStroke> styled
+        std::vector<StyledStroke> styled
             = pictureStrokes(strokes, snakes, shape, look.lineStyle, camera.height, project);
         drawStrokes(styled, g, out.lines);
+        out.strokes = std::move(styled); // for the vector writers (stroke_visibility.h)
+    } else {
+        out.strokes.clear();
     }
 
     // Per-vertex and per-face inputs of the comic paper's two coarser toon evaluations.

@@ -67,6 +67,9 @@ struct RenderLook {
 struct RenderPasses {
     ImageRGBA beauty; ///< the look: shading with lines, background, alpha = coverage of the model
     std::vector<float> lines; ///< line coverage in [0, 1]
+    /// The strokes the lines pass draws, in pixels, hidden parts included (visibleStrokeParts
+    /// with depth and id gives what the pass shows).
+    std::vector<StyledStroke> strokes;
     std::vector<float> tone; ///< shading intensity before colour (toon tone, Lambert or Gooch luminance)
     std::vector<float> highlights; ///< stylized highlights coverage in [0, 1], zero off the model
     std::vector<float> depth; ///< distance along the view axis, +infinity off the model

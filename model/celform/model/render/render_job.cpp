@@ -10,6 +10,9 @@
 #include "celform/model/render/subdivided_surface.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/render/render_output.h"
+#include "celform/model/render/strokes_json.h"
+#include "celform/model/render/svg_lines.h"
+#include "celform/model/render/vector_lines.h"
 #include "celform/model/data/shading_layers.h"
 #include "celform/model/data/blend_evaluator.h"
 
@@ -42,7 +45,11 @@ bool RenderJob::writesAllPasses() const
         && stereo == algo::StereoOutput::Off;
 }
 
-QString RenderJob::framePath(int frame) const
+namespace {
+
+/// A run of # in pattern is the zero-padded frame number; without one, a sequence's files have
+/// "_FFFF" before the suffix.
+QString patternPath(const QString& output, int frame, bool isSequence)
 {
     const int first = int(output.indexOf(QLatin1Char('#')));
     if (first >= 0) {
@@ -52,11 +59,28 @@ QString RenderJob::framePath(int frame) const
         return output.left(first) + QStringLiteral("%1").arg(frame, last - first + 1, 10, QLatin1Char('0'))
             + output.mid(last + 1);
     }
-    if (!isSequence())
+    if (!isSequence)
         return output;
     const QFileInfo info(output);
     return info.dir().filePath(
         QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(frame, 4, 10, QLatin1Char('0')).arg(info.suffix()));
+}
+
+} // namespace
+
+QString RenderJob::framePath(int frame) const
+{
+    return patternPath(output, frame, isSequence());
+}
+
+QString RenderJob::strokesPath(int frame) const
+{
+    return strokesOutput.isEmpty() ? QString() : patternPath(strokesOutput, frame, isSequence());
+}
+
+bool RenderJob::writesVectorLines() const
+{
+    return QFileInfo(output).suffix().toLower() == QLatin1String("svg");
 }
 
 qint64 RenderJob::bytesNeeded() const
@@ -211,6 +235,11 @@ public:
             const algo::ImageRGBA image = analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile);
             encodeChannels(
                 target, image.width, image.height, rgba, image.pixels.data(), image.pixels.size(), true, encoded);
+        } else if (m_job.writesVectorLines() || !m_job.strokesOutput.isEmpty()) {
+            // Vector lines and the strokes' JSON are written here, on the render thread.
+            if (!renderVectorLines(shown, f, camera, target, cancelled))
+                return {};
+            return [] {};
         } else {
             renderShape(shown, m_resolved.look, m_shape.positions, f, camera, m_job.size.width(), m_job.size.height(),
                 m_job.stereo, m_cache, m_passes, m_shape.generation, &m_offsets);
@@ -234,6 +263,25 @@ public:
     }
 
 private:
+    /// The lines pass as vector strokes (an .svg output) or as an image, and the strokes' JSON
+    /// when the job asks for it (vector_lines.h): each eye rendered once for both.
+    bool renderVectorLines(const ProjectData& shown, int f, const Camera& camera, const QString& target,
+        const std::function<bool()>& cancelled)
+    {
+        const std::vector<algo::RenderPasses> eyes = renderEyes(shown, m_resolved.look, m_shape.positions, f, camera,
+            m_job.size.width(), m_job.size.height(), m_job.stereo, m_cache, m_shape.generation, &m_offsets);
+        if (cancelled())
+            return false;
+        const VectorLines lines = vectorLinesOf(eyes, m_job.stereo, m_resolved.look, m_job.svgTones, f);
+        if (!m_job.strokesOutput.isEmpty())
+            writeStrokesJson(lines, m_job.strokesPath(f));
+        if (m_job.writesVectorLines())
+            writeLinesSvg(lines, target);
+        else
+            writeImage(passImage(eyes.front(), m_job.pass, m_floatFile), target);
+        return true;
+    }
+
     const ProjectData& m_data;
     const RenderJob& m_job;
     const ResolvedRenderJob& m_resolved;

@@ -67,6 +67,12 @@ struct RenderJob {
     int threads = 1;
     /// Frames whose file exists already are left as they are (a resubmitted farm job resumes).
     bool skipExisting = false;
+    /// `--svg-tones`: an .svg output (the lines pass as vector strokes, svg_lines.h) also holds
+    /// the tone regions as filled layers.
+    bool svgTones = false;
+    /// `--strokes F.json`: the lines pass's strokes also go to this file or pattern (as output,
+    /// strokes_json.h); empty: none.
+    QString strokesOutput;
 
     [[nodiscard]] bool isSequence() const { return frameCount() > 1; }
     [[nodiscard]] int frameCount() const { return (lastFrame - firstFrame) / std::max(step, 1) + 1; }
@@ -76,6 +82,10 @@ struct RenderJob {
     [[nodiscard]] bool writesAllPasses() const;
     /// The file frame f goes to.
     [[nodiscard]] QString framePath(int frame) const;
+    /// The strokes file of frame f (strokesOutput as a pattern, as output is).
+    [[nodiscard]] QString strokesPath(int frame) const;
+    /// The output is an .svg: the lines pass as vector strokes.
+    [[nodiscard]] bool writesVectorLines() const;
     /// About how many bytes the renderer holds for one frame (two eyes in stereo, a float copy of
     /// the passes for an EXR of every pass).
     [[nodiscard]] qint64 bytesNeeded() const;

@@ -2,6 +2,7 @@
 #include "celform/model/render/render_output.h"
 
 #include "celform/model/analysis/depth_analysis_output.h"
+#include "celform/model/render/atomic_file.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/raster_codec.h"
 
@@ -14,12 +15,9 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QImageWriter>
-#include <QSysInfo>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -32,46 +30,6 @@ namespace {
 struct RenderOutput {
     Q_DECLARE_TR_FUNCTIONS(celform::model::RenderOutput)
 };
-
-/// Makes a new empty file beside the target, with the same suffix so that OpenImageIO picks the
-/// format, and returns its name. The name holds the host, the process and a counter, and the file
-/// is created exclusively: threads and farm nodes writing into one shared folder never write into
-/// each other's file. A file left by a killed process is hidden (a dot) and never has the target's
-/// name. Throws IoError naming the target when the folder does not take the file.
-QString createTemporaryBeside(const QString& path)
-{
-    static std::atomic<unsigned> counter{0};
-    const QFileInfo info(path);
-    const QString owner = QStringLiteral("%1-%2").arg(QSysInfo::machineHostName()).arg(::getpid());
-    for (int attempt = 0;; ++attempt) {
-        const QString name = info.dir().filePath(QStringLiteral(".%1.%2-%3.tmp.%4")
-                                                     .arg(info.completeBaseName(), owner)
-                                                     .arg(counter.fetch_add(1))
-                                                     .arg(info.suffix()));
-        // 0666 less the umask, as OpenImageIO would create the file.
-        const int fd = ::open(QFile::encodeName(name).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) {
-            ::close(fd);
-            return name;
-        }
-        if (errno != EEXIST || attempt >= 100)
-            throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(errno)));
-    }
-}
-
-/// Puts the finished, closed temporary file in the target's place. Images are not synced to the
-/// disk first (issue 29: a farm frame costs a disk flush otherwise): a reader sees the old file or
-/// the whole new one, and a frame cut short by a crash of the machine is found and rendered again
-/// by --skip-existing.
-void commit(const QString& temporary, const QString& path)
-{
-    const QByteArray from = QFile::encodeName(temporary);
-    if (std::rename(from.constData(), QFile::encodeName(path).constData()) != 0) {
-        const int renameError = errno;
-        QFile::remove(temporary);
-        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(renameError)));
-    }
-}
 
 } // namespace
 
@@ -178,7 +136,7 @@ void writeEncoded(const EncodedImage& image, const QString& path)
                 QFile::remove(temporary);
                 throw IoError(path, RenderOutput::tr("could not be written: %1").arg(*problem));
             }
-            commit(temporary, path);
+            commitTemporary(temporary, path);
             return;
         }
     }
@@ -196,7 +154,7 @@ void writeEncoded(const EncodedImage& image, const QString& path)
         QFile::remove(temporary);
         throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
     }
-    commit(temporary, path);
+    commitTemporary(temporary, path);
 }
 
 namespace {
@@ -395,6 +353,26 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
     return s;
 }
 
+std::vector<algo::RenderPasses> renderEyes(const ProjectData& data, const Look& look, const algo::Positions& shape,
+    int frame, const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
+    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets, bool withCentre)
+{
+    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
+    renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
+    const algo::RasterCamera centre = rasterCamera(camera, width, height);
+    const bool mono = stereo == algo::StereoOutput::Off;
+    std::vector<algo::RenderPasses> eyes((mono || withCentre ? 1 : 0) + (mono ? 0 : 2));
+    if (mono || withCentre)
+        algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, eyes.front());
+    if (mono)
+        return eyes;
+    const auto [left, right] = algo::stereoPair(centre, resolvedStereo(look.stereo, camera, data.baseMesh->centre()));
+    // Both eyes take their lines from the centre eye (paper 3, section 4.2.2).
+    algo::renderFrame(shape, *data.baseMesh, left, renderLook, cache, eyes[eyes.size() - 2], &centre);
+    algo::renderFrame(shape, *data.baseMesh, right, renderLook, cache, eyes.back(), &centre);
+    return eyes;
+}
+
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
     std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
@@ -409,16 +387,18 @@ void renderShape(const ProjectData& data, const Look& look, const algo::Position
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
     algo::RenderPasses& passes, std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
 {
-    algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
-    renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
-    const algo::RasterCamera centre = rasterCamera(camera, width, height);
-    algo::renderFrame(shape, *data.baseMesh, centre, renderLook, cache, passes);
-    if (stereo == algo::StereoOutput::Off)
+    if (stereo == algo::StereoOutput::Off) {
+        // Mono: straight into passes, whose buffers a sequence keeps (issue 29).
+        algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
+        renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
+        algo::renderFrame(shape, *data.baseMesh, rasterCamera(camera, width, height), renderLook, cache, passes);
         return;
-    const auto [left, right] = algo::stereoPair(centre, resolvedStereo(look.stereo, camera, data.baseMesh->centre()));
-    algo::RenderPasses l, r;
-    algo::renderFrame(shape, *data.baseMesh, left, renderLook, cache, l, &centre);
-    algo::renderFrame(shape, *data.baseMesh, right, renderLook, cache, r, &centre);
+    }
+    std::vector<algo::RenderPasses> eyes = renderEyes(
+        data, look, shape, frame, camera, width, height, stereo, cache, shapeGeneration, shadingOffsets, true);
+    passes = std::move(eyes[0]);
+    const algo::RenderPasses& l = eyes[1];
+    const algo::RenderPasses& r = eyes[2];
     switch (stereo) {
     case algo::StereoOutput::Anaglyph:
         passes.beauty = algo::composeAnaglyph(l.beauty, r.beauty);

@@ -46,6 +46,13 @@ algo::RasterCamera rasterCamera(const Camera& camera, int width, int height);
 /// a thirtieth of it apart.
 algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& camera, const Eigen::Vector3d& centroid);
 
+/// The passes of each eye of a frame of the shape: mono, the camera's alone; in stereo the left
+/// and right eyes (their lines from the centre eye, paper 3, section 4.2.2), after the centre
+/// camera's passes when withCentre. Arguments as renderShape's.
+std::vector<algo::RenderPasses> renderEyes(const ProjectData& data, const Look& look, const algo::Positions& shape,
+    int frame, const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
+    std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr, bool withCentre = false);
+
 /// Renders a frame of the shape, mono or as a stereo composition (lines from the centre eye,
 /// paper 3, section 4.2.2). For stereo only the beauty pass is composed; the other passes are
 /// the centre eye's. frame selects the highlight keys; shapeGeneration as in renderHighlightsFor;
