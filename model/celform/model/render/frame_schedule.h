@@ -20,9 +20,9 @@ using FrameRenderer = std::function<bool(int frame, const QString& file, const s
 /// Runs the job's frames, in order of frame, on min(job.threads, frame count) threads (the
 /// calling thread is one of them), each with a renderer of its own made by makeRenderer on that
 /// thread before its first frame. With job.skipExisting a frame whose file exists (a regular file, or a
-/// link to one) is reported to listener as skipped and not rendered. After a failure no new frame starts; the frames
-/// under way on other threads are finished and written. Returns how many files were written; throws RenderFrameError
-/// for the lowest frame that failed.
+/// link to one) and holds a whole image (incompleteImageProblem) is reported to listener as skipped and not rendered.
+/// After a failure no new frame starts; the frames under way on other threads are finished and written. Returns how
+/// many files were written; throws RenderFrameError for the lowest frame that failed.
 int scheduleFrames(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener,
     const std::function<FrameRenderer()>& makeRenderer);
 

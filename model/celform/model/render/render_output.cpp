@@ -3,6 +3,8 @@
 
 #include "celform/model/analysis/depth_analysis_output.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/io/output_file.h"
 #include "celform/model/io/raster_codec.h"
 
 #include "celform/algorithms/srgb_encode.h"
@@ -11,17 +13,12 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QSysInfo>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <optional>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace celform::model {
 namespace {
@@ -29,53 +26,6 @@ namespace {
 struct RenderOutput {
     Q_DECLARE_TR_FUNCTIONS(celform::model::RenderOutput)
 };
-
-/// Makes a new empty file beside the target, with the same suffix so that OpenImageIO picks the
-/// format, and returns its name. The name holds the host, the process and a counter, and the file
-/// is created exclusively: threads and farm nodes writing into one shared folder never write into
-/// each other's file. A file left by a killed process is hidden (a dot) and never has the target's
-/// name. Throws IoError naming the target when the folder does not take the file.
-QString createTemporaryBeside(const QString& path)
-{
-    static std::atomic<unsigned> counter{0};
-    const QFileInfo info(path);
-    const QString owner = QStringLiteral("%1-%2").arg(QSysInfo::machineHostName()).arg(::getpid());
-    for (int attempt = 0;; ++attempt) {
-        const QString name = info.dir().filePath(QStringLiteral(".%1.%2-%3.tmp.%4")
-                                                     .arg(info.completeBaseName(), owner)
-                                                     .arg(counter.fetch_add(1))
-                                                     .arg(info.suffix()));
-        // 0666 less the umask, as OpenImageIO would create the file.
-        const int fd = ::open(QFile::encodeName(name).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) {
-            ::close(fd);
-            return name;
-        }
-        if (errno != EEXIST || attempt >= 100)
-            throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(errno)));
-    }
-}
-
-/// Puts the finished temporary file in the target's place. Its bytes go to the disk first: after
-/// a crash of the machine the target holds the old file or the whole new one, never an empty one.
-void commit(const QString& temporary, const QString& path)
-{
-    const QByteArray from = QFile::encodeName(temporary);
-    const int fd = ::open(from.constData(), O_RDONLY | O_CLOEXEC);
-    const bool synced = fd >= 0 && ::fsync(fd) == 0;
-    const int syncError = errno;
-    if (fd >= 0)
-        ::close(fd);
-    if (!synced) {
-        QFile::remove(temporary);
-        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(syncError)));
-    }
-    if (std::rename(from.constData(), QFile::encodeName(path).constData()) != 0) {
-        const int renameError = errno;
-        QFile::remove(temporary);
-        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(qt_error_string(renameError)));
-    }
-}
 
 /// Writes channels of float data; 8-bit formats get sRGB-encoded colour channels.
 void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
@@ -99,15 +49,14 @@ void writeChannels(const QString& path, int width, int height, const std::vector
                 colour = c;
         algo::quantise8(data.data(), bytes.data(), data.size(), channels, colour, encodeSrgb);
     }
-    // Nothing below throws between making the temporary file and removing or renaming it.
-    const QString temporary = createTemporaryBeside(path);
-    const QString error = isFloat ? codec.write(temporary, width, height, names, true, data.data())
-                                  : codec.write(temporary, width, height, names, false, bytes.data());
-    if (!error.isEmpty()) {
-        QFile::remove(temporary);
+    // Encoded in memory, then written whole or not at all: a full disk is an IoError naming the
+    // file and the reason, and leaves neither a short file nor a temporary one (issue 27).
+    std::vector<unsigned char> encoded;
+    const QString error = isFloat ? codec.encode(suffix, width, height, names, true, data.data(), &encoded)
+                                  : codec.encode(suffix, width, height, names, false, bytes.data(), &encoded);
+    if (!error.isEmpty())
         throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
-    }
-    commit(temporary, path);
+    writeWholeFile(path, encoded.data(), qint64(encoded.size()));
 }
 
 } // namespace
@@ -411,6 +360,21 @@ void writeImageChannels(const QString& path, int width, int height, const std::v
     const std::vector<float>& data, bool encodeSrgb)
 {
     writeChannels(path, width, height, names, data, encodeSrgb);
+}
+
+QString incompleteImageProblem(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return file.errorString();
+    const QByteArray bytes = file.readAll();
+    try {
+        // The frames are this program's own files: decoded here, not in an import child.
+        decodeImage(bytes, QFileInfo(path).suffix(), path, ImportIsolation::ThisProcess);
+    } catch (const IoError& e) {
+        return e.problem();
+    }
+    return {};
 }
 
 void writePassesExr(const algo::RenderPasses& passes, const QString& path)
