@@ -354,6 +354,40 @@ private slots:
         QVERIFY(filesIn(locked).isEmpty());
     }
 
+    // Issue 27: a drawing with text (SVG <text>) on a node without a display: `new --drawing`,
+    // `key add --drawing` and `render` aborted in Qt's font database. The text is drawn (fontconfig's
+    // fonts, in the import child on the offscreen platform): its outline has an area.
+    void svgTextOnANode()
+    {
+        const QString dir = folder(QStringLiteral("text"));
+        auto write = [&](const QString& name, const QByteArray& bytes) {
+            QFile f(QDir(dir).filePath(name));
+            QVERIFY(f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size());
+        };
+        write(QStringLiteral("tetra.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+        write(QStringLiteral("words.svg"),
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"100\" viewBox=\"0 0 200 100\">"
+            "<text x=\"10\" y=\"70\" font-family=\"DejaVu Sans\" font-size=\"60\">Hi</text></svg>");
+        const QString project = QDir(dir).filePath(QStringLiteral("p.celform"));
+        const QString svg = QDir(dir).filePath(QStringLiteral("words.svg"));
+        const uid_t me = ::geteuid();
+        Run r = runCelformAs(
+            me, {"new", QDir(dir).filePath(QStringLiteral("tetra.obj")), "--drawing", svg, "--out", project});
+        QVERIFY2(r.exitCode == 0 && r.status == QProcess::NormalExit, qPrintable(r.err));
+        r = runCelformAs(
+            me, {"key", "add", project, "--name", "side", "--from-base", "--view", "1,0,0", "--drawing", svg});
+        QVERIFY2(r.exitCode == 0 && r.status == QProcess::NormalExit, qPrintable(r.err));
+        r = runCelformAs(me,
+            {"outline", project, "--drawing", "words", "--json", "--out",
+                QDir(dir).filePath(QStringLiteral("words_outline.svg"))});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(QJsonDocument::fromJson(r.out.toUtf8()).object()[QStringLiteral("area_pixels")].toInt() > 1000,
+            qPrintable(r.out));
+        r = runCelformAs(
+            me, {"render", project, "--size", "64x48", "--out", QDir(dir).filePath(QStringLiteral("f.png"))});
+        QVERIFY2(r.exitCode == 0 && r.status == QProcess::NormalExit, qPrintable(r.err));
+    }
+
     // A render killed at any moment leaves whole pictures under the frames' names, and at most
     // hidden temporary files beside them.
     void killedRenderLeavesNoPartialFile()

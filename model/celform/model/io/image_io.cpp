@@ -9,7 +9,10 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QFontDatabase>
+#include <QGuiApplication>
 #include <QPainter>
+#include <QRegularExpression>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QtEndian>
@@ -227,13 +230,31 @@ QString psdSectionProblem(const QByteArray& data)
     return {};
 }
 
+/// Whether an SVG drawing draws text (text, textArea, an SVG font), which needs the fonts of a
+/// QGuiApplication: without one, Qt's font database aborts the process (issue 27).
+bool svgNeedsFonts(const QByteArray& data)
+{
+    static const QRegularExpression element(QStringLiteral("<([A-Za-z_][\\w.-]*:)?(text|textArea|font|font-face)\\b"));
+    return element.match(QString::fromUtf8(data)).hasMatch();
+}
+
+/// Whether this process has the fonts text needs: a QGuiApplication (the editor's, or the import
+/// child's on the offscreen platform).
+bool hasFonts()
+{
+    return qobject_cast<QGuiApplication*>(QCoreApplication::instance()) != nullptr;
+}
+
 /// Whether a format's decoder runs in a child process: OpenImageIO's own parsers (PSD, TGA, HDR, BMP)
 /// and the libraries behind TIFF, EXR, WebP and GIF are not ours to fix. PNG and JPEG stay here: the
 /// most exercised decoders there are (libpng, libjpeg-turbo), and headerSize() checks their headers
-/// before they decode; SVG is Qt's.
-bool decodedInChild(const QString& format)
+/// before they decode. SVG is Qt's, drawn here unless it has text and this process no fonts (the
+/// command line): the child `celform import-image` then draws it on the offscreen platform.
+bool decodedInChild(const QString& format, const QByteArray& data)
 {
-    return format != QLatin1String("png") && format != QLatin1String("jpg") && format != QLatin1String("svg");
+    if (format == QLatin1String("svg"))
+        return !hasFonts() && svgNeedsFonts(data);
+    return format != QLatin1String("png") && format != QLatin1String("jpg");
 }
 
 // The pixels a child hands back, a file per image: this magic, width and height (native 32-bit),
@@ -324,6 +345,14 @@ std::vector<QImage> decodeInChild(const std::vector<EncodedImage>& images)
 
 QImage renderSvg(const QByteArray& data, const QString& fileLabel)
 {
+    if (svgNeedsFonts(data)) {
+        if (!hasFonts())
+            throw IoError(fileLabel, ImageIo::tr("the SVG drawing has text, which cannot be drawn without fonts here"));
+        if (QFontDatabase::families().isEmpty())
+            throw IoError(fileLabel,
+                ImageIo::tr("the SVG drawing has text and no fonts are installed (fontconfig finds none; install "
+                            "fonts-dejavu-core)"));
+    }
     QSvgRenderer renderer(data);
     const int width = svgSize(renderer, fileLabel).width();
     QImage image(width, kSvgHeight, QImage::Format_RGBA8888_Premultiplied);
@@ -383,7 +412,7 @@ QImage decodeHere(const QByteArray& data, const QString& format, const QString& 
 QImage decodeImage(const QByteArray& data, const QString& format, const QString& fileLabel, ImportIsolation isolation)
 {
     const QString f = checkedFormat(data, format, fileLabel);
-    if (isolation == ImportIsolation::ChildProcess && decodedInChild(f))
+    if (isolation == ImportIsolation::ChildProcess && decodedInChild(f, data))
         return decodeInChild({{data, f, fileLabel}}).front();
     return decodeHere(data, f, fileLabel);
 }
@@ -395,13 +424,14 @@ std::vector<QImage> decodeImages(const std::vector<EncodedImage>& images)
         checked.push_back({image.data, checkedFormat(image.data, image.format, image.label), image.label});
     std::vector<EncodedImage> forChild;
     for (const EncodedImage& image : checked)
-        if (decodedInChild(image.format))
+        if (decodedInChild(image.format, image.data))
             forChild.push_back(image);
     const std::vector<QImage> fromChild = decodeInChild(forChild);
     std::vector<QImage> decoded;
     auto next = fromChild.cbegin();
     for (const EncodedImage& image : checked)
-        decoded.push_back(decodedInChild(image.format) ? *next++ : decodeHere(image.data, image.format, image.label));
+        decoded.push_back(
+            decodedInChild(image.format, image.data) ? *next++ : decodeHere(image.data, image.format, image.label));
     return decoded;
 }
 
