@@ -228,7 +228,7 @@ QString gltfJsonProblem(const char* data, std::size_t size)
         json + (at >= 12 ? at - 12 : 0), std::min<std::size_t>(jsonSize - at, 12) + std::min<std::size_t>(at, 12));
     const bool nonFinite
         = around.find("NaN") != std::string_view::npos || around.find("Infinity") != std::string_view::npos;
-    return AnimationIo::tr("its JSON cannot be read: %1 at byte %2%3")
+    return AnimationIo::tr("not a readable glTF file: its JSON cannot be read: %1 at byte %2%3")
         .arg(error.errorString())
         .arg(qulonglong(at + std::size_t(json - data)))
         .arg(nonFinite ? AnimationIo::tr(" (NaN and Infinity are not JSON numbers)") : QString());
