@@ -212,12 +212,13 @@ Source load(const QString& path)
 
 } // namespace gltf
 
-QString gltfJsonProblem(const char* data, std::size_t size)
+QString gltfJsonProblem(const char* data, std::size_t size, bool refuseDeep)
 {
     const auto [json, jsonSize] = gltf::jsonText(data, size);
     if (gltf::jsonDepth(json, jsonSize) > gltf::kMaxJsonDepth) // QJsonDocument recurses too
-        return AnimationIo::tr("its JSON is nested more than %1 levels deep, which no glTF file needs")
-            .arg(gltf::kMaxJsonDepth);
+        return !refuseDeep ? QString()
+                           : AnimationIo::tr("its JSON is nested more than %1 levels deep, which no glTF file needs")
+                                 .arg(gltf::kMaxJsonDepth);
     QJsonParseError error{};
     QJsonDocument::fromJson(QByteArray::fromRawData(json, qsizetype(jsonSize)), &error);
     if (error.error == QJsonParseError::NoError)

@@ -131,7 +131,7 @@ void readWithAssimp(const QString& path, MeshImport& out)
         const FileBytes bytes(path);
         checkGlbHeader(path, bytes);
         if (suffix == QLatin1String("gltf") || suffix == QLatin1String("glb"))
-            if (const QString problem = animio::gltfJsonProblem(bytes.data(), bytes.size()); !problem.isEmpty())
+            if (const QString problem = animio::gltfJsonProblem(bytes.data(), bytes.size(), false); !problem.isEmpty())
                 throw IoError(path, problem);
     }
     Assimp::Importer importer;
