@@ -14,6 +14,8 @@ packages=(
   libbenchmark-dev glslang-tools
   libopencv-imgproc-dev
   xvfb xauth libgl1-mesa-dri
+  # Fonts for SVG drawings with text, drawn without a display (fontconfig finds them; issue 27).
+  fontconfig fonts-dejavu-core
   # A window manager for the scripted editor run on a 1366x768 screen (tests/app/with-window-manager.sh).
   openbox x11-utils
   # The farm templates' checks (test_cli_farm): Debian's Python reads the Open Job Description

@@ -11,13 +11,13 @@
 #include "celform/model/analysis/light_track_optimisation.h"
 #include "celform/model/analysis/segment_tracking.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/io/output_file.h"
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
 #include "celform/model/data/blend_evaluator.h"
 
 #include <QFileInfo>
 #include <QJsonArray>
-#include <QSaveFile>
 
 namespace celform::app {
 namespace {
@@ -148,10 +148,7 @@ int runAnalyseFrames(const Invocation& in, model::RenderJob job, const model::An
                 + QLatin1Char('\n');
         });
     if (in.isSet("csv")) {
-        QSaveFile file(in.value("csv"));
-        const QByteArray bytes = csv.toUtf8();
-        if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-            throw model::IoError(in.value("csv"), file.errorString());
+        model::writeWholeFile(in.value("csv"), csv.toUtf8()); // whole or not at all (issue 27)
     }
     if (in.isSet("json")) {
         printJson({{"size", QJsonArray{job.size.width(), job.size.height()}}, {"window", windowJson(settings.window)},

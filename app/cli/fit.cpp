@@ -8,13 +8,14 @@
 #include "celform/model/analysis/drawing_fit.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/document/document.h"
+#include "celform/model/io/output_file.h"
 #include "celform/model/io/project_file.h"
 
 #include <QElapsedTimer>
 #include <QImage>
 #include <QImageWriter>
 #include <QJsonArray>
-#include <QSaveFile>
+#include <QBuffer>
 
 namespace celform::app {
 namespace {
@@ -80,20 +81,18 @@ QByteArray outlineSvg(const algo::Outline& outline)
 void writeOutline(const algo::Outline& outline, const QString& out)
 {
     const QString suffix = out.section(QLatin1Char('.'), -1).toLower();
-    QSaveFile file(out);
-    if (!file.open(QIODevice::WriteOnly))
-        throw model::IoError(out, file.errorString());
+    QByteArray bytes;
     if (suffix == QLatin1String("svg")) {
-        const QByteArray svg = outlineSvg(outline);
-        if (file.write(svg) != svg.size())
-            throw model::IoError(out, file.errorString());
+        bytes = outlineSvg(outline);
     } else {
-        QImageWriter writer(&file, "png");
+        // Encoded in memory, then written whole or not at all (issue 27).
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        QImageWriter writer(&buffer, "png");
         if (!writer.write(model::outlineImage(outline, QColor(255, 0, 170), 2.0)))
             throw model::IoError(out, writer.errorString());
     }
-    if (!file.commit())
-        throw model::IoError(out, file.errorString());
+    model::writeWholeFile(out, bytes);
 }
 
 int runOutline(const Invocation& in)

@@ -449,6 +449,7 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
         const QString name = QFileInfo(path).fileName();
         const int frames = std::max(1, animated->animation.frameCount);
         const double fps = animated->fps;
+        const QStringList warnings = animated->warnings; // a sequence's missing numbers
         if (asNewProject) {
             model::ProjectData data = model::newAnimatedProject(std::move(*animated), name);
             data.look.style = Preferences::load().newProjectStyle; // Edit > Preferences
@@ -466,6 +467,7 @@ bool MainWindow::importMesh(const QString& path, bool asNewProject)
         }
         statusBar()->showMessage(
             tr("Loaded %1: an animated base, %n frame(s) at %2 fps", nullptr, frames).arg(name).arg(fps), 8000);
+        showWarnings(path, warnings); // logged, and in the status bar over the line above
         return true;
     }
     auto outcome = runWithProgress<model::MeshImport>(this, tr("Reading %1…").arg(QFileInfo(path).fileName()),

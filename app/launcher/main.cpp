@@ -5,6 +5,7 @@
 #include "launcher/launch.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 
 int main(int argc, char** argv)
 {
@@ -14,6 +15,13 @@ int main(int argc, char** argv)
         arguments << QString::fromLocal8Bit(argv[i]);
     if (!celform::app::isCommandLineInvocation(arguments))
         return celform::app::launchEditor(argc, argv);
+    // The import child draws SVG text, which needs a QGuiApplication's fonts: on the offscreen
+    // platform (fontconfig's fonts, no display), whatever QT_QPA_PLATFORM says (issue 27).
+    if (arguments.value(1) == QLatin1String("import-image")) {
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+        QGuiApplication app(argc, argv);
+        return celform::app::runCommandLine(QCoreApplication::arguments());
+    }
     QCoreApplication app(argc, argv);
     celform::app::installTranslations(app);
     return celform::app::runCommandLine(QCoreApplication::arguments());

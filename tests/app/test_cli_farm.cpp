@@ -221,8 +221,9 @@ private slots:
             bytesOf(QDir(expected).filePath(QStringLiteral("shot_0004.png"))));
     }
 
-    // Requirement (c): --skip-existing leaves an existing file alone (even one that is not a
-    // picture) and renders the missing ones; --json lists both, in frame order.
+    // Requirement (c): --skip-existing leaves an existing whole picture alone and renders the
+    // missing ones, and (issue 27) those whose file is not a whole picture; --json lists both, in
+    // frame order.
     void skipExistingResumes()
     {
         const QString expected = reference(QStringLiteral("png"));
@@ -237,19 +238,23 @@ private slots:
         QVERIFY(junk.open(QIODevice::WriteOnly | QIODevice::Truncate));
         junk.write("left by somebody else");
         junk.close();
+        // A frame cut short by an earlier run (a full disk, a killed node): half its bytes.
+        const QString cut = QDir(dir).filePath(QStringLiteral("shot_0004.png"));
+        QVERIFY(QFile::resize(cut, QFileInfo(cut).size() / 2));
         const QDateTime keptTime = QFileInfo(kept).lastModified();
         QThread::msleep(1100);
 
         const Run r = runCelform(renderArgs(
             dir, QStringLiteral("png"), QStringLiteral("0-5"), {"--skip-existing", "--threads", "2", "--json"}));
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        QCOMPARE(bytesOf(foreign), QByteArray("left by somebody else"));
         QCOMPARE(QFileInfo(kept).lastModified(), keptTime);
-        for (const char* name : {"shot_0001.png", "shot_0002.png", "shot_0003.png", "shot_0004.png", "shot_0005.png"})
+        // Only whole images are skipped: the foreign file and the cut frame are rendered again (issue 27).
+        for (const char* name :
+            {"shot_0000.png", "shot_0001.png", "shot_0002.png", "shot_0003.png", "shot_0004.png", "shot_0005.png"})
             QCOMPARE(bytesOf(QDir(dir).filePath(QLatin1String(name))),
                 bytesOf(QDir(expected).filePath(QLatin1String(name))));
         QCOMPARE(filesIn(dir), frameNames(QStringLiteral("png"), {0, 1, 2, 3, 4, 5}));
-        for (int f : {0, 1, 3, 4})
+        for (int f : {1, 3})
             QVERIFY2(r.err.contains(QStringLiteral("frame %1 (").arg(f)) && r.err.contains(QStringLiteral("skipped")),
                 qPrintable(r.err));
 
@@ -260,13 +265,50 @@ private slots:
                 list << v[QStringLiteral("frame")].toInt();
             return list;
         };
-        QCOMPARE(frames("written"), (QList<int>{2, 5}));
-        QCOMPARE(frames("skipped"), (QList<int>{0, 1, 3, 4}));
+        QCOMPARE(frames("written"), (QList<int>{0, 2, 4, 5}));
+        QCOMPARE(frames("skipped"), (QList<int>{1, 3}));
         QCOMPARE(json[QStringLiteral("count")].toInt(), 6);
 
         // Without the option every frame is written again.
         QVERIFY(runCelform(renderArgs(dir, QStringLiteral("png"), QStringLiteral("0-5"))).exitCode == 0);
-        QCOMPARE(bytesOf(foreign), bytesOf(QDir(expected).filePath(QStringLiteral("shot_0000.png"))));
+        QVERIFY(QFileInfo(kept).lastModified() > keptTime);
+    }
+
+    // Issue 27: on a full disk (here every file ends at 512 bytes, and each frame is larger) the
+    // write of every image format fails: exit 3, one line naming the frame, the file and the
+    // system's reason, and neither a short frame nor a temporary file is left. The frame already at
+    // the name stays as it was. Before, PNG reported success with cut files and JPEG crashed.
+    void fullDiskFramesExitThree_data()
+    {
+        QTest::addColumn<QString>("suffix");
+        for (const char* suffix : {"png", "jpg", "tif", "exr"})
+            QTest::newRow(suffix) << QString::fromLatin1(suffix);
+    }
+    void fullDiskFramesExitThree()
+    {
+        QFETCH(QString, suffix);
+        const QString dir = folder(QStringLiteral("full_") + suffix);
+        const QString previous = QDir(dir).filePath(QStringLiteral("shot_0000.") + suffix);
+        QFile old(previous);
+        QVERIFY(old.open(QIODevice::WriteOnly) && old.write("the previous frame") > 0);
+        old.close();
+        const Run r = runCelformOnFullDisk(renderArgs(dir, suffix, QStringLiteral("0-1"), {"--threads", "1"}), 512);
+        QCOMPARE(r.exitCode, 3);
+        const QString last = r.err.trimmed().section(QLatin1Char('\n'), -1);
+        QVERIFY2(last.startsWith(QStringLiteral("celform: frame 0: ")) && last.contains(previous)
+                && last.contains(QStringLiteral("File too large")),
+            qPrintable(r.err));
+        QCOMPARE(filesIn(dir), QStringList{QFileInfo(previous).fileName()});
+        QCOMPARE(bytesOf(previous), QByteArray("the previous frame"));
+
+        // A device that takes nothing: /dev/full says ENOSPC at the first write and stays a device.
+        const QString link = QDir(dir).filePath(QStringLiteral("full.") + suffix);
+        QVERIFY(QFile::link(QStringLiteral("/dev/full"), link));
+        const Run device = runCelform({"render", sample(), "--size", "96x54", "--out", link});
+        QCOMPARE(device.exitCode, 3);
+        QVERIFY2(device.err.contains(link) && device.err.contains(QStringLiteral("No space left on device")),
+            qPrintable(device.err));
+        QVERIFY(!QFileInfo(QStringLiteral("/dev/full")).isFile());
     }
 
     // Requirement (d): a frame whose file cannot be written (its name is taken by a folder) ends
@@ -314,6 +356,40 @@ private slots:
         QVERIFY(filesIn(locked).isEmpty());
     }
 
+    // Issue 27: a drawing with text (SVG <text>) on a node without a display: `new --drawing`,
+    // `key add --drawing` and `render` aborted in Qt's font database. The text is drawn (fontconfig's
+    // fonts, in the import child on the offscreen platform): its outline has an area.
+    void svgTextOnANode()
+    {
+        const QString dir = folder(QStringLiteral("text"));
+        auto write = [&](const QString& name, const QByteArray& bytes) {
+            QFile f(QDir(dir).filePath(name));
+            QVERIFY(f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size());
+        };
+        write(QStringLiteral("tetra.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+        write(QStringLiteral("words.svg"),
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"100\" viewBox=\"0 0 200 100\">"
+            "<text x=\"10\" y=\"70\" font-family=\"DejaVu Sans\" font-size=\"60\">Hi</text></svg>");
+        const QString project = QDir(dir).filePath(QStringLiteral("p.celform"));
+        const QString svg = QDir(dir).filePath(QStringLiteral("words.svg"));
+        const uid_t me = ::geteuid();
+        Run r = runCelformAs(
+            me, {"new", QDir(dir).filePath(QStringLiteral("tetra.obj")), "--drawing", svg, "--out", project});
+        QVERIFY2(r.exitCode == 0 && r.status == QProcess::NormalExit, qPrintable(r.err));
+        r = runCelformAs(
+            me, {"key", "add", project, "--name", "side", "--from-base", "--view", "1,0,0", "--drawing", svg});
+        QVERIFY2(r.exitCode == 0 && r.status == QProcess::NormalExit, qPrintable(r.err));
+        r = runCelformAs(me,
+            {"outline", project, "--drawing", "words", "--json", "--out",
+                QDir(dir).filePath(QStringLiteral("words_outline.svg"))});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(QJsonDocument::fromJson(r.out.toUtf8()).object()[QStringLiteral("area_pixels")].toInt() > 1000,
+            qPrintable(r.out));
+        r = runCelformAs(
+            me, {"render", project, "--size", "64x48", "--out", QDir(dir).filePath(QStringLiteral("f.png"))});
+        QVERIFY2(r.exitCode == 0 && r.status == QProcess::NormalExit, qPrintable(r.err));
+    }
+
     // A render killed at any moment leaves whole pictures under the frames' names, and at most
     // hidden temporary files beside them.
     void killedRenderLeavesNoPartialFile()
@@ -346,10 +422,11 @@ private slots:
         if (celform::test::kAddressSanitizer)
             QSKIP("the memory check reads the address-space limit, which AddressSanitizer's shadow memory rules out");
         const QString dir = folder(QStringLiteral("memory"));
-        for (const QString& name : frameNames(QStringLiteral("png"), {0, 1, 2, 3})) {
-            QFile f(QDir(dir).filePath(name));
-            QVERIFY(f.open(QIODevice::WriteOnly));
-        }
+        // Whole images (--skip-existing skips nothing less): a pixel each.
+        QImage pixel(1, 1, QImage::Format_RGB32);
+        pixel.fill(Qt::white);
+        for (const QString& name : frameNames(QStringLiteral("png"), {0, 1, 2, 3}))
+            QVERIFY(pixel.save(QDir(dir).filePath(name), "PNG"));
         // 4000 x 4000 pixels need about 1.4 GB a frame: one fits in 2 GB of address space.
         const Run r = runCelformLimited(
             {"render", sample(), "--size", "4000x4000", "--frames", "0-3", "--threads", "4", "--skip-existing",

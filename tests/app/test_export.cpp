@@ -559,6 +559,81 @@ private slots:
         QVERIFY(!r.err.contains('\n') || r.err.trimmed().count('\n') == 0);
     }
 
+    // Issue 27: every writer on a full disk (each file ends at 1 KB here, and every output is
+    // larger) and into /dev/full: exit 3, one line naming the file and the system's reason, neither
+    // a short file nor a temporary file left, and what was at the name (for an edit, the previous
+    // version of the project) as it was. Before, most of them exited 0 with cut files.
+    // In the arguments OUT stands for the output, PROJECT for the test's project, MESH for its mesh.
+    void fullDiskOutputs_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("suffix");
+        QTest::addColumn<bool>("onDevice"); // also written into /dev/full through a link
+        QTest::addColumn<bool>("edits"); // saves the project OUT (a copy of the test's)
+        QTest::newRow("gltf") << QStringList{"export", "PROJECT", "--format", "gltf", "--out", "OUT"} << "gltf" << true
+                              << false;
+        QTest::newRow("glb") << QStringList{"export", "PROJECT", "--format", "glb", "--out", "OUT"} << "glb" << true
+                             << false;
+        QTest::newRow("pc2") << QStringList{"export", "PROJECT", "--format", "pc2", "--out", "OUT"} << "pc2" << true
+                             << false;
+        QTest::newRow("obj-seq") << QStringList{"export", "PROJECT", "--format", "obj-seq", "--frames", "0-2", "--out",
+            "OUT"} << "obj" << false
+                                 << false;
+        QTest::newRow("eval obj") << QStringList{"eval", "PROJECT", "--frame", "3", "--out", "OUT"} << "obj" << true
+                                  << false;
+        QTest::newRow("eval ply") << QStringList{"eval", "PROJECT", "--frame", "3", "--out", "OUT"} << "ply" << true
+                                  << false;
+        QTest::newRow("curvature") << QStringList{"curvature", "PROJECT", "--out", "OUT"} << "ply" << true << false;
+        QTest::newRow("analysis exr") << QStringList{"analyze", "PROJECT", "--size", "64x48", "--out", "OUT"} << "exr"
+                                      << true << false;
+        QTest::newRow("new") << QStringList{"new", "MESH", "--out", "OUT"} << "celform" << true << false;
+        QTest::newRow("set") << QStringList{"set", "OUT", "--sharpness", "0.5"} << "celform" << false << true;
+        QTest::newRow("key add") << QStringList{"key", "add", "OUT", "--name", "up", "--from-base", "--view", "0,1,0"}
+                                 << "celform" << false << true;
+    }
+
+    void fullDiskOutputs()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, suffix);
+        QFETCH(bool, onDevice);
+        QFETCH(bool, edits);
+        const QString dir = m_dir.filePath(QStringLiteral("full_%1").arg(QString::fromLatin1(QTest::currentDataTag())));
+        QVERIFY(QDir().mkpath(dir));
+        const QString out = QDir(dir).filePath(QStringLiteral("out.") + suffix);
+        // An edit saves the project it opens: a copy of the test's; else something to keep at the name.
+        if (edits)
+            QVERIFY(QFile::copy(m_project, out));
+        else {
+            QFile previous(out);
+            QVERIFY(previous.open(QIODevice::WriteOnly) && previous.write("the previous file") > 0);
+        }
+        const QByteArray before = fileBytes(out);
+        auto with = [&](const QString& output) {
+            QStringList a = args;
+            a.replaceInStrings(QStringLiteral("PROJECT"), m_project);
+            a.replaceInStrings(QStringLiteral("MESH"), m_dir.filePath(QStringLiteral("sphere.obj")));
+            a.replaceInStrings(QStringLiteral("OUT"), output);
+            return a;
+        };
+        const Run r = runCelformOnFullDisk(with(out), 1024);
+        QCOMPARE(r.exitCode, 3);
+        const QString last = r.err.trimmed().section(QLatin1Char('\n'), -1);
+        QVERIFY2(last.startsWith(QStringLiteral("celform: ")) && last.contains(dir)
+                && last.contains(QStringLiteral("File too large")),
+            qPrintable(r.err));
+        QCOMPARE(QDir(dir).entryList(QDir::Files | QDir::Hidden), QStringList{QFileInfo(out).fileName()});
+        QCOMPARE(fileBytes(out), before);
+        if (!onDevice)
+            return;
+        const QString link = QDir(dir).filePath(QStringLiteral("device.") + suffix);
+        QVERIFY(QFile::link(QStringLiteral("/dev/full"), link));
+        const Run device = runCelform(with(link));
+        QCOMPARE(device.exitCode, 3);
+        QVERIFY2(device.err.contains(QStringLiteral("No space left on device")), qPrintable(device.err));
+        QVERIFY(!QFileInfo(QStringLiteral("/dev/full")).isFile());
+    }
+
     void animatedCharacterFromStartToFinish()
     {
         // The issue's story on the bundled animated character (a skinned glTF): import it, key two

@@ -4,10 +4,13 @@
 
 #include "test_support.h"
 
+#include <QFile>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QString>
 #include <QStringList>
+
+#include <csignal>
 
 #include <sys/resource.h>
 
@@ -20,15 +23,22 @@ struct Run {
     QString err;
 };
 
+/// The test's environment without a display: sub-commands must not need one.
+inline QProcessEnvironment displayFreeEnvironment()
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("DISPLAY"));
+    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    return env;
+}
+
 /// Runs celform without a display. environment: NAME=VALUE sets a variable, NAME alone removes it.
 Run runCelform(const QStringList& args, const QStringList& environment = {},
     const QString& program = QStringLiteral(CELFORM_EXECUTABLE))
 {
     QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.remove(QStringLiteral("DISPLAY")); // sub-commands must not need a display
-    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    QProcessEnvironment env = displayFreeEnvironment();
     for (const QString& e : environment) {
         const qsizetype equals = e.indexOf(QLatin1Char('='));
         if (equals < 0)
@@ -52,10 +62,7 @@ Run runCelform(const QStringList& args, const QStringList& environment = {},
 inline Run runCelformLimited(const QStringList& args, qint64 addressSpace, int timeoutMs)
 {
     QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.remove(QStringLiteral("DISPLAY"));
-    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    QProcessEnvironment env = displayFreeEnvironment();
     if (celform::test::kAddressSanitizer) {
         const qint64 mb = addressSpace >> 20;
         env.insert(QStringLiteral("ASAN_OPTIONS"),
@@ -78,6 +85,34 @@ inline Run runCelformLimited(const QStringList& args, qint64 addressSpace, int t
     }
     return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
         QString::fromUtf8(p.readAllStandardError())};
+}
+
+/// Runs celform as runCelform does on a disk that is full after fileBytes bytes of any one file:
+/// the file-size limit (RLIMIT_FSIZE) makes every write beyond it fail (EFBIG, "File too large"),
+/// as ENOSPC would on a full file system, with SIGXFSZ ignored so that the write reports it rather
+/// than the signal ending the process. What a program does with a failing write is then tested
+/// without a small file system to fill (issue 27).
+inline Run runCelformOnFullDisk(const QStringList& args, qint64 fileBytes)
+{
+    QProcess p;
+    p.setProcessEnvironment(displayFreeEnvironment());
+    p.setChildProcessModifier([fileBytes] {
+        ::signal(SIGXFSZ, SIG_IGN); // ignored signals stay ignored across exec
+        const rlimit limit{rlim_t(fileBytes), rlim_t(fileBytes)};
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+    });
+    p.start(QStringLiteral(CELFORM_EXECUTABLE), args);
+    if (!p.waitForFinished(120000))
+        p.kill();
+    return {p.exitCode(), p.exitStatus(), QString::fromUtf8(p.readAllStandardOutput()),
+        QString::fromUtf8(p.readAllStandardError())};
+}
+
+/// A file's bytes, empty when it cannot be read.
+inline QByteArray fileBytes(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 } // namespace

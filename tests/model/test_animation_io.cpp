@@ -278,6 +278,7 @@ private slots:
     void animatedParentMovesChild();
     void sequence_data();
     void sequence();
+    void sequenceGaps();
     void sequenceMismatch_data();
     void sequenceMismatch();
     void badFiles_data();
@@ -548,6 +549,43 @@ void TestAnimationIo::sequence()
     r.animation.evaluate(r.mesh->vertices, 2, out);
     CELFORM_COMPARE_POSITIONS(out, frame2);
     QVERIFY_THROWS_EXCEPTION(IoError, readAnimatedBase(path, 0.0)); // no frame rate
+}
+
+// Issue 27: the file numbers are frames. Frames 1, 2, 4, 5 are five frames, number 3 holding number
+// 2's shape, with a warning naming 3; they were closed up into four. A range beyond what Celform
+// loads (walk_0000 and walk_9999999) is refused naming both numbers.
+void TestAnimationIo::sequenceGaps()
+{
+    QTemporaryDir dir;
+    Positions shape(4, 3);
+    shape << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+    std::vector<Positions> shapes;
+    for (int n : {1, 2, 4, 5}) {
+        shapes.push_back(shape);
+        shapes.back()(2, 2) = float(n);
+        const QString name = QStringLiteral("walk_%1.obj").arg(n, 4, 10, QLatin1Char('0'));
+        writeFile(dir, name, squareFrame(name, shapes.back()));
+    }
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(dir.filePath(QStringLiteral("walk_####.obj")), 24.0))
+    QCOMPARE(r.animation.frameCount, 5);
+    QCOMPARE(r.warnings.size(), 1);
+    QVERIFY2(r.warnings[0].contains(QStringLiteral("numbered 3;")), qPrintable(r.warnings[0]));
+    Positions out;
+    const int fileOfFrame[] = {0, 1, 1, 2, 3};
+    for (int frame = 0; frame < 5; ++frame) {
+        r.animation.evaluate(r.mesh->vertices, frame, out);
+        CELFORM_COMPARE_POSITIONS(out, shapes[std::size_t(fileOfFrame[frame])]);
+    }
+
+    QTemporaryDir far;
+    writeFile(far, QStringLiteral("walk_0000.obj"), squareFrame(QStringLiteral("walk_0000.obj"), shape));
+    writeFile(far, QStringLiteral("walk_9999999.obj"), squareFrame(QStringLiteral("walk_9999999.obj"), shape));
+    try {
+        readAnimatedBase(far.filePath(QStringLiteral("walk_0000.obj")), 24.0);
+        QFAIL("no IoError");
+    } catch (const IoError& e) {
+        QVERIFY2(e.problem().contains(QStringLiteral("from 0 to 9999999")), qPrintable(e.message()));
+    }
 }
 
 void TestAnimationIo::sequenceMismatch_data()

@@ -1,6 +1,7 @@
 // Drawing import: the shared PNG and SVG drawings, small EXR/TIFF/JPEG files written here with
 // OpenImageIO (HDR clamping and sRGB encoding, 16-bit scaling), and damaged files as IoError.
 #include "celform/model/io/image_io.h"
+#include "celform/model/io/raster_codec.h"
 #include "celform/model/data/io_error.h"
 #include "test_support.h"
 
@@ -279,6 +280,20 @@ void TestImageIo::damaged_data()
         QTest::newRow("truncated png") << "frog.png" << png.left(png.size() / 2);
         QTest::newRow("png cut in the pixel data") << "frog90.png" << png.left(png.size() * 9 / 10);
     }
+    // Issue 27: JPEG and TIFF cut in half (libjpeg only warned and filled the rest grey).
+    std::vector<unsigned char> pixels(std::size_t(64) * 48 * 3);
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        pixels[i] = static_cast<unsigned char>((i * 37) % 251);
+    for (const char* format : {"jpg", "tif"}) {
+        std::vector<unsigned char> encoded;
+        const QString problem
+            = celform::model::rasterCodec(QStringLiteral("test"))
+                  .encode(QString::fromLatin1(format), 64, 48, {"R", "G", "B"}, false, pixels.data(), &encoded);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        QTest::newRow(qPrintable(QStringLiteral("truncated %1").arg(QLatin1String(format))))
+            << QStringLiteral("half.%1").arg(QLatin1String(format))
+            << QByteArray(reinterpret_cast<const char*>(encoded.data()), qsizetype(encoded.size() / 2));
+    }
     QTest::newRow("png header only") << "header.png" << QByteArray("\x89PNG\r\n\x1a\n", 8);
     QTest::newRow("garbage png") << "garbage.png" << QByteArray(300, 'x');
     QTest::newRow("garbage exr") << "garbage.exr" << QByteArray(300, 'x');
@@ -304,7 +319,8 @@ void TestImageIo::damaged()
         qInfo("%s -> %s", qPrintable(name), qPrintable(e.problem()));
         // Refused before OpenImageIO reads past the end (where its PNG reader leaks, which the
         // sanitize preset's LeakSanitizer reports).
-        if (name.startsWith(QLatin1String("frog")) || name == QLatin1String("header.png"))
+        if (name.startsWith(QLatin1String("frog")) || name == QLatin1String("header.png")
+            || name.startsWith(QLatin1String("half.")))
             QVERIFY2(e.problem().contains(QStringLiteral("truncated")), qPrintable(e.problem()));
     }
 }

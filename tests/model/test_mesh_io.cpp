@@ -1,6 +1,7 @@
 // Mesh import/export: vertex order kept per format, polygons triangulated, real meshes with their
 // documented counts, every malformed file a clean IoError or a warning, bit-exact round trips.
 #include "celform/model/data/io_error.h"
+#include "celform/model/io/animation_io.h"
 #include "celform/model/io/mesh_io.h"
 #include "gltf_buffer_fixture.h"
 #include "io_test_support.h"
@@ -197,6 +198,7 @@ private slots:
     void objRelativeIndices();
     void gltfNodeTransforms();
     void gltfBufferOutsideItsFolder();
+    void gltfWithNonFiniteTokens();
     void malformed_data();
     void malformed();
     void realMeshes_data();
@@ -333,6 +335,33 @@ void TestMeshIo::gltfNodeTransforms()
 
 // Issue 27, item 8: a glTF buffer named "../x.bin" lies outside the model's folder: refused by
 // default, naming it; read when CELFORM_ALLOW_OUTSIDE_REFERENCES=1; a buffer beside it is read.
+// Issue 27: NaN and Infinity are no JSON; such a glTF fell through to Assimp's "No suitable reader".
+// Both readers (the mesh's, the animated base's) name the JSON error and its byte offset.
+void TestMeshIo::gltfWithNonFiniteTokens()
+{
+    QTemporaryDir dir;
+    for (const char* token : {"NaN", "Infinity", "-Infinity"}) {
+        const QByteArray json = QByteArray(R"({"asset":{"version":"2.0"},"accessors":[{"count":3,"max":[)") + token
+            + R"(,1,0],"min":[0,0,0]}]})";
+        const QString path = writeFile(dir, QStringLiteral("bad_%1.gltf").arg(QLatin1String(token)), json);
+        const qsizetype offset = json.indexOf(QByteArray(token).replace("-", "")); // where the letters start
+        for (int reader = 0; reader < 2; ++reader) {
+            try {
+                if (reader == 0)
+                    importMesh(path);
+                else
+                    celform::model::readAnimatedBase(path);
+                QFAIL("no IoError");
+            } catch (const IoError& e) {
+                QCOMPARE(e.file(), path);
+                QVERIFY2(e.problem().contains(QStringLiteral("JSON")) && e.problem().contains(QStringLiteral("NaN"))
+                        && e.problem().contains(QStringLiteral("byte %1").arg(offset)),
+                    qPrintable(e.message()));
+            }
+        }
+    }
+}
+
 void TestMeshIo::gltfBufferOutsideItsFolder()
 {
     QByteArray buffer;

@@ -3,11 +3,11 @@
 
 #include "celform/model/analysis/depth_analysis.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/io/output_file.h"
 #include "celform/model/render/render_output.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QtEndian>
 
 #include <algorithm>
@@ -212,9 +212,7 @@ void writeCurvaturePly(
         body.append(char(3));
         body.append(reinterpret_cast<const char*>(faces.row(f).data()), 12);
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(body) != body.size() || !file.commit())
-        throw IoError(path, file.errorString());
+    writeWholeFile(path, body); // whole or not at all; every write checked (issue 27)
 }
 
 } // namespace celform::model

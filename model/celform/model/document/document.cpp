@@ -145,8 +145,10 @@ void Document::saveCopy(const QString& path) const
 QStringList Document::newFromMesh(const QString& meshPath, double fps, bool sequence)
 {
     if (sequence || opensAsAnimatedBase(meshPath)) {
-        reset(newAnimatedProject(readAnimatedBase(meshPath, fps), QFileInfo(meshPath).fileName()));
-        return {};
+        AnimatedImport animated = readAnimatedBase(meshPath, fps);
+        QStringList warnings = std::move(animated.warnings);
+        reset(newAnimatedProject(std::move(animated), QFileInfo(meshPath).fileName()));
+        return warnings;
     }
     MeshImport imported = importMesh(meshPath);
     reset(newProject(std::make_shared<const algo::TriMesh>(std::move(imported.mesh)), QFileInfo(meshPath).fileName()));

@@ -7,7 +7,6 @@
 #include "celform/model/render/subdivided_surface.h"
 
 #include <QCoreApplication>
-#include <QSaveFile>
 
 namespace celform::model {
 
@@ -134,16 +133,15 @@ bool FrameWalk::next()
     return true;
 }
 
-void finishFile(QSaveFile& file, bool cancelled, ExportResult& result)
+void finishFile(OutputFile& file, bool cancelled, ExportResult& result)
 {
     if (cancelled) {
-        file.cancelWriting();
+        file.cancel();
         result.cancelled = true;
         return;
     }
-    if (!file.commit())
-        throw IoError(file.fileName(), file.errorString());
-    result.files << file.fileName();
+    file.commit(); // an IoError naming the file and the system's reason
+    result.files << file.path();
 }
 
 } // namespace exporting

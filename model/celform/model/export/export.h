@@ -7,11 +7,10 @@
 #include "celform/algorithms/progress.h"
 #include "celform/model/render/frame_evaluator.h"
 #include "celform/model/data/project_data.h"
+#include "celform/model/io/output_file.h"
 
 #include <QString>
 #include <QStringList>
-
-class QSaveFile;
 
 #include <optional>
 
@@ -109,7 +108,7 @@ private:
 
 /// Ends a one-file format's atomic write: dropped when cancelled (no file left), else committed
 /// (an IoError naming the file when that fails) and listed in result.
-void finishFile(QSaveFile& file, bool cancelled, ExportResult& result);
+void finishFile(OutputFile& file, bool cancelled, ExportResult& result);
 
 void writePc2(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result);

@@ -11,7 +11,6 @@
 
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <Eigen/Geometry>
 
@@ -394,9 +393,8 @@ void writeGltf(const ProjectData& data, const QString& source, const ExportJob& 
     if (!writer.WriteGltfSceneToStream(&model, stream, !binary, binary))
         throw IoError(job.output, text("the glTF writer failed"));
     const std::string bytes = stream.str();
-    QSaveFile file(job.output);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes.data(), qint64(bytes.size())) != qint64(bytes.size()))
-        throw IoError(job.output, file.errorString());
+    OutputFile file(job.output); // whole or not at all; every write checked (issue 27)
+    file.write(bytes.data(), qint64(bytes.size()));
     finishFile(file, algo::cancelRequested(progress), result);
 }
 

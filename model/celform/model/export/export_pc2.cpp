@@ -5,9 +5,9 @@
 
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/mesh_io_common.h"
+#include "celform/model/io/output_file.h"
 
 #include <QCoreApplication>
-#include <QSaveFile>
 
 #include <cstdint>
 #include <cstring>
@@ -28,21 +28,13 @@ struct Pc2Header {
 static_assert(sizeof(Pc2Header) == 32, "the PC2 header is 32 bytes");
 static_assert(meshio::kHostLittleEndian, "PC2 stores native numbers as little-endian");
 
-void write(QSaveFile& file, const void* bytes, qint64 size)
-{
-    if (file.write(static_cast<const char*>(bytes), size) != size)
-        throw IoError(file.fileName(), file.errorString());
-}
-
 } // namespace
 
 void writePc2(const ProjectData& data, const QString& source, const ExportJob& job, algo::Progress* progress,
     ExportResult& result)
 {
     FrameWalk walk(data, source, job, progress);
-    QSaveFile file(job.output);
-    if (!file.open(QIODevice::WriteOnly))
-        throw IoError(job.output, file.errorString());
+    OutputFile file(job.output); // whole or not at all; every write checked (issue 27)
     Pc2Header header{};
     std::memcpy(header.signature, "POINTCACHE2", 12); // with its terminating zero
     header.version = 1;
@@ -50,11 +42,11 @@ void writePc2(const ProjectData& data, const QString& source, const ExportJob& j
     header.startFrame = float(job.firstFrame);
     header.sampleRate = 1.0f; // one sample per frame
     header.samples = job.frameCount();
-    write(file, &header, sizeof header);
+    file.write(&header, sizeof header);
     // Positions are row-major floats (x y z per vertex): each frame is one write of the shape.
     const qint64 frameBytes = qint64(header.points) * 3 * qint64(sizeof(float));
     while (walk.next()) {
-        write(file, walk.shape().data(), frameBytes);
+        file.write(walk.shape().data(), frameBytes);
         ++result.frames;
     }
     finishFile(file, walk.cancelled(), result);

@@ -8,6 +8,7 @@
 #include "celform/model/data/project_data.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <memory>
 
@@ -19,6 +20,8 @@ struct AnimatedImport {
     /// firstFrame 0, frameCount samples at whole frames (sample F at time F / fps).
     algo::BaseAnimation animation;
     double fps = 24.0; ///< frames per second the samples were taken at
+    /// What the reader let pass with a remark (a numbered sequence's missing numbers), one line each.
+    QStringList warnings;
 };
 
 /// Reads an animated base by suffix: .gltf/.glb, or a numbered OBJ/PLY (or OFF) sequence given as

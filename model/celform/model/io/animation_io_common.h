@@ -29,6 +29,13 @@ void checkFps(const QString& path, double fps);
 
 /// animation_io_gltf.cpp: a .gltf or .glb file.
 AnimatedImport readGltfAnimation(const QString& path, double fps);
+/// Why the JSON of a glTF file's bytes (a .gltf, or a GLB's first chunk) cannot be read: nested too
+/// deep, or not JSON, with the error and its byte offset in the file (NaN and Infinity are no JSON
+/// numbers); empty when it parses. Both glTF readers (tinygltf and Assimp) ask it first, so the
+/// user reads what is wrong rather than "No suitable reader" (issue 27). With refuseDeep false, JSON
+/// nested too deep is left alone (empty): Assimp reads it in its child process, which contains the
+/// crash it may cause.
+QString gltfJsonProblem(const char* data, std::size_t size, bool refuseDeep = true);
 /// Whether the glTF file's JSON declares animations, skins or morph targets; false when unreadable.
 bool gltfIsAnimated(const QString& path);
 

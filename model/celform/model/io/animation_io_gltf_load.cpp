@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <string_view>
 
 namespace celform::model::animio {
 
@@ -179,11 +180,8 @@ Source load(const QString& path)
     const meshio::FileBytes bytes(path); // missing, empty, not a regular file: refused here
     if (bytes.size() > std::numeric_limits<unsigned int>::max())
         throw IoError(path, AnimationIo::tr("the file is larger than the 4 GB glTF allows"));
-    const auto [json, jsonSize] = jsonText(bytes.data(), bytes.size());
-    if (jsonDepth(json, jsonSize) > kMaxJsonDepth)
-        throw IoError(path,
-            AnimationIo::tr("its JSON is nested more than %1 levels deep, which no glTF file needs")
-                .arg(kMaxJsonDepth));
+    if (const QString problem = gltfJsonProblem(bytes.data(), bytes.size()); !problem.isEmpty())
+        throw IoError(path, problem);
     Source src;
     src.path = path;
     tinygltf::TinyGLTF loader;
@@ -213,6 +211,29 @@ Source load(const QString& path)
 }
 
 } // namespace gltf
+
+QString gltfJsonProblem(const char* data, std::size_t size, bool refuseDeep)
+{
+    const auto [json, jsonSize] = gltf::jsonText(data, size);
+    if (gltf::jsonDepth(json, jsonSize) > gltf::kMaxJsonDepth) // QJsonDocument recurses too
+        return !refuseDeep ? QString()
+                           : AnimationIo::tr("its JSON is nested more than %1 levels deep, which no glTF file needs")
+                                 .arg(gltf::kMaxJsonDepth);
+    QJsonParseError error{};
+    QJsonDocument::fromJson(QByteArray::fromRawData(json, qsizetype(jsonSize)), &error);
+    if (error.error == QJsonParseError::NoError)
+        return {};
+    const std::size_t at = std::min<std::size_t>(std::size_t(std::max(0, error.offset)), jsonSize);
+    // A number JSON does not have: the token around the offset names it.
+    const std::string_view around(
+        json + (at >= 12 ? at - 12 : 0), std::min<std::size_t>(jsonSize - at, 12) + std::min<std::size_t>(at, 12));
+    const bool nonFinite
+        = around.find("NaN") != std::string_view::npos || around.find("Infinity") != std::string_view::npos;
+    return AnimationIo::tr("not a readable glTF file: its JSON cannot be read: %1 at byte %2%3")
+        .arg(error.errorString())
+        .arg(qulonglong(at + std::size_t(json - data)))
+        .arg(nonFinite ? AnimationIo::tr(" (NaN and Infinity are not JSON numbers)") : QString());
+}
 
 bool gltfIsAnimated(const QString& path)
 {

@@ -1,10 +1,13 @@
 // A numbered mesh sequence (walk_0001.obj, walk_0002.obj, ...) as an animated base: the first
 // file is the rest mesh, each later file a morph target with a one-hot weight at its frame, as
-// algo::BaseAnimation stores vertex sequences. Each file is read by mesh_io's reader table.
+// algo::BaseAnimation stores vertex sequences. Each file is read by mesh_io's reader table. The
+// numbers are kept as frames, counted from the first file's: a missing number holds the frame
+// before it, with a warning naming the missing numbers (issue 27).
 #include "celform/model/io/animation_io_common.h"
 #include "celform/model/io/mesh_io_common.h"
 
 #include <QDir>
+#include <QStringList>
 #include <QFileInfo>
 #include <QRegularExpression>
 
@@ -83,6 +86,25 @@ std::vector<Frame> listFrames(const QString& path, const SequenceName& name)
     return frames;
 }
 
+/// The numbers missing between the frames' ("3, 7-9"), at most a dozen runs named; empty when none.
+QString missingNumbers(const std::vector<Frame>& frames)
+{
+    QStringList runs;
+    qint64 more = 0;
+    for (std::size_t k = 1; k < frames.size(); ++k) {
+        const qint64 from = frames[k - 1].number + 1, to = frames[k].number - 1;
+        if (from > to)
+            continue;
+        if (runs.size() < 12)
+            runs << (from == to ? QString::number(from) : QStringLiteral("%1-%2").arg(from).arg(to));
+        else
+            ++more;
+    }
+    if (more > 0)
+        runs << AnimationIo::tr("and %n more", nullptr, int(std::min<qint64>(more, 1'000'000'000)));
+    return runs.join(QStringLiteral(", "));
+}
+
 /// The first difference between a frame's faces and the first frame's, empty when equal.
 QString faceDifference(const algo::Faces& faces, const algo::Faces& first, const QString& firstName)
 {
@@ -120,11 +142,20 @@ AnimatedImport readMeshSequence(const QString& path, double fps)
     if (frames.empty())
         throw IoError(path, AnimationIo::tr("no file matches the pattern"));
 
+    // The numbers are frames: their range is the animation's length, whatever files it misses.
+    const qint64 range = frames.back().number - frames.front().number + 1;
+    if (range > kMaxFrames)
+        throw IoError(path,
+            AnimationIo::tr("the sequence's numbers run from %1 to %2, more than the %3 frames Celform can load")
+                .arg(frames.front().number)
+                .arg(frames.back().number)
+                .arg(kMaxFrames));
+
     MeshImport first;
     meshio::readMeshInOrder(frames[0].path, first);
     const Eigen::Index vertexCount = first.mesh.vertexCount();
     const auto targets = static_cast<std::int64_t>(frames.size()) - 1;
-    if (targets * (vertexCount * 3 + targets + 1) > kMaxAnimationFloats)
+    if (targets * (vertexCount * 3 + range) > kMaxAnimationFloats)
         throw IoError(path,
             AnimationIo::tr("%1 frames of %2 vertices are more than Celform can hold")
                 .arg(frames.size())
@@ -134,10 +165,20 @@ AnimatedImport readMeshSequence(const QString& path, double fps)
     out.fps = fps;
     algo::BaseAnimation& anim = out.animation;
     anim.firstFrame = 0;
-    anim.frameCount = static_cast<int>(frames.size());
+    anim.frameCount = static_cast<int>(range);
     anim.morphTargets.reserve(std::size_t(targets));
-    // One target per later frame, weight 1 at its own sample only (sample-major weights).
-    anim.morphWeights.assign(std::size_t(frames.size()) * std::size_t(targets), 0.0f);
+    // One target per later file, weight 1 at its own sample and at the missing numbers after it
+    // (sample-major weights); the first file's samples are the rest mesh, all weights 0.
+    anim.morphWeights.assign(std::size_t(range) * std::size_t(targets), 0.0f);
+    for (std::size_t k = 1; k < frames.size(); ++k) {
+        const qint64 end = k + 1 < frames.size() ? frames[k + 1].number : frames.back().number + 1;
+        for (qint64 n = frames[k].number; n < end; ++n)
+            anim.morphWeights[std::size_t(n - frames.front().number) * std::size_t(targets) + (k - 1)] = 1.0f;
+    }
+    if (const QString missing = missingNumbers(frames); !missing.isEmpty())
+        out.warnings << AnimationIo::tr(
+            "the sequence has no file numbered %1; each missing number holds the frame before it")
+                            .arg(missing);
     const QString firstName = QFileInfo(frames[0].path).fileName();
     for (std::size_t k = 1; k < frames.size(); ++k) {
         MeshImport frame;
@@ -153,7 +194,6 @@ AnimatedImport readMeshSequence(const QString& path, double fps)
             throw IoError(frames[k].path, faces);
         frame.mesh.vertices -= first.mesh.vertices;
         anim.morphTargets.push_back(std::move(frame.mesh.vertices));
-        anim.morphWeights[k * std::size_t(targets) + (k - 1)] = 1.0f;
     }
     out.mesh = std::make_shared<algo::TriMesh>(std::move(first.mesh));
     return out;

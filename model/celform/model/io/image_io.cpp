@@ -9,7 +9,10 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QFontDatabase>
+#include <QGuiApplication>
 #include <QPainter>
+#include <QRegularExpression>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QtEndian>
@@ -62,6 +65,37 @@ quint32 bigEndian32(const uchar* p)
     return quint32(p[0]) << 24 | quint32(p[1]) << 16 | quint32(p[2]) << 8 | p[3];
 }
 
+/// A JPEG marker segment: its marker, where it starts and where the next one starts. Marker 0 when
+/// the bytes end (at + 4 > the size) or hold no marker at `at`.
+struct JpegSegment {
+    uchar marker = 0;
+    qsizetype at = 0;
+    qsizetype next = 0;
+};
+
+/// The next segment from offset i (after SOI), past fill bytes and the markers without a length;
+/// the end of image (0xd9) has none either, and is returned.
+JpegSegment nextJpegSegment(const uchar* p, qsizetype n, qsizetype i)
+{
+    while (i + 4 <= n) {
+        if (p[i] != 0xff)
+            return {0, i, i};
+        const uchar marker = p[i + 1];
+        if (marker == 0xff) { // fill byte
+            ++i;
+            continue;
+        }
+        if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) { // no length
+            i += 2;
+            continue;
+        }
+        if (marker == 0xd9)
+            return {marker, i, i + 2};
+        return {marker, i, i + 2 + (qsizetype(p[i + 2]) << 8 | p[i + 3])};
+    }
+    return {0, i, i};
+}
+
 /// Width and height from a PNG's IHDR, a JPEG's frame header, a BMP's info header or a PSD's, read here
 /// rather than by Qt's readers (which print libpng's and libjpeg's complaints about a damaged file
 /// on standard error) or OpenImageIO (which needs loading). Nothing for other formats or a header
@@ -84,31 +118,16 @@ std::optional<QSize> headerSize(const QByteArray& data, const QString& format)
         // Markers from SOI to the first frame header (SOF0-SOF15 but DHT, JPG and DAC).
         if (n < 4 || p[0] != 0xff || p[1] != 0xd8)
             return std::nullopt;
-        qsizetype i = 2;
-        while (i + 4 <= n) {
-            if (p[i] != 0xff)
+        for (JpegSegment s = nextJpegSegment(p, n, 2); s.marker != 0 && s.marker != 0xd9 && s.marker != 0xda;
+             s = nextJpegSegment(p, n, s.next)) { // up to the end of image or the start of scan: no frame header
+            if (s.next < s.at + 4) // a length below 2
                 return std::nullopt;
-            const uchar marker = p[i + 1];
-            if (marker == 0xff) { // fill byte
-                ++i;
-                continue;
-            }
-            if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) { // no length
-                i += 2;
-                continue;
-            }
-            if (marker == 0xd9 || marker == 0xda) // end of image or start of scan: no frame header
-                return std::nullopt;
-            const qsizetype length = qsizetype(p[i + 2]) << 8 | p[i + 3];
-            if (length < 2)
-                return std::nullopt;
-            if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc) {
+            if (s.marker >= 0xc0 && s.marker <= 0xcf && s.marker != 0xc4 && s.marker != 0xc8 && s.marker != 0xcc) {
                 // length, precision, height, width
-                if (i + 9 > n)
+                if (s.at + 9 > n)
                     return std::nullopt;
-                return QSize(int(p[i + 7]) << 8 | p[i + 8], int(p[i + 5]) << 8 | p[i + 6]);
+                return QSize(int(p[s.at + 7]) << 8 | p[s.at + 8], int(p[s.at + 5]) << 8 | p[s.at + 6]);
             }
-            i += 2 + length;
         }
         return std::nullopt;
     }
@@ -160,6 +179,26 @@ bool pngIsTruncated(const QByteArray& data)
     return true;
 }
 
+/// Whether a JPEG ends before its end-of-image marker (libjpeg only warns, and fills the rest
+/// grey). The markers are walked to the first scan; in the entropy-coded data after it a 0xff byte
+/// is always followed by 0x00 or a marker, so "ff d9" there is the end of the image (a thumbnail's
+/// own end marker sits in an APP1 segment, before the first scan).
+bool jpegIsTruncated(const QByteArray& data)
+{
+    const auto* p = reinterpret_cast<const uchar*>(data.constData());
+    const qsizetype n = data.size();
+    if (n < 4 || p[0] != 0xff || p[1] != 0xd8)
+        return false; // not a JPEG: the decoder says so
+    JpegSegment s = nextJpegSegment(p, n, 2);
+    while (s.marker != 0 && s.marker != 0xd9 && s.marker != 0xda)
+        s = nextJpegSegment(p, n, s.next);
+    if (s.marker == 0xda)
+        return s.next >= n || data.indexOf(QByteArrayView("\xff\xd9", 2), s.next) < 0;
+    // The end of image, or a byte that is no marker (damaged, not short: the decoder says so), or the
+    // end of the bytes among the headers.
+    return s.marker == 0 && s.at + 4 > n;
+}
+
 /// Why a PSD's sections cannot be what their lengths say, or nothing. After the 26-byte header come
 /// the colour mode data, the image resources and the layer and mask information, each behind a
 /// big-endian 32-bit length. OpenImageIO's PSD reader allocates each section as stated before it
@@ -191,13 +230,31 @@ QString psdSectionProblem(const QByteArray& data)
     return {};
 }
 
+/// Whether an SVG drawing draws text (text, textArea, an SVG font), which needs the fonts of a
+/// QGuiApplication: without one, Qt's font database aborts the process (issue 27).
+bool svgNeedsFonts(const QByteArray& data)
+{
+    static const QRegularExpression element(QStringLiteral("<([A-Za-z_][\\w.-]*:)?(text|textArea|font|font-face)\\b"));
+    return element.match(QString::fromUtf8(data)).hasMatch();
+}
+
+/// Whether this process has the fonts text needs: a QGuiApplication (the editor's, or the import
+/// child's on the offscreen platform).
+bool hasFonts()
+{
+    return qobject_cast<QGuiApplication*>(QCoreApplication::instance()) != nullptr;
+}
+
 /// Whether a format's decoder runs in a child process: OpenImageIO's own parsers (PSD, TGA, HDR, BMP)
 /// and the libraries behind TIFF, EXR, WebP and GIF are not ours to fix. PNG and JPEG stay here: the
 /// most exercised decoders there are (libpng, libjpeg-turbo), and headerSize() checks their headers
-/// before they decode; SVG is Qt's.
-bool decodedInChild(const QString& format)
+/// before they decode. SVG is Qt's, drawn here unless it has text and this process no fonts (the
+/// command line): the child `celform import-image` then draws it on the offscreen platform.
+bool decodedInChild(const QString& format, const QByteArray& data)
 {
-    return format != QLatin1String("png") && format != QLatin1String("jpg") && format != QLatin1String("svg");
+    if (format == QLatin1String("svg"))
+        return !hasFonts() && svgNeedsFonts(data);
+    return format != QLatin1String("png") && format != QLatin1String("jpg");
 }
 
 // The pixels a child hands back, a file per image: this magic, width and height (native 32-bit),
@@ -288,6 +345,14 @@ std::vector<QImage> decodeInChild(const std::vector<EncodedImage>& images)
 
 QImage renderSvg(const QByteArray& data, const QString& fileLabel)
 {
+    if (svgNeedsFonts(data)) {
+        if (!hasFonts())
+            throw IoError(fileLabel, ImageIo::tr("the SVG drawing has text, which cannot be drawn without fonts here"));
+        if (QFontDatabase::families().isEmpty())
+            throw IoError(fileLabel,
+                ImageIo::tr("the SVG drawing has text and no fonts are installed (fontconfig finds none; install "
+                            "fonts-dejavu-core)"));
+    }
     QSvgRenderer renderer(data);
     const int width = svgSize(renderer, fileLabel).width();
     QImage image(width, kSvgHeight, QImage::Format_RGBA8888_Premultiplied);
@@ -322,6 +387,8 @@ QString checkedFormat(const QByteArray& data, const QString& format, const QStri
     }
     if (f == QLatin1String("png") && pngIsTruncated(data))
         throw IoError(fileLabel, ImageIo::tr("the PNG file is truncated (it ends before its last chunk)"));
+    if (f == QLatin1String("jpg") && jpegIsTruncated(data))
+        throw IoError(fileLabel, ImageIo::tr("the JPEG file is truncated (it ends before its end-of-image marker)"));
     if (f == QLatin1String("psd"))
         if (const QString problem = psdSectionProblem(data); !problem.isEmpty())
             throw IoError(fileLabel, problem);
@@ -345,7 +412,7 @@ QImage decodeHere(const QByteArray& data, const QString& format, const QString& 
 QImage decodeImage(const QByteArray& data, const QString& format, const QString& fileLabel, ImportIsolation isolation)
 {
     const QString f = checkedFormat(data, format, fileLabel);
-    if (isolation == ImportIsolation::ChildProcess && decodedInChild(f))
+    if (isolation == ImportIsolation::ChildProcess && decodedInChild(f, data))
         return decodeInChild({{data, f, fileLabel}}).front();
     return decodeHere(data, f, fileLabel);
 }
@@ -357,13 +424,14 @@ std::vector<QImage> decodeImages(const std::vector<EncodedImage>& images)
         checked.push_back({image.data, checkedFormat(image.data, image.format, image.label), image.label});
     std::vector<EncodedImage> forChild;
     for (const EncodedImage& image : checked)
-        if (decodedInChild(image.format))
+        if (decodedInChild(image.format, image.data))
             forChild.push_back(image);
     const std::vector<QImage> fromChild = decodeInChild(forChild);
     std::vector<QImage> decoded;
     auto next = fromChild.cbegin();
     for (const EncodedImage& image : checked)
-        decoded.push_back(decodedInChild(image.format) ? *next++ : decodeHere(image.data, image.format, image.label));
+        decoded.push_back(
+            decodedInChild(image.format, image.data) ? *next++ : decodeHere(image.data, image.format, image.label));
     return decoded;
 }
 

@@ -3,9 +3,9 @@
 #include "celform/model/io/mesh_io.h"
 
 #include "celform/model/io/mesh_io_common.h"
+#include "celform/model/io/output_file.h"
 
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cstdint>
@@ -162,15 +162,12 @@ void exportMesh(const algo::TriMesh& mesh, const QString& path)
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix != QLatin1String("obj") && suffix != QLatin1String("ply"))
         throw IoError(path, MeshIo::tr("cannot write \"%1\" files; use .obj or .ply").arg(suffix));
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        throw IoError(path, MeshIo::tr("the file cannot be written: %1").arg(file.errorString()));
+    OutputFile file(path); // whole or not at all; every write checked (issue 27)
     if (suffix == QLatin1String("obj"))
         meshio::writeObj(mesh, file);
     else
         meshio::writePly(mesh, file);
-    if (!file.commit())
-        throw IoError(path, MeshIo::tr("the file cannot be written: %1").arg(file.errorString()));
+    file.commit();
 }
 
 } // namespace celform::model

@@ -1,6 +1,7 @@
 // Import of every other format through Assimp (STL, glTF/GLB, FBX, COLLADA, 3DS): one TriMesh from
 // all meshes with node transforms applied, identical corners welded. importMesh() runs it in a
 // child process (import_process.h); the checks here refuse what is cheap to recognise first.
+#include "celform/model/io/animation_io_common.h"
 #include "celform/model/io/mesh_io_common.h"
 
 #include <assimp/DefaultIOSystem.h>
@@ -129,6 +130,9 @@ void readWithAssimp(const QString& path, MeshImport& out)
     {
         const FileBytes bytes(path);
         checkGlbHeader(path, bytes);
+        if (suffix == QLatin1String("gltf") || suffix == QLatin1String("glb"))
+            if (const QString problem = animio::gltfJsonProblem(bytes.data(), bytes.size(), false); !problem.isEmpty())
+                throw IoError(path, problem);
     }
     Assimp::Importer importer;
     auto* files = new RegularFilesOnly(QFileInfo(path).absolutePath());

@@ -18,9 +18,9 @@
 #include <string_view>
 #include <vector>
 
-class QSaveFile;
-
 namespace celform::model {
+
+class OutputFile;
 
 // Gives lupdate the context "celform::model::MeshIo" for every MeshIo::tr() in the mesh_io files.
 struct MeshIo {
@@ -288,8 +288,8 @@ void readInChild(const QString& path, MeshImport& out);
 void writeTransfer(const MeshImport& in, const QString& transferPath);
 
 // The writers behind exportMesh() (mesh_io_write.cpp): positions and faces in vertex order.
-void writeObj(const algo::TriMesh& mesh, QSaveFile& file);
-void writePly(const algo::TriMesh& mesh, QSaveFile& file);
+void writeObj(const algo::TriMesh& mesh, OutputFile& file);
+void writePly(const algo::TriMesh& mesh, OutputFile& file);
 
 } // namespace meshio
 } // namespace celform::model

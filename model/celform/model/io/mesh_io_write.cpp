@@ -1,8 +1,7 @@
 // Mesh export for exportMesh(): OBJ as shortest round-trip text, PLY as binary little-endian; both
 // write positions and faces in the mesh's vertex order.
 #include "celform/model/io/mesh_io_common.h"
-
-#include <QSaveFile>
+#include "celform/model/io/output_file.h"
 
 #include <charconv>
 #include <cstring>
@@ -11,7 +10,7 @@
 
 namespace celform::model::meshio {
 
-void writeObj(const algo::TriMesh& mesh, QSaveFile& file)
+void writeObj(const algo::TriMesh& mesh, OutputFile& file)
 {
     // Shortest round-trip float text: re-reading gives the same bits.
     std::string text;
@@ -39,7 +38,7 @@ void writeObj(const algo::TriMesh& mesh, QSaveFile& file)
     file.write(text.data(), static_cast<qint64>(text.size()));
 }
 
-void writePly(const algo::TriMesh& mesh, QSaveFile& file)
+void writePly(const algo::TriMesh& mesh, OutputFile& file)
 {
     const std::string header = "ply\nformat binary_little_endian 1.0\ncomment Written by Celform\nelement vertex "
         + std::to_string(mesh.vertexCount()) + "\nproperty float x\nproperty float y\nproperty float z\nelement face "

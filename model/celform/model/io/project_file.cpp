@@ -6,6 +6,7 @@
 
 #include "celform/algorithms/mesh_analysis.h"
 #include "celform/model/io/image_io.h"
+#include "celform/model/io/output_file.h"
 #include "celform/model/data/io_error.h"
 
 #include <QCoreApplication>
@@ -14,7 +15,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QtEndian>
 
 #include <zlib.h>
@@ -67,7 +67,7 @@ public:
     /// The first data block holding a value that is not a finite number, empty when none does.
     [[nodiscard]] const QString& nonFiniteChunk() const { return m_nonFinite; }
 
-    void write(QSaveFile& file, QJsonObject manifest)
+    void write(OutputFile& file, QJsonObject manifest)
     {
         QByteArray header(kHeaderSize, '\0');
         std::memcpy(header.data(), kMagic, 8);
@@ -106,10 +106,9 @@ private:
         }
     }
 
-    void put(QSaveFile& file, const char* data, qint64 size)
+    void put(OutputFile& file, const char* data, qint64 size)
     {
-        if (size > 0 && file.write(data, size) != size)
-            throw IoError(file.fileName(), ProjectFile::tr("could not be written: %1").arg(file.errorString()));
+        file.write(data, size); // throws IoError naming the file and the system's reason
         m_pos += size;
     }
 
@@ -424,15 +423,14 @@ void saveProject(const ProjectData& data, const QString& given, bool keepBackup)
         bad = chunks.nonFiniteChunk();
     if (!bad.isEmpty())
         throw IoError(given, ProjectFile::tr("was not saved: %1 holds a value that is not a finite number").arg(bad));
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        throw IoError(given, ProjectFile::tr("could not be opened for writing: %1").arg(file.errorString()));
+    // Every write, the sync and the rename are checked: on a full disk the save fails naming the
+    // file and the reason, and the previous version stays as it was (issue 27).
+    OutputFile file(path);
     chunks.write(file, manifest);
 
     if (keepBackup && QFileInfo(path).isFile())
         keepPreviousVersion(path);
-    if (!file.commit())
-        throw IoError(path, ProjectFile::tr("could not be saved: %1").arg(file.errorString()));
+    file.commit();
 }
 
 } // namespace celform::model

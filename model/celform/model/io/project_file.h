@@ -35,7 +35,7 @@ QJsonArray lightTrackJson(const LightTrack& track);
 /// --list --json` prints the same form.
 QJsonObject highlightTrackJson(const HighlightTrack& track);
 
-/// Writes the project atomically (QSaveFile). When the file exists, its previous version is kept
+/// Writes the project atomically (OutputFile). When the file exists, its previous version is kept
 /// as PATH.bak. Throws IoError; on error the file on disk is unchanged.
 void saveProject(const ProjectData& data, const QString& path, bool keepBackup = true);
 

@@ -189,8 +189,8 @@ QImage decode(const QByteArray& data, const QString& format, const QString& file
     return {};
 }
 
-QString write(const QString& file, int width, int height, const std::vector<std::string>& channels, bool isFloat,
-    const void* pixels)
+QString encode(const QString& format, int width, int height, const std::vector<std::string>& channels, bool isFloat,
+    const void* pixels, std::vector<unsigned char>* encoded)
 {
     OIIO::ImageSpec spec(width, height, int(channels.size()), isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     spec.channelnames = channels;
@@ -204,17 +204,25 @@ QString write(const QString& file, int width, int height, const std::vector<std:
     // leaves the field out. A frame then has the same bytes whenever and wherever it is rendered
     // (farm nodes are compared by checksum).
     spec.attribute("DateTime", "");
-    const std::string name = QFile::encodeName(file).toStdString();
+    // The name only picks the writer: with an output proxy nothing is opened on the disk.
+    const std::string name = "image." + format.toStdString();
+    encoded->clear();
+    OIIO::Filesystem::IOVecOutput proxy(*encoded);
     auto out = OIIO::ImageOutput::create(name);
-    if (!out || !out->open(name, spec))
-        return QString::fromStdString(out ? out->geterror() : OIIO::geterror());
-    const bool ok = out->write_image(isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, pixels);
-    const std::string error = out->geterror();
-    out->close();
-    return ok ? QString() : QString::fromStdString(error);
+    if (!out)
+        return shortError(OIIO::geterror());
+    if (!out->supports("ioproxy"))
+        return ImageIo::tr("images of type \"%1\" cannot be written").arg(format);
+    if (!out->set_ioproxy(&proxy) || !out->open(name, spec))
+        return shortError(out->geterror());
+    bool ok = out->write_image(isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, pixels);
+    ok = out->close() && ok;
+    if (!ok)
+        return shortError(out->geterror());
+    return encoded->empty() ? ImageIo::tr("the encoder gave no bytes") : QString();
 }
 
-const RasterCodec kCodec{decode, write};
+const RasterCodec kCodec{decode, encode};
 
 } // namespace
 } // namespace celform::model

@@ -4,6 +4,7 @@
 // render threads go on with the next frames; the threads share the counter, the progress, the
 // listener and the first failure, all behind one mutex.
 #include "celform/model/render/frame_schedule.h"
+#include "celform/model/render/render_output.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -120,11 +121,16 @@ public:
             const int frame = m_job.frameAt(*index);
             const QString file = m_job.framePath(frame);
             try {
+                // Only a whole image is a frame done: one cut short by an earlier run (a full disk,
+                // a killed node) is rendered again (issue 27). Checked with the mutex held: the
+                // decoder silences standard error while it runs, and the listener prints under it.
                 if (m_job.skipExisting && QFileInfo(file).isFile()) {
                     const std::lock_guard<std::mutex> lock(m_mutex);
-                    ++m_done;
-                    frameDone(frame, file, true);
-                    continue;
+                    if (incompleteImageProblem(file).isEmpty()) {
+                        ++m_done;
+                        frameDone(frame, file, true);
+                        continue;
+                    }
                 }
                 if (!render)
                     render = makeRenderer();

@@ -30,9 +30,10 @@ using FrameRenderer = std::function<FrameWrite(int frame, const QString& file, c
 /// order they were rendered. A frame counts as done (listener, progress) once its file is written;
 /// the progress is asked again before each write, and a frame rendered but not yet written when it
 /// says stop is dropped. With job.skipExisting a frame whose file exists (a regular file, or a
-/// link to one) is reported to listener as skipped and not rendered. After a failure no new frame starts; the frames
-/// under way before the failed one are finished and written, later ones are dropped. Returns how many files were
-/// written; throws RenderFrameError for the lowest frame that failed.
+/// link to one) and holds a whole image (incompleteImageProblem) is reported to listener as skipped
+/// and not rendered. After a failure no new frame starts; the frames under way before the failed
+/// one are finished and written, later ones are dropped. Returns how many files were written;
+/// throws RenderFrameError for the lowest frame that failed.
 int scheduleFrames(const RenderJob& job, algo::Progress* progress, RenderFrameListener* listener,
     const std::function<FrameRenderer()>& makeRenderer);
 

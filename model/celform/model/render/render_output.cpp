@@ -2,8 +2,9 @@
 #include "celform/model/render/render_output.h"
 
 #include "celform/model/analysis/depth_analysis_output.h"
-#include "celform/model/render/atomic_file.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/io/output_file.h"
 #include "celform/model/io/raster_codec.h"
 
 #include "celform/algorithms/srgb_encode.h"
@@ -20,9 +21,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace celform::model {
 namespace {
@@ -77,84 +75,52 @@ QImage::Format qtFormatOf(const std::vector<std::string>& names)
     return QImage::Format_Invalid;
 }
 
-/// Writes all of bytes to a new file, closing it; the system's reason when it fails.
-QString writeWhole(const QString& file, const QByteArray& bytes)
-{
-    const int fd = ::open(QFile::encodeName(file).constData(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-    if (fd < 0)
-        return qt_error_string(errno);
-    const char* at = bytes.constData();
-    qsizetype left = bytes.size();
-    while (left > 0) {
-        const ssize_t n = ::write(fd, at, std::size_t(left));
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0) {
-            const int error = n < 0 ? errno : ENOSPC;
-            ::close(fd);
-            return qt_error_string(error);
-        }
-        at += n;
-        left -= n;
-    }
-    if (::close(fd) != 0)
-        return qt_error_string(errno);
-    return {};
-}
-
-/// An 8-bit PNG through Qt's writer (libpng, in Qt Gui, which the program has loaded already):
-/// issue 29 measured loading the OpenImageIO module and its library graph (about 275 libraries)
-/// as the larger part of a one-frame render's start; the pixels are the same. Empty when written,
-/// else the problem; nullopt when Qt does not take these channels.
-std::optional<QString> writePngWithQt(const EncodedImage& image, const QString& file)
+/// An 8-bit PNG encoded by Qt's writer (libpng, in Qt Gui, which the program has loaded already)
+/// into png: issue 29 measured loading the OpenImageIO module and its library graph (about 275
+/// libraries) as the larger part of a one-frame render's start; the pixels are the same. Empty
+/// when encoded, else the problem; nullopt when Qt does not take these channels.
+std::optional<QString> encodePngWithQt(const EncodedImage& image, QByteArray& png)
 {
     const QImage::Format format = qtFormatOf(image.names);
     if (format == QImage::Format_Invalid || image.isFloat)
         return std::nullopt;
     const qsizetype rowBytes = qsizetype(image.width) * qsizetype(image.names.size());
     const QImage wrapped(image.bytes.data(), image.width, image.height, rowBytes, format);
-    // Kept per thread: the file's bytes of one frame, written to the disk whole.
-    thread_local QByteArray encoded;
-    encoded.resize(0);
-    QBuffer buffer(&encoded);
+    png.resize(0);
+    QBuffer buffer(&png);
     buffer.open(QIODevice::WriteOnly);
     QImageWriter writer(&buffer, "png");
     if (!writer.write(wrapped))
         return writer.errorString();
-    return writeWhole(file, encoded);
+    return QString();
 }
 
 } // namespace
 
 void writeEncoded(const EncodedImage& image, const QString& path)
 {
-    // Nothing below throws between making the temporary file and removing or renaming it.
-    const QString temporary = createTemporaryBeside(path);
-    if (QFileInfo(path).suffix().compare(QLatin1String("png"), Qt::CaseInsensitive) == 0) {
-        if (const std::optional<QString> problem = writePngWithQt(image, temporary)) {
-            if (!problem->isEmpty()) {
-                QFile::remove(temporary);
+    // Encoded in memory, then written whole or not at all: a full disk is an IoError naming the
+    // file and the reason, and leaves neither a short file nor a temporary one (issue 27). Kept
+    // per thread: a sequence's writer reuses them frame after frame (issue 29). Frames are not
+    // synced to the disk one by one (docs/farm.md).
+    thread_local QByteArray png;
+    thread_local std::vector<unsigned char> encoded;
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("png")) {
+        if (const std::optional<QString> problem = encodePngWithQt(image, png)) {
+            if (!problem->isEmpty())
                 throw IoError(path, RenderOutput::tr("could not be written: %1").arg(*problem));
-            }
-            commitTemporary(temporary, path);
+            writeWholeFile(path, png.constData(), png.size(), Durability::Renamed);
             return;
         }
     }
-    const RasterCodec* codec = nullptr;
-    try {
-        codec = &rasterCodec(path);
-    } catch (...) {
-        QFile::remove(temporary);
-        throw;
-    }
+    const RasterCodec& codec = rasterCodec(path);
     const QString error = image.isFloat
-        ? codec->write(temporary, image.width, image.height, image.names, true, image.floats.data())
-        : codec->write(temporary, image.width, image.height, image.names, false, image.bytes.data());
-    if (!error.isEmpty()) {
-        QFile::remove(temporary);
+        ? codec.encode(suffix, image.width, image.height, image.names, true, image.floats.data(), &encoded)
+        : codec.encode(suffix, image.width, image.height, image.names, false, image.bytes.data(), &encoded);
+    if (!error.isEmpty())
         throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
-    }
-    commitTemporary(temporary, path);
+    writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
 }
 
 namespace {
@@ -516,6 +482,21 @@ void writeImageChannels(const QString& path, int width, int height, const std::v
     const std::vector<float>& data, bool encodeSrgb)
 {
     writeChannels(path, width, height, names, data, encodeSrgb);
+}
+
+QString incompleteImageProblem(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return file.errorString();
+    const QByteArray bytes = file.readAll();
+    try {
+        // The frames are this program's own files: decoded here, not in an import child.
+        decodeImage(bytes, QFileInfo(path).suffix(), path, ImportIsolation::ThisProcess);
+    } catch (const IoError& e) {
+        return e.problem();
+    }
+    return {};
 }
 
 void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedImage& out)

@@ -112,6 +112,11 @@ void writeImage(const algo::ImageRGBA& image, const QString& path);
 void writeImageChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
     const std::vector<float>& data, bool encodeSrgb);
 
+/// Why the file at path is not a whole image that can be read (empty, truncated, damaged), empty
+/// when it is: `render --skip-existing` skips only such frames, and renders a frame cut short by an
+/// earlier run (a full disk, a killed node) again. Decodes the file in this process.
+QString incompleteImageProblem(const QString& path);
+
 /// Writes every pass into one EXR with named channels: R G B A (beauty), lines.Y, tone.Y,
 /// highlights.Y, depth.Z, normal.X normal.Y normal.Z, id.ID. Throws IoError.
 void writePassesExr(const algo::RenderPasses& passes, const QString& path);

@@ -2,7 +2,7 @@
 // QJsonDocument, to fix the numbers' precision and keep big frames one line per stroke.
 #include "celform/model/render/strokes_json.h"
 
-#include "celform/model/render/atomic_file.h"
+#include "celform/model/io/output_file.h"
 
 #include <cmath>
 
@@ -55,7 +55,7 @@ QByteArray strokesJson(const VectorLines& lines)
 
 void writeStrokesJson(const VectorLines& lines, const QString& path)
 {
-    writeFileAtomically(path, strokesJson(lines));
+    writeWholeFile(path, strokesJson(lines));
 }
 
 } // namespace celform::model

@@ -17,7 +17,7 @@ namespace celform::model {
 /// digits); deterministic.
 QByteArray strokesJson(const VectorLines& lines);
 
-/// Writes strokesJson(lines) to path atomically (atomic_file.h). Throws IoError naming path.
+/// Writes strokesJson(lines) to path whole or not at all (output_file.h). Throws IoError naming path.
 void writeStrokesJson(const VectorLines& lines, const QString& path);
 
 } // namespace celform::model

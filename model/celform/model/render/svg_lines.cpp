@@ -10,7 +10,7 @@
 // of opposite direction.
 #include "celform/model/render/svg_lines.h"
 
-#include "celform/model/render/atomic_file.h"
+#include "celform/model/io/output_file.h"
 
 #include "celform/algorithms/image.h"
 
@@ -233,7 +233,7 @@ QByteArray linesSvg(const VectorLines& lines)
 
 void writeLinesSvg(const VectorLines& lines, const QString& path)
 {
-    writeFileAtomically(path, linesSvg(lines));
+    writeWholeFile(path, linesSvg(lines));
 }
 
 } // namespace celform::model

@@ -14,7 +14,7 @@ namespace celform::model {
 /// same bytes. Coordinates with two decimals.
 QByteArray linesSvg(const VectorLines& lines);
 
-/// Writes linesSvg(lines) to path atomically (atomic_file.h). Throws IoError naming path.
+/// Writes linesSvg(lines) to path whole or not at all (output_file.h). Throws IoError naming path.
 void writeLinesSvg(const VectorLines& lines, const QString& path);
 
 } // namespace celform::model
