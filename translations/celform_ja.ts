@@ -90,6 +90,29 @@
     </message>
 </context>
 <context>
+    <name>LightTrack</name>
+    <message>
+        <source>the light&apos;s vector is not finite</source>
+        <translation>ライトのベクトルが有限の値ではありません</translation>
+    </message>
+    <message>
+        <source>a directional light needs a direction</source>
+        <translation>平行光源には方向が必要です</translation>
+    </message>
+    <message>
+        <source>light key frame %1 is out of range</source>
+        <translation>ライトキーのフレーム %1 が範囲外です</translation>
+    </message>
+    <message>
+        <source>light key frames are not strictly increasing (%1 after %2)</source>
+        <translation>ライトキーのフレームが厳密に増加していません（%2 の後に %1）</translation>
+    </message>
+    <message>
+        <source>light key at frame %1: %2</source>
+        <translation>フレーム %1 のライトキー: %2</translation>
+    </message>
+</context>
+<context>
     <name>Look</name>
     <message>
         <source>the subdivision level must be 0 to %1, not %2</source>
@@ -112,13 +135,6 @@
     <message>
         <source>the entry “%1” is not a 3 by 3 matrix</source>
         <translation>項目「%1」が 3×3 行列ではありません</translation>
-    </message>
-</context>
-<context>
-    <name>RenderOutput</name>
-    <message>
-        <source>is not a render pass; use one of %1</source>
-        <translation>はレンダーパスではありません。次のいずれかを使用してください: %1</translation>
     </message>
 </context>
 <context>
@@ -490,10 +506,6 @@
         <translation>レンダーパスを 1 つだけ書き出します。</translation>
     </message>
     <message>
-        <source>Output image (default: the project&apos;s name with .png).</source>
-        <translation>出力画像（既定値: プロジェクト名に .png を付けたもの）。</translation>
-    </message>
-    <message>
         <source>give either --frame or --frames</source>
         <translation>--frame と --frames はどちらか一方だけを指定してください</translation>
     </message>
@@ -508,10 +520,6 @@
     <message>
         <source>a stereo render writes the beauty pass only</source>
         <translation>ステレオレンダリングで書き出せるのは beauty パスのみです</translation>
-    </message>
-    <message>
-        <source>--out must end in .png, .exr, .tif or .jpg, not “%1”</source>
-        <translation>--out のファイル名は .png、.exr、.tif、.jpg のいずれかで終わる必要があります（「%1」は無効です）</translation>
     </message>
     <message>
         <source>--combine takes union:OTHER or subtract:OTHER, not “%1”</source>
@@ -1036,10 +1044,6 @@
         <translation>ライトは移動しません</translation>
     </message>
     <message>
-        <source>Frame to optimise for (default 0).</source>
-        <translation>最適化の対象フレーム（既定値 0）。</translation>
-    </message>
-    <message>
         <source>Size of the analysed picture (default 1280x720).</source>
         <translation>解析する画像のサイズ（既定値 1280x720）。</translation>
     </message>
@@ -1204,10 +1208,6 @@
         <translation>--format と --out の指定が必要です</translation>
     </message>
     <message>
-        <source>--format must be gltf, glb, pc2 or obj-seq, not “%1”</source>
-        <translation>--format には gltf、glb、pc2、obj-seq のいずれかを指定してください（「%1」は無効です）</translation>
-    </message>
-    <message>
         <source>--out needs a file name</source>
         <translation>--out にはファイル名が必要です</translation>
     </message>
@@ -1222,14 +1222,6 @@
     <message>
         <source>export: frame %1 of %2</source>
         <translation>エクスポート: フレーム %1 / %2</translation>
-    </message>
-    <message>
-        <source>Exports the animation as seen through the camera path: a glTF scene with the keys as morph targets, a PC2 point cache or an OBJ per frame.</source>
-        <translation>カメラパスから見たアニメーションをエクスポートします: キーをモーフターゲットとする glTF シーン、PC2 ポイントキャッシュ、またはフレームごとの OBJ。</translation>
-    </message>
-    <message>
-        <source>gltf or glb (keys as morph targets, weights and camera animated), pc2 (point cache) or obj-seq (one OBJ per frame).</source>
-        <translation>gltf または glb（キーをモーフターゲットにし、ウェイトとカメラをアニメーション）、pc2（ポイントキャッシュ）、obj-seq（フレームごとに 1 つの OBJ）。</translation>
     </message>
     <message>
         <source>Frames to export, A-B inclusive (default the project&apos;s).</source>
@@ -1498,14 +1490,6 @@
         <translation>ウィンドウ外の図 5.8 の線形減衰の幅 (既定 0.1、0: 離散)。</translation>
     </message>
     <message>
-        <source>--subdivision applies to pc2 and obj-seq exports; glTF keeps the base model for its morph targets</source>
-        <translation>--subdivision は pc2 と obj-seq の書き出しに使えます。glTF はモーフターゲットのためにベースモデルのままです</translation>
-    </message>
-    <message>
-        <source>Loop subdivision level of the exported surface, 0 to 3, for pc2 and obj-seq (default 0: the base model&apos;s vertices, in its order).</source>
-        <translation>書き出す面の Loop 細分化レベル。0 から 3、pc2 と obj-seq 用 (既定 0: ベースモデルの頂点をその順序で)。</translation>
-    </message>
-    <message>
         <source>key set needs --key and --mesh</source>
         <translation>key set には --key と --mesh が必要です</translation>
     </message>
@@ -1565,6 +1549,118 @@
         <source>Apparent-ridge threshold for this picture: view-dependent curvature times the median edge length (default: the project&apos;s, 0.3 in new projects; lower draws more).</source>
         <translation>この画像の見かけの稜線のしきい値: 視点依存の曲率に辺の長さの中央値を掛けた値 (既定: プロジェクトの値、新規では 0.3。低いほど多く描きます)。</translation>
     </message>
+    <message>
+        <source>--max-turn takes degrees per frame in (0, 180], not “%1”</source>
+        <translation>--max-turn は (0, 180] のフレームあたりの角度（度）を取ります。「%1」ではありません</translation>
+    </message>
+    <message>
+        <source>frame %1: depth error MSE %2 -&gt; %3, turned %4° from the previous key%5</source>
+        <translation>フレーム %1: 深度誤差 MSE %2 -&gt; %3、前のキーから %4° 回転%5</translation>
+    </message>
+    <message>
+        <source> (limited)</source>
+        <translation>（制限あり）</translation>
+    </message>
+    <message>
+        <source>mean depth error MSE: %1 -&gt; %2; largest turn %3° between keys; %4 ms</source>
+        <translation>平均深度誤差 MSE: %1 -&gt; %2、キー間の最大回転 %3°、%4 ms</translation>
+    </message>
+    <message>
+        <source>the light track stays as it is</source>
+        <translation>ライトトラックはそのままです</translation>
+    </message>
+    <message>
+        <source>--max-turn goes with --frames</source>
+        <translation>--max-turn は --frames と一緒に使います</translation>
+    </message>
+    <message>
+        <source>Frame to optimise for (default 0); with a light track the light found is keyed there.</source>
+        <translation>最適化するフレーム（既定値 0）。ライトトラックがある場合、見つかったライトはそのフレームにキーされます。</translation>
+    </message>
+    <message>
+        <source>Optimise a light track: the light at frames A-B every STEP-th (default 1) through the shot camera, each frame starting from the previous one&apos;s light, saved as light keys.</source>
+        <translation>ライトトラックを最適化します: ショットカメラを通したフレーム A-B の STEP ごと（既定値 1）のライトを、各フレームを前のフレームのライトから始めて求め、ライトキーとして保存します。</translation>
+    </message>
+    <message>
+        <source>With --frames: the most a key turns from the previous one per frame, in degrees (default 3).</source>
+        <translation>--frames と一緒に: キーが前のキーからフレームあたり回転できる最大角度（度、既定値 3）。</translation>
+    </message>
+    <message>
+        <source>--format must be gltf, glb, pc2, obj-seq or usda, not “%1”</source>
+        <translation>--format は gltf、glb、pc2、obj-seq、usda のいずれかです。「%1」ではありません</translation>
+    </message>
+    <message>
+        <source>--subdivision applies to pc2, obj-seq and usda exports; glTF keeps the base model for its morph targets</source>
+        <translation>--subdivision は pc2、obj-seq、usda の書き出しに使えます。glTF はモーフターゲットのためにベースモデルを保ちます</translation>
+    </message>
+    <message>
+        <source>--blend-shapes applies to usda exports (glTF always holds the keys as morph targets)</source>
+        <translation>--blend-shapes は usda の書き出しに使えます（glTF は常にキーをモーフターゲットとして持ちます）</translation>
+    </message>
+    <message>
+        <source>--blend-shapes holds the keys on the base model and takes no --subdivision</source>
+        <translation>--blend-shapes はキーをベースモデル上に持つため --subdivision を取りません</translation>
+    </message>
+    <message>
+        <source>Exports the animation as seen through the camera path: a glTF scene with the keys as morph targets, a PC2 point cache, an OBJ per frame or a USD layer with time-sampled points and camera.</source>
+        <translation>カメラパスから見たアニメーションを書き出します: キーをモーフターゲットとする glTF シーン、PC2 ポイントキャッシュ、フレームごとの OBJ、または時間サンプルされた点とカメラを持つ USD レイヤー。</translation>
+    </message>
+    <message>
+        <source>gltf or glb (keys as morph targets, weights and camera animated), pc2 (point cache) or obj-seq (one OBJ per frame) or usda (USD text: time-sampled mesh and camera).</source>
+        <translation>gltf または glb（キーをモーフターゲットとし、ウェイトとカメラをアニメーション）、pc2（ポイントキャッシュ）、obj-seq（フレームごとに 1 つの OBJ）、usda（USD テキスト: 時間サンプルされたメッシュとカメラ）。</translation>
+    </message>
+    <message>
+        <source>Loop subdivision level of the exported surface, 0 to 3, for pc2, obj-seq and usda (default 0: the base model&apos;s vertices, in its order).</source>
+        <translation>書き出す面の Loop 細分割レベル。0 から 3、pc2、obj-seq、usda 用（既定値 0: ベースモデルの頂点をその順序で）。</translation>
+    </message>
+    <message>
+        <source>usda: the enabled keys as UsdSkel blend shapes with animated weights; the points then hold the shape without them.</source>
+        <translation>usda: 有効なキーをアニメーションするウェイト付きの UsdSkel ブレンドシェイプとして書き出します。点はそれらを除いた形状になります。</translation>
+    </message>
+    <message>
+        <source>an .svg output holds the lines pass; give --pass lines, not “%1”</source>
+        <translation>.svg 出力はラインパスを持ちます。「%1」ではなく --pass lines を指定してください</translation>
+    </message>
+    <message>
+        <source>an .svg output takes --stereo off, sbs, tb or anaglyph</source>
+        <translation>.svg 出力は --stereo off、sbs、tb、anaglyph を取ります</translation>
+    </message>
+    <message>
+        <source>--svg-tones needs an .svg output</source>
+        <translation>--svg-tones には .svg 出力が必要です</translation>
+    </message>
+    <message>
+        <source>--strokes needs the lines pass (--pass lines)</source>
+        <translation>--strokes にはラインパス（--pass lines）が必要です</translation>
+    </message>
+    <message>
+        <source>--strokes must end in .json, not “%1”</source>
+        <translation>--strokes は .json で終わる必要があります。「%1」ではありません</translation>
+    </message>
+    <message>
+        <source>a stereo render writes its strokes beside an .svg output only</source>
+        <translation>ステレオレンダリングはストロークを .svg 出力の横にのみ書き出します</translation>
+    </message>
+    <message>
+        <source>--out must end in .png, .exr, .tif, .jpg or .svg, not “%1”</source>
+        <translation>--out は .png、.exr、.tif、.jpg、.svg のいずれかで終わる必要があります。「%1」ではありません</translation>
+    </message>
+    <message>
+        <source>Output image (default: the project&apos;s name with .png); an .svg holds the lines pass as vector strokes.</source>
+        <translation>出力画像（既定値: プロジェクト名に .png）。.svg はラインパスをベクターストロークとして持ちます。</translation>
+    </message>
+    <message>
+        <source>With an .svg output: the tone regions as filled layers too.</source>
+        <translation>.svg 出力で: トーン領域も塗りつぶしレイヤーとして書き出します。</translation>
+    </message>
+    <message>
+        <source>With --pass lines: each stroke&apos;s points, widths, kind and depth as JSON too (a # is the frame number, as in --out).</source>
+        <translation>--pass lines で: 各ストロークの点、幅、種類、深度も JSON で書き出します（# は --out と同じくフレーム番号）。</translation>
+    </message>
+    <message>
+        <source>Light track: %1 keys</source>
+        <translation>ライトトラック: %1 キー</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ExportDialog</name>
@@ -1615,6 +1711,18 @@
     <message>
         <source>The file must end in .%1 for this format.</source>
         <translation>この形式ではファイル名を .%1 で終える必要があります。</translation>
+    </message>
+    <message>
+        <source>USD (.usda): time-sampled points, normals and camera</source>
+        <translation>USD (.usda): 時間サンプルされた点、法線、カメラ</translation>
+    </message>
+    <message>
+        <source>&amp;Keys as blend shapes (animated weights)</source>
+        <translation>キーをブレンドシェイプとして(&amp;K)（アニメーションするウェイト）</translation>
+    </message>
+    <message>
+        <source>USD: the enabled keys as UsdSkel blend shapes whose weights follow the camera path; the points then hold the shape without them</source>
+        <translation>USD: 有効なキーを、ウェイトがカメラパスに従う UsdSkel ブレンドシェイプとして書き出します。点はそれらを除いた形状になります</translation>
     </message>
 </context>
 <context>
@@ -1803,6 +1911,37 @@
     <message>
         <source>; the ratios&apos; light raised the depth error, so a search kept the light with the lowest depth error it met</source>
         <translation>。ratios の光では奥行き誤差が増えたため、探索で見つかった奥行き誤差が最小の光を採用しました</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::LightTrackRunner</name>
+    <message numerus="yes">
+        <source>Light track: %n frame(s) keyed; mean depth error MSE %1 → %2; largest turn between keys %3° (%4 ms)</source>
+        <translation>
+            <numerusform>ライトトラック: %n フレームをキー。平均深度誤差 MSE %1 → %2、キー間の最大回転 %3°（%4 ms）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Optimise Light Along Shot</source>
+        <translation>ショット全体でライトを最適化</translation>
+    </message>
+    <message numerus="yes">
+        <source>Optimising the light at %n frame(s)…</source>
+        <translation>
+            <numerusform>%n フレームでライトを最適化しています…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Optimising the light at frame %1 (%2 of %3)…</source>
+        <translation>フレーム %1 でライトを最適化しています（%3 中 %2）…</translation>
+    </message>
+    <message>
+        <source>Not enough memory to analyse %1 × %2 pixels</source>
+        <translation>%1 × %2 ピクセルを解析するメモリが足りません</translation>
+    </message>
+    <message>
+        <source>the project</source>
+        <translation>プロジェクト</translation>
     </message>
 </context>
 <context>
@@ -2427,10 +2566,6 @@ Recover it now?</source>
         <source>E&amp;xport…</source>
         <translation>エクスポート(&amp;X)…</translation>
     </message>
-    <message>
-        <source>Export the animation seen through the camera path as glTF, a PC2 point cache or OBJ files, as celform export does</source>
-        <translation>カメラパスから見たアニメーションを glTF、PC2 ポイントキャッシュ、または OBJ ファイルとしてエクスポートします（celform export と同じ処理）</translation>
-    </message>
     <message numerus="yes">
         <source>Loaded %1: an animated base, %n frame(s) at %2 fps</source>
         <translation>
@@ -2456,6 +2591,26 @@ Recover it now?</source>
     <message>
         <source>Show the selected drawing over the model whatever is selected, or hide the drawing shown (the eye in the Scene panel)</source>
         <translation>選択に関係なく選択中の参照画をモデルの上に表示するか、表示中の参照画を隠します（シーンパネルの目のアイコン）</translation>
+    </message>
+    <message>
+        <source>Export the animation seen through the camera path as glTF, a PC2 point cache, OBJ files or USD, as celform export does</source>
+        <translation>カメラパスから見たアニメーションを glTF、PC2 ポイントキャッシュ、OBJ ファイル、USD として書き出します（celform export と同じ）</translation>
+    </message>
+    <message>
+        <source>Optimise Light Along &amp;Shot</source>
+        <translation>ショット全体でライトを最適化(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Optimise the light at every frame of the scene&apos;s range through the shot camera, each frame starting from the last, and key it there: a light track that turns no more than 3° a frame (one undo step)</source>
+        <translation>シーンの範囲の各フレームでショットカメラを通してライトを最適化し、各フレームを前のフレームから始めてそこにキーします: 1 フレームあたり 3° 以上回転しないライトトラックです（1 回の取り消し単位）</translation>
+    </message>
+    <message>
+        <source>Open a model first: the light is optimised for the pictures of a model.</source>
+        <translation>まずモデルを開いてください: ライトはモデルの絵に対して最適化されます。</translation>
+    </message>
+    <message>
+        <source>Light track optimisation cancelled: the light is unchanged.</source>
+        <translation>ライトトラックの最適化をキャンセルしました: ライトは変わっていません。</translation>
     </message>
 </context>
 <context>
@@ -3447,6 +3602,49 @@ Recover it now?</source>
     </message>
 </context>
 <context>
+    <name>celform::app::SubdivisionActions</name>
+    <message>
+        <source>Control mesh shown (3: smooth surface, level %1)</source>
+        <translation>コントロールメッシュを表示中（3: 滑らかな面、レベル %1）</translation>
+    </message>
+    <message>
+        <source>Viewport subdivision capped at level %1 of %2: %3 triangles</source>
+        <translation>ビューポートの細分割をレベル %2 中 %1 に制限: %3 三角形</translation>
+    </message>
+    <message>
+        <source>Viewport subdivision level %1 (renders use level %2)</source>
+        <translation>ビューポートの細分割レベル %1（レンダリングはレベル %2）</translation>
+    </message>
+    <message>
+        <source>The subdivision level the viewport shows (Look dock, Smooth surface)</source>
+        <translation>ビューポートが表示する細分割レベル（ルックドック、滑らかな面）</translation>
+    </message>
+    <message>
+        <source>Control &amp;Mesh</source>
+        <translation>コントロールメッシュ(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Show the control mesh in the viewport, without subdivision (as Maya&apos;s 1)</source>
+        <translation>細分割なしでコントロールメッシュをビューポートに表示します（Maya の 1 と同じ）</translation>
+    </message>
+    <message>
+        <source>&amp;Smooth Surface</source>
+        <translation>滑らかな面(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Show the subdivided surface at the look&apos;s viewport level, as renders show it (as Maya&apos;s 3)</source>
+        <translation>ルックのビューポートレベルで細分割された面を、レンダリングと同じように表示します（Maya の 3 と同じ）</translation>
+    </message>
+    <message>
+        <source>Show Control &amp;Cage</source>
+        <translation>コントロールケージを表示(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Draw the control mesh as a wireframe over the smooth surface</source>
+        <translation>コントロールメッシュを滑らかな面の上にワイヤーフレームで描きます</translation>
+    </message>
+</context>
+<context>
     <name>celform::app::TurntableDialog</name>
     <message>
         <source>Turntable</source>
@@ -4001,6 +4199,28 @@ Recover it now?</source>
         <source>%1 vertices, the first frame (%2) has %3</source>
         <translation>頂点が %1 個ですが、最初のフレーム（%2）では %3 個です</translation>
     </message>
+    <message>
+        <source>not a readable glTF file: its JSON cannot be read: %1 at byte %2%3</source>
+        <translation>読み取れる glTF ファイルではありません: JSON を読めません: %1（バイト %2）%3</translation>
+    </message>
+    <message>
+        <source> (NaN and Infinity are not JSON numbers)</source>
+        <translation>（NaN と Infinity は JSON の数値ではありません）</translation>
+    </message>
+    <message numerus="yes">
+        <source>and %n more</source>
+        <translation>
+            <numerusform>ほか %n 件</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the sequence&apos;s numbers run from %1 to %2, more than the %3 frames Celform can load</source>
+        <translation>シーケンスの番号は %1 から %2 まであり、Celform が読み込める %3 フレームを超えています</translation>
+    </message>
+    <message>
+        <source>the sequence has no file numbered %1; each missing number holds the frame before it</source>
+        <translation>シーケンスに番号 %1 のファイルがありません。欠けた番号はその前のフレームを保持します</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::BlendEvaluator</name>
@@ -4104,6 +4324,14 @@ Recover it now?</source>
     <message>
         <source>glTF exports hold the keys as morph targets of the base model and take no subdivision; export pc2 or obj-seq with --subdivision</source>
         <translation>glTF の書き出しはキーをベースモデルのモーフターゲットとして持つため細分化できません。--subdivision は pc2 か obj-seq で書き出してください</translation>
+    </message>
+    <message>
+        <source>blend shapes are written by usda exports only</source>
+        <translation>ブレンドシェイプは usda の書き出しでのみ書き出されます</translation>
+    </message>
+    <message>
+        <source>blend shapes hold the keys on the base model&apos;s vertices and take no subdivision</source>
+        <translation>ブレンドシェイプはキーをベースモデルの頂点上に持つため細分割を取りません</translation>
     </message>
 </context>
 <context>
@@ -4421,6 +4649,26 @@ Recover it now?</source>
         <source>the PNG file is truncated (it ends before its last chunk)</source>
         <translation>PNG ファイルが途中で切れています（最後のチャンクの前で終わっています）</translation>
     </message>
+    <message>
+        <source>the SVG drawing has text, which cannot be drawn without fonts here</source>
+        <translation>SVG 図面にテキストがありますが、ここではフォントなしでは描けません</translation>
+    </message>
+    <message>
+        <source>the SVG drawing has text and no fonts are installed (fontconfig finds none; install fonts-dejavu-core)</source>
+        <translation>SVG 図面にテキストがありますが、フォントがインストールされていません（fontconfig が見つけられません。fonts-dejavu-core をインストールしてください）</translation>
+    </message>
+    <message>
+        <source>the JPEG file is truncated (it ends before its end-of-image marker)</source>
+        <translation>JPEG ファイルが途中で切れています（画像終端マーカーの前で終わっています）</translation>
+    </message>
+    <message>
+        <source>images of type &quot;%1&quot; cannot be written</source>
+        <translation>種類「%1」の画像は書き出せません</translation>
+    </message>
+    <message>
+        <source>the encoder gave no bytes</source>
+        <translation>エンコーダーがバイトを返しませんでした</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ImportProcess</name>
@@ -4677,6 +4925,18 @@ Recover it now?</source>
     <message>
         <source>Change Subdivision</source>
         <translation>細分化の変更</translation>
+    </message>
+    <message>
+        <source>Key Light at Frame %1</source>
+        <translation>フレーム %1 でライトをキー</translation>
+    </message>
+    <message>
+        <source>The light track changed while it was being optimised; run Optimise Light Along Shot again.</source>
+        <translation>最適化中にライトトラックが変更されました。もう一度「ショット全体でライトを最適化」を実行してください。</translation>
+    </message>
+    <message>
+        <source>Optimise Light Along Shot</source>
+        <translation>ショット全体でライトを最適化</translation>
     </message>
 </context>
 <context>
@@ -5041,11 +5301,14 @@ Recover it now?</source>
     </message>
 </context>
 <context>
-    <name>celform::model::ProjectFile</name>
+    <name>celform::model::OutputFile</name>
     <message>
         <source>could not be written: %1</source>
         <translation>書き込めませんでした: %1</translation>
     </message>
+</context>
+<context>
+    <name>celform::model::ProjectFile</name>
     <message>
         <source>is damaged: %1</source>
         <translation>破損しています: %1</translation>
@@ -5105,14 +5368,6 @@ Recover it now?</source>
     <message>
         <source>an object id is not below next_id</source>
         <translation>オブジェクト ID が next_id 未満ではありません</translation>
-    </message>
-    <message>
-        <source>could not be opened for writing: %1</source>
-        <translation>書き込み用に開けませんでした: %1</translation>
-    </message>
-    <message>
-        <source>could not be saved: %1</source>
-        <translation>保存できませんでした: %1</translation>
     </message>
     <message>
         <source>does not exist</source>
@@ -5334,6 +5589,10 @@ Recover it now?</source>
         <source>the subdivision levels are out of range</source>
         <translation>細分化レベルが範囲外です</translation>
     </message>
+    <message>
+        <source>the light track is invalid: %1</source>
+        <translation>ライトトラックが無効です: %1</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
@@ -5386,6 +5645,10 @@ Recover it now?</source>
     <message>
         <source>the curvature does not match the shape</source>
         <translation>曲率が形状と一致しません</translation>
+    </message>
+    <message>
+        <source>is not a render pass; use one of %1</source>
+        <translation>はレンダーパスではありません。次のいずれかを使用してください: %1</translation>
     </message>
 </context>
 <context>
@@ -5524,6 +5787,25 @@ Recover it now?</source>
     <message>
         <source>Not enough memory for the analysis at %1 x %2</source>
         <translation>%1 x %2 の解析に必要なメモリが足りません</translation>
+    </message>
+</context>
+<context>
+    <name>celform::views::DepthChart</name>
+    <message>
+        <source>Depth error (MSE) and the share of segments inside the window over the shot; click to go to a frame</source>
+        <translation>ショット全体の深度誤差（MSE）とウィンドウ内のセグメントの割合。クリックでそのフレームへ移動します</translation>
+    </message>
+    <message>
+        <source>Chart Shot analyses every frame of the scene</source>
+        <translation>「ショットをグラフ化」でシーンの全フレームを解析します</translation>
+    </message>
+    <message>
+        <source>MSE (max %1)</source>
+        <translation>MSE（最大 %1）</translation>
+    </message>
+    <message>
+        <source>inside the window (0-100 %)</source>
+        <translation>ウィンドウ内（0-100 %）</translation>
     </message>
 </context>
 <context>
@@ -5762,6 +6044,44 @@ Recover it now?</source>
     <message>
         <source>Shading offsets go into the %1.</source>
         <translation>シェーディングオフセットの書き込み先: %1。</translation>
+    </message>
+    <message>
+        <source>Along the Shot</source>
+        <translation>ショット全体</translation>
+    </message>
+    <message>
+        <source>Chart Shot</source>
+        <translation>ショットをグラフ化</translation>
+    </message>
+    <message>
+        <source>Analyse every frame of the scene&apos;s range through the shot camera at the analysis size and chart the depth error</source>
+        <translation>シーンの範囲の全フレームをショットカメラを通して解析サイズで解析し、深度誤差をグラフにします</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <source>Analysing frame %1 of %2…</source>
+        <translation>フレーム %1 / %2 を解析しています…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s), mean MSE %1</source>
+        <translation>
+            <numerusform>%n フレーム、平均 MSE %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>キャンセルしました</translation>
+    </message>
+    <message>
+        <source>Changed since charted: Chart Shot again</source>
+        <translation>グラフ化の後に変更されました: もう一度「ショットをグラフ化」してください</translation>
+    </message>
+    <message>
+        <source>Analysing the shot…</source>
+        <translation>ショットを解析しています…</translation>
     </message>
 </context>
 <context>
@@ -6667,6 +6987,34 @@ chamfer distance %3 px</source>
         <source>Minimum &amp;length:</source>
         <translation>最小の長さ(&amp;L):</translation>
     </message>
+    <message>
+        <source>Smooth surface</source>
+        <translation>滑らかな面</translation>
+    </message>
+    <message>
+        <source>Loop subdivision of the base model: tones and lines are drawn on a smooth surface instead of the facets of a coarse mesh</source>
+        <translation>ベースモデルの Loop 細分割: トーンとラインを粗いメッシュの面ではなく滑らかな面に描きます</translation>
+    </message>
+    <message>
+        <source>Subdivision level of renders and of the depth analysis: 0 is the control mesh, each level has four times the triangles of the one before</source>
+        <translation>レンダリングと深度解析の細分割レベル: 0 はコントロールメッシュ、各レベルは前のレベルの 4 倍の三角形を持ちます</translation>
+    </message>
+    <message>
+        <source>&amp;Render level:</source>
+        <translation>レンダーレベル(&amp;R):</translation>
+    </message>
+    <message>
+        <source>Same as render</source>
+        <translation>レンダーと同じ</translation>
+    </message>
+    <message>
+        <source>Subdivision level the viewport shows: the render level by default, so that the viewport shows what renders show; a lower level is faster to draw (never above the render level). Keys 1 and 3 switch between the control mesh and this level</source>
+        <translation>ビューポートが表示する細分割レベル: 既定ではレンダーレベルで、ビューポートはレンダリングと同じものを表示します。低いレベルは描画が速くなります（レンダーレベルを超えることはありません）。キー 1 と 3 でコントロールメッシュとこのレベルを切り替えます</translation>
+    </message>
+    <message>
+        <source>&amp;Viewport level:</source>
+        <translation>ビューポートレベル(&amp;V):</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::OffsetBrushTool</name>
@@ -7200,6 +7548,21 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     </message>
 </context>
 <context>
+    <name>celform::views::ShotDepthRunner</name>
+    <message>
+        <source>Open a model first.</source>
+        <translation>まずモデルを開いてください。</translation>
+    </message>
+    <message>
+        <source>the project</source>
+        <translation>プロジェクト</translation>
+    </message>
+    <message>
+        <source>Not enough memory to analyse the shot.</source>
+        <translation>ショットを解析するためのメモリが足りません。</translation>
+    </message>
+</context>
+<context>
     <name>celform::views::TimelinePanel</name>
     <message>
         <source>Go to the first frame of the range (Shift+Left)</source>
@@ -7266,10 +7629,6 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
         <translation>ハイライト</translation>
     </message>
     <message>
-        <source>Key marks on the ruler: camera keys (top row), key deformations (middle) and highlight keys (bottom)</source>
-        <translation>ルーラー上のキーフレームの印: カメラのキーフレーム（上段）、キー変形（中段）、ハイライトのキーフレーム（下段）</translation>
-    </message>
-    <message>
         <source>Frame</source>
         <translation>フレーム</translation>
     </message>
@@ -7284,6 +7643,14 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
     <message>
         <source>Playing: %1 fps</source>
         <translation>再生中: %1 fps</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>ライト</translation>
+    </message>
+    <message>
+        <source>Key marks on the ruler, top to bottom: camera keys, light keys, key deformations and highlight keys</source>
+        <translation>ルーラー上のキーマーク（上から）: カメラキー、ライトキー、キー変形、ハイライトキー</translation>
     </message>
 </context>
 <context>
@@ -7309,12 +7676,16 @@ Double-click or press F2 to rename; Delete removes; the check box disables a key
         <translation>フレーム %1: %2</translation>
     </message>
     <message>
-        <source>▼ camera keys · ◆ key deformations · ● highlight keys</source>
-        <translation>▼ カメラのキーフレーム · ◆ キー変形 · ● ハイライトのキーフレーム</translation>
-    </message>
-    <message>
         <source>Click or drag to move the current frame</source>
         <translation>クリックまたはドラッグで現在のフレームを移動します</translation>
+    </message>
+    <message>
+        <source>light key</source>
+        <translation>ライトキー</translation>
+    </message>
+    <message>
+        <source>▼ camera keys · ■ light keys · ◆ key deformations · ● highlight keys</source>
+        <translation>▼ カメラキー · ■ ライトキー · ◆ キー変形 · ● ハイライトキー</translation>
     </message>
 </context>
 <context>

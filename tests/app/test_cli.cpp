@@ -71,12 +71,6 @@ celform::model::Camera cameraOf(const QJsonObject& o)
     return c;
 }
 
-QByteArray fileBytes(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
 } // namespace
 
 class TestCli : public QObject {

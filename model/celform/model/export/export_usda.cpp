@@ -8,13 +8,13 @@
 // frame again costs little next to formatting and writing it), and no buffer holds the whole
 // shot. Atomic, as every one-file format.
 #include "celform/model/export/export.h"
+#include "celform/model/io/output_file.h"
 #include "celform/model/export/usda_text.h"
 
 #include "celform/model/data/io_error.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -58,31 +58,10 @@ QString text(const char* s)
     return QCoreApplication::translate("celform::model::Export", s);
 }
 
-void write(QFileDevice& file, const UsdaText& t)
+/// Appends the text (an IoError naming the file and the system's reason when it fails).
+void write(OutputFile& file, const UsdaText& t)
 {
-    if (file.write(t.data(), qint64(t.size())) != qint64(t.size()))
-        throw IoError(file.fileName(), file.errorString());
-}
-
-/// Area-weighted vertex normals of shape into normals (resized once), as algo::vertexNormals
-/// computes them, without its allocation per call.
-void vertexNormals(const algo::Positions& shape, const algo::Faces& faces, algo::Positions& normals)
-{
-    normals.resize(shape.rows(), 3);
-    normals.setZero();
-    for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-        const Eigen::Vector3f a = shape.row(faces(f, 0)), b = shape.row(faces(f, 1)), c = shape.row(faces(f, 2));
-        const Eigen::Vector3f n = (b - a).cross(c - a); // its length is twice the area: area weights
-        for (int k = 0; k < 3; ++k)
-            normals.row(faces(f, k)) += n.transpose();
-    }
-    for (Eigen::Index v = 0; v < normals.rows(); ++v) {
-        const float length = normals.row(v).norm();
-        if (length > 1e-20f)
-            normals.row(v) /= length;
-        else
-            normals.row(v) = Eigen::RowVector3f(0.0f, 0.0f, 1.0f);
-    }
+    file.write(t.data(), qint64(t.size()));
 }
 
 /// One frame of the camera as UsdGeomCamera holds it.
@@ -282,9 +261,7 @@ void writeUsda(const ProjectData& data, const QString& source, const ExportJob& 
         result.warnings << text("the project has no enabled keys: no blend shapes written");
     const std::string in = shapes.empty() ? "        " : "            ";
 
-    QSaveFile file(job.output);
-    if (!file.open(QIODevice::WriteOnly))
-        throw IoError(job.output, file.errorString());
+    OutputFile file(job.output); // whole or not at all; every write checked (issue 27)
 
     UsdaText t;
     writeHeader(t, data, job, mesh, meshName, shapes);
@@ -347,7 +324,7 @@ void writeUsda(const ProjectData& data, const QString& source, const ExportJob& 
     write(file, t);
     FrameWalk again(data, source, job, progress ? &normalsPart : nullptr);
     while (again.next()) {
-        vertexNormals(again.shape(), again.faces(), normals);
+        algo::vertexNormals(again.shape(), again.faces(), normals); // storage kept from frame to frame
         t.clear();
         t << in << "    " << again.frame() << ": ";
         t.tuples(normals.data(), std::size_t(normals.rows()), 3);

@@ -222,7 +222,7 @@ public:
         // The subdivided base model, face sets and offsets stand in for the control ones.
         const ProjectData& shown = surface ? surface->display : data;
         // Two frames' file data, used in turn: the writer may still be writing the last one.
-        EncodedImage& encoded = m_encoded[m_nextEncoded];
+        EncodedFrame& encoded = m_encoded[m_nextEncoded];
         m_nextEncoded ^= 1;
         static const std::vector<std::string> rgba = {"R", "G", "B", "A"};
         // The analysis passes (segments, curvature, depth error) come from the depth analysis of
@@ -298,7 +298,7 @@ private:
     std::vector<float> m_subdividedOffsets;
     algo::RenderPasses m_passes; // the frame's passes, their storage kept from frame to frame
     algo::ImageRGBA m_image; // a pass other than the beauty as an image
-    std::array<EncodedImage, 2> m_encoded;
+    std::array<EncodedFrame, 2> m_encoded;
     int m_nextEncoded = 0;
 };
 

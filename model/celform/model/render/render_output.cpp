@@ -35,7 +35,7 @@ struct RenderOutput {
 /// in the colour channels when encodeSrgb; EXR takes the floats as they are. out's buffers are
 /// reused.
 void encodeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
-    const float* data, std::size_t count, bool encodeSrgb, EncodedImage& out)
+    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& out)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     const bool isFloat = suffix == QLatin1String("exr");
@@ -79,7 +79,7 @@ QImage::Format qtFormatOf(const std::vector<std::string>& names)
 /// into png: issue 29 measured loading the OpenImageIO module and its library graph (about 275
 /// libraries) as the larger part of a one-frame render's start; the pixels are the same. Empty
 /// when encoded, else the problem; nullopt when Qt does not take these channels.
-std::optional<QString> encodePngWithQt(const EncodedImage& image, QByteArray& png)
+std::optional<QString> encodePngWithQt(const EncodedFrame& image, QByteArray& png)
 {
     const QImage::Format format = qtFormatOf(image.names);
     if (format == QImage::Format_Invalid || image.isFloat)
@@ -97,7 +97,7 @@ std::optional<QString> encodePngWithQt(const EncodedImage& image, QByteArray& pn
 
 } // namespace
 
-void writeEncoded(const EncodedImage& image, const QString& path)
+void writeEncoded(const EncodedFrame& image, const QString& path)
 {
     // Encoded in memory, then written whole or not at all: a full disk is an IoError naming the
     // file and the reason, and leaves neither a short file nor a temporary one (issue 27). Kept
@@ -128,7 +128,7 @@ namespace {
 void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
     const std::vector<float>& data, bool encodeSrgb)
 {
-    EncodedImage encoded;
+    EncodedFrame encoded;
     encodeChannels(path, width, height, names, data.data(), data.size(), encodeSrgb, encoded);
     writeEncoded(encoded, path);
 }
@@ -499,7 +499,7 @@ QString incompleteImageProblem(const QString& path)
     return {};
 }
 
-void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedImage& out)
+void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedFrame& out)
 {
     if (QFileInfo(path).suffix().toLower() != QLatin1String("exr"))
         throw IoError(path, RenderOutput::tr("all passes together need an .exr file"));
@@ -528,7 +528,7 @@ void encodePassesExr(const algo::RenderPasses& passes, const QString& path, Enco
 
 void writePassesExr(const algo::RenderPasses& passes, const QString& path)
 {
-    EncodedImage encoded;
+    EncodedFrame encoded;
     encodePassesExr(passes, path, encoded);
     writeEncoded(encoded, path);
 }

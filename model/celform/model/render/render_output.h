@@ -80,7 +80,7 @@ void passImage(const algo::RenderPasses& passes, const QString& pass, bool forFl
 /// An image made ready for its file (encodeChannels): 8-bit values or floats with their channel
 /// names, apart from the buffers it came from, so that another thread can write it while the next
 /// frame renders. Its buffers are reused from frame to frame.
-struct EncodedImage {
+struct EncodedFrame {
     int width = 0;
     int height = 0;
     std::vector<std::string> names;
@@ -93,14 +93,14 @@ struct EncodedImage {
 /// interleaved floats of the named channels into out: quantised to 8 bits (sRGB-encoded colour
 /// channels when encodeSrgb), or kept as floats for EXR.
 void encodeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
-    const float* data, std::size_t count, bool encodeSrgb, EncodedImage& out);
+    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& out);
 
 /// Every pass as the channels of writePassesExr, into out. Throws IoError unless path is an .exr.
-void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedImage& out);
+void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedFrame& out);
 
 /// Writes an encoded image to path atomically (a temporary file beside it, closed, then renamed;
 /// not synced to the disk). Throws IoError naming path.
-void writeEncoded(const EncodedImage& image, const QString& path);
+void writeEncoded(const EncodedFrame& image, const QString& path);
 
 /// Writes an image by suffix (png, tif, tiff, jpg, jpeg, exr), atomically (temporary file beside
 /// it, then a rename). Throws IoError naming the file.
