@@ -3,6 +3,8 @@
 // repetition is one process: wall time from fork to reaped, and its peak resident set (ru_maxrss).
 // Run: bench_cli (medians of 20 repetitions; targets: under 50 ms and 40 MB each);
 // CELFORM_BENCH_EXECUTABLE=/path/to/celform bench_cli measures another build instead.
+#include "bench_process.h"
+
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -18,36 +20,8 @@
 
 namespace {
 
-struct Finished {
-    double seconds = 0;
-    double peakRssMb = 0;
-    int status = -1;
-};
-
-/// Runs a program to its end with standard output and error on /dev/null.
-Finished runProcess(const std::vector<std::string>& args)
-{
-    std::vector<char*> argv;
-    for (const std::string& a : args)
-        argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = fork();
-    if (pid == 0) {
-        const int null = open("/dev/null", O_WRONLY);
-        dup2(null, STDOUT_FILENO);
-        dup2(null, STDERR_FILENO);
-        execv(argv[0], argv.data());
-        _exit(127);
-    }
-    Finished f;
-    rusage usage{};
-    if (pid < 0 || wait4(pid, &f.status, 0, &usage) != pid)
-        return f;
-    f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    f.peakRssMb = double(usage.ru_maxrss) / 1024.0; // kilobytes on Linux
-    return f;
-}
+using celform::bench::Finished;
+using celform::bench::runProcess;
 
 void process(benchmark::State& state, const std::vector<std::string>& args)
 {

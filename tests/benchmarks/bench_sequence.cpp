@@ -19,6 +19,7 @@
 #include "celform/model/render/render_output.h"
 
 #include "bench_data.h"
+#include "bench_process.h"
 
 #include <benchmark/benchmark.h>
 
@@ -44,26 +45,11 @@ using namespace celform;
 
 constexpr int kFrames = 10;
 
-/// Runs a program to its end with its output on /dev/null; seconds, or a negative number on failure.
+/// Runs a program to its end; seconds, or a negative number on failure.
 double runProcess(const std::vector<std::string>& args)
 {
-    std::vector<char*> argv;
-    for (const std::string& a : args)
-        argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = fork();
-    if (pid == 0) {
-        const int null = open("/dev/null", O_WRONLY);
-        dup2(null, STDOUT_FILENO);
-        dup2(null, STDERR_FILENO);
-        execv(argv[0], argv.data());
-        _exit(127);
-    }
-    int status = -1;
-    if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return -1;
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const bench::Finished f = bench::runProcess(args);
+    return WIFEXITED(f.status) && WEXITSTATUS(f.status) == 0 ? f.seconds : -1.0;
 }
 
 /// The celform measured: CELFORM_BENCH_EXECUTABLE (an older build, for a before and after in one
