@@ -1,0 +1,503 @@
+// celform.Document: opening and saving projects, what they hold, drawings, key viewpoints, the
+// falloff brush, the project's settings (`celform set`) and the shot's camera path. Each edit calls
+// the document operation the command line's sub-command calls (app/cli/project.cpp, keys.cpp,
+// look.cpp, camera.cpp), with the options read by the command line's readers (cli_args.h).
+#include "cli_args.h"
+#include "document.h"
+
+#include "cli/options.h"
+
+#include "celform/algorithms/tri_mesh.h"
+#include "celform/model/data/framed_camera.h"
+#include "celform/model/data/mirror_plane.h"
+#include "celform/model/io/image_io.h"
+#include "celform/model/io/mesh_io.h"
+#include "celform/model/io/project_file.h"
+#include "celform/model/render/render_job.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <QFileInfo>
+#include <QJsonArray>
+
+namespace celform::python {
+
+using app::Cli;
+using app::UsageError;
+
+PyDocument::PyDocument()
+{
+    ensureApplication();
+    doc = std::make_unique<model::Document>();
+}
+
+QString PyDocument::source() const
+{
+    return doc->filePath().isEmpty() ? Cli::tr("(unsaved document)") : doc->filePath();
+}
+
+namespace {
+
+/// A read-only numpy view of an Eigen row-major matrix that owner keeps alive.
+template <typename Matrix>
+py::array readOnlyView(const Matrix& matrix, py::object owner)
+{
+    using T = typename Matrix::Scalar;
+    py::array a(py::dtype::of<T>(), {py::ssize_t(matrix.rows()), py::ssize_t(matrix.cols())},
+        {py::ssize_t(sizeof(T) * std::size_t(matrix.cols())), py::ssize_t(sizeof(T))}, matrix.data(), owner);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+/// The base model's vertices or faces as a read-only array over the mesh itself: the mesh is
+/// immutable and shared, and the array keeps this version of it alive.
+py::object meshArray(const PyDocument& d, bool faces)
+{
+    if (!d->hasMesh())
+        return py::none();
+    auto mesh = d->data().baseMesh;
+    py::capsule owner(new std::shared_ptr<const algo::TriMesh>(mesh),
+        [](void* p) { delete static_cast<std::shared_ptr<const algo::TriMesh>*>(p); });
+    return faces ? readOnlyView(mesh->faces, owner) : readOnlyView(mesh->vertices, owner);
+}
+
+py::kwargs withOption(py::kwargs kwargs, const char* name, const py::object& value)
+{
+    kwargs[name] = value;
+    return kwargs;
+}
+
+void requireMesh(const PyDocument& d)
+{
+    if (!d->hasMesh())
+        throw model::IoError(d.source(), Cli::tr("has no base model"));
+}
+
+const model::KeyViewpoint& keyNamed(const PyDocument& d, const QString& name)
+{
+    const model::KeyViewpoint* key = d->data().keyByName(name);
+    if (!key)
+        throw model::IoError(d.source(), Cli::tr("has no key named “%1”").arg(name));
+    return *key;
+}
+
+/// A line on (Python's) standard error, where the command line prints its warnings.
+void printLine(const QString& line)
+{
+    py::module_::import("sys").attr("stderr").attr("write")(toPython(line + QLatin1Char('\n')));
+}
+
+void printWarnings(const QString& file, const QStringList& warnings)
+{
+    for (const QString& w : warnings)
+        printLine(Cli::tr("warning: %1: %2").arg(file, w));
+}
+
+/// `celform info --json`'s object for the open document (project.cpp, runInfo).
+QJsonObject infoJson(const PyDocument& d)
+{
+    const model::ProjectData& data = d->data();
+    using model::vec3Json;
+    QJsonObject root{{"file", d->filePath().isEmpty() ? QString() : QFileInfo(d->filePath()).absoluteFilePath()},
+        {"format_version", model::kProjectFormatVersion}, {"current_frame", data.currentFrame},
+        {"mirror_plane", model::mirrorPlaneName(data.mirrorPlane)}};
+    if (data.baseMesh) {
+        const auto& mesh = *data.baseMesh;
+        const auto box = algo::boundingBox(mesh.vertices);
+        root.insert("base_mesh",
+            QJsonObject{{"name", data.baseMeshName}, {"vertex_count", double(mesh.vertexCount())},
+                {"triangle_count", double(mesh.faceCount())},
+                {"bounding_box", QJsonObject{{"min", vec3Json(box.min())}, {"max", vec3Json(box.max())}}},
+                {"centroid", vec3Json(algo::centroid(mesh.vertices))}, {"has_uvs", mesh.hasUvs()},
+                {"materials", double(mesh.materials.size())}, {"face_sets", double(data.faceSets.size())}});
+    } else {
+        root.insert("base_mesh", QJsonValue::Null);
+    }
+    QJsonArray drawings;
+    for (const model::Drawing& dr : data.drawings) {
+        const QSize size = model::decodedImageSize(dr.imageData, dr.imageFormat,
+            QStringLiteral("%1 (%2)").arg(d.source(), dr.name));
+        QJsonObject o{{"id", double(dr.id)}, {"name", dr.name}, {"format", dr.imageFormat}, {"width", size.width()},
+            {"height", size.height()}, {"bytes", double(dr.imageData.size())}, {"opacity", dr.opacity},
+            {"frame", dr.frame}, {"aligned", dr.aligned}};
+        if (dr.aligned)
+            o.insert("camera", model::cameraJson(dr.camera));
+        drawings.append(o);
+    }
+    root.insert("drawings", drawings);
+    QJsonArray keys;
+    for (const auto& k : data.keys) {
+        QJsonArray frames, linked;
+        for (const auto& [frame, offsets] : k.offsetsByFrame)
+            frames.append(QJsonObject{{"frame", frame}, {"moved_vertices", double(offsets.indices.size())}});
+        for (auto id : k.drawingIds)
+            if (const auto* dr = data.drawing(id))
+                linked.append(dr->name);
+        keys.append(QJsonObject{{"id", double(k.id)}, {"name", k.name}, {"direction", vec3Json(k.direction)},
+            {"enabled", k.enabled}, {"camera", model::cameraJson(k.camera)}, {"drawings", linked}, {"frames", frames}});
+    }
+    root.insert("key_viewpoints", keys);
+    const char* unspecified[] = {"dummy", "cosine", "cosine2"};
+    root.insert("blend",
+        QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", unspecified[int(data.blend.unspecified)]},
+            {"time", data.blend.time == model::TimeInterpolation::PeriodicSpline ? "periodic" : "natural"}});
+    if (data.look.renderCamera)
+        root.insert("render_camera", model::cameraJson(*data.look.renderCamera));
+    root.insert("subdivision", data.look.subdivision.level);
+    root.insert("viewport_subdivision", data.look.subdivision.viewportLevel);
+    root.insert("fps", data.time.fps);
+    root.insert("frame_range", QJsonArray{data.time.firstFrame, data.time.lastFrame});
+    root.insert("camera_keys", int(data.look.cameraPath.keys.size()));
+    root.insert("light_keys", model::lightTrackJson(data.look.lightTrack));
+    root.insert("light", model::lightJson(data.look.light));
+    return root;
+}
+
+void newFromMesh(PyDocument& d, const py::object& mesh, const py::object& fpsValue, bool sequence,
+    const std::vector<py::object>& drawings)
+{
+    const QString path = toQString(mesh);
+    double fps = 24.0;
+    if (!fpsValue.is_none()) {
+        // As `celform new --fps` reads it (project.cpp).
+        const CliOptions o(QStringLiteral("new"), py::kwargs(py::dict(py::arg("fps") = fpsValue)));
+        fps = app::parseNumber("fps", o.in().value("fps"));
+        if (!(fps > 0.0 && fps <= model::kMaxFps))
+            throw UsageError{Cli::tr("--fps must lie in (0, %1]").arg(model::kMaxFps)};
+    }
+    printWarnings(path, d->newFromMesh(path, fps, sequence));
+    for (const py::object& image : drawings)
+        guardedEdit(d, [&] { return d->drawings().importDrawing(toQString(image)); });
+}
+
+/// `celform key add` on the document (keys.cpp, runKey): options as its keywords.
+py::object addKey(PyDocument& d, const py::object& name, py::kwargs kwargs)
+{
+    const CliOptions o(QStringLiteral("key"), withOption(kwargs, "name", name));
+    const app::Invocation& in = o.in();
+    namespace co = app::camera_options;
+    if (!in.isSet("name") || in.isSet("mesh") == in.isSet("from-base"))
+        throw UsageError{Cli::tr("--name and exactly one of --mesh or --from-base are required")};
+    const QString keyName = in.value("name");
+    if (keyName.trimmed().isEmpty())
+        throw UsageError{Cli::tr("--name needs a name, not “%1”").arg(keyName)};
+    co::checkCombination(in, true);
+    const bool byView = co::byView(in);
+    const Eigen::Vector3d view = byView ? co::view(in) : Eigen::Vector3d::Zero();
+    const model::Camera explicitCamera = byView ? model::Camera{} : co::explicitCamera(in);
+    const int frame = in.isSet("frame") ? app::parseFrame("frame", in.value("frame")) : 0;
+    requireMesh(d);
+    const model::ObjectId id = guardedEdit(d, [&] {
+        const model::Camera camera = byView ? model::cameraFromView(d->data(), view) : explicitCamera;
+        std::vector<model::ObjectId> drawingIds;
+        if (in.isSet("drawing")) {
+            const model::ObjectId drawing = d->drawings().importDrawing(in.value("drawing"));
+            d->drawings().setDrawingCamera(drawing, camera);
+            drawingIds.push_back(drawing);
+        }
+        const model::ObjectId made = d->keys().createKey(keyName, camera, drawingIds, {}, frame);
+        if (in.isSet("mesh"))
+            printWarnings(in.value("mesh"),
+                d->keys().importKeyDeformation(made, model::importMesh(in.value("mesh")), in.value("mesh"), frame));
+        return made;
+    });
+    const model::KeyViewpoint& key = *d->data().key(id);
+    if (key.name != keyName.trimmed())
+        printLine(Cli::tr("warning: %1: a key named “%2” exists; the new key is named “%3”")
+                      .arg(d.source(), keyName.trimmed(), key.name));
+    return toPython(QJsonObject{{"id", double(key.id)}, {"name", key.name},
+        {"direction", model::vec3Json(key.direction)}, {"camera", model::cameraJson(key.camera)}});
+}
+
+/// `celform key set` (keys.cpp, runKeySet).
+py::object setKeyMesh(PyDocument& d, const QString& keyName, const py::object& mesh, int frame)
+{
+    const CliOptions o(QStringLiteral("key"),
+        py::kwargs(py::dict(py::arg("key") = toPython(keyName), py::arg("mesh") = mesh, py::arg("frame") = frame)));
+    const int f = app::parseFrame("frame", o.in().value("frame"));
+    requireMesh(d);
+    const model::ObjectId id = keyNamed(d, keyName).id;
+    const QString path = o.in().value("mesh");
+    guardedEdit(d, [&] { printWarnings(path, d->keys().importKeyDeformation(id, model::importMesh(path), path, f)); });
+    const model::KeyViewpoint& set = *d->data().key(id);
+    QJsonArray frames;
+    for (const auto& [k, offsets] : set.offsetsByFrame)
+        frames.append(k);
+    return toPython(QJsonObject{{"id", double(set.id)}, {"name", set.name}, {"frame", f},
+        {"moved_vertices", double(set.offsetsByFrame.at(f).indices.size())}, {"keyed_frames", frames}});
+}
+
+/// `celform brush` (keys.cpp, runBrush): one stroke of one step through the key's camera.
+py::object brush(PyDocument& d, const py::object& key, py::kwargs kwargs)
+{
+    const CliOptions o(QStringLiteral("brush"), withOption(kwargs, "key", key));
+    const app::Invocation& in = o.in();
+    if (!in.isSet("key") || !in.isSet("vertex") || !in.isSet("radius") || in.isSet("drag") == in.isSet("push"))
+        throw UsageError{Cli::tr("--key, --vertex, --radius and exactly one of --drag or --push are required")};
+    const int picked = app::parseInt("vertex", in.value("vertex"));
+    const double radius = app::parseNumber("radius", in.value("radius"));
+    if (radius <= 0)
+        throw UsageError{Cli::tr("--radius must be positive")};
+    model::BrushStep step;
+    if (in.isSet("drag")) {
+        const Eigen::VectorXd drag = app::parseFloats("drag", in.value("drag"), 2);
+        step = {model::BrushMotion::Drag, drag[0], drag[1]};
+    } else {
+        step = {model::BrushMotion::Push, app::parseFloat("push", in.value("push")), 0.0};
+    }
+    const int frame = in.isSet("frame") ? app::parseFrame("frame", in.value("frame")) : 0;
+    algo::BrushProfile profile;
+    if (in.isSet("falloff")) {
+        const std::pair<const char*, algo::BrushFalloff> curves[] = {{"paper", algo::BrushFalloff::Paper},
+            {"smooth", algo::BrushFalloff::Smooth}, {"sphere", algo::BrushFalloff::Sphere}};
+        profile.falloff = app::parseChoice(
+            in.value("falloff"), curves, Cli::tr("--falloff must be paper, smooth or sphere, not “%1”"));
+    }
+    if (in.isSet("strength")) {
+        profile.strength = app::parseNumber("strength", in.value("strength"));
+        if (!(profile.strength > 0.0 && profile.strength <= 1.0))
+            throw UsageError{Cli::tr("--strength must be in (0, 1]")};
+    }
+    const std::optional<model::MirrorPlane> chosen
+        = app::parseMirror("mirror", in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off"));
+    const model::MirrorPlane mirror = chosen.value_or(d->data().mirrorPlane);
+    const model::KeyViewpoint& k = keyNamed(d, in.value("key"));
+    const qint64 vertexCount = d->hasMesh() ? qint64(d->data().baseMesh->vertexCount()) : 0;
+    if (picked < 0 || picked >= vertexCount)
+        throw model::IoError(
+            d.source(), Cli::tr("has no vertex %1 (the base model has %2 vertices)").arg(picked).arg(vertexCount));
+    const QString keyName = k.name;
+    const model::BrushStroke stroke = guardedEdit(d, [&] {
+        model::BrushStroke s
+            = d->keys().beginBrushStroke(k.id, frame, std::uint32_t(picked), radius, k.camera, mirror, profile);
+        if (s.twinMissing)
+            printLine(Cli::tr("warning: vertex %1 has no mirror twin across the %2 plane; only its side moved")
+                          .arg(picked)
+                          .arg(model::mirrorPlaneName(mirror)));
+        d->keys().applyBrushStroke(s, step);
+        d->keys().endBrushStroke(s);
+        return s;
+    });
+    return toPython(QJsonObject{{"key", keyName}, {"picked", picked}, {"frame", frame},
+        {"moved_vertices", double(stroke.indices.size())}, {"mirror_plane", model::mirrorPlaneName(mirror)},
+        {"mirrored_vertices", double(stroke.mirrorSelection.indices.size())},
+        {"twin", stroke.mirrorSelection.indices.empty() ? -1.0 : double(stroke.mirrorSelection.picked)}});
+}
+
+/// `celform set` (look.cpp, runSet): each setting one document operation, as the editor's panels.
+void setSettings(PyDocument& d, const py::kwargs& kwargs)
+{
+    const CliOptions o(QStringLiteral("set"), kwargs);
+    const app::Invocation& in = o.in();
+    if (in.countSet({"sharpness", "unspecified", "time", "light", "style", "render-view", "subdivision",
+            "viewport-subdivision"})
+        == 0)
+        throw UsageError{Cli::tr("nothing to set")};
+    std::optional<double> sharpness;
+    if (in.isSet("sharpness")) {
+        sharpness = app::parseNumber("sharpness", in.value("sharpness"));
+        if (!(*sharpness > 0 && *sharpness <= model::kMaxSharpness))
+            throw UsageError{Cli::tr("--sharpness must be above 0 and at most %1").arg(model::kMaxSharpness)};
+    }
+    // The choices of look.cpp's parseUnspecified and parseTime (local to it), the same words.
+    const auto unspecified = app::optionalValue(in, "unspecified", [](const QString& t) {
+        const std::pair<const char*, model::UnspecifiedMode> modes[] = {{"dummy", model::UnspecifiedMode::Dummy},
+            {"cosine", model::UnspecifiedMode::Cosine}, {"cosine2", model::UnspecifiedMode::Cosine2}};
+        return app::parseChoice(t, modes, Cli::tr("--unspecified takes dummy, cosine or cosine2, not “%1”"));
+    });
+    const auto time = app::optionalValue(in, "time", [](const QString& t) {
+        const std::pair<const char*, model::TimeInterpolation> modes[] = {
+            {"natural", model::TimeInterpolation::NaturalSpline}, {"periodic", model::TimeInterpolation::PeriodicSpline}};
+        return app::parseChoice(t, modes, Cli::tr("--time takes natural or periodic, not “%1”"));
+    });
+    const auto light = app::optionalValue(in, "light", [](const QString& v) { return app::parseLight("light", v); });
+    const auto style = app::optionalValue(in, "style", [](const QString& v) { return app::parseStyle("style", v); });
+    const bool removeRenderCamera = in.value("render-view") == QLatin1String("none");
+    const auto renderView = removeRenderCamera ? std::nullopt : app::optionalValue(in, "render-view", [](const QString& v) {
+        return app::parseDirection("render-view", v);
+    });
+    const auto subdivision = app::optionalValue(
+        in, "subdivision", [](const QString& v) { return app::parseSubdivision("subdivision", v); });
+    const auto viewportSubdivision = app::optionalValue(in, "viewport-subdivision",
+        [](const QString& v) { return app::parseSubdivision("viewport-subdivision", v, true); });
+    guardedEdit(d, [&] {
+        if (subdivision || viewportSubdivision) {
+            model::SubdivisionLook s = d->data().look.subdivision;
+            s.level = subdivision.value_or(s.level);
+            s.viewportLevel = viewportSubdivision.value_or(s.viewportLevel);
+            d->look().setSubdivision(s);
+        }
+        if (sharpness)
+            d->look().setSharpness(*sharpness);
+        if (unspecified)
+            d->look().setUnspecifiedMode(*unspecified);
+        if (time)
+            d->look().setTimeInterpolation(*time);
+        if (light)
+            d->look().setLight(*light);
+        if (style)
+            d->look().setShadingStyle(*style);
+        if (removeRenderCamera) {
+            d->look().setRenderCamera(std::nullopt);
+        } else if (renderView) {
+            requireMesh(d);
+            d->look().setRenderCamera(model::cameraFromView(d->data(), *renderView, 16.0 / 9.0));
+        }
+    });
+}
+
+/// `celform camera` (camera.cpp, runCamera): a turntable, a key, clearing.
+void cameraEdit(PyDocument& d, const py::kwargs& kwargs)
+{
+    const CliOptions o(QStringLiteral("camera"), kwargs);
+    const app::Invocation& in = o.in();
+    if (in.countSet({"turntable", "key", "clear"}) != 1)
+        throw UsageError{Cli::tr("exactly one of --turntable, --key, --clear or --list is required")};
+    if (!in.isSet("turntable") && in.countSet({"axis", "elevation", "start", "start-angle"}) > 0)
+        throw UsageError{Cli::tr("--axis, --elevation, --start and --start-angle go with --turntable only")};
+    if (!in.isSet("key") && in.countSet({"view", "eye", "target", "up"}) > 0)
+        throw UsageError{Cli::tr("camera options go with --key only")};
+    model::Turntable turntable;
+    int keyFrame = 0;
+    model::RenderJob job;
+    if (in.isSet("turntable")) {
+        turntable.frames = app::parseInt("turntable", in.value("turntable"));
+        if (turntable.frames < 2 || turntable.frames > model::kMaxFramesPerRender)
+            throw UsageError{Cli::tr("--turntable takes 2 to %1 frames").arg(model::kMaxFramesPerRender)};
+        if (in.isSet("axis"))
+            turntable.axis = app::parseDirection("axis", in.value("axis"));
+        if (in.isSet("elevation"))
+            turntable.elevationDegrees = app::parseNumber("elevation", in.value("elevation"));
+        if (in.isSet("start"))
+            turntable.startFrame = app::parseFrame("start", in.value("start"));
+        if (in.isSet("start-angle"))
+            turntable.startDegrees = app::parseNumber("start-angle", in.value("start-angle"));
+        if (const QString problem = model::turntableProblem(turntable); !problem.isEmpty())
+            throw UsageError{problem};
+    }
+    if (in.isSet("key")) {
+        keyFrame = app::parseFrame("key", in.value("key"));
+        app::camera_options::checkCombination(in, true);
+        if (app::camera_options::byCamera(in))
+            job.camera = app::camera_options::explicitCamera(in);
+        else
+            job.view = app::camera_options::view(in);
+    }
+    requireMesh(d);
+    guardedEdit(d, [&] {
+        if (in.isSet("turntable")) {
+            d->animation().makeTurntable(turntable);
+        } else if (in.isSet("key")) {
+            const model::Camera camera = model::renderJobCamera(d->data(), d->data().look, job, keyFrame);
+            d->animation().setCameraKey(keyFrame, camera);
+        } else {
+            d->animation().clearCameraPath();
+        }
+    });
+}
+
+} // namespace
+
+void bindDocument(py::module_& m, py::class_<PyDocument>& c)
+{
+    c.def(py::init([](const py::object& path) {
+        auto d = std::make_unique<PyDocument>();
+        if (!path.is_none())
+            (*d)->open(toQString(path));
+        return d;
+    }),
+        py::arg("path") = py::none(), "An empty document, or the project file at path (celform.IoError when it cannot be read).");
+    c.def("open", [](PyDocument& d, const py::object& path) { d->open(toQString(path)); }, py::arg("path"),
+        "Replaces the document by a project file; unchanged when it cannot be read.");
+    c.def("new_from_mesh", &newFromMesh, py::arg("mesh"), py::arg("fps") = py::none(), py::arg("sequence") = false,
+        py::arg("drawings") = std::vector<py::object>{},
+        "`celform new`: a project on a mesh file (or an animated base), with drawings embedded.");
+    c.def("save", [](PyDocument& d, const py::object& path) {
+        const QString target = path.is_none() ? d->filePath() : toQString(path);
+        if (target.isEmpty())
+            throw UsageError{Cli::tr("--out is required")};
+        if (QFileInfo(target).suffix().compare(QLatin1String("celform"), Qt::CaseInsensitive) != 0)
+            throw UsageError{Cli::tr("--out must end in .celform, not “%1”").arg(target)};
+        py::gil_scoped_release release;
+        d->saveAs(target);
+    },
+        py::arg("path") = py::none(), "Saves atomically (keeping P.bak), to path or the document's own file.");
+    c.def_property_readonly("file_path", [](const PyDocument& d) -> py::object {
+        return d->filePath().isEmpty() ? py::object(py::none()) : py::object(toPython(d->filePath()));
+    });
+    c.def_property_readonly("modified", [](const PyDocument& d) { return d->isModified(); });
+    c.def_property("current_frame", [](const PyDocument& d) { return d->currentFrame(); },
+        [](PyDocument& d, int frame) { d->setCurrentFrame(app::parseFrame("frame", QString::number(frame))); },
+        "The playhead (not an edit).");
+    c.def("undo", [](PyDocument& d) { d->undoStack()->undo(); }, "Undoes the last edit.");
+    c.def("redo", [](PyDocument& d) { d->undoStack()->redo(); });
+    c.def_property_readonly("history", [](const PyDocument& d) {
+        QStringList steps;
+        for (int i = 0; i < d->undoStack()->index(); ++i)
+            steps << d->undoStack()->text(i);
+        return toPython(steps);
+    }, "The undo steps done, oldest first (one per edit, named as in the editor).");
+    c.def("info", [](const PyDocument& d) { return toPython(infoJson(d)); },
+        "What the project holds: the object `celform info --json` prints.");
+    c.def_property_readonly("vertices", [](const PyDocument& d) { return meshArray(d, false); },
+        "The base model's vertices (#V x 3 float32, read-only, no copy), or None.");
+    c.def_property_readonly("faces", [](const PyDocument& d) { return meshArray(d, true); },
+        "The base model's triangles (#F x 3 int32, read-only, no copy), or None.");
+    c.def_property_readonly("keys", [](const PyDocument& d) {
+        QStringList names;
+        for (const auto& k : d->data().keys)
+            names << k.name;
+        return toPython(names);
+    }, "The key viewpoints' names.");
+    c.def_property_readonly("drawings", [](const PyDocument& d) {
+        QStringList names;
+        for (const auto& dr : d->data().drawings)
+            names << dr.name;
+        return toPython(names);
+    }, "The reference drawings' names.");
+    c.def("import_drawing", [](PyDocument& d, const py::object& path) {
+        return guardedEdit(d, [&] {
+            const model::ObjectId id = d->drawings().importDrawing(toQString(path));
+            return toPython(d->data().drawing(id)->name);
+        });
+    }, py::arg("path"), "Embeds a reference drawing; returns its name.");
+    c.def("add_key", &addKey, py::arg("name"),
+        "`celform key add`: a key viewpoint. Keywords: view or eye/target/up, mesh or from_base, frame, drawing.");
+    c.def("set_key_mesh", [](PyDocument& d, const std::string& key, const py::object& mesh, int frame) {
+        return setKeyMesh(d, QString::fromStdString(key), mesh, frame);
+    }, py::arg("key"), py::arg("mesh"), py::arg("frame") = 0, "`celform key set`: a key's shape at a frame from a mesh.");
+    c.def("remove_key", [](PyDocument& d, const std::string& key) {
+        const model::ObjectId id = keyNamed(d, QString::fromStdString(key)).id;
+        guardedEdit(d, [&] { d->keys().removeKey(id); });
+    }, py::arg("key"));
+    c.def("set_key_enabled", [](PyDocument& d, const std::string& key, bool enabled) {
+        const model::ObjectId id = keyNamed(d, QString::fromStdString(key)).id;
+        guardedEdit(d, [&] { d->keys().setKeyEnabled(id, enabled); });
+    }, py::arg("key"), py::arg("enabled"));
+    c.def("brush", &brush, py::arg("key"),
+        "`celform brush`: one falloff-brush stroke. Keywords: vertex, radius, drag=(dx, dy) or push=dz, falloff, "
+        "strength, mirror, frame.");
+    c.def("set", &setSettings,
+        "`celform set`: sharpness, unspecified, time, light, style, render_view, subdivision, viewport_subdivision.");
+    c.def("camera", &cameraEdit,
+        "`celform camera`: turntable=FRAMES (axis, elevation, start, start_angle), key=F with view or eye/target/up, "
+        "or clear=True.");
+    c.def("camera_path", [](const PyDocument& d) {
+        return toPython(QJsonObject{{"keys", model::cameraPathJson(d->data().look.cameraPath)}})["keys"];
+    }, "The camera path's keys, as `celform camera --list --json` gives them.");
+
+    m.def("open", [](const py::object& path) {
+        auto d = std::make_unique<PyDocument>();
+        (*d)->open(toQString(path));
+        return d;
+    }, py::arg("path"), "Opens a project file: a Document.");
+    m.def("new", [](const py::object& mesh, const py::object& fps, bool sequence, const std::vector<py::object>& drawings) {
+        auto d = std::make_unique<PyDocument>();
+        newFromMesh(*d, mesh, fps, sequence, drawings);
+        return d;
+    }, py::arg("mesh"), py::arg("fps") = py::none(), py::arg("sequence") = false,
+        py::arg("drawings") = std::vector<py::object>{}, "`celform new`: a Document on a mesh (not saved yet).");
+}
+
+} // namespace celform::python
