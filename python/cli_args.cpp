@@ -55,6 +55,43 @@ QString scalarText(const py::handle& v)
     return QString::fromStdString(py::cast<std::string>(py::str(v)));
 }
 
+/// numpy arrays and scalars as Python lists and numbers.
+py::object plain(py::object v)
+{
+    if (py::hasattr(v, "tolist") && !py::isinstance<py::str>(v))
+        return v.attr("tolist")();
+    return v;
+}
+
+bool isSequence(const py::handle& v)
+{
+    return py::isinstance<py::tuple>(v) || py::isinstance<py::list>(v);
+}
+
+bool allNumbers(const py::handle& v)
+{
+    const py::sequence items = v.cast<py::sequence>();
+    bool numbers = py::len(items) > 0;
+    for (const py::handle item : items)
+        numbers = numbers && isNumber(item);
+    return numbers;
+}
+
+/// One option value: a scalar, or numbers joined (size: WxH; frames: A-B or A-B:STEP; else commas).
+QString valueText(const QString& name, const py::object& v)
+{
+    if (!isSequence(v) || !allNumbers(v))
+        return scalarText(v);
+    QStringList parts;
+    for (const py::handle item : v.cast<py::sequence>())
+        parts << numberText(item);
+    if (name == QLatin1String("size"))
+        return parts.join(QLatin1Char('x'));
+    if (name == QLatin1String("frames") && (parts.size() == 2 || parts.size() == 3))
+        return parts[0] + QLatin1Char('-') + parts[1] + (parts.size() == 3 ? QLatin1Char(':') + parts[2] : QString());
+    return parts.join(QLatin1Char(','));
+}
+
 } // namespace
 
 const app::SubCommand& subCommand(const QString& name)
@@ -88,33 +125,14 @@ QStringList optionWords(const app::SubCommand& command, const py::kwargs& kwargs
                 words << flag;
             continue;
         }
-        py::object v = py::reinterpret_borrow<py::object>(value);
-        if (py::hasattr(v, "tolist") && !py::isinstance<py::str>(v))
-            v = v.attr("tolist")(); // numpy arrays and scalars
-        const bool sequence = (py::isinstance<py::tuple>(v) || py::isinstance<py::list>(v));
-        if (!sequence) {
-            words << flag << scalarText(v);
+        const py::object v = plain(py::reinterpret_borrow<py::object>(value));
+        if (isSequence(v) && !allNumbers(v)) {
+            // A list of strings, paths or number tuples: the option once for each.
+            for (const py::handle item : v.cast<py::sequence>())
+                words << flag << valueText(name, plain(py::reinterpret_borrow<py::object>(item)));
             continue;
         }
-        const py::sequence items = v.cast<py::sequence>();
-        bool numbers = py::len(items) > 0;
-        for (const py::handle item : items)
-            numbers = numbers && isNumber(item);
-        if (!numbers) {
-            // A list of strings, paths or pairs: the option once for each.
-            for (const py::handle item : items)
-                words << flag << scalarText(item);
-            continue;
-        }
-        QStringList parts;
-        for (const py::handle item : items)
-            parts << numberText(item);
-        if (name == QLatin1String("size"))
-            words << flag << parts.join(QLatin1Char('x'));
-        else if (name == QLatin1String("frames") && (parts.size() == 2 || parts.size() == 3))
-            words << flag << parts[0] + QLatin1Char('-') + parts[1] + (parts.size() == 3 ? QLatin1Char(':') + parts[2] : QString());
-        else
-            words << flag << parts.join(QLatin1Char(','));
+        words << flag << valueText(name, v);
     }
     return words;
 }

@@ -100,3 +100,19 @@ def test_new_from_shared_mesh(celform, cli, shared_data, samples, tmp_path):
     doc = celform.new(mesh, drawings=[drawing])
     doc.save(tmp_path / "py.celform")
     assert (tmp_path / "py.celform").read_bytes() == (tmp_path / "cli.celform").read_bytes()
+
+
+def test_file_commands_match_command_line(celform, cli, showcase, tmp_path):
+    """patch and highlight run the command line's sub-commands on the document's file; keyword
+    values such as a list of tuples become repeated options (--sphere X,Y,Z,R --sphere ...)."""
+    copy = tmp_path / "copy.celform"
+    copy.write_bytes(showcase.read_bytes())
+    run_cli(cli, "patch", copy, "--add", "ears", "--sphere", "0.3,0.2,0,0.3", "--sphere", "0.3,0.2,0.1,0.2")
+    run_cli(cli, "highlight", copy, "--add", "shine", "--patch", "ears", "--epsilon", "0.1",
+            "--op", "rotate:30", "--op", "scale:0.5")
+    doc = celform.open(showcase)
+    doc.patch(add="ears", sphere=[(0.3, 0.2, 0, 0.3), np.array([0.3, 0.2, 0.1, 0.2])])
+    layer = doc.highlight(add="shine", patch="ears", epsilon=0.1, op=["rotate:30", "scale:0.5"])
+    assert layer["name"] == "shine" and not doc.modified
+    assert showcase.read_bytes() == copy.read_bytes()
+    assert [p["name"] for p in doc.patch(list=True)["patches"]] == ["ears"]
