@@ -194,8 +194,15 @@ private:
         return {QStringLiteral("set"), m_project, QStringLiteral("--sharpness"), number(sharpness)};
     }
 
+    /// The start of the hidden temporary name a save writes or links its new version under
+    /// (".NAME." for the project NAME.celform).
+    QString hiddenPrefix() const
+    {
+        return QLatin1Char('.') + QFileInfo(m_project).completeBaseName() + QLatin1Char('.');
+    }
+
     /// Files a killed save left beside the project, removed after counting: complete new versions
-    /// with a random suffix, and a new backup under its temporary name (P.bak.new).
+    /// under their hidden temporary name, and a new backup under its temporary name (P.bak.new).
     struct Leftovers {
         int versions = 0;
         int backups = 0;
@@ -203,12 +210,15 @@ private:
     Leftovers removeLeftovers()
     {
         const QString base = QFileInfo(m_project).fileName();
+        const QString hidden = hiddenPrefix();
         Leftovers found;
-        for (const QString& name : QDir(m_dir.path()).entryList(QDir::Files)) {
-            if (name == base || name == base + QStringLiteral(".bak") || !name.startsWith(base + QLatin1Char('.')))
+        for (const QString& name : QDir(m_dir.path()).entryList(QDir::Files | QDir::Hidden)) {
+            const bool version = name.startsWith(hidden);
+            const bool backup = name.startsWith(base + QStringLiteral(".bak")) && name != base + QStringLiteral(".bak");
+            if (!version && !backup)
                 continue;
             QFile::remove(m_dir.filePath(name));
-            ++(name.startsWith(base + QStringLiteral(".bak")) ? found.backups : found.versions);
+            ++(backup ? found.backups : found.versions);
         }
         return found;
     }
@@ -279,7 +289,7 @@ private:
         else if (std::any_of(openBeforeKill->begin(), openBeforeKill->end(), [this](const QString& f) {
                      // An unnamed (O_TMPFILE: "DIR/#inode (deleted)") or a named temporary file.
                      return (f.startsWith(m_dir.path()) && f.contains(QLatin1String("/#")))
-                         || (f.startsWith(m_project + QLatin1Char('.')) && !f.endsWith(QLatin1String(".bak")));
+                         || f.startsWith(m_dir.filePath(hiddenPrefix()));
                  }))
             phase = Phase::Writing;
         else if (openBeforeKill->contains(m_project))
@@ -443,7 +453,7 @@ private slots:
             if (!saving)
                 saving = name == QLatin1String("openat")
                     && ((args.contains(QLatin1String("O_TMPFILE")) && args.contains(dirName))
-                        || (args.contains(m_project + QLatin1Char('.')) && args.contains(QLatin1String("O_CREAT"))));
+                        || (args.contains(m_dir.filePath(hiddenPrefix())) && args.contains(QLatin1String("O_CREAT"))));
             else if (name != QLatin1String("openat"))
                 steps.emplace_back(name, occurrence);
         }

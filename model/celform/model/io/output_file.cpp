@@ -56,27 +56,48 @@ OutputFile::OutputFile(const QString& path)
             throw IoError(m_path, writeProblem(errno));
         return;
     }
-    // Hidden, named after the target, the host, the process and a counter; never the target's name.
-    static std::atomic<unsigned> counter{0};
+    // An unnamed file in the target's folder (O_TMPFILE): a process killed while writing leaves
+    // nothing behind; it gets a name just before the rename. Named from the start where the file
+    // system or a missing /proc does not allow that.
     const QFileInfo info(m_target);
-    const QString owner = QStringLiteral("%1-%2").arg(QSysInfo::machineHostName()).arg(::getpid());
-    for (int attempt = 0;; ++attempt) {
-        m_temporary = info.dir().filePath(QStringLiteral(".%1.%2-%3.tmp.%4")
-                                              .arg(info.completeBaseName(), owner)
-                                              .arg(counter.fetch_add(1))
-                                              .arg(info.suffix()));
-        // 0666 less the umask, as a new file would be; a replaced file's mode below.
-        m_fd = ::open(QFile::encodeName(m_temporary).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    const QByteArray folder = QFile::encodeName(info.absolutePath());
+#ifdef O_TMPFILE
+    if (::access("/proc/self/fd", X_OK) == 0) {
+        m_fd = ::open(folder.constData(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
         if (m_fd >= 0)
-            break;
-        const int error = errno;
-        if (error != EEXIST || attempt >= 100) {
-            m_temporary.clear();
-            throw IoError(m_path, writeProblem(error));
+            m_unnamed = true;
+        else if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL && errno != ENOENT)
+            throw IoError(m_path, writeProblem(errno));
+    }
+#endif
+    if (!m_unnamed) {
+        for (int attempt = 0;; ++attempt) {
+            m_temporary = temporaryName();
+            // 0666 less the umask, as a new file would be; a replaced file's mode below.
+            m_fd = ::open(QFile::encodeName(m_temporary).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            if (m_fd >= 0)
+                break;
+            const int error = errno;
+            if (error != EEXIST || attempt >= 100) {
+                m_temporary.clear();
+                throw IoError(m_path, writeProblem(error));
+            }
         }
     }
     if (exists && ::fchmod(m_fd, existing.st_mode & 07777) != 0)
         fail(errno);
+}
+
+QString OutputFile::temporaryName() const
+{
+    // Hidden, named after the target, the host, the process and a counter; never the target's name.
+    static std::atomic<unsigned> counter{0};
+    const QFileInfo info(m_target);
+    const QString owner = QStringLiteral("%1-%2").arg(QSysInfo::machineHostName()).arg(::getpid());
+    return info.dir().filePath(QStringLiteral(".%1.%2-%3.tmp.%4")
+                                   .arg(info.completeBaseName(), owner)
+                                   .arg(counter.fetch_add(1))
+                                   .arg(info.suffix()));
 }
 
 OutputFile::~OutputFile()
@@ -117,8 +138,25 @@ void OutputFile::commit(Durability durability)
         throw IoError(m_path, writeProblem(EBADF));
     // A device or a pipe may not sync (EINVAL, EROFS): only a regular file's sync is required.
     if (durability == Durability::Synced && ::fsync(m_fd) != 0
-        && (!m_temporary.isEmpty() || (errno != EINVAL && errno != EROFS)))
+        && (m_unnamed || !m_temporary.isEmpty() || (errno != EINVAL && errno != EROFS)))
         fail(errno);
+    // The unnamed file gets its hidden name now, from its descriptor; a kill from here to the
+    // rename leaves that file, complete, beside the target.
+    if (m_unnamed) {
+        const QByteArray self = QByteArrayLiteral("/proc/self/fd/") + QByteArray::number(m_fd);
+        for (int attempt = 0;; ++attempt) {
+            m_temporary = temporaryName();
+            if (::linkat(AT_FDCWD, self.constData(), AT_FDCWD, QFile::encodeName(m_temporary).constData(),
+                    AT_SYMLINK_FOLLOW)
+                == 0)
+                break;
+            const int error = errno;
+            m_temporary.clear();
+            if (error != EEXIST || attempt >= 100)
+                fail(error);
+        }
+        m_unnamed = false;
+    }
     // close() may report a write the file system deferred (NFS, quotas).
     const int fd = m_fd;
     m_fd = -1;
@@ -137,6 +175,7 @@ void OutputFile::cancel()
         ::close(m_fd);
         m_fd = -1;
     }
+    m_unnamed = false;
     if (!m_temporary.isEmpty()) {
         ::unlink(QFile::encodeName(m_temporary).constData());
         m_temporary.clear();

@@ -19,7 +19,8 @@ enum class Durability {
     Renamed,
 };
 
-/// A file written to a hidden temporary file beside its target, each write checked, then flushed
+/// A file written to a temporary file in its target's folder (unnamed, O_TMPFILE, until it is
+/// complete; else hidden), each write checked, then flushed
 /// to the disk, closed (checked) and renamed over the target. Until commit() the target is as it
 /// was; a failure or a destruction without commit() removes the temporary file. A target that exists
 /// and is no regular file (a device such as /dev/null or /dev/full, a named pipe) is written in place,
@@ -54,10 +55,12 @@ public:
 
 private:
     [[noreturn]] void fail(int error);
+    [[nodiscard]] QString temporaryName() const;
 
     QString m_path;
     QString m_target;
-    QString m_temporary; // empty when written in place
+    QString m_temporary; // the named temporary file; empty while unnamed and when written in place
+    bool m_unnamed = false; // an O_TMPFILE file, named at commit()
     int m_fd = -1;
     qint64 m_size = 0;
 };
