@@ -120,7 +120,8 @@ int runInfo(const Invocation& in)
         const algo::BaseAnimation& a = *data.baseAnimation;
         root.insert("base_animation",
             QJsonObject{{"first_frame", a.firstFrame}, {"frame_count", a.frameCount},
-                {"morph_targets", int(a.morphTargets.size())}, {"joints", a.jointCount}});
+                {"morph_targets", int(a.morphTargets.size())}, {"joints", a.jointCount},
+                {"vertex_frames", double(a.storedFrameCount(data.baseMesh->vertexCount()))}});
     } else {
         root.insert("base_animation", QJsonValue::Null);
     }

@@ -388,6 +388,34 @@ private slots:
         QVERIFY2(worst < 1e-5, qPrintable(QString::number(worst)));
         validate(job.output);
 
+        // A vertex sequence (issue 27: stored frames, no morph targets of its own): each stored
+        // frame becomes a target weighted 1 where it is shown, and the glTF plays as the cache.
+        auto sequence = std::make_shared<algo::BaseAnimation>();
+        sequence->frameCount = 6;
+        sequence->vertexFrames.resize(3 * mesh->vertexCount(), 3);
+        for (Eigen::Index k = 0; k < 3; ++k)
+            sequence->vertexFrames.middleRows(k * mesh->vertexCount(), mesh->vertexCount())
+                = mesh->vertices * (1.0f + 0.1f * float(k));
+        sequence->vertexFrameOfSample = {0, 1, 1, 2, 2, 0};
+        QVERIFY(sequence->problem(mesh->vertexCount()).empty());
+        data.baseAnimation = sequence;
+        job.format = model::ExportFormat::Pc2;
+        job.output = m_dir.filePath(QStringLiteral("sequence.pc2"));
+        QCOMPARE(model::exportProject(data, QStringLiteral("sequence"), job).frames, 6);
+        job.format = model::ExportFormat::Glb;
+        job.output = m_dir.filePath(QStringLiteral("sequence.glb"));
+        QVERIFY(model::exportProject(data, QStringLiteral("sequence"), job).warnings.isEmpty());
+        const tinygltf::Model seq = loadGltf(job.output, err);
+        QVERIFY2(!seq.meshes.empty(), err.c_str());
+        QCOMPARE(seq.meshes[0].primitives[0].targets.size(), std::size_t(4)); // the key, then 3 stored frames
+        QCOMPARE(seq.meshes[0].extras.Get("targetNames").Get(3).Get<std::string>(), std::string("base:frame:2"));
+        const double seqWorst = gltfAgainstCache(seq, readPc2(m_dir.filePath(QStringLiteral("sequence.pc2"))));
+        QVERIFY2(seqWorst < 1e-5, qPrintable(QString::number(seqWorst)));
+        validate(job.output);
+        data.baseAnimation = animation;
+        job.format = model::ExportFormat::Glb;
+        job.output = m_dir.filePath(QStringLiteral("animated.glb"));
+
         // A skinned base: glTF says what it leaves out.
         auto skinned = std::make_shared<algo::BaseAnimation>(*animation);
         skinned->jointCount = 1;

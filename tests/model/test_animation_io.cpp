@@ -3,6 +3,7 @@
 // with the file named. The glTF files are built here with tinygltf's writer.
 #include "celform/model/io/animation_io.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/io/project_file.h"
 #include "gltf_buffer_fixture.h"
 #include "io_test_support.h"
 #include "test_support.h"
@@ -10,6 +11,7 @@
 #include <tiny_gltf.h>
 
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QtTest/QtTest>
 
@@ -22,6 +24,10 @@ using celform::model::AnimatedImport;
 using celform::model::IoError;
 using celform::model::isAnimatedBaseFile;
 using celform::model::readAnimatedBase;
+using celform::model::loadProject;
+using celform::model::newAnimatedProject;
+using celform::model::ProjectData;
+using celform::model::saveProject;
 
 namespace {
 
@@ -279,6 +285,7 @@ private slots:
     void sequence_data();
     void sequence();
     void sequenceGaps();
+    void sequenceMemoryIsLinear();
     void sequenceMismatch_data();
     void sequenceMismatch();
     void badFiles_data();
@@ -539,10 +546,13 @@ void TestAnimationIo::sequence()
     QCOMPARE(r.animation.frameCount, 3);
     QCOMPARE(r.mesh->faceCount(), 2);
     CELFORM_COMPARE_POSITIONS(r.mesh->vertices, frame0);
-    QCOMPARE(r.animation.morphTargets.size(), std::size_t(2));
-    CELFORM_COMPARE_POSITIONS(r.animation.morphTargets[0], Positions(frame1 - frame0));
-    CELFORM_COMPARE_POSITIONS(r.animation.morphTargets[1], Positions(frame2 - frame0));
-    QCOMPARE(r.animation.morphWeights, (std::vector<float>{0, 0, 1, 0, 0, 1}));
+    // Issue 27: stored as what it is, one position array per file (no morph targets).
+    QVERIFY(r.animation.morphTargets.empty());
+    QVERIFY(r.animation.morphWeights.empty());
+    QCOMPARE(r.animation.storedFrameCount(4), Eigen::Index(3));
+    CELFORM_COMPARE_POSITIONS(Positions(r.animation.vertexFrames.middleRows(4, 4)), frame1);
+    QCOMPARE(r.animation.vertexFrameOfSample, (std::vector<std::int32_t>{0, 1, 2}));
+    QVERIFY(r.animation.problem(4).empty());
     Positions out;
     r.animation.evaluate(r.mesh->vertices, 1, out);
     CELFORM_COMPARE_POSITIONS(out, frame1);
@@ -586,6 +596,41 @@ void TestAnimationIo::sequenceGaps()
     } catch (const IoError& e) {
         QVERIFY2(e.problem().contains(QStringLiteral("from 0 to 9999999")), qPrintable(e.message()));
     }
+}
+
+// Issue 27, item 6: a sequence was one morph target per file with one-hot weights, so its weights
+// grew with the square of its length (21,000 three-vertex frames made a 1.77 GB project). Now its
+// memory and its project file are linear: 3,000 frames of 4 vertices hold 3,000 x 4 positions and
+// one frame number per sample, and the project stays within a few bytes per coordinate.
+void TestAnimationIo::sequenceMemoryIsLinear()
+{
+    QTemporaryDir dir;
+    constexpr int kFrames = 3000;
+    Positions shape(4, 3);
+    shape << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+    for (int n = 0; n < kFrames; ++n) {
+        shape(2, 2) = float(n) * 0.001f;
+        const QString name = QStringLiteral("long_%1.obj").arg(n, 5, 10, QLatin1Char('0'));
+        writeFile(dir, name, squareFrame(name, shape));
+    }
+    CELFORM_IMPORT_OR_FAIL(r, readAnimatedBase(dir.filePath(QStringLiteral("long_#####.obj")), 24.0))
+    QCOMPARE(r.animation.frameCount, kFrames);
+    QCOMPARE(r.animation.vertexFrames.rows(), Eigen::Index(kFrames) * 4);
+    QCOMPARE(r.animation.vertexFrameOfSample.size(), std::size_t(kFrames));
+    QVERIFY(r.animation.morphWeights.empty());
+    Positions out;
+    r.animation.evaluate(r.mesh->vertices, 1234, out);
+    QCOMPARE(out(2, 2), 1234 * 0.001f);
+
+    // One-hot weights would be kFrames^2 floats (36 MB) in the file alone; the positions are
+    // kFrames x 4 x 12 bytes (144 KB) and the frame numbers 12 KB.
+    const QString project = dir.filePath(QStringLiteral("long.celform"));
+    const ProjectData data = newAnimatedProject(std::move(r), QStringLiteral("long_#####.obj"));
+    saveProject(data, project);
+    const qint64 size = QFileInfo(project).size();
+    QVERIFY2(size < 400 * 1024, qPrintable(QStringLiteral("%1 bytes").arg(size)));
+    const ProjectData read = loadProject(project);
+    QVERIFY(read.baseAnimation && *read.baseAnimation == *data.baseAnimation);
 }
 
 void TestAnimationIo::sequenceMismatch_data()

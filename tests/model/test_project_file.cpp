@@ -449,6 +449,46 @@ private slots:
         }
     }
 
+    void oneHotSequenceOfFormat3OpensAsVertexFrames()
+    {
+        // Issue 27, item 6: formats 2 and 3 stored a vertex sequence as one morph target per later
+        // file with one-hot weights. Such a file opens as vertex frames giving the same positions
+        // at every frame, and is saved back linearly; a real blend of targets stays as it is.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("old-sequence.celform"));
+        ProjectData data = richProject();
+        const algo::Positions& rest = data.baseMesh->vertices;
+        auto old = std::make_shared<algo::BaseAnimation>();
+        old->firstFrame = 2;
+        old->frameCount = 4; // samples: rest, target 0, target 0 (a missing file), target 1
+        old->morphTargets = {algo::Positions::Constant(5, 3, 0.25f), algo::Positions::Constant(5, 3, -0.5f)};
+        old->morphTargets[1](3, 1) = 0.125f;
+        old->morphWeights = {0, 0, 1, 0, 1, 0, 0, 1};
+        data.baseAnimation = old;
+        saveProject(data, path);
+        editManifest(path, [](QJsonObject& m) { m.insert(QStringLiteral("format_version"), 3); });
+        const ProjectData read = loadProject(path);
+        QVERIFY(read.baseAnimation);
+        const algo::BaseAnimation& a = *read.baseAnimation;
+        QVERIFY(a.morphTargets.empty() && a.morphWeights.empty());
+        QCOMPARE(a.storedFrameCount(5), Eigen::Index(3));
+        QCOMPARE(a.vertexFrameOfSample, (std::vector<std::int32_t>{0, 1, 1, 2}));
+        algo::Positions before, after;
+        for (int frame = 0; frame <= 7; ++frame) {
+            old->evaluate(rest, frame, before);
+            a.evaluate(read.baseMesh->vertices, frame, after);
+            QVERIFY2(before == after, qPrintable(QStringLiteral("frame %1").arg(frame)));
+        }
+        saveProject(read, path);
+        QVERIFY(*loadProject(path).baseAnimation == a);
+
+        // Weights of 0.5: a blend, kept as morph targets.
+        old->morphWeights = {0, 0, 0.5f, 0, 1, 0, 0, 1};
+        saveProject(data, path);
+        editManifest(path, [](QJsonObject& m) { m.insert(QStringLiteral("format_version"), 3); });
+        QVERIFY(*loadProject(path).baseAnimation == *old);
+    }
+
     void lightTrackIsStoredAndOptional()
     {
         // issue 26: the light track is saved (format 3) and files without it (formats 1 and 2)
@@ -464,7 +504,7 @@ private slots:
         QCOMPARE(read.look.lightTrack, data.look.lightTrack);
         QCOMPARE(read.look.light, data.look.light);
         editManifest(path, [](QJsonObject& m) {
-            QCOMPARE(m.value(QStringLiteral("format_version")).toInt(), 3);
+            QCOMPARE(m.value(QStringLiteral("format_version")).toInt(), kProjectFormatVersion);
             QJsonObject look = m.value(QStringLiteral("look")).toObject();
             look.remove(QStringLiteral("light_keys"));
             m.insert(QStringLiteral("look"), look);

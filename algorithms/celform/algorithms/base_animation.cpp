@@ -41,6 +41,19 @@ std::string BaseAnimation::problem(Eigen::Index vertexCount) const
         if (!morphTargets[t].allFinite())
             return "morph target " + std::to_string(t) + " has a coordinate that is not a finite number";
     }
+    if (hasVertexFrames() || !vertexFrameOfSample.empty()) {
+        if (vertexCount <= 0 || vertexFrames.rows() % vertexCount != 0)
+            return "the vertex frames do not hold whole frames of " + std::to_string(vertexCount) + " vertices";
+        if (vertexFrameOfSample.size() != std::size_t(frameCount))
+            return "the vertex frames do not name a stored frame for every sample";
+        const Eigen::Index stored = storedFrameCount(vertexCount);
+        for (std::size_t s = 0; s < vertexFrameOfSample.size(); ++s)
+            if (vertexFrameOfSample[s] < 0 || vertexFrameOfSample[s] >= stored)
+                return "sample " + std::to_string(s) + " shows vertex frame " + std::to_string(vertexFrameOfSample[s])
+                    + " of " + std::to_string(stored);
+        if (!vertexFrames.allFinite())
+            return "a vertex frame has a coordinate that is not a finite number";
+    }
     if (morphWeights.size() != morphTargets.size() * std::size_t(frameCount))
         return "the morph weights do not cover every target at every frame";
     if (!std::all_of(morphWeights.begin(), morphWeights.end(), [](float w) { return std::isfinite(w); }))
@@ -78,8 +91,12 @@ void BaseAnimation::evaluate(const Positions& rest, int frame, Positions& out) c
     const std::size_t s = std::size_t(sampleOf(frame));
     const std::size_t targets = morphTargets.size();
     const Eigen::Index n = rest.rows();
-    // Morph targets first, whole arrays at a time (only the targets weighted at this sample).
-    out = rest;
+    // The sample's stored frame of a vertex sequence, or the rest positions; then the morph
+    // targets, whole arrays at a time (only the targets weighted at this sample).
+    if (hasVertexFrames())
+        out = vertexFrames.middleRows(Eigen::Index(vertexFrameOfSample[s]) * n, n);
+    else
+        out = rest;
     for (std::size_t t = 0; t < targets; ++t) {
         const float w = morphWeights[s * targets + t];
         if (w == 0.0f)
@@ -107,10 +124,12 @@ void BaseAnimation::evaluate(const Positions& rest, int frame, Positions& out) c
 
 Eigen::Vector3f BaseAnimation::evaluateVertex(const Positions& rest, int frame, Eigen::Index v) const
 {
-    Eigen::Vector3f p = rest.row(v).transpose();
     if (frameCount <= 0)
-        return p;
+        return rest.row(v).transpose();
     const std::size_t s = std::size_t(sampleOf(frame));
+    Eigen::Vector3f p = hasVertexFrames()
+        ? Eigen::Vector3f(vertexFrames.row(Eigen::Index(vertexFrameOfSample[s]) * rest.rows() + v).transpose())
+        : Eigen::Vector3f(rest.row(v).transpose());
     const std::size_t targets = morphTargets.size();
     if (!skinned()) {
         // In evaluate()'s order: the targets added one after another.
@@ -135,7 +154,9 @@ Eigen::Vector3f BaseAnimation::evaluateVertex(const Positions& rest, int frame, 
 
 bool BaseAnimation::operator==(const BaseAnimation& o) const
 {
-    return firstFrame == o.firstFrame && frameCount == o.frameCount && morphTargets == o.morphTargets
+    return firstFrame == o.firstFrame && frameCount == o.frameCount && vertexFrames.rows() == o.vertexFrames.rows()
+        && (vertexFrames.rows() == 0 || vertexFrames == o.vertexFrames)
+        && vertexFrameOfSample == o.vertexFrameOfSample && morphTargets == o.morphTargets
         && morphWeights == o.morphWeights && joints == o.joints && jointWeights == o.jointWeights
         && jointCount == o.jointCount && skinMatrices == o.skinMatrices;
 }

@@ -231,6 +231,20 @@ void writeGltf(const ProjectData& data, const QString& source, const ExportJob& 
                     builder.addFloats(
                         deltas.data(), vertexCount, TINYGLTF_TYPE_VEC3, 3, TINYGLTF_TARGET_ARRAY_BUFFER, true)}});
             }
+        // A vertex sequence's stored frames: glTF has no vertex caches, so each is a morph target
+        // (its displacement from the rest positions) weighted 1 at the samples that show it.
+        if (animated && data.baseAnimation->hasVertexFrames()) {
+            const algo::BaseAnimation& anim = *data.baseAnimation;
+            const Eigen::Index n = mesh.vertexCount();
+            for (Eigen::Index k = 0; k < anim.storedFrameCount(n); ++k) {
+                dense = anim.vertexFrames.middleRows(k * n, n) - mesh.vertices;
+                const std::vector<float> deltas = gather(dense, split);
+                targetNames.push_back("base:frame:" + std::to_string(k));
+                shared.targets.push_back({{"POSITION",
+                    builder.addFloats(
+                        deltas.data(), vertexCount, TINYGLTF_TYPE_VEC3, 3, TINYGLTF_TARGET_ARRAY_BUFFER, true)}});
+            }
+        }
     }
     const std::size_t keyTargets = targetOfKey.size();
     const std::size_t targetCount = targetNames.size();
@@ -311,6 +325,8 @@ void writeGltf(const ProjectData& data, const QString& source, const ExportJob& 
             const std::size_t sample = std::size_t(anim.sampleOf(walk.frame()));
             for (std::size_t t = 0; t < morphs; ++t)
                 weights[row + keyTargets + t] = anim.morphWeights[sample * morphs + t];
+            if (anim.hasVertexFrames())
+                weights[row + keyTargets + morphs + std::size_t(anim.vertexFrameOfSample[sample])] = 1.0f;
         }
         ++result.frames;
     }

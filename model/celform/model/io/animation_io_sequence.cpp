@@ -1,6 +1,7 @@
 // A numbered mesh sequence (walk_0001.obj, walk_0002.obj, ...) as an animated base: the first
-// file is the rest mesh, each later file a morph target with a one-hot weight at its frame, as
-// algo::BaseAnimation stores vertex sequences. Each file is read by mesh_io's reader table. The
+// file is the rest mesh, and every file's positions are one stored frame of the animation's vertex
+// frames (algo::BaseAnimation), so memory is linear in the sequence. Each file is read by mesh_io's
+// reader table. The
 // numbers are kept as frames, counted from the first file's: a missing number holds the frame
 // before it, with a warning naming the missing numbers (issue 27).
 #include "celform/model/io/animation_io_common.h"
@@ -154,8 +155,8 @@ AnimatedImport readMeshSequence(const QString& path, double fps)
     MeshImport first;
     meshio::readMeshInOrder(frames[0].path, first);
     const Eigen::Index vertexCount = first.mesh.vertexCount();
-    const auto targets = static_cast<std::int64_t>(frames.size()) - 1;
-    if (targets * (vertexCount * 3 + range) > kMaxAnimationFloats)
+    const auto stored = static_cast<std::int64_t>(frames.size());
+    if (stored * vertexCount * 3 + range > kMaxAnimationFloats)
         throw IoError(path,
             AnimationIo::tr("%1 frames of %2 vertices are more than Celform can hold")
                 .arg(frames.size())
@@ -166,19 +167,20 @@ AnimatedImport readMeshSequence(const QString& path, double fps)
     algo::BaseAnimation& anim = out.animation;
     anim.firstFrame = 0;
     anim.frameCount = static_cast<int>(range);
-    anim.morphTargets.reserve(std::size_t(targets));
-    // One target per later file, weight 1 at its own sample and at the missing numbers after it
-    // (sample-major weights); the first file's samples are the rest mesh, all weights 0.
-    anim.morphWeights.assign(std::size_t(range) * std::size_t(targets), 0.0f);
-    for (std::size_t k = 1; k < frames.size(); ++k) {
+    // Each file one stored frame; each sample shows the file of its number, or the one before it
+    // for a missing number.
+    anim.vertexFrames.resize(stored * vertexCount, 3);
+    anim.vertexFrameOfSample.resize(std::size_t(range));
+    for (std::size_t k = 0; k < frames.size(); ++k) {
         const qint64 end = k + 1 < frames.size() ? frames[k + 1].number : frames.back().number + 1;
         for (qint64 n = frames[k].number; n < end; ++n)
-            anim.morphWeights[std::size_t(n - frames.front().number) * std::size_t(targets) + (k - 1)] = 1.0f;
+            anim.vertexFrameOfSample[std::size_t(n - frames.front().number)] = std::int32_t(k);
     }
     if (const QString missing = missingNumbers(frames); !missing.isEmpty())
         out.warnings << AnimationIo::tr(
             "the sequence has no file numbered %1; each missing number holds the frame before it")
                             .arg(missing);
+    anim.vertexFrames.topRows(vertexCount) = first.mesh.vertices;
     const QString firstName = QFileInfo(frames[0].path).fileName();
     for (std::size_t k = 1; k < frames.size(); ++k) {
         MeshImport frame;
@@ -192,8 +194,7 @@ AnimatedImport readMeshSequence(const QString& path, double fps)
         const QString faces = faceDifference(frame.mesh.faces, first.mesh.faces, firstName);
         if (!faces.isEmpty())
             throw IoError(frames[k].path, faces);
-        frame.mesh.vertices -= first.mesh.vertices;
-        anim.morphTargets.push_back(std::move(frame.mesh.vertices));
+        anim.vertexFrames.middleRows(Eigen::Index(k) * vertexCount, vertexCount) = frame.mesh.vertices;
     }
     out.mesh = std::make_shared<algo::TriMesh>(std::move(first.mesh));
     return out;

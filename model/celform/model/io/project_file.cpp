@@ -222,13 +222,19 @@ QJsonObject lookJson(const Look& look)
 }
 
 /// The animated base (algo::BaseAnimation) as manifest entries and data blocks.
-QJsonObject baseAnimationJson(const algo::BaseAnimation& a, ChunkWriter& chunks)
+QJsonObject baseAnimationJson(const algo::BaseAnimation& a, Eigen::Index vertexCount, ChunkWriter& chunks)
 {
     QJsonArray targets;
     for (std::size_t t = 0; t < a.morphTargets.size(); ++t)
         targets.append(chunks.addMatrix(QStringLiteral("animation/morph_targets/%1").arg(t), a.morphTargets[t]));
     QJsonObject out{{"first_frame", a.firstFrame}, {"frame_count", a.frameCount}, {"morph_targets", targets},
         {"morph_weights", chunks.addVector("animation/morph_weights", a.morphWeights)}, {"joint_count", a.jointCount}};
+    if (a.hasVertexFrames()) {
+        // Format 4: a vertex sequence's frames in one block, and the frame each sample shows.
+        out.insert("vertex_frame_count", double(a.storedFrameCount(vertexCount)));
+        out.insert("vertex_frames", chunks.addMatrix("animation/vertex_frames", a.vertexFrames));
+        out.insert("vertex_frame_of_sample", chunks.addVector("animation/vertex_frame_of_sample", a.vertexFrameOfSample));
+    }
     if (a.skinned()) {
         out.insert("joints", chunks.addVector("animation/joints", a.joints));
         out.insert("joint_weights", chunks.addVector("animation/joint_weights", a.jointWeights));
@@ -270,7 +276,7 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
         m.insert("face_sets", sets);
         root.insert("base_mesh", m);
         if (data.animated())
-            root.insert("base_animation", baseAnimationJson(*data.baseAnimation, chunks));
+            root.insert("base_animation", baseAnimationJson(*data.baseAnimation, mesh->vertexCount(), chunks));
     }
 
     QJsonArray drawings;

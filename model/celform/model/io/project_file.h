@@ -12,7 +12,7 @@ namespace celform::model {
 
 /// The format version this build writes; it reads this and every older one.
 /// 2: scene time, camera paths and animated bases. 3: the light track (look.light_keys).
-constexpr int kProjectFormatVersion = 3;
+constexpr int kProjectFormatVersion = 4;
 
 /// A 3D vector as the project file stores it, [x, y, z]; the command line's JSON uses the same form.
 QJsonArray vec3Json(const Eigen::Vector3d& v);

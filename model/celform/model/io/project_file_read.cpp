@@ -445,6 +445,15 @@ std::shared_ptr<const algo::BaseAnimation> readBaseAnimation(
         r.readMatrix(entry, "block", mesh.vertexCount(), a->morphTargets[std::size_t(t)]);
     }
     r.readVector(o, "morph_weights", qint64(targets.size()) * a->frameCount, a->morphWeights);
+    if (o.contains(QLatin1String("vertex_frames"))) {
+        // Format 4. The samples' frame numbers first: the block's size, checked against the
+        // vertex count, then gives the number of stored frames.
+        r.readVector(o, "vertex_frame_of_sample", a->frameCount, a->vertexFrameOfSample);
+        const qint64 stored = r.count(o, "vertex_frame_count");
+        if (stored < 1 || stored > a->frameCount)
+            r.corrupt(ProjectFile::tr("the base animation's vertex frames are out of range"));
+        r.readMatrix(o, "vertex_frames", Eigen::Index(stored) * mesh.vertexCount(), a->vertexFrames);
+    }
     a->jointCount = int(r.count(o, "joint_count"));
     if (a->jointCount > 0) {
         if (a->jointCount > 65536)
@@ -459,6 +468,41 @@ std::shared_ptr<const algo::BaseAnimation> readBaseAnimation(
     if (!problem.empty())
         r.corrupt(ProjectFile::tr("the base animation is invalid: %1").arg(QString::fromStdString(problem)));
     return a;
+}
+
+/// Files before format 4 held a vertex sequence as one morph target per file after the first,
+/// each with a one-hot weight (memory quadratic in the sequence's length, issue 27). Such an
+/// animation becomes vertex frames holding the positions it evaluated to (rest + target, in
+/// floats, as BaseAnimation::evaluate() added them); any other animation is returned as it is.
+std::shared_ptr<const algo::BaseAnimation> vertexFramesFromOneHotMorphs(
+    std::shared_ptr<const algo::BaseAnimation> a, const algo::Positions& rest)
+{
+    const std::size_t targets = a->morphTargets.size();
+    if (targets == 0 || a->skinned() || a->hasVertexFrames())
+        return a;
+    std::vector<std::int32_t> shows(std::size_t(a->frameCount), 0);
+    for (std::size_t s = 0; s < shows.size(); ++s)
+        for (std::size_t t = 0; t < targets; ++t) {
+            const float w = a->morphWeights[s * targets + t];
+            if (w == 0.0f)
+                continue;
+            if (w != 1.0f || shows[s] != 0)
+                return a; // a real blend of targets: kept as morphs
+            shows[s] = std::int32_t(t + 1);
+        }
+    auto out = std::make_shared<algo::BaseAnimation>();
+    out->firstFrame = a->firstFrame;
+    out->frameCount = a->frameCount;
+    const Eigen::Index n = rest.rows();
+    out->vertexFrames.resize(Eigen::Index(targets + 1) * n, 3);
+    out->vertexFrames.topRows(n) = rest;
+    for (std::size_t t = 0; t < targets; ++t) {
+        auto frame = out->vertexFrames.middleRows(Eigen::Index(t + 1) * n, n);
+        frame = rest;
+        frame.noalias() += a->morphTargets[t];
+    }
+    out->vertexFrameOfSample = std::move(shows);
+    return out;
 }
 
 ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QString& path, DrawingImages images)
@@ -670,6 +714,8 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
         if (!data.baseMesh)
             r.corrupt(ProjectFile::tr("the base animation has no base model"));
         data.baseAnimation = readBaseAnimation(r, r.object(root, "base_animation"), *data.baseMesh);
+        if (root.value(QLatin1String("format_version")).toInt() < 4)
+            data.baseAnimation = vertexFramesFromOneHotMorphs(std::move(data.baseAnimation), data.baseMesh->vertices);
     }
     // Last, once the rest is known to be sound, and together: the drawings decoded in a child
     // process (PSD, TIFF, ...) share one, which loads OpenImageIO once.
