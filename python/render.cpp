@@ -156,16 +156,14 @@ py::object renderToFiles(PyDocument& d, const model::RenderJob& job, const py::o
     FrameList listener;
     const model::ProjectData& data = d->data();
     const QString source = d.source();
-    std::optional<model::RenderFrameError> failed;
-    {
-        py::gil_scoped_release release;
+    const std::optional<model::RenderFrameError> failed = runJob(progress, [&]() -> std::optional<model::RenderFrameError> {
         try {
             model::renderFrames(data, source, job, progress.get(), &listener);
         } catch (const model::RenderFrameError& e) {
-            failed.emplace(e);
+            return e;
         }
-    }
-    progress.rethrow();
+        return std::nullopt;
+    });
     if (failed)
         // As the command line prints it: "frame F: file: problem".
         throwIo(Cli::tr("frame %1: %2").arg(failed->frame()).arg(failed->message()));
@@ -300,13 +298,9 @@ py::object exportAnimation(PyDocument& d, const py::object& format, const py::ob
     job.firstFrame = frames ? frames->first : data.time.firstFrame;
     job.lastFrame = frames ? frames->last : data.time.lastFrame;
     CallbackProgress progress(progressCallback);
-    model::ExportResult result;
     const QString source = d.source();
-    {
-        py::gil_scoped_release release;
-        result = model::exportProject(data, source, job, progress.get());
-    }
-    progress.rethrow();
+    const model::ExportResult result
+        = runJob(progress, [&] { return model::exportProject(data, source, job, progress.get()); });
     QJsonArray files;
     for (const QString& f : result.files)
         files.append(f);

@@ -133,16 +133,29 @@ CallbackProgress::~CallbackProgress()
 
 void CallbackProgress::progress(std::int64_t done, std::int64_t total, const std::string& label)
 {
-    if (m_callback.is_none() || m_cancel.load())
+    if (m_cancel.load())
         return;
     py::gil_scoped_acquire gil;
     try {
+        if (m_callback.is_none())
+            return;
         const py::object answer = m_callback(done, total, py::str(label));
         // False (not None) stops the job.
         if (answer.ptr() == Py_False)
             m_cancel.store(true);
     } catch (py::error_already_set& e) {
         m_error.emplace(std::move(e));
+        m_cancel.store(true);
+    }
+}
+
+void CallbackProgress::checkSignals()
+{
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) {
+        py::error_already_set e;
+        if (!m_error)
+            m_error.emplace(std::move(e));
         m_cancel.store(true);
     }
 }

@@ -12,6 +12,9 @@
 #include <QStringList>
 
 #include <atomic>
+#include <chrono>
+#include <future>
+#include <thread>
 #include <optional>
 
 namespace celform::python {
@@ -42,24 +45,48 @@ py::object toPython(const QJsonObject& object);
 /// A Python progress callback, callback(done, total, label), as the model's Progress. Returning
 /// False cancels the job; raising cancels it too, and rethrow() raises that exception once the job
 /// has returned. Called with the GIL taken, from whichever thread reports; the job runs with the
-/// GIL released (ReleaseGil) so that its threads can report.
+/// GIL released (runJob) so that its threads can report.
 class CallbackProgress : public algo::Progress {
 public:
     explicit CallbackProgress(py::object callback);
     ~CallbackProgress() override;
     void progress(std::int64_t done, std::int64_t total, const std::string& label) override;
     [[nodiscard]] bool isCancelRequested() const override { return m_cancel.load(); }
-    /// The progress to hand the model: null without a callback.
-    [[nodiscard]] algo::Progress* get() { return m_callback.is_none() ? nullptr : this; }
-    /// Whether the callback stopped the job (by returning False or raising).
+    /// The progress to hand the model.
+    [[nodiscard]] algo::Progress* get() { return this; }
+    /// Whether the callback (or a signal) stopped the job.
     [[nodiscard]] bool cancelled() const { return m_cancel.load(); }
     /// Raises the callback's exception, if it raised one. Needs the GIL.
     void rethrow();
+    /// Runs Python's signal handlers (on the main thread): an exception they raise (Ctrl+C's
+    /// KeyboardInterrupt) stops the job and is raised by rethrow(). Takes the GIL.
+    void checkSignals();
 
 private:
     py::object m_callback;
     std::atomic<bool> m_cancel{false};
     std::optional<py::error_already_set> m_error;
 };
+
+/// Runs a long job (a render, an export) on a thread of its own with the GIL released, while this
+/// thread keeps Python's signals answered: Ctrl+C stops the job at its next progress step and its
+/// KeyboardInterrupt is raised once the job has returned, as is an exception of the callback.
+/// The job's own C++ exceptions come through as they are.
+template <typename Job>
+auto runJob(CallbackProgress& progress, Job job) -> decltype(job())
+{
+    using Result = decltype(job());
+    std::packaged_task<Result()> task(std::move(job));
+    std::future<Result> done = task.get_future();
+    {
+        py::gil_scoped_release release;
+        std::thread worker(std::move(task));
+        while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready)
+            progress.checkSignals();
+        worker.join();
+    }
+    progress.rethrow();
+    return done.get();
+}
 
 } // namespace celform::python

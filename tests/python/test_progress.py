@@ -79,3 +79,34 @@ def test_run_raises_the_command_line_errors(celform, cli, tmp_path):
     assert expected.returncode == 3 and expected.stderr.strip() == "celform: " + str(raised.value)
     with pytest.raises(celform.UsageError):
         celform.run("no-such-command")
+
+
+def test_ctrl_c_stops_a_long_render(showcase, tmp_path):
+    """Ctrl+C (SIGINT) during a render without a callback stops it with KeyboardInterrupt; the
+    frames written stay."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    script = tmp_path / "long.py"
+    script.write_text(
+        "import celform, sys\n"
+        f"d = celform.open({str(showcase)!r})\n"
+        "print('ready', flush=True)\n"
+        "try:\n"
+        f"    d.render(frames=(0, 47), size=(1280, 720), threads=1, out={str(tmp_path / 'f_####.png')!r})\n"
+        "    print('finished')\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted')\n")
+    process = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True, env=os.environ,
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    assert process.stdout.readline().strip() == "ready"
+    time.sleep(0.5)
+    started = time.monotonic()
+    process.send_signal(signal.SIGINT)
+    out, _ = process.communicate(timeout=60)
+    assert out.strip() == "interrupted"
+    assert time.monotonic() - started < 5.0
+    assert 0 <= len(list(tmp_path.glob("f_*.png"))) < 48
