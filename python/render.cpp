@@ -10,6 +10,8 @@
 #include "cli/options.h"
 
 #include "celform/algorithms/tri_mesh.h"
+#include "celform/model/analysis/depth_analysis.h"
+#include "celform/model/analysis/depth_analysis_output.h"
 #include "celform/model/data/shading_layers.h"
 #include "celform/model/export/export.h"
 #include "celform/model/render/frame_evaluator.h"
@@ -206,14 +208,35 @@ algo::RenderPasses renderPasses(const PyDocument& d, const model::RenderJob& job
     return passes;
 }
 
+/// An image as an array: its floats, or the 8-bit values a PNG of it holds (sRGB-encoded colour,
+/// as renderFrames encodes them).
+py::array arrayOf(algo::ImageRGBA&& image, bool srgb8)
+{
+    if (!srgb8)
+        return adopt(std::move(image.pixels), {py::ssize_t(image.height), py::ssize_t(image.width), 4});
+    static const std::vector<std::string> rgba = {"R", "G", "B", "A"};
+    model::EncodedFrame encoded;
+    model::encodeChannels(QStringLiteral("frame.png"), image.width, image.height, rgba, image.pixels.data(),
+        image.pixels.size(), true, encoded);
+    return adopt(std::move(encoded.bytes), {py::ssize_t(encoded.height), py::ssize_t(encoded.width), 4});
+}
+
 py::object renderToArrays(PyDocument& d, const model::RenderJob& job, bool allPasses, bool srgb8)
 {
     if (job.isSequence())
         throw UsageError{Cli::tr("a render to an array takes one frame (frame=F), not --frames")};
     const QString pass = job.pass.isEmpty() ? QStringLiteral("beauty") : job.pass;
-    if (QStringList{QStringLiteral("segments"), QStringLiteral("curvature"), QStringLiteral("depth-error")}.contains(pass))
-        throw UsageError{Cli::tr("the %1 pass is the depth analysis's: render it to a file (out=...) or use "
-                                 "Document.analyze(out=...)").arg(pass)};
+    if (const auto picture = model::analysisPictureFromName(pass); picture && !allPasses) {
+        // The depth analysis's pictures (segments, curvature, depth error), as `celform analyze`
+        // analyses the job's view.
+        model::FrameAnalysis analysed;
+        {
+            py::gil_scoped_release release;
+            analysed = model::analyseProject(d->data(), d.source(), job, model::AnalysisSettings{});
+        }
+        algo::ImageRGBA image = model::analysisImage(analysed.analysis, *picture, !srgb8);
+        return arrayOf(std::move(image), srgb8);
+    }
     algo::RenderPasses passes = renderPasses(d, job);
     const py::ssize_t w = job.size.width(), h = job.size.height();
     if (allPasses) {
@@ -232,14 +255,7 @@ py::object renderToArrays(PyDocument& d, const model::RenderJob& job, bool allPa
         image = std::move(passes.beauty);
     else
         model::passImage(passes, pass, !srgb8, image);
-    if (!srgb8)
-        return adopt(std::move(image.pixels), {py::ssize_t(image.height), py::ssize_t(image.width), 4});
-    // The 8-bit values a PNG of this render holds (sRGB-encoded colour), as renderFrames encodes them.
-    static const std::vector<std::string> rgba = {"R", "G", "B", "A"};
-    model::EncodedFrame encoded;
-    model::encodeChannels(QStringLiteral("frame.png"), image.width, image.height, rgba, image.pixels.data(),
-        image.pixels.size(), true, encoded);
-    return adopt(std::move(encoded.bytes), {py::ssize_t(encoded.height), py::ssize_t(encoded.width), 4});
+    return arrayOf(std::move(image), srgb8);
 }
 
 py::object render(PyDocument& d, const py::object& out, const py::object& progress, bool passes, bool srgb8,

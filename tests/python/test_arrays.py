@@ -78,3 +78,15 @@ def test_look_settings_change_the_render(celform, showcase):
     doc.undo()
     doc.undo()
     np.testing.assert_array_equal(doc.render(frame=0, size=(64, 64)), toon)
+
+
+@pytest.mark.parametrize("pass_name", ["lines", "tone", "depth", "normal", "id", "segments", "curvature",
+                                       "depth-error"])
+def test_pass_arrays_match_command_line(celform, cli, showcase, tmp_path, pass_name):
+    """Every pass as an array holds the values of `celform render --pass` (the depth analysis's
+    pictures included)."""
+    doc = celform.open(showcase)
+    run_cli(cli, "render", showcase, "--frame", 3, "--size", "80x48", "--pass", pass_name, "--out", tmp_path / "c.png")
+    png = read_png(tmp_path / "c.png")
+    ours = doc.render(frame=3, size=(80, 48), pass_=pass_name, srgb8=True)
+    np.testing.assert_array_equal(ours[..., :png.shape[2]], png)
