@@ -408,6 +408,15 @@ void bindDocument(py::module_& m, py::class_<PyDocument>& c)
         return d;
     }),
         py::arg("path") = py::none(), "An empty document, or the project file at path (celform.IoError when it cannot be read).");
+    c.def("__repr__", [](const PyDocument& d) {
+        const model::ProjectData& data = d->data();
+        return toPython(QStringLiteral("<celform.Document %1: %2 vertices, %3 keys, %4 drawings%5>")
+                            .arg(d->filePath().isEmpty() ? QStringLiteral("(unsaved)") : d->filePath())
+                            .arg(data.baseMesh ? qint64(data.baseMesh->vertexCount()) : 0)
+                            .arg(data.keys.size())
+                            .arg(data.drawings.size())
+                            .arg(d->isModified() ? QStringLiteral(", modified") : QString()));
+    });
     c.def("open", [](PyDocument& d, const py::object& path) { d->open(toQString(path)); }, py::arg("path"),
         "Replaces the document by a project file; unchanged when it cannot be read.");
     c.def("new_from_mesh", &newFromMesh, py::arg("mesh"), py::arg("fps") = py::none(), py::arg("sequence") = false,

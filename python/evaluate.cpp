@@ -108,6 +108,15 @@ void bindEvaluate(py::module_& m, py::class_<PyDocument>& document)
         return py::array_t<double>(3, v.data());
     }, "The view direction (unit, from the base centroid towards the eye).");
     c.def_property_readonly("frame", [](const std::shared_ptr<Evaluation>& e) { return e->frame; });
+    c.def("__repr__", [](const std::shared_ptr<Evaluation>& e) {
+        QStringList shares;
+        for (const auto& share : e->evaluator.blend().shares)
+            shares << QStringLiteral("%1 %2").arg(e->data.key(share.key)->name).arg(share.weight, 0, 'g', 4);
+        return toPython(QStringLiteral("<celform.Evaluation frame %1: %2; base %3>")
+                            .arg(e->frame)
+                            .arg(shares.isEmpty() ? QStringLiteral("no keys") : shares.join(QStringLiteral(", ")))
+                            .arg(e->evaluator.blend().baseShare, 0, 'g', 4));
+    });
     c.def_property_readonly("weights", [](const std::shared_ptr<Evaluation>& e) {
         py::dict w;
         for (const auto& share : e->evaluator.blend().shares)
