@@ -33,6 +33,7 @@ py::object onFile(PyDocument& d, const std::string& subCommand, const py::args& 
     if (d->filePath().isEmpty())
         throw app::UsageError{Cli::tr("“%1” works on the project file: save the document first (Document.save(path))")
                                   .arg(QString::fromStdString(subCommand))};
+    d.requireIdle();
     if (d->isModified()) {
         py::gil_scoped_release release;
         d->saveAs(d->filePath());

@@ -37,6 +37,15 @@ QString PyDocument::source() const
     return doc->filePath().isEmpty() ? Cli::tr("(unsaved document)") : doc->filePath();
 }
 
+void PyDocument::requireIdle() const
+{
+    if (jobs.load() > 0) {
+        PyErr_SetString(PyExc_RuntimeError, "the document is being rendered or exported on another thread; edit it when "
+                                            "that call has returned");
+        throw py::error_already_set();
+    }
+}
+
 namespace {
 
 /// A read-only numpy view of an Eigen row-major matrix that owner keeps alive.
@@ -166,6 +175,7 @@ void newFromMesh(PyDocument& d, const py::object& mesh, const py::object& fpsVal
         if (!(fps > 0.0 && fps <= model::kMaxFps))
             throw UsageError{Cli::tr("--fps must lie in (0, %1]").arg(model::kMaxFps)};
     }
+    d.requireIdle();
     printWarnings(path, d->newFromMesh(path, fps, sequence));
     for (const py::object& image : drawings)
         guardedEdit(d, [&] { return d->drawings().importDrawing(toQString(image)); });
@@ -417,7 +427,10 @@ void bindDocument(py::module_& m, py::class_<PyDocument>& c)
                             .arg(data.drawings.size())
                             .arg(d->isModified() ? QStringLiteral(", modified") : QString()));
     });
-    c.def("open", [](PyDocument& d, const py::object& path) { d->open(toQString(path)); }, py::arg("path"),
+    c.def("open", [](PyDocument& d, const py::object& path) {
+        d.requireIdle();
+        d->open(toQString(path));
+    }, py::arg("path"),
         "Replaces the document by a project file; unchanged when it cannot be read.");
     c.def("new_from_mesh", &newFromMesh, py::arg("mesh"), py::arg("fps") = py::none(), py::arg("sequence") = false,
         py::arg("drawings") = std::vector<py::object>{},
@@ -428,6 +441,7 @@ void bindDocument(py::module_& m, py::class_<PyDocument>& c)
             throw UsageError{Cli::tr("--out is required")};
         if (QFileInfo(target).suffix().compare(QLatin1String("celform"), Qt::CaseInsensitive) != 0)
             throw UsageError{Cli::tr("--out must end in .celform, not “%1”").arg(target)};
+        d.requireIdle();
         py::gil_scoped_release release;
         d->saveAs(target);
     },
@@ -437,10 +451,13 @@ void bindDocument(py::module_& m, py::class_<PyDocument>& c)
     });
     c.def_property_readonly("modified", [](const PyDocument& d) { return d->isModified(); });
     c.def_property("current_frame", [](const PyDocument& d) { return d->currentFrame(); },
-        [](PyDocument& d, int frame) { d->setCurrentFrame(app::parseFrame("frame", QString::number(frame))); },
+        [](PyDocument& d, int frame) {
+            d.requireIdle();
+            d->setCurrentFrame(app::parseFrame("frame", QString::number(frame)));
+        },
         "The playhead (not an edit).");
-    c.def("undo", [](PyDocument& d) { d->undoStack()->undo(); }, "Undoes the last edit.");
-    c.def("redo", [](PyDocument& d) { d->undoStack()->redo(); });
+    c.def("undo", [](PyDocument& d) { guardedEdit(d, [&] { d->undoStack()->undo(); }); }, "Undoes the last edit.");
+    c.def("redo", [](PyDocument& d) { guardedEdit(d, [&] { d->undoStack()->redo(); }); });
     c.def_property_readonly("history", [](const PyDocument& d) {
         QStringList steps;
         for (int i = 0; i < d->undoStack()->index(); ++i)

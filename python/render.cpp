@@ -155,6 +155,7 @@ QJsonArray byFrame(const QJsonArray& frames)
 py::object renderToFiles(PyDocument& d, const model::RenderJob& job, const py::object& progressCallback)
 {
     CallbackProgress progress(progressCallback);
+    const PyDocument::Job busy(d);
     FrameList listener;
     const model::ProjectData& data = d->data();
     const QString source = d.source();
@@ -176,8 +177,9 @@ py::object renderToFiles(PyDocument& d, const model::RenderJob& job, const py::o
 }
 
 /// One frame's passes as FrameWorker::render makes them (render_job.cpp).
-algo::RenderPasses renderPasses(const PyDocument& d, const model::RenderJob& job)
+algo::RenderPasses renderPasses(PyDocument& d, const model::RenderJob& job)
 {
+    const PyDocument::Job busy(d);
     const model::ProjectData& data = d->data();
     const model::ResolvedRenderJob resolved = model::resolveRenderJob(data, d.source(), job);
     py::gil_scoped_release release;
@@ -231,6 +233,7 @@ py::object renderToArrays(PyDocument& d, const model::RenderJob& job, bool allPa
         // analyses the job's view.
         model::FrameAnalysis analysed;
         {
+            const PyDocument::Job busy(d);
             py::gil_scoped_release release;
             analysed = model::analyseProject(d->data(), d.source(), job, model::AnalysisSettings{});
         }
@@ -314,6 +317,7 @@ py::object exportAnimation(PyDocument& d, const py::object& format, const py::ob
     job.firstFrame = frames ? frames->first : data.time.firstFrame;
     job.lastFrame = frames ? frames->last : data.time.lastFrame;
     CallbackProgress progress(progressCallback);
+    const PyDocument::Job busy(d);
     const QString source = d.source();
     const model::ExportResult result
         = runJob(progress, [&] { return model::exportProject(data, source, job, progress.get()); });

@@ -110,3 +110,29 @@ def test_ctrl_c_stops_a_long_render(showcase, tmp_path):
     assert out.strip() == "interrupted"
     assert time.monotonic() - started < 5.0
     assert 0 <= len(list(tmp_path.glob("f_*.png"))) < 48
+
+
+def test_edits_wait_for_a_render_on_another_thread(celform, showcase, tmp_path):
+    """A render reads the document with the GIL released: an edit from another thread meanwhile
+    is refused, and the render's files are those of the document as it was."""
+    import threading
+
+    doc = celform.open(showcase)
+    started = threading.Event()
+    release = threading.Event()
+
+    def wait_inside(done, total, label):
+        started.set()
+        release.wait(10)
+
+    worker = threading.Thread(target=lambda: doc.render(frames=(0, 1), size=(32, 32), threads=1,
+                                                        out=tmp_path / "t_#.png", progress=wait_inside))
+    worker.start()
+    assert started.wait(30)
+    with pytest.raises(RuntimeError):
+        doc.set(style="gooch")
+    assert doc.info()["key_viewpoints"]  # reading is fine
+    release.set()
+    worker.join(30)
+    doc.set(style="gooch")  # and editing once the render has returned
+    assert len(list(tmp_path.glob("t_*.png"))) == 2
