@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 namespace celform::algo {
 namespace {
@@ -89,6 +90,126 @@ void computeDepthError(const std::vector<float>& depth, const ImageRGBA& beauty,
     out.maxAbsError = maxAbs;
 }
 
+void faceSegmentVote(const SegmentLabels& labels, const std::int32_t* faceId, std::int32_t faceCount,
+    std::vector<std::int32_t>& owner)
+{
+    owner.assign(std::size_t(std::max(0, faceCount)), -1);
+    const std::size_t count = labels.labels.size();
+    if (!faceId || faceCount <= 0 || count == 0)
+        return;
+    // A counting sort of the segment pixels by face (O(pixels + faces)), then each face's most
+    // frequent segment among its own pixels (nearly always a single one).
+    std::vector<std::int32_t> start(std::size_t(faceCount) + 1, 0);
+    for (std::size_t i = 0; i < count; ++i)
+        if (labels.labels[i] >= 0 && faceId[i] >= 0 && faceId[i] < faceCount)
+            ++start[std::size_t(faceId[i]) + 1];
+    for (std::size_t f = 0; f < std::size_t(faceCount); ++f)
+        start[f + 1] += start[f];
+    std::vector<std::int32_t> bySegment(std::size_t(start.back()));
+    std::vector<std::int32_t> cursor(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < count; ++i)
+        if (labels.labels[i] >= 0 && faceId[i] >= 0 && faceId[i] < faceCount)
+            bySegment[std::size_t(cursor[std::size_t(faceId[i])]++)] = labels.labels[i];
+    for (std::size_t f = 0; f < std::size_t(faceCount); ++f) {
+        const auto begin = bySegment.begin() + start[f], end = bySegment.begin() + start[f + 1];
+        if (begin == end)
+            continue;
+        std::sort(begin, end);
+        std::int32_t best = *begin, bestRun = 0;
+        for (auto it = begin; it != end;) {
+            const auto next = std::upper_bound(it, end, *it);
+            if (next - it > bestRun) {
+                bestRun = std::int32_t(next - it);
+                best = *it;
+            }
+            it = next;
+        }
+        owner[f] = best;
+    }
+}
+
+void segmentFaceMeans(const SegmentLabels& labels, const std::int32_t* faceId, const std::vector<std::int32_t>& owner,
+    const std::vector<float>& perFace, std::vector<float>& out)
+{
+    const std::size_t segments = labels.sizes.size();
+    auto value = [&](std::int32_t f) { return f >= 0 && std::size_t(f) < perFace.size() ? double(perFace[std::size_t(f)]) : 1.0; };
+    std::vector<double> sum(segments, 0.0);
+    std::vector<std::int64_t> faces(segments, 0);
+    for (std::size_t f = 0; f < owner.size(); ++f)
+        if (owner[f] >= 0 && std::size_t(owner[f]) < segments) {
+            sum[std::size_t(owner[f])] += value(std::int32_t(f));
+            ++faces[std::size_t(owner[f])];
+        }
+    // Segments that won no face's vote (slivers over faces mostly elsewhere): their pixels' faces.
+    std::vector<double> pixelSum(segments, 0.0);
+    std::vector<std::int64_t> pixels(segments, 0);
+    bool slivers = false;
+    for (std::size_t s = 0; s < segments; ++s)
+        slivers = slivers || faces[s] == 0;
+    if (slivers && faceId)
+        for (std::size_t i = 0; i < labels.labels.size(); ++i) {
+            const std::int32_t s = labels.labels[i];
+            if (s >= 0 && std::size_t(s) < segments && faces[std::size_t(s)] == 0) {
+                pixelSum[std::size_t(s)] += value(faceId[i]);
+                ++pixels[std::size_t(s)];
+            }
+        }
+    out.assign(segments, 1.f);
+    for (std::size_t s = 0; s < segments; ++s) {
+        if (faces[s] > 0)
+            out[s] = float(sum[s] / double(faces[s]));
+        else if (pixels[s] > 0)
+            out[s] = float(pixelSum[s] / double(pixels[s]));
+    }
+}
+
+void applySegmentOverrides(
+    const std::int32_t* faceId, const std::vector<std::int32_t>& overrides, int minPixels, SegmentLabels& labels)
+{
+    const std::size_t count = labels.labels.size();
+    if (!faceId || overrides.empty() || count == 0)
+        return;
+    const std::int32_t scanned = std::int32_t(labels.sizes.size());
+    // Provisional numbers: the scan's segments keep theirs, each override label gets one after
+    // them (in the order its first pixel comes).
+    std::unordered_map<std::int32_t, std::int32_t> byLabel;
+    std::vector<std::int32_t>& provisional = labels.scratch;
+    provisional.assign(count, -1);
+    bool any = false;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::int32_t f = faceId[i];
+        const std::int32_t label = f >= 0 && std::size_t(f) < overrides.size() ? overrides[std::size_t(f)] : -1;
+        if (label >= 0) {
+            const auto it = byLabel.emplace(label, scanned + std::int32_t(byLabel.size())).first;
+            provisional[i] = it->second;
+            any = true;
+        } else {
+            provisional[i] = labels.labels[i];
+        }
+    }
+    if (!any)
+        return;
+    // Sizes, then numbers in the order of the first pixel, the small dropped (thesis 4.5.3).
+    std::vector<std::int32_t> sizes(std::size_t(scanned) + byLabel.size(), 0);
+    for (std::size_t i = 0; i < count; ++i)
+        if (provisional[i] >= 0)
+            ++sizes[std::size_t(provisional[i])];
+    std::vector<std::int32_t> number(sizes.size(), -1);
+    labels.sizes.clear();
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::int32_t p = provisional[i];
+        if (p < 0 || sizes[std::size_t(p)] < minPixels) {
+            labels.labels[i] = -1;
+            continue;
+        }
+        if (number[std::size_t(p)] < 0) {
+            number[std::size_t(p)] = std::int32_t(labels.sizes.size());
+            labels.sizes.push_back(sizes[std::size_t(p)]);
+        }
+        labels.labels[i] = number[std::size_t(p)];
+    }
+}
+
 int segmentsInWindow(const std::vector<SegmentStats>& stats)
 {
     int n = 0;
@@ -146,6 +267,9 @@ void analyseDepth(const GBuffer& g, const std::vector<Eigen::Vector3f>& normals,
     // Segments (4.1.3) and their bright/dark ratios under the look.
     labelSegments(covered.data(), out.curvature.data(), out.depth.data(), w, h, settings.depthThreshold,
         settings.minSegmentPixels, out.segments);
+    // The segment brush's merges and splits (issue 26), by the faces' override labels.
+    if (sized && settings.segmentOverrides && !settings.segmentOverrides->empty())
+        applySegmentOverrides(g.faceId.data(), *settings.segmentOverrides, settings.minSegmentPixels, out.segments);
     out.stats.assign(out.segments.sizes.size(), SegmentStats{});
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
@@ -169,6 +293,15 @@ void analyseDepth(const GBuffer& g, const std::vector<Eigen::Vector3f>& normals,
         st.inWindow = settings.window.contains(st.ratio);
         st.meanCurvature /= float(st.pixels);
         st.centroid /= float(st.pixels);
+    }
+    // Focal points (paper 3, 6.2): each segment's importance, the mean over its faces by the vote.
+    if (sized && settings.faceImportance && !settings.faceImportance->empty()) {
+        std::vector<std::int32_t> owner;
+        std::vector<float> means;
+        faceSegmentVote(out.segments, g.faceId.data(), std::int32_t(faces.rows()), owner);
+        segmentFaceMeans(out.segments, g.faceId.data(), owner, *settings.faceImportance, means);
+        for (std::size_t s = 0; s < out.stats.size() && s < means.size(); ++s)
+            out.stats[s].importance = means[s];
     }
 
     // Depth error (4.4) of the picture.

@@ -34,6 +34,11 @@ struct DepthAnalysisSettings {
     bool pointLight = false;
     Eigen::Vector3f light{0.4f, 0.6f, 0.7f}; ///< towards the light (directional) or its position (point)
     const std::vector<float>* shadingOffsets = nullptr; ///< per vertex (paper 3, eq. 4.3), may be null
+    /// The artist's say (paper 3, 6.2; issue 26), per face of the faces given, null or empty for
+    /// none: each face's importance in [0, 1] (SegmentStats::importance), and a segment override
+    /// label per face (>= 0; negative: none) that applySegmentOverrides regroups the segments by.
+    const std::vector<float>* faceImportance = nullptr;
+    const std::vector<std::int32_t>* segmentOverrides = nullptr;
 };
 
 /// One segment of salient shape.
@@ -48,6 +53,10 @@ struct SegmentStats {
     /// of light optimisation follows it).
     Eigen::Vector3d lightGradient = Eigen::Vector3d::Zero();
     Eigen::Vector2f centroid = Eigen::Vector2f::Zero(); ///< mean pixel position
+    /// The mean importance of its faces (the faces faceSegmentVote gives it; without any, of its
+    /// pixels' faces): the factor its weight in the light optimisation is multiplied by. 1 when
+    /// no importance is painted.
+    float importance = 1.f;
 };
 
 /// The analysis of one picture. Per-pixel vectors are width * height, row-major from the top-left.
@@ -92,10 +101,30 @@ Eigen::Vector3f shadingLightDerivative(const Eigen::Vector3f& l, const Eigen::Ve
 ///   thesis 4.4's "any difference in RGB values"; nothing is quantised);
 /// - faces and vertexCurvature: the mesh and its smoothed Gaussian curvature per vertex.
 /// Off-model pixels are background: never features, no depth error, transparent to segments.
-/// With no feature pixel at all, the depth error is zero. Allocates only when sizes change.
+/// settings.segmentOverrides regroup the segments (applySegmentOverrides), settings.faceImportance
+/// gives each segment its importance (segmentFaceMeans over the face vote). With no feature pixel at all, the depth error is zero. Allocates only when sizes change.
 void analyseDepth(const GBuffer& gbuffer, const std::vector<Eigen::Vector3f>& normals, const ImageRGBA& beauty,
     const Faces& faces, const std::vector<float>& vertexCurvature, const DepthAnalysisSettings& settings,
     DepthAnalysis& out);
+
+/// The face vote (the one the automatic offsets and the stable segment numbers use, thesis 4.3):
+/// per face of faceCount, the segment most of its pixels are in (ties: the lower number), or -1
+/// when none of its pixels is in a segment. faceId: per pixel of labels, -1 off the model.
+void faceSegmentVote(const SegmentLabels& labels, const std::int32_t* faceId, std::int32_t faceCount,
+    std::vector<std::int32_t>& owner);
+
+/// Per segment the mean of perFace over the faces the vote gives it; a segment given no face takes
+/// the mean over its pixels' faces. Faces beyond perFace count as 1.
+void segmentFaceMeans(const SegmentLabels& labels, const std::int32_t* faceId, const std::vector<std::int32_t>& owner,
+    const std::vector<float>& perFace, std::vector<float>& out);
+
+/// The segment brush's overrides (issue 26, "a segment brush"): every covered pixel whose face has
+/// an override label (>= 0) leaves the segment the scan gave it for the one segment of all pixels
+/// of that label, wherever they are; the other pixels keep theirs. Segments are then numbered again
+/// in the order of their first pixel, and those under minPixels dropped as the scan drops them.
+/// faceId: per pixel, -1 off the model; overrides: per face (faces beyond it have none).
+void applySegmentOverrides(const std::int32_t* faceId, const std::vector<std::int32_t>& overrides, int minPixels,
+    SegmentLabels& labels);
 
 /// Only the depth error part of analyseDepth (features, nearest feature, error, MSE), from the
 /// depths (+infinity off the model) and the picture; the other fields of out are left alone.

@@ -31,9 +31,13 @@ Eigen::Vector3d randomInCube(std::mt19937_64& rng)
     return {x, y, z};
 }
 
+/// Thesis 5.0.3's weight (figure 5.9) times the segment's importance: thesis 6.2 leaves "all
+/// segments are equally important" open and proposes focal points an artist specifies.
 double segmentWeight(const ShadingSamples& samples, int s, double totalPixels, SegmentWeight weight)
 {
-    return weight == SegmentWeight::Area ? double(samples.pixels(s)) / totalPixels : 1.0;
+    const double importance
+        = std::size_t(s) < samples.importance.size() ? samples.importance[std::size_t(s)] : 1.0;
+    return importance * (weight == SegmentWeight::Area ? double(samples.pixels(s)) / totalPixels : 1.0);
 }
 
 /// How far a ratio is outside the window (0 inside).
@@ -112,6 +116,7 @@ void gatherShadingSamples(const GBuffer& g, const std::vector<Eigen::Vector3f>& 
         && g.position.size() == count && g.barycentric.size() == count;
     resizeTo(out.segmentStart, std::size_t(segmentCount) + 1);
     resizeTo(out.normalSum, std::size_t(segmentCount));
+    out.importance.assign(std::size_t(segmentCount), 1.0);
     std::fill(out.normalSum.begin(), out.normalSum.end(), Eigen::Vector3d::Zero());
     // Counting sort of the segment pixels by segment, in scan order within each.
     std::fill(out.segmentStart.begin(), out.segmentStart.end(), 0);

@@ -65,6 +65,10 @@ struct ShadingSamples {
     /// Per segment the sum of its normals. For a directional light eq. 4.2 is linear in n, so the
     /// segment's gradient needs no pass over its pixels.
     std::vector<Eigen::Vector3d> normalSum;
+    /// Per segment the factor its weight is multiplied by: the mean importance of its faces
+    /// (focal points, paper 3 6.2; SegmentStats::importance). gatherShadingSamples sets every
+    /// segment's to 1; the caller copies the analysis's in. A segment of importance 0 does not count.
+    std::vector<double> importance;
     std::vector<std::int32_t> cursor; ///< working memory of gatherShadingSamples
     [[nodiscard]] int segmentCount() const { return int(segmentStart.empty() ? 0 : segmentStart.size() - 1); }
     [[nodiscard]] std::int32_t pixels(int s) const
@@ -94,8 +98,9 @@ struct LightEvaluation {
 };
 
 /// Per segment the bright pixels (N.L at or above the threshold) and, with gradients, the sum of
-/// eq. 4.2 over its pixels; then the objective: the sum over segments of their weight times the
-/// distance of their ratio from the window (0 inside). Allocates only when sizes grow.
+/// eq. 4.2 over its pixels; then the objective: the sum over segments of their weight (the
+/// settings' weight times the segment's importance) times the distance of their ratio from the
+/// window (0 inside). Allocates only when sizes grow.
 void evaluateLight(const ShadingSamples& samples, const LightPose& light, const LightOptimisationSettings& settings,
     bool gradients, LightEvaluation& out);
 

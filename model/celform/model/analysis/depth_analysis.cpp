@@ -4,6 +4,7 @@
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/render/render_output.h"
+#include "celform/model/render/ridge_depth_prepass.h"
 #include "celform/model/render/subdivided_surface.h"
 #include "celform/model/data/shading_layers.h"
 #include "celform/model/data/blend_evaluator.h"
@@ -77,6 +78,8 @@ void DepthAnalyser::analyse(const ProjectData& data, const Look& look, const alg
     algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &m_cache, generation);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
+    // With a depth-driven ridge threshold (paper 3, 4.4), a first picture's error sets it.
+    prepareDepthAdaptedRidges(mesh, shape, centre, renderLook, m_cache, threadRidgeDepthPrepass());
     algo::renderFrame(shape, mesh, centre, renderLook, m_cache, out.passes, nullptr, &m_gbuffer);
     if (stopAfter(2))
         return;
@@ -95,6 +98,13 @@ void DepthAnalyser::analyse(const ProjectData& data, const Look& look, const alg
     s.pointLight = renderLook.pointLight;
     s.light = renderLook.light;
     s.shadingOffsets = renderLook.shadingOffsets;
+    // The artist's say (issue 26): focal points and the segment brush's overrides, per face of
+    // data's base model (a subdivided surface's stand-in carries them onto its faces).
+    const std::int64_t faceCount = mesh.faceCount();
+    if (std::int64_t(data.faceImportance.size()) == faceCount)
+        s.faceImportance = &data.faceImportance;
+    if (std::int64_t(data.segmentOverrides.size()) == faceCount)
+        s.segmentOverrides = &data.segmentOverrides;
     algo::analyseDepth(
         m_gbuffer, out.passes.normal, out.passes.beauty, mesh.faces, curvature.gaussian, s, out.analysis);
     out.analysis.curvatureScale = m_curvatureScale;
@@ -152,8 +162,8 @@ void analyseProjectFrames(const ProjectData& data, const QString& source, const 
     }
 }
 
-FrameAnalysis analyseProject(
-    const ProjectData& data, const QString& source, const RenderJob& job, const AnalysisSettings& settings)
+FrameAnalysis analyseProject(const ProjectData& data, const QString& source, const RenderJob& job,
+    const AnalysisSettings& settings, std::vector<std::int32_t>* baseFaces)
 {
     const AnalysisView view = resolveAnalysisView(data, source, job);
     DepthAnalyser analyser;
@@ -170,10 +180,18 @@ FrameAnalysis analyseProject(
         surface->apply(view.offsets, offsets);
         analyser.analyse(surface->display, view.look, shape, 0, job.firstFrame, view.camera, job.size.width(),
             job.size.height(), settings, out, &offsets);
+        if (baseFaces) {
+            *baseFaces = analyser.gbuffer().faceId;
+            const std::vector<std::int32_t>& parent = surface->stencil->parentFace;
+            for (std::int32_t& f : *baseFaces)
+                f = f >= 0 && std::size_t(f) < parent.size() ? parent[std::size_t(f)] : -1;
+        }
         return out;
     }
     analyser.analyse(data, view.look, view.shape, 0, job.firstFrame, view.camera, job.size.width(), job.size.height(),
         settings, out, &view.offsets);
+    if (baseFaces)
+        *baseFaces = analyser.gbuffer().faceId;
     return out;
 }
 

@@ -82,8 +82,10 @@ private:
 /// `celform analyze`: the job's camera, frame and look overrides resolved as `celform render`
 /// resolves them (stereo and pass ignored), the shape blended for that camera. Throws IoError
 /// naming source (no base model, keys that cannot be blended).
-FrameAnalysis analyseProject(
-    const ProjectData& data, const QString& source, const RenderJob& job, const AnalysisSettings& settings);
+/// baseFaces (optional): per pixel the base model's face seen there (a subdivided surface's child
+/// face mapped to its control face), -1 off the model: what the segment brush votes with.
+FrameAnalysis analyseProject(const ProjectData& data, const QString& source, const RenderJob& job,
+    const AnalysisSettings& settings, std::vector<std::int32_t>* baseFaces = nullptr);
 
 /// What analyseProject resolves before analysing: the look, camera, blended shape and the
 /// shading offsets in effect there (shading_layers.h). Throws IoError as analyseProject does.

@@ -102,6 +102,9 @@ LightOptimisationReport optimiseLight(const ProjectData& data, const Look& given
     algo::ShadingSamples samples;
     algo::gatherShadingSamples(analyser.gbuffer(), frameAnalysis.passes.normal, before.segments, data.baseMesh->faces,
         used.shadingOffsets, used.toonThreshold, samples);
+    // Focal points (paper 3, 6.2): each segment's weight times the mean importance of its faces.
+    for (std::size_t s = 0; s < samples.importance.size() && s < before.stats.size(); ++s)
+        samples.importance[s] = double(before.stats[s].importance);
 
     algo::LightOptimisationSettings settings = request.optimiser;
     settings.window = request.analysis.window;

@@ -224,6 +224,34 @@ QString subdivisionProblem(const SubdivisionLook& s)
     return {};
 }
 
+QString faceImportanceProblem(const std::vector<float>& importance, std::int64_t faceCount)
+{
+    if (importance.empty())
+        return {};
+    if (std::int64_t(importance.size()) != faceCount)
+        return QCoreApplication::translate("ProjectData", "the face importance has %1 values for %2 faces")
+            .arg(importance.size())
+            .arg(faceCount);
+    for (const float v : importance)
+        if (!(v >= 0.f && v <= 1.f))
+            return QCoreApplication::translate("ProjectData", "a face importance lies outside 0 to 1");
+    return {};
+}
+
+QString segmentOverridesProblem(const std::vector<std::int32_t>& overrides, std::int64_t faceCount)
+{
+    if (overrides.empty())
+        return {};
+    if (std::int64_t(overrides.size()) != faceCount)
+        return QCoreApplication::translate("ProjectData", "the segment overrides have %1 labels for %2 faces")
+            .arg(overrides.size())
+            .arg(faceCount);
+    for (const std::int32_t label : overrides)
+        if (label < kNoSegmentOverride || label >= faceCount)
+            return QCoreApplication::translate("ProjectData", "a segment override label is out of range");
+    return {};
+}
+
 QString sceneTimeProblem(const SceneTime& time)
 {
     if (!std::isfinite(time.fps) || time.fps <= 0.0 || time.fps > kMaxFps)
@@ -348,7 +376,7 @@ bool ProjectData::operator==(const ProjectData& o) const
     const bool animationEqual = animated() == o.animated() && (!animated() || *baseAnimation == *o.baseAnimation);
     return meshEqual && baseMeshName == o.baseMeshName && faceSets == o.faceSets && drawings == o.drawings
         && keys == o.keys && blend == o.blend && look == o.look && shadingOffsets == o.shadingOffsets
-        && mirrorPlane == o.mirrorPlane && nextId == o.nextId && currentFrame == o.currentFrame && time == o.time
+        && faceImportance == o.faceImportance && segmentOverrides == o.segmentOverrides && mirrorPlane == o.mirrorPlane && nextId == o.nextId && currentFrame == o.currentFrame && time == o.time
         && animationEqual;
 }
 

@@ -292,6 +292,15 @@ constexpr double kMaxFps = 1000.0;
 /// The first problem of a scene time, empty when valid.
 [[nodiscard]] QString sceneTimeProblem(const SceneTime& time);
 
+/// A face that keeps the segment the analysis finds for it (ProjectData::segmentOverrides).
+constexpr std::int32_t kNoSegmentOverride = -1;
+
+/// The first problem of per-face importance values for a model of faceCount faces (empty vector:
+/// none painted), empty when they are sound.
+[[nodiscard]] QString faceImportanceProblem(const std::vector<float>& importance, std::int64_t faceCount);
+/// The same for segment overrides (labels at least 0, or kNoSegmentOverride).
+[[nodiscard]] QString segmentOverridesProblem(const std::vector<std::int32_t>& overrides, std::int64_t faceCount);
+
 struct ProjectData {
     std::shared_ptr<const algo::TriMesh> baseMesh; ///< shared, immutable: edits replace it whole
     /// The animated base (paper 1, section 4.1): null for a still base model. Same topology and
@@ -309,6 +318,15 @@ struct ProjectData {
     /// empty means all zero. The base layer: every view and frame; keys add their own layers
     /// (KeyViewpoint::shadingOffsetsByFrame, combined by shading_layers.h).
     std::vector<float> shadingOffsets;
+    /// The artist's say over the depth analysis (paper 3, 6.2; issue 26), both per face of the
+    /// base model, empty when never painted:
+    /// - faceImportance: how much each face matters to the light optimisation, in [0, 1] (empty:
+    ///   all 1). A segment's weight is multiplied by the mean importance of its faces (focal points).
+    /// - segmentOverrides: a label per face, or kNoSegmentOverride. Faces with the same label form
+    ///   one segment of the analysis, whatever their curvature and depth (the segment brush's
+    ///   merges and splits); faces without one are segmented as the thesis does.
+    std::vector<float> faceImportance;
+    std::vector<std::int32_t> segmentOverrides;
     /// The plane the brushes mirror across when their mirror is on: detected when the model is
     /// imported (newProject), saved with the project.
     MirrorPlane mirrorPlane = MirrorPlane::X;

@@ -23,6 +23,8 @@ enum class Part : std::uint32_t {
     Playhead = 1u << 8, ///< the current frame (not undoable)
     CameraPath = 1u << 9, ///< the keyed render cameras (look.cameraPath)
     SceneTime = 1u << 10, ///< frames per second and the frame range
+    /// The depth analysis's per-face say: face importance (focal points) and segment overrides
+    FaceValues = 1u << 11,
 };
 
 struct ChangeSet {

@@ -184,6 +184,7 @@ void Document::setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QStr
                "a replacement base model needs the same vertex count and order")
                 .arg(mesh->vertexCount())
                 .arg(needed));
+    const Eigen::Index meshFaces = mesh->faceCount();
     const bool dropFaceSets
         = !m_data.faceSets.empty() && m_data.baseMesh && m_data.baseMesh->faceCount() != mesh->faceCount();
     auto* cmd = new CompositeCommand(this, tr("Replace Base Model"));
@@ -204,6 +205,17 @@ void Document::setBaseMesh(std::shared_ptr<const algo::TriMesh> mesh, const QStr
                 new PropertyCommand<QString>(this, {}, {Property::HighlightPatch, id},
                     fieldOf(id, &HighlightTrack::patch), QString(), ChangeSet::of(Part::Highlights, id), {}, cmd);
             }
+    }
+    // The depth analysis's per-face say (importance, segment overrides) goes with other faces too.
+    if (m_data.baseMesh && m_data.baseMesh->faceCount() != meshFaces) {
+        if (!m_data.faceImportance.empty())
+            new PropertyCommand<std::vector<float>>(
+                this, {}, {Property::FaceValues}, [](ProjectData& d) { return &d.faceImportance; }, {},
+                ChangeSet::of(Part::FaceValues), {}, cmd);
+        if (!m_data.segmentOverrides.empty())
+            new PropertyCommand<std::vector<std::int32_t>>(
+                this, {}, {Property::FaceValues}, [](ProjectData& d) { return &d.segmentOverrides; }, {},
+                ChangeSet::of(Part::FaceValues), {}, cmd);
     }
     push(cmd);
 }

@@ -52,6 +52,7 @@ enum class Property {
     MirrorPlane,
     Subdivision,
     LightTrack,
+    FaceValues,
 };
 
 /// What a command edits, for merging: a property of one object (id 0: of the document itself)
@@ -75,6 +76,7 @@ enum CommandId {
     kKeyDeformationMergeId = 1002,
     kShadingOffsetsMergeId = 1003,
     kFaceSetMergeId = 1004,
+    kFaceValuesMergeId = 1005,
 };
 
 /// Base of every document command: its redo and undo run inside one Document::Batch, so the

@@ -5,6 +5,7 @@
 #include "celform/model/data/io_error.h"
 #include "celform/model/document/document_commands.h"
 #include "celform/model/document/face_set_command.h"
+#include "celform/model/document/face_values_command.h"
 
 #include "celform/algorithms/tri_mesh.h"
 
@@ -43,6 +44,12 @@ FaceSetStroke FaceSetEdits::beginFaceSetStroke(const QString& target, MirrorPlan
     stroke.target = target;
     stroke.name = target.toStdString();
     stroke.undoText = tr("Paint Patch “%1”").arg(target);
+    prepareStroke(stroke, mirror);
+    return stroke;
+}
+
+void FaceSetEdits::prepareStroke(FaceSetStroke& stroke, MirrorPlane mirror) const
+{
     const algo::TriMesh& mesh = *data().baseMesh;
     stroke.mirrorPlane = mirrorGeometry(mesh, mirror);
     if (stroke.mirrorPlane) {
@@ -56,13 +63,10 @@ FaceSetStroke FaceSetEdits::beginFaceSetStroke(const QString& target, MirrorPlan
         stroke.mirrorReach = 0.05 * algo::boundingBox(mesh.vertices).diagonal().norm();
     }
     stroke.gesture = m_doc->beginGesture();
-    return stroke;
 }
 
-std::size_t FaceSetEdits::applyFaceSetStroke(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces, bool erase)
+void FaceSetEdits::collectDab(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces) const
 {
-    if (!stroke.active() || !data().baseMesh)
-        return 0;
     stroke.dab.assign(faces.begin(), faces.end());
     stroke.twinMissing = false;
     if (stroke.mirrorPlane && !faces.empty()) {
@@ -70,7 +74,7 @@ std::size_t FaceSetEdits::applyFaceSetStroke(FaceSetStroke& stroke, const std::v
         std::size_t twins = 0;
         for (const std::int32_t f : faces) {
             if (f < 0 || f >= mesh.faceCount())
-                continue; // refused below, with the set unchanged
+                continue; // refused by the caller, with nothing changed
             const Eigen::Vector3d centroid = (mesh.vertices.row(mesh.faces(f, 0)) + mesh.vertices.row(mesh.faces(f, 1))
                                                  + mesh.vertices.row(mesh.faces(f, 2)))
                                                  .transpose()
@@ -87,6 +91,15 @@ std::size_t FaceSetEdits::applyFaceSetStroke(FaceSetStroke& stroke, const std::v
     }
     std::sort(stroke.dab.begin(), stroke.dab.end());
     stroke.dab.erase(std::unique(stroke.dab.begin(), stroke.dab.end()), stroke.dab.end());
+}
+
+std::size_t FaceSetEdits::applyFaceSetStroke(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces, bool erase)
+{
+    if (!stroke.active() || !data().baseMesh)
+        return 0;
+    collectDab(stroke, faces);
+    if (stroke.mode == FaceSetStroke::Mode::Importance)
+        return applyImportanceDab(stroke, erase);
     // Only what the dab changes: the faces it adds that the set lacks, or takes that it holds.
     const auto& sets = data().faceSets;
     const auto it
@@ -114,6 +127,108 @@ std::size_t FaceSetEdits::applyFaceSetStroke(FaceSetStroke& stroke, const std::v
 void FaceSetEdits::endFaceSetStroke(FaceSetStroke& stroke)
 {
     stroke.gesture.end();
+}
+
+// --- the artist's say over the depth analysis ---------------------------------------------------
+
+FaceSetStroke FaceSetEdits::beginImportanceStroke(float value, float strength, MirrorPlane mirror)
+{
+    if (!data().baseMesh)
+        throw EditRefused(tr("There is no base model to paint focal points on."));
+    if (!(value >= 0.f && value <= 1.f))
+        throw EditRefused(tr("The importance must be between 0 and 1."));
+    if (!(strength > 0.f && strength <= 1.f))
+        throw EditRefused(tr("The strength must be above 0 and at most 1."));
+    FaceSetStroke stroke;
+    stroke.mode = FaceSetStroke::Mode::Importance;
+    stroke.value = value;
+    stroke.strength = strength;
+    stroke.undoText = tr("Paint Focal Points");
+    stroke.touched.assign(std::size_t(data().baseMesh->faceCount()), 0);
+    prepareStroke(stroke, mirror);
+    return stroke;
+}
+
+std::size_t FaceSetEdits::applyImportanceDab(FaceSetStroke& stroke, bool erase)
+{
+    const std::int64_t faceCount = data().baseMesh->faceCount();
+    if (!stroke.dab.empty() && (stroke.dab.front() < 0 || stroke.dab.back() >= faceCount))
+        throw EditRefused(tr("The focal points name a face the base model does not have."));
+    if (stroke.touched.size() != std::size_t(faceCount))
+        stroke.touched.assign(std::size_t(faceCount), 0);
+    const std::vector<float>& importance = data().faceImportance;
+    const bool exists = std::int64_t(importance.size()) == faceCount;
+    const float target = erase ? 1.f : stroke.value;
+    FaceValuesCommand::Change change;
+    change.existedBefore = exists;
+    change.existsAfter = true;
+    stroke.changed.clear();
+    for (const std::int32_t f : stroke.dab) {
+        if (stroke.touched[std::size_t(f)])
+            continue; // once per stroke: a drag over the same faces does not pile up
+        stroke.touched[std::size_t(f)] = 1;
+        const float before = exists ? importance[std::size_t(f)] : 1.f;
+        const float after = std::clamp(before + stroke.strength * (target - before), 0.f, 1.f);
+        if (after == before)
+            continue;
+        change.indices.push_back(f);
+        change.before.push_back(before);
+        change.after.push_back(after);
+        stroke.changed.push_back(f);
+    }
+    if (change.indices.empty())
+        return 0;
+    push(new FaceValuesCommand(m_doc, stroke.undoText, FaceLayer::Importance, std::move(change), stroke.gesture));
+    return stroke.changed.size();
+}
+
+void FaceSetEdits::clearFaceImportance()
+{
+    const std::vector<float>& importance = data().faceImportance;
+    if (importance.empty())
+        return;
+    FaceValuesCommand::Change change;
+    change.existedBefore = true;
+    change.existsAfter = false;
+    for (std::size_t f = 0; f < importance.size(); ++f)
+        if (importance[f] != 1.f) {
+            change.indices.push_back(std::int32_t(f));
+            change.before.push_back(importance[f]);
+            change.after.push_back(1.f);
+        }
+    push(new FaceValuesCommand(m_doc, tr("Clear Focal Points"), FaceLayer::Importance, std::move(change), {}));
+}
+
+void FaceSetEdits::setSegmentOverrides(std::vector<std::int32_t> overrides, const QString& undoText)
+{
+    if (!data().baseMesh)
+        throw EditRefused(tr("There is no base model to mark segments on."));
+    const std::int64_t faceCount = data().baseMesh->faceCount();
+    // The command stores labels as floats: whole numbers are exact up to 2^24.
+    if (faceCount > (std::int64_t(1) << 24))
+        throw EditRefused(tr("Segment overrides take models of at most 16,777,216 triangles."));
+    const QString problem = segmentOverridesProblem(overrides, faceCount);
+    if (!problem.isEmpty())
+        throw EditRefused(tr("Segment overrides refused: %1.").arg(problem));
+    // No label at all is no layer.
+    if (std::all_of(overrides.begin(), overrides.end(), [](std::int32_t l) { return l == kNoSegmentOverride; }))
+        overrides.clear();
+    const std::vector<std::int32_t>& old = data().segmentOverrides;
+    if (old == overrides)
+        return;
+    FaceValuesCommand::Change change;
+    change.existedBefore = !old.empty();
+    change.existsAfter = !overrides.empty();
+    auto at = [](const std::vector<std::int32_t>& v, std::int64_t f) {
+        return v.empty() ? kNoSegmentOverride : v[std::size_t(f)];
+    };
+    for (std::int64_t f = 0; f < faceCount; ++f)
+        if (at(old, f) != at(overrides, f)) {
+            change.indices.push_back(std::int32_t(f));
+            change.before.push_back(float(at(old, f)));
+            change.after.push_back(float(at(overrides, f)));
+        }
+    push(new FaceValuesCommand(m_doc, undoText, FaceLayer::SegmentOverrides, std::move(change), {}));
 }
 
 void FaceSetEdits::refuseFaces(const QString& name, const std::vector<std::int32_t>& faces) const

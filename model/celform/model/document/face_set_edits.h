@@ -35,6 +35,21 @@ public:
     std::size_t applyFaceSetStroke(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces, bool erase);
     void endFaceSetStroke(FaceSetStroke& stroke);
 
+    // --- the artist's say over the depth analysis (paper 3, 6.2; issue 26) ----------------------
+    /// Starts painting focal points: a dab takes each of its faces (and their mirror twins) from
+    /// the importance it had when the stroke began towards value by strength,
+    /// new = old + strength (value - old), once per stroke (Ctrl/erase: towards 1). The stroke is
+    /// one undo step, as a patch stroke; apply it with applyFaceSetStroke. Throws EditRefused
+    /// without a base model, for a value outside [0, 1] or a strength outside (0, 1].
+    [[nodiscard]] FaceSetStroke beginImportanceStroke(
+        float value, float strength, MirrorPlane mirror = MirrorPlane::Off);
+    /// Every face's importance back to 1 (the layer removed), one undo step.
+    void clearFaceImportance();
+    /// Replaces the segment overrides (empty: none) as one undo step storing only the faces that
+    /// change. Throws EditRefused without a base model or for overrides that do not fit it
+    /// (segmentOverridesProblem).
+    void setSegmentOverrides(std::vector<std::int32_t> overrides, const QString& undoText);
+
     /// Removes a face set; highlight layers on it go back to all faces in the same undo step.
     void removeFaceSet(const QString& name);
     /// Renames a face set and the highlight layers' references to it (one undo step). Throws
@@ -50,6 +65,11 @@ private:
     /// Throws EditRefused without a base model, for an empty name or a face out of range (faces
     /// ascending).
     void refuseFaces(const QString& name, const std::vector<std::int32_t>& faces) const;
+    /// Sets up the stroke's mirror (centroids, reach) and gesture.
+    void prepareStroke(FaceSetStroke& stroke, MirrorPlane mirror) const;
+    /// stroke.dab: faces with their mirror twins, ascending (sets stroke.twinMissing).
+    void collectDab(FaceSetStroke& stroke, const std::vector<std::int32_t>& faces) const;
+    std::size_t applyImportanceDab(FaceSetStroke& stroke, bool erase);
 };
 
 } // namespace celform::model

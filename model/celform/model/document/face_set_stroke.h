@@ -20,6 +20,13 @@ namespace celform::model {
 
 /// Made by FaceSetEdits::beginFaceSetStroke; pass it to applyFaceSetStroke for each dab.
 struct FaceSetStroke {
+    /// What a dab paints: faces into the face set, or (focal points, issue 26) the faces'
+    /// importance towards value by strength, each face once per stroke.
+    enum class Mode { Patch, Importance };
+    Mode mode = Mode::Patch;
+    float value = 1.f; ///< Importance: the importance painted towards, [0, 1]
+    float strength = 1.f; ///< Importance: the share of the way there a dab takes a face, (0, 1]
+    std::vector<char> touched; ///< Importance: per face, painted by this stroke already
     QString target; ///< the face set's name; the first dab makes it when missing
     std::string name; ///< target, as the face sets store it
     Gesture gesture; ///< the stroke's own: its dabs merge into one undo step

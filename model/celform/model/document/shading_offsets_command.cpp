@@ -1,7 +1,7 @@
 // ShadingOffsetsCommand: a layer of shading offsets, changed sparsely.
 #include "celform/model/document/shading_offsets_command.h"
 
-#include "celform/algorithms/sorted_merge.h"
+#include "celform/model/document/sparse_change.h"
 
 namespace celform::model {
 
@@ -50,25 +50,9 @@ bool ShadingOffsetsCommand::mergeWith(const QUndoCommand* other)
     const auto* o = dynamic_cast<const ShadingOffsetsCommand*>(other);
     if (!o || o->m_gesture != m_gesture || o->m_target != m_target)
         return false;
-    const Change& a = m_change;
-    const Change& b = o->m_change;
-    Change merged;
-    merged.existedBefore = a.existedBefore;
-    merged.existsAfter = b.existsAfter;
-    const std::size_t reserve = a.indices.size() + b.indices.size();
-    merged.indices.reserve(reserve);
-    merged.before.reserve(reserve);
-    merged.after.reserve(reserve);
-    auto add = [&merged](std::uint32_t v, float before, float after) {
-        merged.indices.push_back(v);
-        merged.before.push_back(before);
-        merged.after.push_back(after);
-    };
-    // Our "before" where we have one, their "after" where they do.
-    algo::mergeAscending(
-        a.indices, b.indices, [&](std::size_t i) { add(a.indices[i], a.before[i], a.after[i]); },
-        [&](std::size_t j) { add(b.indices[j], b.before[j], b.after[j]); },
-        [&](std::size_t i, std::size_t j) { add(a.indices[i], a.before[i], b.after[j]); });
+    Change merged = mergedSparseChange(m_change, o->m_change);
+    merged.existedBefore = m_change.existedBefore;
+    merged.existsAfter = o->m_change.existsAfter;
     m_change = std::move(merged);
     return true;
 }

@@ -198,7 +198,8 @@ QJsonObject lookJson(const Look& look)
                 {"borders", look.lines.borders}, {"material_boundaries", look.lines.materialBoundaries},
                 {"crease_angle_degrees", double(look.lines.creaseAngleDegrees)},
                 {"crease_low_angle_degrees", double(look.lines.creaseLowAngleDegrees)}, {"ridges", look.lines.ridges},
-                {"ridge_threshold", double(look.lines.ridgeThreshold)}}},
+                {"ridge_threshold", double(look.lines.ridgeThreshold)}, {"ridge_snakes", look.lines.ridgeSnakes},
+                {"ridge_depth_strength", double(look.lines.ridgeDepthStrength)}}},
         {"line_style",
             QJsonObject{{"color", vec3f(l.color)}, {"outline_width", double(l.outlineWidth)},
                 {"inner_width", double(l.innerWidth)}, {"jitter", double(l.jitter)},
@@ -274,6 +275,11 @@ QJsonObject buildManifest(const ProjectData& data, ChunkWriter& chunks)
                 {"faces", chunks.addVector(QStringLiteral("mesh/face_sets/%1").arg(i), set.faces)}});
         }
         m.insert("face_sets", sets);
+        // Format 4, optional: the depth analysis's per-face say (issue 26).
+        if (!data.faceImportance.empty())
+            m.insert("face_importance", chunks.addVector("mesh/face_importance", data.faceImportance));
+        if (!data.segmentOverrides.empty())
+            m.insert("segment_overrides", chunks.addVector("mesh/segment_overrides", data.segmentOverrides));
         root.insert("base_mesh", m);
         if (data.animated())
             root.insert("base_animation", baseAnimationJson(*data.baseAnimation, mesh->vertexCount(), chunks));

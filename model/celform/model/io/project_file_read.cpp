@@ -351,6 +351,11 @@ Look readLook(const Reader& r, const QJsonObject& look)
             if (!(out.lines.ridgeThreshold >= 0.f))
                 r.corrupt(ProjectFile::tr("the ridge threshold is negative"));
         }
+        // Raw or joined ridges came with format 4: older files join them (the snakes).
+        if (k.contains(QLatin1String("ridge_snakes")))
+            out.lines.ridgeSnakes = r.boolean(k, "ridge_snakes");
+        if (k.contains(QLatin1String("ridge_depth_strength")))
+            out.lines.ridgeDepthStrength = float(rangedNumber(r, k, "ridge_depth_strength", 0.0, 100.0));
     }
     if (look.contains("line_style")) {
         const QJsonObject l = r.object(look, "line_style");
@@ -545,6 +550,19 @@ ProjectData parseManifest(const Reader& r, const QJsonObject& root, const QStrin
                     r.corrupt(ProjectFile::tr("face set “%1” refers to a face out of range or out of order")
                                   .arg(QString::fromStdString(set.name)));
             data.faceSets.push_back(std::move(set));
+        }
+        // Optional (format 4): focal points and segment overrides, one value per face.
+        if (m.contains("face_importance")) {
+            r.readVector(m, "face_importance", mesh->faces.rows(), data.faceImportance);
+            if (const QString problem = faceImportanceProblem(data.faceImportance, mesh->faces.rows());
+                !problem.isEmpty())
+                r.corrupt(problem);
+        }
+        if (m.contains("segment_overrides")) {
+            r.readVector(m, "segment_overrides", mesh->faces.rows(), data.segmentOverrides);
+            if (const QString problem = segmentOverridesProblem(data.segmentOverrides, mesh->faces.rows());
+                !problem.isEmpty())
+                r.corrupt(problem);
         }
         for (auto f : mesh->faceMaterials)
             if (f < 0 || (f > 0 && std::size_t(f) >= mesh->materials.size()))

@@ -27,6 +27,8 @@ struct CacheEntry {
     int level = 0;
     std::vector<algo::FaceSet> faceSets;
     std::vector<float> shadingOffsets;
+    std::vector<float> faceImportance;
+    std::vector<std::int32_t> segmentOverrides;
     std::shared_ptr<const SubdividedSurface> surface;
 };
 
@@ -61,6 +63,17 @@ std::shared_ptr<const SubdividedSurface> build(
     for (const algo::FaceSet& set : data.faceSets)
         s->display.faceSets.push_back({set.name, algo::subdividedFaceSet(st, set.faces)});
     s->apply(data.shadingOffsets, s->display.shadingOffsets);
+    // The depth analysis's per-face say (issue 26): children take their control face's.
+    auto perChild = [&st, &control](const auto& values, auto& out) {
+        out.clear();
+        if (values.size() != std::size_t(control.faceCount()))
+            return;
+        out.resize(st.parentFace.size());
+        for (std::size_t f = 0; f < out.size(); ++f)
+            out[f] = values[std::size_t(st.parentFace[f])];
+    };
+    perChild(data.faceImportance, s->display.faceImportance);
+    perChild(data.segmentOverrides, s->display.segmentOverrides);
     return s;
 }
 
@@ -118,14 +131,18 @@ std::shared_ptr<const SubdividedSurface> subdividedSurface(const ProjectData& da
             continue;
         cache.splice(cache.begin(), cache, it);
         CacheEntry& entry = cache.front();
-        if (entry.faceSets != data.faceSets || entry.shadingOffsets != data.shadingOffsets) {
+        if (entry.faceSets != data.faceSets || entry.shadingOffsets != data.shadingOffsets
+            || entry.faceImportance != data.faceImportance || entry.segmentOverrides != data.segmentOverrides) {
             entry.surface = build(data, level, entry.surface->stencil);
             entry.faceSets = data.faceSets;
             entry.shadingOffsets = data.shadingOffsets;
+            entry.faceImportance = data.faceImportance;
+            entry.segmentOverrides = data.segmentOverrides;
         }
         return entry.surface;
     }
-    cache.push_front({data.baseMesh, level, data.faceSets, data.shadingOffsets, build(data, level, nullptr)});
+    cache.push_front({data.baseMesh, level, data.faceSets, data.shadingOffsets, data.faceImportance,
+        data.segmentOverrides, build(data, level, nullptr)});
     while (cache.size() > kCachedSurfaces)
         cache.pop_back();
     return cache.front().surface;
