@@ -9,11 +9,13 @@
 #include "celform/model/document/document.h"
 #include "celform/model/analysis/light_optimisation.h"
 #include "celform/model/analysis/light_track_optimisation.h"
+#include "celform/model/analysis/segment_overrides.h"
 #include "celform/model/analysis/segment_tracking.h"
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/output_file.h"
 #include "celform/model/io/project_file.h"
 #include "celform/model/render/render_job.h"
+#include "celform/model/render/render_output.h"
 #include "celform/model/data/blend_evaluator.h"
 
 #include <QFileInfo>
@@ -83,7 +85,8 @@ QJsonObject frameJson(
         segments.append(QJsonObject{{"id", ids && i < ids->size() ? (*ids)[i] : int(i)}, {"pixels", s.pixels},
             {"bright", s.bright}, {"ratio", double(s.ratio)}, {"in_window", s.inWindow},
             {"curvature", s.meanCurvature > 0.f ? "positive" : (s.meanCurvature < 0.f ? "negative" : "flat")},
-            {"centroid", QJsonArray{double(s.centroid.x()), double(s.centroid.y())}}});
+            {"centroid", QJsonArray{double(s.centroid.x()), double(s.centroid.y())}},
+            {"importance", double(s.importance)}});
     }
     return {{"frame", frame},
         {"camera",
@@ -386,7 +389,8 @@ int runOptimiseLight(const Invocation& in)
             const algo::SegmentStats& b = report.segmentsBefore[i];
             const algo::SegmentStats& a = i < report.segmentsAfter.size() ? report.segmentsAfter[i] : b;
             segments.append(QJsonObject{{"id", int(i)}, {"pixels", b.pixels}, {"ratio_before", double(b.ratio)},
-                {"ratio_after", double(a.ratio)}, {"in_window_before", b.inWindow}, {"in_window_after", a.inWindow}});
+                {"ratio_after", double(a.ratio)}, {"in_window_before", b.inWindow}, {"in_window_after", a.inWindow},
+                {"importance", double(b.importance)}});
         }
         QJsonArray iterations;
         for (const algo::LightIteration& it : report.run.iterations) {
@@ -452,6 +456,128 @@ int runOptimiseLight(const Invocation& in)
         text += (in.isSet("dry-run") ? Cli::tr("not saved (--dry-run)") : Cli::tr("the light stays where it is"))
             + QLatin1Char('\n');
     printOut(text);
+    return kExitOk;
+}
+
+/// "A,B,..." of --merge and --release: segment numbers.
+std::vector<int> parseSegmentList(const char* option, const QString& text)
+{
+    std::vector<int> out;
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        bool ok = false;
+        const int s = part.trimmed().toInt(&ok);
+        if (!ok || s < 0)
+            throw UsageError{Cli::tr("--%1 takes segment numbers like 3,7, not “%2”").arg(QLatin1String(option), text)};
+        out.push_back(s);
+    }
+    if (out.empty())
+        throw UsageError{Cli::tr("--%1 takes segment numbers like 3,7, not “%2”").arg(QLatin1String(option), text)};
+    return out;
+}
+
+/// "X,Y,X,Y,..." of --stroke: two or more points in the analysed picture's pixels.
+std::vector<Eigen::Vector2d> parseStroke(const QString& text)
+{
+    const QStringList parts = text.split(QLatin1Char(','));
+    std::vector<Eigen::Vector2d> points;
+    bool ok = parts.size() >= 4 && parts.size() % 2 == 0;
+    for (int i = 0; ok && i + 1 < parts.size(); i += 2) {
+        bool okX = false, okY = false;
+        const double x = parts[i].toDouble(&okX), y = parts[i + 1].toDouble(&okY);
+        ok = okX && okY && std::isfinite(x) && std::isfinite(y);
+        points.emplace_back(x, y);
+    }
+    if (!ok)
+        throw UsageError{Cli::tr("--stroke takes two or more pixel positions X,Y,X,Y,..., not “%1”").arg(text)};
+    return points;
+}
+
+/// `celform segments`: the segment brush from the command line (issue 26): merges, splits and
+/// releases by the segment numbers `analyze --json` prints for the same frame, camera and size,
+/// stored as per-face overrides in one undo step.
+int runSegments(const Invocation& in)
+{
+    const int actions = in.countSet({"list", "merge", "split", "release", "clear"});
+    if (actions != 1)
+        throw UsageError{Cli::tr("give one of --list, --merge A,B, --split S --stroke X,Y,X,Y, --release S or --clear")};
+    if (in.isSet("split") != in.isSet("stroke"))
+        throw UsageError{Cli::tr("--split and --stroke go together")};
+    const QString path = in.argument(0);
+    if (in.isSet("list")) {
+        const model::ProjectData data = model::loadProject(path);
+        const std::vector<std::int64_t> sizes = model::segmentOverrideSizes(data.segmentOverrides);
+        QJsonArray groups;
+        QString text;
+        for (std::size_t l = 0; l < sizes.size(); ++l) {
+            groups.append(QJsonObject{{"label", int(l)}, {"faces", double(sizes[l])}});
+            text += Cli::tr("override %1	%2 faces").arg(l).arg(sizes[l]) + QLatin1Char('\n');
+        }
+        if (in.isSet("json")) {
+            QJsonObject json = segmentOverridesJson(data);
+            json.insert("overrides", groups);
+            json.insert("face_importance", faceImportanceJson(data));
+            printJson(json);
+        } else {
+            printOut(text.isEmpty() ? Cli::tr("no segment overrides") + QLatin1Char('\n') : text);
+        }
+        return kExitOk;
+    }
+    model::RenderJob job;
+    readCameraOptions(in, job);
+    job.pass = QStringLiteral("segments");
+    const model::AnalysisSettings settings = readAnalysisSettings(in);
+    checkRenderMemory("size", QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height()), job.bytesNeeded());
+    const std::vector<int> chosen = in.isSet("merge") ? parseSegmentList("merge", in.value("merge"))
+        : in.isSet("release")                         ? parseSegmentList("release", in.value("release"))
+        : in.isSet("split")                           ? parseSegmentList("split", in.value("split"))
+                                                      : std::vector<int>{};
+    if (in.isSet("split") && chosen.size() != 1)
+        throw UsageError{Cli::tr("--split takes one segment number, not “%1”").arg(in.value("split"))};
+    const std::vector<Eigen::Vector2d> stroke = in.isSet("stroke") ? parseStroke(in.value("stroke"))
+                                                                   : std::vector<Eigen::Vector2d>{};
+    auto doc = openProject(path);
+    if (!doc->hasMesh())
+        throw model::IoError(path, Cli::tr("has no base model"));
+    int before = -1, after = -1;
+    if (in.isSet("clear")) {
+        doc->faceSets().setSegmentOverrides({}, Cli::tr("Clear Segment Overrides"));
+    } else {
+        model::SegmentPicture picture;
+        const model::FrameAnalysis analysed = model::analyseProject(doc->data(), path, job, settings, &picture.faces);
+        picture.segments = analysed.analysis.segments;
+        before = int(picture.segments.sizes.size());
+        model::voteSegmentFaces(picture, std::int32_t(doc->data().baseMesh->faceCount()));
+        std::vector<std::int32_t> overrides;
+        QString undoText;
+        if (in.isSet("merge")) {
+            overrides = model::mergedSegmentOverrides(doc->data(), picture, chosen);
+            undoText = Cli::tr("Merge Segments");
+        } else if (in.isSet("release")) {
+            overrides = model::releasedSegmentOverrides(doc->data(), picture, chosen);
+            undoText = Cli::tr("Release Segments");
+        } else {
+            const model::AnalysisView view = model::resolveAnalysisView(doc->data(), path, job);
+            overrides = model::splitSegmentOverrides(doc->data(), picture, chosen.front(), stroke, view.shape,
+                model::rasterCamera(view.camera, job.size.width(), job.size.height()));
+            undoText = Cli::tr("Split Segment");
+        }
+        doc->faceSets().setSegmentOverrides(std::move(overrides), undoText);
+        after = int(model::analyseProject(doc->data(), path, job, settings).analysis.segments.sizes.size());
+    }
+    doc->saveAs(path);
+    if (in.isSet("json")) {
+        QJsonObject json = segmentOverridesJson(doc->data());
+        if (before >= 0) {
+            json.insert("frame", job.firstFrame);
+            json.insert("size", QJsonArray{job.size.width(), job.size.height()});
+            json.insert("segments_before", before);
+            json.insert("segments_after", after);
+        }
+        printJson(json);
+    } else if (before >= 0) {
+        printOut(Cli::tr("segments at frame %1: %2 -> %3").arg(job.firstFrame).arg(before).arg(after)
+            + QLatin1Char('\n'));
+    }
     return kExitOk;
 }
 
@@ -532,13 +658,33 @@ std::vector<SubCommand> analysisCommands()
         {"dry-run", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Report the light found without saving it.")},
         {"json", nullptr, kJsonOption}};
     optimiseOptions.insert(optimiseOptions.end(), optimiseMore.begin(), optimiseMore.end());
+
+    std::vector<OptionSpec> segmentOptions = camera_options::specs();
+    const std::vector<OptionSpec> segmentMore = {
+        {"list", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "List the override groups and their faces.")},
+        {"merge", "A,B[,C...]",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Make these segments (the numbers `analyze --json` gives for the same frame, camera and size) one.")},
+        {"split", "S",
+            QT_TRANSLATE_NOOP("celform::app::Cli", "Split this segment in two along --stroke.")},
+        {"stroke", "X,Y,X,Y[,...]",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "With --split: the stroke's points in the analysed picture's pixels (x right, y down).")},
+        {"release", "S[,T...]",
+            QT_TRANSLATE_NOOP(
+                "celform::app::Cli", "Give these segments' faces back to the analysis's own segmentation.")},
+        {"clear", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "Remove every segment override.")},
+        {"frame", "F", QT_TRANSLATE_NOOP("celform::app::Cli", "Frame the segments are numbered at (default 0).")},
+        {"size", "WxH", QT_TRANSLATE_NOOP("celform::app::Cli", "Size of the analysed picture (default 1280x720).")},
+        window, depthThreshold, minPixels, {"json", nullptr, kJsonOption}};
+    segmentOptions.insert(segmentOptions.end(), segmentMore.begin(), segmentMore.end());
     return {
         {"analyze",
             {"celform analyze P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames "
              "A-B[:STEP]] "
              "[--size WxH] "
              "[--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] [--light point:X,Y,Z|directional:X,Y,Z] "
-             "[--ridge-threshold T] [--subdivision N] [--window LO,HI|lenient|medium|strict] "
+             "[--ridge-threshold T] [--ridges snakes|raw] [--ridge-depth K] [--subdivision N] [--window LO,HI|lenient|medium|strict] "
              "[--depth-threshold FRACTION] [--min-pixels N] [--json] [--csv FILE] [--out FILE.exr]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error."),
@@ -565,6 +711,16 @@ std::vector<SubCommand> analysisCommands()
                 "Moves the key light so that every segment's bright/dark ratio gets into the window, and saves "
                 "the project."),
             {{"P", kProjectArgument}}, optimiseOptions, runOptimiseLight},
+        {"segments",
+            {"celform segments P --list [--json]",
+                "celform segments P (--merge A,B[,C...] | --split S --stroke X,Y,X,Y[,...] | --release S[,T...]) "
+                "[--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F] [--size WxH] "
+                "[--window LO,HI|lenient|medium|strict] [--depth-threshold FRACTION] [--min-pixels N] [--json]",
+                "celform segments P --clear [--json]"},
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "The segment brush: merges segments of the depth analysis, splits one along a stroke, or gives "
+                "them back to the analysis, saved as per-face overrides."),
+            {{"P", kProjectArgument}}, segmentOptions, runSegments},
     };
 }
 

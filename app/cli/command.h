@@ -16,6 +16,7 @@
 
 namespace celform::model {
 class Document;
+struct ProjectData;
 }
 
 namespace celform::app {
@@ -67,13 +68,19 @@ std::vector<SubCommand> projectCommands(); // new, info
 std::vector<SubCommand> keyCommands(); // key, brush, eval
 std::vector<SubCommand> lookCommands(); // set, render
 std::vector<SubCommand> highlightCommands(); // highlight, patch
-std::vector<SubCommand> analysisCommands(); // analyze, curvature, optimize-light
+std::vector<SubCommand> analysisCommands(); // analyze, curvature, optimize-light, segments
 std::vector<SubCommand> offsetsCommands(); // offsets
 std::vector<SubCommand> cameraCommands(); // camera
 std::vector<SubCommand> fitCommands(); // outline, fit
 std::vector<SubCommand> exportCommands(); // export
 /// The hidden ones: run by the model as its child processes, left out of help and the README.
 std::vector<SubCommand> importCommands(); // import-mesh, import-image
+
+/// The artist's say over the depth analysis (issue 26) as `info --json`, `patch --json` and
+/// `segments --json` print it: the focal points (painted, faces below 1, mean importance) and the
+/// segment overrides (groups, faces in them).
+QJsonObject faceImportanceJson(const model::ProjectData& data);
+QJsonObject segmentOverridesJson(const model::ProjectData& data);
 
 /// A sub-command's parsed command line: options by name, positional arguments by index.
 class Invocation {

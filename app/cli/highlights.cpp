@@ -9,6 +9,8 @@
 
 #include <QJsonArray>
 
+#include <set>
+
 #include <algorithm>
 #include <optional>
 
@@ -327,14 +329,65 @@ QJsonObject patchJson(const algo::FaceSet& set)
     return {{"name", QString::fromStdString(set.name)}, {"face_count", double(set.faces.size())}};
 }
 
+/// A mirrored stroke of one dab whose faces have no twins says so.
+void warnIfNoTwins(const model::FaceSetStroke& stroke, model::MirrorPlane mirror)
+{
+    if (stroke.twinMissing)
+        printErr(Cli::tr("warning: the selected faces have no mirror twins across the %1 plane; only their side was "
+                         "painted")
+                     .arg(model::mirrorPlaneName(mirror)));
+}
+
+/// `patch --importance V [--strength S]` and `--clear-importance`: focal points painted as one
+/// stroke of the patch brush's importance mode (the editor's, one undo step).
+int runImportance(const Invocation& in, const std::vector<Eigen::Vector4d>& spheres,
+    const std::vector<FaceRanges>& faceRanges, const std::optional<model::MirrorPlane>& mirrorChoice)
+{
+    const QString path = in.argument(0);
+    float value = 1.f, strength = 1.f;
+    if (in.isSet("importance")) {
+        value = float(parseNumber("importance", in.value("importance")));
+        if (!(value >= 0.f && value <= 1.f))
+            throw UsageError{Cli::tr("--importance takes a value in [0, 1], not “%1”").arg(in.value("importance"))};
+    }
+    if (in.isSet("strength")) {
+        strength = float(parseNumber("strength", in.value("strength")));
+        if (!(strength > 0.f && strength <= 1.f))
+            throw UsageError{Cli::tr("--strength takes a value in (0, 1], not “%1”").arg(in.value("strength"))};
+    }
+    auto doc = openProject(path);
+    if (!doc->hasMesh())
+        throw model::IoError(path, Cli::tr("has no base model"));
+    std::size_t changed = 0;
+    if (in.isSet("clear-importance")) {
+        doc->faceSets().clearFaceImportance();
+    } else {
+        const auto selected = selectFaces(in, *doc->data().baseMesh, faceRanges, spheres, path);
+        const model::MirrorPlane mirror = mirrorChoice.value_or(doc->data().mirrorPlane);
+        model::FaceSetStroke stroke = doc->faceSets().beginImportanceStroke(value, strength, mirror);
+        changed = doc->faceSets().applyFaceSetStroke(stroke, selected, false);
+        doc->faceSets().endFaceSetStroke(stroke);
+        warnIfNoTwins(stroke, mirror);
+    }
+    doc->saveAs(path);
+    if (in.isSet("json")) {
+        QJsonObject json = faceImportanceJson(doc->data());
+        json.insert("faces_changed", double(changed));
+        printJson(json);
+    }
+    return kExitOk;
+}
+
 int runPatch(const Invocation& in)
 {
-    const int actions = in.countSet({"list", "add", "subtract", "remove"});
+    const int actions = in.countSet({"list", "add", "subtract", "remove", "importance", "clear-importance"});
     const bool selecting = in.countSet({"sphere", "faces", "material"}) > 0;
-    if (actions != 1 || ((in.isSet("list") || in.isSet("remove")) && selecting)
-        || ((in.isSet("add") || in.isSet("subtract")) && !selecting))
-        throw UsageError{
-            Cli::tr("give one of --list, --add NAME or --subtract NAME with a selection, or --remove NAME")};
+    if (actions != 1 || ((in.isSet("list") || in.isSet("remove") || in.isSet("clear-importance")) && selecting)
+        || ((in.isSet("add") || in.isSet("subtract") || in.isSet("importance")) && !selecting))
+        throw UsageError{Cli::tr("give one of --list, --add NAME, --subtract NAME or --importance V with a selection, "
+                                 "or --remove NAME or --clear-importance")};
+    if (in.isSet("strength") && !in.isSet("importance"))
+        throw UsageError{Cli::tr("--strength goes with --importance")};
     const QString path = in.argument(0);
     std::vector<Eigen::Vector4d> spheres;
     for (const QString& text : in.values("sphere")) {
@@ -347,6 +400,10 @@ int runPatch(const Invocation& in)
     std::vector<FaceRanges> faceRanges;
     for (const QString& text : in.values("faces"))
         faceRanges.push_back(parseFaceRanges(text));
+    const std::optional<model::MirrorPlane> mirrorChoice
+        = parseMirror("mirror", in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off"));
+    if (in.isSet("importance") || in.isSet("clear-importance"))
+        return runImportance(in, spheres, faceRanges, mirrorChoice);
     const QString name = in.value(in.isSet("add") ? "add" : in.isSet("subtract") ? "subtract" : "remove");
     if (!in.isSet("list") && name.trimmed().isEmpty())
         throw UsageError{Cli::tr("a patch needs a name")};
@@ -364,8 +421,6 @@ int runPatch(const Invocation& in)
             printOut(text);
         return kExitOk;
     }
-    const std::optional<model::MirrorPlane> mirrorChoice
-        = parseMirror("mirror", in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off"));
     auto doc = openProject(path);
     if (!doc->hasMesh())
         throw model::IoError(path, Cli::tr("has no base model"));
@@ -380,10 +435,7 @@ int runPatch(const Invocation& in)
         model::FaceSetStroke stroke = doc->faceSets().beginFaceSetStroke(name, mirror);
         doc->faceSets().applyFaceSetStroke(stroke, selected, in.isSet("subtract"));
         doc->faceSets().endFaceSetStroke(stroke);
-        if (stroke.twinMissing)
-            printErr(Cli::tr("warning: the selected faces have no mirror twins across the %1 plane; only their side "
-                             "was painted")
-                         .arg(model::mirrorPlaneName(mirror)));
+        warnIfNoTwins(stroke, mirror);
     }
     doc->saveAs(path);
     if (in.isSet("json") && !in.isSet("remove"))
@@ -392,6 +444,31 @@ int runPatch(const Invocation& in)
 }
 
 } // namespace
+
+QJsonObject faceImportanceJson(const model::ProjectData& data)
+{
+    std::int64_t below = 0;
+    double sum = 0.0;
+    for (const float v : data.faceImportance) {
+        below += v < 1.f ? 1 : 0;
+        sum += double(v);
+    }
+    const double faces = data.baseMesh ? double(data.baseMesh->faceCount()) : 0.0;
+    const double mean = data.faceImportance.empty() || faces == 0.0 ? 1.0 : sum / faces;
+    return {{"painted", !data.faceImportance.empty()}, {"faces_below_1", double(below)}, {"mean", mean}};
+}
+
+QJsonObject segmentOverridesJson(const model::ProjectData& data)
+{
+    std::int64_t faces = 0;
+    std::set<std::int32_t> groups;
+    for (const std::int32_t label : data.segmentOverrides)
+        if (label >= 0) {
+            ++faces;
+            groups.insert(label);
+        }
+    return {{"groups", double(groups.size())}, {"faces", double(faces)}};
+}
 
 std::vector<SubCommand> highlightCommands()
 {
@@ -444,9 +521,13 @@ std::vector<SubCommand> highlightCommands()
             {"celform patch P --list [--json]",
                 "celform patch P (--add NAME | --subtract NAME) [--sphere X,Y,Z,R]... [--faces A-B,C]... "
                 "[--material M]... [--mirror auto|x|y|z|off] [--json]",
-                "celform patch P --remove NAME"},
+                "celform patch P --remove NAME",
+                "celform patch P --importance V [--strength S] [--sphere X,Y,Z,R]... [--faces A-B,C]... "
+                "[--material M]... [--mirror auto|x|y|z|off] [--json]",
+                "celform patch P --clear-importance [--json]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
-                "Makes, lists and removes patches: named face sets that highlight layers are limited to."),
+                "Makes, lists and removes patches: named face sets that highlight layers are limited to; paints the "
+                "faces' importance (focal points) that the light optimisation weighs segments by."),
             {{"P", kProjectArgument}},
             {{"list", nullptr, QT_TRANSLATE_NOOP("celform::app::Cli", "List the patches.")},
                 {"add", "NAME",
@@ -455,6 +536,15 @@ std::vector<SubCommand> highlightCommands()
                 {"remove", "NAME",
                     QT_TRANSLATE_NOOP(
                         "celform::app::Cli", "Delete a patch; its highlight layers go back to all faces.")},
+                {"importance", "V",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "Paint the selected faces' importance towards V in [0, 1] (default of every face: 1); a "
+                        "segment's weight in the light optimisation is multiplied by its faces' mean importance.")},
+                {"strength", "S",
+                    QT_TRANSLATE_NOOP("celform::app::Cli",
+                        "With --importance: the share of the way to V the faces go, in (0, 1] (default 1).")},
+                {"clear-importance", nullptr,
+                    QT_TRANSLATE_NOOP("celform::app::Cli", "Every face's importance back to 1.")},
                 {"sphere", "X,Y,Z,R",
                     QT_TRANSLATE_NOOP(
                         "celform::app::Cli", "Select the faces with a corner inside a sphere (repeatable).")},

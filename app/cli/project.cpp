@@ -116,6 +116,9 @@ int runInfo(const Invocation& in)
     root.insert("camera_keys", int(data.look.cameraPath.keys.size()));
     // The light track (issue 26): the keyed lights, empty when the single light serves every frame.
     root.insert("light_keys", model::lightTrackJson(data.look.lightTrack));
+    // The artist's say over the depth analysis (issue 26): focal points and segment overrides.
+    root.insert("face_importance", faceImportanceJson(data));
+    root.insert("segment_overrides", segmentOverridesJson(data));
     if (data.animated()) {
         const algo::BaseAnimation& a = *data.baseAnimation;
         root.insert("base_animation",
