@@ -189,6 +189,58 @@ void applySegmentOverrides(
     }
     if (!any)
         return;
+    // A scan segment that lost most of its pixels to overrides goes with them whole: its rest
+    // (pixels on faces whose vote went to a neighbour, which carry no label of their own) joins
+    // the override next to it, grown over the segment's own pixels; a rest out of reach joins the
+    // override that took most of it. A merge leaves no sliver of its segments behind.
+    std::vector<std::int64_t> kept(std::size_t(scanned), std::int64_t(0));
+    std::vector<std::unordered_map<std::int32_t, std::int64_t>> moved;
+    moved.resize(std::size_t(scanned));
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::int32_t s = labels.labels[i];
+        if (s < 0)
+            continue;
+        if (provisional[i] == s)
+            ++kept[std::size_t(s)];
+        else
+            ++moved[std::size_t(s)][provisional[i]];
+    }
+    std::vector<std::int32_t> heir(std::size_t(scanned), -1);
+    for (std::size_t s = 0; s < heir.size(); ++s) {
+        std::int64_t total = 0, most = 0;
+        for (const auto& [to, n] : moved[s]) {
+            total += n;
+            if (n > most || (n == most && to < heir[s])) {
+                most = n;
+                heir[s] = to;
+            }
+        }
+        if (total <= kept[s])
+            heir[s] = -1;
+    }
+    std::vector<std::size_t> queue;
+    for (std::size_t i = 0; i < count; ++i)
+        if (labels.labels[i] >= 0 && provisional[i] >= scanned && heir[std::size_t(labels.labels[i])] >= 0)
+            queue.push_back(i);
+    const int w = labels.width, h = labels.height;
+    for (std::size_t q = 0; q < queue.size() && std::size_t(w) * std::size_t(h) == count; ++q) {
+        const std::size_t i = queue[q];
+        const int x = int(i % std::size_t(w)), y = int(i / std::size_t(w));
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int nx = x + dx, ny = y + dy;
+                if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h)
+                    continue;
+                const std::size_t j = std::size_t(ny) * std::size_t(w) + std::size_t(nx);
+                if (labels.labels[j] == labels.labels[i] && provisional[j] == labels.labels[j]) {
+                    provisional[j] = provisional[i];
+                    queue.push_back(j);
+                }
+            }
+    }
+    for (std::size_t i = 0; i < count; ++i)
+        if (labels.labels[i] >= 0 && provisional[i] == labels.labels[i] && heir[std::size_t(labels.labels[i])] >= 0)
+            provisional[i] = heir[std::size_t(labels.labels[i])];
     // Sizes, then numbers in the order of the first pixel, the small dropped (thesis 4.5.3).
     std::vector<std::int32_t> sizes(std::size_t(scanned) + byLabel.size(), 0);
     for (std::size_t i = 0; i < count; ++i)

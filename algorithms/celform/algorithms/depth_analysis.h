@@ -120,8 +120,10 @@ void segmentFaceMeans(const SegmentLabels& labels, const std::int32_t* faceId, c
 
 /// The segment brush's overrides (issue 26, "a segment brush"): every covered pixel whose face has
 /// an override label (>= 0) leaves the segment the scan gave it for the one segment of all pixels
-/// of that label, wherever they are; the other pixels keep theirs. Segments are then numbered again
-/// in the order of their first pixel, and those under minPixels dropped as the scan drops them.
+/// of that label, wherever they are; the other pixels keep theirs, but for the rest of a segment
+/// that lost more than half its pixels so: it joins the override beside it (grown over its own
+/// pixels, else the one that took most of it), so that a merge or a split leaves no sliver of the
+/// segment on faces the vote gave a neighbour. Segments are then numbered again in the order of their first pixel, and those under minPixels dropped as the scan drops them.
 /// faceId: per pixel, -1 off the model; overrides: per face (faces beyond it have none).
 void applySegmentOverrides(const std::int32_t* faceId, const std::vector<std::int32_t>& overrides, int minPixels,
     SegmentLabels& labels);
