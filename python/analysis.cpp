@@ -58,6 +58,12 @@ py::object onFile(PyDocument& d, const std::string& subCommand, const py::args& 
 
 void bindAnalysis(py::class_<PyDocument>& document)
 {
+    document.def("command", [](PyDocument& d, const std::string& subCommand, const py::args& before, const py::kwargs& kw) {
+        return onFile(d, subCommand, before, kw, false);
+    }, py::arg("sub_command"),
+        "Any sub-command that takes the project file, on the document's file: doc.command(\"segments\", "
+        "list=True, json=True) is `celform segments P --list --json`, doc.command(\"key\", \"set\", key=..., "
+        "mesh=...) is `celform key set P ...` (saved first, reopened when changed).");
     document.def("analyze", [](PyDocument& d, const py::kwargs& kw) { return onFile(d, "analyze", py::args(), kw, true); },
         "`celform analyze --json`: the depth analysis's segments and error (keywords: its options).");
     document.def("curvature", [](PyDocument& d, const py::kwargs& kw) { return onFile(d, "curvature", py::args(), kw, true); },

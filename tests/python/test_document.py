@@ -116,3 +116,14 @@ def test_file_commands_match_command_line(celform, cli, showcase, tmp_path):
     assert layer["name"] == "shine" and not doc.modified
     assert showcase.read_bytes() == copy.read_bytes()
     assert [p["name"] for p in doc.patch(list=True)["patches"]] == ["ears"]
+
+
+def test_any_sub_command_on_the_document(celform, showcase):
+    """Document.command runs any sub-command of the table on the document's file, positional
+    words before the file (`celform key add P ...`)."""
+    doc = celform.open(showcase)
+    doc.set(sharpness=3)  # unsaved: saved before the sub-command runs
+    made = doc.command("key", "add", name="top", from_base=True, view=(0, 1, 0), json=True)
+    assert made["name"] == "top" and doc.keys == ["side", "front", "top"]
+    assert doc.info()["blend"]["sharpness"] == 3 and not doc.modified
+    assert doc.command("camera", list=True, json=True)["fps"] == doc.info()["fps"]
