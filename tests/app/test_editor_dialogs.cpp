@@ -217,6 +217,51 @@ private slots:
         QCOMPARE(gui.convertToFormat(QImage::Format_RGBA8888), fromCli.convertToFormat(QImage::Format_RGBA8888));
     }
 
+    void writesVectorLinesAsTheCommandLine()
+    {
+        // Issue 28: an .svg output from the dialog is the lines pass as strokes, with the tone
+        // regions when asked, byte for byte what `celform render --out F.svg --svg-tones` writes.
+        app::MainWindow window(app::MainWindow::Mode::Batch);
+        QVERIFY(test::showSample(window, QSize(1200, 800)));
+        QTemporaryDir dir;
+        auto* dialog
+            = openRenderDialog(window, "actionRenderImage", dir.filePath(QStringLiteral("gui.svg")), {160, 120});
+        QVERIFY(dialog);
+        child<QCheckBox>(dialog, "renderOpenWhenDone")->setChecked(false);
+        auto* pass = child<QComboBox>(dialog, "renderPass");
+        QCOMPARE(pass->currentData().toString(), QStringLiteral("lines"));
+        QVERIFY(!pass->isEnabled());
+        auto* tones = child<QCheckBox>(dialog, "renderSvgTones");
+        QVERIFY(tones->isEnabled());
+        tones->setChecked(true);
+        auto* stereo = child<QComboBox>(dialog, "renderStereo");
+        stereo->setCurrentIndex(stereo->findData(int(algo::StereoOutput::Dubois)));
+        QVERIFY(!dialog->problem().isEmpty()); // one group of strokes per eye: no Dubois mix
+        stereo->setCurrentIndex(stereo->findData(int(algo::StereoOutput::Off)));
+        QVERIFY2(dialog->problem().isEmpty(), qPrintable(dialog->problem()));
+        auto* camera = child<QComboBox>(dialog, "renderCamera");
+        camera->setCurrentIndex(camera->findData(QStringLiteral("default")));
+        okButton(dialog)->click();
+        auto* runner = window.findChild<app::JobRunner*>();
+        QVERIFY(runner);
+        QSignalSpy finished(runner, &app::JobRunner::finished);
+        QVERIFY(finished.wait(120000));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+
+        QProcess cli;
+        cli.start(QStringLiteral(CELFORM_EXECUTABLE),
+            {QStringLiteral("render"), test::sampleProject(), QStringLiteral("--view"), QStringLiteral("0.35,0.25,1"),
+                QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--pass"), QStringLiteral("lines"),
+                QStringLiteral("--svg-tones"), QStringLiteral("--out"), dir.filePath(QStringLiteral("cli.svg"))});
+        QVERIFY(cli.waitForFinished(120000));
+        QCOMPARE(cli.exitCode(), 0);
+        QFile gui(dir.filePath(QStringLiteral("gui.svg"))), fromCli(dir.filePath(QStringLiteral("cli.svg")));
+        QVERIFY(gui.open(QIODevice::ReadOnly) && fromCli.open(QIODevice::ReadOnly));
+        const QByteArray svg = gui.readAll();
+        QVERIFY(svg.contains("<path"));
+        QCOMPARE(svg, fromCli.readAll());
+    }
+
     void cancelsASequenceBetweenFrames()
     {
         app::MainWindow window(app::MainWindow::Mode::Batch);

@@ -51,6 +51,12 @@ const QString kCameraKeyPrefix = QStringLiteral("key:");
 const QString kCameraDrawingPrefix = QStringLiteral("drawing:");
 
 /// Selects the item whose data is value, if there is one.
+/// The outputs `celform render` writes: the raster formats, and .svg (the lines pass as strokes).
+bool isOutputSuffix(const QString& suffix)
+{
+    return model::renderSuffixes().contains(suffix) || suffix == QLatin1String("svg");
+}
+
 void selectData(QComboBox* combo, const QVariant& value)
 {
     const int index = combo->findData(value);
@@ -241,6 +247,14 @@ void RenderDialog::buildForm()
     m_lines->addItem(tr("Off"), 0);
     form->addRow(tr("&Lines:"), m_lines);
 
+    // An .svg output holds the lines pass as vector strokes (docs/lines.md, "Vector lines").
+    m_svgTones = new QCheckBox(tr("Tone regions in the SVG"), this);
+    m_svgTones->setObjectName(QStringLiteral("renderSvgTones"));
+    m_svgTones->setToolTip(tr("With an .svg output: the tone regions as filled layers under the strokes, for "
+                              "editing in Inkscape or Illustrator"));
+    form->addRow(QString(), m_svgTones);
+    connect(m_svgTones, &QCheckBox::toggled, this, &RenderDialog::updateState);
+
     m_open
         = new QCheckBox(m_kind == Kind::Image ? tr("Open the image when done") : tr("Open the folder when done"), this);
     m_open->setObjectName(QStringLiteral("renderOpenWhenDone"));
@@ -359,7 +373,7 @@ QString RenderDialog::defaultOutput(const QString& folder, const QString& suffix
         base = QFileInfo(m_document->data().baseMeshName).completeBaseName();
     if (base.isEmpty())
         base = tr("render");
-    const QString ext = model::renderSuffixes().contains(suffix) ? suffix : QStringLiteral("png");
+    const QString ext = isOutputSuffix(suffix) ? suffix : QStringLiteral("png");
     const QString name = m_kind == Kind::Image ? base + QLatin1Char('.') + ext : base + QStringLiteral("_####.") + ext;
     return QDir(folder).filePath(name);
 }
@@ -369,7 +383,8 @@ void RenderDialog::browse()
     const std::pair<QString, QString> formats[]
         = {{QStringLiteral("png"), tr("PNG images (*.png)")}, {QStringLiteral("exr"), tr("OpenEXR images (*.exr)")},
             {QStringLiteral("tif"), tr("TIFF images (*.tif *.tiff)")},
-            {QStringLiteral("jpg"), tr("JPEG images (*.jpg *.jpeg)")}};
+            {QStringLiteral("jpg"), tr("JPEG images (*.jpg *.jpeg)")},
+            {QStringLiteral("svg"), tr("SVG vector lines (*.svg)")}};
     QStringList filters;
     QString selected;
     QString suffix = QFileInfo(m_output->text()).suffix().toLower();
@@ -387,7 +402,7 @@ void RenderDialog::browse()
             &selected, m_kind == Kind::Sequence ? QFileDialog::DontConfirmOverwrite : QFileDialog::Options());
     if (path.isEmpty())
         return;
-    if (!model::renderSuffixes().contains(QFileInfo(path).suffix().toLower())) {
+    if (!isOutputSuffix(QFileInfo(path).suffix().toLower())) {
         QString ext = QStringLiteral("png");
         for (const auto& [e, filter] : formats)
             if (filter == selected)
@@ -411,6 +426,10 @@ model::RenderJob RenderDialog::job() const
     }
     job.size = QSize(m_width->value(), m_height->value());
     job.pass = m_pass->currentData().toString();
+    if (job.writesVectorLines()) {
+        job.pass = QStringLiteral("lines");
+        job.svgTones = m_svgTones->isChecked();
+    }
     job.stereo = algo::StereoOutput(m_stereo->currentData().toInt());
     if (const int style = m_style->currentData().toInt(); style >= 0)
         job.style = model::ShadingStyle(style);
@@ -451,8 +470,10 @@ QString RenderDialog::problem() const
     if (j.output.isEmpty())
         return tr("Choose the output file.");
     const QFileInfo output(j.output);
-    if (!model::renderSuffixes().contains(output.suffix().toLower()))
-        return tr("%1: the output must end in .png, .exr, .tif or .jpg.").arg(QDir::toNativeSeparators(j.output));
+    if (!isOutputSuffix(output.suffix().toLower()))
+        return tr("%1: the output must end in .png, .exr, .tif, .jpg or .svg.").arg(QDir::toNativeSeparators(j.output));
+    if (j.writesVectorLines() && (j.stereo == algo::StereoOutput::Dubois || j.stereo == algo::StereoOutput::HalfColor))
+        return tr("An SVG holds one group of strokes per eye: choose mono, anaglyph, side by side or top-bottom.");
     if (!output.absoluteDir().exists())
         return tr("%1: the folder does not exist.").arg(QDir::toNativeSeparators(output.absolutePath()));
     if (output.isDir())
@@ -478,10 +499,15 @@ void RenderDialog::updateState()
 {
     const QString suffix = QFileInfo(m_output->text()).suffix().toLower();
     const bool stereo = algo::StereoOutput(m_stereo->currentData().toInt()) != algo::StereoOutput::Off;
-    // A stereo render writes the composed beauty; every pass at once needs an .exr.
-    m_pass->setEnabled(!stereo);
-    if (stereo)
+    // A stereo render writes the composed beauty; every pass at once needs an .exr; an .svg is the
+    // lines pass as strokes.
+    const bool svg = suffix == QLatin1String("svg");
+    m_pass->setEnabled(!stereo && !svg);
+    if (svg)
+        selectData(m_pass, QStringLiteral("lines"));
+    else if (stereo)
         selectData(m_pass, QStringLiteral("beauty"));
+    m_svgTones->setEnabled(svg);
     const int allPasses = m_pass->findData(QString());
     if (auto* model = qobject_cast<QStandardItemModel*>(m_pass->model()))
         if (QStandardItem* item = model->item(allPasses))
@@ -490,7 +516,7 @@ void RenderDialog::updateState()
         selectData(m_pass, QStringLiteral("beauty"));
 
     const model::RenderJob j = job();
-    if (!j.output.isEmpty() && model::renderSuffixes().contains(suffix)) {
+    if (!j.output.isEmpty() && isOutputSuffix(suffix)) {
         const QString first = QDir::toNativeSeparators(j.framePath(j.firstFrame));
         m_files->setText(j.isSequence()
                 ? tr("Writes %1 … %2 (%L3 frames)")

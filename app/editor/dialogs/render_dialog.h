@@ -67,6 +67,7 @@ private:
     QComboBox* m_stereo = nullptr;
     QComboBox* m_style = nullptr;
     QComboBox* m_lines = nullptr;
+    QCheckBox* m_svgTones = nullptr; ///< an .svg output's tone regions (`--svg-tones`)
     QCheckBox* m_open = nullptr;
     QLabel* m_files = nullptr;
     QLabel* m_problem = nullptr;
