@@ -315,7 +315,7 @@ std::vector<SubCommand> lookCommands()
         {"render",
             {"celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames "
              "A-B[:STEP]] [--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] "
-             "[--ridge-threshold T] [--light point:X,Y,Z|directional:X,Y,Z] [--subdivision N] "
+             "[--ridge-threshold T] [--ridges snakes|raw] [--ridge-depth K] [--light point:X,Y,Z|directional:X,Y,Z] [--subdivision N] "
              "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
              "[--pass beauty|lines|tone|highlights|depth|normal|id|segments|curvature|depth-error] [--out "
              "FILE.png|.exr|.tif|.jpg|.svg] [--svg-tones] [--strokes FILE.json] [--threads N] [--skip-existing] "

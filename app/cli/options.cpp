@@ -345,7 +345,16 @@ std::vector<OptionSpec> lookOverrideSpecs()
         {"ridge-threshold", "T",
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Apparent-ridge threshold for this picture: view-dependent curvature times the median edge "
-                "length (default: the project's, 0.3 in new projects; lower draws more).")}};
+                "length (default: the project's, 0.3 in new projects; lower draws more).")},
+        {"ridges", "snakes|raw",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Apparent ridges joined into smoothed snakes with short ones dropped (snakes), or as extracted "
+                "(raw) (default: the project's, snakes in new projects).")},
+        {"ridge-depth", "K",
+            QT_TRANSLATE_NOOP("celform::app::Cli",
+                "Lowers the apparent-ridge threshold where the picture's stereo depth error is high, by 1 + K "
+                "times the error over its root mean square (0 to 100; 0: one threshold everywhere; default: "
+                "the project's).")}};
 }
 
 void readCameraOptions(const Invocation& in, model::RenderJob& job)
@@ -382,6 +391,18 @@ void readPictureOptions(const Invocation& in, model::RenderJob& job)
             throw UsageError{
                 Cli::tr("--ridge-threshold takes a number >= 0, not “%1”").arg(in.value("ridge-threshold"))};
         job.ridgeThreshold = float(t);
+    }
+    if (in.isSet("ridges")) {
+        const QString v = in.value("ridges");
+        if (v != QLatin1String("snakes") && v != QLatin1String("raw"))
+            throw UsageError{Cli::tr("--ridges takes snakes or raw, not “%1”").arg(v)};
+        job.ridgeSnakes = v == QLatin1String("snakes");
+    }
+    if (in.isSet("ridge-depth")) {
+        const double k = parseFloat("ridge-depth", in.value("ridge-depth"));
+        if (!(k >= 0 && k <= 100))
+            throw UsageError{Cli::tr("--ridge-depth takes a number from 0 to 100, not “%1”").arg(in.value("ridge-depth"))};
+        job.ridgeDepthStrength = float(k);
     }
 }
 

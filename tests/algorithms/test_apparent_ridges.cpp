@@ -4,6 +4,7 @@
 #include "test_support.h"
 
 #include "celform/algorithms/apparent_ridges.h"
+#include "celform/algorithms/ridge_depth_scale.h"
 #include "celform/algorithms/ridge_snakes.h"
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/io/mesh_io.h"
@@ -342,6 +343,40 @@ private slots:
         QCOMPARE(out.strokes.size(), std::size_t(5));
     }
 
+    // Paper 3, section 4.4, by hand: two faces sharing vertices 1 and 2, four covered pixels.
+    // Face 0's pixels: at vertex 0 (error 2) and halfway between 1 and 2 (error 0); face 1's: at
+    // vertex 3 (error 4) and at vertex 1 (error -2). e_rms = sqrt((4 + 0 + 16 + 4) / 4) = sqrt(6).
+    // e_0 = 2, e_1 = (0.5 * 0 + 1 * 2) / 1.5 = 4/3, e_2 = 0, e_3 = 4, vertex 4 unseen.
+    // With strength 2: s_v = 1 / (1 + 2 e_v / sqrt(6)).
+    void depthErrorScalesTheThreshold()
+    {
+        Faces faces(2, 3);
+        faces << 0, 1, 2, 3, 2, 1;
+        GBuffer g;
+        g.width = 4;
+        g.height = 1;
+        g.faceId = {0, 0, 1, 1};
+        g.barycentric = {{1, 0, 0}, {0, 0.5f, 0.5f}, {1, 0, 0}, {0, 0, 1}};
+        DepthAnalysis a;
+        a.depthError = {2.f, 0.f, 4.f, -2.f};
+        a.meanSquaredError = 6.0;
+        std::vector<float> scale, weight;
+        depthErrorRidgeScale(a, g, faces, 5, 2.f, scale, weight);
+        const float k = 2.f / std::sqrt(6.f);
+        QCOMPARE(scale.size(), std::size_t(5));
+        QVERIFY(std::abs(scale[0] - 1.f / (1.f + k * 2.f)) < 1e-6f);
+        QVERIFY(std::abs(scale[1] - 1.f / (1.f + k * 4.f / 3.f)) < 1e-6f);
+        QCOMPARE(scale[2], 1.f);
+        QVERIFY(std::abs(scale[3] - 1.f / (1.f + k * 4.f)) < 1e-6f);
+        QCOMPARE(scale[4], 1.f);
+        // Strength 0, or a picture without error: one threshold everywhere.
+        depthErrorRidgeScale(a, g, faces, 5, 0.f, scale, weight);
+        QVERIFY(std::all_of(scale.begin(), scale.end(), [](float s) { return s == 1.f; }));
+        a.meanSquaredError = 0.0;
+        depthErrorRidgeScale(a, g, faces, 5, 2.f, scale, weight);
+        QVERIFY(std::all_of(scale.begin(), scale.end(), [](float s) { return s == 1.f; }));
+    }
+
     // The ridge pipeline on a torus: every snake has at least 10 vertices.
     void noShortSnakes()
     {
@@ -355,6 +390,27 @@ private slots:
         QVERIFY(!snakes.strokes.empty());
         for (const Stroke& s : snakes.strokes)
             QVERIFY(s.vertices.size() >= 10);
+
+        // Issue 26, fix 7: raw ridges (figure 4.8) keep every extracted segment: each appears in a
+        // stroke, nothing is smoothed (every point is a segment end as extracted) and short pieces
+        // stay, so there are strokes under 10 vertices and more points than in the snakes.
+        RidgeSnakes raw;
+        extractRidgeSnakes(
+            m.vertices, m.faces, m.vertexFaces(), data, camera, 0.1f, scratch, raw, nullptr, SnakeOptions::raw());
+        std::size_t rawSegments = 0, shortStrokes = 0;
+        for (const Stroke& s : raw.strokes) {
+            rawSegments += s.vertices.size() - (s.closed ? 0 : 1);
+            shortStrokes += s.vertices.size() < 10 ? 1 : 0;
+        }
+        QCOMPARE(rawSegments, scratch.segments.points.size() / 2);
+        QVERIFY(shortStrokes > 0);
+        std::size_t snakeSegments = 0;
+        for (const Stroke& s : snakes.strokes)
+            snakeSegments += s.vertices.size() - (s.closed ? 0 : 1);
+        QVERIFY(rawSegments > snakeSegments);
+        for (const Eigen::Vector3f& p : raw.points)
+            QVERIFY(std::find(scratch.segments.points.begin(), scratch.segments.points.end(), p)
+                != scratch.segments.points.end());
     }
 
     // A scanned mesh: lines exist, are finite, lie on the model and form snakes; more of them at

@@ -679,9 +679,22 @@ private slots:
         QVERIFY2(withRidges > silhouette + 50, qPrintable(QStringLiteral("%1 %2").arg(silhouette).arg(withRidges)));
         QCOMPARE(highThreshold, silhouette);
         QVERIFY(ridgesOnly > 50);
+        // Issue 26, fix 7: raw ridges (figure 4.8) keep the short pieces the snakes drop (4.11).
+        const int rawRidges
+            = linePixels({"--lines", "ridge", "--ridge-threshold", "0.2", "--ridges", "raw"}, "kinds_raw.png");
+        const int snakeRidges
+            = linePixels({"--lines", "ridge", "--ridge-threshold", "0.2", "--ridges", "snakes"}, "kinds_snakes.png");
+        QCOMPARE(snakeRidges, ridgesOnly); // snakes are the default
+        QVERIFY2(rawRidges > snakeRidges, qPrintable(QStringLiteral("%1 %2").arg(rawRidges).arg(snakeRidges)));
+        // Paper 3, 4.4: a threshold lowered where the depth error is high only adds ridges.
+        const int depthDriven
+            = linePixels({"--lines", "ridge", "--ridge-threshold", "0.2", "--ridge-depth", "4"}, "kinds_depth.png");
+        QVERIFY2(depthDriven > snakeRidges, qPrintable(QStringLiteral("%1 %2").arg(depthDriven).arg(snakeRidges)));
         for (const QStringList& bad :
             {QStringList{"--lines", "bogus"}, QStringList{"--lines", "silhouette,bogus"}, QStringList{"--lines", ""},
-                QStringList{"--ridge-threshold", "-1"}, QStringList{"--ridge-threshold", "x"}}) {
+                QStringList{"--ridge-threshold", "-1"}, QStringList{"--ridge-threshold", "x"},
+                QStringList{"--ridges", "joined"}, QStringList{"--ridge-depth", "-1"},
+                QStringList{"--ridge-depth", "nan"}}) {
             const Run r = runCelform(
                 QStringList{"render", project, "--size", "32x32", "--out", m_dir.filePath(QStringLiteral("bad.png"))}
                 + bad);

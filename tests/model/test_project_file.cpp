@@ -489,6 +489,31 @@ private slots:
         QVERIFY(*loadProject(path).baseAnimation == *old);
     }
 
+    void ridgeSettingsRoundTrip()
+    {
+        // Issue 26, fix 7: raw ridges and the depth-driven threshold are saved; older files (no
+        // keys) join the ridges and use one threshold.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("ridges.celform"));
+        ProjectData data = richProject();
+        data.look.lines.ridges = true;
+        data.look.lines.ridgeSnakes = false;
+        data.look.lines.ridgeDepthStrength = 2.5f;
+        saveProject(data, path);
+        QVERIFY(loadProject(path).look.lines == data.look.lines);
+        editManifest(path, [](QJsonObject& m) {
+            QJsonObject look = m.value(QStringLiteral("look")).toObject();
+            QJsonObject kinds = look.value(QStringLiteral("line_kinds")).toObject();
+            kinds.remove(QStringLiteral("ridge_snakes"));
+            kinds.remove(QStringLiteral("ridge_depth_strength"));
+            look.insert(QStringLiteral("line_kinds"), kinds);
+            m.insert(QStringLiteral("look"), look);
+        });
+        const ProjectData old = loadProject(path);
+        QVERIFY(old.look.lines.ridgeSnakes);
+        QCOMPARE(old.look.lines.ridgeDepthStrength, 0.f);
+    }
+
     void lightTrackIsStoredAndOptional()
     {
         // issue 26: the light track is saved (format 3) and files without it (formats 1 and 2)

@@ -35,12 +35,21 @@ struct LineSettings {
     /// Scale-free ridge threshold: view-dependent curvature times the median edge length
     /// (ApparentRidgeOptions::threshold).
     float ridgeThreshold = 0.3f;
+    /// Ridges joined into snakes, smoothed and short ones dropped (paper 3, figure 4.11: the
+    /// default), or raw (figure 4.8: each face's segment as apparent_ridges gives it, only
+    /// segments meeting at a shared mesh edge joined, nothing smoothed or dropped).
+    bool ridgeSnakes = true;
+    /// Paper 3, section 4.4: lower the ridge threshold where a first picture's depth error is high
+    /// (ridge_depth_scale.h); 0 keeps one threshold everywhere. A strength of 1 halves the
+    /// threshold where the error is the picture's root mean square.
+    float ridgeDepthStrength = 0.f;
     bool operator==(const LineSettings& o) const
     {
         return silhouettes == o.silhouettes && creases == o.creases && borders == o.borders
             && materialBoundaries == o.materialBoundaries && creaseAngleDegrees == o.creaseAngleDegrees
             && creaseLowAngleDegrees == o.creaseLowAngleDegrees && ridges == o.ridges
-            && ridgeThreshold == o.ridgeThreshold;
+            && ridgeThreshold == o.ridgeThreshold && ridgeSnakes == o.ridgeSnakes
+            && ridgeDepthStrength == o.ridgeDepthStrength;
     }
 };
 

@@ -149,19 +149,26 @@ template <typename Matrix> bool sameArray(const Matrix& a, const Matrix& b)
 } // namespace
 
 const RidgeSnakes& cachedRidgeSnakes(const Positions& shape, const TriMesh& mesh, const RasterCamera& lineCamera,
-    float threshold, RidgeRenderCache& cache)
+    float threshold, RidgeRenderCache& cache, bool snakes, const std::vector<float>* thresholdScale)
 {
+    const bool sameScale = thresholdScale ? cache.snakeScale == *thresholdScale : cache.snakeScale.empty();
     if (!sameArray(shape, cache.shape) || !sameArray(mesh.faces, cache.faces) || cache.data.featureSize <= 0.f) {
         computeRidgeShapeData(shape, mesh.faces, cache.data);
         cache.shape = shape;
         cache.faces = mesh.faces;
         cache.snakesValid = false;
     }
-    if (!cache.snakesValid || !sameCamera(cache.snakeCamera, lineCamera) || cache.snakeThreshold != threshold) {
-        extractRidgeSnakes(
-            shape, mesh.faces, mesh.vertexFaces(), cache.data, lineCamera, threshold, cache.scratch, cache.snakes);
+    if (!cache.snakesValid || !sameCamera(cache.snakeCamera, lineCamera) || cache.snakeThreshold != threshold
+        || cache.snakeJoined != snakes || !sameScale) {
+        extractRidgeSnakes(shape, mesh.faces, mesh.vertexFaces(), cache.data, lineCamera, threshold, cache.scratch,
+            cache.snakes, thresholdScale, snakes ? SnakeOptions() : SnakeOptions::raw());
+        if (thresholdScale)
+            cache.snakeScale = *thresholdScale;
+        else
+            cache.snakeScale.clear();
         cache.snakeCamera = lineCamera;
         cache.snakeThreshold = threshold;
+        cache.snakeJoined = snakes;
         cache.snakesValid = true;
     }
     return cache.snakes;
@@ -197,7 +204,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
             = [&](const Eigen::Vector3f& p) { return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>()); };
         // Apparent ridges from the line view's eye, clustered in its pixels (paper 3, 4.2.1).
         const RidgeSnakes* snakes = look.lineSettings.ridges
-            ? &cachedRidgeSnakes(shape, mesh, lv, look.lineSettings.ridgeThreshold, cache.ridges)
+            ? &cachedRidgeSnakes(shape, mesh, lv, look.lineSettings.ridgeThreshold, cache.ridges,
+                look.lineSettings.ridgeSnakes, look.ridgeThresholdScale)
             : nullptr;
         // The viewport's LineOverlay::draw takes the same path (stroke_refine.h).
         std::vector<StyledStroke> styled

@@ -58,6 +58,9 @@ struct RenderLook {
     LineSettings lineSettings;
     LineStyle lineStyle;
     const std::vector<float>* shadingOffsets = nullptr; ///< per vertex (paper 3, eq. 4.3), may be null
+    /// Per vertex, a factor on the apparent-ridge threshold (paper 3, section 4.4; see
+    /// ridge_depth_scale.h), may be null (1 everywhere).
+    const std::vector<float>* ridgeThresholdScale = nullptr;
     /// Stylized highlights (Anjyo & Hiramitsu 2003), later layers painted over earlier ones with the
     /// light above and the camera's eye, after shading and before lines.
     std::vector<RenderHighlight> highlights;
@@ -97,6 +100,8 @@ struct RidgeRenderCache {
     bool snakesValid = false;
     RasterCamera snakeCamera;
     float snakeThreshold = 0.f;
+    bool snakeJoined = true; ///< the snakes were joined (false: raw ridges)
+    std::vector<float> snakeScale; ///< the per-vertex threshold factor they were made with (empty: none)
     RidgeSnakes snakes;
 };
 
@@ -119,9 +124,10 @@ struct RenderCache {
     RenderScratch scratch;
 };
 
-/// The ridge snakes of shape seen from lineCamera, through cache (curvature once per shape).
+/// The ridge snakes of shape seen from lineCamera, through cache (curvature once per shape);
+/// raw ridges (figure 4.8) when snakes is false; thresholdScale: per vertex, may be null.
 const RidgeSnakes& cachedRidgeSnakes(const Positions& shape, const TriMesh& mesh, const RasterCamera& lineCamera,
-    float threshold, RidgeRenderCache& cache);
+    float threshold, RidgeRenderCache& cache, bool snakes = true, const std::vector<float>* thresholdScale = nullptr);
 
 /// Renders shape (the view-dependent blend for this camera, #V by 3) with mesh's faces and
 /// materials. lineView lets stereo pairs take their lines from the centre eye (paper 3, section

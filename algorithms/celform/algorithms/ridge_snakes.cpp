@@ -289,7 +289,7 @@ void computeRidgeShapeData(const Positions& shape, const Faces& faces, RidgeShap
 
 void extractRidgeSnakes(const Positions& shape, const Faces& faces, const VertexFaces& around,
     const RidgeShapeData& data, const RasterCamera& lineCamera, float threshold, RidgeScratch& scratch,
-    RidgeSnakes& out, const std::vector<float>* thresholdScale)
+    RidgeSnakes& out, const std::vector<float>* thresholdScale, const SnakeOptions& snakeOptions)
 {
     LineView view;
     view.eye = lineCamera.eye.cast<float>();
@@ -300,7 +300,7 @@ void extractRidgeSnakes(const Positions& shape, const Faces& faces, const Vertex
     options.featureSize = data.featureSize;
     options.thresholdScale = thresholdScale;
     computeApparentRidges(shape, faces, around, data.curvatures, view, options, scratch.ridges, scratch.segments);
-    clusterSnakes(scratch.segments, lineCamera, SnakeOptions(), scratch.snakes, out);
+    clusterSnakes(scratch.segments, lineCamera, snakeOptions, scratch.snakes, out);
 }
 
 } // namespace celform::algo

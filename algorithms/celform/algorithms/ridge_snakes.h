@@ -23,6 +23,16 @@ struct SnakeOptions {
     /// Paper 3, section 4.2.1: "snakes with a length smaller than 10 vertices are removed".
     int minVertices = 10;
     bool smooth = true; ///< one Laplacian pass: interior vertices to the mean of their two neighbours
+
+    /// Raw ridges (paper 3, figure 4.8): no joining across gaps, no smoothing, no length filter.
+    static SnakeOptions raw()
+    {
+        SnakeOptions o;
+        o.joinPixels = 0.f;
+        o.minVertices = 2;
+        o.smooth = false;
+        return o;
+    }
 };
 
 /// Snakes as 3D polylines: each stroke's vertices index points (kinds = kRidge); keys[i] anchors
@@ -80,9 +90,11 @@ struct RidgeScratch {
 /// The whole per-view pipeline the renderer and the viewport share: apparent ridges from the line
 /// camera's eye (the centre eye for stereo pairs), clustered into snakes in its pixels.
 /// thresholdScale: optional per-vertex factor (paper 3, section 4.4), may be null.
+/// snakeOptions: SnakeOptions::raw() keeps the ridges as extracted (figure 4.8).
 void extractRidgeSnakes(const Positions& shape, const Faces& faces, const VertexFaces& around,
     const RidgeShapeData& data, const RasterCamera& lineCamera, float threshold, RidgeScratch& scratch,
-    RidgeSnakes& out, const std::vector<float>* thresholdScale = nullptr);
+    RidgeSnakes& out, const std::vector<float>* thresholdScale = nullptr,
+    const SnakeOptions& snakeOptions = SnakeOptions());
 
 /// The snakes projected with project(point) -> (x, y, depth) and given the line style (inner
 /// width, jitter anchored to the points' keys).

@@ -136,6 +136,10 @@ Look renderJobLook(const ProjectData& data, const RenderJob& job)
     }
     if (job.ridgeThreshold)
         look.lines.ridgeThreshold = *job.ridgeThreshold;
+    if (job.ridgeSnakes)
+        look.lines.ridgeSnakes = *job.ridgeSnakes;
+    if (job.ridgeDepthStrength)
+        look.lines.ridgeDepthStrength = *job.ridgeDepthStrength;
     if (job.light) { // --light holds at every frame: it replaces the light track too
         look.light = *job.light;
         look.lightTrack = {};

@@ -53,6 +53,8 @@ struct RenderJob {
     /// `--lines KIND,...`: lines on with exactly these algo::LineKind bits (ridges included).
     std::optional<std::uint8_t> lineKinds;
     std::optional<float> ridgeThreshold; ///< `--ridge-threshold T`, >= 0
+    std::optional<bool> ridgeSnakes; ///< `--ridges snakes|raw` (paper 3, figures 4.11 and 4.8)
+    std::optional<float> ridgeDepthStrength; ///< `--ridge-depth K`, in [0, 100] (paper 3, 4.4)
     std::optional<Light> light;
     /// `--subdivision N`: the Loop subdivision level (0-3) instead of the look's render level.
     std::optional<int> subdivision;

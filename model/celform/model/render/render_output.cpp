@@ -6,6 +6,7 @@
 #include "celform/model/io/image_io.h"
 #include "celform/model/io/output_file.h"
 #include "celform/model/io/raster_codec.h"
+#include "celform/model/render/ridge_depth_prepass.h"
 
 #include "celform/algorithms/srgb_encode.h"
 
@@ -326,6 +327,8 @@ std::vector<algo::RenderPasses> renderEyes(const ProjectData& data, const Look& 
     algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
+    // The ridges' depth-driven threshold from the centre eye's picture (paper 3, 4.4), both eyes alike.
+    prepareDepthAdaptedRidges(*data.baseMesh, shape, centre, renderLook, cache, threadRidgeDepthPrepass());
     const bool mono = stereo == algo::StereoOutput::Off;
     std::vector<algo::RenderPasses> eyes((mono || withCentre ? 1 : 0) + (mono ? 0 : 2));
     if (mono || withCentre)
@@ -357,7 +360,9 @@ void renderShape(const ProjectData& data, const Look& look, const algo::Position
         // Mono: straight into passes, whose buffers a sequence keeps (issue 29).
         algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
         renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
-        algo::renderFrame(shape, *data.baseMesh, rasterCamera(camera, width, height), renderLook, cache, passes);
+        const algo::RasterCamera raster = rasterCamera(camera, width, height);
+        prepareDepthAdaptedRidges(*data.baseMesh, shape, raster, renderLook, cache, threadRidgeDepthPrepass());
+        algo::renderFrame(shape, *data.baseMesh, raster, renderLook, cache, passes);
         return;
     }
     std::vector<algo::RenderPasses> eyes = renderEyes(

@@ -94,7 +94,8 @@ void LineOverlay::update(const algo::Shape& shape, const algo::TriMesh& mesh, co
             m_ridgeGeneration = shape.generation;
         }
         algo::extractRidgeSnakes(shape.positions, mesh.faces, mesh.vertexFaces(), m_ridgeData, lineCamera,
-            settings.ridgeThreshold, m_ridgeScratch, m_snakes);
+            settings.ridgeThreshold, m_ridgeScratch, m_snakes, nullptr,
+            settings.ridgeSnakes ? algo::SnakeOptions() : algo::SnakeOptions::raw());
     }
     m_ridgeCamera = lineCamera;
     m_mesh = &mesh;

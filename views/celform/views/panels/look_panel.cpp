@@ -339,6 +339,35 @@ LookPanel::LookPanel(model::Document* document, QWidget* parent)
         ridgeThreshold->setValue(m_document->data().look.lines.ridgeThreshold);
         ridgeThreshold->setEnabled(m_document->data().look.lines.ridges);
     });
+    // Paper 3, figures 4.8 and 4.11: raw ridges, or joined into smoothed snakes.
+    auto* ridgeSnakes = new QCheckBox(tr("Join ridges into smooth strokes"), linesBox);
+    ridgeSnakes->setObjectName(QStringLiteral("ridgeSnakes"));
+    ridgeSnakes->setToolTip(tr("Joins the ridge pieces into strokes, smooths them and drops short ones (the "
+                               "thesis's snakes). Off shows the ridges as extracted, piece by piece"));
+    linesForm->addRow(ridgeSnakes);
+    connect(ridgeSnakes, &QCheckBox::toggled, this, [this](bool on) {
+        edit(&model::Look::lines, &model::LookEdits::setLineSettings,
+            [on](algo::LineSettings& s) { s.ridgeSnakes = on; });
+    });
+    m_refreshers.push_back([this, ridgeSnakes] {
+        ridgeSnakes->setChecked(m_document->data().look.lines.ridgeSnakes);
+        ridgeSnakes->setEnabled(m_document->data().look.lines.ridges);
+    });
+    // Paper 3, section 4.4: the threshold as a function of the stereo depth error.
+    QDoubleSpinBox* ridgeDepth = makeSpin(0, 100, 0.5, 1,
+        tr("Lowers the ridge threshold where the stereo depth error of the picture is high, so that more "
+           "lines give the eyes something to match there (0: one threshold everywhere). Renders and the depth "
+           "analysis apply it; the viewport shows the plain threshold"));
+    ridgeDepth->setObjectName(QStringLiteral("ridgeDepthStrength"));
+    linesForm->addRow(tr("Ridges from &depth error:"), ridgeDepth);
+    connect(ridgeDepth, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        edit(&model::Look::lines, &model::LookEdits::setLineSettings,
+            [v](algo::LineSettings& s) { s.ridgeDepthStrength = float(v); });
+    });
+    m_refreshers.push_back([this, ridgeDepth] {
+        ridgeDepth->setValue(m_document->data().look.lines.ridgeDepthStrength);
+        ridgeDepth->setEnabled(m_document->data().look.lines.ridges);
+    });
     linesForm->addRow(tr("C&olour:"),
         makeColorButton(
             tr("Line colour"), [](const model::Look& l) { return l.lineStyle.color; },
