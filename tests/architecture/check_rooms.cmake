@@ -78,6 +78,9 @@ check("views/${V}/viewport"
 check("app/cli"
   "^(${V}/.*|editor/.*|launcher/.*|vtk.*|QWidget|QtWidgets/.*)$"
   "the command line links the model only")
+check("python"
+  "^(${V}/.*|editor/.*|vtk.*|QWidget|QtWidgets/.*|QGuiApplication)$"
+  "the Python module runs headless: the model and the command line's code only")
 check("app/launcher"
   "^(${V}/.*|editor/.*|vtk.*|QWidget|QtWidgets/.*)$"
   "the launcher loads the editor module; it links no widgets")
