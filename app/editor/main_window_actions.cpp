@@ -8,6 +8,7 @@
 #include "editor/jobs/light_optimisation_job.h"
 #include "editor/jobs/light_track_job.h"
 #include "editor/actions/fit_actions.h"
+#include "editor/actions/focal_point_actions.h"
 #include "editor/actions/shading_offset_actions.h"
 #include "editor/settings/preferences.h"
 #include "editor/review_window.h"
@@ -314,6 +315,7 @@ void MainWindow::createMenus()
     look->setObjectName(QStringLiteral("menuLook"));
     look->addAction(action(QStringLiteral("actionOptimiseLight")));
     look->addAction(action(QStringLiteral("actionOptimiseLightAlongShot")));
+    installFocalPointActions(this, look);
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("actionFrameAll")));
     QMenu* presets = m_viewMenu->addMenu(tr("View &From"));

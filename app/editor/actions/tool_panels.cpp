@@ -62,7 +62,10 @@ void connectToolPanels(views::Viewport& viewport, views::PropertiesPanel& proper
     QObject::connect(&highlights, &views::HighlightPanel::highlightTargetChosen, &viewport,
         [&viewport](model::ObjectId layer) { viewport.tool<views::HighlightTool>().setTarget(layer); });
     QObject::connect(&highlights, &views::HighlightPanel::patchTargetChosen, &viewport,
-        [&viewport](const QString& faceSet) { viewport.tool<views::PatchTool>().setTarget(faceSet); });
+        [&viewport](const QString& faceSet) {
+            viewport.tool<views::PatchTool>().setTarget(faceSet);
+            viewport.tool<views::PatchTool>().setMode(views::PatchTool::Mode::Patch);
+        });
     QObject::connect(&highlights, &views::HighlightPanel::patchMirrorToggled, &viewport,
         [&viewport](bool on) { viewport.tool<views::PatchTool>().setMirror(on); });
 

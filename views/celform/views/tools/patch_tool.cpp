@@ -34,10 +34,25 @@ void PatchTool::setTarget(const QString& name)
     emit targetChanged();
 }
 
+void PatchTool::setMode(Mode mode)
+{
+    if (mode == m_mode)
+        return;
+    m_mode = mode;
+    emit targetChanged();
+}
+
 void PatchTool::activate()
 {
-    emit message(Patch::tr("Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.")
-                     .arg(m_target));
+    if (m_mode == Mode::Importance)
+        emit message(Patch::tr("Paint focal points: drag takes the faces towards importance %1 (strength %2), "
+                               "Ctrl+drag back towards 1, [ and ] change the radius.")
+                         .arg(double(m_importance), 0, 'g', 3)
+                         .arg(double(m_strength), 0, 'g', 3));
+    else
+        emit message(
+            Patch::tr("Paint the patch “%1”: drag adds faces, Ctrl+drag removes them, [ and ] change the radius.")
+                .arg(m_target));
 }
 
 bool PatchTool::press(const ToolEvent& event)
@@ -45,13 +60,15 @@ bool PatchTool::press(const ToolEvent& event)
     model::Document* document = m_viewport->document();
     if (!document || !document->hasMesh())
         return false;
-    if (m_target.trimmed().isEmpty()) {
+    if (m_mode == Mode::Patch && m_target.trimmed().isEmpty()) {
         emit message(Patch::tr("Choose or create a patch in the Highlights dock first."));
         return true;
     }
     try {
-        m_stroke = document->faceSets().beginFaceSetStroke(
-            m_target, m_mirror ? document->data().mirrorPlane : model::MirrorPlane::Off);
+        const model::MirrorPlane mirror = m_mirror ? document->data().mirrorPlane : model::MirrorPlane::Off;
+        m_stroke = m_mode == Mode::Importance
+            ? document->faceSets().beginImportanceStroke(m_importance, m_strength, mirror)
+            : document->faceSets().beginFaceSetStroke(m_target, mirror);
     } catch (const model::EditRefused& e) {
         emit message(e.message());
         return true;

@@ -29,6 +29,17 @@ public:
     void setMirror(bool on) { m_mirror = on; }
     [[nodiscard]] bool mirror() const { return m_mirror; }
 
+    /// What a drag paints: the target patch, or the faces' importance (focal points, issue 26:
+    /// a drag takes each face under the brush towards importance() by strength(), Ctrl+drag
+    /// towards 1; the faces painted below 1 are tinted while the tool is on).
+    enum class Mode { Patch, Importance };
+    void setMode(Mode mode);
+    [[nodiscard]] Mode mode() const { return m_mode; }
+    void setImportance(float value) { m_importance = value; }
+    [[nodiscard]] float importance() const { return m_importance; }
+    void setStrength(float strength) { m_strength = strength; }
+    [[nodiscard]] float strength() const { return m_strength; }
+
     void activate() override;
     bool press(const ToolEvent& event) override;
     void move(const ToolEvent& event) override;
@@ -40,7 +51,7 @@ public:
     [[nodiscard]] const std::vector<std::int32_t>& facesUnderBrush(const QPointF& position);
 
 signals:
-    void targetChanged();
+    void targetChanged(); ///< the target or the mode: what the tint shows changed
 
 private:
     void paint(const ToolEvent& event);
@@ -49,6 +60,9 @@ private:
     const BrushSize& m_size;
     QString m_target;
     bool m_mirror = false;
+    Mode m_mode = Mode::Patch;
+    float m_importance = 0.f;
+    float m_strength = 1.f;
     model::FaceSetStroke m_stroke; ///< the drag's, open from press to release
     // Working memory of facesUnderBrush(), sized once per mesh.
     std::vector<char> m_seen;

@@ -188,14 +188,14 @@ void Viewport::documentChanged(const model::ChangeSet& change)
         repaint = true; // the subdivision levels are in the look
     }
     // The subdivided stand-in project carries the face sets and base offsets through the stencil.
-    if (change.has(Part::FaceSets) || change.has(Part::ShadingOffsets))
+    if (change.has(Part::FaceSets) || change.has(Part::ShadingOffsets) || change.has(Part::FaceValues))
         m_surface->invalidate();
     if (change.has(Part::Look) || change.has(Part::Highlights) || change.has(Part::FaceSets)
         || change.has(Part::ShadingOffsets) || change.has(Part::Playhead)) {
         m_lookStale = true;
         repaint = true;
     }
-    if (change.has(Part::FaceSets)) {
+    if (change.has(Part::FaceSets) || change.has(Part::FaceValues)) {
         m_patchStale = true;
         repaint = true;
     }
@@ -282,9 +282,17 @@ void Viewport::syncScene()
     if (m_patchStale) {
         // The patch painted shows on the displayed surface: its children faces there.
         const algo::FaceSet* set = nullptr;
-        if (m_tool == Tool::Patch)
+        algo::FaceSet focal; // the importance mode: the faces painted below 1 (issue 26)
+        if (m_tool == Tool::Patch && tool<PatchTool>().mode() == PatchTool::Mode::Importance) {
+            const std::vector<float>& importance = shown.data->faceImportance;
+            for (std::size_t f = 0; f < importance.size(); ++f)
+                if (importance[f] < 1.f)
+                    focal.faces.push_back(std::int32_t(f));
+            set = &focal;
+        } else if (m_tool == Tool::Patch) {
             if (const algo::FaceSet* painted = data.faceSet(tool<PatchTool>().target()))
                 set = m_surface->level() > 0 ? shown.data->faceSet(QString::fromStdString(painted->name)) : painted;
+        }
         // Lifted by a thousandth of the model's size along the normals: no depth fighting with
         // the model under it, and too little to see.
         m_scene->setPatchOverlay(shape.positions, *shown.normals, shown.mesh->faces, set,
