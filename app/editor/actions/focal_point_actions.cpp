@@ -35,28 +35,31 @@ void installFocalPointActions(MainWindow* window, QMenu* menu)
     QMenu* sub = menu->addMenu(FocalText::tr("&Focal Points"));
     sub->setObjectName(QStringLiteral("menuFocalPoints"));
 
-    QAction* paint = make("actionPaintFocalPoints", FocalText::tr("&Paint Focal Points"),
+    // A checkable action per mode of the patch tool: on, the tool in that mode; it follows the tool.
+    auto modeAction = [&](const char* name, const QString& text, const QString& tip, views::PatchTool::Mode mode) {
+        QAction* a = make(name, text, tip);
+        a->setCheckable(true);
+        QObject::connect(a, &QAction::toggled, viewport, [viewport, tool, mode](bool on) {
+            if (on) {
+                tool->setMode(mode);
+                viewport->setTool(views::Viewport::Tool::Patch);
+            } else if (viewport->tool() == views::Viewport::Tool::Patch && tool->mode() == mode) {
+                viewport->setTool(views::Viewport::Tool::Navigate);
+            }
+        });
+        auto follow = [a, viewport, tool, mode] {
+            const QSignalBlocker block(a);
+            a->setChecked(viewport->tool() == views::Viewport::Tool::Patch && tool->mode() == mode);
+        };
+        QObject::connect(viewport, &views::Viewport::toolChanged, a, follow);
+        QObject::connect(tool, &views::PatchTool::targetChanged, a, follow);
+        return a;
+    };
+    sub->addAction(modeAction("actionPaintFocalPoints", FocalText::tr("&Paint Focal Points"),
         FocalText::tr("Patch brush in importance mode: drag takes the faces towards the importance, Ctrl+drag back "
                       "towards 1; the light optimisation weighs each segment by its faces' mean importance "
-                      "(thesis 6.2)"));
-    paint->setCheckable(true);
-    QObject::connect(paint, &QAction::toggled, viewport, [viewport, tool](bool on) {
-        if (on) {
-            tool->setMode(views::PatchTool::Mode::Importance);
-            viewport->setTool(views::Viewport::Tool::Patch);
-        } else if (viewport->tool() == views::Viewport::Tool::Patch
-            && tool->mode() == views::PatchTool::Mode::Importance) {
-            viewport->setTool(views::Viewport::Tool::Navigate);
-        }
-    });
-    auto follow = [paint, viewport, tool] {
-        const QSignalBlocker block(paint);
-        paint->setChecked(viewport->tool() == views::Viewport::Tool::Patch
-            && tool->mode() == views::PatchTool::Mode::Importance);
-    };
-    QObject::connect(viewport, &views::Viewport::toolChanged, paint, follow);
-    QObject::connect(tool, &views::PatchTool::targetChanged, paint, follow);
-    sub->addAction(paint);
+                      "(thesis 6.2)"),
+        views::PatchTool::Mode::Importance));
 
     QAction* importance = make("actionFocalPointImportance", FocalText::tr("&Importance…"),
         FocalText::tr("The importance a drag paints towards: 0 leaves the faces out of the light optimisation, 1 "
@@ -89,6 +92,27 @@ void installFocalPointActions(MainWindow* window, QMenu* menu)
         }
     });
     sub->addAction(clear);
+
+    // The segment brush (thesis 6.2: "a brush tool ... that allows artists to manually select
+    // segments"), on the depth analysis of the picture the viewport shows.
+    QMenu* brush = menu->addMenu(FocalText::tr("Segment &Brush"));
+    brush->setObjectName(QStringLiteral("menuSegmentBrush"));
+    brush->addAction(modeAction("actionMergeSegments", FocalText::tr("&Merge Segments"),
+        FocalText::tr("Click a segment of the depth analysis, then another: they become one segment"),
+        views::PatchTool::Mode::MergeSegments));
+    brush->addAction(modeAction("actionSplitSegment", FocalText::tr("&Split Segment"),
+        FocalText::tr("Drag across a segment of the depth analysis: it becomes two, one on each side of the drag"),
+        views::PatchTool::Mode::SplitSegment));
+    QAction* release = make("actionClearSegmentOverrides", FocalText::tr("&Clear Segment Overrides"),
+        FocalText::tr("Every face back to the segments the analysis finds"));
+    QObject::connect(release, &QAction::triggered, window, [window, doc] {
+        try {
+            doc->faceSets().setSegmentOverrides({}, FocalText::tr("Clear Segment Overrides"));
+        } catch (const model::EditRefused& e) {
+            window->statusBar()->showMessage(e.message(), 6000);
+        }
+    });
+    brush->addAction(release);
 }
 
 } // namespace celform::app

@@ -1,7 +1,10 @@
 // Dabs of the patch brush go to the document as one face-set stroke (FaceSetEdits::applyFaceSetStroke).
 #include "celform/views/tools/patch_tool.h"
 
+#include "celform/model/analysis/depth_analysis.h"
+#include "celform/model/analysis/segment_overrides.h"
 #include "celform/model/document/document.h"
+#include "celform/model/render/render_output.h"
 #include "celform/model/data/io_error.h"
 #include "celform/views/tools/brush_size.h"
 #include "celform/views/viewport/viewport.h"
@@ -36,15 +39,120 @@ void PatchTool::setTarget(const QString& name)
 
 void PatchTool::setMode(Mode mode)
 {
+    m_firstSegment = -1;
+    m_strokePoints.clear();
     if (mode == m_mode)
         return;
     m_mode = mode;
     emit targetChanged();
 }
 
+/// One analysed picture of the segment brush.
+struct SegmentEdit {
+    model::SegmentPicture picture;
+    model::RenderJob job;
+};
+
+bool PatchTool::analysePicture(SegmentEdit& edit)
+{
+    model::Document* document = m_viewport->document();
+    edit.job.camera = m_viewport->camera();
+    edit.job.firstFrame = edit.job.lastFrame = document->currentFrame();
+    edit.job.size = m_viewport->size();
+    try {
+        const model::FrameAnalysis analysed
+            = model::analyseProject(document->data(), QString(), edit.job, {}, &edit.picture.faces);
+        edit.picture.segments = analysed.analysis.segments;
+        model::voteSegmentFaces(edit.picture, std::int32_t(document->data().baseMesh->faceCount()));
+        return true;
+    } catch (const model::IoError& e) {
+        emit message(e.message());
+    } catch (const std::bad_alloc&) {
+        emit message(Patch::tr("There is not enough memory to analyse the picture."));
+    }
+    return false;
+}
+
+void PatchTool::pickSegment(const QPointF& position)
+{
+    SegmentEdit edit;
+    if (!analysePicture(edit))
+        return;
+    const int x = int(position.x()), y = int(position.y());
+    const algo::SegmentLabels& labels = edit.picture.segments;
+    const int segment = x >= 0 && y >= 0 && x < labels.width && y < labels.height
+        ? labels.labels[std::size_t(y) * std::size_t(labels.width) + std::size_t(x)]
+        : -1;
+    if (segment < 0) {
+        emit message(Patch::tr("No segment of the depth analysis is under the cursor."));
+        return;
+    }
+    if (m_firstSegment < 0 || m_firstSegment == segment) {
+        m_firstSegment = segment;
+        emit message(Patch::tr("Segment %1 chosen: click the segment to merge it with.").arg(segment));
+        return;
+    }
+    model::Document* document = m_viewport->document();
+    try {
+        document->faceSets().setSegmentOverrides(
+            model::mergedSegmentOverrides(document->data(), edit.picture, {m_firstSegment, segment}),
+            Patch::tr("Merge Segments"));
+        emit message(Patch::tr("Segments %1 and %2 merged.").arg(m_firstSegment).arg(segment));
+    } catch (const model::EditRefused& e) {
+        emit message(e.message());
+    }
+    m_firstSegment = -1;
+}
+
+void PatchTool::splitAlong()
+{
+    std::vector<QPointF> points;
+    points.swap(m_strokePoints);
+    if (points.size() < 2)
+        return;
+    SegmentEdit edit;
+    if (!analysePicture(edit))
+        return;
+    // The segment the stroke crosses: the one most of its positions lie on.
+    const algo::SegmentLabels& labels = edit.picture.segments;
+    std::vector<int> votes(labels.sizes.size(), 0);
+    std::vector<Eigen::Vector2d> stroke;
+    for (const QPointF& p : points) {
+        stroke.emplace_back(p.x(), p.y());
+        const int x = int(p.x()), y = int(p.y());
+        if (x >= 0 && y >= 0 && x < labels.width && y < labels.height)
+            if (const std::int32_t s = labels.labels[std::size_t(y) * std::size_t(labels.width) + std::size_t(x)];
+                s >= 0)
+                ++votes[std::size_t(s)];
+    }
+    const auto most = std::max_element(votes.begin(), votes.end());
+    if (most == votes.end() || *most == 0) {
+        emit message(Patch::tr("The stroke crosses no segment of the depth analysis."));
+        return;
+    }
+    const int segment = int(most - votes.begin());
+    model::Document* document = m_viewport->document();
+    try {
+        const model::AnalysisView view = model::resolveAnalysisView(document->data(), QString(), edit.job);
+        document->faceSets().setSegmentOverrides(
+            model::splitSegmentOverrides(document->data(), edit.picture, segment, stroke, view.shape,
+                model::rasterCamera(view.camera, edit.job.size.width(), edit.job.size.height())),
+            Patch::tr("Split Segment"));
+        emit message(Patch::tr("Segment %1 split along the stroke.").arg(segment));
+    } catch (const model::EditRefused& e) {
+        emit message(e.message());
+    } catch (const model::IoError& e) {
+        emit message(e.message());
+    }
+}
+
 void PatchTool::activate()
 {
-    if (m_mode == Mode::Importance)
+    if (m_mode == Mode::MergeSegments)
+        emit message(Patch::tr("Merge segments: click a segment of the depth analysis, then the one to merge it with."));
+    else if (m_mode == Mode::SplitSegment)
+        emit message(Patch::tr("Split a segment: drag across a segment of the depth analysis along the cut."));
+    else if (m_mode == Mode::Importance)
         emit message(Patch::tr("Paint focal points: drag takes the faces towards importance %1 (strength %2), "
                                "Ctrl+drag back towards 1, [ and ] change the radius.")
                          .arg(double(m_importance), 0, 'g', 3)
@@ -60,6 +168,14 @@ bool PatchTool::press(const ToolEvent& event)
     model::Document* document = m_viewport->document();
     if (!document || !document->hasMesh())
         return false;
+    if (m_mode == Mode::MergeSegments) {
+        pickSegment(event.position);
+        return true; // a click: the release ends it
+    }
+    if (m_mode == Mode::SplitSegment) {
+        m_strokePoints.assign(1, event.position);
+        return true;
+    }
     if (m_mode == Mode::Patch && m_target.trimmed().isEmpty()) {
         emit message(Patch::tr("Choose or create a patch in the Highlights dock first."));
         return true;
@@ -79,7 +195,19 @@ bool PatchTool::press(const ToolEvent& event)
 
 void PatchTool::move(const ToolEvent& event)
 {
-    paint(event);
+    if (m_mode == Mode::SplitSegment)
+        m_strokePoints.push_back(event.position);
+    else
+        paint(event);
+}
+
+void PatchTool::release(const ToolEvent& event)
+{
+    if (m_mode == Mode::SplitSegment) {
+        m_strokePoints.push_back(event.position);
+        splitAlong();
+    }
+    endDrag();
 }
 
 void PatchTool::endDrag()

@@ -32,7 +32,10 @@ public:
     /// What a drag paints: the target patch, or the faces' importance (focal points, issue 26:
     /// a drag takes each face under the brush towards importance() by strength(), Ctrl+drag
     /// towards 1; the faces painted below 1 are tinted while the tool is on).
-    enum class Mode { Patch, Importance };
+    /// MergeSegments and SplitSegment are the segment brush (issue 26, thesis 6.2): a click on one
+    /// segment of the depth analysis of the picture shown and a click on another merge them; a
+    /// drag across a segment splits it along the drag. Each edit is one undo step.
+    enum class Mode { Patch, Importance, MergeSegments, SplitSegment };
     void setMode(Mode mode);
     [[nodiscard]] Mode mode() const { return m_mode; }
     void setImportance(float value) { m_importance = value; }
@@ -43,6 +46,7 @@ public:
     void activate() override;
     bool press(const ToolEvent& event) override;
     void move(const ToolEvent& event) override;
+    void release(const ToolEvent& event) override;
 
     /// Faces a paint dab at a widget position touches: the face under it and every face turned
     /// towards the camera around a vertex within the brush radius of the picked point, reached
@@ -55,6 +59,11 @@ signals:
 
 private:
     void paint(const ToolEvent& event);
+    /// The segment brush: the picture the viewport shows, analysed at the widget's size (so widget
+    /// positions are its pixels), with the base face at each pixel; false when there is none.
+    bool analysePicture(struct SegmentEdit& edit);
+    void pickSegment(const QPointF& position);
+    void splitAlong();
     void endDrag() override;
 
     const BrushSize& m_size;
@@ -63,6 +72,8 @@ private:
     Mode m_mode = Mode::Patch;
     float m_importance = 0.f;
     float m_strength = 1.f;
+    int m_firstSegment = -1; ///< MergeSegments: the segment the first click chose
+    std::vector<QPointF> m_strokePoints; ///< SplitSegment: the drag's positions
     model::FaceSetStroke m_stroke; ///< the drag's, open from press to release
     // Working memory of facesUnderBrush(), sized once per mesh.
     std::vector<char> m_seen;
