@@ -294,6 +294,42 @@ private slots:
         QVERIFY(model::loadProject(plainPath).faceImportance.empty());
     }
 
+    void damagedSayIsRefusedAndANewModelDropsIt()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const std::size_t faces = std::size_t(twoSpheres()->faceCount());
+        // Values out of range do not open: the file is damaged.
+        for (int which = 0; which < 2; ++which) {
+            model::ProjectData data = projectOn(twoSpheres());
+            if (which == 0)
+                data.faceImportance.assign(faces, 2.f);
+            else
+                data.segmentOverrides.assign(faces, -7);
+            const QString path = dir.filePath(QStringLiteral("bad%1.celform").arg(which));
+            model::saveProject(data, path);
+            try {
+                (void)model::loadProject(path);
+                QFAIL("a damaged say opened");
+            } catch (const model::IoError& e) {
+                QVERIFY2(e.message().contains(QStringLiteral("damaged")), qPrintable(e.message()));
+            }
+        }
+        // A base model with other faces takes the say away in the same step; undo brings it back.
+        model::Document doc;
+        doc.reset(projectOn(twoSpheres()));
+        model::FaceSetStroke stroke = doc.faceSets().beginImportanceStroke(0.f, 1.f);
+        doc.faceSets().applyFaceSetStroke(stroke, {0, 1}, false);
+        doc.faceSets().endFaceSetStroke(stroke);
+        doc.faceSets().setSegmentOverrides(std::vector<std::int32_t>(faces, 0), QStringLiteral("Merge Segments"));
+        doc.setBaseMesh(test::icosphere(2), QStringLiteral("other.obj"));
+        QVERIFY(doc.data().faceImportance.empty());
+        QVERIFY(doc.data().segmentOverrides.empty());
+        doc.undoStack()->undo();
+        QCOMPARE(doc.data().faceImportance.size(), faces);
+        QCOMPARE(doc.data().segmentOverrides.size(), faces);
+    }
+
     void oldFilesOpenWithImportanceOne()
     {
         // The bundled sample was written before focal points: every segment's importance is 1.
