@@ -206,9 +206,12 @@ DepthPanel::DepthPanel(model::Document* document, Viewport* viewport, QWidget* p
         [](int index) { QSettings().setValue(QStringLiteral("depth/lightWeight"), index); });
 
     // The segments and their bright/dark ratios against the window (thesis 4.1.3, 5.0.3).
-    m_table = new QTableWidget(0, 4, body);
+    m_table = new QTableWidget(0, 5, body);
     m_table->setObjectName(QStringLiteral("segmentTable"));
-    m_table->setHorizontalHeaderLabels({tr("Segment"), tr("Pixels"), tr("Ratio"), tr("In window")});
+    m_table->setHorizontalHeaderLabels({tr("Segment"), tr("Pixels"), tr("Ratio"), tr("In window"), tr("Importance")});
+    m_table->horizontalHeaderItem(4)->setToolTip(
+        tr("The mean importance of the segment's faces (focal points, Look > Focal Points): its weight in the light "
+           "optimisation is multiplied by it"));
     // The columns share the dock's width (no horizontal scrolling in a narrow dock).
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
@@ -418,6 +421,7 @@ void DepthPanel::showResult()
         item(2, QString::number(double(s.ratio), 'f', 2))->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         QTableWidgetItem* in = item(3, s.inWindow ? tr("Yes") : tr("No"));
         in->setForeground(s.inWindow ? QColor(20, 130, 40) : QColor(190, 40, 30));
+        item(4, QString::number(double(s.importance), 'f', 2))->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     }
 }
 
