@@ -103,63 +103,14 @@ void printWarnings(const QString& file, const QStringList& warnings)
         printLine(Cli::tr("warning: %1: %2").arg(file, w));
 }
 
-/// `celform info --json`'s object for the open document (project.cpp, runInfo).
+/// `celform info --json`'s object for the open document (project.cpp, projectInfoJson), with the
+/// key light beside it.
 QJsonObject infoJson(const PyDocument& d)
 {
-    const model::ProjectData& data = d->data();
-    using model::vec3Json;
-    QJsonObject root{{"file", d->filePath().isEmpty() ? QString() : QFileInfo(d->filePath()).absoluteFilePath()},
-        {"format_version", model::kProjectFormatVersion}, {"current_frame", data.currentFrame},
-        {"mirror_plane", model::mirrorPlaneName(data.mirrorPlane)}};
-    if (data.baseMesh) {
-        const auto& mesh = *data.baseMesh;
-        const auto box = algo::boundingBox(mesh.vertices);
-        root.insert("base_mesh",
-            QJsonObject{{"name", data.baseMeshName}, {"vertex_count", double(mesh.vertexCount())},
-                {"triangle_count", double(mesh.faceCount())},
-                {"bounding_box", QJsonObject{{"min", vec3Json(box.min())}, {"max", vec3Json(box.max())}}},
-                {"centroid", vec3Json(algo::centroid(mesh.vertices))}, {"has_uvs", mesh.hasUvs()},
-                {"materials", double(mesh.materials.size())}, {"face_sets", double(data.faceSets.size())}});
-    } else {
-        root.insert("base_mesh", QJsonValue::Null);
-    }
-    QJsonArray drawings;
-    for (const model::Drawing& dr : data.drawings) {
-        const QSize size = model::decodedImageSize(dr.imageData, dr.imageFormat,
-            QStringLiteral("%1 (%2)").arg(d.source(), dr.name));
-        QJsonObject o{{"id", double(dr.id)}, {"name", dr.name}, {"format", dr.imageFormat}, {"width", size.width()},
-            {"height", size.height()}, {"bytes", double(dr.imageData.size())}, {"opacity", dr.opacity},
-            {"frame", dr.frame}, {"aligned", dr.aligned}};
-        if (dr.aligned)
-            o.insert("camera", model::cameraJson(dr.camera));
-        drawings.append(o);
-    }
-    root.insert("drawings", drawings);
-    QJsonArray keys;
-    for (const auto& k : data.keys) {
-        QJsonArray frames, linked;
-        for (const auto& [frame, offsets] : k.offsetsByFrame)
-            frames.append(QJsonObject{{"frame", frame}, {"moved_vertices", double(offsets.indices.size())}});
-        for (auto id : k.drawingIds)
-            if (const auto* dr = data.drawing(id))
-                linked.append(dr->name);
-        keys.append(QJsonObject{{"id", double(k.id)}, {"name", k.name}, {"direction", vec3Json(k.direction)},
-            {"enabled", k.enabled}, {"camera", model::cameraJson(k.camera)}, {"drawings", linked}, {"frames", frames}});
-    }
-    root.insert("key_viewpoints", keys);
-    const char* unspecified[] = {"dummy", "cosine", "cosine2"};
-    root.insert("blend",
-        QJsonObject{{"sharpness", data.blend.sharpness}, {"unspecified", unspecified[int(data.blend.unspecified)]},
-            {"time", data.blend.time == model::TimeInterpolation::PeriodicSpline ? "periodic" : "natural"}});
-    if (data.look.renderCamera)
-        root.insert("render_camera", model::cameraJson(*data.look.renderCamera));
-    root.insert("subdivision", data.look.subdivision.level);
-    root.insert("viewport_subdivision", data.look.subdivision.viewportLevel);
-    root.insert("fps", data.time.fps);
-    root.insert("frame_range", QJsonArray{data.time.firstFrame, data.time.lastFrame});
-    root.insert("camera_keys", int(data.look.cameraPath.keys.size()));
-    root.insert("light_keys", model::lightTrackJson(data.look.lightTrack));
-    root.insert("light", model::lightJson(data.look.light));
+    QJsonObject root = app::projectInfoJson(d->data(), d.source());
+    if (d->filePath().isEmpty())
+        root.insert("file", QString());
+    root.insert("light", model::lightJson(d->data().look.light));
     return root;
 }
 
@@ -299,62 +250,8 @@ py::object brush(PyDocument& d, const py::object& key, py::kwargs kwargs)
 void setSettings(PyDocument& d, const py::kwargs& kwargs)
 {
     const CliOptions o(QStringLiteral("set"), kwargs);
-    const app::Invocation& in = o.in();
-    if (in.countSet({"sharpness", "unspecified", "time", "light", "style", "render-view", "subdivision",
-            "viewport-subdivision"})
-        == 0)
-        throw UsageError{Cli::tr("nothing to set")};
-    std::optional<double> sharpness;
-    if (in.isSet("sharpness")) {
-        sharpness = app::parseNumber("sharpness", in.value("sharpness"));
-        if (!(*sharpness > 0 && *sharpness <= model::kMaxSharpness))
-            throw UsageError{Cli::tr("--sharpness must be above 0 and at most %1").arg(model::kMaxSharpness)};
-    }
-    // The choices of look.cpp's parseUnspecified and parseTime (local to it), the same words.
-    const auto unspecified = app::optionalValue(in, "unspecified", [](const QString& t) {
-        const std::pair<const char*, model::UnspecifiedMode> modes[] = {{"dummy", model::UnspecifiedMode::Dummy},
-            {"cosine", model::UnspecifiedMode::Cosine}, {"cosine2", model::UnspecifiedMode::Cosine2}};
-        return app::parseChoice(t, modes, Cli::tr("--unspecified takes dummy, cosine or cosine2, not “%1”"));
-    });
-    const auto time = app::optionalValue(in, "time", [](const QString& t) {
-        const std::pair<const char*, model::TimeInterpolation> modes[] = {
-            {"natural", model::TimeInterpolation::NaturalSpline}, {"periodic", model::TimeInterpolation::PeriodicSpline}};
-        return app::parseChoice(t, modes, Cli::tr("--time takes natural or periodic, not “%1”"));
-    });
-    const auto light = app::optionalValue(in, "light", [](const QString& v) { return app::parseLight("light", v); });
-    const auto style = app::optionalValue(in, "style", [](const QString& v) { return app::parseStyle("style", v); });
-    const bool removeRenderCamera = in.value("render-view") == QLatin1String("none");
-    const auto renderView = removeRenderCamera ? std::nullopt : app::optionalValue(in, "render-view", [](const QString& v) {
-        return app::parseDirection("render-view", v);
-    });
-    const auto subdivision = app::optionalValue(
-        in, "subdivision", [](const QString& v) { return app::parseSubdivision("subdivision", v); });
-    const auto viewportSubdivision = app::optionalValue(in, "viewport-subdivision",
-        [](const QString& v) { return app::parseSubdivision("viewport-subdivision", v, true); });
-    guardedEdit(d, [&] {
-        if (subdivision || viewportSubdivision) {
-            model::SubdivisionLook s = d->data().look.subdivision;
-            s.level = subdivision.value_or(s.level);
-            s.viewportLevel = viewportSubdivision.value_or(s.viewportLevel);
-            d->look().setSubdivision(s);
-        }
-        if (sharpness)
-            d->look().setSharpness(*sharpness);
-        if (unspecified)
-            d->look().setUnspecifiedMode(*unspecified);
-        if (time)
-            d->look().setTimeInterpolation(*time);
-        if (light)
-            d->look().setLight(*light);
-        if (style)
-            d->look().setShadingStyle(*style);
-        if (removeRenderCamera) {
-            d->look().setRenderCamera(std::nullopt);
-        } else if (renderView) {
-            requireMesh(d);
-            d->look().setRenderCamera(model::cameraFromView(d->data(), *renderView, 16.0 / 9.0));
-        }
-    });
+    const app::ProjectSettings settings = app::readProjectSettings(o.in());
+    guardedEdit(d, [&] { app::applyProjectSettings(*d.doc, settings, d.source(), printLine); });
 }
 
 /// `celform camera` (camera.cpp, runCamera): a turntable, a key, clearing.

@@ -1,9 +1,8 @@
 // Document.render() and Document.export(): `celform render` and `celform export` on the open
-// document (app/cli/look.cpp runRender, app/cli/export.cpp runExport), with the same option
-// checks and the model's renderFrames / exportProject. Without an output file, render() gives one
-// frame as numpy arrays, rendered by the steps renderFrames takes for a frame (render_job.cpp,
-// FrameWorker::render): the job resolved, the frame evaluated, subdivided, its shading offsets,
-// renderShape, then the pass.
+// document (app/cli/look.cpp runRender, app/cli/export.cpp runExport), with the command line's
+// own readers (readRenderJob, readRenderOutputs, readExportJob in cli/options.h) and the model's
+// renderFrames / exportProject. Without an output file, render() gives one frame as numpy arrays,
+// rendered by renderJobFrame (render_job.h) as renderFrames renders a frame, then the pass.
 #include "cli_args.h"
 #include "document.h"
 
@@ -12,22 +11,16 @@
 #include "celform/algorithms/tri_mesh.h"
 #include "celform/model/analysis/depth_analysis.h"
 #include "celform/model/analysis/depth_analysis_output.h"
-#include "celform/model/data/shading_layers.h"
 #include "celform/model/export/export.h"
-#include "celform/model/render/frame_evaluator.h"
 #include "celform/model/render/frame_schedule.h"
 #include "celform/model/render/render_job.h"
 #include "celform/model/render/render_output.h"
-#include "celform/model/render/subdivided_surface.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <QDir>
-#include <QFileInfo>
 #include <QJsonArray>
 #include <QMutex>
-#include <QThread>
 
 namespace celform::python {
 namespace {
@@ -50,82 +43,15 @@ py::array adopt(std::vector<T>&& values, std::vector<py::ssize_t> shape)
     return py::array(py::dtype::of<Element>(), shape, strides, reinterpret_cast<const Element*>(owned->data()), owner);
 }
 
-algo::StereoOutput parseStereo(const QString& text)
+/// The render options of `celform render` read into a job, with its checks (the command line's
+/// readers, look.cpp). toFile: an output is given (else one frame to arrays).
+model::RenderJob renderJob(const app::Invocation& in, bool toFile)
 {
-    // look.cpp's parseStereo (local to it): the same words and message.
-    const std::pair<const char*, algo::StereoOutput> modes[]
-        = {{"off", algo::StereoOutput::Off}, {"anaglyph", algo::StereoOutput::Anaglyph},
-            {"dubois", algo::StereoOutput::Dubois}, {"halfcolor", algo::StereoOutput::HalfColor},
-            {"sbs", algo::StereoOutput::SideBySide}, {"tb", algo::StereoOutput::TopBottom}};
-    return app::parseChoice(text, modes, Cli::tr("--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”"));
-}
-
-/// The render options of `celform render` read into a job, with its checks (look.cpp, runRender
-/// and readVectorLineOptions). toFile: an output is given (else one frame to arrays).
-model::RenderJob renderJob(const PyDocument& d, const app::Invocation& in, bool toFile)
-{
-    if (in.isSet("frame") && in.isSet("frames"))
-        throw UsageError{Cli::tr("give either --frame or --frames")};
-    model::RenderJob job;
-    app::readPictureOptions(in, job);
-    if (in.isSet("frames")) {
-        const app::FrameRange range = app::parseFrameRange("frames", in.value("frames"));
-        job.firstFrame = range.first;
-        job.lastFrame = range.last;
-        job.step = range.step;
-    }
-    job.threads = QThread::idealThreadCount();
-    if (in.isSet("threads")) {
-        job.threads = app::parseInt("threads", in.value("threads"));
-        if (job.threads < 1)
-            throw UsageError{Cli::tr("--threads takes a whole number of at least 1, not “%1”").arg(in.value("threads"))};
-    }
-    job.skipExisting = in.isSet("skip-existing");
-    job.stereo = in.isSet("stereo") ? parseStereo(in.value("stereo")) : algo::StereoOutput::Off;
-    job.pass = in.value("pass");
-    if (in.isSet("pass") && !model::renderPassNames().contains(job.pass))
-        throw UsageError{
-            Cli::tr("--pass takes one of %1, not “%2”").arg(model::renderPassNames().join(QStringLiteral(", ")), job.pass)};
+    model::RenderJob job = app::readRenderJob(in);
     job.output = in.value("out");
     if (!toFile)
         return job;
-    if (job.writesVectorLines()) {
-        if (!in.isSet("pass"))
-            job.pass = QStringLiteral("lines");
-        if (job.pass != QLatin1String("lines"))
-            throw UsageError{Cli::tr("an .svg output holds the lines pass; give --pass lines, not “%1”").arg(job.pass)};
-        const QList<algo::StereoOutput> eyes = {algo::StereoOutput::Off, algo::StereoOutput::SideBySide,
-            algo::StereoOutput::TopBottom, algo::StereoOutput::Anaglyph};
-        if (!eyes.contains(job.stereo))
-            throw UsageError{Cli::tr("an .svg output takes --stereo off, sbs, tb or anaglyph")};
-    }
-    job.svgTones = in.isSet("svg-tones");
-    if (job.svgTones && !job.writesVectorLines())
-        throw UsageError{Cli::tr("--svg-tones needs an .svg output")};
-    job.strokesOutput = in.value("strokes");
-    if (in.isSet("strokes")) {
-        if (job.pass != QLatin1String("lines"))
-            throw UsageError{Cli::tr("--strokes needs the lines pass (--pass lines)")};
-        if (QFileInfo(job.strokesOutput).suffix().toLower() != QLatin1String("json"))
-            throw UsageError{Cli::tr("--strokes must end in .json, not “%1”").arg(job.strokesOutput)};
-        if (job.stereo != algo::StereoOutput::Off && !job.writesVectorLines())
-            throw UsageError{Cli::tr("a stereo render writes its strokes beside an .svg output only")};
-    }
-    if (job.stereo != algo::StereoOutput::Off && in.isSet("pass") && job.pass != QLatin1String("beauty")
-        && !job.writesVectorLines())
-        throw UsageError{Cli::tr("a stereo render writes the beauty pass only")};
-    if (!model::renderSuffixes().contains(QFileInfo(job.output).suffix().toLower()) && !job.writesVectorLines())
-        throw UsageError{Cli::tr("--out must end in .png, .exr, .tif, .jpg or .svg, not “%1”").arg(job.output)};
-    auto numbered = [&](const QString& pattern) {
-        if (!in.isSet("frames") || pattern.isEmpty() || pattern.contains(QLatin1Char('#')))
-            return pattern;
-        const QFileInfo out(pattern);
-        return out.dir().filePath(out.completeBaseName() + QStringLiteral("_####.") + out.suffix());
-    };
-    job.output = numbered(job.output);
-    job.strokesOutput = numbered(job.strokesOutput);
-    const QString size = QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height());
-    app::checkRenderMemory("size", size, job.bytesNeeded());
+    app::readRenderOutputs(in, job);
     job.threads = model::concurrentFrames(job, model::availableRenderMemory());
     return job;
 }
@@ -140,17 +66,6 @@ struct FrameList : model::RenderFrameListener {
         (skip ? skipped : written).append(QJsonObject{{"frame", frame}, {"file", file}});
     }
 };
-
-QJsonArray byFrame(const QJsonArray& frames)
-{
-    std::vector<QJsonValue> sorted(frames.begin(), frames.end());
-    std::sort(sorted.begin(), sorted.end(),
-        [](const QJsonValue& a, const QJsonValue& b) { return a["frame"].toInt() < b["frame"].toInt(); });
-    QJsonArray out;
-    for (const QJsonValue& v : sorted)
-        out.append(v);
-    return out;
-}
 
 py::object renderToFiles(PyDocument& d, const model::RenderJob& job, const py::object& progressCallback)
 {
@@ -170,43 +85,20 @@ py::object renderToFiles(PyDocument& d, const model::RenderJob& job, const py::o
     if (failed)
         // As the command line prints it: "frame F: file: problem".
         throwIo(Cli::tr("frame %1: %2").arg(failed->frame()).arg(failed->message()));
-    return toPython(QJsonObject{{"first", job.firstFrame}, {"last", job.lastFrame}, {"step", job.step},
-        {"count", job.frameCount()}, {"size", QJsonArray{job.size.width(), job.size.height()}},
-        {"threads", job.threads}, {"written", byFrame(listener.written)}, {"skipped", byFrame(listener.skipped)},
-        {"cancelled", progress.cancelled()}});
+    QJsonObject report = app::renderJobJson(job, listener.written, listener.skipped);
+    report.insert("cancelled", progress.cancelled());
+    return toPython(report);
 }
 
-/// One frame's passes as FrameWorker::render makes them (render_job.cpp).
+/// One frame's passes as renderFrames renders them (render_job.h, renderJobFrame).
 algo::RenderPasses renderPasses(PyDocument& d, const model::RenderJob& job)
 {
     const PyDocument::Job busy(d);
     const model::ProjectData& data = d->data();
     const model::ResolvedRenderJob resolved = model::resolveRenderJob(data, d.source(), job);
     py::gil_scoped_release release;
-    model::FrameEvaluator evaluator;
-    evaluator.prepare(data);
-    const int f = job.firstFrame;
-    const model::Camera camera = model::renderJobCamera(data, resolved.look, job, f);
-    evaluator.evaluate(data, f, camera.eye);
-    const model::SubdividedSurface* surface = resolved.surface.get();
-    algo::Shape shape;
-    if (surface)
-        surface->apply(evaluator.shape(), shape.positions);
-    else
-        shape.positions = evaluator.shape();
-    shape.touch();
-    std::vector<float> offsets;
-    model::effectiveShadingOffsets(data, evaluator.blender(), evaluator.direction(), f, offsets);
-    if (surface) {
-        std::vector<float> subdivided;
-        surface->apply(offsets, subdivided);
-        std::swap(offsets, subdivided);
-    }
-    const model::ProjectData& shown = surface ? surface->display : data;
-    algo::RenderCache cache;
     algo::RenderPasses passes;
-    model::renderShape(shown, resolved.look, shape.positions, f, camera, job.size.width(), job.size.height(),
-        job.stereo, cache, passes, shape.generation, &offsets);
+    model::renderJobFrame(data, job, resolved, job.firstFrame, passes);
     return passes;
 }
 
@@ -267,7 +159,7 @@ py::object render(PyDocument& d, const py::object& out, const py::object& progre
     if (!out.is_none())
         kwargs["out"] = out;
     const CliOptions o(QStringLiteral("render"), kwargs);
-    const model::RenderJob job = renderJob(d, o.in(), !out.is_none());
+    const model::RenderJob job = renderJob(o.in(), !out.is_none());
     if (!out.is_none())
         return renderToFiles(d, job, progress);
     return renderToArrays(d, job, passes, srgb8);
@@ -281,36 +173,8 @@ py::object exportAnimation(PyDocument& d, const py::object& format, const py::ob
     kwargs["out"] = out;
     const CliOptions o(QStringLiteral("export"), kwargs);
     const app::Invocation& in = o.in();
-    const auto fmt = model::exportFormatFromName(in.value("format"));
-    if (!fmt)
-        throw UsageError{Cli::tr("--format must be gltf, glb, pc2, obj-seq or usda, not “%1”").arg(in.value("format"))};
-    model::ExportJob job;
-    job.format = *fmt;
-    job.output = in.value("out");
-    if (job.output.isEmpty())
-        throw UsageError{Cli::tr("--out needs a file name")};
-    const QString suffix = QFileInfo(job.output).suffix().toLower();
-    const QString wanted = *fmt == model::ExportFormat::ObjSequence ? QStringLiteral("obj") : model::exportFormatName(*fmt);
-    if (suffix != wanted)
-        throw UsageError{Cli::tr("--out must end in .%1 for --format %2, not “%3”")
-                             .arg(wanted, model::exportFormatName(*fmt), job.output)};
     std::optional<app::FrameRange> frames;
-    if (in.isSet("frames")) {
-        frames = app::parseFrameRange("frames", in.value("frames"));
-        if (frames->step != 1)
-            throw UsageError{Cli::tr("--frames takes A-B for an export, without a step: “%1”").arg(in.value("frames"))};
-    }
-    if (in.isSet("subdivision"))
-        job.subdivision = app::parseSubdivision("subdivision", in.value("subdivision"));
-    if (job.subdivision > 0 && (*fmt == model::ExportFormat::Gltf || *fmt == model::ExportFormat::Glb))
-        throw UsageError{Cli::tr("--subdivision applies to pc2, obj-seq and usda exports; glTF keeps the base "
-                                 "model for its morph targets")};
-    job.blendShapes = in.isSet("blend-shapes");
-    if (job.blendShapes && *fmt != model::ExportFormat::Usda)
-        throw UsageError{Cli::tr("--blend-shapes applies to usda exports (glTF always holds the keys as morph "
-                                 "targets)")};
-    if (job.blendShapes && job.subdivision > 0)
-        throw UsageError{Cli::tr("--blend-shapes holds the keys on the base model and takes no --subdivision")};
+    model::ExportJob job = app::readExportJob(in, frames);
     const model::ProjectData& data = d->data();
     if (!data.baseMesh)
         throw model::IoError(d.source(), Cli::tr("has no base model"));

@@ -15,43 +15,15 @@
 namespace celform::app {
 namespace {
 
+// An unqualified return type: lupdate misreads a qualified one as the context of Cli::tr() strings.
+using model::ExportJob;
+
 int runExport(const Invocation& in)
 {
     if (!in.isSet("format") || !in.isSet("out"))
         throw UsageError{Cli::tr("--format and --out are required")};
-    const auto format = model::exportFormatFromName(in.value("format"));
-    if (!format)
-        throw UsageError{Cli::tr("--format must be gltf, glb, pc2, obj-seq or usda, not “%1”").arg(in.value("format"))};
-    model::ExportJob job;
-    job.format = *format;
-    job.output = in.value("out");
-    if (job.output.isEmpty())
-        throw UsageError{Cli::tr("--out needs a file name")};
-    const QString suffix = QFileInfo(job.output).suffix().toLower();
-    const QString wanted
-        = *format == model::ExportFormat::ObjSequence ? QStringLiteral("obj") : model::exportFormatName(*format);
-    if (suffix != wanted)
-        throw UsageError{Cli::tr("--out must end in .%1 for --format %2, not “%3”")
-                             .arg(wanted, model::exportFormatName(*format), job.output)};
     std::optional<FrameRange> frames;
-    if (in.isSet("frames")) {
-        frames = parseFrameRange("frames", in.value("frames"));
-        // Every format holds consecutive frames (a cache's sample rate, glTF's times).
-        if (frames->step != 1)
-            throw UsageError{Cli::tr("--frames takes A-B for an export, without a step: “%1”").arg(in.value("frames"))};
-    }
-
-    if (in.isSet("subdivision"))
-        job.subdivision = parseSubdivision("subdivision", in.value("subdivision"));
-    if (job.subdivision > 0 && (*format == model::ExportFormat::Gltf || *format == model::ExportFormat::Glb))
-        throw UsageError{Cli::tr("--subdivision applies to pc2, obj-seq and usda exports; glTF keeps the base "
-                                 "model for its morph targets")};
-    job.blendShapes = in.isSet("blend-shapes");
-    if (job.blendShapes && *format != model::ExportFormat::Usda)
-        throw UsageError{Cli::tr("--blend-shapes applies to usda exports (glTF always holds the keys as morph "
-                                 "targets)")};
-    if (job.blendShapes && job.subdivision > 0)
-        throw UsageError{Cli::tr("--blend-shapes holds the keys on the base model and takes no --subdivision")};
+    model::ExportJob job = readExportJob(in, frames);
 
     const QString path = in.argument(0);
     const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
@@ -78,6 +50,43 @@ int runExport(const Invocation& in)
 }
 
 } // namespace
+
+ExportJob readExportJob(const Invocation& in, std::optional<FrameRange>& frames)
+{
+    const auto format = model::exportFormatFromName(in.value("format"));
+    if (!format)
+        throw UsageError{Cli::tr("--format must be gltf, glb, pc2, obj-seq or usda, not “%1”").arg(in.value("format"))};
+    model::ExportJob job;
+    job.format = *format;
+    job.output = in.value("out");
+    if (job.output.isEmpty())
+        throw UsageError{Cli::tr("--out needs a file name")};
+    const QString suffix = QFileInfo(job.output).suffix().toLower();
+    const QString wanted
+        = *format == model::ExportFormat::ObjSequence ? QStringLiteral("obj") : model::exportFormatName(*format);
+    if (suffix != wanted)
+        throw UsageError{Cli::tr("--out must end in .%1 for --format %2, not “%3”")
+                             .arg(wanted, model::exportFormatName(*format), job.output)};
+    if (in.isSet("frames")) {
+        frames = parseFrameRange("frames", in.value("frames"));
+        // Every format holds consecutive frames (a cache's sample rate, glTF's times).
+        if (frames->step != 1)
+            throw UsageError{Cli::tr("--frames takes A-B for an export, without a step: “%1”").arg(in.value("frames"))};
+    }
+
+    if (in.isSet("subdivision"))
+        job.subdivision = parseSubdivision("subdivision", in.value("subdivision"));
+    if (job.subdivision > 0 && (*format == model::ExportFormat::Gltf || *format == model::ExportFormat::Glb))
+        throw UsageError{Cli::tr("--subdivision applies to pc2, obj-seq and usda exports; glTF keeps the base "
+                                 "model for its morph targets")};
+    job.blendShapes = in.isSet("blend-shapes");
+    if (job.blendShapes && *format != model::ExportFormat::Usda)
+        throw UsageError{Cli::tr("--blend-shapes applies to usda exports (glTF always holds the keys as morph "
+                                 "targets)")};
+    if (job.blendShapes && job.subdivision > 0)
+        throw UsageError{Cli::tr("--blend-shapes holds the keys on the base model and takes no --subdivision")};
+    return job;
+}
 
 std::vector<SubCommand> exportCommands()
 {

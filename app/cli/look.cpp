@@ -23,6 +23,7 @@ namespace celform::app {
 namespace {
 
 // Unqualified return types: lupdate misreads a qualified one as the context of Cli::tr() strings.
+using model::RenderJob;
 using model::TimeInterpolation;
 using model::UnspecifiedMode;
 using StereoOutput = algo::StereoOutput;
@@ -41,74 +42,13 @@ TimeInterpolation parseTime(const QString& text)
     return parseChoice(text, modes, Cli::tr("--time takes natural or periodic, not “%1”"));
 }
 
-StereoOutput parseStereo(const QString& text)
-{
-    const std::pair<const char*, algo::StereoOutput> modes[]
-        = {{"off", algo::StereoOutput::Off}, {"anaglyph", algo::StereoOutput::Anaglyph},
-            {"dubois", algo::StereoOutput::Dubois}, {"halfcolor", algo::StereoOutput::HalfColor},
-            {"sbs", algo::StereoOutput::SideBySide}, {"tb", algo::StereoOutput::TopBottom}};
-    return parseChoice(text, modes, Cli::tr("--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”"));
-}
-
 int runSet(const Invocation& in)
 {
-    if (in.countSet({"sharpness", "unspecified", "time", "light", "style", "render-view", "subdivision",
-            "viewport-subdivision"})
-        == 0)
-        throw UsageError{Cli::tr("nothing to set")};
     // Every option is parsed before the file is opened: a usage error changes nothing.
-    std::optional<double> sharpness;
-    if (in.isSet("sharpness")) {
-        sharpness = parseNumber("sharpness", in.value("sharpness"));
-        if (!(*sharpness > 0 && *sharpness <= model::kMaxSharpness))
-            throw UsageError{Cli::tr("--sharpness must be above 0 and at most %1").arg(model::kMaxSharpness)};
-    }
-    const auto unspecified = optionalValue(in, "unspecified", parseUnspecified);
-    const auto time = optionalValue(in, "time", parseTime);
-    const auto light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
-    const auto style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
-    const bool removeRenderCamera = in.value("render-view") == QLatin1String("none");
-    const auto renderView = removeRenderCamera
-        ? std::nullopt
-        : optionalValue(in, "render-view", [](const QString& v) { return parseDirection("render-view", v); });
-
-    const auto subdivision
-        = optionalValue(in, "subdivision", [](const QString& v) { return parseSubdivision("subdivision", v); });
-    const auto viewportSubdivision = optionalValue(
-        in, "viewport-subdivision", [](const QString& v) { return parseSubdivision("viewport-subdivision", v, true); });
-
+    const ProjectSettings settings = readProjectSettings(in);
     const QString path = in.argument(0);
     auto doc = openProject(path);
-    // One document operation per property, as the editor's panels make them.
-    if (subdivision || viewportSubdivision) {
-        model::SubdivisionLook s = doc->data().look.subdivision;
-        s.level = subdivision.value_or(s.level);
-        s.viewportLevel = viewportSubdivision.value_or(s.viewportLevel);
-        if (s.viewportLevel > s.level)
-            printErr(Cli::tr("warning: the viewport's subdivision level %1 is above the render level %2; the "
-                             "viewport shows level %2")
-                         .arg(s.viewportLevel)
-                         .arg(s.level));
-        doc->look().setSubdivision(s);
-    }
-    if (sharpness)
-        doc->look().setSharpness(*sharpness);
-    if (unspecified)
-        doc->look().setUnspecifiedMode(*unspecified);
-    if (time)
-        doc->look().setTimeInterpolation(*time);
-    if (light)
-        doc->look().setLight(*light);
-    if (style)
-        doc->look().setShadingStyle(*style);
-    if (removeRenderCamera) {
-        doc->look().setRenderCamera(std::nullopt);
-    } else if (renderView) {
-        if (!doc->hasMesh())
-            throw model::IoError(path, Cli::tr("has no base model to frame a render camera on"));
-        // Framed for the widest 16:9 shot; narrower ones fit too with the vertical fit.
-        doc->look().setRenderCamera(model::cameraFromView(doc->data(), *renderView, 16.0 / 9.0));
-    }
+    applyProjectSettings(*doc, settings, path, printErr);
     doc->saveAs(path);
     return kExitOk;
 }
@@ -145,50 +85,13 @@ void readVectorLineOptions(const Invocation& in, model::RenderJob& job)
 int runRender(const Invocation& in)
 {
     // Every option is checked before any work: a usage error renders nothing.
-    if (in.isSet("frame") && in.isSet("frames"))
-        throw UsageError{Cli::tr("give either --frame or --frames")};
-    model::RenderJob job;
-    readPictureOptions(in, job);
-    if (in.isSet("frames")) {
-        const FrameRange range = parseFrameRange("frames", in.value("frames"));
-        job.firstFrame = range.first;
-        job.lastFrame = range.last;
-        job.step = range.step;
-    }
-    job.threads = QThread::idealThreadCount();
-    if (in.isSet("threads")) {
-        job.threads = parseInt("threads", in.value("threads"));
-        if (job.threads < 1)
-            throw UsageError{
-                Cli::tr("--threads takes a whole number of at least 1, not “%1”").arg(in.value("threads"))};
-    }
-    job.skipExisting = in.isSet("skip-existing");
-    job.stereo = in.isSet("stereo") ? parseStereo(in.value("stereo")) : algo::StereoOutput::Off;
-    job.pass = in.value("pass");
-    if (in.isSet("pass") && !model::renderPassNames().contains(job.pass))
-        throw UsageError{Cli::tr("--pass takes one of %1, not “%2”")
-                             .arg(model::renderPassNames().join(QStringLiteral(", ")), job.pass)};
+    model::RenderJob job = readRenderJob(in);
     const QString path = in.argument(0);
     job.output = in.isSet("out")
         ? in.value("out")
         : QFileInfo(path).dir().filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".png"));
-    readVectorLineOptions(in, job);
-    if (job.stereo != algo::StereoOutput::Off && in.isSet("pass") && job.pass != QLatin1String("beauty")
-        && !job.writesVectorLines())
-        throw UsageError{Cli::tr("a stereo render writes the beauty pass only")};
-    if (!model::renderSuffixes().contains(QFileInfo(job.output).suffix().toLower()) && !job.writesVectorLines())
-        throw UsageError{Cli::tr("--out must end in .png, .exr, .tif, .jpg or .svg, not “%1”").arg(job.output)};
-    // A farm's chunk of one frame (--frames 100-100) is named as the same frame of a longer range.
-    auto numbered = [&](const QString& pattern) {
-        if (!in.isSet("frames") || pattern.isEmpty() || pattern.contains(QLatin1Char('#')))
-            return pattern;
-        const QFileInfo out(pattern);
-        return out.dir().filePath(out.completeBaseName() + QStringLiteral("_####.") + out.suffix());
-    };
-    job.output = numbered(job.output);
-    job.strokesOutput = numbered(job.strokesOutput);
+    readRenderOutputs(in, job);
     const QString size = QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height());
-    checkRenderMemory("size", size, job.bytesNeeded());
     const int wanted = std::min(job.threads, job.frameCount());
     const qint64 available = model::availableRenderMemory();
     job.threads = model::concurrentFrames(job, available);
@@ -230,25 +133,150 @@ int runRender(const Invocation& in)
         printErr(QStringLiteral("celform: ") + Cli::tr("frame %1: %2").arg(e.frame()).arg(e.message()));
         return kExitBadInput;
     }
-    if (in.isSet("json")) {
-        // In frame order, whichever thread finished first.
-        auto byFrame = [](QJsonArray frames) {
-            std::vector<QJsonValue> sorted(frames.begin(), frames.end());
-            std::sort(sorted.begin(), sorted.end(),
-                [](const QJsonValue& a, const QJsonValue& b) { return a["frame"].toInt() < b["frame"].toInt(); });
-            QJsonArray out;
-            for (const QJsonValue& v : sorted)
-                out.append(v);
-            return out;
-        };
-        printJson({{"first", job.firstFrame}, {"last", job.lastFrame}, {"step", job.step}, {"count", count},
-            {"size", QJsonArray{job.size.width(), job.size.height()}}, {"threads", job.threads},
-            {"written", byFrame(lines.written)}, {"skipped", byFrame(lines.skipped)}});
-    }
+    if (in.isSet("json"))
+        printJson(renderJobJson(job, lines.written, lines.skipped));
     return kExitOk;
 }
 
 } // namespace
+
+StereoOutput parseStereo(const QString& text)
+{
+    const std::pair<const char*, algo::StereoOutput> modes[]
+        = {{"off", algo::StereoOutput::Off}, {"anaglyph", algo::StereoOutput::Anaglyph},
+            {"dubois", algo::StereoOutput::Dubois}, {"halfcolor", algo::StereoOutput::HalfColor},
+            {"sbs", algo::StereoOutput::SideBySide}, {"tb", algo::StereoOutput::TopBottom}};
+    return parseChoice(text, modes, Cli::tr("--stereo takes off, anaglyph, dubois, halfcolor, sbs or tb, not “%1”"));
+}
+
+ProjectSettings readProjectSettings(const Invocation& in)
+{
+    if (in.countSet({"sharpness", "unspecified", "time", "light", "style", "render-view", "subdivision",
+            "viewport-subdivision"})
+        == 0)
+        throw UsageError{Cli::tr("nothing to set")};
+    ProjectSettings settings;
+    if (in.isSet("sharpness")) {
+        settings.sharpness = parseNumber("sharpness", in.value("sharpness"));
+        if (!(*settings.sharpness > 0 && *settings.sharpness <= model::kMaxSharpness))
+            throw UsageError{Cli::tr("--sharpness must be above 0 and at most %1").arg(model::kMaxSharpness)};
+    }
+    settings.unspecified = optionalValue(in, "unspecified", parseUnspecified);
+    settings.time = optionalValue(in, "time", parseTime);
+    settings.light = optionalValue(in, "light", [](const QString& v) { return parseLight("light", v); });
+    settings.style = optionalValue(in, "style", [](const QString& v) { return parseStyle("style", v); });
+    settings.removeRenderCamera = in.value("render-view") == QLatin1String("none");
+    settings.renderView = settings.removeRenderCamera
+        ? std::nullopt
+        : optionalValue(in, "render-view", [](const QString& v) { return parseDirection("render-view", v); });
+
+    settings.subdivision
+        = optionalValue(in, "subdivision", [](const QString& v) { return parseSubdivision("subdivision", v); });
+    settings.viewportSubdivision = optionalValue(
+        in, "viewport-subdivision", [](const QString& v) { return parseSubdivision("viewport-subdivision", v, true); });
+    return settings;
+}
+
+void applyProjectSettings(model::Document& doc, const ProjectSettings& settings, const QString& path,
+    const std::function<void(const QString&)>& warn)
+{
+    // One document operation per property, as the editor's panels make them.
+    if (settings.subdivision || settings.viewportSubdivision) {
+        model::SubdivisionLook s = doc.data().look.subdivision;
+        s.level = settings.subdivision.value_or(s.level);
+        s.viewportLevel = settings.viewportSubdivision.value_or(s.viewportLevel);
+        if (s.viewportLevel > s.level)
+            warn(Cli::tr("warning: the viewport's subdivision level %1 is above the render level %2; the "
+                             "viewport shows level %2")
+                         .arg(s.viewportLevel)
+                         .arg(s.level));
+        doc.look().setSubdivision(s);
+    }
+    if (settings.sharpness)
+        doc.look().setSharpness(*settings.sharpness);
+    if (settings.unspecified)
+        doc.look().setUnspecifiedMode(*settings.unspecified);
+    if (settings.time)
+        doc.look().setTimeInterpolation(*settings.time);
+    if (settings.light)
+        doc.look().setLight(*settings.light);
+    if (settings.style)
+        doc.look().setShadingStyle(*settings.style);
+    if (settings.removeRenderCamera) {
+        doc.look().setRenderCamera(std::nullopt);
+    } else if (settings.renderView) {
+        if (!doc.hasMesh())
+            throw model::IoError(path, Cli::tr("has no base model to frame a render camera on"));
+        // Framed for the widest 16:9 shot; narrower ones fit too with the vertical fit.
+        doc.look().setRenderCamera(model::cameraFromView(doc.data(), *settings.renderView, 16.0 / 9.0));
+    }
+}
+
+RenderJob readRenderJob(const Invocation& in)
+{
+    if (in.isSet("frame") && in.isSet("frames"))
+        throw UsageError{Cli::tr("give either --frame or --frames")};
+    model::RenderJob job;
+    readPictureOptions(in, job);
+    if (in.isSet("frames")) {
+        const FrameRange range = parseFrameRange("frames", in.value("frames"));
+        job.firstFrame = range.first;
+        job.lastFrame = range.last;
+        job.step = range.step;
+    }
+    job.threads = QThread::idealThreadCount();
+    if (in.isSet("threads")) {
+        job.threads = parseInt("threads", in.value("threads"));
+        if (job.threads < 1)
+            throw UsageError{
+                Cli::tr("--threads takes a whole number of at least 1, not “%1”").arg(in.value("threads"))};
+    }
+    job.skipExisting = in.isSet("skip-existing");
+    job.stereo = in.isSet("stereo") ? parseStereo(in.value("stereo")) : algo::StereoOutput::Off;
+    job.pass = in.value("pass");
+    if (in.isSet("pass") && !model::renderPassNames().contains(job.pass))
+        throw UsageError{Cli::tr("--pass takes one of %1, not “%2”")
+                             .arg(model::renderPassNames().join(QStringLiteral(", ")), job.pass)};
+    return job;
+}
+
+void readRenderOutputs(const Invocation& in, model::RenderJob& job)
+{
+    readVectorLineOptions(in, job);
+    if (job.stereo != algo::StereoOutput::Off && in.isSet("pass") && job.pass != QLatin1String("beauty")
+        && !job.writesVectorLines())
+        throw UsageError{Cli::tr("a stereo render writes the beauty pass only")};
+    if (!model::renderSuffixes().contains(QFileInfo(job.output).suffix().toLower()) && !job.writesVectorLines())
+        throw UsageError{Cli::tr("--out must end in .png, .exr, .tif, .jpg or .svg, not “%1”").arg(job.output)};
+    // A farm's chunk of one frame (--frames 100-100) is named as the same frame of a longer range.
+    auto numbered = [&](const QString& pattern) {
+        if (!in.isSet("frames") || pattern.isEmpty() || pattern.contains(QLatin1Char('#')))
+            return pattern;
+        const QFileInfo out(pattern);
+        return out.dir().filePath(out.completeBaseName() + QStringLiteral("_####.") + out.suffix());
+    };
+    job.output = numbered(job.output);
+    job.strokesOutput = numbered(job.strokesOutput);
+    const QString size = QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height());
+    checkRenderMemory("size", size, job.bytesNeeded());
+}
+
+QJsonObject renderJobJson(const model::RenderJob& job, const QJsonArray& written, const QJsonArray& skipped)
+{
+    // In frame order, whichever thread finished first.
+    auto byFrame = [](QJsonArray frames) {
+        std::vector<QJsonValue> sorted(frames.begin(), frames.end());
+        std::sort(sorted.begin(), sorted.end(),
+            [](const QJsonValue& a, const QJsonValue& b) { return a["frame"].toInt() < b["frame"].toInt(); });
+        QJsonArray out;
+        for (const QJsonValue& v : sorted)
+            out.append(v);
+        return out;
+    };
+    return {{"first", job.firstFrame}, {"last", job.lastFrame}, {"step", job.step}, {"count", job.frameCount()},
+        {"size", QJsonArray{job.size.width(), job.size.height()}}, {"threads", job.threads},
+        {"written", byFrame(written)}, {"skipped", byFrame(skipped)}};
+}
 
 std::vector<SubCommand> lookCommands()
 {

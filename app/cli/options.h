@@ -12,12 +12,18 @@
 
 #include <Eigen/Core>
 
+#include <QJsonArray>
 #include <QSize>
 #include <QString>
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <utility>
+
+namespace celform::model {
+struct ExportJob;
+}
 
 namespace celform::app {
 
@@ -125,5 +131,53 @@ void readCameraOptions(const Invocation& in, model::RenderJob& job);
 /// --target and --up), --frame, --size, and the look overrides --style, --lines, --light and
 /// --ridge-threshold.
 void readPictureOptions(const Invocation& in, model::RenderJob& job);
+
+/// `--stereo off|anaglyph|dubois|halfcolor|sbs|tb`.
+algo::StereoOutput parseStereo(const QString& text);
+
+// The sub-commands' readers and builders, shared with the Python module (python/) so that both
+// check the same options with the same words.
+
+/// The options of `celform render` up to its output, read into a job with their checks (look.cpp):
+/// readPictureOptions, --frames, --threads, --skip-existing, --stereo and --pass.
+model::RenderJob readRenderJob(const Invocation& in);
+/// The output options of `celform render` read into job, whose output is set already (look.cpp):
+/// the vector lines (.svg, --svg-tones, --strokes), the pass, stereo and suffix checks, a frame
+/// range's numbered file names and the memory check.
+void readRenderOutputs(const Invocation& in, model::RenderJob& job);
+
+/// What `celform render --json` prints for job: its frames, size and threads, and the frames
+/// written and skipped ({"frame", "file"} objects in any order) listed in frame order.
+QJsonObject renderJobJson(const model::RenderJob& job, const QJsonArray& written, const QJsonArray& skipped);
+
+/// The options of `celform export` read into a job with their checks (export.cpp), --format and
+/// --out given: the format, the output's suffix, --subdivision and --blend-shapes. frames is
+/// --frames when given; the job's frames are the project's otherwise, set once it is read.
+model::ExportJob readExportJob(const Invocation& in, std::optional<FrameRange>& frames);
+
+/// What `celform info --json` prints for a project read from path (project.cpp); path names it
+/// in errors (a drawing whose image header cannot be read) and, absolute, as "file".
+QJsonObject projectInfoJson(const model::ProjectData& data, const QString& path);
+
+/// The settings `celform set` changes (look.cpp), each none when not given.
+struct ProjectSettings {
+    std::optional<double> sharpness;
+    std::optional<model::UnspecifiedMode> unspecified;
+    std::optional<model::TimeInterpolation> time;
+    std::optional<model::Light> light;
+    std::optional<model::ShadingStyle> style;
+    bool removeRenderCamera = false; ///< --render-view none
+    std::optional<Eigen::Vector3d> renderView;
+    std::optional<int> subdivision;
+    std::optional<int> viewportSubdivision;
+};
+/// The options of `celform set`, every one parsed and checked before a file is opened: a usage
+/// error changes nothing ("nothing to set" when none is given).
+ProjectSettings readProjectSettings(const Invocation& in);
+/// Applies the settings to doc, one document operation per property as the editor's panels make
+/// them; warn is told of a viewport subdivision level above the render level. A render view on a
+/// document without a base model is an IoError naming path.
+void applyProjectSettings(model::Document& doc, const ProjectSettings& settings, const QString& path,
+    const std::function<void(const QString&)>& warn);
 
 } // namespace celform::app

@@ -51,16 +51,22 @@ int runNew(const Invocation& in)
     return kExitOk;
 }
 
-int runInfo(const Invocation& in)
+/// The drawings' sizes from their images' headers: info decodes no pixels (nor loads OpenImageIO
+/// for them).
+std::vector<QSize> drawingSizes(const model::ProjectData& data, const QString& path)
 {
-    const QString path = in.argument(0);
-    // Sizes from the images' headers: info decodes no pixels (nor loads OpenImageIO for them).
-    const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
     std::vector<QSize> sizes;
     for (const auto& d : data.drawings)
         sizes.push_back(
             model::decodedImageSize(d.imageData, d.imageFormat, QStringLiteral("%1 (%2)").arg(path, d.name)));
+    return sizes;
+}
 
+} // namespace
+
+QJsonObject projectInfoJson(const model::ProjectData& data, const QString& path)
+{
+    const std::vector<QSize> sizes = drawingSizes(data, path);
     using model::vec3Json;
     QJsonObject root{{"file", QFileInfo(path).absoluteFilePath()}, {"format_version", model::kProjectFormatVersion},
         {"current_frame", data.currentFrame}, {"mirror_plane", model::mirrorPlaneName(data.mirrorPlane)}};
@@ -129,10 +135,20 @@ int runInfo(const Invocation& in)
         root.insert("base_animation", QJsonValue::Null);
     }
 
+    return root;
+}
+
+namespace {
+
+int runInfo(const Invocation& in)
+{
+    const QString path = in.argument(0);
+    const model::ProjectData data = model::loadProject(path, model::DrawingImages::Skip);
     if (in.isSet("json")) {
-        printJson(root);
+        printJson(projectInfoJson(data, path));
         return kExitOk;
     }
+    const std::vector<QSize> sizes = drawingSizes(data, path);
     QString text;
     QTextStream s(&text);
     s << Cli::tr("Project: %1 (format %2)").arg(path).arg(model::kProjectFormatVersion) << '\n';

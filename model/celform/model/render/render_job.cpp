@@ -183,9 +183,62 @@ ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& sourc
 
 namespace {
 
-/// One thread's renderer of a job's frames (a FrameRenderer): its own buffers and caches, which
-/// only spare work whose result they hold exactly (the shape keeps its generation while frames
-/// leave it still, so highlight geometry and the analyser's curvature are reused).
+/// One thread's evaluation of a job's frames, its buffers and caches kept from frame to frame:
+/// they only spare work whose result they hold exactly (the shape keeps its generation while
+/// frames leave it still, so highlight geometry and the analyser's curvature are reused).
+struct JobFrameState {
+    explicit JobFrameState(const ProjectData& data)
+    {
+        // resolveRenderJob has built the same sphere already, and thrown if it could not.
+        evaluator.prepare(data);
+    }
+
+    /// Evaluates frame f: camera, shape and offsets become the frame's. Returns the project the
+    /// frame shows: the subdivided base model, face sets and offsets stand in for the control ones.
+    const ProjectData& evaluate(const ProjectData& data, const RenderJob& job, const ResolvedRenderJob& resolved, int f)
+    {
+        // The one evaluation of a frame (frame_evaluator.h): the camera at the frame (the path's
+        // when the project has one), the animated base there, the view direction and the shape.
+        camera = renderJobCamera(data, resolved.look, job, f);
+        evaluator.evaluate(data, f, camera.eye);
+        const algo::Positions& next = evaluator.shape();
+        const SubdividedSurface* surface = resolved.surface.get();
+        if (shape.generation == 0 || next.rows() != control.rows() || next != control) {
+            control = next;
+            // The smooth surface comes after the blend, the animation and the key deformations.
+            if (surface)
+                surface->apply(control, shape.positions);
+            else
+                shape.positions = control;
+            shape.touch();
+        }
+        effectiveShadingOffsets(data, evaluator.blender(), evaluator.direction(), f, offsets);
+        if (surface) {
+            surface->apply(offsets, subdividedOffsets);
+            std::swap(offsets, subdividedOffsets);
+        }
+        return surface ? surface->display : data;
+    }
+
+    /// The evaluated frame f's passes; shown is what evaluate() returned.
+    void render(const ProjectData& shown, const RenderJob& job, const ResolvedRenderJob& resolved, int f,
+        algo::RenderPasses& passes)
+    {
+        renderShape(shown, resolved.look, shape.positions, f, camera, job.size.width(), job.size.height(), job.stereo,
+            cache, passes, shape.generation, &offsets);
+    }
+
+    FrameEvaluator evaluator;
+    algo::RenderCache cache;
+    Camera camera; // the frame's
+    algo::Positions control; // the frame's control shape (before subdivision)
+    algo::Shape shape; // the shape rendered: control, or its subdivided surface
+    std::vector<float> offsets; // in effect at the camera's view and the frame (shading_layers.h)
+    std::vector<float> subdividedOffsets;
+};
+
+/// One thread's renderer of a job's frames (a FrameRenderer): its own buffers and caches
+/// (JobFrameState's, the analyser's, the encoded files').
 class FrameWorker {
 public:
     FrameWorker(const ProjectData& data, const RenderJob& job, const ResolvedRenderJob& resolved)
@@ -195,36 +248,14 @@ public:
         , m_allPasses(job.writesAllPasses())
         , m_floatFile(QFileInfo(job.output).suffix().toLower() == QLatin1String("exr"))
         , m_analysisPicture(analysisPictureFromName(job.pass))
+        , m_frame(data)
     {
-        // resolveRenderJob has built the same sphere already, and thrown if it could not.
-        m_evaluator.prepare(data);
     }
 
     FrameWrite render(int f, const QString& target, const std::function<bool()>& cancelled)
     {
-        const ProjectData& data = m_data;
-        // The one evaluation of a frame (frame_evaluator.h): the camera at the frame (the path's
-        // when the project has one), the animated base there, the view direction and the shape.
-        const Camera camera = renderJobCamera(data, m_resolved.look, m_job, f);
-        m_evaluator.evaluate(data, f, camera.eye);
-        const algo::Positions& next = m_evaluator.shape();
-        const SubdividedSurface* surface = m_resolved.surface.get();
-        if (m_shape.generation == 0 || next.rows() != m_control.rows() || next != m_control) {
-            m_control = next;
-            // The smooth surface comes after the blend, the animation and the key deformations.
-            if (surface)
-                surface->apply(m_control, m_shape.positions);
-            else
-                m_shape.positions = m_control;
-            m_shape.touch();
-        }
-        effectiveShadingOffsets(data, m_evaluator.blender(), m_evaluator.direction(), f, m_offsets);
-        if (surface) {
-            surface->apply(m_offsets, m_subdividedOffsets);
-            std::swap(m_offsets, m_subdividedOffsets);
-        }
-        // The subdivided base model, face sets and offsets stand in for the control ones.
-        const ProjectData& shown = surface ? surface->display : data;
+        const ProjectData& shown = m_frame.evaluate(m_data, m_job, m_resolved, f);
+        const Camera& camera = m_frame.camera;
         // Two frames' file data, used in turn: the writer may still be writing the last one.
         EncodedFrame& encoded = m_encoded[m_nextEncoded];
         m_nextEncoded ^= 1;
@@ -232,8 +263,8 @@ public:
         // The analysis passes (segments, curvature, depth error) come from the depth analysis of
         // the centre eye's picture.
         if (m_analysisPicture) {
-            m_analyser.analyse(shown, m_resolved.look, m_shape.positions, m_shape.generation, f, camera,
-                m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_offsets);
+            m_analyser.analyse(shown, m_resolved.look, m_frame.shape.positions, m_frame.shape.generation, f, camera,
+                m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_frame.offsets);
             if (cancelled())
                 return {};
             const algo::ImageRGBA image = analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile);
@@ -245,8 +276,7 @@ public:
                 return {};
             return [] {};
         } else {
-            renderShape(shown, m_resolved.look, m_shape.positions, f, camera, m_job.size.width(), m_job.size.height(),
-                m_job.stereo, m_cache, m_passes, m_shape.generation, &m_offsets);
+            m_frame.render(shown, m_job, m_resolved, f, m_passes);
             if (cancelled())
                 return {};
             if (m_allPasses) {
@@ -272,8 +302,9 @@ private:
     bool renderVectorLines(const ProjectData& shown, int f, const Camera& camera, const QString& target,
         const std::function<bool()>& cancelled)
     {
-        const std::vector<algo::RenderPasses> eyes = renderEyes(shown, m_resolved.look, m_shape.positions, f, camera,
-            m_job.size.width(), m_job.size.height(), m_job.stereo, m_cache, m_shape.generation, &m_offsets);
+        const std::vector<algo::RenderPasses> eyes = renderEyes(shown, m_resolved.look, m_frame.shape.positions, f,
+            camera, m_job.size.width(), m_job.size.height(), m_job.stereo, m_frame.cache, m_frame.shape.generation,
+            &m_frame.offsets);
         if (cancelled())
             return false;
         const VectorLines lines = vectorLinesOf(eyes, m_job.stereo, m_resolved.look, m_job.svgTones, f);
@@ -292,14 +323,9 @@ private:
     const bool m_allPasses;
     const bool m_floatFile;
     const std::optional<AnalysisPicture> m_analysisPicture;
-    FrameEvaluator m_evaluator;
-    algo::RenderCache m_cache;
+    JobFrameState m_frame;
     DepthAnalyser m_analyser;
     FrameAnalysis m_analysed;
-    algo::Positions m_control; // the frame's control shape (before subdivision)
-    algo::Shape m_shape; // the shape rendered: m_control, or its subdivided surface
-    std::vector<float> m_offsets; // in effect at the camera's view and the frame (shading_layers.h)
-    std::vector<float> m_subdividedOffsets;
     algo::RenderPasses m_passes; // the frame's passes, their storage kept from frame to frame
     algo::ImageRGBA m_image; // a pass other than the beauty as an image
     std::array<EncodedFrame, 2> m_encoded;
@@ -307,6 +333,13 @@ private:
 };
 
 } // namespace
+
+void renderJobFrame(const ProjectData& data, const RenderJob& job, const ResolvedRenderJob& resolved, int frame,
+    algo::RenderPasses& passes)
+{
+    JobFrameState state(data);
+    state.render(state.evaluate(data, job, resolved, frame), job, resolved, frame, passes);
+}
 
 int renderFrames(const ProjectData& data, const QString& source, const RenderJob& job, algo::Progress* progress,
     RenderFrameListener* listener)

@@ -21,6 +21,10 @@
 #include <memory>
 #include <optional>
 
+namespace celform::algo {
+struct RenderPasses;
+}
+
 namespace celform::model {
 
 struct SubdividedSurface;
@@ -121,6 +125,12 @@ struct ResolvedRenderJob {
 /// Resolves a job for a project; throws IoError naming source when there is no base model, the
 /// keys cannot be blended or the subdivision level does not fit in memory.
 ResolvedRenderJob resolveRenderJob(const ProjectData& data, const QString& source, const RenderJob& job);
+
+/// Renders one frame of a job into passes in memory, as renderFrames renders a frame before it
+/// encodes it (the same evaluation, subdivided surface, shading offsets and renderShape): for a
+/// picture wanted as pixels rather than a file. resolved is resolveRenderJob(data, ..., job).
+void renderJobFrame(const ProjectData& data, const RenderJob& job, const ResolvedRenderJob& resolved, int frame,
+    algo::RenderPasses& passes);
 
 /// Told of each frame a render finishes, beside the progress that counts them: the command line
 /// lists the files written and skipped, the editor keeps them. Called one at a time (never two at
