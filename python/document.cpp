@@ -137,30 +137,14 @@ py::object addKey(PyDocument& d, const py::object& name, py::kwargs kwargs)
 {
     const CliOptions o(QStringLiteral("key"), withOption(kwargs, "name", name));
     const app::Invocation& in = o.in();
-    namespace co = app::camera_options;
-    if (!in.isSet("name") || in.isSet("mesh") == in.isSet("from-base"))
-        throw UsageError{Cli::tr("--name and exactly one of --mesh or --from-base are required")};
-    const QString keyName = in.value("name");
-    if (keyName.trimmed().isEmpty())
-        throw UsageError{Cli::tr("--name needs a name, not “%1”").arg(keyName)};
-    co::checkCombination(in, true);
-    const bool byView = co::byView(in);
-    const Eigen::Vector3d view = byView ? co::view(in) : Eigen::Vector3d::Zero();
-    const model::Camera explicitCamera = byView ? model::Camera{} : co::explicitCamera(in);
-    const int frame = in.isSet("frame") ? app::parseFrame("frame", in.value("frame")) : 0;
+    const app::KeyAddOptions options = app::readKeyAddOptions(in);
+    const QString& keyName = options.name;
     requireMesh(d);
     const model::ObjectId id = guardedEdit(d, [&] {
-        const model::Camera camera = byView ? model::cameraFromView(d->data(), view) : explicitCamera;
-        std::vector<model::ObjectId> drawingIds;
-        if (in.isSet("drawing")) {
-            const model::ObjectId drawing = d->drawings().importDrawing(in.value("drawing"));
-            d->drawings().setDrawingCamera(drawing, camera);
-            drawingIds.push_back(drawing);
-        }
-        const model::ObjectId made = d->keys().createKey(keyName, camera, drawingIds, {}, frame);
+        QStringList meshWarnings;
+        const model::ObjectId made = app::addKeyViewpoint(*d.doc, in, options, meshWarnings);
         if (in.isSet("mesh"))
-            printWarnings(in.value("mesh"),
-                d->keys().importKeyDeformation(made, model::importMesh(in.value("mesh")), in.value("mesh"), frame));
+            printWarnings(in.value("mesh"), meshWarnings);
         return made;
     });
     const model::KeyViewpoint& key = *d->data().key(id);
@@ -261,47 +245,10 @@ void cameraEdit(PyDocument& d, const py::kwargs& kwargs)
     const app::Invocation& in = o.in();
     if (in.countSet({"turntable", "key", "clear"}) != 1)
         throw UsageError{Cli::tr("exactly one of --turntable, --key, --clear or --list is required")};
-    if (!in.isSet("turntable") && in.countSet({"axis", "elevation", "start", "start-angle"}) > 0)
-        throw UsageError{Cli::tr("--axis, --elevation, --start and --start-angle go with --turntable only")};
-    if (!in.isSet("key") && in.countSet({"view", "eye", "target", "up"}) > 0)
-        throw UsageError{Cli::tr("camera options go with --key only")};
-    model::Turntable turntable;
-    int keyFrame = 0;
-    model::RenderJob job;
-    if (in.isSet("turntable")) {
-        turntable.frames = app::parseInt("turntable", in.value("turntable"));
-        if (turntable.frames < 2 || turntable.frames > model::kMaxFramesPerRender)
-            throw UsageError{Cli::tr("--turntable takes 2 to %1 frames").arg(model::kMaxFramesPerRender)};
-        if (in.isSet("axis"))
-            turntable.axis = app::parseDirection("axis", in.value("axis"));
-        if (in.isSet("elevation"))
-            turntable.elevationDegrees = app::parseNumber("elevation", in.value("elevation"));
-        if (in.isSet("start"))
-            turntable.startFrame = app::parseFrame("start", in.value("start"));
-        if (in.isSet("start-angle"))
-            turntable.startDegrees = app::parseNumber("start-angle", in.value("start-angle"));
-        if (const QString problem = model::turntableProblem(turntable); !problem.isEmpty())
-            throw UsageError{problem};
-    }
-    if (in.isSet("key")) {
-        keyFrame = app::parseFrame("key", in.value("key"));
-        app::camera_options::checkCombination(in, true);
-        if (app::camera_options::byCamera(in))
-            job.camera = app::camera_options::explicitCamera(in);
-        else
-            job.view = app::camera_options::view(in);
-    }
+    app::checkCameraPathOptions(in);
+    const app::CameraPathEdit edit = app::readCameraPathEdit(in);
     requireMesh(d);
-    guardedEdit(d, [&] {
-        if (in.isSet("turntable")) {
-            d->animation().makeTurntable(turntable);
-        } else if (in.isSet("key")) {
-            const model::Camera camera = model::renderJobCamera(d->data(), d->data().look, job, keyFrame);
-            d->animation().setCameraKey(keyFrame, camera);
-        } else {
-            d->animation().clearCameraPath();
-        }
-    });
+    guardedEdit(d, [&] { app::applyCameraPathEdit(*d.doc, in, edit); });
 }
 
 } // namespace

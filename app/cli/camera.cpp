@@ -19,40 +19,11 @@ int runCamera(const Invocation& in)
 {
     if (in.countSet({"turntable", "key", "clear", "list"}) != 1)
         throw UsageError{Cli::tr("exactly one of --turntable, --key, --clear or --list is required")};
-    if (!in.isSet("turntable") && in.countSet({"axis", "elevation", "start", "start-angle"}) > 0)
-        throw UsageError{Cli::tr("--axis, --elevation, --start and --start-angle go with --turntable only")};
-    if (!in.isSet("key") && in.countSet({"view", "eye", "target", "up"}) > 0)
-        throw UsageError{Cli::tr("camera options go with --key only")};
+    checkCameraPathOptions(in);
     if (in.isSet("json") && !in.isSet("list"))
         throw UsageError{Cli::tr("--json goes with --list")};
 
-    model::Turntable turntable;
-    int keyFrame = 0;
-    model::RenderJob job;
-    if (in.isSet("turntable")) {
-        turntable.frames = parseInt("turntable", in.value("turntable"));
-        if (turntable.frames < 2 || turntable.frames > model::kMaxFramesPerRender)
-            throw UsageError{Cli::tr("--turntable takes 2 to %1 frames").arg(model::kMaxFramesPerRender)};
-        if (in.isSet("axis"))
-            turntable.axis = parseDirection("axis", in.value("axis"));
-        if (in.isSet("elevation"))
-            turntable.elevationDegrees = parseNumber("elevation", in.value("elevation"));
-        if (in.isSet("start"))
-            turntable.startFrame = parseFrame("start", in.value("start"));
-        if (in.isSet("start-angle"))
-            turntable.startDegrees = parseNumber("start-angle", in.value("start-angle"));
-        const QString problem = model::turntableProblem(turntable);
-        if (!problem.isEmpty())
-            throw UsageError{problem};
-    }
-    if (in.isSet("key")) {
-        keyFrame = parseFrame("key", in.value("key"));
-        camera_options::checkCombination(in, true);
-        if (camera_options::byCamera(in))
-            job.camera = camera_options::explicitCamera(in);
-        else
-            job.view = camera_options::view(in);
-    }
+    const CameraPathEdit edit = readCameraPathEdit(in);
 
     const QString path = in.argument(0);
     if (in.isSet("list")) {
@@ -78,15 +49,7 @@ int runCamera(const Invocation& in)
     auto doc = openProject(path);
     if (!doc->hasMesh())
         throw model::IoError(path, Cli::tr("has no base model"));
-    if (in.isSet("turntable")) {
-        doc->animation().makeTurntable(turntable);
-    } else if (in.isSet("key")) {
-        // A view direction frames the model as `celform render --view` does.
-        const model::Camera camera = model::renderJobCamera(doc->data(), doc->data().look, job, keyFrame);
-        doc->animation().setCameraKey(keyFrame, camera);
-    } else {
-        doc->animation().clearCameraPath();
-    }
+    applyCameraPathEdit(*doc, in, edit);
     doc->saveAs(path);
     return kExitOk;
 }
@@ -112,6 +75,57 @@ std::vector<OptionSpec> cameraOptions()
 }
 
 } // namespace
+
+void checkCameraPathOptions(const Invocation& in)
+{
+    if (!in.isSet("turntable") && in.countSet({"axis", "elevation", "start", "start-angle"}) > 0)
+        throw UsageError{Cli::tr("--axis, --elevation, --start and --start-angle go with --turntable only")};
+    if (!in.isSet("key") && in.countSet({"view", "eye", "target", "up"}) > 0)
+        throw UsageError{Cli::tr("camera options go with --key only")};
+}
+
+CameraPathEdit readCameraPathEdit(const Invocation& in)
+{
+    CameraPathEdit edit;
+    if (in.isSet("turntable")) {
+        edit.turntable.frames = parseInt("turntable", in.value("turntable"));
+        if (edit.turntable.frames < 2 || edit.turntable.frames > model::kMaxFramesPerRender)
+            throw UsageError{Cli::tr("--turntable takes 2 to %1 frames").arg(model::kMaxFramesPerRender)};
+        if (in.isSet("axis"))
+            edit.turntable.axis = parseDirection("axis", in.value("axis"));
+        if (in.isSet("elevation"))
+            edit.turntable.elevationDegrees = parseNumber("elevation", in.value("elevation"));
+        if (in.isSet("start"))
+            edit.turntable.startFrame = parseFrame("start", in.value("start"));
+        if (in.isSet("start-angle"))
+            edit.turntable.startDegrees = parseNumber("start-angle", in.value("start-angle"));
+        const QString problem = model::turntableProblem(edit.turntable);
+        if (!problem.isEmpty())
+            throw UsageError{problem};
+    }
+    if (in.isSet("key")) {
+        edit.keyFrame = parseFrame("key", in.value("key"));
+        camera_options::checkCombination(in, true);
+        if (camera_options::byCamera(in))
+            edit.job.camera = camera_options::explicitCamera(in);
+        else
+            edit.job.view = camera_options::view(in);
+    }
+    return edit;
+}
+
+void applyCameraPathEdit(model::Document& doc, const Invocation& in, const CameraPathEdit& edit)
+{
+    if (in.isSet("turntable")) {
+        doc.animation().makeTurntable(edit.turntable);
+    } else if (in.isSet("key")) {
+        // A view direction frames the model as `celform render --view` does.
+        const model::Camera camera = model::renderJobCamera(doc.data(), doc.data().look, edit.job, edit.keyFrame);
+        doc.animation().setCameraKey(edit.keyFrame, camera);
+    } else {
+        doc.animation().clearCameraPath();
+    }
+}
 
 std::vector<SubCommand> cameraCommands()
 {

@@ -57,33 +57,17 @@ int runKey(const Invocation& in)
         return runKeySet(in);
     if (in.argument(0) != QLatin1String("add"))
         throw UsageError{Cli::tr("unknown key action “%1”").arg(in.argument(0))};
-    if (!in.isSet("name") || in.isSet("mesh") == in.isSet("from-base"))
-        throw UsageError{Cli::tr("--name and exactly one of --mesh or --from-base are required")};
-    const QString name = in.value("name");
-    if (name.trimmed().isEmpty())
-        throw UsageError{Cli::tr("--name needs a name, not “%1”").arg(name)};
-    camera_options::checkCombination(in, true);
-    const bool byView = camera_options::byView(in);
-    const Eigen::Vector3d view = byView ? camera_options::view(in) : Eigen::Vector3d::Zero();
-    const model::Camera explicitCamera = byView ? model::Camera{} : camera_options::explicitCamera(in);
-    const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    const KeyAddOptions options = readKeyAddOptions(in);
+    const QString& name = options.name;
 
     const QString path = in.argument(1);
     auto doc = openProject(path);
     if (!doc->hasMesh())
         throw model::IoError(path, Cli::tr("has no base model"));
-    const model::Camera camera = byView ? model::cameraFromView(doc->data(), view) : explicitCamera;
-    std::vector<model::ObjectId> drawingIds;
-    if (in.isSet("drawing")) {
-        const model::ObjectId drawing = doc->drawings().importDrawing(in.value("drawing"));
-        doc->drawings().setDrawingCamera(drawing, camera);
-        drawingIds.push_back(drawing);
-    }
-    const model::ObjectId id = doc->keys().createKey(name, camera, drawingIds, {}, frame);
-    if (in.isSet("mesh"))
-        for (const QString& w :
-            doc->keys().importKeyDeformation(id, model::importMesh(in.value("mesh")), in.value("mesh"), frame))
-            printErr(Cli::tr("warning: %1: %2").arg(in.value("mesh"), w));
+    QStringList meshWarnings;
+    const model::ObjectId id = addKeyViewpoint(*doc, in, options, meshWarnings);
+    for (const QString& w : meshWarnings)
+        printErr(Cli::tr("warning: %1: %2").arg(in.value("mesh"), w));
     doc->saveAs(path);
     // A name in use is made unique, as the editor makes it (Document::uniqueKeyName): say so, since
     // later commands (brush --key) need the name given to the key.
@@ -222,6 +206,39 @@ std::vector<OptionSpec> evalOptions()
 }
 
 } // namespace
+
+KeyAddOptions readKeyAddOptions(const Invocation& in)
+{
+    if (!in.isSet("name") || in.isSet("mesh") == in.isSet("from-base"))
+        throw UsageError{Cli::tr("--name and exactly one of --mesh or --from-base are required")};
+    KeyAddOptions key;
+    key.name = in.value("name");
+    if (key.name.trimmed().isEmpty())
+        throw UsageError{Cli::tr("--name needs a name, not “%1”").arg(key.name)};
+    camera_options::checkCombination(in, true);
+    key.byView = camera_options::byView(in);
+    key.view = key.byView ? camera_options::view(in) : Eigen::Vector3d::Zero();
+    key.camera = key.byView ? model::Camera{} : camera_options::explicitCamera(in);
+    key.frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    return key;
+}
+
+model::ObjectId addKeyViewpoint(
+    model::Document& doc, const Invocation& in, const KeyAddOptions& key, QStringList& meshWarnings)
+{
+    const model::Camera camera = key.byView ? model::cameraFromView(doc.data(), key.view) : key.camera;
+    std::vector<model::ObjectId> drawingIds;
+    if (in.isSet("drawing")) {
+        const model::ObjectId drawing = doc.drawings().importDrawing(in.value("drawing"));
+        doc.drawings().setDrawingCamera(drawing, camera);
+        drawingIds.push_back(drawing);
+    }
+    const model::ObjectId id = doc.keys().createKey(key.name, camera, drawingIds, {}, key.frame);
+    if (in.isSet("mesh"))
+        meshWarnings
+            = doc.keys().importKeyDeformation(id, model::importMesh(in.value("mesh")), in.value("mesh"), key.frame);
+    return id;
+}
 
 std::vector<SubCommand> keyCommands()
 {

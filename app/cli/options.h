@@ -6,6 +6,7 @@
 #include "cli/command.h"
 
 #include "celform/model/data/camera.h"
+#include "celform/model/data/camera_path.h"
 #include "celform/model/data/mirror_plane.h"
 #include "celform/model/data/project_data.h"
 #include "celform/model/render/render_job.h"
@@ -179,5 +180,34 @@ ProjectSettings readProjectSettings(const Invocation& in);
 /// document without a base model is an IoError naming path.
 void applyProjectSettings(model::Document& doc, const ProjectSettings& settings, const QString& path,
     const std::function<void(const QString&)>& warn);
+
+/// The options of `celform key add` (keys.cpp), read and checked before a file is opened.
+struct KeyAddOptions {
+    QString name;
+    bool byView = false; ///< --view, else --eye, --target and --up
+    Eigen::Vector3d view = Eigen::Vector3d::Zero();
+    model::Camera camera; ///< without --view: the camera given
+    int frame = 0;
+};
+KeyAddOptions readKeyAddOptions(const Invocation& in);
+/// Adds the key to doc, which has a base model: its camera (--view framed on the model), the
+/// --drawing aligned to it, the --mesh's deformation at the frame (its import's warnings in
+/// meshWarnings). Returns the new key's id.
+model::ObjectId addKeyViewpoint(
+    model::Document& doc, const Invocation& in, const KeyAddOptions& key, QStringList& meshWarnings);
+
+/// `celform camera`'s edit (camera.cpp): --turntable or --key with their values.
+struct CameraPathEdit {
+    model::Turntable turntable; ///< with --turntable
+    int keyFrame = 0; ///< with --key
+    model::RenderJob job; ///< with --key: its camera, or its view direction
+};
+/// Usage errors for turntable options without --turntable, camera options without --key.
+void checkCameraPathOptions(const Invocation& in);
+/// The values of --turntable and its options, or of --key and the camera options, checked.
+CameraPathEdit readCameraPathEdit(const Invocation& in);
+/// Makes the turntable, keys the camera or (neither given: --clear) clears the path of doc, which
+/// has a base model.
+void applyCameraPathEdit(model::Document& doc, const Invocation& in, const CameraPathEdit& edit);
 
 } // namespace celform::app
