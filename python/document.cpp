@@ -178,56 +178,9 @@ py::object brush(PyDocument& d, const py::object& key, py::kwargs kwargs)
 {
     const CliOptions o(QStringLiteral("brush"), withOption(kwargs, "key", key));
     const app::Invocation& in = o.in();
-    if (!in.isSet("key") || !in.isSet("vertex") || !in.isSet("radius") || in.isSet("drag") == in.isSet("push"))
-        throw UsageError{Cli::tr("--key, --vertex, --radius and exactly one of --drag or --push are required")};
-    const int picked = app::parseInt("vertex", in.value("vertex"));
-    const double radius = app::parseNumber("radius", in.value("radius"));
-    if (radius <= 0)
-        throw UsageError{Cli::tr("--radius must be positive")};
-    model::BrushStep step;
-    if (in.isSet("drag")) {
-        const Eigen::VectorXd drag = app::parseFloats("drag", in.value("drag"), 2);
-        step = {model::BrushMotion::Drag, drag[0], drag[1]};
-    } else {
-        step = {model::BrushMotion::Push, app::parseFloat("push", in.value("push")), 0.0};
-    }
-    const int frame = in.isSet("frame") ? app::parseFrame("frame", in.value("frame")) : 0;
-    algo::BrushProfile profile;
-    if (in.isSet("falloff")) {
-        const std::pair<const char*, algo::BrushFalloff> curves[] = {{"paper", algo::BrushFalloff::Paper},
-            {"smooth", algo::BrushFalloff::Smooth}, {"sphere", algo::BrushFalloff::Sphere}};
-        profile.falloff = app::parseChoice(
-            in.value("falloff"), curves, Cli::tr("--falloff must be paper, smooth or sphere, not “%1”"));
-    }
-    if (in.isSet("strength")) {
-        profile.strength = app::parseNumber("strength", in.value("strength"));
-        if (!(profile.strength > 0.0 && profile.strength <= 1.0))
-            throw UsageError{Cli::tr("--strength must be in (0, 1]")};
-    }
-    const std::optional<model::MirrorPlane> chosen
-        = app::parseMirror("mirror", in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off"));
-    const model::MirrorPlane mirror = chosen.value_or(d->data().mirrorPlane);
-    const model::KeyViewpoint& k = keyNamed(d, in.value("key"));
-    const qint64 vertexCount = d->hasMesh() ? qint64(d->data().baseMesh->vertexCount()) : 0;
-    if (picked < 0 || picked >= vertexCount)
-        throw model::IoError(
-            d.source(), Cli::tr("has no vertex %1 (the base model has %2 vertices)").arg(picked).arg(vertexCount));
-    const QString keyName = k.name;
-    const model::BrushStroke stroke = guardedEdit(d, [&] {
-        model::BrushStroke s
-            = d->keys().beginBrushStroke(k.id, frame, std::uint32_t(picked), radius, k.camera, mirror, profile);
-        if (s.twinMissing)
-            printLine(Cli::tr("warning: vertex %1 has no mirror twin across the %2 plane; only its side moved")
-                          .arg(picked)
-                          .arg(model::mirrorPlaneName(mirror)));
-        d->keys().applyBrushStroke(s, step);
-        d->keys().endBrushStroke(s);
-        return s;
-    });
-    return toPython(QJsonObject{{"key", keyName}, {"picked", picked}, {"frame", frame},
-        {"moved_vertices", double(stroke.indices.size())}, {"mirror_plane", model::mirrorPlaneName(mirror)},
-        {"mirrored_vertices", double(stroke.mirrorSelection.indices.size())},
-        {"twin", stroke.mirrorSelection.indices.empty() ? -1.0 : double(stroke.mirrorSelection.picked)}});
+    const app::BrushOptions options = app::readBrushOptions(in);
+    const model::KeyViewpoint& k = app::brushKey(*d.doc, options, d.source());
+    return toPython(guardedEdit(d, [&] { return app::brushStroke(*d.doc, k, options, printLine); }));
 }
 
 /// `celform set` (look.cpp, runSet): each setting one document operation, as the editor's panels.

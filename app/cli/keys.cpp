@@ -84,64 +84,15 @@ int runKey(const Invocation& in)
 
 int runBrush(const Invocation& in)
 {
-    if (!in.isSet("key") || !in.isSet("vertex") || !in.isSet("radius") || in.isSet("drag") == in.isSet("push"))
-        throw UsageError{Cli::tr("--key, --vertex, --radius and exactly one of --drag or --push are required")};
-    const int picked = parseInt("vertex", in.value("vertex"));
-    const double radius = parseNumber("radius", in.value("radius"));
-    if (radius <= 0)
-        throw UsageError{Cli::tr("--radius must be positive")};
-    model::BrushStep step;
-    if (in.isSet("drag")) {
-        // Floats: the amounts must survive the float offsets the document stores.
-        const Eigen::VectorXd drag = parseFloats("drag", in.value("drag"), 2);
-        step = {model::BrushMotion::Drag, drag[0], drag[1]};
-    } else {
-        step = {model::BrushMotion::Push, parseFloat("push", in.value("push")), 0.0};
-    }
-    const int frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
-    algo::BrushProfile profile;
-    if (in.isSet("falloff")) {
-        const std::pair<const char*, algo::BrushFalloff> curves[] = {{"paper", algo::BrushFalloff::Paper},
-            {"smooth", algo::BrushFalloff::Smooth}, {"sphere", algo::BrushFalloff::Sphere}};
-        profile.falloff
-            = parseChoice(in.value("falloff"), curves, Cli::tr("--falloff must be paper, smooth or sphere, not “%1”"));
-    }
-    if (in.isSet("strength")) {
-        profile.strength = parseNumber("strength", in.value("strength"));
-        if (!(profile.strength > 0.0 && profile.strength <= 1.0))
-            throw UsageError{Cli::tr("--strength must be in (0, 1]")};
-    }
-
-    const std::optional<model::MirrorPlane> chosen
-        = parseMirror("mirror", in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off"));
+    const BrushOptions brush = readBrushOptions(in);
 
     const QString path = in.argument(0);
     auto doc = openProject(path);
-    // auto: the project's plane (detected on the model when it was imported).
-    const model::MirrorPlane mirror = chosen.value_or(doc->data().mirrorPlane);
-    const model::KeyViewpoint* key = doc->data().keyByName(in.value("key"));
-    if (!key)
-        throw model::IoError(path, Cli::tr("has no key named “%1”").arg(in.value("key")));
-    const qint64 vertexCount = doc->hasMesh() ? qint64(doc->data().baseMesh->vertexCount()) : 0;
-    if (picked < 0 || picked >= vertexCount)
-        throw model::IoError(
-            path, Cli::tr("has no vertex %1 (the base model has %2 vertices)").arg(picked).arg(vertexCount));
-    const QString keyName = key->name;
-    // One stroke of one step, seen through the key's camera, as the editor's brush tool runs it.
-    model::BrushStroke stroke
-        = doc->keys().beginBrushStroke(key->id, frame, std::uint32_t(picked), radius, key->camera, mirror, profile);
-    if (stroke.twinMissing)
-        printErr(Cli::tr("warning: vertex %1 has no mirror twin across the %2 plane; only its side moved")
-                     .arg(picked)
-                     .arg(model::mirrorPlaneName(mirror)));
-    doc->keys().applyBrushStroke(stroke, step);
-    doc->keys().endBrushStroke(stroke);
+    const model::KeyViewpoint& key = brushKey(*doc, brush, path);
+    const QJsonObject report = brushStroke(*doc, key, brush, printErr);
     doc->saveAs(path);
     if (in.isSet("json"))
-        printJson({{"key", keyName}, {"picked", picked}, {"frame", frame},
-            {"moved_vertices", double(stroke.indices.size())}, {"mirror_plane", model::mirrorPlaneName(mirror)},
-            {"mirrored_vertices", double(stroke.mirrorSelection.indices.size())},
-            {"twin", stroke.mirrorSelection.indices.empty() ? -1.0 : double(stroke.mirrorSelection.picked)}});
+        printJson(report);
     return kExitOk;
 }
 
@@ -206,6 +157,74 @@ std::vector<OptionSpec> evalOptions()
 }
 
 } // namespace
+
+BrushOptions readBrushOptions(const Invocation& in)
+{
+    if (!in.isSet("key") || !in.isSet("vertex") || !in.isSet("radius") || in.isSet("drag") == in.isSet("push"))
+        throw UsageError{Cli::tr("--key, --vertex, --radius and exactly one of --drag or --push are required")};
+    BrushOptions brush;
+    brush.key = in.value("key");
+    brush.picked = parseInt("vertex", in.value("vertex"));
+    brush.radius = parseNumber("radius", in.value("radius"));
+    if (brush.radius <= 0)
+        throw UsageError{Cli::tr("--radius must be positive")};
+    if (in.isSet("drag")) {
+        // Floats: the amounts must survive the float offsets the document stores.
+        const Eigen::VectorXd drag = parseFloats("drag", in.value("drag"), 2);
+        brush.step = {model::BrushMotion::Drag, drag[0], drag[1]};
+    } else {
+        brush.step = {model::BrushMotion::Push, parseFloat("push", in.value("push")), 0.0};
+    }
+    brush.frame = in.isSet("frame") ? parseFrame("frame", in.value("frame")) : 0;
+    if (in.isSet("falloff")) {
+        const std::pair<const char*, algo::BrushFalloff> curves[] = {{"paper", algo::BrushFalloff::Paper},
+            {"smooth", algo::BrushFalloff::Smooth}, {"sphere", algo::BrushFalloff::Sphere}};
+        brush.profile.falloff
+            = parseChoice(in.value("falloff"), curves, Cli::tr("--falloff must be paper, smooth or sphere, not “%1”"));
+    }
+    if (in.isSet("strength")) {
+        brush.profile.strength = parseNumber("strength", in.value("strength"));
+        if (!(brush.profile.strength > 0.0 && brush.profile.strength <= 1.0))
+            throw UsageError{Cli::tr("--strength must be in (0, 1]")};
+    }
+
+    brush.mirror = parseMirror("mirror", in.isSet("mirror") ? in.value("mirror") : QStringLiteral("off"));
+    return brush;
+}
+
+const model::KeyViewpoint& brushKey(const model::Document& doc, const BrushOptions& brush, const QString& path)
+{
+    const model::KeyViewpoint* key = doc.data().keyByName(brush.key);
+    if (!key)
+        throw model::IoError(path, Cli::tr("has no key named “%1”").arg(brush.key));
+    const qint64 vertexCount = doc.hasMesh() ? qint64(doc.data().baseMesh->vertexCount()) : 0;
+    if (brush.picked < 0 || brush.picked >= vertexCount)
+        throw model::IoError(
+            path, Cli::tr("has no vertex %1 (the base model has %2 vertices)").arg(brush.picked).arg(vertexCount));
+    return *key;
+}
+
+QJsonObject brushStroke(model::Document& doc, const model::KeyViewpoint& key, const BrushOptions& brush,
+    const std::function<void(const QString&)>& warn)
+{
+    // auto: the project's plane (detected on the model when it was imported).
+    const model::MirrorPlane mirror = brush.mirror.value_or(doc.data().mirrorPlane);
+    const QString keyName = key.name;
+    const int picked = brush.picked;
+    // One stroke of one step, seen through the key's camera, as the editor's brush tool runs it.
+    model::BrushStroke stroke = doc.keys().beginBrushStroke(
+        key.id, brush.frame, std::uint32_t(picked), brush.radius, key.camera, mirror, brush.profile);
+    if (stroke.twinMissing)
+        warn(Cli::tr("warning: vertex %1 has no mirror twin across the %2 plane; only its side moved")
+                 .arg(picked)
+                 .arg(model::mirrorPlaneName(mirror)));
+    doc.keys().applyBrushStroke(stroke, brush.step);
+    doc.keys().endBrushStroke(stroke);
+    return {{"key", keyName}, {"picked", picked}, {"frame", brush.frame},
+        {"moved_vertices", double(stroke.indices.size())}, {"mirror_plane", model::mirrorPlaneName(mirror)},
+        {"mirrored_vertices", double(stroke.mirrorSelection.indices.size())},
+        {"twin", stroke.mirrorSelection.indices.empty() ? -1.0 : double(stroke.mirrorSelection.picked)}};
+}
 
 KeyAddOptions readKeyAddOptions(const Invocation& in)
 {

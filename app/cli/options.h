@@ -9,6 +9,7 @@
 #include "celform/model/data/camera_path.h"
 #include "celform/model/data/mirror_plane.h"
 #include "celform/model/data/project_data.h"
+#include "celform/model/document/brush_stroke.h"
 #include "celform/model/render/render_job.h"
 
 #include <Eigen/Core>
@@ -195,6 +196,24 @@ KeyAddOptions readKeyAddOptions(const Invocation& in);
 /// meshWarnings). Returns the new key's id.
 model::ObjectId addKeyViewpoint(
     model::Document& doc, const Invocation& in, const KeyAddOptions& key, QStringList& meshWarnings);
+
+/// The options of `celform brush` (keys.cpp), read and checked before a file is opened.
+struct BrushOptions {
+    QString key; ///< the key's name
+    int picked = 0; ///< the vertex
+    double radius = 0.0;
+    model::BrushStep step;
+    int frame = 0;
+    algo::BrushProfile profile;
+    std::optional<model::MirrorPlane> mirror; ///< none: the project's plane (auto)
+};
+BrushOptions readBrushOptions(const Invocation& in);
+/// The key a stroke deforms: an IoError naming path when doc has no such key, or no such vertex.
+const model::KeyViewpoint& brushKey(const model::Document& doc, const BrushOptions& brush, const QString& path);
+/// One stroke of one step on key (brushKey's), seen through its camera as the editor's brush tool
+/// runs it; warn is told of a vertex without a mirror twin. Returns what `brush --json` prints.
+QJsonObject brushStroke(model::Document& doc, const model::KeyViewpoint& key, const BrushOptions& brush,
+    const std::function<void(const QString&)>& warn);
 
 /// `celform camera`'s edit (camera.cpp): --turntable or --key with their values.
 struct CameraPathEdit {
