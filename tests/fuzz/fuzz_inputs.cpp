@@ -1,6 +1,8 @@
 // Feeding one input to its loader, and the promises checked on what the loader accepted.
 #include "fuzz_inputs.h"
 
+#include "cli_process.h"
+
 #include "cli/options.h"
 
 #include "celform/algorithms/mesh_analysis.h"
@@ -81,6 +83,8 @@ QString meshProblem(const algo::TriMesh& mesh)
     return {};
 }
 
+} // namespace
+
 /// The reading rules of docs/file-format.md on an accepted project: a usable base model, face
 /// sets and key offsets in range and in order, finite offsets, valid highlight tracks, shading
 /// offsets per vertex, decoded drawings.
@@ -125,6 +129,8 @@ QString projectProblem(const model::ProjectData& data)
             return QStringLiteral("drawing %1 accepted but not decoded").arg(d.name);
     return {};
 }
+
+namespace {
 
 // --- the option parsers ---------------------------------------------------------------------------
 
@@ -239,13 +245,15 @@ quint32 crc32Of(const char* data, qint64 size)
 QStringList kinds()
 {
     return kMeshKinds + kDrawingKinds + kAnimatedKinds
-        + QStringList{QStringLiteral("project"), QStringLiteral("cli-options")};
+        + QStringList{QStringLiteral("project"), QStringLiteral("cli-options"), QStringLiteral("cli-process")};
 }
 
 Outcome feed(const QString& kind, const QByteArray& bytes)
 {
     if (kind == QLatin1String("cli-options"))
         return feedOptions(bytes);
+    if (kind == QLatin1String("cli-process"))
+        return feedCliProcess(bytes);
     Outcome out;
     try {
         // Every reader in this process (the product runs Assimp's and most of OpenImageIO's in a

@@ -7,11 +7,16 @@
 #include <QString>
 #include <QStringList>
 
+namespace celform::model {
+struct ProjectData;
+}
+
 namespace celform::fuzz {
 
 /// Every kind, as the folders of tests/data/fuzz-corpus and tests/data/fuzz-regressions name
 /// them: the mesh suffixes (model::importMesh), the drawing suffixes (model::importDrawing),
-/// "project" (model::loadProject) and "cli-options" (the option parsers of app/cli/options.h).
+/// "project" (model::loadProject), "cli-options" (the option parsers of app/cli/options.h) and
+/// "cli-process" (a `celform` sub-command in a child process: cli_process.h).
 QStringList kinds();
 
 /// What a loader made of one input.
@@ -26,8 +31,14 @@ struct Outcome {
 /// Feeds bytes to the loader of kind. Files go through input.SUFFIX in a temporary folder (the
 /// loaders take paths; the suffix picks the reader). "cli-options": the first byte picks a parser,
 /// the rest is its text in UTF-8 ('\0' separates the arguments of the camera options).
+/// "cli-process": a command line run as a child on a copy of a generated project (cli_process.h).
 /// Exceptions other than the loaders' refusals propagate: they are findings too.
 Outcome feed(const QString& kind, const QByteArray& bytes);
+
+/// What an accepted project breaks of the loader's promises (docs/file-format.md's reading
+/// rules), empty when nothing: the project fuzzer's check, and the command-line fuzzer's on the
+/// projects the child leaves.
+QString projectProblem(const model::ProjectData& data);
 
 /// The project fuzzer's helper: the bytes with the trailer's manifest checksum and the chunk
 /// checksums the manifest lists recomputed (the manifest re-serialised), so that mutations reach

@@ -9,6 +9,8 @@
 // CELFORM_FUZZ_VERBOSE=1 keeps Qt's warnings (dropped otherwise: QtSvg prints one per bad element).
 #include "fuzz_inputs.h"
 
+#include "cli_process.h"
+
 #include <QFile>
 #include <QFontDatabase>
 #include <QGuiApplication>
@@ -31,6 +33,11 @@ QString kindFromName(const char* program)
     if (!name.startsWith(QLatin1String("fuzz_")))
         return {};
     return name.mid(5).replace(QLatin1Char('_'), QLatin1Char('-'));
+}
+
+void printCliSummary()
+{
+    std::fprintf(stderr, "celform fuzz: cli-process: %s\n", qPrintable(celform::fuzz::cliProcessSummary()));
 }
 
 void quietMessages(QtMsgType type, const QMessageLogContext&, const QString& message)
@@ -71,6 +78,8 @@ extern "C" int LLVMFuzzerInitialize(int* argc0, char*** argv0)
         const __lsan::ScopedDisabler fontconfigLoad;
         (void)QFontDatabase::families();
     }
+    if (g_kind == QLatin1String("cli-process"))
+        std::atexit(printCliSummary); // how the children ended: the share that got past the options
     return 0;
 }
 
@@ -84,6 +93,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
             file.write(input);
     }
     const celform::fuzz::Outcome outcome = celform::fuzz::feed(g_kind, input);
+    if (!outcome.broken.isEmpty() && g_kind == QLatin1String("cli-process")) {
+        std::fprintf(stderr, "celform fuzz: a command line breaks its promise: %s\n", qPrintable(outcome.broken));
+        std::abort();
+    }
     if (!outcome.broken.isEmpty()) {
         std::fprintf(stderr, "celform fuzz: the %s loader accepted an input that breaks its promise: %s\n",
             qPrintable(g_kind), qPrintable(outcome.broken));

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the hand-made seeds of tests/data/fuzz-corpus: small meshes (PLY ASCII and binary, OFF,
-OBJ, STL, glTF, GLB), PSD drawings, an SVG and the option-parser inputs. The other seeds come
+OBJ, STL, glTF, GLB), PSD drawings, an SVG, the option-parser inputs and the command lines of
+cli-process. The other seeds come
 from the commands listed in tests/data/fuzz-corpus/README.md (oiiotool for PNG/JPEG/TIFF/EXR,
 Assimp's exporter for FBX, `celform` for projects).
 Usage: tests/fuzz/make_seeds.py [CORPUS_DIR]   (default: tests/data/fuzz-corpus)"""
@@ -161,3 +162,43 @@ for i, text in enumerate(options):
     write("cli-options", f"parser{i:02d}", bytes([i]) + text)
 write("cli-options", "camera", bytes([len(options) - 1]) + b"--eye\x000,0,5\x00--target\x000,0,0\x00--up\x000,1,0")
 write("cli-options", "point_light", bytes([14]) + b"point:1,2,3")
+
+# --- command lines run in a child (fuzz_cli_process; tests/fuzz/cli_process.cpp) ---
+# Literal ones: "celform", then an argument a line, run in a work folder that holds p.celform (an
+# octahedron with the key k1 and the patch "top"), d.celform (the same with the drawing "drawing"
+# linked to k1), base.obj, key.obj, drawing.png and text.svg. Each sub-command once, small sizes
+# (each seed runs in the replay of every build), and the cases of issue 27 (SVG text without a
+# display, a full disk, a NaN camera).
+commands = {
+    "camera_start_angle_huge": "camera p.celform --turntable 8 --start-angle 1e308",
+    "camera_key": "camera p.celform --key 3 --view 0,1,1",
+    "new_svg_text": "new base.obj --out out.celform --drawing text.svg",
+    "info_json": "info d.celform --json",
+    "key_add_svg_text": "key add p.celform --name k2 --from-base --view 1,0,0 --drawing text.svg",
+    "key_set": "key set p.celform --key k1 --mesh key.obj --frame 5",
+    "brush_mirror": "brush p.celform --key k1 --vertex 0 --radius 1 --drag 0.1,0 --mirror x",
+    "eval_out": "eval p.celform --view 0,0,1 --out out.obj",
+    "set_look": "set p.celform --sharpness 100 --style gooch --light directional:1,1,1",
+    "render_frames": "render p.celform --size 16x16 --frames 0-2 --out out_####.png --skip-existing",
+    "highlight_add": "highlight p.celform --add h1 --patch top --op translate:0.1,0",
+    "patch_sphere": "patch p.celform --add p2 --sphere 0,0,1,1",
+    "analyze_csv": "analyze p.celform --size 16x16 --view 0,0,1 --frames 0-1 --csv out.csv",
+    "analyze_csv_full_disk": "analyze p.celform --size 16x16 --frames 0-1 --csv /dev/full",
+    "curvature": "curvature p.celform --out out.ply",
+    "optimize_light": "optimize-light p.celform --size 16x16 --iterations 2 --dry-run",
+    "offsets_auto": "offsets p.celform --auto --size 16x16",
+    "outline": "outline d.celform --drawing drawing --out out.svg",
+    "fit": "fit d.celform --key k1 --camera --iterations 2",
+    "export_pc2": "export p.celform --format pc2 --frames 0-3 --out out.pc2",
+    "export_glb": "export p.celform --format glb --out out.glb",
+}
+for name, line in commands.items():
+    write("cli-process", name, "celform\n" + "\n".join(line.split(" ")) + "\n")
+# Choices: the first byte picks the sub-command (modulo the table's size), the rest walks its
+# synopsis. Zeros give the first synopsis line with no optional part, first alternatives and the
+# value 0; the others are a few mixed walks. Few, as libFuzzer runs every seed before it mutates
+# (CI gives the target 6 s).
+write("cli-process", "choices_zeros", bytes(17))
+for i, rest in enumerate([b"\x05\x01\x03\x02\x07\x01\x00\x11", b"\x42\x01\x01\x0c\x02\x06\x09\x01\x21",
+                          b"\x10\x02\x00\x01\x1d\x01\x04\x02\x01\x03\x01"]):
+    write("cli-process", f"choices_mixed{i}", bytes([3 + 5 * i]) + rest)
