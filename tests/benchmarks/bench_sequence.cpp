@@ -6,8 +6,8 @@
 //   counter minflt_per_frame is the minor page faults of a frame after the first (getrusage:
 //   faults of 10 frames less those of 1, over 9);
 // - process/*: `celform render --frames 0-9` as a whole process (fork, exec, wait4), per frame,
-//   with --threads 1 and 2, PNG and EXR, and a single frame (start-up, project load and the line
-//   topology included).
+//   with --threads 1 and 2, PNG and EXR (every pass, the default for .exr, and the beauty alone), and a
+//   single frame (start-up, project load and the line topology included).
 // Goals: process/png_threads1 <= 1.25x frame/in_process, process/png_threads2 <= 0.7x, EXR <= 1.2x
 // PNG, process/single_frame <= frame/in_process + 300 ms, minflt_per_frame <= 2000 (PNG).
 // Run: bench_sequence (medians of 3); CELFORM_BENCH_EXECUTABLE=/path/to/celform measures another
@@ -191,6 +191,11 @@ int main(int argc, char** argv)
         std::vector<std::string>{"--frames", frames, "--threads", "2", "--out", png}, kFrames));
     common(benchmark::RegisterBenchmark("process/exr_threads1", process,
         std::vector<std::string>{"--frames", frames, "--threads", "1", "--out", exr}, kFrames));
+    // The default .exr holds every pass (12 float channels); the beauty alone is what the PNG holds.
+    common(benchmark::RegisterBenchmark("process/exr_beauty_threads1", process,
+        std::vector<std::string>{"--frames", frames, "--threads", "1", "--pass", "beauty", "--out",
+            shot().out("b_####.exr")},
+        kFrames));
     common(benchmark::RegisterBenchmark("process/single_frame", process,
         std::vector<std::string>{"--frame", "0", "--out", shot().out("single.png")}, 1));
     benchmark::Initialize(&argc, argv);
