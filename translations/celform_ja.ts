@@ -73,6 +73,10 @@
         <source>--closing takes a radius from 0 to %1 pixels, not “%2”</source>
         <translation>--closing には 0～%1 ピクセルの半径を指定してください（「%2」は無効です）</translation>
     </message>
+    <message>
+        <source>has no vertex %1 (the base model has %2 vertices)</source>
+        <translation>頂点 %1 がありません（ベースモデルの頂点数は %2 です）</translation>
+    </message>
 </context>
 <context>
     <name>DrawingOutline</name>
@@ -128,6 +132,25 @@
     <message>
         <source>line %1: face %2 has the index %3, which is too large</source>
         <translation>%1 行目: 面 %2 のインデックス %3 が大きすぎます</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectData</name>
+    <message>
+        <source>the face importance has %1 values for %2 faces</source>
+        <translation>面の重要度の値が %1 個ありますが、面は %2 個です</translation>
+    </message>
+    <message>
+        <source>a face importance lies outside 0 to 1</source>
+        <translation>面の重要度に 0～1 の範囲外の値があります</translation>
+    </message>
+    <message>
+        <source>the segment overrides have %1 labels for %2 faces</source>
+        <translation>セグメントの上書きのラベルが %1 個ありますが、面は %2 個です</translation>
+    </message>
+    <message>
+        <source>a segment override label is out of range</source>
+        <translation>セグメントの上書きのラベルが範囲外です</translation>
     </message>
 </context>
 <context>
@@ -430,10 +453,6 @@
         <translation>--radius には正の値を指定してください</translation>
     </message>
     <message>
-        <source>has no vertex %1 (the base model has %2 vertices)</source>
-        <translation>頂点 %1 がありません（ベースモデルの頂点数は %2 です）</translation>
-    </message>
-    <message>
         <source>Frame (default 0).</source>
         <translation>フレーム（既定値 0）。</translation>
     </message>
@@ -636,10 +655,6 @@
         <translation>の面は %1 個です。面 %2 はありません</translation>
     </message>
     <message>
-        <source>Makes, lists and removes patches: named face sets that highlight layers are limited to.</source>
-        <translation>パッチ（ハイライトレイヤーの表示範囲となる名前付きの面の集合）を作成・一覧・削除します。</translation>
-    </message>
-    <message>
         <source>List the patches.</source>
         <translation>パッチを一覧表示します。</translation>
     </message>
@@ -772,10 +787,6 @@
     <message>
         <source>give one of --list, --add NAME with its options, --remove NAME or --rename NAME --to NEW</source>
         <translation>--list、オプション付きの --add NAME、--remove NAME、--rename NAME --to NEW のいずれかを指定してください</translation>
-    </message>
-    <message>
-        <source>give one of --list, --add NAME or --subtract NAME with a selection, or --remove NAME</source>
-        <translation>--list、面の選択を付けた --add NAME または --subtract NAME、--remove NAME のいずれかを指定してください</translation>
     </message>
     <message>
         <source>unknown key action “%1”</source>
@@ -1661,6 +1672,134 @@
         <source>Light track: %1 keys</source>
         <translation>ライトトラック: %1 キー</translation>
     </message>
+    <message>
+        <source>--%1 takes segment numbers like 3,7, not “%2”</source>
+        <translation>--%1 には 3,7 のようにセグメント番号を指定してください（「%2」は無効です）</translation>
+    </message>
+    <message>
+        <source>--stroke takes two or more pixel positions X,Y,X,Y,..., not “%1”</source>
+        <translation>--stroke には 2 つ以上のピクセル位置を X,Y,X,Y,... の形で指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>give one of --list, --merge A,B, --split S --stroke X,Y,X,Y, --release S or --clear</source>
+        <translation>--list、--merge A,B、--split S --stroke X,Y,X,Y、--release S、--clear のいずれか 1 つを指定してください</translation>
+    </message>
+    <message>
+        <source>--split and --stroke go together</source>
+        <translation>--split と --stroke は一緒に指定してください</translation>
+    </message>
+    <message>
+        <source>override %1	%2 faces</source>
+        <translation>上書き %1	面 %2 個</translation>
+    </message>
+    <message>
+        <source>no segment overrides</source>
+        <translation>セグメントの上書きはありません</translation>
+    </message>
+    <message>
+        <source>--split takes one segment number, not “%1”</source>
+        <translation>--split にはセグメント番号を 1 つ指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>Clear Segment Overrides</source>
+        <translation>セグメントの上書きを消去</translation>
+    </message>
+    <message>
+        <source>Merge Segments</source>
+        <translation>セグメントを結合</translation>
+    </message>
+    <message>
+        <source>Release Segments</source>
+        <translation>セグメントの上書きを解除</translation>
+    </message>
+    <message>
+        <source>Split Segment</source>
+        <translation>セグメントを分割</translation>
+    </message>
+    <message>
+        <source>segments at frame %1: %2 -&gt; %3</source>
+        <translation>フレーム %1 のセグメント: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <source>List the override groups and their faces.</source>
+        <translation>上書きのグループとその面を一覧表示します。</translation>
+    </message>
+    <message>
+        <source>Make these segments (the numbers `analyze --json` gives for the same frame, camera and size) one.</source>
+        <translation>これらのセグメント（同じフレーム、カメラ、サイズで `analyze --json` が出力する番号）を 1 つに結合します。</translation>
+    </message>
+    <message>
+        <source>Split this segment in two along --stroke.</source>
+        <translation>このセグメントを --stroke に沿って 2 つに分割します。</translation>
+    </message>
+    <message>
+        <source>With --split: the stroke&apos;s points in the analysed picture&apos;s pixels (x right, y down).</source>
+        <translation>--split で: ストロークの点。解析する画像のピクセル座標で指定します（x は右向き、y は下向き）。</translation>
+    </message>
+    <message>
+        <source>Give these segments&apos; faces back to the analysis&apos;s own segmentation.</source>
+        <translation>これらのセグメントの面を、解析本来のセグメント分けに戻します。</translation>
+    </message>
+    <message>
+        <source>Remove every segment override.</source>
+        <translation>セグメントの上書きをすべて削除します。</translation>
+    </message>
+    <message>
+        <source>Frame the segments are numbered at (default 0).</source>
+        <translation>セグメント番号を付けるフレーム（既定値 0）。</translation>
+    </message>
+    <message>
+        <source>The segment brush: merges segments of the depth analysis, splits one along a stroke, or gives them back to the analysis, saved as per-face overrides.</source>
+        <translation>セグメントブラシ: 奥行き解析のセグメントを結合する、1 つのセグメントをストロークに沿って分割する、または解析本来のセグメントに戻します。変更は面ごとの上書きとして保存されます。</translation>
+    </message>
+    <message>
+        <source>--importance takes a value in [0, 1], not “%1”</source>
+        <translation>--importance には [0, 1] の範囲の値を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>--strength takes a value in (0, 1], not “%1”</source>
+        <translation>--strength には (0, 1] の範囲の値を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>give one of --list, --add NAME, --subtract NAME or --importance V with a selection, or --remove NAME or --clear-importance</source>
+        <translation>--list、面の選択を付けた --add NAME、--subtract NAME または --importance V、--remove NAME、--clear-importance のいずれかを指定してください</translation>
+    </message>
+    <message>
+        <source>--strength goes with --importance</source>
+        <translation>--strength は --importance と一緒に指定してください</translation>
+    </message>
+    <message>
+        <source>Makes, lists and removes patches: named face sets that highlight layers are limited to; paints the faces&apos; importance (focal points) that the light optimisation weighs segments by.</source>
+        <translation>パッチ（ハイライトレイヤーの表示範囲となる名前付きの面の集合）を作成・一覧・削除します。また、ライトの最適化でセグメントの重み付けに使う面の重要度（焦点）をペイントします。</translation>
+    </message>
+    <message>
+        <source>Paint the selected faces&apos; importance towards V in [0, 1] (default of every face: 1); a segment&apos;s weight in the light optimisation is multiplied by its faces&apos; mean importance.</source>
+        <translation>選んだ面の重要度を [0, 1] の範囲の値 V に近づけるようにペイントします（各面の既定値: 1）。ライトの最適化でのセグメントの重みには、その面の重要度の平均が掛けられます。</translation>
+    </message>
+    <message>
+        <source>With --importance: the share of the way to V the faces go, in (0, 1] (default 1).</source>
+        <translation>--importance で: 面の重要度を V までどれだけ近づけるかの割合、(0, 1]（既定値 1）。</translation>
+    </message>
+    <message>
+        <source>Every face&apos;s importance back to 1.</source>
+        <translation>すべての面の重要度を 1 に戻します。</translation>
+    </message>
+    <message>
+        <source>Apparent ridges joined into smoothed snakes with short ones dropped (snakes), or as extracted (raw) (default: the project&apos;s, snakes in new projects).</source>
+        <translation>見かけの稜線を平滑化したスネークにつなぎ、短いものを除く（snakes）か、抽出したままにする（raw）か（既定: プロジェクトの値、新規では snakes）。</translation>
+    </message>
+    <message>
+        <source>Lowers the apparent-ridge threshold where the picture&apos;s stereo depth error is high, by 1 + K times the error over its root mean square (0 to 100; 0: one threshold everywhere; default: the project&apos;s).</source>
+        <translation>画像の立体視の奥行き誤差が大きい所で、見かけの稜線のしきい値を 1 + K ×（誤差 ÷ 誤差の二乗平均平方根）で割って下げます（0～100。0: どこでも同じしきい値。既定: プロジェクトの値）。</translation>
+    </message>
+    <message>
+        <source>--ridges takes snakes or raw, not “%1”</source>
+        <translation>--ridges には snakes または raw を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>--ridge-depth takes a number from 0 to 100, not “%1”</source>
+        <translation>--ridge-depth には 0～100 の数値を指定してください（「%1」は無効です）</translation>
+    </message>
 </context>
 <context>
     <name>celform::app::ExportDialog</name>
@@ -1858,6 +1997,93 @@
     <message>
         <source>Fitting the shape: round %1 of %2…</source>
         <translation>形状を合わせています: ラウンド %1/%2…</translation>
+    </message>
+</context>
+<context>
+    <name>celform::app::FocalPointActions</name>
+    <message>
+        <source>&amp;Focal Points</source>
+        <translation>焦点(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Paint Focal Points</source>
+        <translation>焦点をペイント(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Patch brush in importance mode: drag takes the faces towards the importance, Ctrl+drag back towards 1; the light optimisation weighs each segment by its faces&apos; mean importance (thesis 6.2)</source>
+        <translation>重要度モードのパッチブラシ: ドラッグで面を指定の重要度に近づけ、Ctrl+ドラッグで 1 に戻します。ライトの最適化では、各セグメントをその面の重要度の平均で重み付けします（論文 6.2）</translation>
+    </message>
+    <message>
+        <source>&amp;Importance…</source>
+        <translation>重要度(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>The importance a drag paints towards: 0 leaves the faces out of the light optimisation, 1 counts them fully</source>
+        <translation>ドラッグで近づける重要度: 0 ではその面をライトの最適化から外し、1 では完全に考慮します</translation>
+    </message>
+    <message>
+        <source>Focal Point Importance</source>
+        <translation>焦点の重要度</translation>
+    </message>
+    <message>
+        <source>Importance painted (0 to 1):</source>
+        <translation>ペイントする重要度（0～1）:</translation>
+    </message>
+    <message>
+        <source>S&amp;trength…</source>
+        <translation>強さ(&amp;T)…</translation>
+    </message>
+    <message>
+        <source>The share of the way to the importance one drag takes each face</source>
+        <translation>1 回のドラッグで各面を指定の重要度にどれだけ近づけるかの割合</translation>
+    </message>
+    <message>
+        <source>Focal Point Strength</source>
+        <translation>焦点ペイントの強さ</translation>
+    </message>
+    <message>
+        <source>Share of the way one drag goes (0.01 to 1):</source>
+        <translation>1 回のドラッグで近づける割合（0.01～1）:</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Focal Points</source>
+        <translation>焦点を消去(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Every face&apos;s importance back to 1</source>
+        <translation>すべての面の重要度を 1 に戻します</translation>
+    </message>
+    <message>
+        <source>Segment &amp;Brush</source>
+        <translation>セグメントブラシ(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Merge Segments</source>
+        <translation>セグメントを結合(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Click a segment of the depth analysis, then another: they become one segment</source>
+        <translation>奥行き解析のセグメントをクリックし、続けて別のセグメントをクリックすると、1 つのセグメントになります</translation>
+    </message>
+    <message>
+        <source>&amp;Split Segment</source>
+        <translation>セグメントを分割(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Drag across a segment of the depth analysis: it becomes two, one on each side of the drag</source>
+        <translation>奥行き解析のセグメントを横切ってドラッグすると、ドラッグの両側で 2 つのセグメントに分かれます</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Segment Overrides</source>
+        <translation>セグメントの上書きを消去(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Every face back to the segments the analysis finds</source>
+        <translation>すべての面を解析で求めたセグメントに戻します</translation>
+    </message>
+    <message>
+        <source>Clear Segment Overrides</source>
+        <translation>セグメントの上書きを消去</translation>
     </message>
 </context>
 <context>
@@ -3293,10 +3519,6 @@ Recover it now?</source>
         <translation>出力ファイルを選んでください。</translation>
     </message>
     <message>
-        <source>%1: the output must end in .png, .exr, .tif or .jpg.</source>
-        <translation>%1: 出力ファイルの拡張子は .png、.exr、.tif、.jpg のいずれかにしてください。</translation>
-    </message>
-    <message>
         <source>%1: the folder does not exist.</source>
         <translation>%1: フォルダーがありません。</translation>
     </message>
@@ -3339,6 +3561,26 @@ Recover it now?</source>
     <message>
         <source>Shot camera (the camera path)</source>
         <translation>ショットカメラ（カメラパス）</translation>
+    </message>
+    <message>
+        <source>Tone regions in the SVG</source>
+        <translation>SVG にトーン領域を含める</translation>
+    </message>
+    <message>
+        <source>With an .svg output: the tone regions as filled layers under the strokes, for editing in Inkscape or Illustrator</source>
+        <translation>.svg 出力で: トーン領域をストロークの下に塗りつぶしレイヤーとして書き出します（Inkscape や Illustrator での編集用）</translation>
+    </message>
+    <message>
+        <source>SVG vector lines (*.svg)</source>
+        <translation>SVG ベクター線画 (*.svg)</translation>
+    </message>
+    <message>
+        <source>%1: the output must end in .png, .exr, .tif, .jpg or .svg.</source>
+        <translation>%1: 出力ファイルの拡張子は .png、.exr、.tif、.jpg、.svg のいずれかにしてください。</translation>
+    </message>
+    <message>
+        <source>An SVG holds one group of strokes per eye: choose mono, anaglyph, side by side or top-bottom.</source>
+        <translation>SVG には左右の目ごとにストロークのグループが 1 つずつ入ります: モノ、アナグリフ、サイドバイサイド、トップアンドボトムのいずれかを選んでください。</translation>
     </message>
 </context>
 <context>
@@ -3808,6 +4050,22 @@ Recover it now?</source>
     <message>
         <source>The key “%1” could not be fitted to the drawing “%2”: %3</source>
         <translation>キー「%1」を参照画「%2」に合わせられませんでした: %3</translation>
+    </message>
+    <message>
+        <source>There is no segment %1 in this picture (it has %2).</source>
+        <translation>この画像にはセグメント %1 がありません（セグメント数は %2 です）。</translation>
+    </message>
+    <message>
+        <source>A merge needs two different segments.</source>
+        <translation>結合には異なる 2 つのセグメントが必要です。</translation>
+    </message>
+    <message>
+        <source>A split needs a stroke of at least two points.</source>
+        <translation>分割には 2 点以上のストロークが必要です。</translation>
+    </message>
+    <message>
+        <source>The stroke does not cross segment %1: its faces all lie on one side.</source>
+        <translation>ストロークがセグメント %1 を横切っていません: その面はすべて片側にあります。</translation>
     </message>
 </context>
 <context>
@@ -4371,6 +4629,42 @@ Recover it now?</source>
     <message>
         <source>New Patch “%1”</source>
         <translation>新しいパッチ「%1」</translation>
+    </message>
+    <message>
+        <source>There is no base model to paint focal points on.</source>
+        <translation>焦点をペイントするベースモデルがありません。</translation>
+    </message>
+    <message>
+        <source>The importance must be between 0 and 1.</source>
+        <translation>重要度は 0～1 の範囲で指定してください。</translation>
+    </message>
+    <message>
+        <source>The strength must be above 0 and at most 1.</source>
+        <translation>強さは 0 より大きく 1 以下で指定してください。</translation>
+    </message>
+    <message>
+        <source>Paint Focal Points</source>
+        <translation>焦点をペイント</translation>
+    </message>
+    <message>
+        <source>The focal points name a face the base model does not have.</source>
+        <translation>焦点がベースモデルにない面を指しています。</translation>
+    </message>
+    <message>
+        <source>Clear Focal Points</source>
+        <translation>焦点を消去</translation>
+    </message>
+    <message>
+        <source>There is no base model to mark segments on.</source>
+        <translation>セグメントを指定するベースモデルがありません。</translation>
+    </message>
+    <message>
+        <source>Segment overrides take models of at most 16,777,216 triangles.</source>
+        <translation>セグメントの上書きを使えるのは、三角形が 16,777,216 個以下のモデルだけです。</translation>
+    </message>
+    <message>
+        <source>Segment overrides refused: %1.</source>
+        <translation>セグメントの上書きを適用できません: %1。</translation>
     </message>
 </context>
 <context>
@@ -5593,6 +5887,10 @@ Recover it now?</source>
         <source>the light track is invalid: %1</source>
         <translation>ライトトラックが無効です: %1</translation>
     </message>
+    <message>
+        <source>the base animation&apos;s vertex frames are out of range</source>
+        <translation>ベースアニメーションの頂点フレームが範囲外です</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::RasterModule</name>
@@ -6082,6 +6380,14 @@ Recover it now?</source>
     <message>
         <source>Analysing the shot…</source>
         <translation>ショットを解析しています…</translation>
+    </message>
+    <message>
+        <source>Importance</source>
+        <translation>重要度</translation>
+    </message>
+    <message>
+        <source>The mean importance of the segment&apos;s faces (focal points, Look &gt; Focal Points): its weight in the light optimisation is multiplied by it</source>
+        <translation>セグメントの面の重要度の平均（焦点、「ルック」&gt;「焦点」）: ライトの最適化でのセグメントの重みにこの値が掛けられます</translation>
     </message>
 </context>
 <context>
@@ -7015,6 +7321,22 @@ chamfer distance %3 px</source>
         <source>&amp;Viewport level:</source>
         <translation>ビューポートレベル(&amp;V):</translation>
     </message>
+    <message>
+        <source>Join ridges into smooth strokes</source>
+        <translation>稜線を滑らかなストロークにつなぐ</translation>
+    </message>
+    <message>
+        <source>Joins the ridge pieces into strokes, smooths them and drops short ones (the thesis&apos;s snakes). Off shows the ridges as extracted, piece by piece</source>
+        <translation>稜線の断片をストロークにつなぎ、平滑化して短いものを除きます（論文のスネーク）。オフでは抽出したままの稜線を断片ごとに表示します</translation>
+    </message>
+    <message>
+        <source>Lowers the ridge threshold where the stereo depth error of the picture is high, so that more lines give the eyes something to match there (0: one threshold everywhere). Renders and the depth analysis apply it; the viewport shows the plain threshold</source>
+        <translation>画像の立体視の奥行き誤差が大きい所で稜線のしきい値を下げ、線を増やして両眼が対応づける手がかりを与えます（0: どこでも同じしきい値）。レンダーと奥行き解析に適用されます。ビューポートでは通常のしきい値で表示します</translation>
+    </message>
+    <message>
+        <source>Ridges from &amp;depth error:</source>
+        <translation>奥行き誤差による稜線(&amp;D):</translation>
+    </message>
 </context>
 <context>
     <name>celform::views::OffsetBrushTool</name>
@@ -7105,6 +7427,50 @@ chamfer distance %3 px</source>
     <message>
         <source>The mirror finds no twin of these faces across the %1 plane: only this side is painted.</source>
         <translation>%1 平面の反対側にこれらの面の相手が見つかりません。こちら側だけを塗ります。</translation>
+    </message>
+    <message>
+        <source>There is not enough memory to analyse the picture.</source>
+        <translation>画像を解析するメモリが足りません。</translation>
+    </message>
+    <message>
+        <source>No segment of the depth analysis is under the cursor.</source>
+        <translation>カーソルの下に奥行き解析のセグメントがありません。</translation>
+    </message>
+    <message>
+        <source>Segment %1 chosen: click the segment to merge it with.</source>
+        <translation>セグメント %1 を選びました: 結合する相手のセグメントをクリックしてください。</translation>
+    </message>
+    <message>
+        <source>Merge Segments</source>
+        <translation>セグメントを結合</translation>
+    </message>
+    <message>
+        <source>Segments %1 and %2 merged.</source>
+        <translation>セグメント %1 と %2 を結合しました。</translation>
+    </message>
+    <message>
+        <source>The stroke crosses no segment of the depth analysis.</source>
+        <translation>ストロークが奥行き解析のどのセグメントも横切っていません。</translation>
+    </message>
+    <message>
+        <source>Split Segment</source>
+        <translation>セグメントを分割</translation>
+    </message>
+    <message>
+        <source>Segment %1 split along the stroke.</source>
+        <translation>セグメント %1 をストロークに沿って分割しました。</translation>
+    </message>
+    <message>
+        <source>Merge segments: click a segment of the depth analysis, then the one to merge it with.</source>
+        <translation>セグメントの結合: 奥行き解析のセグメントをクリックし、次に結合する相手のセグメントをクリックしてください。</translation>
+    </message>
+    <message>
+        <source>Split a segment: drag across a segment of the depth analysis along the cut.</source>
+        <translation>セグメントの分割: 奥行き解析のセグメントを横切るように、切り分ける線に沿ってドラッグしてください。</translation>
+    </message>
+    <message>
+        <source>Paint focal points: drag takes the faces towards importance %1 (strength %2), Ctrl+drag back towards 1, [ and ] change the radius.</source>
+        <translation>焦点をペイント: ドラッグで面を重要度 %1 に近づけ（強さ %2）、Ctrl+ドラッグで 1 に戻し、[ と ] で半径を変更します。</translation>
     </message>
 </context>
 <context>
