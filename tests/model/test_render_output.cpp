@@ -316,6 +316,50 @@ private slots:
         QVERIFY(differ > 100);
     }
 
+    void smoothSurfaceIsShadedWithItsLimitNormals()
+    {
+        // Issue 25: a render at a subdivision level shades with the limit normals of the stencil
+        // (renderJobFrame, as `celform render`), not the faces' area-weighted normals. Given
+        // normals reach the tone: normals all facing the light shade every covered pixel bright.
+        model::ProjectData data = coarseModel();
+        data.look.subdivision.level = 2;
+        data.look.showLines = false;
+        model::RenderJob job;
+        job.size = QSize(160, 160);
+        job.view = Eigen::Vector3d(0.3, 0.2, 1).normalized();
+        const model::ResolvedRenderJob resolved = model::resolveRenderJob(data, QStringLiteral("coarse"), job);
+        algo::RenderPasses passes;
+        model::renderJobFrame(data, job, resolved, 0, passes);
+        const auto surface = model::subdividedSurface(data, 2);
+        QVERIFY(surface);
+        algo::Positions shape, limit, area;
+        surface->apply(data.baseMesh->vertices, shape);
+        algo::limitNormals(*surface->stencil, shape, limit);
+        algo::vertexNormals(shape, surface->display.baseMesh->faces, area);
+        const model::Camera camera = model::renderJobCamera(data, resolved.look, job, 0);
+        algo::RenderCache cache;
+        const algo::RenderPasses withLimit = model::renderShape(surface->display, resolved.look, shape, 0, camera,
+            160, 160, algo::StereoOutput::Off, cache, 0, nullptr, &limit);
+        const algo::RenderPasses withArea = model::renderShape(surface->display, resolved.look, shape, 0, camera,
+            160, 160, algo::StereoOutput::Off, cache, 0, nullptr, &area);
+        QVERIFY(passes.tone == withLimit.tone);
+        QVERIFY(limit != area); // so the comparison above tells them apart
+        const Eigen::Vector3f towardsLight = resolved.look.light.vector.cast<float>().normalized();
+        algo::Positions lit(shape.rows(), 3);
+        lit.rowwise() = towardsLight.transpose();
+        const algo::RenderPasses bright = model::renderShape(surface->display, resolved.look, shape, 0, camera, 160,
+            160, algo::StereoOutput::Off, cache, 0, nullptr, &lit);
+        const float top = *std::max_element(bright.tone.begin(), bright.tone.end());
+        int covered = 0, notTop = 0;
+        for (std::size_t i = 0; i < bright.depth.size(); ++i)
+            if (std::isfinite(bright.depth[i])) {
+                ++covered;
+                notTop += bright.tone[i] != top;
+            }
+        QVERIFY(covered > 1000);
+        QCOMPARE(notTop, 0);
+    }
+
     void subdividedSurfaceCarriesFaceSetsMaterialsAndOffsets()
     {
         model::ProjectData data = coarseModel();

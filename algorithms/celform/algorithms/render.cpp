@@ -181,8 +181,12 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     const auto pixelCount = std::size_t(width) * std::size_t(height);
     const Faces& faces = mesh.faces;
     RenderScratch& scratch = cache.scratch;
-    vertexNormals(shape, faces, scratch.normals);
-    const Positions& normals = scratch.normals;
+    const Positions* given = look.vertexNormals;
+    if (!given || given->rows() != shape.rows()) {
+        vertexNormals(shape, faces, scratch.normals);
+        given = &scratch.normals;
+    }
+    const Positions& normals = *given;
 
     GBuffer& g = scratch.gbuffer;
     rasterise(shape, faces, normals, camera, g);

@@ -61,6 +61,9 @@ struct RenderLook {
     /// Per vertex, a factor on the apparent-ridge threshold (paper 3, section 4.4; see
     /// ridge_depth_scale.h), may be null (1 everywhere).
     const std::vector<float>* ridgeThresholdScale = nullptr;
+    /// Per vertex of the rendered shape, unit normals to shade with (a subdivided surface's limit
+    /// normals, issue 25); null, or of another size: area-weighted normals of the shape's faces.
+    const Positions* vertexNormals = nullptr;
     /// Stylized highlights (Anjyo & Hiramitsu 2003), later layers painted over earlier ones with the
     /// light above and the camera's eye, after shading and before lines.
     std::vector<RenderHighlight> highlights;

@@ -206,10 +206,13 @@ struct JobFrameState {
         if (shape.generation == 0 || next.rows() != control.rows() || next != control) {
             control = next;
             // The smooth surface comes after the blend, the animation and the key deformations.
-            if (surface)
+            // Issue 25: the smooth surface is shaded with its limit normals (the stencil's tangents).
+            if (surface) {
                 surface->apply(control, shape.positions);
-            else
+                algo::limitNormals(*surface->stencil, shape.positions, normals);
+            } else {
                 shape.positions = control;
+            }
             shape.touch();
         }
         effectiveShadingOffsets(data, evaluator.blender(), evaluator.direction(), f, offsets);
@@ -225,7 +228,13 @@ struct JobFrameState {
         algo::RenderPasses& passes)
     {
         renderShape(shown, resolved.look, shape.positions, f, camera, job.size.width(), job.size.height(), job.stereo,
-            cache, passes, shape.generation, &offsets);
+            cache, passes, shape.generation, &offsets, shadingNormals(resolved));
+    }
+
+    /// The limit normals of the subdivided surface; null for the control mesh.
+    [[nodiscard]] const algo::Positions* shadingNormals(const ResolvedRenderJob& resolved) const
+    {
+        return resolved.surface ? &normals : nullptr;
     }
 
     FrameEvaluator evaluator;
@@ -233,6 +242,7 @@ struct JobFrameState {
     Camera camera; // the frame's
     algo::Positions control; // the frame's control shape (before subdivision)
     algo::Shape shape; // the shape rendered: control, or its subdivided surface
+    algo::Positions normals; // the subdivided surface's limit normals (unused for the control mesh)
     std::vector<float> offsets; // in effect at the camera's view and the frame (shading_layers.h)
     std::vector<float> subdividedOffsets;
 };
@@ -304,7 +314,7 @@ private:
     {
         const std::vector<algo::RenderPasses> eyes = renderEyes(shown, m_resolved.look, m_frame.shape.positions, f,
             camera, m_job.size.width(), m_job.size.height(), m_job.stereo, m_frame.cache, m_frame.shape.generation,
-            &m_frame.offsets);
+            &m_frame.offsets, false, m_frame.shadingNormals(m_resolved));
         if (cancelled())
             return false;
         const VectorLines lines = vectorLinesOf(eyes, m_job.stereo, m_resolved.look, m_job.svgTones, f);

@@ -322,9 +322,11 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 
 std::vector<algo::RenderPasses> renderEyes(const ProjectData& data, const Look& look, const algo::Positions& shape,
     int frame, const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
-    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets, bool withCentre)
+    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets, bool withCentre,
+    const algo::Positions* vertexNormals)
 {
     algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
+    renderLook.vertexNormals = vertexNormals;
     renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
     const algo::RasterCamera centre = rasterCamera(camera, width, height);
     // The ridges' depth-driven threshold from the centre eye's picture (paper 3, 4.4), both eyes alike.
@@ -344,29 +346,31 @@ std::vector<algo::RenderPasses> renderEyes(const ProjectData& data, const Look& 
 
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
-    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
+    std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets, const algo::Positions* vertexNormals)
 {
     algo::RenderPasses passes;
-    renderShape(
-        data, look, shape, frame, camera, width, height, stereo, cache, passes, shapeGeneration, shadingOffsets);
+    renderShape(data, look, shape, frame, camera, width, height, stereo, cache, passes, shapeGeneration,
+        shadingOffsets, vertexNormals);
     return passes;
 }
 
 void renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
-    algo::RenderPasses& passes, std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets)
+    algo::RenderPasses& passes, std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets,
+    const algo::Positions* vertexNormals)
 {
     if (stereo == algo::StereoOutput::Off) {
         // Mono: straight into passes, whose buffers a sequence keeps (issue 29).
         algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
+        renderLook.vertexNormals = vertexNormals;
         renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
         const algo::RasterCamera raster = rasterCamera(camera, width, height);
         prepareDepthAdaptedRidges(*data.baseMesh, shape, raster, renderLook, cache, threadRidgeDepthPrepass());
         algo::renderFrame(shape, *data.baseMesh, raster, renderLook, cache, passes);
         return;
     }
-    std::vector<algo::RenderPasses> eyes = renderEyes(
-        data, look, shape, frame, camera, width, height, stereo, cache, shapeGeneration, shadingOffsets, true);
+    std::vector<algo::RenderPasses> eyes = renderEyes(data, look, shape, frame, camera, width, height, stereo, cache,
+        shapeGeneration, shadingOffsets, true, vertexNormals);
     passes = std::move(eyes[0]);
     const algo::RenderPasses& l = eyes[1];
     const algo::RenderPasses& r = eyes[2];

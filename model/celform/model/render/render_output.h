@@ -51,21 +51,25 @@ algo::StereoSettings resolvedStereo(const StereoLook& stereo, const Camera& came
 /// camera's passes when withCentre. Arguments as renderShape's.
 std::vector<algo::RenderPasses> renderEyes(const ProjectData& data, const Look& look, const algo::Positions& shape,
     int frame, const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
-    std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr, bool withCentre = false);
+    std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr, bool withCentre = false,
+    const algo::Positions* vertexNormals = nullptr);
 
 /// Renders a frame of the shape, mono or as a stereo composition (lines from the centre eye,
 /// paper 3, section 4.2.2). For stereo only the beauty pass is composed; the other passes are
 /// the centre eye's. frame selects the highlight keys; shapeGeneration as in renderHighlightsFor;
-/// shadingOffsets as in renderLookFor.
+/// shadingOffsets as in renderLookFor; vertexNormals: the shape's normals to shade with (a
+/// subdivided surface's limit normals), null for the faces' area-weighted ones.
 algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
-    std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr);
+    std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr,
+    const algo::Positions* vertexNormals = nullptr);
 
 /// The same into passes, whose buffers are reused when they have the size already (a sequence's
 /// frames, issue 29).
 void renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
-    algo::RenderPasses& passes, std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr);
+    algo::RenderPasses& passes, std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr,
+    const algo::Positions* vertexNormals = nullptr);
 
 /// The pass names of `celform render --pass`.
 QStringList renderPassNames();

@@ -41,25 +41,24 @@ void SubdividedDisplay::refresh(const DisplayedShape& control, std::uint64_t con
     if (source.generation == m_source)
         return;
     const algo::SubdivisionStencil& stencil = *m_surface->stencil;
-    const algo::TriMesh& mesh = *m_surface->display.baseMesh;
     m_changed.clear();
     const std::vector<std::uint32_t>& rows = control.changedVertices();
     if (!rows.empty() && m_source != 0 && m_source == controlBefore && m_shape.positions.rows() == stencil.vertexCount()
         && m_limitNormals.rows() == stencil.vertexCount()) {
         // Issue 25: a brush step re-subdivides only the stencil rows the brushed vertices reach,
-        // and the normals of the faces around those rows.
+        // and the limit normals of the rows whose ring holds one of them.
         algo::updateSubdivision(stencil, source.positions, rows, m_shape.positions, m_limitNormals, m_scratch);
         m_moved.assign(m_scratch.positionRows.begin(), m_scratch.positionRows.end());
         std::sort(m_moved.begin(), m_moved.end());
-        algo::updateVertexNormals(m_shape.positions, mesh.faces, mesh.vertexFaces(), m_moved, m_normals, m_normalRows);
+        m_normalRows.assign(m_scratch.tangentRows.begin(), m_scratch.tangentRows.end());
+        std::sort(m_normalRows.begin(), m_normalRows.end());
         std::set_union(
             m_moved.begin(), m_moved.end(), m_normalRows.begin(), m_normalRows.end(), std::back_inserter(m_changed));
     } else {
-        // One sparse product (V_L = S V) on the blended, animated, deformed control shape.
+        // One sparse product (V_L = S V) on the blended, animated, deformed control shape, shaded
+        // with its limit normals as `celform render` shades it.
         m_surface->apply(source.positions, m_shape.positions);
-        m_normals = algo::vertexNormals(m_shape.positions, mesh.faces);
-        if (m_limitNormals.rows() != stencil.vertexCount())
-            m_limitNormals.setZero(stencil.vertexCount(), 3);
+        algo::limitNormals(stencil, m_shape.positions, m_limitNormals);
     }
     m_shape.touch();
     m_source = source.generation;
@@ -71,7 +70,7 @@ SubdividedDisplay::View SubdividedDisplay::view(
     if (!m_surface)
         return {
             &controlData, controlData.baseMesh.get(), &control.shape(), &control.normals(), &control.changedVertices()};
-    return {&m_surface->display, m_surface->display.baseMesh.get(), &m_shape, &m_normals, &m_changed};
+    return {&m_surface->display, m_surface->display.baseMesh.get(), &m_shape, &m_limitNormals, &m_changed};
 }
 
 const std::vector<float>& SubdividedDisplay::perVertex(const std::vector<float>& control, std::vector<float>& out) const

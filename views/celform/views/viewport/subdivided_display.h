@@ -76,8 +76,7 @@ private:
     bool m_lookUp = true;
     std::uint64_t m_source = 0; ///< generation of the control shape m_shape was made from
     algo::Shape m_shape; ///< the subdivided positions
-    algo::Positions m_normals; ///< area-weighted, as the CPU renderer computes them
-    algo::Positions m_limitNormals; ///< updateSubdivision's, unused but kept sized
+    algo::Positions m_limitNormals; ///< the surface's limit normals, as the CPU renderer shades with them
     algo::SubdivisionScratch m_scratch;
     std::vector<std::uint32_t> m_moved, m_changed;
     std::vector<std::int32_t> m_normalRows;
