@@ -160,7 +160,8 @@ private slots:
     void optimiseLightAlongTheShot()
     {
         // issue 26: `optimize-light --frames` keys the light at the sampled frames of the shot
-        // (the sample's turntable), each no worse than where it started and within the turn limit.
+        // (the sample's turntable), each no worse than the project's light at its frame (the
+        // starting light, mse_before) and within the turn limit.
         QTemporaryDir dir;
         const QString shot = dir.filePath(QStringLiteral("shot.celform"));
         QVERIFY(QFile::copy(QStringLiteral(CELFORM_SOURCE_DIR "/resources/samples/elephant.celform"), shot));
@@ -179,7 +180,7 @@ private slots:
             QCOMPARE(f.value(QStringLiteral("frame")).toInt(), int(4 * i));
             const QJsonObject error = f.value(QStringLiteral("depth_error")).toObject();
             QVERIFY(error.value(QStringLiteral("mse_after")).toDouble()
-                <= error.value(QStringLiteral("mse_start")).toDouble());
+                <= error.value(QStringLiteral("mse_before")).toDouble());
             QVERIFY(f.value(QStringLiteral("turn_degrees")).toDouble() <= 2.0 * 4 + 1e-6);
         }
         QVERIFY(json.value(QStringLiteral("largest_turn_degrees")).toDouble() <= 8.0 + 1e-6);

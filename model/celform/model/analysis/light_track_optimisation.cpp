@@ -35,6 +35,81 @@ private:
     std::int64_t m_frames;
 };
 
+/// Issue 26: the track's depth error is no higher at any sampled frame than with the project's
+/// light there. The forward pass keeps each key within the turn limit of the one before, which can
+/// hold a key where it is worse than the project's light. Such a key goes back to the project's
+/// light, and its neighbours turn towards it as far as the limit needs (the forward pair first,
+/// then backwards from it), each kept only where it is no worse than the project's light at its
+/// frame, else sent back too. A key sent back stays there, so the sweeps end; with a single light
+/// (no earlier track) keys sent back are one light and never turn from each other.
+void holdTheStartingLightsBound(const ProjectData& data, const QString& source, const RenderJob& job,
+    const LightTrackRequest& request, const std::vector<int>& frames, const std::vector<Eigen::Vector3d>& centres,
+    LightTrackReport& report)
+{
+    const std::size_t n = report.frames.size();
+    if (n == 0 || centres.size() != n)
+        return;
+    DepthAnalyser analyser;
+    FrameAnalysis scratch;
+    RenderJob one = job;
+    static std::atomic<std::uint64_t> next{std::uint64_t(6) << 60};
+    auto mseWith = [&](std::size_t k, const Light& light) {
+        one.firstFrame = one.lastFrame = frames[k];
+        const AnalysisView view = resolveAnalysisView(data, source, one);
+        Look lit = data.look;
+        lit.light = light;
+        lit.lightTrack = {};
+        analyser.analyse(data, lit, view.shape, next++, frames[k], view.camera, job.size.width(), job.size.height(),
+            request.light.analysis, scratch, &view.offsets);
+        return scratch.analysis.meanSquaredError;
+    };
+    std::vector<char> back(n, 0); // keys sent back to the project's light
+    auto sendBack = [&](std::size_t k) {
+        LightTrackFrame& f = report.frames[k];
+        f.light = f.original;
+        f.mse = f.mseOriginal;
+        back[k] = 1;
+    };
+    // Turns key k towards key `towards` until within the limit; false when nothing had to move.
+    auto pull = [&](std::size_t k, std::size_t towards) {
+        if (back[k])
+            return false;
+        LightTrackFrame& f = report.frames[k];
+        const Light& other = report.frames[towards].light;
+        const double allowed = request.maxTurnDegrees * double(std::abs(frames[k] - frames[towards]));
+        if (lightTurnDegrees(other, f.light, centres[k]) <= allowed + 1e-9)
+            return false;
+        // From the other key towards this one, as far as allowed.
+        const Light turned = limitLightTurn(other, f.light, centres[k], allowed);
+        const double mse = mseWith(k, turned);
+        f.limited = true;
+        if (mse <= f.mseOriginal) {
+            f.light = turned;
+            f.mse = mse;
+        } else {
+            sendBack(k);
+        }
+        return true;
+    };
+    for (std::size_t sweep = 0; sweep <= n; ++sweep) {
+        bool changed = false;
+        for (std::size_t k = 0; k < n; ++k)
+            if (!back[k] && report.frames[k].mse > report.frames[k].mseOriginal) {
+                sendBack(k);
+                changed = true;
+            }
+        for (std::size_t k = 1; k < n; ++k)
+            changed = pull(k, k - 1) || changed;
+        for (std::size_t k = n - 1; k-- > 0;)
+            changed = pull(k, k + 1) || changed;
+        if (!changed)
+            break;
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        report.frames[k].turnDegrees
+            = k == 0 ? 0.0 : lightTurnDegrees(report.frames[k - 1].light, report.frames[k].light, centres[k]);
+}
+
 } // namespace
 
 double LightTrackReport::meanMseOriginal() const
@@ -84,6 +159,7 @@ LightTrackReport optimiseLightTrack(const ProjectData& data, const QString& sour
     std::uint64_t generation = 0;
     algo::Positions lastShape;
     LightTrack found;
+    std::vector<Eigen::Vector3d> centres; // per sampled frame: the shape's centre (point lights turn about it)
     for (std::size_t k = 0; k < frames.size(); ++k) {
         QElapsedTimer frameTimer;
         frameTimer.start();
@@ -96,6 +172,7 @@ LightTrackReport optimiseLightTrack(const ProjectData& data, const QString& sour
         }
         const Eigen::AlignedBox3d box = algo::boundingBox(view.shape);
         const Eigen::Vector3d centre = box.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : box.center();
+        centres.push_back(centre);
         const int width = job.size.width(), height = job.size.height();
         auto mseWith = [&](const Light& light) {
             Look lit = data.look;
@@ -164,8 +241,9 @@ LightTrackReport optimiseLightTrack(const ProjectData& data, const QString& sour
         algo::report(
             progress, std::int64_t(k + 1) * FrameProgress::kScale, std::int64_t(frames.size()) * FrameProgress::kScale);
     }
-    for (const LightKey& key : found.keys)
-        report.after.setKey(key.frame, key.light);
+    holdTheStartingLightsBound(data, source, job, request, frames, centres, report);
+    for (const LightTrackFrame& f : report.frames)
+        report.after.setKey(f.frame, f.light);
     report.milliseconds = double(timer.nsecsElapsed()) / 1e6;
     return report;
 }
