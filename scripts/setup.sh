@@ -24,6 +24,8 @@ packages=(
   # The celform Python module (python/, docs/python.md): pybind11 and Debian's Python 3.11 headers to
   # build it, numpy for its arrays, pytest for its tests (tests/python).
   pybind11-dev python3-dev python3-numpy python3-pytest
+  # test_crash_safety and test_large_pages trace the command line's system calls.
+  strace
   # The sanitize preset and the fuzz targets: Clang with its sanitizer and libFuzzer runtimes
   # (LeakSanitizer needs libclang-rt-14-dev), and llvm-symbolizer for readable stacks.
   clang libclang-rt-14-dev llvm

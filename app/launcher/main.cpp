@@ -2,6 +2,7 @@
 // opens the editor, which the launcher loads as a module so that the command line never maps VTK,
 // OpenGL or Qt Widgets. Translations follow the system locale.
 #include "cli/command_line.h"
+#include "launcher/large_pages.h"
 #include "launcher/launch.h"
 
 #include <QCoreApplication>
@@ -9,6 +10,7 @@
 
 int main(int argc, char** argv)
 {
+    celform::app::restartWithLargePagesIfUseful(argc, argv);
     celform::app::setApplicationIdentity();
     QStringList arguments;
     for (int i = 0; i < argc; ++i)

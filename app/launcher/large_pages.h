@@ -1,0 +1,15 @@
+// Large pages for the heavy sub-commands (issue 29): a 1920x1080 frame touches about 170 MB of
+// fresh buffers, faulted in 4 KB at a time; glibc's malloc asks for transparent huge pages on its
+// large allocations only when its tunable glibc.malloc.hugetlb=1 is set at start-up.
+#pragma once
+
+namespace celform::app {
+
+/// For `render`, `analyze`, `export`, `optimize-light`, `fit`, `offsets` and `curvature`: when the
+/// kernel offers transparent huge pages (not "never") and GLIBC_TUNABLES does not set
+/// glibc.malloc.hugetlb yet, starts this program again (execv of /proc/self/exe, the same
+/// arguments) with glibc.malloc.hugetlb=1 added; returns only when it does not (another command,
+/// CELFORM_LARGE_PAGES=0, a sanitizer build, or a failed exec). Call first thing in main().
+void restartWithLargePagesIfUseful(int argc, char** argv);
+
+} // namespace celform::app
