@@ -87,6 +87,7 @@ private slots:
         QTest::newRow("percentile") << QStringList{"--auto", "--percentile", "-0.1"} << 2;
         QTest::newRow("bleed") << QStringList{"--auto", "--bleed", "-1"} << 2;
         QTest::newRow("segments") << QStringList{"--auto", "--segments", "inside"} << 2;
+        QTest::newRow("analysis too small") << QStringList{"--auto", "--size", "8x6"} << 2; // found by fuzz_cli_process
         QTest::newRow("segments without auto") << QStringList{"--clear", "--segments", "all"} << 2;
         QTest::newRow("smooth zero") << QStringList{"--smooth", "0"} << 2;
         QTest::newRow("camera without auto") << QStringList{"--clear", "--view", "0,0,1"} << 2;
