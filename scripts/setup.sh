@@ -21,7 +21,7 @@ packages=(
   # The farm templates' checks (test_cli_farm): Debian's Python reads the Open Job Description
   # template (YAML) and the OpenCue job spec (XML); Node runs the Flamenco job compiler.
   python3-yaml
-  # The celform Python module (python/, docs/python.md): pybind11 and Debian's Python 3.11 headers to
+  # The celform Python module (app/python/, docs/python.md): pybind11 and Debian's Python 3.11 headers to
   # build it, numpy for its arrays, pytest for its tests (tests/python).
   pybind11-dev python3-dev python3-numpy python3-pytest
   # test_crash_safety and test_large_pages trace the command line's system calls.

@@ -78,7 +78,7 @@ check("views/${V}/viewport"
 check("app/cli"
   "^(${V}/.*|editor/.*|launcher/.*|vtk.*|QWidget|QtWidgets/.*)$"
   "the command line links the model only")
-check("python"
+check("app/python"
   "^(${V}/.*|editor/.*|vtk.*|QWidget|QtWidgets/.*|QGuiApplication)$"
   "the Python module runs headless: the model and the command line's code only")
 check("app/launcher"
