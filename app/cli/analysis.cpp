@@ -499,7 +499,8 @@ int runSegments(const Invocation& in)
 {
     const int actions = in.countSet({"list", "merge", "split", "release", "clear"});
     if (actions != 1)
-        throw UsageError{Cli::tr("give one of --list, --merge A,B, --split S --stroke X,Y,X,Y, --release S or --clear")};
+        throw UsageError{
+            Cli::tr("give one of --list, --merge A,B, --split S --stroke X,Y,X,Y, --release S or --clear")};
     if (in.isSet("split") != in.isSet("stroke"))
         throw UsageError{Cli::tr("--split and --stroke go together")};
     const QString path = in.argument(0);
@@ -533,8 +534,8 @@ int runSegments(const Invocation& in)
                                                       : std::vector<int>{};
     if (in.isSet("split") && chosen.size() != 1)
         throw UsageError{Cli::tr("--split takes one segment number, not “%1”").arg(in.value("split"))};
-    const std::vector<Eigen::Vector2d> stroke = in.isSet("stroke") ? parseStroke(in.value("stroke"))
-                                                                   : std::vector<Eigen::Vector2d>{};
+    const std::vector<Eigen::Vector2d> stroke
+        = in.isSet("stroke") ? parseStroke(in.value("stroke")) : std::vector<Eigen::Vector2d>{};
     auto doc = openProject(path);
     if (!doc->hasMesh())
         throw model::IoError(path, Cli::tr("has no base model"));
@@ -575,8 +576,8 @@ int runSegments(const Invocation& in)
         }
         printJson(json);
     } else if (before >= 0) {
-        printOut(Cli::tr("segments at frame %1: %2 -> %3").arg(job.firstFrame).arg(before).arg(after)
-            + QLatin1Char('\n'));
+        printOut(
+            Cli::tr("segments at frame %1: %2 -> %3").arg(job.firstFrame).arg(before).arg(after) + QLatin1Char('\n'));
     }
     return kExitOk;
 }
@@ -665,8 +666,7 @@ std::vector<SubCommand> analysisCommands()
         {"merge", "A,B[,C...]",
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Make these segments (the numbers `analyze --json` gives for the same frame, camera and size) one.")},
-        {"split", "S",
-            QT_TRANSLATE_NOOP("celform::app::Cli", "Split this segment in two along --stroke.")},
+        {"split", "S", QT_TRANSLATE_NOOP("celform::app::Cli", "Split this segment in two along --stroke.")},
         {"stroke", "X,Y,X,Y[,...]",
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "With --split: the stroke's points in the analysed picture's pixels (x right, y down).")},
@@ -684,7 +684,8 @@ std::vector<SubCommand> analysisCommands()
              "A-B[:STEP]] "
              "[--size WxH] "
              "[--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] [--light point:X,Y,Z|directional:X,Y,Z] "
-             "[--ridge-threshold T] [--ridges snakes|raw] [--ridge-depth K] [--subdivision N] [--window LO,HI|lenient|medium|strict] "
+             "[--ridge-threshold T] [--ridges snakes|raw] [--ridge-depth K] [--subdivision N] [--window "
+             "LO,HI|lenient|medium|strict] "
              "[--depth-threshold FRACTION] [--min-pixels N] [--json] [--csv FILE] [--out FILE.exr]"},
             QT_TRANSLATE_NOOP("celform::app::Cli",
                 "Stereo depth analysis of the picture: segments with their bright/dark ratios, and the depth error."),

@@ -17,7 +17,7 @@
 namespace celform::model {
 class Document;
 struct ProjectData;
-}
+} // namespace celform::model
 
 namespace celform::app {
 

@@ -187,9 +187,9 @@ void applyProjectSettings(model::Document& doc, const ProjectSettings& settings,
         s.viewportLevel = settings.viewportSubdivision.value_or(s.viewportLevel);
         if (s.viewportLevel > s.level)
             warn(Cli::tr("warning: the viewport's subdivision level %1 is above the render level %2; the "
-                             "viewport shows level %2")
-                         .arg(s.viewportLevel)
-                         .arg(s.level));
+                         "viewport shows level %2")
+                     .arg(s.viewportLevel)
+                     .arg(s.level));
         doc.look().setSubdivision(s);
     }
     if (settings.sharpness)
@@ -343,7 +343,8 @@ std::vector<SubCommand> lookCommands()
         {"render",
             {"celform render P [--view X,Y,Z | --eye X,Y,Z --target X,Y,Z --up X,Y,Z] [--frame F | --frames "
              "A-B[:STEP]] [--size WxH] [--style toon|gooch|comic|lambert] [--lines on|off|KIND,...] "
-             "[--ridge-threshold T] [--ridges snakes|raw] [--ridge-depth K] [--light point:X,Y,Z|directional:X,Y,Z] [--subdivision N] "
+             "[--ridge-threshold T] [--ridges snakes|raw] [--ridge-depth K] [--light point:X,Y,Z|directional:X,Y,Z] "
+             "[--subdivision N] "
              "[--stereo off|anaglyph|dubois|halfcolor|sbs|tb] "
              "[--pass beauty|lines|tone|highlights|depth|normal|id|segments|curvature|depth-error] [--out "
              "FILE.png|.exr|.tif|.jpg|.svg] [--svg-tones] [--strokes FILE.json] [--threads N] [--skip-existing] "

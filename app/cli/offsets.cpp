@@ -69,8 +69,8 @@ int runOffsets(const Invocation& in)
     if (automatic
         && (job.size.width() < 16 || job.size.height() < 16 || job.size.width() > 8192 || job.size.height() > 8192))
         throw UsageError{Cli::tr("--size must be between 16x16 and 8192x8192 for --auto, not %1x%2")
-                .arg(job.size.width())
-                .arg(job.size.height())};
+                             .arg(job.size.width())
+                             .arg(job.size.height())};
     if (automatic)
         checkRenderMemory(
             "size", QStringLiteral("%1x%2").arg(job.size.width()).arg(job.size.height()), job.bytesNeeded());

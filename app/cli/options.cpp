@@ -401,7 +401,8 @@ void readPictureOptions(const Invocation& in, model::RenderJob& job)
     if (in.isSet("ridge-depth")) {
         const double k = parseFloat("ridge-depth", in.value("ridge-depth"));
         if (!(k >= 0 && k <= 100))
-            throw UsageError{Cli::tr("--ridge-depth takes a number from 0 to 100, not “%1”").arg(in.value("ridge-depth"))};
+            throw UsageError{
+                Cli::tr("--ridge-depth takes a number from 0 to 100, not “%1”").arg(in.value("ridge-depth"))};
         job.ridgeDepthStrength = float(k);
     }
 }

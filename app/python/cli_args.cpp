@@ -14,9 +14,9 @@ const std::vector<app::SubCommand>& allCommands()
     // hidden ones last.
     static const std::vector<app::SubCommand> commands = [] {
         std::vector<app::SubCommand> all;
-        for (auto group : {app::projectCommands, app::keyCommands, app::lookCommands, app::highlightCommands,
-                 app::analysisCommands, app::offsetsCommands, app::cameraCommands, app::fitCommands,
-                 app::exportCommands})
+        for (auto group :
+            {app::projectCommands, app::keyCommands, app::lookCommands, app::highlightCommands, app::analysisCommands,
+                app::offsetsCommands, app::cameraCommands, app::fitCommands, app::exportCommands})
             for (app::SubCommand& c : group())
                 all.push_back(std::move(c));
         return all;
@@ -143,8 +143,9 @@ CliOptions::CliOptions(const QString& subCommandName, const QStringList& words)
     // As the command line's dispatcher sets its parser up (command_line.cpp).
     m_parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     for (const app::OptionSpec& o : m_command.options)
-        m_parser.addOption(o.valueName ? QCommandLineOption(QLatin1String(o.name), QString(), QLatin1String(o.valueName))
-                                       : QCommandLineOption(QLatin1String(o.name), QString()));
+        m_parser.addOption(o.valueName
+                ? QCommandLineOption(QLatin1String(o.name), QString(), QLatin1String(o.valueName))
+                : QCommandLineOption(QLatin1String(o.name), QString()));
     if (!m_parser.parse(QStringList{QStringLiteral("celform ") + QLatin1String(m_command.name)} + words))
         throw app::UsageError{m_parser.errorText()};
     m_invocation = std::make_unique<app::Invocation>(m_command, m_parser);

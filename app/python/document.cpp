@@ -40,8 +40,9 @@ QString PyDocument::source() const
 void PyDocument::requireIdle() const
 {
     if (jobs.load() > 0) {
-        PyErr_SetString(PyExc_RuntimeError, "the document is being rendered or exported on another thread; edit it when "
-                                            "that call has returned");
+        PyErr_SetString(PyExc_RuntimeError,
+            "the document is being rendered or exported on another thread; edit it when "
+            "that call has returned");
         throw py::error_already_set();
     }
 }
@@ -49,8 +50,7 @@ void PyDocument::requireIdle() const
 namespace {
 
 /// A read-only numpy view of an Eigen row-major matrix that owner keeps alive.
-template <typename Matrix>
-py::array readOnlyView(const Matrix& matrix, py::object owner)
+template <typename Matrix> py::array readOnlyView(const Matrix& matrix, py::object owner)
 {
     using T = typename Matrix::Scalar;
     py::array a(py::dtype::of<T>(), {py::ssize_t(matrix.rows()), py::ssize_t(matrix.cols())},
@@ -214,7 +214,8 @@ void bindDocument(py::module_& m, py::class_<PyDocument>& c)
             (*d)->open(toQString(path));
         return d;
     }),
-        py::arg("path") = py::none(), "An empty document, or the project file at path (celform.IoError when it cannot be read).");
+        py::arg("path") = py::none(),
+        "An empty document, or the project file at path (celform.IoError when it cannot be read).");
     c.def("__repr__", [](const PyDocument& d) {
         const model::ProjectData& data = d->data();
         return toPython(QStringLiteral("<celform.Document %1: %2 vertices, %3 keys, %4 drawings%5>")
@@ -224,80 +225,111 @@ void bindDocument(py::module_& m, py::class_<PyDocument>& c)
                             .arg(data.drawings.size())
                             .arg(d->isModified() ? QStringLiteral(", modified") : QString()));
     });
-    c.def("open", [](PyDocument& d, const py::object& path) {
-        d.requireIdle();
-        d->open(toQString(path));
-    }, py::arg("path"),
-        "Replaces the document by a project file; unchanged when it cannot be read.");
+    c.def(
+        "open",
+        [](PyDocument& d, const py::object& path) {
+            d.requireIdle();
+            d->open(toQString(path));
+        },
+        py::arg("path"), "Replaces the document by a project file; unchanged when it cannot be read.");
     c.def("new_from_mesh", &newFromMesh, py::arg("mesh"), py::arg("fps") = py::none(), py::arg("sequence") = false,
         py::arg("drawings") = std::vector<py::object>{},
         "`celform new`: a project on a mesh file (or an animated base), with drawings embedded.");
-    c.def("save", [](PyDocument& d, const py::object& path) {
-        const QString target = path.is_none() ? d->filePath() : toQString(path);
-        if (target.isEmpty())
-            throw UsageError{Cli::tr("--out is required")};
-        if (QFileInfo(target).suffix().compare(QLatin1String("celform"), Qt::CaseInsensitive) != 0)
-            throw UsageError{Cli::tr("--out must end in .celform, not “%1”").arg(target)};
-        d.requireIdle();
-        py::gil_scoped_release release;
-        d->saveAs(target);
-    },
+    c.def(
+        "save",
+        [](PyDocument& d, const py::object& path) {
+            const QString target = path.is_none() ? d->filePath() : toQString(path);
+            if (target.isEmpty())
+                throw UsageError{Cli::tr("--out is required")};
+            if (QFileInfo(target).suffix().compare(QLatin1String("celform"), Qt::CaseInsensitive) != 0)
+                throw UsageError{Cli::tr("--out must end in .celform, not “%1”").arg(target)};
+            d.requireIdle();
+            py::gil_scoped_release release;
+            d->saveAs(target);
+        },
         py::arg("path") = py::none(), "Saves atomically (keeping P.bak), to path or the document's own file.");
     c.def_property_readonly("file_path", [](const PyDocument& d) -> py::object {
         return d->filePath().isEmpty() ? py::object(py::none()) : py::object(toPython(d->filePath()));
     });
     c.def_property_readonly("modified", [](const PyDocument& d) { return d->isModified(); });
-    c.def_property("current_frame", [](const PyDocument& d) { return d->currentFrame(); },
+    c.def_property(
+        "current_frame", [](const PyDocument& d) { return d->currentFrame(); },
         [](PyDocument& d, int frame) {
             d.requireIdle();
             d->setCurrentFrame(app::parseFrame("frame", QString::number(frame)));
         },
         "The playhead (not an edit).");
-    c.def("undo", [](PyDocument& d) { guardedEdit(d, [&] { d->undoStack()->undo(); }); }, "Undoes the last edit.");
+    c.def(
+        "undo", [](PyDocument& d) { guardedEdit(d, [&] { d->undoStack()->undo(); }); }, "Undoes the last edit.");
     c.def("redo", [](PyDocument& d) { guardedEdit(d, [&] { d->undoStack()->redo(); }); });
-    c.def_property_readonly("history", [](const PyDocument& d) {
-        QStringList steps;
-        for (int i = 0; i < d->undoStack()->index(); ++i)
-            steps << d->undoStack()->text(i);
-        return toPython(steps);
-    }, "The undo steps done, oldest first (one per edit, named as in the editor).");
-    c.def("info", [](const PyDocument& d) { return toPython(infoJson(d)); },
+    c.def_property_readonly(
+        "history",
+        [](const PyDocument& d) {
+            QStringList steps;
+            for (int i = 0; i < d->undoStack()->index(); ++i)
+                steps << d->undoStack()->text(i);
+            return toPython(steps);
+        },
+        "The undo steps done, oldest first (one per edit, named as in the editor).");
+    c.def(
+        "info", [](const PyDocument& d) { return toPython(infoJson(d)); },
         "What the project holds: the object `celform info --json` prints.");
-    c.def_property_readonly("vertices", [](const PyDocument& d) { return meshArray(d, false); },
+    c.def_property_readonly(
+        "vertices", [](const PyDocument& d) { return meshArray(d, false); },
         "The base model's vertices (#V x 3 float32, read-only, no copy), or None.");
-    c.def_property_readonly("faces", [](const PyDocument& d) { return meshArray(d, true); },
+    c.def_property_readonly(
+        "faces", [](const PyDocument& d) { return meshArray(d, true); },
         "The base model's triangles (#F x 3 int32, read-only, no copy), or None.");
-    c.def_property_readonly("keys", [](const PyDocument& d) {
-        QStringList names;
-        for (const auto& k : d->data().keys)
-            names << k.name;
-        return toPython(names);
-    }, "The key viewpoints' names.");
-    c.def_property_readonly("drawings", [](const PyDocument& d) {
-        QStringList names;
-        for (const auto& dr : d->data().drawings)
-            names << dr.name;
-        return toPython(names);
-    }, "The reference drawings' names.");
-    c.def("import_drawing", [](PyDocument& d, const py::object& path) {
-        return guardedEdit(d, [&] {
-            const model::ObjectId id = d->drawings().importDrawing(toQString(path));
-            return toPython(d->data().drawing(id)->name);
-        });
-    }, py::arg("path"), "Embeds a reference drawing; returns its name.");
+    c.def_property_readonly(
+        "keys",
+        [](const PyDocument& d) {
+            QStringList names;
+            for (const auto& k : d->data().keys)
+                names << k.name;
+            return toPython(names);
+        },
+        "The key viewpoints' names.");
+    c.def_property_readonly(
+        "drawings",
+        [](const PyDocument& d) {
+            QStringList names;
+            for (const auto& dr : d->data().drawings)
+                names << dr.name;
+            return toPython(names);
+        },
+        "The reference drawings' names.");
+    c.def(
+        "import_drawing",
+        [](PyDocument& d, const py::object& path) {
+            return guardedEdit(d, [&] {
+                const model::ObjectId id = d->drawings().importDrawing(toQString(path));
+                return toPython(d->data().drawing(id)->name);
+            });
+        },
+        py::arg("path"), "Embeds a reference drawing; returns its name.");
     c.def("add_key", &addKey, py::arg("name"),
         "`celform key add`: a key viewpoint. Keywords: view or eye/target/up, mesh or from_base, frame, drawing.");
-    c.def("set_key_mesh", [](PyDocument& d, const std::string& key, const py::object& mesh, int frame) {
-        return setKeyMesh(d, QString::fromStdString(key), mesh, frame);
-    }, py::arg("key"), py::arg("mesh"), py::arg("frame") = 0, "`celform key set`: a key's shape at a frame from a mesh.");
-    c.def("remove_key", [](PyDocument& d, const std::string& key) {
-        const model::ObjectId id = keyNamed(d, QString::fromStdString(key)).id;
-        guardedEdit(d, [&] { d->keys().removeKey(id); });
-    }, py::arg("key"));
-    c.def("set_key_enabled", [](PyDocument& d, const std::string& key, bool enabled) {
-        const model::ObjectId id = keyNamed(d, QString::fromStdString(key)).id;
-        guardedEdit(d, [&] { d->keys().setKeyEnabled(id, enabled); });
-    }, py::arg("key"), py::arg("enabled"));
+    c.def(
+        "set_key_mesh",
+        [](PyDocument& d, const std::string& key, const py::object& mesh, int frame) {
+            return setKeyMesh(d, QString::fromStdString(key), mesh, frame);
+        },
+        py::arg("key"), py::arg("mesh"), py::arg("frame") = 0,
+        "`celform key set`: a key's shape at a frame from a mesh.");
+    c.def(
+        "remove_key",
+        [](PyDocument& d, const std::string& key) {
+            const model::ObjectId id = keyNamed(d, QString::fromStdString(key)).id;
+            guardedEdit(d, [&] { d->keys().removeKey(id); });
+        },
+        py::arg("key"));
+    c.def(
+        "set_key_enabled",
+        [](PyDocument& d, const std::string& key, bool enabled) {
+            const model::ObjectId id = keyNamed(d, QString::fromStdString(key)).id;
+            guardedEdit(d, [&] { d->keys().setKeyEnabled(id, enabled); });
+        },
+        py::arg("key"), py::arg("enabled"));
     c.def("brush", &brush, py::arg("key"),
         "`celform brush`: one falloff-brush stroke. Keywords: vertex, radius, drag=(dx, dy) or push=dz, falloff, "
         "strength, mirror, frame.");
@@ -306,20 +338,29 @@ void bindDocument(py::module_& m, py::class_<PyDocument>& c)
     c.def("camera", &cameraEdit,
         "`celform camera`: turntable=FRAMES (axis, elevation, start, start_angle), key=F with view or eye/target/up, "
         "or clear=True.");
-    c.def("camera_path", [](const PyDocument& d) {
-        return toPython(QJsonObject{{"keys", model::cameraPathJson(d->data().look.cameraPath)}})["keys"];
-    }, "The camera path's keys, as `celform camera --list --json` gives them.");
+    c.def(
+        "camera_path",
+        [](const PyDocument& d) {
+            return toPython(QJsonObject{{"keys", model::cameraPathJson(d->data().look.cameraPath)}})["keys"];
+        },
+        "The camera path's keys, as `celform camera --list --json` gives them.");
 
-    m.def("open", [](const py::object& path) {
-        auto d = std::make_unique<PyDocument>();
-        (*d)->open(toQString(path));
-        return d;
-    }, py::arg("path"), "Opens a project file: a Document.");
-    m.def("new", [](const py::object& mesh, const py::object& fps, bool sequence, const std::vector<py::object>& drawings) {
-        auto d = std::make_unique<PyDocument>();
-        newFromMesh(*d, mesh, fps, sequence, drawings);
-        return d;
-    }, py::arg("mesh"), py::arg("fps") = py::none(), py::arg("sequence") = false,
+    m.def(
+        "open",
+        [](const py::object& path) {
+            auto d = std::make_unique<PyDocument>();
+            (*d)->open(toQString(path));
+            return d;
+        },
+        py::arg("path"), "Opens a project file: a Document.");
+    m.def(
+        "new",
+        [](const py::object& mesh, const py::object& fps, bool sequence, const std::vector<py::object>& drawings) {
+            auto d = std::make_unique<PyDocument>();
+            newFromMesh(*d, mesh, fps, sequence, drawings);
+            return d;
+        },
+        py::arg("mesh"), py::arg("fps") = py::none(), py::arg("sequence") = false,
         py::arg("drawings") = std::vector<py::object>{}, "`celform new`: a Document on a mesh (not saved yet).");
 }
 

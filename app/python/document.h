@@ -39,8 +39,7 @@ struct PyDocument {
 
 /// Runs f, an edit of d: an edit the document refuses is an IoError naming the project, as the
 /// command line's dispatcher reports it.
-template <typename F>
-auto guardedEdit(const PyDocument& d, F f) -> decltype(f())
+template <typename F> auto guardedEdit(const PyDocument& d, F f) -> decltype(f())
 {
     d.requireIdle();
     try {

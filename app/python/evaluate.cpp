@@ -33,7 +33,8 @@ struct Evaluation {
 py::array view(const std::shared_ptr<Evaluation>& e, const algo::Positions& positions)
 {
     // The capsule holds the Evaluation: the array lives on after it.
-    py::capsule owner(new std::shared_ptr<Evaluation>(e), [](void* p) { delete static_cast<std::shared_ptr<Evaluation>*>(p); });
+    py::capsule owner(
+        new std::shared_ptr<Evaluation>(e), [](void* p) { delete static_cast<std::shared_ptr<Evaluation>*>(p); });
     py::array a(py::dtype::of<float>(), {py::ssize_t(positions.rows()), py::ssize_t(3)},
         {py::ssize_t(3 * sizeof(float)), py::ssize_t(sizeof(float))}, positions.data(), owner);
     py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
@@ -80,7 +81,8 @@ QJsonObject evaluationJson(const Evaluation& e)
     const model::BlendResult& blend = e.evaluator.blend();
     QJsonArray shares;
     for (const auto& share : blend.shares)
-        shares.append(QJsonObject{{"key", e.data.key(share.key)->name}, {"id", double(share.key)}, {"weight", share.weight}});
+        shares.append(
+            QJsonObject{{"key", e.data.key(share.key)->name}, {"id", double(share.key)}, {"weight", share.weight}});
     return {{"view", model::vec3Json(e.evaluator.direction().normalized())}, {"frame", e.frame}, {"keys", shares},
         {"base_weight", blend.baseShare}, {"facet", blend.raw.facet}, {"falloff", blend.raw.falloff}};
 }
@@ -89,24 +91,30 @@ QJsonObject evaluationJson(const Evaluation& e)
 
 void bindEvaluate(py::module_& m, py::class_<PyDocument>& document)
 {
-    py::class_<Evaluation, std::shared_ptr<Evaluation>> c(m, "Evaluation",
-        "The view-dependent model at one frame, as `celform eval` evaluates it.");
-    c.def_property_readonly("shape", [](const std::shared_ptr<Evaluation>& e) { return view(e, e->evaluator.shape()); },
+    py::class_<Evaluation, std::shared_ptr<Evaluation>> c(
+        m, "Evaluation", "The view-dependent model at one frame, as `celform eval` evaluates it.");
+    c.def_property_readonly(
+        "shape", [](const std::shared_ptr<Evaluation>& e) { return view(e, e->evaluator.shape()); },
         "The blended shape (#V x 3 float32, base vertex order; read-only, no copy).");
-    c.def_property_readonly("base", [](const std::shared_ptr<Evaluation>& e) { return view(e, e->evaluator.base()); },
+    c.def_property_readonly(
+        "base", [](const std::shared_ptr<Evaluation>& e) { return view(e, e->evaluator.base()); },
         "The base model at the frame (animated bases move), before the keys' offsets.");
     c.def_property_readonly("faces", [](const std::shared_ptr<Evaluation>& e) {
         const algo::Faces& f = e->data.baseMesh->faces;
-        py::capsule owner(new std::shared_ptr<Evaluation>(e), [](void* p) { delete static_cast<std::shared_ptr<Evaluation>*>(p); });
+        py::capsule owner(
+            new std::shared_ptr<Evaluation>(e), [](void* p) { delete static_cast<std::shared_ptr<Evaluation>*>(p); });
         py::array a(py::dtype::of<std::int32_t>(), {py::ssize_t(f.rows()), py::ssize_t(3)},
             {py::ssize_t(3 * sizeof(std::int32_t)), py::ssize_t(sizeof(std::int32_t))}, f.data(), owner);
         py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
         return a;
     });
-    c.def_property_readonly("direction", [](const std::shared_ptr<Evaluation>& e) {
-        const Eigen::Vector3d v = e->evaluator.direction().normalized();
-        return py::array_t<double>(3, v.data());
-    }, "The view direction (unit, from the base centroid towards the eye).");
+    c.def_property_readonly(
+        "direction",
+        [](const std::shared_ptr<Evaluation>& e) {
+            const Eigen::Vector3d v = e->evaluator.direction().normalized();
+            return py::array_t<double>(3, v.data());
+        },
+        "The view direction (unit, from the base centroid towards the eye).");
     c.def_property_readonly("frame", [](const std::shared_ptr<Evaluation>& e) { return e->frame; });
     c.def("__repr__", [](const std::shared_ptr<Evaluation>& e) {
         QStringList shares;
@@ -117,21 +125,29 @@ void bindEvaluate(py::module_& m, py::class_<PyDocument>& document)
                             .arg(shares.isEmpty() ? QStringLiteral("no keys") : shares.join(QStringLiteral(", ")))
                             .arg(e->evaluator.blend().baseShare, 0, 'g', 4));
     });
-    c.def_property_readonly("weights", [](const std::shared_ptr<Evaluation>& e) {
-        py::dict w;
-        for (const auto& share : e->evaluator.blend().shares)
-            w[toPython(e->data.key(share.key)->name)] = share.weight;
-        return w;
-    }, "The keys' weights by name.");
-    c.def_property_readonly("base_weight", [](const std::shared_ptr<Evaluation>& e) { return e->evaluator.blend().baseShare; });
-    c.def("json", [](const std::shared_ptr<Evaluation>& e) { return toPython(evaluationJson(*e)); },
+    c.def_property_readonly(
+        "weights",
+        [](const std::shared_ptr<Evaluation>& e) {
+            py::dict w;
+            for (const auto& share : e->evaluator.blend().shares)
+                w[toPython(e->data.key(share.key)->name)] = share.weight;
+            return w;
+        },
+        "The keys' weights by name.");
+    c.def_property_readonly(
+        "base_weight", [](const std::shared_ptr<Evaluation>& e) { return e->evaluator.blend().baseShare; });
+    c.def(
+        "json", [](const std::shared_ptr<Evaluation>& e) { return toPython(evaluationJson(*e)); },
         "The object `celform eval --json` prints.");
-    c.def("write", [](const std::shared_ptr<Evaluation>& e, const py::object& path) {
-        algo::TriMesh mesh;
-        mesh.faces = e->data.baseMesh->faces;
-        mesh.vertices = e->evaluator.shape();
-        model::exportMesh(mesh, toQString(path));
-    }, py::arg("path"), "Writes the blended mesh (OBJ or PLY, base vertex order), as `eval --out`.");
+    c.def(
+        "write",
+        [](const std::shared_ptr<Evaluation>& e, const py::object& path) {
+            algo::TriMesh mesh;
+            mesh.faces = e->data.baseMesh->faces;
+            mesh.vertices = e->evaluator.shape();
+            model::exportMesh(mesh, toQString(path));
+        },
+        py::arg("path"), "Writes the blended mesh (OBJ or PLY, base vertex order), as `eval --out`.");
     document.def("eval", &evaluate,
         "`celform eval`: the shape at a view (view or eye/target/up; else the camera path or render camera) and "
         "frame; out=MESH writes it too. Returns an Evaluation.");

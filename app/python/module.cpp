@@ -33,12 +33,14 @@ PYBIND11_MODULE(celform, m)
     m.attr("__version__") = CELFORM_VERSION;
     cp::setDefaultImporter();
     cp::registerExceptions(m);
-    m.def("sub_commands", [] { return cp::toPython(celform::app::subCommandNames()); },
+    m.def(
+        "sub_commands", [] { return cp::toPython(celform::app::subCommandNames()); },
         "The command line's sub-commands, in its table's order.");
-    m.def("render_passes", [] { return cp::toPython(celform::model::renderPassNames()); },
+    m.def(
+        "render_passes", [] { return cp::toPython(celform::model::renderPassNames()); },
         "The pass names of render(pass_=...).");
-    py::class_<cp::PyDocument> document(m, "Document",
-        "A Celform project open in memory, with its undo history: the model's Document.");
+    py::class_<cp::PyDocument> document(
+        m, "Document", "A Celform project open in memory, with its undo history: the model's Document.");
     cp::bindDocument(m, document);
     cp::bindEvaluate(m, document);
     cp::bindRender(m, document);

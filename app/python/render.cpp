@@ -29,8 +29,7 @@ using app::Cli;
 using app::UsageError;
 
 /// A vector handed to numpy without a copy: the array owns it.
-template <typename T, typename Element = T>
-py::array adopt(std::vector<T>&& values, std::vector<py::ssize_t> shape)
+template <typename T, typename Element = T> py::array adopt(std::vector<T>&& values, std::vector<py::ssize_t> shape)
 {
     auto* owned = new std::vector<T>(std::move(values));
     py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
@@ -74,14 +73,15 @@ py::object renderToFiles(PyDocument& d, const model::RenderJob& job, const py::o
     FrameList listener;
     const model::ProjectData& data = d->data();
     const QString source = d.source();
-    const std::optional<model::RenderFrameError> failed = runJob(progress, [&]() -> std::optional<model::RenderFrameError> {
-        try {
-            model::renderFrames(data, source, job, progress.get(), &listener);
-        } catch (const model::RenderFrameError& e) {
-            return e;
-        }
-        return std::nullopt;
-    });
+    const std::optional<model::RenderFrameError> failed
+        = runJob(progress, [&]() -> std::optional<model::RenderFrameError> {
+              try {
+                  model::renderFrames(data, source, job, progress.get(), &listener);
+              } catch (const model::RenderFrameError& e) {
+                  return e;
+              }
+              return std::nullopt;
+          });
     if (failed)
         // As the command line prints it: "frame F: file: problem".
         throwIo(Cli::tr("frame %1: %2").arg(failed->frame()).arg(failed->message()));
@@ -142,7 +142,8 @@ py::object renderToArrays(PyDocument& d, const model::RenderJob& job, bool allPa
         out["depth"] = adopt(std::move(passes.depth), {h, w});
         out["normal"] = adopt<Eigen::Vector3f, float>(std::move(passes.normal), {h, w, 3});
         out["id"] = adopt(std::move(passes.id), {h, w});
-        out["beauty"] = adopt(std::move(passes.beauty.pixels), {py::ssize_t(passes.beauty.height), py::ssize_t(passes.beauty.width), 4});
+        out["beauty"] = adopt(
+            std::move(passes.beauty.pixels), {py::ssize_t(passes.beauty.height), py::ssize_t(passes.beauty.width), 4});
         return std::move(out);
     }
     algo::ImageRGBA image;
@@ -153,8 +154,8 @@ py::object renderToArrays(PyDocument& d, const model::RenderJob& job, bool allPa
     return arrayOf(std::move(image), srgb8);
 }
 
-py::object render(PyDocument& d, const py::object& out, const py::object& progress, bool passes, bool srgb8,
-    py::kwargs kwargs)
+py::object render(
+    PyDocument& d, const py::object& out, const py::object& progress, bool passes, bool srgb8, py::kwargs kwargs)
 {
     if (!out.is_none())
         kwargs["out"] = out;
@@ -166,8 +167,8 @@ py::object render(PyDocument& d, const py::object& out, const py::object& progre
 }
 
 /// `celform export` (export.cpp, runExport) on the document.
-py::object exportAnimation(PyDocument& d, const py::object& format, const py::object& out, const py::object& progressCallback,
-    py::kwargs kwargs)
+py::object exportAnimation(PyDocument& d, const py::object& format, const py::object& out,
+    const py::object& progressCallback, py::kwargs kwargs)
 {
     kwargs["format"] = format;
     kwargs["out"] = out;

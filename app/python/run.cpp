@@ -123,8 +123,8 @@ py::object run(const std::string& name, const py::args& args, bool capture, cons
     }
     if (code != app::kExitOk) {
         // Not captured: the message went to the process's standard error already.
-        const QString message = capture ? lastError(err)
-                                        : app::Cli::tr("celform %1 exited with code %2").arg(sub).arg(code);
+        const QString message
+            = capture ? lastError(err) : app::Cli::tr("celform %1 exited with code %2").arg(sub).arg(code);
         if (code == app::kExitUsage)
             throw app::UsageError{message};
         throwIo(message);

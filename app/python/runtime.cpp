@@ -56,12 +56,13 @@ void registerExceptions(py::module_& module)
     const py::handle exception(PyExc_Exception);
     g_error = defineException(module, "Error", py::make_tuple(exception),
         "An error of Celform: the command line's message for the same problem.");
-    g_usageError = defineException(module, "UsageError", py::make_tuple(py::handle(g_error), py::handle(PyExc_ValueError)),
-        "A value the command line refuses as a usage error (exit code 2): it names the option.");
+    g_usageError
+        = defineException(module, "UsageError", py::make_tuple(py::handle(g_error), py::handle(PyExc_ValueError)),
+            "A value the command line refuses as a usage error (exit code 2): it names the option.");
     g_ioError = defineException(module, "IoError", py::make_tuple(py::handle(g_error), py::handle(PyExc_OSError)),
         "Bad input or an output that cannot be written (exit code 3): it names the file and the problem.");
-    g_cancelled = defineException(module, "Cancelled", py::make_tuple(py::handle(g_error)),
-        "A long call stopped by its progress callback.");
+    g_cancelled = defineException(
+        module, "Cancelled", py::make_tuple(py::handle(g_error)), "A long call stopped by its progress callback.");
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p)

@@ -72,8 +72,7 @@ private:
 /// thread keeps Python's signals answered: Ctrl+C stops the job at its next progress step and its
 /// KeyboardInterrupt is raised once the job has returned, as is an exception of the callback.
 /// The job's own C++ exceptions come through as they are.
-template <typename Job>
-auto runJob(CallbackProgress& progress, Job job) -> decltype(job())
+template <typename Job> auto runJob(CallbackProgress& progress, Job job) -> decltype(job())
 {
     using Result = decltype(job());
     std::packaged_task<Result()> task(std::move(job));

@@ -690,11 +690,10 @@ private slots:
         const int depthDriven
             = linePixels({"--lines", "ridge", "--ridge-threshold", "0.2", "--ridge-depth", "4"}, "kinds_depth.png");
         QVERIFY2(depthDriven > snakeRidges, qPrintable(QStringLiteral("%1 %2").arg(depthDriven).arg(snakeRidges)));
-        for (const QStringList& bad :
-            {QStringList{"--lines", "bogus"}, QStringList{"--lines", "silhouette,bogus"}, QStringList{"--lines", ""},
-                QStringList{"--ridge-threshold", "-1"}, QStringList{"--ridge-threshold", "x"},
-                QStringList{"--ridges", "joined"}, QStringList{"--ridge-depth", "-1"},
-                QStringList{"--ridge-depth", "nan"}}) {
+        for (const QStringList& bad : {QStringList{"--lines", "bogus"}, QStringList{"--lines", "silhouette,bogus"},
+                 QStringList{"--lines", ""}, QStringList{"--ridge-threshold", "-1"},
+                 QStringList{"--ridge-threshold", "x"}, QStringList{"--ridges", "joined"},
+                 QStringList{"--ridge-depth", "-1"}, QStringList{"--ridge-depth", "nan"}}) {
             const Run r = runCelform(
                 QStringList{"render", project, "--size", "32x32", "--out", m_dir.filePath(QStringLiteral("bad.png"))}
                 + bad);

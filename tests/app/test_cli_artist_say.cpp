@@ -48,8 +48,8 @@ private slots:
         QTemporaryDir dir;
         const QString p = copyOfSample(dir, QStringLiteral("focus.celform"));
         QJsonObject info = json({QStringLiteral("info"), p});
-        QCOMPARE(info.value(QStringLiteral("face_importance")).toObject().value(QStringLiteral("painted")).toBool(),
-            false);
+        QCOMPARE(
+            info.value(QStringLiteral("face_importance")).toObject().value(QStringLiteral("painted")).toBool(), false);
         const QJsonObject painted = json({QStringLiteral("patch"), p, QStringLiteral("--importance"),
             QStringLiteral("0"), QStringLiteral("--strength"), QStringLiteral("0.5"), QStringLiteral("--faces"),
             QStringLiteral("0-99")});
@@ -58,7 +58,8 @@ private slots:
         const QJsonObject importance = info.value(QStringLiteral("face_importance")).toObject();
         QVERIFY(importance.value(QStringLiteral("painted")).toBool());
         QCOMPARE(importance.value(QStringLiteral("faces_below_1")).toInt(), 100);
-        const int faces = info.value(QStringLiteral("base_mesh")).toObject().value(QStringLiteral("triangle_count")).toInt();
+        const int faces
+            = info.value(QStringLiteral("base_mesh")).toObject().value(QStringLiteral("triangle_count")).toInt();
         // 100 faces at 0.5, the rest at 1.
         QVERIFY(std::abs(importance.value(QStringLiteral("mean")).toDouble() - (faces - 50.0) / faces) < 1e-9);
         // Usage: --strength alone, a value outside [0, 1], --importance without a selection.
@@ -70,12 +71,12 @@ private slots:
                                 QStringLiteral("--faces"), QStringLiteral("0")})
                      .exitCode,
             2);
-        QCOMPARE(runCelform({QStringLiteral("patch"), p, QStringLiteral("--importance"), QStringLiteral("0")}).exitCode,
-            2);
+        QCOMPARE(
+            runCelform({QStringLiteral("patch"), p, QStringLiteral("--importance"), QStringLiteral("0")}).exitCode, 2);
         json({QStringLiteral("patch"), p, QStringLiteral("--clear-importance")});
         info = json({QStringLiteral("info"), p});
-        QCOMPARE(info.value(QStringLiteral("face_importance")).toObject().value(QStringLiteral("painted")).toBool(),
-            false);
+        QCOMPARE(
+            info.value(QStringLiteral("face_importance")).toObject().value(QStringLiteral("painted")).toBool(), false);
     }
 
     void aFocalPointChangesTheOptimisedLight()
@@ -157,11 +158,10 @@ private slots:
         const QJsonObject list = json({QStringLiteral("segments"), p, QStringLiteral("--list")});
         QCOMPARE(list.value(QStringLiteral("overrides")).toArray().size(), 2);
         // Usage and refusals: --split without --stroke, a segment the picture lacks.
-        QCOMPARE(runCelform({QStringLiteral("segments"), p, QStringLiteral("--split"), QStringLiteral("0")}).exitCode,
-            2);
-        const Run missing = runCelform(QStringList{QStringLiteral("segments"), p, QStringLiteral("--merge"),
-                                           QStringLiteral("0,999")}
-            + where);
+        QCOMPARE(
+            runCelform({QStringLiteral("segments"), p, QStringLiteral("--split"), QStringLiteral("0")}).exitCode, 2);
+        const Run missing = runCelform(
+            QStringList{QStringLiteral("segments"), p, QStringLiteral("--merge"), QStringLiteral("0,999")} + where);
         QVERIFY(missing.exitCode != 0);
         QVERIFY(missing.err.contains(QStringLiteral("999")));
         // Cleared, the analysis gives the original segments again.

@@ -58,8 +58,8 @@ private slots:
         env.remove(QStringLiteral("GLIBC_TUNABLES"));
         env.remove(QStringLiteral("CELFORM_LARGE_PAGES"));
         env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-        const QStringList render = execs(
-            {"render", m_project, "--size", "32x24", "--out", m_dir.filePath(QStringLiteral("a.png"))}, env);
+        const QStringList render
+            = execs({"render", m_project, "--size", "32x24", "--out", m_dir.filePath(QStringLiteral("a.png"))}, env);
         QCOMPARE(render.size(), 2);
         QVERIFY2(render[1].contains(QLatin1String("/proc/self/exe"))
                 && render[1].contains(QLatin1String("GLIBC_TUNABLES=glibc.malloc.hugetlb=1")),
@@ -68,8 +68,8 @@ private slots:
 
         // Another tunable is kept; a set hugetlb, CELFORM_LARGE_PAGES=0 and light commands start once.
         env.insert(QStringLiteral("GLIBC_TUNABLES"), QStringLiteral("glibc.malloc.arena_max=2"));
-        const QStringList kept = execs(
-            {"render", m_project, "--size", "32x24", "--out", m_dir.filePath(QStringLiteral("b.png"))}, env);
+        const QStringList kept
+            = execs({"render", m_project, "--size", "32x24", "--out", m_dir.filePath(QStringLiteral("b.png"))}, env);
         QCOMPARE(kept.size(), 2);
         QVERIFY2(kept[1].contains(QLatin1String("GLIBC_TUNABLES=glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1")),
             qPrintable(kept[1]));

@@ -193,8 +193,8 @@ int main(int argc, char** argv)
         std::vector<std::string>{"--frames", frames, "--threads", "1", "--out", exr}, kFrames));
     // The default .exr holds every pass (12 float channels); the beauty alone is what the PNG holds.
     common(benchmark::RegisterBenchmark("process/exr_beauty_threads1", process,
-        std::vector<std::string>{"--frames", frames, "--threads", "1", "--pass", "beauty", "--out",
-            shot().out("b_####.exr")},
+        std::vector<std::string>{
+            "--frames", frames, "--threads", "1", "--pass", "beauty", "--out", shot().out("b_####.exr")},
         kFrames));
     common(benchmark::RegisterBenchmark("process/single_frame", process,
         std::vector<std::string>{"--frame", "0", "--out", shot().out("single.png")}, 1));

@@ -23,10 +23,10 @@ using celform::algo::Positions;
 using celform::model::AnimatedImport;
 using celform::model::IoError;
 using celform::model::isAnimatedBaseFile;
-using celform::model::readAnimatedBase;
 using celform::model::loadProject;
 using celform::model::newAnimatedProject;
 using celform::model::ProjectData;
+using celform::model::readAnimatedBase;
 using celform::model::saveProject;
 
 namespace {

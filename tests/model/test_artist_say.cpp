@@ -105,7 +105,8 @@ algo::ShadingSamples handSamples(bool withB = true)
     s.normalSum.assign(std::size_t(segments), Eigen::Vector3d::Zero());
     for (int seg = 0; seg < segments; ++seg)
         for (int i = seg * 8; i < seg * 8 + 8; ++i)
-            s.normalSum[std::size_t(seg)] += Eigen::Vector3d(s.nx[std::size_t(i)], s.ny[std::size_t(i)], s.nz[std::size_t(i)]);
+            s.normalSum[std::size_t(seg)]
+                += Eigen::Vector3d(s.nx[std::size_t(i)], s.ny[std::size_t(i)], s.nz[std::size_t(i)]);
     s.importance.assign(std::size_t(segments), 1.0);
     return s;
 }

@@ -338,10 +338,10 @@ private slots:
         algo::vertexNormals(shape, surface->display.baseMesh->faces, area);
         const model::Camera camera = model::renderJobCamera(data, resolved.look, job, 0);
         algo::RenderCache cache;
-        const algo::RenderPasses withLimit = model::renderShape(surface->display, resolved.look, shape, 0, camera,
-            160, 160, algo::StereoOutput::Off, cache, 0, nullptr, &limit);
-        const algo::RenderPasses withArea = model::renderShape(surface->display, resolved.look, shape, 0, camera,
-            160, 160, algo::StereoOutput::Off, cache, 0, nullptr, &area);
+        const algo::RenderPasses withLimit = model::renderShape(surface->display, resolved.look, shape, 0, camera, 160,
+            160, algo::StereoOutput::Off, cache, 0, nullptr, &limit);
+        const algo::RenderPasses withArea = model::renderShape(surface->display, resolved.look, shape, 0, camera, 160,
+            160, algo::StereoOutput::Off, cache, 0, nullptr, &area);
         QVERIFY(passes.tone == withLimit.tone);
         QVERIFY(limit != area); // so the comparison above tells them apart
         const Eigen::Vector3f towardsLight = resolved.look.light.vector.cast<float>().normalized();

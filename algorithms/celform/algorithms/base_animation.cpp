@@ -155,10 +155,9 @@ Eigen::Vector3f BaseAnimation::evaluateVertex(const Positions& rest, int frame, 
 bool BaseAnimation::operator==(const BaseAnimation& o) const
 {
     return firstFrame == o.firstFrame && frameCount == o.frameCount && vertexFrames.rows() == o.vertexFrames.rows()
-        && (vertexFrames.rows() == 0 || vertexFrames == o.vertexFrames)
-        && vertexFrameOfSample == o.vertexFrameOfSample && morphTargets == o.morphTargets
-        && morphWeights == o.morphWeights && joints == o.joints && jointWeights == o.jointWeights
-        && jointCount == o.jointCount && skinMatrices == o.skinMatrices;
+        && (vertexFrames.rows() == 0 || vertexFrames == o.vertexFrames) && vertexFrameOfSample == o.vertexFrameOfSample
+        && morphTargets == o.morphTargets && morphWeights == o.morphWeights && joints == o.joints
+        && jointWeights == o.jointWeights && jointCount == o.jointCount && skinMatrices == o.skinMatrices;
 }
 
 } // namespace celform::algo

@@ -90,8 +90,8 @@ void computeDepthError(const std::vector<float>& depth, const ImageRGBA& beauty,
     out.maxAbsError = maxAbs;
 }
 
-void faceSegmentVote(const SegmentLabels& labels, const std::int32_t* faceId, std::int32_t faceCount,
-    std::vector<std::int32_t>& owner)
+void faceSegmentVote(
+    const SegmentLabels& labels, const std::int32_t* faceId, std::int32_t faceCount, std::vector<std::int32_t>& owner)
 {
     owner.assign(std::size_t(std::max(0, faceCount)), -1);
     const std::size_t count = labels.labels.size();
@@ -132,7 +132,9 @@ void segmentFaceMeans(const SegmentLabels& labels, const std::int32_t* faceId, c
     const std::vector<float>& perFace, std::vector<float>& out)
 {
     const std::size_t segments = labels.sizes.size();
-    auto value = [&](std::int32_t f) { return f >= 0 && std::size_t(f) < perFace.size() ? double(perFace[std::size_t(f)]) : 1.0; };
+    auto value = [&](std::int32_t f) {
+        return f >= 0 && std::size_t(f) < perFace.size() ? double(perFace[std::size_t(f)]) : 1.0;
+    };
     std::vector<double> sum(segments, 0.0);
     std::vector<std::int64_t> faces(segments, 0);
     for (std::size_t f = 0; f < owner.size(); ++f)

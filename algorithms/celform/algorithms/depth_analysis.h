@@ -102,7 +102,8 @@ Eigen::Vector3f shadingLightDerivative(const Eigen::Vector3f& l, const Eigen::Ve
 /// - faces and vertexCurvature: the mesh and its smoothed Gaussian curvature per vertex.
 /// Off-model pixels are background: never features, no depth error, transparent to segments.
 /// settings.segmentOverrides regroup the segments (applySegmentOverrides), settings.faceImportance
-/// gives each segment its importance (segmentFaceMeans over the face vote). With no feature pixel at all, the depth error is zero. Allocates only when sizes change.
+/// gives each segment its importance (segmentFaceMeans over the face vote). With no feature pixel at all, the depth
+/// error is zero. Allocates only when sizes change.
 void analyseDepth(const GBuffer& gbuffer, const std::vector<Eigen::Vector3f>& normals, const ImageRGBA& beauty,
     const Faces& faces, const std::vector<float>& vertexCurvature, const DepthAnalysisSettings& settings,
     DepthAnalysis& out);
@@ -110,8 +111,8 @@ void analyseDepth(const GBuffer& gbuffer, const std::vector<Eigen::Vector3f>& no
 /// The face vote (the one the automatic offsets and the stable segment numbers use, thesis 4.3):
 /// per face of faceCount, the segment most of its pixels are in (ties: the lower number), or -1
 /// when none of its pixels is in a segment. faceId: per pixel of labels, -1 off the model.
-void faceSegmentVote(const SegmentLabels& labels, const std::int32_t* faceId, std::int32_t faceCount,
-    std::vector<std::int32_t>& owner);
+void faceSegmentVote(
+    const SegmentLabels& labels, const std::int32_t* faceId, std::int32_t faceCount, std::vector<std::int32_t>& owner);
 
 /// Per segment the mean of perFace over the faces the vote gives it; a segment given no face takes
 /// the mean over its pixels' faces. Faces beyond perFace count as 1.
@@ -123,10 +124,11 @@ void segmentFaceMeans(const SegmentLabels& labels, const std::int32_t* faceId, c
 /// of that label, wherever they are; the other pixels keep theirs, but for the rest of a segment
 /// that lost more than half its pixels so: it joins the override beside it (grown over its own
 /// pixels, else the one that took most of it), so that a merge or a split leaves no sliver of the
-/// segment on faces the vote gave a neighbour. Segments are then numbered again in the order of their first pixel, and those under minPixels dropped as the scan drops them.
-/// faceId: per pixel, -1 off the model; overrides: per face (faces beyond it have none).
-void applySegmentOverrides(const std::int32_t* faceId, const std::vector<std::int32_t>& overrides, int minPixels,
-    SegmentLabels& labels);
+/// segment on faces the vote gave a neighbour. Segments are then numbered again in the order of their first pixel, and
+/// those under minPixels dropped as the scan drops them. faceId: per pixel, -1 off the model; overrides: per face
+/// (faces beyond it have none).
+void applySegmentOverrides(
+    const std::int32_t* faceId, const std::vector<std::int32_t>& overrides, int minPixels, SegmentLabels& labels);
 
 /// Only the depth error part of analyseDepth (features, nearest feature, error, MSE), from the
 /// depths (+infinity off the model) and the picture; the other fields of out are left alone.

@@ -35,8 +35,7 @@ Eigen::Vector3d randomInCube(std::mt19937_64& rng)
 /// segments are equally important" open and proposes focal points an artist specifies.
 double segmentWeight(const ShadingSamples& samples, int s, double totalPixels, SegmentWeight weight)
 {
-    const double importance
-        = std::size_t(s) < samples.importance.size() ? samples.importance[std::size_t(s)] : 1.0;
+    const double importance = std::size_t(s) < samples.importance.size() ? samples.importance[std::size_t(s)] : 1.0;
     return importance * (weight == SegmentWeight::Area ? double(samples.pixels(s)) / totalPixels : 1.0);
 }
 

@@ -61,8 +61,8 @@ void connectToolPanels(views::Viewport& viewport, views::PropertiesPanel& proper
 
     QObject::connect(&highlights, &views::HighlightPanel::highlightTargetChosen, &viewport,
         [&viewport](model::ObjectId layer) { viewport.tool<views::HighlightTool>().setTarget(layer); });
-    QObject::connect(&highlights, &views::HighlightPanel::patchTargetChosen, &viewport,
-        [&viewport](const QString& faceSet) {
+    QObject::connect(
+        &highlights, &views::HighlightPanel::patchTargetChosen, &viewport, [&viewport](const QString& faceSet) {
             viewport.tool<views::PatchTool>().setTarget(faceSet);
             viewport.tool<views::PatchTool>().setMode(views::PatchTool::Mode::Patch);
         });

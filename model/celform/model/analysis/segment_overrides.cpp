@@ -30,9 +30,8 @@ std::vector<std::int32_t> startingOverrides(const ProjectData& data)
 void refuseSegment(const SegmentPicture& picture, int segment)
 {
     if (segment < 0 || std::size_t(segment) >= picture.segments.sizes.size())
-        throw EditRefused(tr("There is no segment %1 in this picture (it has %2).")
-                              .arg(segment)
-                              .arg(picture.segments.sizes.size()));
+        throw EditRefused(
+            tr("There is no segment %1 in this picture (it has %2).").arg(segment).arg(picture.segments.sizes.size()));
 }
 
 /// Per face whether it belongs to one of the segments: by the vote, or through an override label
@@ -102,10 +101,10 @@ std::vector<std::int32_t> splitSegmentOverrides(const ProjectData& data, const S
         if (!in[f] || Eigen::Index(f) >= mesh.faceCount())
             continue;
         const Eigen::Index i = Eigen::Index(f);
-        const Eigen::Vector3d centroid = (shape.row(mesh.faces(i, 0)) + shape.row(mesh.faces(i, 1))
-                                             + shape.row(mesh.faces(i, 2)))
-                                             .transpose()
-                                             .cast<double>()
+        const Eigen::Vector3d centroid
+            = (shape.row(mesh.faces(i, 0)) + shape.row(mesh.faces(i, 1)) + shape.row(mesh.faces(i, 2)))
+                  .transpose()
+                  .cast<double>()
             / 3.0;
         const Eigen::Vector2d p = camera.project(centroid).head<2>();
         // The side of the nearest piece of the stroke (its sign of the cross product).

@@ -376,8 +376,8 @@ bool ProjectData::operator==(const ProjectData& o) const
     const bool animationEqual = animated() == o.animated() && (!animated() || *baseAnimation == *o.baseAnimation);
     return meshEqual && baseMeshName == o.baseMeshName && faceSets == o.faceSets && drawings == o.drawings
         && keys == o.keys && blend == o.blend && look == o.look && shadingOffsets == o.shadingOffsets
-        && faceImportance == o.faceImportance && segmentOverrides == o.segmentOverrides && mirrorPlane == o.mirrorPlane && nextId == o.nextId && currentFrame == o.currentFrame && time == o.time
-        && animationEqual;
+        && faceImportance == o.faceImportance && segmentOverrides == o.segmentOverrides && mirrorPlane == o.mirrorPlane
+        && nextId == o.nextId && currentFrame == o.currentFrame && time == o.time && animationEqual;
 }
 
 const algo::FaceSet* ProjectData::faceSet(const QString& name) const

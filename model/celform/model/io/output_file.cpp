@@ -146,8 +146,8 @@ void OutputFile::commit(Durability durability)
         const QByteArray self = QByteArrayLiteral("/proc/self/fd/") + QByteArray::number(m_fd);
         for (int attempt = 0;; ++attempt) {
             m_temporary = temporaryName();
-            if (::linkat(AT_FDCWD, self.constData(), AT_FDCWD, QFile::encodeName(m_temporary).constData(),
-                    AT_SYMLINK_FOLLOW)
+            if (::linkat(
+                    AT_FDCWD, self.constData(), AT_FDCWD, QFile::encodeName(m_temporary).constData(), AT_SYMLINK_FOLLOW)
                 == 0)
                 break;
             const int error = errno;

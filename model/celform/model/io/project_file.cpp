@@ -234,7 +234,8 @@ QJsonObject baseAnimationJson(const algo::BaseAnimation& a, Eigen::Index vertexC
         // Format 4: a vertex sequence's frames in one block, and the frame each sample shows.
         out.insert("vertex_frame_count", double(a.storedFrameCount(vertexCount)));
         out.insert("vertex_frames", chunks.addMatrix("animation/vertex_frames", a.vertexFrames));
-        out.insert("vertex_frame_of_sample", chunks.addVector("animation/vertex_frame_of_sample", a.vertexFrameOfSample));
+        out.insert(
+            "vertex_frame_of_sample", chunks.addVector("animation/vertex_frame_of_sample", a.vertexFrameOfSample));
     }
     if (a.skinned()) {
         out.insert("joints", chunks.addVector("animation/joints", a.joints));

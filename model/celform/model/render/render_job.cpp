@@ -259,8 +259,7 @@ public:
         , m_floatFile(QFileInfo(job.output).suffix().toLower() == QLatin1String("exr"))
         , m_analysisPicture(analysisPictureFromName(job.pass))
         , m_frame(data)
-    {
-    }
+    { }
 
     FrameWrite render(int f, const QString& target, const std::function<bool()>& cancelled)
     {

@@ -349,8 +349,8 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
     std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets, const algo::Positions* vertexNormals)
 {
     algo::RenderPasses passes;
-    renderShape(data, look, shape, frame, camera, width, height, stereo, cache, passes, shapeGeneration,
-        shadingOffsets, vertexNormals);
+    renderShape(data, look, shape, frame, camera, width, height, stereo, cache, passes, shapeGeneration, shadingOffsets,
+        vertexNormals);
     return passes;
 }
 

@@ -149,7 +149,8 @@ void PatchTool::splitAlong()
 void PatchTool::activate()
 {
     if (m_mode == Mode::MergeSegments)
-        emit message(Patch::tr("Merge segments: click a segment of the depth analysis, then the one to merge it with."));
+        emit message(
+            Patch::tr("Merge segments: click a segment of the depth analysis, then the one to merge it with."));
     else if (m_mode == Mode::SplitSegment)
         emit message(Patch::tr("Split a segment: drag across a segment of the depth analysis along the cut."));
     else if (m_mode == Mode::Importance)
