@@ -93,6 +93,18 @@ QPushButton* okButton(QDialog* dialog)
     return dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
 }
 
+/// `celform render` of the sample as the dialog renders it with the framed default view at 160x120,
+/// with extra options, into out; whether it succeeded.
+bool renderWithTheCommandLine(const QStringList& extra, const QString& out)
+{
+    QProcess cli;
+    cli.start(QStringLiteral(CELFORM_EXECUTABLE),
+        QStringList{QStringLiteral("render"), test::sampleProject(), QStringLiteral("--view"),
+            QStringLiteral("0.35,0.25,1"), QStringLiteral("--size"), QStringLiteral("160x120")}
+            + extra + QStringList{QStringLiteral("--out"), out});
+    return cli.waitForFinished(120000) && cli.exitStatus() == QProcess::NormalExit && cli.exitCode() == 0;
+}
+
 /// Opens the render dialog of kind through its File menu action and sets output and size.
 app::RenderDialog* openRenderDialog(app::MainWindow& window, const char* actionName, const QString& output, QSize size)
 {
@@ -205,13 +217,7 @@ private slots:
         QVERIFY(finished.wait(120000));
         QVERIFY(m_opened.urls.isEmpty());
 
-        QProcess cli;
-        cli.start(QStringLiteral(CELFORM_EXECUTABLE),
-            {QStringLiteral("render"), test::sampleProject(), QStringLiteral("--view"), QStringLiteral("0.35,0.25,1"),
-                QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--out"),
-                dir.filePath(QStringLiteral("cli.png"))});
-        QVERIFY(cli.waitForFinished(120000));
-        QCOMPARE(cli.exitCode(), 0);
+        QVERIFY(renderWithTheCommandLine({}, dir.filePath(QStringLiteral("cli.png"))));
         const QImage gui(dir.filePath(QStringLiteral("gui.png"))), fromCli(dir.filePath(QStringLiteral("cli.png")));
         QVERIFY(!gui.isNull() && !fromCli.isNull());
         QCOMPARE(gui.convertToFormat(QImage::Format_RGBA8888), fromCli.convertToFormat(QImage::Format_RGBA8888));
@@ -248,13 +254,9 @@ private slots:
         QVERIFY(finished.wait(120000));
         QCOMPARE(finished.at(0).at(0).toBool(), true);
 
-        QProcess cli;
-        cli.start(QStringLiteral(CELFORM_EXECUTABLE),
-            {QStringLiteral("render"), test::sampleProject(), QStringLiteral("--view"), QStringLiteral("0.35,0.25,1"),
-                QStringLiteral("--size"), QStringLiteral("160x120"), QStringLiteral("--pass"), QStringLiteral("lines"),
-                QStringLiteral("--svg-tones"), QStringLiteral("--out"), dir.filePath(QStringLiteral("cli.svg"))});
-        QVERIFY(cli.waitForFinished(120000));
-        QCOMPARE(cli.exitCode(), 0);
+        QVERIFY(
+            renderWithTheCommandLine({QStringLiteral("--pass"), QStringLiteral("lines"), QStringLiteral("--svg-tones")},
+                dir.filePath(QStringLiteral("cli.svg"))));
         QFile gui(dir.filePath(QStringLiteral("gui.svg"))), fromCli(dir.filePath(QStringLiteral("cli.svg")));
         QVERIFY(gui.open(QIODevice::ReadOnly) && fromCli.open(QIODevice::ReadOnly));
         const QByteArray svg = gui.readAll();

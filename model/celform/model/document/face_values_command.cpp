@@ -51,10 +51,7 @@ bool FaceValuesCommand::mergeWith(const QUndoCommand* other)
     const auto* o = dynamic_cast<const FaceValuesCommand*>(other);
     if (!o || o->m_gesture != m_gesture || o->m_layer != m_layer)
         return false;
-    Change merged = mergedSparseChange(m_change, o->m_change);
-    merged.existedBefore = m_change.existedBefore;
-    merged.existsAfter = o->m_change.existsAfter;
-    m_change = std::move(merged);
+    m_change = mergedSparseChange(m_change, o->m_change);
     return true;
 }
 

@@ -8,8 +8,8 @@
 
 namespace celform::model {
 
-/// Change has ascending indices with before and after values at the same places; the flags of
-/// existence are the caller's.
+/// Change has ascending indices with before and after values at the same places, and flags of
+/// existence (existedBefore, existsAfter): the merge takes the first's before and the last's after.
 template <typename Change> Change mergedSparseChange(const Change& a, const Change& b)
 {
     Change merged;
@@ -27,6 +27,8 @@ template <typename Change> Change mergedSparseChange(const Change& a, const Chan
         a.indices, b.indices, [&](std::size_t i) { add(a.indices[i], a.before[i], a.after[i]); },
         [&](std::size_t j) { add(b.indices[j], b.before[j], b.after[j]); },
         [&](std::size_t i, std::size_t j) { add(a.indices[i], a.before[i], b.after[j]); });
+    merged.existedBefore = a.existedBefore;
+    merged.existsAfter = b.existsAfter;
     return merged;
 }
 
