@@ -118,6 +118,30 @@ app::RenderDialog* openRenderDialog(app::MainWindow& window, const char* actionN
     return dialog;
 }
 
+/// Render Image set as renderWithTheCommandLine renders (the framed default view, 160x120) into
+/// output, not opened when done.
+app::RenderDialog* openDefaultViewImage(app::MainWindow& window, const QString& output)
+{
+    auto* dialog = openRenderDialog(window, "actionRenderImage", output, {160, 120});
+    if (!dialog)
+        return nullptr;
+    child<QCheckBox>(dialog, "renderOpenWhenDone")->setChecked(false);
+    auto* camera = child<QComboBox>(dialog, "renderCamera");
+    camera->setCurrentIndex(camera->findData(QStringLiteral("default")));
+    return dialog;
+}
+
+/// Clicks Render and waits for the job runner: whether the job finished and succeeded.
+bool renderAndWait(app::MainWindow& window, app::RenderDialog* dialog)
+{
+    okButton(dialog)->click();
+    auto* runner = window.findChild<app::JobRunner*>();
+    if (!runner)
+        return false;
+    QSignalSpy finished(runner, &app::JobRunner::finished);
+    return finished.wait(120000) && finished.at(0).at(0).toBool();
+}
+
 /// Opens Edit > Preferences.
 app::PreferencesDialog* openPreferences(app::MainWindow& window)
 {
@@ -204,17 +228,9 @@ private slots:
         app::MainWindow window(app::MainWindow::Mode::Batch);
         QVERIFY(test::showSample(window, QSize(1200, 800)));
         QTemporaryDir dir;
-        auto* dialog
-            = openRenderDialog(window, "actionRenderImage", dir.filePath(QStringLiteral("gui.png")), {160, 120});
+        auto* dialog = openDefaultViewImage(window, dir.filePath(QStringLiteral("gui.png")));
         QVERIFY(dialog);
-        child<QCheckBox>(dialog, "renderOpenWhenDone")->setChecked(false);
-        auto* camera = child<QComboBox>(dialog, "renderCamera");
-        camera->setCurrentIndex(camera->findData(QStringLiteral("default")));
-        okButton(dialog)->click();
-        auto* runner = window.findChild<app::JobRunner*>();
-        QVERIFY(runner);
-        QSignalSpy finished(runner, &app::JobRunner::finished);
-        QVERIFY(finished.wait(120000));
+        QVERIFY(renderAndWait(window, dialog));
         QVERIFY(m_opened.urls.isEmpty());
 
         QVERIFY(renderWithTheCommandLine({}, dir.filePath(QStringLiteral("cli.png"))));
@@ -230,10 +246,8 @@ private slots:
         app::MainWindow window(app::MainWindow::Mode::Batch);
         QVERIFY(test::showSample(window, QSize(1200, 800)));
         QTemporaryDir dir;
-        auto* dialog
-            = openRenderDialog(window, "actionRenderImage", dir.filePath(QStringLiteral("gui.svg")), {160, 120});
+        auto* dialog = openDefaultViewImage(window, dir.filePath(QStringLiteral("gui.svg")));
         QVERIFY(dialog);
-        child<QCheckBox>(dialog, "renderOpenWhenDone")->setChecked(false);
         auto* pass = child<QComboBox>(dialog, "renderPass");
         QCOMPARE(pass->currentData().toString(), QStringLiteral("lines"));
         QVERIFY(!pass->isEnabled());
@@ -245,14 +259,7 @@ private slots:
         QVERIFY(!dialog->problem().isEmpty()); // one group of strokes per eye: no Dubois mix
         stereo->setCurrentIndex(stereo->findData(int(algo::StereoOutput::Off)));
         QVERIFY2(dialog->problem().isEmpty(), qPrintable(dialog->problem()));
-        auto* camera = child<QComboBox>(dialog, "renderCamera");
-        camera->setCurrentIndex(camera->findData(QStringLiteral("default")));
-        okButton(dialog)->click();
-        auto* runner = window.findChild<app::JobRunner*>();
-        QVERIFY(runner);
-        QSignalSpy finished(runner, &app::JobRunner::finished);
-        QVERIFY(finished.wait(120000));
-        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(renderAndWait(window, dialog));
 
         QVERIFY(
             renderWithTheCommandLine({QStringLiteral("--pass"), QStringLiteral("lines"), QStringLiteral("--svg-tones")},
@@ -270,7 +277,7 @@ private slots:
         QVERIFY(test::showSample(window, QSize(1200, 800)));
         QTemporaryDir dir;
         auto* dialog = openRenderDialog(
-            window, "actionRenderSequence", dir.filePath(QStringLiteral("shot_####.png")), QSize(160, 120));
+            window, "actionRenderSequence", dir.filePath(QStringLiteral("shot_####.png")), QSize(1280, 960));
         QVERIFY(dialog);
         QCOMPARE(dialog->windowTitle(), QStringLiteral("Render Sequence"));
         child<QSpinBox>(dialog, "renderFirstFrame")->setValue(0);
@@ -287,7 +294,9 @@ private slots:
         QCOMPARE(progress->maximum(), 3);
         QVERIFY(QTest::qWaitForWindowExposed(progress));
         test::keepScreenshot(progress, "render-progress");
-        // The user presses Cancel once the first frame is written.
+        // The user presses Cancel once the first frame is written. The frames are large enough
+        // (1280x960) that the next one is still rendering when the click arrives: at 160x120 the
+        // writer thread let the whole sequence finish first now and then.
         int valueAtCancel = -1;
         connect(runner, &app::JobRunner::progressed, this, [&](qint64 done, qint64) {
             if (done != 1) // frame 0 written
@@ -303,7 +312,7 @@ private slots:
         QCOMPARE(valueAtCancel, 1);
         // The frame written before Cancel stays; nothing after it, no temporary files.
         QCOMPARE(filesIn(dir.path()), QStringList{QStringLiteral("shot_0000.png")});
-        QCOMPARE(QImage(dir.filePath(QStringLiteral("shot_0000.png"))).size(), QSize(160, 120));
+        QCOMPARE(QImage(dir.filePath(QStringLiteral("shot_0000.png"))).size(), QSize(1280, 960));
         QVERIFY(m_opened.urls.isEmpty());
     }
 

@@ -47,15 +47,7 @@ private slots:
         tool.setImportance(0.f);
         tool.setStrength(0.5f);
 
-        const Eigen::AlignedBox3d box = algo::boundingBox(mesh.vertices);
-        model::Camera side;
-        side.target = box.center();
-        side.eye = box.center() + Eigen::Vector3d(0.0, 0.1, 2.5) * box.diagonal().norm();
-        side.up = Eigen::Vector3d::UnitY();
-        vp->setCamera(side);
-        test::waitForRender(vp);
-        const std::uint32_t leg = test::elephantHindLegVertex(mesh);
-        const QPoint at = vp->projectToWidget(mesh.vertices.row(leg).transpose().cast<double>()).toPoint();
+        const QPoint at = test::aimAtElephantHindLeg(vp, mesh);
         QVERIFY2(vp->rect().contains(at) && vp->pickVertex(at) >= 0, "the hind leg is not under the cursor");
         const int steps = doc->undoStack()->index();
         test::drag(vp, Qt::LeftButton, Qt::NoModifier, at, at + QPoint(0, -8), 3);

@@ -132,15 +132,7 @@ private slots:
         paint->click();
         QCOMPARE(vp->tool(), Viewport::Tool::Patch);
 
-        const Eigen::AlignedBox3d box = algo::boundingBox(mesh.vertices);
-        model::Camera side;
-        side.target = box.center();
-        side.eye = box.center() + Eigen::Vector3d(0.0, 0.1, 2.5) * box.diagonal().norm();
-        side.up = Eigen::Vector3d::UnitY();
-        vp->setCamera(side);
-        test::waitForRender(vp);
-        const std::uint32_t leg = test::elephantHindLegVertex(mesh);
-        const QPoint at = vp->projectToWidget(mesh.vertices.row(leg).transpose().cast<double>()).toPoint();
+        const QPoint at = test::aimAtElephantHindLeg(vp, mesh);
         QVERIFY2(vp->rect().contains(at) && vp->pickVertex(at) >= 0, "the hind leg is not under the cursor");
         const int steps = doc->undoStack()->index();
         test::drag(vp, Qt::LeftButton, Qt::NoModifier, at, at + QPoint(0, -6), 2);
@@ -149,7 +141,7 @@ private slots:
         const algo::FaceSet* set = doc->data().faceSet(patch);
         QVERIFY(set);
         std::size_t near = 0, far = 0;
-        const double centreZ = box.center().z();
+        const double centreZ = algo::boundingBox(mesh.vertices).center().z();
         for (const std::int32_t f : set->faces)
             (mesh.vertices(mesh.faces(f, 0), 2) > centreZ ? near : far) += 1;
         qInfo("patch mirror: %zu faces on the leg's side, %zu on the other", near, far);

@@ -2,6 +2,9 @@
 // (QTest::mouseMove carries no buttons in Qt 6), and screenshots kept for looking at by eye.
 #pragma once
 
+#include "test_meshes.h"
+
+#include "celform/algorithms/tri_mesh.h"
 #include "celform/views/viewport/viewport.h"
 
 #include <QApplication>
@@ -26,6 +29,22 @@ inline void waitForRender(views::Viewport* viewport)
     timer.start();
     while (viewport->renderCount() <= before && timer.elapsed() < 5000)
         QTest::qWait(10);
+}
+
+/// Turns the viewport to the elephant's side (a little above, along +Z, framed by its bounding box),
+/// waits for the frame, and returns where its hind-leg vertex (elephantHindLegVertex) lands in the
+/// widget, for a drag on it.
+inline QPoint aimAtElephantHindLeg(views::Viewport* viewport, const algo::TriMesh& mesh)
+{
+    const Eigen::AlignedBox3d box = algo::boundingBox(mesh.vertices);
+    model::Camera side;
+    side.target = box.center();
+    side.eye = box.center() + Eigen::Vector3d(0.0, 0.1, 2.5) * box.diagonal().norm();
+    side.up = Eigen::Vector3d::UnitY();
+    viewport->setCamera(side);
+    waitForRender(viewport);
+    const std::uint32_t leg = elephantHindLegVertex(mesh);
+    return viewport->projectToWidget(mesh.vertices.row(leg).transpose().cast<double>()).toPoint();
 }
 
 /// A press, `steps` moves with the button held, and a release.
