@@ -350,6 +350,72 @@ private slots:
         QVERIFY(crossings >= 2); // the lines do cross the boundary
     }
 
+    // Issue 25, "Shading without stair steps": the viewport's GLSL mirror anti-aliases the tone
+    // boundary as the renderer does (ToneAntialiasing::Coverage: a one-pixel ramp across the
+    // threshold from the screen-space width of N.L). Pixels along the boundary take in-between
+    // values in both pictures, at the same places and of about the same value.
+    void toneBoundaryAntialiasingMatchesTheRenderer()
+    {
+        const QImage gpu = frame();
+        celform::algo::RenderPasses passes;
+        const QImage cpu = cpuImage(&passes);
+        gpu.save(QStringLiteral("/tmp/look_tone_aa_viewport.png"));
+        cpu.save(QStringLiteral("/tmp/look_tone_aa_cpu.png"));
+        const Eigen::Vector3f base(0.85f, 0.82f, 0.78f);
+        const auto bright = encode8(Eigen::Vector3f(base * 0.75f));
+        const auto dark = encode8(Eigen::Vector3f(base * 0.25f));
+        // In-between: neither tone, and between them (not a line or the background).
+        auto between = [&](const std::array<int, 3>& c) {
+            if (channelDistance(c, bright) <= 2 || channelDistance(c, dark) <= 2)
+                return false;
+            for (std::size_t k = 0; k < 3; ++k)
+                if (c[k] < dark[k] - 2 || c[k] > bright[k] + 2)
+                    return false;
+            return true;
+        };
+        auto inside = [&](int x, int y) {
+            for (int dy = -kBand; dy <= kBand; ++dy)
+                for (int dx = -kBand; dx <= kBand; ++dx) {
+                    const int xx = x + dx, yy = y + dy;
+                    if (xx < 0 || yy < 0 || xx >= kSize || yy >= kSize || passes.id[std::size_t(yy * kSize + xx)] < 0)
+                        return false;
+                }
+            return true;
+        };
+        int cpuBetween = 0, gpuBetween = 0, bothBetween = 0, band = 0;
+        double sum = 0;
+        int worst = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                if (inTriad(x, y) || !inside(x, y))
+                    continue;
+                const auto c = rgbAt(cpu, x, y), g = rgbAt(gpu, x, y);
+                const bool inCpu = between(c), inGpu = between(g);
+                cpuBetween += inCpu;
+                gpuBetween += inGpu;
+                bothBetween += inCpu && inGpu;
+                if (!inCpu && !inGpu)
+                    continue;
+                // The boundary's pixels: the two pictures' values there.
+                ++band;
+                const int d = channelDistance(c, g);
+                sum += d;
+                worst = std::max(worst, d);
+            }
+        qInfo("tone boundary: %d in-between pixels in the renderer, %d in the viewport, %d in both; "
+              "mean largest channel difference %.2f (of 255), max %d",
+            cpuBetween, gpuBetween, bothBetween, sum / std::max(band, 1), worst);
+        // A boundary a few hundred pixels long on this sphere; a hard step would have none.
+        QVERIFY2(cpuBetween > 150, "the renderer's tone boundary must be anti-aliased");
+        QVERIFY2(gpuBetween > 150, "the viewport's tone boundary must be anti-aliased");
+        // The same pixels: at least 90 % of either's in-between pixels are in-between in the other
+        // (measured: 415 of 418 and 417).
+        QVERIFY(bothBetween >= 0.9 * cpuBetween);
+        QVERIFY(bothBetween >= 0.9 * gpuBetween);
+        // The same values: the two tones lie about 100 code values apart in sRGB; the pictures
+        // differ by a few along the ramp (measured: 0.39 on average, 6 at most).
+        QVERIFY2(sum / band <= 3.0, qPrintable(QStringLiteral("mean difference %1").arg(sum / band)));
+    }
     void goochMatchesFormulaWhereNormalIsLight()
     {
         Look look = baseLook();

@@ -286,6 +286,13 @@ void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeT
     const Eigen::Vector3f eye = view.eye, direction = view.direction;
     for (std::size_t f0 = 0; f0 < nf; f0 += kBlock) {
         const std::size_t count = std::min(kBlock, nf - f0);
+#if defined(__GNUC__)
+        // The corners of the next block are the scattered reads of this pass: fetch them while
+        // this block computes.
+        const std::size_t next = std::min(nf, f0 + 2 * kBlock);
+        for (std::size_t k = 3 * (f0 + kBlock); k < 3 * next; ++k)
+            __builtin_prefetch(pos + 3 * std::size_t(tri[k]));
+#endif
         for (std::size_t i = 0; i < count; ++i) {
             const float* pa = pos + 3 * std::size_t(tri[3 * (f0 + i)]);
             const float* pb = pos + 3 * std::size_t(tri[3 * (f0 + i) + 1]);
@@ -321,12 +328,17 @@ void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeT
             const float len2 = nx * nx + ny * ny + nz * nz;
             // Degenerate faces (zero or overflowing normal) get a zero normal and no facing.
             const bool proper = (len2 > 0.0f) & (len2 <= std::numeric_limits<float>::max());
+            // Every product is computed unconditionally and only selected afterwards: a product
+            // under a condition is a trapping operation GCC will not if-convert, and the loop
+            // would stay scalar.
             const float inverse = kNormalScale / std::sqrt(proper ? len2 : 1.0f);
-            qx[i] = proper ? nx * inverse : 0.0f;
-            qy[i] = proper ? ny * inverse : 0.0f;
-            qz[i] = proper ? nz * inverse : 0.0f;
+            const float sx = nx * inverse, sy = ny * inverse, sz = nz * inverse;
+            qx[i] = proper ? sx : 0.0f;
+            qy[i] = proper ? sy : 0.0f;
+            qz[i] = proper ? sz : 0.0f;
             const float d = nx * vx[i] + ny * vy[i] + nz * vz[i];
-            side[i] = proper ? (d < 0.0f ? 1.0f : -1.0f) : 0.0f;
+            const float facing = d < 0.0f ? 1.0f : -1.0f;
+            side[i] = proper ? facing : 0.0f;
         }
         FaceRecord* r = records.data() + f0;
         for (std::size_t i = 0; i < count; ++i) {
@@ -353,7 +365,7 @@ void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeT
             cosCreaseFixed, std::int32_t(std::lrint(double(cosLow) * double(kNormalScale) * double(kNormalScale))))
         : cosCreaseFixed;
     const FaceRecord* rec = records.data();
-    constexpr std::size_t kPrefetchDistance = 16;
+    constexpr std::size_t kPrefetchDistance = 32;
     const std::int32_t* edgeFaces = topology.faces.data();
     const std::uint8_t* nonManifold = topology.nonManifold.data();
     const bool anyNonManifold = topology.nonManifoldEdges > 0;
@@ -374,9 +386,11 @@ void extractFeatureEdges(const Positions& shape, const Faces& faces, const EdgeT
     std::size_t count = 0;
     for (std::size_t e = 0; e < ne; ++e) {
 #if defined(__GNUC__)
-        // rec[f1] is the scattered read of the loop; fetch it a few edges ahead.
-        if (e + kPrefetchDistance < ne)
+        // rec[f0] and rec[f1] are the scattered reads of the loop; fetch them a few edges ahead.
+        if (e + kPrefetchDistance < ne) {
+            __builtin_prefetch(rec + edgeFaces[2 * (e + kPrefetchDistance)]);
             __builtin_prefetch(rec + std::max(edgeFaces[2 * (e + kPrefetchDistance) + 1], 0));
+        }
 #endif
         const std::int32_t f0 = edgeFaces[2 * e], f1 = edgeFaces[2 * e + 1];
         const bool open = f1 < 0;
