@@ -28,6 +28,8 @@ endif()
 
 find_package(assimp REQUIRED)
 find_package(ZLIB REQUIRED)
+# Rendered frames to PNG (io/png_encoder.h; Debian: libpng-dev).
+find_package(PNG REQUIRED)
 find_package(tinyobjloader REQUIRED)
 # glTF 2.0 animated bases (skins, morph targets) and export (Debian: libtinygltf-dev).
 find_package(TinyGLTF REQUIRED)

@@ -5,13 +5,15 @@
 // - sequence/in_process_png: renderFrames() over the 10 frames, files written, per frame; its
 //   counter minflt_per_frame is the minor page faults of a frame after the first (getrusage:
 //   faults of 10 frames less those of 1, over 9);
+// - encode/*: one frame's file from its passes, in process (the beauty to PNG, every pass to
+//   EXR), with the render thread's part and the writer thread's part as counters;
 // - process/*: `celform render --frames 0-9` as a whole process (fork, exec, wait4), per frame,
 //   with --threads 1 and 2, PNG and EXR (every pass, the default for .exr, and the beauty alone), and a
 //   single frame (start-up, project load and the line topology included).
 // Goals: process/png_threads1 <= 1.25x frame/in_process, process/png_threads2 <= 0.7x, EXR <= 1.2x
 // PNG, process/single_frame <= frame/in_process + 300 ms, minflt_per_frame <= 2000 (PNG).
-// Run: bench_sequence (medians of 3); CELFORM_BENCH_EXECUTABLE=/path/to/celform measures another
-// build's processes. Skips without ../shared/data.
+// Run: bench_sequence (medians of 5: the machine is shared, and a median of 3 moved by 10 %);
+// CELFORM_BENCH_EXECUTABLE=/path/to/celform measures another build's processes. Skips without ../shared/data.
 #include "celform/algorithms/render.h"
 #include "celform/model/data/project_data.h"
 #include "celform/model/io/project_file.h"
@@ -108,23 +110,31 @@ long minorFaults()
     return usage.ru_minflt;
 }
 
+/// Frame 0 of the shot as renderFrame takes it: the project, its camera at 1920x1080 and its look.
+struct FirstFrame {
+    model::ProjectData data = model::loadProject(QString::fromStdString(shot().project));
+    model::RenderJob j = job(1, "unused.png");
+    model::ResolvedRenderJob resolved = model::resolveRenderJob(data, QStringLiteral("dragon"), j);
+    algo::RasterCamera camera = model::rasterCamera(model::renderJobCamera(data, resolved.look, j, 0), 1920, 1080);
+    algo::RenderLook look = model::renderLookFor(data, resolved.look);
+    algo::RenderCache cache;
+
+    void render(algo::RenderPasses& out)
+    {
+        algo::renderFrame(data.baseMesh->vertices, *data.baseMesh, camera, look, cache, out);
+    }
+};
+
 void BM_FrameInProcess(benchmark::State& state)
 {
     if (!shot().ok) {
         state.SkipWithError("shared test data not found (../shared/data)");
         return;
     }
-    const model::ProjectData data = model::loadProject(QString::fromStdString(shot().project));
-    const model::RenderJob j = job(1, "unused.png");
-    const model::ResolvedRenderJob resolved = model::resolveRenderJob(data, QStringLiteral("dragon"), j);
-    const algo::TriMesh& mesh = *data.baseMesh;
-    const algo::RasterCamera camera
-        = model::rasterCamera(model::renderJobCamera(data, resolved.look, j, 0), 1920, 1080);
-    const algo::RenderLook look = model::renderLookFor(data, resolved.look);
-    algo::RenderCache cache;
+    FirstFrame frame;
     algo::RenderPasses out;
     for (auto _ : state) {
-        algo::renderFrame(mesh.vertices, mesh, camera, look, cache, out);
+        frame.render(out);
         benchmark::DoNotOptimize(out.beauty.pixels.data());
     }
 }
@@ -147,6 +157,40 @@ void BM_SequenceInProcess(benchmark::State& state)
         state.SetIterationTime(seconds / kFrames);
         state.counters["minflt_per_frame"] = double((afterAll - afterOne) - (afterOne - before)) / (kFrames - 1);
     }
+}
+
+/// One frame's file made from its passes and written, as a sequence's writer does it after the
+/// render thread has encoded it (encode/*: what the writer thread costs a frame beside the render).
+/// allPasses: every pass to EXR; else the beauty to PNG.
+void BM_WriteFrame(benchmark::State& state, bool allPasses)
+{
+    if (!shot().ok) {
+        state.SkipWithError("shared test data not found (../shared/data)");
+        return;
+    }
+    FirstFrame frame;
+    algo::RenderPasses passes;
+    frame.render(passes);
+    const QString path = QString::fromStdString(shot().out(allPasses ? "w.exr" : "w.png"));
+    model::EncodedFrame encoded;
+    static const std::vector<std::string> rgba = {"R", "G", "B", "A"};
+    double encodeSeconds = 0, writeSeconds = 0;
+    for (auto _ : state) {
+        const auto start = std::chrono::steady_clock::now();
+        if (allPasses)
+            model::encodePassesExr(passes, path, encoded);
+        else
+            model::encodeChannels(
+                path, 1920, 1080, rgba, passes.beauty.pixels.data(), passes.beauty.pixels.size(), true, encoded);
+        const auto encodedAt = std::chrono::steady_clock::now();
+        model::writeEncoded(encoded, path);
+        const auto end = std::chrono::steady_clock::now();
+        encodeSeconds += std::chrono::duration<double>(encodedAt - start).count();
+        writeSeconds += std::chrono::duration<double>(end - encodedAt).count();
+    }
+    // The render thread's part (gathering or quantising) and the writer's (codec and file), in ms.
+    state.counters["render_thread_ms"] = 1e3 * encodeSeconds / double(state.iterations());
+    state.counters["writer_ms"] = 1e3 * writeSeconds / double(state.iterations());
 }
 
 void process(benchmark::State& state, std::vector<std::string> extra, int frames)
@@ -174,14 +218,21 @@ int main(int argc, char** argv)
     unsetenv("DISPLAY");
     unsetenv("WAYLAND_DISPLAY");
     const auto common = [](benchmark::internal::Benchmark* b) {
-        b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+        b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(5)->ReportAggregatesOnly(true);
     };
     benchmark::RegisterBenchmark("frame/in_process", BM_FrameInProcess)
         ->UseRealTime()
         ->Unit(benchmark::kMillisecond)
-        ->Repetitions(3)
+        ->Repetitions(5)
         ->ReportAggregatesOnly(true);
     common(benchmark::RegisterBenchmark("sequence/in_process_png", BM_SequenceInProcess));
+    for (const bool allPasses : {false, true})
+        benchmark::RegisterBenchmark(
+            allPasses ? "encode/exr_every_pass" : "encode/png_beauty", BM_WriteFrame, allPasses)
+            ->UseRealTime()
+            ->Unit(benchmark::kMillisecond)
+            ->Repetitions(5)
+            ->ReportAggregatesOnly(true);
     const std::string frames = "0-" + std::to_string(kFrames - 1);
     const std::string png = shot().out("p_####.png");
     const std::string exr = shot().out("e_####.exr");

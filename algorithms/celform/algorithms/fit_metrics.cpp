@@ -9,12 +9,6 @@
 
 namespace celform::algo {
 
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-} // namespace
-
 double RobustKernel::rho(double r) const
 {
     const double a = std::abs(r), c = scale;
@@ -49,38 +43,6 @@ double RobustKernel::weight(double r) const
     }
     }
     return 1.0;
-}
-
-ProjectionFrame::ProjectionFrame(const RasterCamera& c)
-    : eye(c.eye)
-    , right(c.right())
-    , up(c.trueUp())
-    , forward(c.forward())
-    , cx(0.5 * c.width + c.horizontalShift * c.width)
-    , cy(0.5 * c.height)
-    , orthographic(c.orthographic)
-{
-    // The mapping of RasterCamera::project (raster.h), hence of projectToImage: the image height
-    // spans the vertical field of view (or the orthographic height), square pixels.
-    scale = orthographic ? double(c.height) / c.orthoHeight
-                         : 0.5 * c.height / std::tan(0.5 * c.fovYDegrees * kPi / 180.0);
-}
-
-Eigen::Vector3d ProjectionFrame::project(const Eigen::Vector3d& point) const
-{
-    const Eigen::Vector3d p = point - eye;
-    const double x = p.dot(right), y = p.dot(up), z = p.dot(forward);
-    if (orthographic)
-        return {cx + scale * x, cy - scale * y, z};
-    return {cx + scale * x / z, cy - scale * y / z, z};
-}
-
-Eigen::Vector3d ProjectionFrame::unproject(double x, double y, double depth) const
-{
-    const double u = (x - cx) / scale, v = (cy - y) / scale;
-    if (orthographic)
-        return eye + u * right + v * up + depth * forward;
-    return eye + depth * (forward + u * right + v * up);
 }
 
 Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> projectVertices(

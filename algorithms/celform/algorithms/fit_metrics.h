@@ -56,25 +56,6 @@ struct FitScratch {
     std::vector<std::int32_t> owner;
 };
 
-/// A RasterCamera reduced to what projection needs (the same mapping as RasterCamera::project,
-/// computed once): an orthonormal frame, the pixel scale and the image centre.
-struct ProjectionFrame {
-    Eigen::Vector3d eye;
-    Eigen::Vector3d right;
-    Eigen::Vector3d up;
-    Eigen::Vector3d forward;
-    double scale = 1.0; ///< perspective: focal length in pixels; orthographic: pixels per model unit
-    double cx = 0.0;
-    double cy = 0.0;
-    bool orthographic = false;
-
-    explicit ProjectionFrame(const RasterCamera& camera);
-    /// (pixel x, pixel y, depth along the view axis).
-    [[nodiscard]] Eigen::Vector3d project(const Eigen::Vector3d& point) const;
-    /// The model point at pixel (x, y) and depth: the inverse of project.
-    [[nodiscard]] Eigen::Vector3d unproject(double x, double y, double depth) const;
-};
-
 /// The projection of every vertex of shape through camera: pixel x, pixel y, depth
 /// (RasterCamera::project), #V rows.
 Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> projectVertices(

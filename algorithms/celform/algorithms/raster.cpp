@@ -25,47 +25,6 @@ constexpr std::int64_t kSubHalf = kSubUnit / 2;
 constexpr double kGuard = 32768.0;
 constexpr double kPi = 3.14159265358979323846;
 
-/// The camera reduced to what projection needs: an orthonormal frame and the pixel mapping.
-struct Frame {
-    Eigen::Vector3d eye;
-    Eigen::Vector3d forward;
-    Eigen::Vector3d right;
-    Eigen::Vector3d up;
-    double scale = 1.0; ///< perspective: focal length in pixels; orthographic: pixels per unit
-    double cx = 0.0; ///< pixel x of the view axis (includes the off-axis shift)
-    double cy = 0.0;
-    bool ortho = false;
-
-    explicit Frame(const RasterCamera& c)
-        : eye(c.eye)
-        , forward(c.forward())
-        , right(c.right())
-        , up(c.trueUp())
-        , cx(0.5 * c.width + c.horizontalShift * c.width)
-        , cy(0.5 * c.height)
-        , ortho(c.orthographic)
-    {
-        if (ortho)
-            scale = double(c.height) / c.orthoHeight;
-        else
-            scale = 0.5 * c.height / std::tan(0.5 * c.fovYDegrees * kPi / 180.0);
-    }
-    /// Camera-space coordinates: (along right, along true up, along forward = depth).
-    [[nodiscard]] Eigen::Vector3d toCamera(const Eigen::Vector3d& point) const
-    {
-        const Eigen::Vector3d p = point - eye;
-        return {p.dot(right), p.dot(up), p.dot(forward)};
-    }
-    [[nodiscard]] double pixelX(const Eigen::Vector3d& c) const
-    {
-        return ortho ? cx + scale * c.x() : cx + scale * c.x() / c.z();
-    }
-    [[nodiscard]] double pixelY(const Eigen::Vector3d& c) const
-    {
-        return ortho ? cy - scale * c.y() : cy - scale * c.y() / c.z();
-    }
-};
-
 std::int64_t toFixed(double pixel)
 {
     return std::int64_t(std::floor(pixel * double(kSubUnit) + 0.5));
@@ -268,19 +227,40 @@ Eigen::Vector3d RasterCamera::trueUp() const
     return right().cross(forward());
 }
 
+ProjectionFrame::ProjectionFrame(const RasterCamera& c)
+    : eye(c.eye)
+    , forward(c.forward())
+    , right(c.right())
+    , up(c.trueUp())
+    , cx(0.5 * c.width + c.horizontalShift * c.width)
+    , cy(0.5 * c.height)
+    , orthographic(c.orthographic)
+{
+    if (orthographic)
+        scale = double(c.height) / c.orthoHeight;
+    else
+        scale = 0.5 * c.height / std::tan(0.5 * c.fovYDegrees * kPi / 180.0);
+}
+
+Eigen::Vector3d ProjectionFrame::unproject(double x, double y, double depth) const
+{
+    const double u = (x - cx) / scale, v = (cy - y) / scale;
+    if (orthographic)
+        return eye + u * right + v * up + depth * forward;
+    return eye + depth * (forward + u * right + v * up);
+}
+
 Eigen::Vector3d RasterCamera::project(const Eigen::Vector3d& point) const
 {
-    const Frame frame(*this);
-    const Eigen::Vector3d c = frame.toCamera(point);
-    return {frame.pixelX(c), frame.pixelY(c), c.z()};
+    return ProjectionFrame(*this).project(point);
 }
 
 void RasterCamera::ray(double x, double y, Eigen::Vector3d& origin, Eigen::Vector3d& direction) const
 {
-    const Frame frame(*this);
+    const ProjectionFrame frame(*this);
     const double u = (x - frame.cx) / frame.scale;
     const double v = (frame.cy - y) / frame.scale;
-    if (frame.ortho) {
+    if (frame.orthographic) {
         origin = frame.eye + u * frame.right + v * frame.up;
         direction = frame.forward;
     } else {
@@ -308,7 +288,7 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
     if (pixelCount == 0)
         return;
 
-    const Frame frame(camera);
+    const ProjectionFrame frame(camera);
     // Near plane: a tiny fraction of the scene size in front of the eye (for orthographic
     // cameras too, so depths stay positive for the relative depth bias of drawStrokes).
     const Eigen::AlignedBox3d box = boundingBox(shape);
@@ -358,7 +338,7 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
     Target target;
     target.width = width;
     target.height = height;
-    target.perspective = !frame.ortho;
+    target.perspective = !frame.orthographic;
     target.depth = out.depth.data();
     target.faceId = out.faceId.data();
     target.bary = out.barycentric.data();
@@ -402,12 +382,12 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
         int n = clipPolygon(bufA.data(), 3, bufB.data(), [&](const Eigen::Vector3d& c) { return c.z() - nearDepth; });
         // Homogeneous pixel coordinates: pixel x = X / W with W = depth (perspective) or 1.
         const auto hx = [&](const Eigen::Vector3d& c) {
-            return frame.ortho ? frame.cx + frame.scale * c.x() : frame.cx * c.z() + frame.scale * c.x();
+            return frame.orthographic ? frame.cx + frame.scale * c.x() : frame.cx * c.z() + frame.scale * c.x();
         };
         const auto hy = [&](const Eigen::Vector3d& c) {
-            return frame.ortho ? frame.cy - frame.scale * c.y() : frame.cy * c.z() - frame.scale * c.y();
+            return frame.orthographic ? frame.cy - frame.scale * c.y() : frame.cy * c.z() - frame.scale * c.y();
         };
-        const auto hw = [&](const Eigen::Vector3d& c) { return frame.ortho ? 1.0 : c.z(); };
+        const auto hw = [&](const Eigen::Vector3d& c) { return frame.orthographic ? 1.0 : c.z(); };
         if (n >= 3)
             n = clipPolygon(
                 bufB.data(), n, bufA.data(), [&](const Eigen::Vector3d& c) { return hx(c) + kGuard * hw(c); });

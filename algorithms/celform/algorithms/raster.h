@@ -40,6 +40,44 @@ struct RasterCamera {
     [[nodiscard]] Eigen::Vector3d trueUp() const; ///< right x forward
 };
 
+/// A camera reduced to what projection needs, computed once for many points (RasterCamera::project
+/// builds one per call): an orthonormal frame and the pixel mapping, with the same arithmetic, so
+/// the same results to the bit.
+struct ProjectionFrame {
+    Eigen::Vector3d eye;
+    Eigen::Vector3d forward;
+    Eigen::Vector3d right;
+    Eigen::Vector3d up; ///< the true up (RasterCamera::trueUp)
+    double scale = 1.0; ///< perspective: focal length in pixels; orthographic: pixels per model unit
+    double cx = 0.0; ///< pixel x of the view axis (includes the off-axis shift)
+    double cy = 0.0;
+    bool orthographic = false;
+
+    explicit ProjectionFrame(const RasterCamera& c);
+    /// Camera-space coordinates: (along right, along true up, along forward = depth).
+    [[nodiscard]] Eigen::Vector3d toCamera(const Eigen::Vector3d& point) const
+    {
+        const Eigen::Vector3d p = point - eye;
+        return {p.dot(right), p.dot(up), p.dot(forward)};
+    }
+    [[nodiscard]] double pixelX(const Eigen::Vector3d& c) const
+    {
+        return orthographic ? cx + scale * c.x() : cx + scale * c.x() / c.z();
+    }
+    [[nodiscard]] double pixelY(const Eigen::Vector3d& c) const
+    {
+        return orthographic ? cy - scale * c.y() : cy - scale * c.y() / c.z();
+    }
+    /// (pixel x, pixel y, depth along the view axis), as RasterCamera::project.
+    [[nodiscard]] Eigen::Vector3d project(const Eigen::Vector3d& point) const
+    {
+        const Eigen::Vector3d c = toCamera(point);
+        return {pixelX(c), pixelY(c), c.z()};
+    }
+    /// The model point at pixel (x, y) and depth: the inverse of project.
+    [[nodiscard]] Eigen::Vector3d unproject(double x, double y, double depth) const;
+};
+
 /// Per-pixel surface data; faceId -1 and depth +infinity where no triangle covers the pixel
 /// centre. Normals are interpolated vertex normals (perspective-correct), positions model space.
 struct GBuffer {

@@ -204,8 +204,10 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         FeatureEdges& features = scratch.features;
         extractFeatureEdges(shape, faces, topology, mesh.faceMaterials, view, look.lineSettings, features);
         const std::vector<Stroke> strokes = chainStrokes(topology, features);
-        auto project
-            = [&](const Eigen::Vector3f& p) { return Eigen::Vector3f(camera.project(p.cast<double>()).cast<float>()); };
+        const ProjectionFrame projection(camera);
+        auto project = [&](const Eigen::Vector3f& p) {
+            return Eigen::Vector3f(projection.project(p.cast<double>()).cast<float>());
+        };
         // Apparent ridges from the line view's eye, clustered in its pixels (paper 3, 4.2.1).
         const RidgeSnakes* snakes = look.lineSettings.ridges
             ? &cachedRidgeSnakes(shape, mesh, lv, look.lineSettings.ridgeThreshold, cache.ridges,

@@ -137,11 +137,12 @@ void clusterSnakes(const RidgeSegments& segments, const RasterCamera& camera, co
         ws.alias[n] = std::int32_t(n);
     table.reset(nodes);
     ws.nodeNext.assign(nodes, -1);
+    const ProjectionFrame projection(camera);
     for (std::size_t n = 0; n < nodes; ++n) {
         ws.screen[n] = Eigen::Vector2f(std::numeric_limits<float>::quiet_NaN(), 0.f);
         if (ws.degree[n] != 1)
             continue;
-        const Eigen::Vector3d p = camera.project(ws.nodePoint[n].cast<double>());
+        const Eigen::Vector3d p = projection.project(ws.nodePoint[n].cast<double>());
         const Eigen::Vector2f sp(float(p.x()), float(p.y()));
         if (!(p.z() > 0.0) || !(std::abs(sp.x()) < 1e8f) || !(std::abs(sp.y()) < 1e8f))
             continue; // behind the camera or off to infinity: never joined

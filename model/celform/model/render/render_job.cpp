@@ -285,17 +285,25 @@ public:
                 return {};
             return [] {};
         } else {
-            m_frame.render(shown, m_job, m_resolved, f, m_passes);
+            m_frame.render(shown, m_job, m_resolved, f, m_passes[m_nextPasses]);
             if (cancelled())
                 return {};
             if (m_allPasses) {
-                encodePassesExr(m_passes, target, encoded);
+                // Every pass to EXR: the passes themselves go to the writer, which gathers their
+                // channels and compresses them while this thread renders the next frame into the
+                // other set (issue 29: the gather was 19 ms of the render thread's frame).
+                const algo::RenderPasses& passes = m_passes[m_nextPasses];
+                m_nextPasses ^= 1;
+                return [this, &passes, target] {
+                    encodePassesExr(passes, target, m_exr);
+                    writeEncoded(m_exr, target);
+                };
             } else {
                 const QString pass = m_job.pass.isEmpty() ? QStringLiteral("beauty") : m_job.pass;
                 // The beauty is encoded from the passes as they are; another pass through an image.
-                const algo::ImageRGBA* image = &m_passes.beauty;
+                const algo::ImageRGBA* image = &m_passes[m_nextPasses].beauty;
                 if (pass != QLatin1String("beauty")) {
-                    passImage(m_passes, pass, m_floatFile, m_image);
+                    passImage(m_passes[m_nextPasses], pass, m_floatFile, m_image);
                     image = &m_image;
                 }
                 encodeChannels(target, image->width, image->height, rgba, image->pixels.data(), image->pixels.size(),
@@ -335,10 +343,14 @@ private:
     JobFrameState m_frame;
     DepthAnalyser m_analyser;
     FrameAnalysis m_analysed;
-    algo::RenderPasses m_passes; // the frame's passes, their storage kept from frame to frame
+    /// The frame's passes, their storage kept from frame to frame; the second set only for an EXR
+    /// of every pass, whose writer reads the passes of one frame while the next renders.
+    std::array<algo::RenderPasses, 2> m_passes;
+    int m_nextPasses = 0;
     algo::ImageRGBA m_image; // a pass other than the beauty as an image
     std::array<EncodedFrame, 2> m_encoded;
     int m_nextEncoded = 0;
+    EncodedFrame m_exr; // an EXR of every pass, on the writer thread (one write at a time)
 };
 
 } // namespace

@@ -5,18 +5,16 @@
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/image_io.h"
 #include "celform/model/io/output_file.h"
+#include "celform/model/io/png_encoder.h"
 #include "celform/model/io/raster_codec.h"
 #include "celform/model/render/ridge_depth_prepass.h"
 
 #include "celform/algorithms/srgb_encode.h"
 
-#include <QBuffer>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QImage>
-#include <QImageWriter>
 
 #include <algorithm>
 #include <cmath>
@@ -64,36 +62,15 @@ void encodeChannels(const QString& path, int width, int height, const std::vecto
 
 namespace {
 
-/// The QImage format of 8-bit pixels with these channels, for Qt's PNG writer; Invalid for others.
-QImage::Format qtFormatOf(const std::vector<std::string>& names)
+/// How many channels the PNG encoder takes for these names (R G B A, R G B or one channel), 0 when
+/// the PNG goes through OpenImageIO instead.
+int pngChannelsOf(const std::vector<std::string>& names)
 {
     if (names == std::vector<std::string>{"R", "G", "B", "A"})
-        return QImage::Format_RGBA8888;
+        return 4;
     if (names == std::vector<std::string>{"R", "G", "B"})
-        return QImage::Format_RGB888;
-    if (names.size() == 1)
-        return QImage::Format_Grayscale8;
-    return QImage::Format_Invalid;
-}
-
-/// An 8-bit PNG encoded by Qt's writer (libpng, in Qt Gui, which the program has loaded already)
-/// into png: issue 29 measured loading the OpenImageIO module and its library graph (about 275
-/// libraries) as the larger part of a one-frame render's start; the pixels are the same. Empty
-/// when encoded, else the problem; nullopt when Qt does not take these channels.
-std::optional<QString> encodePngWithQt(const EncodedFrame& image, QByteArray& png)
-{
-    const QImage::Format format = qtFormatOf(image.names);
-    if (format == QImage::Format_Invalid || image.isFloat)
-        return std::nullopt;
-    const qsizetype rowBytes = qsizetype(image.width) * qsizetype(image.names.size());
-    const QImage wrapped(image.bytes.data(), image.width, image.height, rowBytes, format);
-    png.resize(0);
-    QBuffer buffer(&png);
-    buffer.open(QIODevice::WriteOnly);
-    QImageWriter writer(&buffer, "png");
-    if (!writer.write(wrapped))
-        return writer.errorString();
-    return QString();
+        return 3;
+    return names.size() == 1 ? 1 : 0;
 }
 
 } // namespace
@@ -104,16 +81,18 @@ void writeEncoded(const EncodedFrame& image, const QString& path)
     // file and the reason, and leaves neither a short file nor a temporary one (issue 27). Kept
     // per thread: a sequence's writer reuses them frame after frame (issue 29). Frames are not
     // synced to the disk one by one (docs/farm.md).
-    thread_local QByteArray png;
     thread_local std::vector<unsigned char> encoded;
     const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("png")) {
-        if (const std::optional<QString> problem = encodePngWithQt(image, png)) {
-            if (!problem->isEmpty())
-                throw IoError(path, RenderOutput::tr("could not be written: %1").arg(*problem));
-            writeWholeFile(path, png.constData(), png.size(), Durability::Renamed);
-            return;
-        }
+    // 8-bit PNGs with libpng here (png_encoder.h): faster than Qt's writer, and without loading the
+    // OpenImageIO module and its library graph (about 275 libraries), which issue 29 measured as
+    // the larger part of a one-frame render's start.
+    if (const int channels = pngChannelsOf(image.names);
+        suffix == QLatin1String("png") && !image.isFloat && channels > 0) {
+        const QString problem = encodePng(image.bytes.data(), image.width, image.height, channels, encoded);
+        if (!problem.isEmpty())
+            throw IoError(path, RenderOutput::tr("could not be written: %1").arg(problem));
+        writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
+        return;
     }
     const RasterCodec& codec = rasterCodec(path);
     const QString error = image.isFloat

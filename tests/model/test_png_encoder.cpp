@@ -1,0 +1,163 @@
+// The PNG encoder of rendered frames (io/png_encoder.h, issue 29): the same pixels as went in,
+// read back by Qt's own PNG reader, for every channel layout it takes; files about the size of
+// libpng's adaptive filter choice on pictures like renders; clear refusals.
+#include "celform/model/io/png_encoder.h"
+
+#include <QBuffer>
+#include <QImage>
+#include <QImageWriter>
+#include <QtTest/QtTest>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+using celform::model::encodePng;
+
+namespace {
+
+/// A frame like a toon render: a background, two flat tones inside an ellipse, a dark outline
+/// along its edge, and (smooth) a Gooch-like gradient instead of the tones.
+std::vector<unsigned char> picture(int w, int h, int channels, bool smooth)
+{
+    std::vector<unsigned char> px(std::size_t(w) * std::size_t(h) * std::size_t(channels));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const double u = (x - 0.5 * w) / (0.35 * w), v = (y - 0.5 * h) / (0.4 * h);
+            const double r = u * u + v * v;
+            unsigned char rgba[4] = {236, 236, 232, 0};
+            if (r < 1.0) {
+                const double lit = 0.5 + 0.5 * (0.6 * u - 0.8 * v);
+                const double t = smooth ? lit : (lit > 0.45 ? 0.75 : 0.25);
+                rgba[0] = (unsigned char)(40 + 180 * t);
+                rgba[1] = (unsigned char)(60 + 150 * t);
+                rgba[2] = (unsigned char)(150 - 60 * t);
+                rgba[3] = 255;
+                if (r > 0.96)
+                    rgba[0] = rgba[1] = rgba[2] = 20; // the outline
+            }
+            unsigned char* p = px.data() + (std::size_t(y) * std::size_t(w) + std::size_t(x)) * std::size_t(channels);
+            if (channels == 1)
+                p[0] = rgba[1];
+            else
+                for (int c = 0; c < channels; ++c)
+                    p[c] = rgba[c];
+        }
+    return px;
+}
+
+QImage::Format formatOf(int channels)
+{
+    return channels == 4 ? QImage::Format_RGBA8888
+                         : (channels == 3 ? QImage::Format_RGB888 : QImage::Format_Grayscale8);
+}
+
+/// The file Qt's writer makes of the same pixels (libpng with its adaptive filters).
+qsizetype qtPngSize(const std::vector<unsigned char>& px, int w, int h, int channels)
+{
+    const QImage image(px.data(), w, h, qsizetype(w) * channels, formatOf(channels));
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    QImageWriter writer(&buffer, "png");
+    return writer.write(image) ? bytes.size() : -1;
+}
+
+} // namespace
+
+class TestPngEncoder : public QObject {
+    Q_OBJECT
+
+private slots:
+    void samePixelsBack_data()
+    {
+        QTest::addColumn<int>("channels");
+        QTest::addColumn<int>("width");
+        QTest::addColumn<int>("height");
+        QTest::addColumn<bool>("noise");
+        for (const int c : {1, 3, 4}) {
+            QTest::addRow("%d channels, a toon picture", c) << c << 320 << 240 << false;
+            QTest::addRow("%d channels, noise", c) << c << 97 << 61 << true;
+            QTest::addRow("%d channels, one pixel", c) << c << 1 << 1 << true;
+        }
+    }
+
+    void samePixelsBack()
+    {
+        QFETCH(int, channels);
+        QFETCH(int, width);
+        QFETCH(int, height);
+        QFETCH(bool, noise);
+        std::vector<unsigned char> px = picture(width, height, channels, false);
+        if (noise) {
+            std::mt19937 random(7);
+            for (unsigned char& b : px)
+                b = (unsigned char)(random() & 0xff);
+        }
+        std::vector<unsigned char> file;
+        QCOMPARE(encodePng(px.data(), width, height, channels, file), QString());
+        QVERIFY(file.size() > 8);
+        QImage back;
+        QVERIFY(back.loadFromData(file.data(), int(file.size()), "png"));
+        QCOMPARE(back.size(), QSize(width, height));
+        back = back.convertToFormat(formatOf(channels));
+        for (int y = 0; y < height; ++y)
+            QVERIFY2(std::memcmp(back.constScanLine(y), px.data() + std::size_t(y) * std::size_t(width * channels),
+                         std::size_t(width * channels))
+                    == 0,
+                qPrintable(QStringLiteral("row %1 differs").arg(y)));
+    }
+
+    /// The storage of out is reused: a second, smaller picture leaves no bytes of the first.
+    void outputIsReplacedNotAppended()
+    {
+        std::vector<unsigned char> file;
+        const std::vector<unsigned char> big = picture(200, 100, 4, true);
+        QCOMPARE(encodePng(big.data(), 200, 100, 4, file), QString());
+        const std::vector<unsigned char> small = picture(8, 4, 3, false);
+        QCOMPARE(encodePng(small.data(), 8, 4, 3, file), QString());
+        QImage back;
+        QVERIFY(back.loadFromData(file.data(), int(file.size()), "png"));
+        QCOMPARE(back.size(), QSize(8, 4));
+    }
+
+    /// One fixed filter costs little size: within 5 % of libpng's adaptive choice on flat tones and
+    /// on a smooth gradient (measured here: 1 % smaller and 3 % larger; on the dragon at 1920x1080,
+    /// 3 % and 0.3 % larger with toon and with Gooch shading).
+    void sizeNearTheAdaptiveFilters_data()
+    {
+        QTest::addColumn<bool>("smooth");
+        QTest::addColumn<double>("bound");
+        QTest::newRow("toon") << false << 1.05;
+        QTest::newRow("gradient") << true << 1.05;
+    }
+
+    void sizeNearTheAdaptiveFilters()
+    {
+        QFETCH(bool, smooth);
+        QFETCH(double, bound);
+        const int w = 960, h = 540;
+        const std::vector<unsigned char> px = picture(w, h, 4, smooth);
+        std::vector<unsigned char> file;
+        QCOMPARE(encodePng(px.data(), w, h, 4, file), QString());
+        const qsizetype qt = qtPngSize(px, w, h, 4);
+        QVERIFY(qt > 0);
+        qInfo("%s: %zu bytes, Qt's writer %lld", QTest::currentDataTag(), file.size(), qlonglong(qt));
+        QVERIFY2(double(file.size()) <= bound * double(qt),
+            qPrintable(QStringLiteral("%1 bytes against %2").arg(file.size()).arg(qt)));
+    }
+
+    void refusesWhatIsNotAnImage()
+    {
+        std::vector<unsigned char> file(10, 1);
+        const unsigned char px[8] = {};
+        QVERIFY(encodePng(px, 2, 2, 2, file).contains(QLatin1String("2")));
+        QVERIFY(file.empty());
+        QVERIFY(!encodePng(px, 0, 2, 4, file).isEmpty());
+        QVERIFY(!encodePng(nullptr, 2, 2, 4, file).isEmpty());
+        QVERIFY(file.empty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPngEncoder)
+#include "test_png_encoder.moc"
