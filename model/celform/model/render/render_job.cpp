@@ -85,8 +85,10 @@ bool RenderJob::writesVectorLines() const
 
 qint64 RenderJob::bytesNeeded() const
 {
+    // An EXR of every pass: a second set of passes (48 bytes a pixel), which the writer reads while
+    // the next frame renders, and the file's 12 float channels (48) made from it.
     const qint64 perPixel = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2)
-        + (writesAllPasses() ? 32 : 0) + (analysisPictureFromName(pass) ? kAnalysisBytesPerPixel : 0);
+        + (writesAllPasses() ? 96 : 0) + (analysisPictureFromName(pass) ? kAnalysisBytesPerPixel : 0);
     return qint64(size.width()) * size.height() * perPixel;
 }
 
