@@ -110,6 +110,29 @@ private slots:
         QCOMPARE(std::memcmp(out, expected, 8), 0);
         celform::algo::quantise8(in, out, 8, 4, 3, false); // data: every channel linear
         QCOMPARE(int(out[0]), 128);
+
+        // Linear channels (alpha, data) round as std::lround(255 * clamp(v, 0, 1)) did: around
+        // every half-way point, on random values, on the edges.
+        std::vector<float> values;
+        for (int k = 0; k < 255; ++k) {
+            float v = std::nextafter((float(k) + 0.5f) / 255.f, 0.f);
+            for (int i = 0; i < 5; ++i, v = std::nextafter(v, 2.f))
+                values.push_back(std::nextafter(v, 0.f));
+        }
+        for (int i = 0; i < 200000; ++i)
+            values.push_back(unit(random));
+        for (float v : {0.f, -0.f, 1.f, 2.f, -1.f, std::numeric_limits<float>::infinity(),
+                 -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()})
+            values.push_back(v);
+        std::vector<std::uint8_t> linear(values.size());
+        celform::algo::quantise8(values.data(), linear.data(), values.size(), 1, 0, false);
+        int linearMismatches = 0;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const float c = std::clamp(values[i], 0.f, 1.f);
+            const int rounded = c == c ? int(std::lround(c * 255.f)) : 0;
+            linearMismatches += int(linear[i]) != rounded ? 1 : 0;
+        }
+        QCOMPARE(linearMismatches, 0);
     }
 
     void toonHasExactlyItsTones_data()

@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 namespace celform::algo {
 namespace {
 
 constexpr int kBuckets = 4096; // a power of two: v * kBuckets is exact in float
+/// The most codes a bucket spans, which encode() steps through without a branch.
+constexpr int kMaxSteps = 2;
 
 struct Tables {
     /// threshold[k]: the least float v in [0, 1] whose reference code is at least k (k >= 1);
@@ -57,28 +60,35 @@ const Tables& tables()
         made.threshold[256] = 2.f;
         for (int i = 0; i <= kBuckets; ++i)
             made.bucket[std::size_t(i)] = srgbEncode8Reference(float(i) / float(kBuckets));
+        // encode() passes at most kMaxSteps thresholds from a bucket's start: no bucket may hold
+        // more (the steepest part of the curve, slope 12.92 at 0, puts 0.8 codes in a bucket).
+        for (int i = 0; i < kBuckets; ++i) {
+            const int first = made.bucket[std::size_t(i)], last = made.bucket[std::size_t(i) + 1];
+            if (last - first > kMaxSteps)
+                std::abort();
+        }
         return made;
     }();
     return t;
 }
 
+/// round(255 * clamp(v, 0, 1)) as std::lround(c * 255.f) gives it, without the libm call: the
+/// product is a float below 256, so adding one half in double is exact and truncation rounds half
+/// away from zero. NaN gives 0.
 std::uint8_t linear8(float v)
 {
-    const float c = std::clamp(v, 0.f, 1.f);
-    if (!(c == c))
-        return 0;
-    return static_cast<std::uint8_t>(std::lround(c * 255.f));
+    const float c = v > 0.f ? std::min(v, 1.f) : 0.f; // NaN fails v > 0
+    return static_cast<std::uint8_t>(double(c * 255.f) + 0.5);
 }
 
+/// The code of v: the bucket's code, then at most kMaxSteps thresholds passed within the bucket
+/// (checked when the tables are made), taken without a branch on the data.
 std::uint8_t encode(const Tables& t, float v)
 {
-    if (!(v > 0.f)) // also NaN
-        return 0;
-    if (v >= 1.f)
-        return 255;
-    std::uint32_t code = t.bucket[std::size_t(v * float(kBuckets))];
-    while (v >= t.threshold[code + 1])
-        ++code;
+    const float c = v > 0.f ? std::min(v, 1.f) : 0.f; // NaN fails v > 0
+    std::uint32_t code = t.bucket[std::size_t(c * float(kBuckets))];
+    for (int step = 0; step < kMaxSteps; ++step)
+        code += c >= t.threshold[code + 1] ? 1u : 0u;
     return static_cast<std::uint8_t>(code);
 }
 
@@ -103,11 +113,21 @@ void quantise8(
     const Tables& t = tables();
     const int colour = encodeColour ? std::clamp(colourChannels, 0, channels) : 0;
     const auto stride = std::size_t(channels);
-    for (std::size_t i = 0; i + stride <= count; i += stride) {
-        for (int c = 0; c < colour; ++c)
-            out[i + std::size_t(c)] = encode(t, in[i + std::size_t(c)]);
-        for (int c = colour; c < channels; ++c)
-            out[i + std::size_t(c)] = linear8(in[i + std::size_t(c)]);
+    if (channels == 4 && colour == 3) {
+        // Rendered frames (RGBA): fixed trip counts, so the compiler unrolls the pixel.
+        for (std::size_t i = 0; i + 4 <= count; i += 4) {
+            out[i] = encode(t, in[i]);
+            out[i + 1] = encode(t, in[i + 1]);
+            out[i + 2] = encode(t, in[i + 2]);
+            out[i + 3] = linear8(in[i + 3]);
+        }
+    } else {
+        for (std::size_t i = 0; i + stride <= count; i += stride) {
+            for (int c = 0; c < colour; ++c)
+                out[i + std::size_t(c)] = encode(t, in[i + std::size_t(c)]);
+            for (int c = colour; c < channels; ++c)
+                out[i + std::size_t(c)] = linear8(in[i + std::size_t(c)]);
+        }
     }
     for (std::size_t i = count - count % stride; i < count; ++i) // a trailing partial pixel
         out[i] = linear8(in[i]);

@@ -85,10 +85,11 @@ bool RenderJob::writesVectorLines() const
 
 qint64 RenderJob::bytesNeeded() const
 {
-    // An EXR of every pass: a second set of passes (48 bytes a pixel), which the writer reads while
-    // the next frame renders, and the file's 12 float channels (48) made from it.
+    // What the writer holds while the next frame renders: for an EXR of every pass, a second set
+    // of passes (48 bytes a pixel) and the file's 12 float channels (48) made from it; for one
+    // pass, the second of the two RGBA float images it takes in turn (16).
     const qint64 perPixel = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2)
-        + (writesAllPasses() ? 96 : 0) + (analysisPictureFromName(pass) ? kAnalysisBytesPerPixel : 0);
+        + (writesAllPasses() ? 96 : 16) + (analysisPictureFromName(pass) ? kAnalysisBytesPerPixel : 0);
     return qint64(size.width()) * size.height() * perPixel;
 }
 
@@ -287,7 +288,15 @@ public:
                 return {};
             return [] {};
         } else {
+            // One pass alone: the beauty renders into the image the writer had two frames ago
+            // (its write has finished) and goes to the writer as it is (below).
+            algo::ImageRGBA& image = m_images[m_nextImage];
+            const bool beautyAlone = !m_allPasses && (m_job.pass.isEmpty() || m_job.pass == QLatin1String("beauty"));
+            if (beautyAlone)
+                std::swap(image, m_passes[m_nextPasses].beauty);
             m_frame.render(shown, m_job, m_resolved, f, m_passes[m_nextPasses]);
+            if (beautyAlone)
+                std::swap(image, m_passes[m_nextPasses].beauty);
             if (cancelled())
                 return {};
             if (m_allPasses) {
@@ -297,20 +306,21 @@ public:
                 const algo::RenderPasses& passes = m_passes[m_nextPasses];
                 m_nextPasses ^= 1;
                 return [this, &passes, target] {
-                    encodePassesExr(passes, target, m_exr);
-                    writeEncoded(m_exr, target);
+                    encodePassesExr(passes, target, m_written);
+                    writeEncoded(m_written, target);
                 };
-            } else {
-                const QString pass = m_job.pass.isEmpty() ? QStringLiteral("beauty") : m_job.pass;
-                // The beauty is encoded from the passes as they are; another pass through an image.
-                const algo::ImageRGBA* image = &m_passes[m_nextPasses].beauty;
-                if (pass != QLatin1String("beauty")) {
-                    passImage(m_passes[m_nextPasses], pass, m_floatFile, m_image);
-                    image = &m_image;
-                }
-                encodeChannels(target, image->width, image->height, rgba, image->pixels.data(), image->pixels.size(),
-                    true, encoded);
             }
+            // One pass: its image goes to the writer, which quantises it (8-bit files) and writes
+            // it while this thread renders the next frame into the other image (issue 29: the
+            // quantisation was 11 ms of the render thread's frame).
+            m_nextImage ^= 1;
+            if (!beautyAlone)
+                passImage(m_passes[m_nextPasses], m_job.pass, m_floatFile, image);
+            return [this, &image, target] {
+                encodeChannels(
+                    target, image.width, image.height, rgba, image.pixels.data(), image.pixels.size(), true, m_written);
+                writeEncoded(m_written, target);
+            };
         }
         return [&encoded, target] { writeEncoded(encoded, target); };
     }
@@ -349,10 +359,13 @@ private:
     /// of every pass, whose writer reads the passes of one frame while the next renders.
     std::array<algo::RenderPasses, 2> m_passes;
     int m_nextPasses = 0;
-    algo::ImageRGBA m_image; // a pass other than the beauty as an image
-    std::array<EncodedFrame, 2> m_encoded;
+    /// The images of one pass that the writer has or had, used in turn: the writer may still be
+    /// writing the last one.
+    std::array<algo::ImageRGBA, 2> m_images;
+    int m_nextImage = 0;
+    std::array<EncodedFrame, 2> m_encoded; // the analysis passes' file data, used in turn
     int m_nextEncoded = 0;
-    EncodedFrame m_exr; // an EXR of every pass, on the writer thread (one write at a time)
+    EncodedFrame m_written; // the file data the writer makes (one write at a time)
 };
 
 } // namespace
