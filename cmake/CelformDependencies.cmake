@@ -28,8 +28,10 @@ endif()
 
 find_package(assimp REQUIRED)
 find_package(ZLIB REQUIRED)
-# Rendered frames to PNG (io/png_encoder.h; Debian: libpng-dev).
-find_package(PNG REQUIRED)
+# Rendered frames to PNG: libdeflate compresses the filtered rows (io/png_encoder.h; Debian:
+# libdeflate-dev, which ships a pkg-config file and no CMake package).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
 find_package(tinyobjloader REQUIRED)
 # glTF 2.0 animated bases (skins, morph targets) and export (Debian: libtinygltf-dev).
 find_package(TinyGLTF REQUIRED)

@@ -6,6 +6,8 @@
 #include "celform/algorithms/stroke_refine.h"
 
 #include <algorithm>
+#include <system_error>
+#include <future>
 #include <cmath>
 #include <cstring>
 #include <iterator>
@@ -188,6 +190,19 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     }
     const Positions& normals = *given;
 
+    // A mesh's first frame with lines: its edge topology is built on another thread while this
+    // one rasterises (issue 29: 51 ms of a one-frame render of the dragon; the core the writer
+    // thread uses later is idle then). mesh.edgeTopology() below waits for it; should that thread
+    // fail, it builds the topology again here and reports the failure itself.
+    std::future<void> topologyBuilt;
+    if (look.lines && !mesh.hasEdgeTopology()) {
+        try {
+            topologyBuilt = std::async(std::launch::async, [&mesh] { (void)mesh.edgeTopology(); });
+        } catch (const std::system_error&) {
+            // no thread to be had: built below, on this one
+        }
+    }
+
     GBuffer& g = scratch.gbuffer;
     rasterise(shape, faces, normals, camera, g);
 
@@ -195,6 +210,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     // (the centre eye for stereo pairs, paper 3, section 4.2.2), projected with this camera.
     out.lines.assign(pixelCount, 0.f);
     if (look.lines) {
+        if (topologyBuilt.valid())
+            topologyBuilt.wait();
         const EdgeTopology& topology = mesh.edgeTopology(); // built once per mesh, kept with it
         const RasterCamera& lv = lineView ? *lineView : camera;
         LineView view;

@@ -68,6 +68,7 @@ struct TriMesh::Derived {
     std::once_flag topologyOnce, vertexFacesOnce, normalsOnce, centreOnce, symmetryOnce;
     std::array<std::once_flag, 3> mirrorOnce;
     EdgeTopology topology;
+    std::atomic<bool> topologyBuilt{false};
     VertexFaces vertexFaces;
     Positions normals;
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
@@ -139,9 +140,16 @@ void TriMesh::clearDerived()
 
 const EdgeTopology& TriMesh::edgeTopology() const
 {
-    std::call_once(m_derived->topologyOnce,
-        [this] { m_derived->topology = buildEdgeTopology(faces, std::int32_t(vertices.rows())); });
+    std::call_once(m_derived->topologyOnce, [this] {
+        m_derived->topology = buildEdgeTopology(faces, std::int32_t(vertices.rows()));
+        m_derived->topologyBuilt.store(true, std::memory_order_release);
+    });
     return m_derived->topology;
+}
+
+bool TriMesh::hasEdgeTopology() const
+{
+    return m_derived->topologyBuilt.load(std::memory_order_acquire);
 }
 
 const VertexFaces& TriMesh::vertexFaces() const

@@ -61,6 +61,8 @@ struct TriMesh {
 
     /// Edge adjacency (lines, silhouettes).
     [[nodiscard]] const EdgeTopology& edgeTopology() const;
+    /// Whether edgeTopology() has been built already (it then returns at once).
+    [[nodiscard]] bool hasEdgeTopology() const;
     /// Faces around each vertex (patch painting, brushes, partial normal updates).
     [[nodiscard]] const VertexFaces& vertexFaces() const;
     /// Area-weighted vertex normals of `vertices` (algo::vertexNormals).
