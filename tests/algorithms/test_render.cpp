@@ -6,6 +6,7 @@
 #include "celform/algorithms/render.h"
 #include "celform/algorithms/srgb_encode.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -133,6 +134,32 @@ private slots:
             linearMismatches += int(linear[i]) != rounded ? 1 : 0;
         }
         QCOMPARE(linearMismatches, 0);
+    }
+
+    // Issue 29: a file of the beauty alone asks for no data passes; the beauty and the lines are
+    // the same to the bit, the data passes stay empty, and the next frame with them fills them
+    // again from the same buffers.
+    void beautyAloneSkipsTheDataPasses()
+    {
+        const TriMesh mesh = sphere();
+        RenderLook look = plainLook(Style::Toon);
+        look.lines = true;
+        RenderCache cache;
+        RenderPasses full, alone;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, full);
+        look.dataPasses = false;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, alone);
+        QCOMPARE(alone.beauty.pixels, full.beauty.pixels);
+        QCOMPARE(alone.lines, full.lines);
+        QVERIFY(std::any_of(full.lines.begin(), full.lines.end(), [](float v) { return v > 0.5f; }));
+        QCOMPARE(alone.strokes.size(), full.strokes.size());
+        QVERIFY(alone.tone.empty() && alone.highlights.empty() && alone.depth.empty() && alone.normal.empty()
+            && alone.id.empty());
+        look.dataPasses = true;
+        renderFrame(mesh.vertices, mesh, frontCamera(), look, cache, alone);
+        QCOMPARE(alone.tone, full.tone);
+        QCOMPARE(alone.id, full.id);
+        QCOMPARE(alone.normal.size(), full.normal.size());
     }
 
     void toonHasExactlyItsTones_data()

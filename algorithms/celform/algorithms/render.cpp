@@ -307,11 +307,20 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     out.beauty.width = width;
     out.beauty.height = height;
     out.beauty.pixels.resize(pixelCount * 4);
-    out.tone.assign(pixelCount, 0.f);
-    out.highlights.assign(pixelCount, 0.f);
-    out.depth = g.depth;
-    out.normal.assign(pixelCount, Eigen::Vector3f::Zero());
-    out.id = g.faceId;
+    const bool dataPasses = look.dataPasses;
+    if (dataPasses) {
+        out.tone.assign(pixelCount, 0.f);
+        out.highlights.assign(pixelCount, 0.f);
+        out.depth = g.depth;
+        out.normal.assign(pixelCount, Eigen::Vector3f::Zero());
+        out.id = g.faceId;
+    } else {
+        out.tone.clear();
+        out.highlights.clear();
+        out.depth.clear();
+        out.normal.clear();
+        out.id.clear();
+    }
     const Eigen::Vector3f lineColor = look.lineStyle.color;
     const Eigen::Vector3d eye = camera.eye;
 
@@ -379,11 +388,14 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                 }
                 if (!look.highlights.empty()) {
                     const HighlightSample h = highlightAt(look, g, faces, x, y, n, eye.cast<float>());
-                    out.highlights[i] = h.coverage;
+                    if (dataPasses)
+                        out.highlights[i] = h.coverage;
                     color = color * (1.f - h.coverage) + h.color * h.coverage;
                 }
-                out.tone[i] = intensity;
-                out.normal[i] = n;
+                if (dataPasses) {
+                    out.tone[i] = intensity;
+                    out.normal[i] = n;
+                }
             }
             const float line = out.lines[i];
             color = color * (1.f - line) + lineColor * line;

@@ -227,11 +227,12 @@ struct JobFrameState {
     }
 
     /// The evaluated frame f's passes; shown is what evaluate() returned.
+    /// dataPasses false: the beauty alone is wanted (algo::RenderLook::dataPasses).
     void render(const ProjectData& shown, const RenderJob& job, const ResolvedRenderJob& resolved, int f,
-        algo::RenderPasses& passes)
+        algo::RenderPasses& passes, bool dataPasses = true)
     {
         renderShape(shown, resolved.look, shape.positions, f, camera, job.size.width(), job.size.height(), job.stereo,
-            cache, passes, shape.generation, &offsets, shadingNormals(resolved));
+            cache, passes, shape.generation, &offsets, shadingNormals(resolved), dataPasses);
     }
 
     /// The limit normals of the subdivided surface; null for the control mesh.
@@ -294,7 +295,7 @@ public:
             const bool beautyAlone = !m_allPasses && (m_job.pass.isEmpty() || m_job.pass == QLatin1String("beauty"));
             if (beautyAlone)
                 std::swap(image, m_passes[m_nextPasses].beauty);
-            m_frame.render(shown, m_job, m_resolved, f, m_passes[m_nextPasses]);
+            m_frame.render(shown, m_job, m_resolved, f, m_passes[m_nextPasses], !beautyAlone);
             if (beautyAlone)
                 std::swap(image, m_passes[m_nextPasses].beauty);
             if (cancelled())

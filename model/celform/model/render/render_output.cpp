@@ -336,12 +336,13 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
 void renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
     algo::RenderPasses& passes, std::uint64_t shapeGeneration, const std::vector<float>* shadingOffsets,
-    const algo::Positions* vertexNormals)
+    const algo::Positions* vertexNormals, bool dataPasses)
 {
     if (stereo == algo::StereoOutput::Off) {
         // Mono: straight into passes, whose buffers a sequence keeps (issue 29).
         algo::RenderLook renderLook = renderLookFor(data, look, shadingOffsets, frame);
         renderLook.vertexNormals = vertexNormals;
+        renderLook.dataPasses = dataPasses;
         renderLook.highlights = renderHighlightsFor(data, look, shape, frame, &cache, shapeGeneration);
         const algo::RasterCamera raster = rasterCamera(camera, width, height);
         prepareDepthAdaptedRidges(*data.baseMesh, shape, raster, renderLook, cache, threadRidgeDepthPrepass());

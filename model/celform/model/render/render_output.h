@@ -65,11 +65,11 @@ algo::RenderPasses renderShape(const ProjectData& data, const Look& look, const 
     const algo::Positions* vertexNormals = nullptr);
 
 /// The same into passes, whose buffers are reused when they have the size already (a sequence's
-/// frames, issue 29).
+/// frames, issue 29). dataPasses false: the beauty, lines and strokes alone (algo::RenderLook).
 void renderShape(const ProjectData& data, const Look& look, const algo::Positions& shape, int frame,
     const Camera& camera, int width, int height, algo::StereoOutput stereo, algo::RenderCache& cache,
     algo::RenderPasses& passes, std::uint64_t shapeGeneration = 0, const std::vector<float>* shadingOffsets = nullptr,
-    const algo::Positions* vertexNormals = nullptr);
+    const algo::Positions* vertexNormals = nullptr, bool dataPasses = true);
 
 /// The pass names of `celform render --pass`.
 QStringList renderPassNames();
