@@ -77,6 +77,26 @@
         <source>has no vertex %1 (the base model has %2 vertices)</source>
         <translation>頂点 %1 がありません（ベースモデルの頂点数は %2 です）</translation>
     </message>
+    <message>
+        <source>“%1” works on the project file: save the document first (Document.save(path))</source>
+        <translation>“%1” はプロジェクトファイルに対して動作します。先にドキュメントを保存してください (Document.save(path))</translation>
+    </message>
+    <message>
+        <source>warning: %1: a key named “%2” exists; the new key is named “%3”</source>
+        <translation>警告: %1: “%2” という名前のキーがすでにあります。新しいキーの名前は “%3” です</translation>
+    </message>
+    <message>
+        <source>frame %1: %2</source>
+        <translation>フレーム %1: %2</translation>
+    </message>
+    <message>
+        <source>a render to an array takes one frame (frame=F), not --frames</source>
+        <translation>配列へのレンダリングは 1 フレーム (frame=F) のみです。--frames は使えません</translation>
+    </message>
+    <message>
+        <source>has no base model</source>
+        <translation>ベースモデルがありません</translation>
+    </message>
 </context>
 <context>
     <name>DrawingOutline</name>
@@ -173,6 +193,25 @@
     <message>
         <source>the frame range ends (%1) before it starts (%2)</source>
         <translation>フレーム範囲の終了（%1）が開始（%2）より前です</translation>
+    </message>
+</context>
+<context>
+    <name>app::Cli</name>
+    <message>
+        <source>celform: unknown sub-command “%1”</source>
+        <translation>celform: 不明なサブコマンド「%1」です</translation>
+    </message>
+    <message>
+        <source>missing arguments</source>
+        <translation>引数が足りません</translation>
+    </message>
+    <message>
+        <source>unexpected argument “%1”</source>
+        <translation>予期しない引数「%1」です</translation>
+    </message>
+    <message>
+        <source>celform %1 exited with code %2</source>
+        <translation>celform %1 が終了コード %2 で終了しました</translation>
     </message>
 </context>
 <context>
@@ -1799,6 +1838,14 @@
     <message>
         <source>--ridge-depth takes a number from 0 to 100, not “%1”</source>
         <translation>--ridge-depth には 0～100 の数値を指定してください（「%1」は無効です）</translation>
+    </message>
+    <message>
+        <source>--size must be between 16x16 and 8192x8192 for --auto, not %1x%2</source>
+        <translation>--auto の --size は 16x16 から 8192x8192 の間にしてください (%1x%2 は範囲外です)</translation>
+    </message>
+    <message>
+        <source>(unsaved document)</source>
+        <translation>(未保存のドキュメント)</translation>
     </message>
 </context>
 <context>
@@ -5599,6 +5646,25 @@ Recover it now?</source>
     <message>
         <source>could not be written: %1</source>
         <translation>書き込めませんでした: %1</translation>
+    </message>
+</context>
+<context>
+    <name>celform::model::PngEncoder</name>
+    <message>
+        <source>a PNG holds 1, 3 or 4 channels, not %1</source>
+        <translation>PNG のチャンネル数は 1、3、4 のいずれかです (%1 ではありません)</translation>
+    </message>
+    <message>
+        <source>the image is empty</source>
+        <translation>画像が空です</translation>
+    </message>
+    <message>
+        <source>the PNG encoder failed: out of memory</source>
+        <translation>PNG エンコーダーが失敗しました: メモリが足りません</translation>
+    </message>
+    <message>
+        <source>the PNG encoder failed: the compressed image does not fit</source>
+        <translation>PNG エンコーダーが失敗しました: 圧縮した画像が収まりません</translation>
     </message>
 </context>
 <context>

@@ -6,12 +6,12 @@
 #include "celform/algorithms/stroke_refine.h"
 
 #include <algorithm>
-#include <system_error>
-#include <future>
 #include <cmath>
 #include <cstring>
+#include <future>
 #include <iterator>
 #include <limits>
+#include <system_error>
 #include <utility>
 
 namespace celform::algo {

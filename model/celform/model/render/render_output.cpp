@@ -83,9 +83,9 @@ void writeEncoded(const EncodedFrame& image, const QString& path)
     // synced to the disk one by one (docs/farm.md).
     thread_local std::vector<unsigned char> encoded;
     const QString suffix = QFileInfo(path).suffix().toLower();
-    // 8-bit PNGs with libpng here (png_encoder.h): faster than Qt's writer, and without loading the
-    // OpenImageIO module and its library graph (about 275 libraries), which issue 29 measured as
-    // the larger part of a one-frame render's start.
+    // 8-bit PNGs by Celform's writer over libdeflate (png_encoder.h): faster than Qt's writer, and
+    // without loading the OpenImageIO module and its library graph (about 275 libraries), which
+    // issue 29 measured as the larger part of a one-frame render's start.
     if (const int channels = pngChannelsOf(image.names);
         suffix == QLatin1String("png") && !image.isFloat && channels > 0) {
         const QString problem = encodePng(image.bytes.data(), image.width, image.height, channels, encoded);
