@@ -261,6 +261,7 @@ public:
         , m_resolved(resolved)
         , m_allPasses(job.writesAllPasses())
         , m_floatFile(QFileInfo(job.output).suffix().toLower() == QLatin1String("exr"))
+        , m_beautyAlone(!m_allPasses && (job.pass.isEmpty() || job.pass == QLatin1String("beauty")))
         , m_analysisPicture(analysisPictureFromName(job.pass))
         , m_frame(data)
     { }
@@ -269,34 +270,30 @@ public:
     {
         const ProjectData& shown = m_frame.evaluate(m_data, m_job, m_resolved, f);
         const Camera& camera = m_frame.camera;
-        // Two frames' file data, used in turn: the writer may still be writing the last one.
-        EncodedFrame& encoded = m_encoded[m_nextEncoded];
-        m_nextEncoded ^= 1;
-        static const std::vector<std::string> rgba = {"R", "G", "B", "A"};
-        // The analysis passes (segments, curvature, depth error) come from the depth analysis of
-        // the centre eye's picture.
+        // The image the writer had two frames ago (its write has finished): this frame's goes
+        // there and to the writer, which quantises it (8-bit files) and writes it while this thread
+        // renders the next frame into the other image (issue 29: the quantisation was 11 ms of the
+        // render thread's frame).
+        algo::ImageRGBA& image = m_images[m_nextImage];
         if (m_analysisPicture) {
+            // The analysis passes (segments, curvature, depth error) come from the depth analysis
+            // of the centre eye's picture.
             m_analyser.analyse(shown, m_resolved.look, m_frame.shape.positions, m_frame.shape.generation, f, camera,
                 m_job.size.width(), m_job.size.height(), AnalysisSettings{}, m_analysed, &m_frame.offsets);
             if (cancelled())
                 return {};
-            const algo::ImageRGBA image = analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile);
-            encodeChannels(
-                target, image.width, image.height, rgba, image.pixels.data(), image.pixels.size(), true, encoded);
+            image = analysisImage(m_analysed.analysis, *m_analysisPicture, m_floatFile);
         } else if (m_job.writesVectorLines() || !m_job.strokesOutput.isEmpty()) {
             // Vector lines and the strokes' JSON are written here, on the render thread.
             if (!renderVectorLines(shown, f, camera, target, cancelled))
                 return {};
             return [] {};
         } else {
-            // One pass alone: the beauty renders into the image the writer had two frames ago
-            // (its write has finished) and goes to the writer as it is (below).
-            algo::ImageRGBA& image = m_images[m_nextImage];
-            const bool beautyAlone = !m_allPasses && (m_job.pass.isEmpty() || m_job.pass == QLatin1String("beauty"));
-            if (beautyAlone)
+            // The beauty alone renders straight into the image.
+            if (m_beautyAlone)
                 std::swap(image, m_passes[m_nextPasses].beauty);
-            m_frame.render(shown, m_job, m_resolved, f, m_passes[m_nextPasses], !beautyAlone);
-            if (beautyAlone)
+            m_frame.render(shown, m_job, m_resolved, f, m_passes[m_nextPasses], !m_beautyAlone);
+            if (m_beautyAlone)
                 std::swap(image, m_passes[m_nextPasses].beauty);
             if (cancelled())
                 return {};
@@ -311,19 +308,16 @@ public:
                     writeEncoded(m_written, target);
                 };
             }
-            // One pass: its image goes to the writer, which quantises it (8-bit files) and writes
-            // it while this thread renders the next frame into the other image (issue 29: the
-            // quantisation was 11 ms of the render thread's frame).
-            m_nextImage ^= 1;
-            if (!beautyAlone)
+            if (!m_beautyAlone)
                 passImage(m_passes[m_nextPasses], m_job.pass, m_floatFile, image);
-            return [this, &image, target] {
-                encodeChannels(
-                    target, image.width, image.height, rgba, image.pixels.data(), image.pixels.size(), true, m_written);
-                writeEncoded(m_written, target);
-            };
         }
-        return [&encoded, target] { writeEncoded(encoded, target); };
+        m_nextImage ^= 1;
+        return [this, &image, target] {
+            static const std::vector<std::string> rgba = {"R", "G", "B", "A"};
+            encodeChannels(
+                target, image.width, image.height, rgba, image.pixels.data(), image.pixels.size(), true, m_written);
+            writeEncoded(m_written, target);
+        };
     }
 
 private:
@@ -352,6 +346,7 @@ private:
     const ResolvedRenderJob& m_resolved;
     const bool m_allPasses;
     const bool m_floatFile;
+    const bool m_beautyAlone; ///< one pass, the beauty: rendered without the data passes
     const std::optional<AnalysisPicture> m_analysisPicture;
     JobFrameState m_frame;
     DepthAnalyser m_analyser;
@@ -364,8 +359,6 @@ private:
     /// writing the last one.
     std::array<algo::ImageRGBA, 2> m_images;
     int m_nextImage = 0;
-    std::array<EncodedFrame, 2> m_encoded; // the analysis passes' file data, used in turn
-    int m_nextEncoded = 0;
     EncodedFrame m_written; // the file data the writer makes (one write at a time)
 };
 
