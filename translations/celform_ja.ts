@@ -5010,6 +5010,10 @@ Recover it now?</source>
         <source>the encoder gave no bytes</source>
         <translation>エンコーダーがバイトを返しませんでした</translation>
     </message>
+    <message>
+        <source>the JPEG file has a damaged metadata segment (APP1, APP2 or APP13 without its name)</source>
+        <translation>JPEG ファイルのメタデータセグメントが壊れています (APP1、APP2、APP13 に名前がありません)</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ImportProcess</name>

@@ -199,6 +199,28 @@ bool jpegIsTruncated(const QByteArray& data)
     return s.marker == 0 && s.at + 4 > n;
 }
 
+/// Whether a JPEG has an APP1, APP2 or APP13 segment before its first scan whose data holds no
+/// zero byte. Those segments start with a zero-terminated name ("Exif", the XMP and ICC names,
+/// "Photoshop 3.0"), and OpenImageIO 2.4's JPEG reader compares that name with strcmp, reading
+/// past the end of a segment that has none (a heap over-read, found by fuzz_jpg). Such a segment
+/// is malformed: the file is refused here, before the reader runs.
+bool jpegHasUnterminatedAppName(const QByteArray& data)
+{
+    const auto* p = reinterpret_cast<const uchar*>(data.constData());
+    const qsizetype n = data.size();
+    if (n < 4 || p[0] != 0xff || p[1] != 0xd8)
+        return false; // not a JPEG: the decoder says so
+    for (JpegSegment s = nextJpegSegment(p, n, 2); s.marker != 0 && s.marker != 0xd9 && s.marker != 0xda;
+         s = nextJpegSegment(p, n, s.next)) {
+        if (s.marker != 0xe1 && s.marker != 0xe2 && s.marker != 0xed)
+            continue;
+        const qsizetype begin = s.at + 4, end = std::min(s.next, n); // the data, after the length
+        if (begin >= end || std::memchr(p + begin, 0, std::size_t(end - begin)) == nullptr)
+            return true;
+    }
+    return false;
+}
+
 /// Why a PSD's sections cannot be what their lengths say, or nothing. After the 26-byte header come
 /// the colour mode data, the image resources and the layer and mask information, each behind a
 /// big-endian 32-bit length. OpenImageIO's PSD reader allocates each section as stated before it
@@ -389,6 +411,9 @@ QString checkedFormat(const QByteArray& data, const QString& format, const QStri
         throw IoError(fileLabel, ImageIo::tr("the PNG file is truncated (it ends before its last chunk)"));
     if (f == QLatin1String("jpg") && jpegIsTruncated(data))
         throw IoError(fileLabel, ImageIo::tr("the JPEG file is truncated (it ends before its end-of-image marker)"));
+    if (f == QLatin1String("jpg") && jpegHasUnterminatedAppName(data))
+        throw IoError(fileLabel,
+            ImageIo::tr("the JPEG file has a damaged metadata segment (APP1, APP2 or APP13 without its name)"));
     if (f == QLatin1String("psd"))
         if (const QString problem = psdSectionProblem(data); !problem.isEmpty())
             throw IoError(fileLabel, problem);
