@@ -210,8 +210,23 @@ bool jpegHasUnterminatedAppName(const QByteArray& data)
     const qsizetype n = data.size();
     if (n < 4 || p[0] != 0xff || p[1] != 0xd8)
         return false; // not a JPEG: the decoder says so
-    for (JpegSegment s = nextJpegSegment(p, n, 2); s.marker != 0 && s.marker != 0xd9 && s.marker != 0xda;
-         s = nextJpegSegment(p, n, s.next)) {
+    qsizetype i = 2;
+    for (;;) {
+        JpegSegment s = nextJpegSegment(p, n, i);
+        if (s.marker == 0 && i + 4 <= n) {
+            // Not a marker here: libjpeg skips such bytes to the next 0xff that starts a marker
+            // and reads on, so the walk does too.
+            qsizetype j = i + 1;
+            while (j + 1 < n && !(p[j] == 0xff && p[j + 1] != 0x00 && p[j + 1] != 0xff))
+                ++j;
+            if (j + 1 >= n)
+                return false;
+            i = j;
+            continue;
+        }
+        if (s.marker == 0 || s.marker == 0xd9 || s.marker == 0xda)
+            return false;
+        i = s.next;
         if (s.marker != 0xe1 && s.marker != 0xe2 && s.marker != 0xed)
             continue;
         const qsizetype begin = s.at + 4, end = std::min(s.next, n); // the data, after the length
