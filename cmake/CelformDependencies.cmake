@@ -32,6 +32,9 @@ find_package(ZLIB REQUIRED)
 # libdeflate-dev, which ships a pkg-config file and no CMake package).
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
+# Rendered frames to EXR: OpenEXR's core library writes the container, libdeflate compresses the
+# chunks (io/exr_encoder.h; Debian: libopenexr-dev).
+find_package(OpenEXR 3 CONFIG REQUIRED)
 find_package(tinyobjloader REQUIRED)
 # glTF 2.0 animated bases (skins, morph targets) and export (Debian: libtinygltf-dev).
 find_package(TinyGLTF REQUIRED)

@@ -10,7 +10,7 @@ packages=(
   libqt6opengl6-dev qt6-svg-dev libgl-dev
   libvtk9-dev libcgal-dev libeigen3-dev
   libopenimageio-dev openimageio-tools
-  libassimp-dev libtinyobjloader-dev libtinygltf-dev zlib1g-dev libdeflate-dev
+  libassimp-dev libtinyobjloader-dev libtinygltf-dev zlib1g-dev libdeflate-dev libopenexr-dev
   libbenchmark-dev glslang-tools
   libopencv-imgproc-dev
   xvfb xauth libgl1-mesa-dri

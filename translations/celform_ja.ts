@@ -4640,6 +4640,25 @@ Recover it now?</source>
     </message>
 </context>
 <context>
+    <name>celform::model::ExrEncoder</name>
+    <message>
+        <source>an image of %1 x %2 pixels and %3 channels cannot be written</source>
+        <translation>%1 x %2 ピクセル、%3 チャンネルの画像は書き出せません</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>メモリが足りません</translation>
+    </message>
+    <message>
+        <source>channel %1 is not among those given</source>
+        <translation>チャンネル %1 は渡されたチャンネルにありません</translation>
+    </message>
+    <message>
+        <source>two channels have the same name</source>
+        <translation>2 つのチャンネルが同じ名前です</translation>
+    </message>
+</context>
+<context>
     <name>celform::model::FaceSetEdits</name>
     <message>
         <source>Paint Patch “%1”</source>
@@ -6017,6 +6036,10 @@ Recover it now?</source>
     <message>
         <source>is not a render pass; use one of %1</source>
         <translation>はレンダーパスではありません。次のいずれかを使用してください: %1</translation>
+    </message>
+    <message>
+        <source>could not be written: the render has no data passes</source>
+        <translation>書き出せませんでした: レンダーにデータパスがありません</translation>
     </message>
 </context>
 <context>

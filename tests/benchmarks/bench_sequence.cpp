@@ -178,13 +178,14 @@ void BM_WriteFrame(benchmark::State& state, bool allPasses)
     double encodeSeconds = 0, writeSeconds = 0;
     for (auto _ : state) {
         const auto start = std::chrono::steady_clock::now();
-        if (allPasses)
-            model::encodePassesExr(passes, path, encoded);
-        else
+        if (!allPasses)
             model::encodeChannels(
                 path, 1920, 1080, rgba, passes.beauty.pixels.data(), passes.beauty.pixels.size(), true, encoded);
         const auto encodedAt = std::chrono::steady_clock::now();
-        model::writeEncoded(encoded, path);
+        if (allPasses)
+            model::writePassesExr(passes, path);
+        else
+            model::writeEncoded(encoded, path);
         const auto end = std::chrono::steady_clock::now();
         encodeSeconds += std::chrono::duration<double>(encodedAt - start).count();
         writeSeconds += std::chrono::duration<double>(end - encodedAt).count();

@@ -198,10 +198,9 @@ QString encode(const QString& format, int width, int height, const std::vector<s
     for (std::size_t c = 0; c < channels.size(); ++c)
         if (channels[c] == "A")
             spec.alpha_channel = int(c);
-    // ZIP over single scanlines at zlib's level 1 (issue 29): zlib was 43 % of a 10-frame render of
-    // every pass to EXR (12 float channels, 95 MB a frame at 1920x1080) with ZIP's default level;
-    // level 1 writes 7 % more bytes in three quarters of the CPU time (10 dragon frames: 1.75x the
-    // PNG sequence before, 1.34x after). Single-scanline blocks are also Nuke's default.
+    // Rendered EXRs are written by exr_encoder.h (OpenEXRCore and libdeflate, issue 29); a float
+    // image that still comes here is compressed as those are, ZIP over single scanlines, at
+    // zlib's fastest level.
     if (isFloat)
         spec.attribute("compression", "zips:1");
     // The EXR and TIFF writers stamp the time of writing unless DateTime is set; an empty one

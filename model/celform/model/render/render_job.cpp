@@ -86,7 +86,8 @@ bool RenderJob::writesVectorLines() const
 qint64 RenderJob::bytesNeeded() const
 {
     // What the writer holds while the next frame renders: for an EXR of every pass, a second set
-    // of passes (48 bytes a pixel) and the file's 12 float channels (48) made from it; for one
+    // of passes (48 bytes a pixel) and the file made from it (at most its 12 float channels
+    // uncompressed, 48; about 4 for a render); for one
     // pass, the second of the two RGBA float images it takes in turn (16).
     const qint64 perPixel = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2)
         + (writesAllPasses() ? 96 : 16) + (analysisPictureFromName(pass) ? kAnalysisBytesPerPixel : 0);
@@ -298,15 +299,12 @@ public:
             if (cancelled())
                 return {};
             if (m_allPasses) {
-                // Every pass to EXR: the passes themselves go to the writer, which gathers their
+                // Every pass to EXR: the passes themselves go to the writer, which reads their
                 // channels and compresses them while this thread renders the next frame into the
                 // other set (issue 29: the gather was 19 ms of the render thread's frame).
                 const algo::RenderPasses& passes = m_passes[m_nextPasses];
                 m_nextPasses ^= 1;
-                return [this, &passes, target] {
-                    encodePassesExr(passes, target, m_written);
-                    writeEncoded(m_written, target);
-                };
+                return [&passes, target] { writePassesExr(passes, target); };
             }
             if (!m_beautyAlone)
                 passImage(m_passes[m_nextPasses], m_job.pass, m_floatFile, image);

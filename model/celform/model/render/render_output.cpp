@@ -3,6 +3,7 @@
 
 #include "celform/model/analysis/depth_analysis_output.h"
 #include "celform/model/data/io_error.h"
+#include "celform/model/io/exr_encoder.h"
 #include "celform/model/io/image_io.h"
 #include "celform/model/io/output_file.h"
 #include "celform/model/io/png_encoder.h"
@@ -75,13 +76,31 @@ int pngChannelsOf(const std::vector<std::string>& names)
 
 } // namespace
 
+namespace {
+
+/// The channel list of an EXR being written, per thread (its names' storage kept between frames).
+std::vector<ExrChannelSource>& exrSources()
+{
+    thread_local std::vector<ExrChannelSource> sources;
+    return sources;
+}
+
+/// The thread's encoded file, reused frame after frame (issue 29).
+std::vector<unsigned char>& encodedFile()
+{
+    thread_local std::vector<unsigned char> encoded;
+    return encoded;
+}
+
+} // namespace
+
 void writeEncoded(const EncodedFrame& image, const QString& path)
 {
     // Encoded in memory, then written whole or not at all: a full disk is an IoError naming the
     // file and the reason, and leaves neither a short file nor a temporary one (issue 27). Kept
     // per thread: a sequence's writer reuses them frame after frame (issue 29). Frames are not
     // synced to the disk one by one (docs/farm.md).
-    thread_local std::vector<unsigned char> encoded;
+    std::vector<unsigned char>& encoded = encodedFile();
     const QString suffix = QFileInfo(path).suffix().toLower();
     // 8-bit PNGs by Celform's writer over libdeflate (png_encoder.h): faster than Qt's writer, and
     // without loading the OpenImageIO module and its library graph (about 275 libraries), which
@@ -94,10 +113,18 @@ void writeEncoded(const EncodedFrame& image, const QString& path)
         writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
         return;
     }
-    const RasterCodec& codec = rasterCodec(path);
-    const QString error = image.isFloat
-        ? codec.encode(suffix, image.width, image.height, image.names, true, image.floats.data(), &encoded)
-        : codec.encode(suffix, image.width, image.height, image.names, false, image.bytes.data(), &encoded);
+    QString error;
+    if (image.isFloat) {
+        // EXR by exr_encoder.h (OpenEXRCore and libdeflate), also without the OpenImageIO module.
+        std::vector<ExrChannelSource>& sources = exrSources();
+        sources.resize(image.names.size());
+        for (std::size_t c = 0; c < sources.size(); ++c)
+            sources[c] = {image.names[c], image.floats.data() + c, image.names.size(), ExrChannelSource::Kind::Float};
+        error = encodeExr(image.width, image.height, sources, encoded);
+    } else {
+        error = rasterCodec(path).encode(
+            suffix, image.width, image.height, image.names, false, image.bytes.data(), &encoded);
+    }
     if (!error.isEmpty())
         throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
     writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
@@ -488,38 +515,33 @@ QString incompleteImageProblem(const QString& path)
     return {};
 }
 
-void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedFrame& out)
+void writePassesExr(const algo::RenderPasses& passes, const QString& path)
 {
     if (QFileInfo(path).suffix().toLower() != QLatin1String("exr"))
         throw IoError(path, RenderOutput::tr("all passes together need an .exr file"));
     const int w = passes.beauty.width, h = passes.beauty.height;
-    out.width = w;
-    out.height = h;
-    out.names = {"R", "G", "B", "A", "lines.Y", "tone.Y", "highlights.Y", "depth.Z", "normal.X", "normal.Y", "normal.Z",
-        "id.ID"};
-    out.isFloat = true;
-    const std::size_t channels = out.names.size();
-    out.floats.resize(std::size_t(w) * std::size_t(h) * channels);
-    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {
-        float* p = out.floats.data() + i * channels;
-        for (int c = 0; c < 4; ++c)
-            p[c] = passes.beauty.pixels[i * 4 + std::size_t(c)];
-        p[4] = passes.lines[i];
-        p[5] = passes.tone[i];
-        p[6] = passes.highlights[i];
-        p[7] = std::isfinite(passes.depth[i]) ? passes.depth[i] : 0.f;
-        p[8] = passes.normal[i].x();
-        p[9] = passes.normal[i].y();
-        p[10] = passes.normal[i].z();
-        p[11] = float(passes.id[i]);
-    }
-}
-
-void writePassesExr(const algo::RenderPasses& passes, const QString& path)
-{
-    EncodedFrame encoded;
-    encodePassesExr(passes, path, encoded);
-    writeEncoded(encoded, path);
+    const std::size_t pixels = std::size_t(w) * std::size_t(h);
+    if (passes.beauty.pixels.size() != pixels * 4 || passes.lines.size() != pixels || passes.tone.size() != pixels
+        || passes.highlights.size() != pixels || passes.depth.size() != pixels || passes.normal.size() != pixels
+        || passes.id.size() != pixels)
+        throw IoError(path, RenderOutput::tr("could not be written: the render has no data passes"));
+    // The channels are read where the render left them, scanline by scanline (exr_encoder.h).
+    static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "normals are packed");
+    using Kind = ExrChannelSource::Kind;
+    const float* beauty = passes.beauty.pixels.data();
+    const float* normal = passes.normal.data()->data();
+    std::vector<ExrChannelSource>& sources = exrSources();
+    sources = {{"R", beauty, 4, Kind::Float}, {"G", beauty + 1, 4, Kind::Float}, {"B", beauty + 2, 4, Kind::Float},
+        {"A", beauty + 3, 4, Kind::Float}, {"lines.Y", passes.lines.data(), 1, Kind::Float},
+        {"tone.Y", passes.tone.data(), 1, Kind::Float}, {"highlights.Y", passes.highlights.data(), 1, Kind::Float},
+        {"depth.Z", passes.depth.data(), 1, Kind::FiniteFloat}, {"normal.X", normal, 3, Kind::Float},
+        {"normal.Y", normal + 1, 3, Kind::Float}, {"normal.Z", normal + 2, 3, Kind::Float},
+        {"id.ID", passes.id.data(), 1, Kind::Int32}};
+    std::vector<unsigned char>& encoded = encodedFile();
+    const QString error = encodeExr(w, h, sources, encoded);
+    if (!error.isEmpty())
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
+    writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
 }
 
 } // namespace celform::model

@@ -99,9 +99,6 @@ struct EncodedFrame {
 void encodeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
     const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& out);
 
-/// Every pass as the channels of writePassesExr, into out. Throws IoError unless path is an .exr.
-void encodePassesExr(const algo::RenderPasses& passes, const QString& path, EncodedFrame& out);
-
 /// Writes an encoded image to path atomically (a temporary file beside it, closed, then renamed;
 /// not synced to the disk). Throws IoError naming path.
 void writeEncoded(const EncodedFrame& image, const QString& path);
@@ -122,7 +119,8 @@ void writeImageChannels(const QString& path, int width, int height, const std::v
 QString incompleteImageProblem(const QString& path);
 
 /// Writes every pass into one EXR with named channels: R G B A (beauty), lines.Y, tone.Y,
-/// highlights.Y, depth.Z, normal.X normal.Y normal.Z, id.ID. Throws IoError.
+/// highlights.Y, depth.Z, normal.X normal.Y normal.Z, id.ID, read straight from passes (no copy of
+/// them is made). Throws IoError.
 void writePassesExr(const algo::RenderPasses& passes, const QString& path);
 
 } // namespace celform::model
