@@ -97,6 +97,14 @@ struct HighlightGeometry {
     Positions normals, du, dv;
 };
 
+/// What every highlight track of a shape starts from: its vertex normals and, for a mesh with UVs,
+/// their tangent frames; kept while the shape keeps its generation (0: none kept).
+struct HighlightShapeFrames {
+    std::uint64_t generation = 0;
+    Positions normals, du, dv;
+    bool haveUvFrames = false;
+};
+
 /// Apparent ridges between renderFrame calls: the curvature of the last shape (recomputed only when
 /// the positions differ, compared byte for byte) and the snakes of the last line camera and
 /// threshold (a stereo pair's two eyes share the centre eye's snakes, paper 3, section 4.2).
@@ -128,6 +136,7 @@ struct RenderScratch {
 /// edgeTopology()).
 struct RenderCache {
     std::vector<HighlightGeometry> highlights; ///< most recently used last, a few entries
+    HighlightShapeFrames highlightFrames;
     RidgeRenderCache ridges;
     RenderScratch scratch;
 };

@@ -216,6 +216,9 @@ struct JobFrameState {
                 algo::limitNormals(*surface->stencil, shape.positions, normals);
             } else {
                 shape.positions = control;
+                // Issue 29: the normals renderFrame would derive frame after frame, once per
+                // shape (a turntable of a still model: about 12 ms of each dragon frame).
+                algo::vertexNormals(shape.positions, data.baseMesh->faces, normals);
             }
             shape.touch();
         }
@@ -233,21 +236,19 @@ struct JobFrameState {
         algo::RenderPasses& passes, bool dataPasses = true)
     {
         renderShape(shown, resolved.look, shape.positions, f, camera, job.size.width(), job.size.height(), job.stereo,
-            cache, passes, shape.generation, &offsets, shadingNormals(resolved), dataPasses);
+            cache, passes, shape.generation, &offsets, shadingNormals(), dataPasses);
     }
 
-    /// The limit normals of the subdivided surface; null for the control mesh.
-    [[nodiscard]] const algo::Positions* shadingNormals(const ResolvedRenderJob& resolved) const
-    {
-        return resolved.surface ? &normals : nullptr;
-    }
+    /// The shape's vertex normals: the limit normals of the subdivided surface, or the control
+    /// mesh's area-weighted ones (algo::vertexNormals, as renderFrame would make them).
+    [[nodiscard]] const algo::Positions* shadingNormals() const { return &normals; }
 
     FrameEvaluator evaluator;
     algo::RenderCache cache;
     Camera camera; // the frame's
     algo::Positions control; // the frame's control shape (before subdivision)
     algo::Shape shape; // the shape rendered: control, or its subdivided surface
-    algo::Positions normals; // the subdivided surface's limit normals (unused for the control mesh)
+    algo::Positions normals; // the shape's vertex normals (shadingNormals)
     std::vector<float> offsets; // in effect at the camera's view and the frame (shading_layers.h)
     std::vector<float> subdividedOffsets;
 };
@@ -326,7 +327,7 @@ private:
     {
         const std::vector<algo::RenderPasses> eyes = renderEyes(shown, m_resolved.look, m_frame.shape.positions, f,
             camera, m_job.size.width(), m_job.size.height(), m_job.stereo, m_frame.cache, m_frame.shape.generation,
-            &m_frame.offsets, false, m_frame.shadingNormals(m_resolved));
+            &m_frame.offsets, false, m_frame.shadingNormals());
         if (cancelled())
             return false;
         const VectorLines lines = vectorLinesOf(eyes, m_job.stereo, m_resolved.look, m_job.svgTones, f);

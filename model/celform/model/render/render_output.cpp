@@ -221,15 +221,25 @@ std::vector<algo::RenderHighlight> renderHighlightsFor(const ProjectData& data, 
     if (look.highlights.empty() || !data.baseMesh)
         return out;
     const algo::TriMesh& mesh = *data.baseMesh;
-    const algo::Positions normals = algo::vertexNormals(shape, mesh.faces);
-    // UV frames are shared by every track; a copy of the mesh carries the deformed positions.
-    algo::Positions uvDu, uvDv;
-    bool haveUvFrames = false;
-    if (mesh.hasUvs()) {
-        algo::TriMesh deformed = mesh;
-        deformed.vertices = shape;
-        haveUvFrames = algo::vertexTangentFramesFromUvs(deformed, normals, uvDu, uvDv);
+    // The normals and UV frames are shared by every track, and by every frame while the shape
+    // keeps its generation (issue 29: a sequence of a still shape derived them frame after frame).
+    algo::HighlightShapeFrames once;
+    algo::HighlightShapeFrames& frames = cache ? cache->highlightFrames : once;
+    if (!cache || frames.generation != shapeGeneration) {
+        algo::vertexNormals(shape, mesh.faces, frames.normals);
+        frames.haveUvFrames = false;
+        if (mesh.hasUvs()) {
+            // A copy of the mesh carries the deformed positions.
+            algo::TriMesh deformed = mesh;
+            deformed.vertices = shape;
+            frames.haveUvFrames = algo::vertexTangentFramesFromUvs(deformed, frames.normals, frames.du, frames.dv);
+        }
+        frames.generation = cache ? shapeGeneration : 0;
     }
+    const algo::Positions& normals = frames.normals;
+    const algo::Positions& uvDu = frames.du;
+    const algo::Positions& uvDv = frames.dv;
+    const bool haveUvFrames = frames.haveUvFrames;
     // The shape is known by its generation (never reused in a process): no pass over its positions.
     const std::uint64_t shapeKey = hashBytes(&shapeGeneration, sizeof(shapeGeneration));
     auto shapeOf = [&](const QString& name) -> std::optional<algo::HighlightShape> {
