@@ -6,10 +6,17 @@
 namespace celform::app {
 
 /// For `render`, `analyze`, `export`, `optimize-light`, `fit`, `offsets` and `curvature`: when the
-/// kernel offers transparent huge pages (not "never") and GLIBC_TUNABLES does not set
-/// glibc.malloc.hugetlb yet, starts this program again (execv of /proc/self/exe, the same
-/// arguments) with glibc.malloc.hugetlb=1 added; returns only when it does not (another command,
-/// CELFORM_LARGE_PAGES=0, a sanitizer build, or a failed exec). Call first thing in main().
+/// kernel offers transparent huge pages (not "never"), GLIBC_TUNABLES does not set
+/// glibc.malloc.hugetlb yet and the host does not take freed memory back (freedMemoryGoesToHost;
+/// CELFORM_LARGE_PAGES=1 restarts all the same), starts this program again (execv of
+/// /proc/self/exe, the same arguments) with glibc.malloc.hugetlb=1 added; returns only when it does
+/// not (another command, CELFORM_LARGE_PAGES=0, a sanitizer build, or a failed exec). Call first
+/// thing in main().
 void restartWithLargePagesIfUseful(int argc, char** argv);
+
+/// Whether this system is a virtual machine whose memory balloon reports free pages to the host
+/// (a virtio balloon with free page reporting under virtioDevices, /sys/bus/virtio/devices): there
+/// huge pages cost more than they save (large_pages.cpp has the figures).
+bool freedMemoryGoesToHost(const char* virtioDevices);
 
 } // namespace celform::app
