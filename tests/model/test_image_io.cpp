@@ -288,7 +288,7 @@ void TestImageIo::damaged_data()
         std::vector<unsigned char> encoded;
         const QString problem
             = celform::model::rasterCodec(QStringLiteral("test"))
-                  .encode(QString::fromLatin1(format), 64, 48, {"R", "G", "B"}, false, pixels.data(), &encoded);
+                  .encode(QString::fromLatin1(format), 64, 48, {"R", "G", "B"}, pixels.data(), &encoded);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
         QTest::newRow(qPrintable(QStringLiteral("truncated %1").arg(QLatin1String(format))))
             << QStringLiteral("half.%1").arg(QLatin1String(format))

@@ -58,12 +58,12 @@ struct RasterCodec {
     /// straight-alpha RGBA, float pixels sRGB-encoded. A null image on failure, with the problem
     /// in *problem; fileLabel names the file in the messages.
     QImage (*decode)(const QByteArray& data, const QString& format, const QString& fileLabel, QString* problem);
-    /// Encodes width by height pixels of the named channels, interleaved, as a file of the format
-    /// (lower-case suffix: png, jpg, tif, exr) into *encoded, in memory: floats when isFloat (EXR,
-    /// zip-compressed), else bytes. The caller writes the bytes (output_file.h), so no encoder ever
-    /// meets a full disk (libjpeg ended the process on one). Returns the problem, empty on success.
+    /// Encodes width by height 8-bit pixels of the named channels, interleaved, as a file of the
+    /// format (lower-case suffix: png, jpg, tif) into *encoded, in memory. The caller writes the
+    /// bytes (output_file.h), so no encoder ever meets a full disk (libjpeg ended the process on
+    /// one). EXR files are made by exr_encoder.h. Returns the problem, empty on success.
     QString (*encode)(const QString& format, int width, int height, const std::vector<std::string>& channels,
-        bool isFloat, const void* pixels, std::vector<unsigned char>* encoded);
+        const unsigned char* pixels, std::vector<unsigned char>* encoded);
 };
 
 /// The entry the module exports: returns its functions.

@@ -1,6 +1,6 @@
 // The OpenImageIO module (libcelform_oiio.so, see raster_codec.h): raster bytes decoded from
 // memory (a temporary file for readers without I/O proxy support) to 8-bit RGBA for display, and
-// render passes written as 8-bit or float files. Loaded by rasterCodec() on first use.
+// render passes written as 8-bit TIFF and JPEG files. Loaded by rasterCodec() on first use.
 #include "celform/model/io/raster_codec.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -189,21 +189,16 @@ QImage decode(const QByteArray& data, const QString& format, const QString& file
     return {};
 }
 
-QString encode(const QString& format, int width, int height, const std::vector<std::string>& channels, bool isFloat,
-    const void* pixels, std::vector<unsigned char>* encoded)
+QString encode(const QString& format, int width, int height, const std::vector<std::string>& channels,
+    const unsigned char* pixels, std::vector<unsigned char>* encoded)
 {
-    OIIO::ImageSpec spec(width, height, int(channels.size()), isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    OIIO::ImageSpec spec(width, height, int(channels.size()), OIIO::TypeDesc::UINT8);
     spec.channelnames = channels;
     spec.alpha_channel = -1;
     for (std::size_t c = 0; c < channels.size(); ++c)
         if (channels[c] == "A")
             spec.alpha_channel = int(c);
-    // Rendered EXRs are written by exr_encoder.h (OpenEXRCore and libdeflate, issue 29); a float
-    // image that still comes here is compressed as those are, ZIP over single scanlines, at
-    // zlib's fastest level.
-    if (isFloat)
-        spec.attribute("compression", "zips:1");
-    // The EXR and TIFF writers stamp the time of writing unless DateTime is set; an empty one
+    // The TIFF writer stamps the time of writing unless DateTime is set; an empty one
     // leaves the field out. A frame then has the same bytes whenever and wherever it is rendered
     // (farm nodes are compared by checksum).
     spec.attribute("DateTime", "");
@@ -218,7 +213,7 @@ QString encode(const QString& format, int width, int height, const std::vector<s
         return ImageIo::tr("images of type \"%1\" cannot be written").arg(format);
     if (!out->set_ioproxy(&proxy) || !out->open(name, spec))
         return shortError(out->geterror());
-    bool ok = out->write_image(isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, pixels);
+    bool ok = out->write_image(OIIO::TypeDesc::UINT8, pixels);
     ok = out->close() && ok;
     if (!ok)
         return shortError(out->geterror());

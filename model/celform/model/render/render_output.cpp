@@ -122,8 +122,7 @@ void writeEncoded(const EncodedFrame& image, const QString& path)
             sources[c] = {image.names[c], image.floats.data() + c, image.names.size(), ExrChannelSource::Kind::Float};
         error = encodeExr(image.width, image.height, sources, encoded);
     } else {
-        error = rasterCodec(path).encode(
-            suffix, image.width, image.height, image.names, false, image.bytes.data(), &encoded);
+        error = rasterCodec(path).encode(suffix, image.width, image.height, image.names, image.bytes.data(), &encoded);
     }
     if (!error.isEmpty())
         throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
