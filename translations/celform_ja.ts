@@ -6041,6 +6041,10 @@ Recover it now?</source>
         <source>could not be written: the render has no data passes</source>
         <translation>書き出せませんでした: レンダーにデータパスがありません</translation>
     </message>
+    <message>
+        <source>is an EXR, whose floats are not quantised</source>
+        <translation>は EXR です。その浮動小数点値は量子化されません</translation>
+    </message>
 </context>
 <context>
     <name>celform::model::ShadingEdits</name>

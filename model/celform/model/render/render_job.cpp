@@ -87,8 +87,8 @@ qint64 RenderJob::bytesNeeded() const
 {
     // What the writer holds while the next frame renders: for an EXR of every pass, a second set
     // of passes (48 bytes a pixel) and the file made from it (at most its 12 float channels
-    // uncompressed, 48; about 4 for a render); for one
-    // pass, the second of the two RGBA float images it takes in turn (16).
+    // uncompressed, 48; about 4 for a render); for one pass, the second of the two RGBA float
+    // images it takes in turn (16).
     const qint64 perPixel = kRenderBytesPerPixel * (stereo == algo::StereoOutput::Off ? 1 : 2)
         + (writesAllPasses() ? 96 : 16) + (analysisPictureFromName(pass) ? kAnalysisBytesPerPixel : 0);
     return qint64(size.width()) * size.height() * perPixel;
@@ -313,9 +313,8 @@ public:
         m_nextImage ^= 1;
         return [this, &image, target] {
             static const std::vector<std::string> rgba = {"R", "G", "B", "A"};
-            encodeChannels(
+            writeChannelsFile(
                 target, image.width, image.height, rgba, image.pixels.data(), image.pixels.size(), true, m_written);
-            writeEncoded(m_written, target);
         };
     }
 
@@ -358,7 +357,7 @@ private:
     /// writing the last one.
     std::array<algo::ImageRGBA, 2> m_images;
     int m_nextImage = 0;
-    EncodedFrame m_written; // the file data the writer makes (one write at a time)
+    EncodedFrame m_written; // an 8-bit file's data, made by the writer (one write at a time)
 };
 
 } // namespace

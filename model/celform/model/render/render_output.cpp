@@ -31,51 +31,6 @@ struct RenderOutput {
 
 } // namespace
 
-/// Checks the suffix and makes the file's data: 8-bit formats get the values quantised, sRGB-encoded
-/// in the colour channels when encodeSrgb; EXR takes the floats as they are. out's buffers are
-/// reused.
-void encodeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
-    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& out)
-{
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    const bool isFloat = suffix == QLatin1String("exr");
-    const QStringList known = {QStringLiteral("png"), QStringLiteral("tif"), QStringLiteral("tiff"),
-        QStringLiteral("jpg"), QStringLiteral("jpeg"), QStringLiteral("exr")};
-    if (!known.contains(suffix))
-        throw IoError(path, RenderOutput::tr("has an unknown image type; use .png, .tif, .jpg or .exr"));
-    out.width = width;
-    out.height = height;
-    out.names = names;
-    out.isFloat = isFloat;
-    const int channels = int(names.size());
-    if (isFloat) {
-        out.floats.assign(data, data + count);
-        return;
-    }
-    out.bytes.resize(count);
-    // The colour channels come first (at most three), alpha or data after them.
-    int colour = std::min(channels, 3);
-    for (int c = 0; c < colour; ++c)
-        if (names[std::size_t(c)] == "A")
-            colour = c;
-    algo::quantise8(data, out.bytes.data(), count, channels, colour, encodeSrgb);
-}
-
-namespace {
-
-/// How many channels the PNG encoder takes for these names (R G B A, R G B or one channel), 0 when
-/// the PNG goes through OpenImageIO instead.
-int pngChannelsOf(const std::vector<std::string>& names)
-{
-    if (names == std::vector<std::string>{"R", "G", "B", "A"})
-        return 4;
-    if (names == std::vector<std::string>{"R", "G", "B"})
-        return 3;
-    return names.size() == 1 ? 1 : 0;
-}
-
-} // namespace
-
 namespace {
 
 /// The channel list of an EXR being written, per thread (its names' storage kept between frames).
@@ -92,7 +47,58 @@ std::vector<unsigned char>& encodedFile()
     return encoded;
 }
 
+/// path's suffix in lower case when it is an image type Celform writes; else IoError naming it.
+QString imageSuffix(const QString& path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    const QStringList known = {QStringLiteral("png"), QStringLiteral("tif"), QStringLiteral("tiff"),
+        QStringLiteral("jpg"), QStringLiteral("jpeg"), QStringLiteral("exr")};
+    if (!known.contains(suffix))
+        throw IoError(path, RenderOutput::tr("has an unknown image type; use .png, .tif, .jpg or .exr"));
+    return suffix;
+}
+
+/// An EXR of sources encoded in memory by exr_encoder.h (OpenEXRCore and libdeflate, without the
+/// OpenImageIO module), then written whole or not at all.
+void writeExr(const QString& path, int width, int height, const std::vector<ExrChannelSource>& sources)
+{
+    std::vector<unsigned char>& encoded = encodedFile();
+    const QString error = encodeExr(width, height, sources, encoded);
+    if (!error.isEmpty())
+        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
+    writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
+}
+
+/// How many channels the PNG encoder takes for these names (R G B A, R G B or one channel), 0 when
+/// the PNG goes through OpenImageIO instead.
+int pngChannelsOf(const std::vector<std::string>& names)
+{
+    if (names == std::vector<std::string>{"R", "G", "B", "A"})
+        return 4;
+    if (names == std::vector<std::string>{"R", "G", "B"})
+        return 3;
+    return names.size() == 1 ? 1 : 0;
+}
+
 } // namespace
+
+void encodeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& out)
+{
+    if (imageSuffix(path) == QLatin1String("exr"))
+        throw IoError(path, RenderOutput::tr("is an EXR, whose floats are not quantised"));
+    out.width = width;
+    out.height = height;
+    out.names = names;
+    const int channels = int(names.size());
+    out.bytes.resize(count);
+    // The colour channels come first (at most three), alpha or data after them.
+    int colour = std::min(channels, 3);
+    for (int c = 0; c < colour; ++c)
+        if (names[std::size_t(c)] == "A")
+            colour = c;
+    algo::quantise8(data, out.bytes.data(), count, channels, colour, encodeSrgb);
+}
 
 void writeEncoded(const EncodedFrame& image, const QString& path)
 {
@@ -105,28 +111,29 @@ void writeEncoded(const EncodedFrame& image, const QString& path)
     // 8-bit PNGs by Celform's writer over libdeflate (png_encoder.h): faster than Qt's writer, and
     // without loading the OpenImageIO module and its library graph (about 275 libraries), which
     // issue 29 measured as the larger part of a one-frame render's start.
-    if (const int channels = pngChannelsOf(image.names);
-        suffix == QLatin1String("png") && !image.isFloat && channels > 0) {
-        const QString problem = encodePng(image.bytes.data(), image.width, image.height, channels, encoded);
-        if (!problem.isEmpty())
-            throw IoError(path, RenderOutput::tr("could not be written: %1").arg(problem));
-        writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
-        return;
-    }
-    QString error;
-    if (image.isFloat) {
-        // EXR by exr_encoder.h (OpenEXRCore and libdeflate), also without the OpenImageIO module.
-        std::vector<ExrChannelSource>& sources = exrSources();
-        sources.resize(image.names.size());
-        for (std::size_t c = 0; c < sources.size(); ++c)
-            sources[c] = {image.names[c], image.floats.data() + c, image.names.size(), ExrChannelSource::Kind::Float};
-        error = encodeExr(image.width, image.height, sources, encoded);
-    } else {
-        error = rasterCodec(path).encode(suffix, image.width, image.height, image.names, image.bytes.data(), &encoded);
-    }
+    const int pngChannels = pngChannelsOf(image.names);
+    const QString error = suffix == QLatin1String("png") && pngChannels > 0
+        ? encodePng(image.bytes.data(), image.width, image.height, pngChannels, encoded)
+        : rasterCodec(path).encode(suffix, image.width, image.height, image.names, image.bytes.data(), &encoded);
     if (!error.isEmpty())
         throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
     writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
+}
+
+void writeChannelsFile(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& scratch)
+{
+    if (imageSuffix(path) != QLatin1String("exr")) {
+        encodeChannels(path, width, height, names, data, count, encodeSrgb, scratch);
+        writeEncoded(scratch, path);
+        return;
+    }
+    // The floats as they are, read where they lie (no copy of the image is made).
+    std::vector<ExrChannelSource>& sources = exrSources();
+    sources.resize(names.size());
+    for (std::size_t c = 0; c < sources.size(); ++c)
+        sources[c] = {names[c], data + c, names.size(), ExrChannelSource::Kind::Float};
+    writeExr(path, width, height, sources);
 }
 
 namespace {
@@ -134,9 +141,8 @@ namespace {
 void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
     const std::vector<float>& data, bool encodeSrgb)
 {
-    EncodedFrame encoded;
-    encodeChannels(path, width, height, names, data.data(), data.size(), encodeSrgb, encoded);
-    writeEncoded(encoded, path);
+    EncodedFrame scratch;
+    writeChannelsFile(path, width, height, names, data.data(), data.size(), encodeSrgb, scratch);
 }
 
 } // namespace
@@ -546,11 +552,7 @@ void writePassesExr(const algo::RenderPasses& passes, const QString& path)
         {"depth.Z", passes.depth.data(), 1, Kind::FiniteFloat}, {"normal.X", normal, 3, Kind::Float},
         {"normal.Y", normal + 1, 3, Kind::Float}, {"normal.Z", normal + 2, 3, Kind::Float},
         {"id.ID", passes.id.data(), 1, Kind::Int32}};
-    std::vector<unsigned char>& encoded = encodedFile();
-    const QString error = encodeExr(w, h, sources, encoded);
-    if (!error.isEmpty())
-        throw IoError(path, RenderOutput::tr("could not be written: %1").arg(error));
-    writeWholeFile(path, encoded.data(), qint64(encoded.size()), Durability::Renamed);
+    writeExr(path, w, h, sources);
 }
 
 } // namespace celform::model

@@ -81,27 +81,31 @@ algo::ImageRGBA passImage(const algo::RenderPasses& passes, const QString& pass,
 /// The same into image, whose storage is reused.
 void passImage(const algo::RenderPasses& passes, const QString& pass, bool forFloatFile, algo::ImageRGBA& image);
 
-/// An image made ready for its file (encodeChannels): 8-bit values or floats with their channel
-/// names, apart from the buffers it came from, so that another thread can write it while the next
+/// An 8-bit image made ready for its file (encodeChannels): the values with their channel names,
+/// apart from the buffers they came from, so that another thread can write it while the next
 /// frame renders. Its buffers are reused from frame to frame.
 struct EncodedFrame {
     int width = 0;
     int height = 0;
     std::vector<std::string> names;
-    bool isFloat = false; ///< an EXR: floats; else bytes
     std::vector<unsigned char> bytes;
-    std::vector<float> floats;
 };
 
-/// Checks path's suffix (png, tif, tiff, jpg, jpeg, exr; else IoError naming it) and makes count
-/// interleaved floats of the named channels into out: quantised to 8 bits (sRGB-encoded colour
-/// channels when encodeSrgb), or kept as floats for EXR.
+/// Checks path's suffix (png, tif, tiff, jpg, jpeg; else IoError naming it, an .exr too) and
+/// quantises count interleaved floats of the named channels to 8 bits into out (sRGB-encoded
+/// colour channels when encodeSrgb).
 void encodeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
     const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& out);
 
 /// Writes an encoded image to path atomically (a temporary file beside it, closed, then renamed;
 /// not synced to the disk). Throws IoError naming path.
 void writeEncoded(const EncodedFrame& image, const QString& path);
+
+/// Writes count interleaved floats of the named channels to path by its suffix, atomically: an EXR
+/// straight from data, an 8-bit file through encodeChannels into scratch (whose buffers a
+/// sequence reuses) and writeEncoded. Throws IoError naming path.
+void writeChannelsFile(const QString& path, int width, int height, const std::vector<std::string>& names,
+    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& scratch);
 
 /// Writes an image by suffix (png, tif, tiff, jpg, jpeg, exr), atomically (temporary file beside
 /// it, then a rename). Throws IoError naming the file.
