@@ -1,4 +1,5 @@
 #include "celform/model/io/png_encoder.h"
+#include "celform/model/io/run_deflate.h"
 
 #include <QCoreApplication>
 
@@ -53,12 +54,52 @@ struct CompressorDeleter {
     void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
 };
 
-/// Per thread, the compressor (about 1 MB of tables at this level) and the filtered rows, kept
-/// from frame to frame (issue 29: one allocation per sequence).
+/// Per thread, the compressor (about 1 MB of tables at this level), the filtered rows and the
+/// samples' streams, kept from frame to frame (issue 29: one allocation per sequence).
 struct Scratch {
     std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor{libdeflate_alloc_compressor(kLevel)};
     std::vector<unsigned char> filtered;
+    std::vector<unsigned char> sample;
 };
+
+/// The run coder is taken when its streams of the sample rows are larger than libdeflate's by at
+/// most this fraction of the rows' raw bytes (8 KB of a 1920x1080 RGBA frame): flat tones, where
+/// both streams are small (dragon frames: toon 0.05 %, Gooch 0.04 %; a synthetic ellipse of two
+/// tones 0.03 %), not gradients (a Lambert dragon frame 1.1 %, test_png_encoder's gradient 2 %).
+constexpr double kRunExtraOfRaw = 0.001;
+/// Pictures of fewer rows go to libdeflate without trying: too few to sample, and quick anyway.
+constexpr int kSampledFromRows = 64;
+
+/// Whether the picture's filtered rows are better compressed by the run coder (run_deflate.h):
+/// both coders compress four bands of rows, each about 1/64 of the picture, at 1/8, 3/8, 5/8 and
+/// 7/8 of its height, and the run coder's streams are at most kRunExtraOfRaw of the bands' bytes
+/// larger than libdeflate's.
+/// About a sixteenth of libdeflate's work on the whole picture: 1 ms of a dragon frame's 13.
+bool runsPay(const unsigned char* filtered, std::size_t stride, int height, int channels, Scratch& scratch)
+{
+    if (height < kSampledFromRows)
+        return false;
+    const int rows = height / 64;
+    std::size_t runBytes = 0, generalBytes = 0, rawBytes = 0;
+    for (int band = 0; band < 4; ++band) {
+        const int first = (2 * band + 1) * height / 8 - rows / 2;
+        const unsigned char* at = filtered + std::size_t(first) * stride;
+        const std::size_t bytes = std::size_t(rows) * stride;
+        const std::size_t bound = libdeflate_zlib_compress_bound(scratch.compressor.get(), bytes);
+        scratch.sample.resize(bound);
+        const std::size_t general
+            = libdeflate_zlib_compress(scratch.compressor.get(), at, bytes, scratch.sample.data(), bound);
+        if (general == 0)
+            return false;
+        generalBytes += general;
+        rawBytes += bytes;
+        scratch.sample.clear();
+        if (!deflateRuns(at, bytes, std::size_t(channels), stride, bound, scratch.sample))
+            return false;
+        runBytes += scratch.sample.size();
+    }
+    return double(runBytes) <= double(generalBytes) + kRunExtraOfRaw * double(rawBytes);
+}
 
 } // namespace
 
@@ -110,14 +151,24 @@ QString encodePng(const unsigned char* pixels, int width, int height, int channe
         // One IDAT chunk holding the whole zlib stream.
         chunk = openChunk(out, "IDAT");
         const std::size_t at = out.size();
-        out.resize(at + bound);
-        const std::size_t written = libdeflate_zlib_compress(
-            scratch.compressor.get(), scratch.filtered.data(), filteredBytes, out.data() + at, bound);
-        if (written == 0 || written > 0x7fffffffu) {
+        const std::size_t stride = rowBytes + 1;
+        // Runs: a frame of flat tones by the run coder, about 3 times as fast as libdeflate for
+        // files 2 % larger (issue 29, the writer's part of a sequence); others by libdeflate.
+        if (!runsPay(scratch.filtered.data(), stride, height, channels, scratch)
+            || !deflateRuns(scratch.filtered.data(), filteredBytes, std::size_t(channels), stride, bound, out)) {
+            out.resize(at + bound);
+            const std::size_t written = libdeflate_zlib_compress(
+                scratch.compressor.get(), scratch.filtered.data(), filteredBytes, out.data() + at, bound);
+            if (written == 0) {
+                out.clear();
+                return PngText::tr("the PNG encoder failed: the compressed image does not fit");
+            }
+            out.resize(at + written);
+        }
+        if (out.size() - at > 0x7fffffffu) {
             out.clear();
             return PngText::tr("the PNG encoder failed: the compressed image does not fit");
         }
-        out.resize(at + written);
         closeChunk(out, chunk);
 
         chunk = openChunk(out, "IEND");
