@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (the sanitize preset: Clang, ASan + UBSan) and runs each for SECONDS
 # (default 180), or only the KINDs given (ply, off, obj, stl, gltf, glb, fbx, animated-gltf,
-# animated-glb, png, jpg, tif, exr, psd, svg, project, cli-options, cli-process: tests/fuzz/README.md).
+# animated-glb, png, jpg, tif, exr, psd, svg, project, cli-options, cli-process, png-writer:
+# tests/fuzz/README.md).
 # A crash, sanitizer report, uncaught exception, broken promise, hang (-timeout) or huge
 # allocation (-rss_limit_mb) is a finding: its input goes to FUZZ_OUT/crashes/KIND/ and every
 # finding is listed at the end (exit 1 when there is one).

@@ -11,10 +11,13 @@
 #include "celform/model/data/io_error.h"
 #include "celform/model/io/mesh_io.h"
 #include "celform/model/data/project_data.h"
+#include "celform/model/io/png_encoder.h"
 #include "celform/model/io/project_file.h"
+#include "celform/model/io/run_deflate.h"
 
 #include <QCommandLineParser>
 #include <QDir>
+#include <QImage>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -23,6 +26,7 @@
 
 #include <zlib.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -240,12 +244,59 @@ quint32 crc32Of(const char* data, qint64 size)
     return quint32(crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(data), uInt(size)));
 }
 
+// --- the PNG writer ------------------------------------------------------------------------------
+
+/// The writer's promise: what it encodes reads back the same. Both of its coders are reached: the
+/// bytes make a picture by tiling (so that runs, which take the run coder, are common), and
+/// deflateRuns alone compresses them as they are, inflated again by zlib.
+/// Byte 0: channels (1, 3 or 4) and the coder's period; bytes 1-2: width (1-320); byte 3: height
+/// (64-191 rows: pictures are sampled from 64 rows on); the rest: the pixels, repeated.
+QString pngWriterProblem(const QByteArray& bytes)
+{
+    if (bytes.size() < 4)
+        return {};
+    const auto* b = reinterpret_cast<const unsigned char*>(bytes.constData());
+    const int channels = std::array<int, 3>{1, 3, 4}[b[0] % 3];
+    const int width = 1 + (b[1] | (b[2] << 8)) % 320;
+    const int height = 64 + b[3] % 128;
+    const std::size_t rest = std::size_t(bytes.size()) - 4;
+    std::vector<unsigned char> px(std::size_t(width) * std::size_t(height) * std::size_t(channels), 0);
+    for (std::size_t i = 0; rest > 0 && i < px.size(); ++i)
+        px[i] = b[4 + i % rest];
+    std::vector<unsigned char> file;
+    const QString problem = model::encodePng(px.data(), width, height, channels, file);
+    if (!problem.isEmpty())
+        return QStringLiteral("the PNG writer refused a picture: ") + problem;
+    QImage back;
+    if (!back.loadFromData(file.data(), int(file.size()), "png"))
+        return QStringLiteral("the PNG written does not read back");
+    const QImage::Format format
+        = channels == 4 ? QImage::Format_RGBA8888 : (channels == 3 ? QImage::Format_RGB888 : QImage::Format_Grayscale8);
+    back = back.convertToFormat(format);
+    const std::size_t rowBytes = std::size_t(width) * std::size_t(channels);
+    for (int y = 0; y < height; ++y)
+        if (back.width() != width || back.height() != height
+            || std::memcmp(back.constScanLine(y), px.data() + std::size_t(y) * rowBytes, rowBytes) != 0)
+            return QStringLiteral("the PNG written reads back other pixels (row %1)").arg(y);
+
+    std::vector<unsigned char> stream;
+    if (!model::deflateRuns(b + 4, rest, 1 + b[0] % 8, width, std::size_t(-1), stream))
+        return QStringLiteral("the run coder refused bytes without a limit");
+    std::vector<unsigned char> inflated(rest + 1);
+    uLongf length = uLongf(inflated.size());
+    if (uncompress(inflated.data(), &length, stream.data(), uLong(stream.size())) != Z_OK || length != rest
+        || (rest > 0 && std::memcmp(inflated.data(), b + 4, rest) != 0))
+        return QStringLiteral("the run coder's stream does not inflate to its bytes");
+    return {};
+}
+
 } // namespace
 
 QStringList kinds()
 {
     return kMeshKinds + kDrawingKinds + kAnimatedKinds
-        + QStringList{QStringLiteral("project"), QStringLiteral("cli-options"), QStringLiteral("cli-process")};
+        + QStringList{QStringLiteral("project"), QStringLiteral("cli-options"), QStringLiteral("cli-process"),
+            QStringLiteral("png-writer")};
 }
 
 Outcome feed(const QString& kind, const QByteArray& bytes)
@@ -254,6 +305,12 @@ Outcome feed(const QString& kind, const QByteArray& bytes)
         return feedOptions(bytes);
     if (kind == QLatin1String("cli-process"))
         return feedCliProcess(bytes);
+    if (kind == QLatin1String("png-writer")) {
+        Outcome written;
+        written.loaded = true;
+        written.broken = pngWriterProblem(bytes);
+        return written;
+    }
     Outcome out;
     try {
         // Every reader in this process (the product runs Assimp's and most of OpenImageIO's in a

@@ -16,7 +16,8 @@ namespace celform::fuzz {
 /// Every kind, as the folders of tests/data/fuzz-corpus and tests/data/fuzz-regressions name
 /// them: the mesh suffixes (model::importMesh), the drawing suffixes (model::importDrawing),
 /// "project" (model::loadProject), "cli-options" (the option parsers of app/cli/options.h) and
-/// "cli-process" (a `celform` sub-command in a child process: cli_process.h).
+/// "cli-process" (a `celform` sub-command in a child process: cli_process.h) and "png-writer" (the
+/// PNG writer and its run coder, whose output must read back the same: fuzz_inputs.cpp).
 QStringList kinds();
 
 /// What a loader made of one input.
