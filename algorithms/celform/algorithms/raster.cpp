@@ -2,6 +2,7 @@
 // top-left fill rule, near-plane and guard-band clipping in camera space, perspective-correct
 // barycentrics, and capsule-shaped anti-aliased strokes tested against the G-buffer depth.
 #include "celform/algorithms/raster.h"
+#include "celform/algorithms/fresh_memory.h"
 
 #include <algorithm>
 #include <array>
@@ -270,7 +271,7 @@ void RasterCamera::ray(double x, double y, Eigen::Vector3d& origin, Eigen::Vecto
 }
 
 void rasterise(const Positions& shape, const Faces& faces, const Positions& vertexNormals, const RasterCamera& camera,
-    GBuffer& out)
+    GBuffer& out, bool positions)
 {
     assert(camera.width >= 0 && camera.height >= 0 && camera.width < kGuard && camera.height < kGuard);
     assert(vertexNormals.rows() == 0 || vertexNormals.rows() == shape.rows());
@@ -279,10 +280,20 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
     const std::size_t pixelCount = std::size_t(width) * std::size_t(height);
     out.width = width;
     out.height = height;
+    reserveBacked(out.depth, pixelCount);
+    reserveBacked(out.faceId, pixelCount);
+    if (positions)
+        reserveBacked(out.position, pixelCount);
+    reserveBacked(out.normal, pixelCount);
+    reserveBacked(out.barycentric, pixelCount);
     out.depth.assign(pixelCount, std::numeric_limits<float>::infinity());
     out.faceId.assign(pixelCount, -1);
-    // Position, normal and barycentric are written for every pixel by the resolve pass below.
-    out.position.resize(pixelCount);
+    // Position (when asked for), normal and barycentric are written for every pixel by the resolve
+    // pass below.
+    out.position.resize(positions ? pixelCount : 0);
+    if (!positions)
+        reserveBacked(out.facesAway, pixelCount);
+    out.facesAway.resize(positions ? 0 : pixelCount);
     out.normal.resize(pixelCount);
     out.barycentric.resize(pixelCount);
     if (pixelCount == 0)
@@ -298,16 +309,17 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
     // Per vertex, once: camera coordinates, snapped pixel position and outcode.
     const Eigen::Index vertexCount = shape.rows();
     const std::size_t vertexSlots = std::size_t(vertexCount);
-    // Kept per thread: a sequence of frames allocates them once (issue 29); every slot is written
-    // below before it is read.
-    thread_local std::vector<Eigen::Vector3d> cam;
+    // Kept per thread: a sequence of frames allocates it once (issue 29); every slot is written
+    // below before it is read. Camera coordinates are not kept: only faces to clip need them, and
+    // they are computed again there (the same arithmetic), 24 bytes a vertex less to fault in.
     thread_local std::vector<RasterVertex> screen;
-    cam.resize(vertexSlots);
+    reserveBacked(screen, vertexSlots);
     screen.resize(vertexSlots);
+    const auto cameraCoordinates
+        = [&](Eigen::Index v) { return frame.toCamera(shape.row(v).transpose().cast<double>()); };
     for (Eigen::Index v = 0; v < vertexCount; ++v) {
         const std::size_t s = std::size_t(v);
-        const Eigen::Vector3d c = frame.toCamera(shape.row(v).transpose().cast<double>());
-        cam[s] = c;
+        const Eigen::Vector3d c = cameraCoordinates(v);
         RasterVertex& r = screen[s];
         r = RasterVertex{}; // the previous frame's values must not show through
         r.depth = c.z();
@@ -375,7 +387,7 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
         // near plane and the four guard planes (linear in camera space for either projection).
         std::array<ClipVertex, 16> bufA, bufB;
         for (int k = 0; k < 3; ++k) {
-            bufA[std::size_t(k)].cam = cam[std::size_t(i[k])];
+            bufA[std::size_t(k)].cam = cameraCoordinates(i[k]);
             bufA[std::size_t(k)].bary = Eigen::Vector3d::Unit(k);
             bufA[std::size_t(k)].source = (screen[std::size_t(i[k])].code & (kBehind | kOutsideGuard)) ? -1 : i[k];
         }
@@ -416,10 +428,14 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
     // Resolve pass, once per covered pixel: model-space position and interpolated normal of the
     // winning face (cheaper than interpolating them for every overdrawn sample).
     const bool haveNormals = vertexNormals.rows() == shape.rows() && vertexNormals.rows() > 0;
+    const Eigen::Vector3f eyeF = camera.eye.cast<float>();
     for (std::size_t p = 0; p < pixelCount; ++p) {
         const std::int32_t f = out.faceId[p];
         if (f < 0) {
-            out.position[p].setZero();
+            if (positions)
+                out.position[p].setZero();
+            else
+                out.facesAway[p] = 0;
             out.normal[p].setZero();
             out.barycentric[p].setZero();
             continue;
@@ -428,7 +444,7 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
         const Eigen::Vector3f v0 = shape.row(faces(f, 0)).transpose();
         const Eigen::Vector3f v1 = shape.row(faces(f, 1)).transpose();
         const Eigen::Vector3f v2 = shape.row(faces(f, 2)).transpose();
-        out.position[p] = b[0] * v0 + b[1] * v1 + b[2] * v2;
+        const Eigen::Vector3f point = b[0] * v0 + b[1] * v1 + b[2] * v2;
         Eigen::Vector3f n;
         if (haveNormals) {
             n = b[0] * vertexNormals.row(faces(f, 0)).transpose() + b[1] * vertexNormals.row(faces(f, 1)).transpose()
@@ -437,7 +453,12 @@ void rasterise(const Positions& shape, const Faces& faces, const Positions& vert
             n = (v1 - v0).cross(v2 - v0);
         }
         const float length = n.norm();
-        out.normal[p] = length > 0.f ? Eigen::Vector3f(n / length) : Eigen::Vector3f::Zero();
+        const Eigen::Vector3f unit = length > 0.f ? Eigen::Vector3f(n / length) : Eigen::Vector3f::Zero();
+        out.normal[p] = unit;
+        if (positions)
+            out.position[p] = point;
+        else
+            out.facesAway[p] = unit.dot(eyeF - point) < 0.f ? 1 : 0;
     }
 }
 

@@ -88,6 +88,10 @@ struct GBuffer {
     std::vector<Eigen::Vector3f> position;
     std::vector<Eigen::Vector3f> normal;
     std::vector<Eigen::Vector3f> barycentric; ///< of the covering face, perspective-correct
+    /// Made instead of position (rasterise's positions false): 1 where the pixel's normal points
+    /// away from the eye, normal . (eye - point) < 0 with the point position would hold and the
+    /// eye in float, else 0 (and off the mesh). Empty when position is made.
+    std::vector<std::uint8_t> facesAway;
 };
 
 /// Rasterises shape (with per-vertex normals) into the G-buffer: pixel-centre sampling,
@@ -103,8 +107,11 @@ struct GBuffer {
 ///   the interpolated vertex normals as given, not flipped towards the camera.
 /// - vertexNormals: #V by 3, or empty to use the geometric face normal.
 /// Single-threaded; position, normal and barycentric are zero where faceId is -1.
+/// positions false leaves GBuffer::position empty and makes GBuffer::facesAway instead, all a
+/// shading with a directional light asks of the point: 11 bytes a pixel less to write and, in a
+/// sequence's first frame, to fault in (issue 29: 23 MB at 1920x1080).
 void rasterise(const Positions& shape, const Faces& faces, const Positions& vertexNormals, const RasterCamera& camera,
-    GBuffer& out);
+    GBuffer& out, bool positions = true);
 
 /// Draws styled strokes anti-aliased into coverage (single channel, width * height, values in
 /// [0, 1], combined with max), hiding the parts behind the surface: a line sample is kept where

@@ -2,6 +2,7 @@
 // feature lines over it, and fill the passes. No threads and no globals: the same inputs give the
 // same pixels on every machine (DESIGN.md, "Rendering").
 #include "celform/algorithms/render.h"
+#include "celform/algorithms/fresh_memory.h"
 
 #include "celform/algorithms/stroke_refine.h"
 
@@ -203,11 +204,22 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         }
     }
 
+    // The pixels' points are kept where the shading reads them: for the caller of the G-buffer, a
+    // point light, the comic style's hatching, the highlights and the supersampled tone (those two
+    // read the neighbours' too). A directional light's toon, Gooch and Lambert shading asks only
+    // whether each normal faces the eye: GBuffer::facesAway, the same test on the same bits.
+    const bool comic = look.style == Style::Comic
+        || std::find(look.materialStyles.begin(), look.materialStyles.end(), Style::Comic) != look.materialStyles.end();
+    const bool keepPositions = gbuffer || look.pointLight || comic || !look.highlights.empty()
+        || (look.toneAntialiasing == ToneAntialiasing::Supersample4 && look.toonEvaluation == ToonEvaluation::PerPixel);
     GBuffer& g = scratch.gbuffer;
-    rasterise(shape, faces, normals, camera, g);
+    rasterise(shape, faces, normals, camera, g, keepPositions);
+    // A directional light's direction does not depend on the point (lightDirection).
+    auto positionAt = [&](std::size_t i) { return keepPositions ? g.position[i] : Eigen::Vector3f::Zero().eval(); };
 
     // Lines: topology once per mesh, features and strokes per frame, from the line view's eye
     // (the centre eye for stereo pairs, paper 3, section 4.2.2), projected with this camera.
+    reserveBacked(out.lines, pixelCount);
     out.lines.assign(pixelCount, 0.f);
     if (look.lines) {
         if (topologyBuilt.valid())
@@ -260,7 +272,8 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
         const Eigen::Vector3f& n = g.normal[i];
         // Seen from behind (the inside of an open mesh), a surface is lit from the side that
         // faces the viewer, as in every DCC viewport.
-        return n.dot(eyeF - g.position[i]) < 0.f ? Eigen::Vector3f(-n) : n;
+        const bool away = keepPositions ? n.dot(eyeF - g.position[i]) < 0.f : g.facesAway[i] != 0;
+        return away ? Eigen::Vector3f(-n) : n;
     };
     auto pixelOffset = [&](std::size_t i) {
         const std::int32_t f = g.faceId[i];
@@ -269,10 +282,11 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
             + bary.z() * offsetAt(look, faces(f, 2));
     };
     std::vector<float>& lambertAt = scratch.lambert;
+    reserveBacked(lambertAt, pixelCount);
     lambertAt.assign(pixelCount, 0.f);
     for (std::size_t i = 0; i < pixelCount; ++i)
         if (g.faceId[i] >= 0)
-            lambertAt[i] = facingNormal(i).dot(lightDirection(look, g.position[i])) + pixelOffset(i);
+            lambertAt[i] = facingNormal(i).dot(lightDirection(look, positionAt(i))) + pixelOffset(i);
     const bool toneAa = look.toonEvaluation == ToonEvaluation::PerPixel;
     // The per-pixel tone, anti-aliased as the look asks.
     auto pixelTone = [&](int x, int y, std::size_t i) {
@@ -306,6 +320,7 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
     // Every pixel of the beauty is written below: only its size is set here.
     out.beauty.width = width;
     out.beauty.height = height;
+    reserveBacked(out.beauty.pixels, pixelCount * 4);
     out.beauty.pixels.resize(pixelCount * 4);
     const bool dataPasses = look.dataPasses;
     if (dataPasses) {
@@ -338,7 +353,7 @@ void renderFrame(const Positions& shape, const TriMesh& mesh, const RasterCamera
                 const Style style = std::size_t(material) < look.materialStyles.size()
                     ? look.materialStyles[std::size_t(material)]
                     : look.style;
-                const Eigen::Vector3f position = g.position[i];
+                const Eigen::Vector3f position = positionAt(i);
                 const Eigen::Vector3f n = facingNormal(i);
                 const Eigen::Vector3f l = lightDirection(look, position);
                 const Eigen::Vector3f bary = g.barycentric[i];

@@ -121,11 +121,13 @@ void writeEncoded(const EncodedFrame& image, const QString& path)
 }
 
 void writeChannelsFile(const QString& path, int width, int height, const std::vector<std::string>& names,
-    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& scratch)
+    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame* scratch)
 {
     if (imageSuffix(path) != QLatin1String("exr")) {
-        encodeChannels(path, width, height, names, data, count, encodeSrgb, scratch);
-        writeEncoded(scratch, path);
+        EncodedFrame local;
+        EncodedFrame& encoded = scratch ? *scratch : local;
+        encodeChannels(path, width, height, names, data, count, encodeSrgb, encoded);
+        writeEncoded(encoded, path);
         return;
     }
     // The floats as they are, read where they lie (no copy of the image is made).
@@ -141,8 +143,7 @@ namespace {
 void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
     const std::vector<float>& data, bool encodeSrgb)
 {
-    EncodedFrame scratch;
-    writeChannelsFile(path, width, height, names, data.data(), data.size(), encodeSrgb, scratch);
+    writeChannelsFile(path, width, height, names, data.data(), data.size(), encodeSrgb);
 }
 
 } // namespace

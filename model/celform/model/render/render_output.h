@@ -103,9 +103,9 @@ void writeEncoded(const EncodedFrame& image, const QString& path);
 
 /// Writes count interleaved floats of the named channels to path by its suffix, atomically: an EXR
 /// straight from data, an 8-bit file through encodeChannels into scratch (whose buffers a
-/// sequence reuses) and writeEncoded. Throws IoError naming path.
+/// sequence reuses; null: made here) and writeEncoded. Throws IoError naming path.
 void writeChannelsFile(const QString& path, int width, int height, const std::vector<std::string>& names,
-    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame& scratch);
+    const float* data, std::size_t count, bool encodeSrgb, EncodedFrame* scratch = nullptr);
 
 /// Writes an image by suffix (png, tif, tiff, jpg, jpeg, exr), atomically (temporary file beside
 /// it, then a rename). Throws IoError naming the file.
