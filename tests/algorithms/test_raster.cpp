@@ -503,6 +503,59 @@ private slots:
         QVERIFY(same(g1.barycentric, g2.barycentric));
     }
 
+    /// Without positions (issue 29), the G-buffer says which normals face away from the eye, as the
+    /// renderer's test on the positions would (normal . (eye - point) < 0, in float), and holds the
+    /// same depth, ids, normals and barycentrics. The soup's faces are seen from both sides, so
+    /// both answers occur.
+    void facesAwayWithoutPositions()
+    {
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<float> u(-3.f, 3.f);
+        const int n = 2000;
+        Positions v(3 * n, 3);
+        for (Eigen::Index i = 0; i < v.rows(); ++i)
+            v.row(i) = Eigen::RowVector3f(u(rng), u(rng), u(rng));
+        Faces f(n, 3);
+        for (int t = 0; t < n; ++t)
+            f.row(t) << 3 * t, 3 * t + 1, 3 * t + 2;
+        const Positions normals = vertexNormals(v, f);
+        RasterCamera c;
+        c.eye = Eigen::Vector3d(0.3, -0.2, 9.0);
+        c.target = Eigen::Vector3d(0, 0, 0);
+        c.width = 150;
+        c.height = 110;
+        GBuffer with, without;
+        rasterise(v, f, normals, c, with);
+        rasterise(v, f, normals, c, without, false);
+        QVERIFY(without.position.empty());
+        QVERIFY(with.facesAway.empty());
+        QCOMPARE(without.facesAway.size(), with.faceId.size());
+        const auto same = [](const auto& x, const auto& y) {
+            return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+        };
+        QVERIFY(same(with.depth, without.depth));
+        QVERIFY(same(with.faceId, without.faceId));
+        QVERIFY(same(with.normal, without.normal));
+        QVERIFY(same(with.barycentric, without.barycentric));
+        const Eigen::Vector3f eye = c.eye.cast<float>();
+        int away = 0, towards = 0;
+        for (std::size_t i = 0; i < with.faceId.size(); ++i) {
+            if (with.faceId[i] < 0) {
+                QCOMPARE(int(without.facesAway[i]), 0);
+                continue;
+            }
+            const bool expected = with.normal[i].dot(eye - with.position[i]) < 0.f;
+            QCOMPARE(without.facesAway[i] != 0, expected);
+            (expected ? away : towards) += 1;
+        }
+        QVERIFY2(
+            away > 1000 && towards > 1000, qPrintable(QStringLiteral("%1 away, %2 towards").arg(away).arg(towards)));
+        // The storage is reused: a second G-buffer made with positions drops facesAway again.
+        rasterise(v, f, normals, c, without);
+        QVERIFY(without.facesAway.empty());
+        QVERIFY(same(with.position, without.position));
+    }
+
     void sphereSilhouetteNormals()
     {
         const Mesh m = uvSphere(96, 48);
