@@ -11,7 +11,7 @@
 #include <QString>
 #include <QtEndian>
 
-#include <zlib.h>
+#include <libdeflate.h>
 
 #include <algorithm>
 #include <utility>
@@ -32,16 +32,12 @@ constexpr char kEndMagic[8] = {'C', 'E', 'L', 'F', 'E', 'N', 'D', '\n'};
 constexpr qint64 kHeaderSize = 16;
 constexpr qint64 kTrailerSize = 32;
 
+/// CRC-32 (ISO 3309, as zlib's crc32) of the chunks and the manifest, by libdeflate: several times
+/// as fast as zlib's on this machine's processors (carry-less multiplication), 5 ms of the dragon's
+/// 16 MB project at every load before (issue 29: a render's start).
 inline quint32 crc32Of(const char* data, qint64 size)
 {
-    uLong crc = crc32(0L, Z_NULL, 0);
-    while (size > 0) {
-        const auto n = uInt(std::min<qint64>(size, 1 << 30));
-        crc = crc32(crc, reinterpret_cast<const Bytef*>(data), n);
-        data += n;
-        size -= n;
-    }
-    return quint32(crc);
+    return quint32(libdeflate_crc32(0, data, size > 0 ? std::size_t(size) : 0));
 }
 
 // --- enums as stable strings ------------------------------------------------------------------
