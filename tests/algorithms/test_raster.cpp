@@ -15,6 +15,25 @@ namespace {
 
 /// Orthographic camera looking down -z at an image of w x h pixels, one pixel per model unit:
 /// model (x, y) lands on pixel (w / 2 + x, h / 2 - y).
+/// n triangles of separate corners drawn uniformly in [-3, 3]^3, each with its face normal.
+struct Soup {
+    Positions v;
+    Faces f;
+    Positions normals;
+    Soup(int n, unsigned seed)
+        : v(3 * n, 3)
+        , f(n, 3)
+    {
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> u(-3.f, 3.f);
+        for (Eigen::Index i = 0; i < v.rows(); ++i)
+            v.row(i) = Eigen::RowVector3f(u(rng), u(rng), u(rng));
+        for (int t = 0; t < n; ++t)
+            f.row(t) << 3 * t, 3 * t + 1, 3 * t + 2;
+        normals = vertexNormals(v, f);
+    }
+};
+
 RasterCamera pixelCamera(int w, int h)
 {
     RasterCamera c;
@@ -474,16 +493,10 @@ private slots:
 
     void deterministic()
     {
-        std::mt19937 rng(11);
-        std::uniform_real_distribution<float> u(-3.f, 3.f);
-        const int n = 3000;
-        Positions v(3 * n, 3);
-        for (Eigen::Index i = 0; i < v.rows(); ++i)
-            v.row(i) = Eigen::RowVector3f(u(rng), u(rng), u(rng));
-        Faces f(n, 3);
-        for (int t = 0; t < n; ++t)
-            f.row(t) << 3 * t, 3 * t + 1, 3 * t + 2;
-        const Positions normals = vertexNormals(v, f);
+        const Soup soup(3000, 11);
+        const Positions& v = soup.v;
+        const Faces& f = soup.f;
+        const Positions& normals = soup.normals;
         RasterCamera c;
         c.eye = Eigen::Vector3d(0.5, 0.2, 2.0); // inside the soup: many triangles cross the near plane
         c.target = Eigen::Vector3d(0, 0, -1);
@@ -509,16 +522,10 @@ private slots:
     /// both answers occur.
     void facesAwayWithoutPositions()
     {
-        std::mt19937 rng(5);
-        std::uniform_real_distribution<float> u(-3.f, 3.f);
-        const int n = 2000;
-        Positions v(3 * n, 3);
-        for (Eigen::Index i = 0; i < v.rows(); ++i)
-            v.row(i) = Eigen::RowVector3f(u(rng), u(rng), u(rng));
-        Faces f(n, 3);
-        for (int t = 0; t < n; ++t)
-            f.row(t) << 3 * t, 3 * t + 1, 3 * t + 2;
-        const Positions normals = vertexNormals(v, f);
+        const Soup soup(2000, 5);
+        const Positions& v = soup.v;
+        const Faces& f = soup.f;
+        const Positions& normals = soup.normals;
         RasterCamera c;
         c.eye = Eigen::Vector3d(0.3, -0.2, 9.0);
         c.target = Eigen::Vector3d(0, 0, 0);

@@ -40,9 +40,9 @@ std::vector<FaceRecord>& faceScratch()
     return scratch;
 }
 
-/// The edge pass's list of every edge with its kind (features first), kept per thread.
-/// Room for every edge, of which about 2 % are written: left uninitialised, so that the pages
-/// no feature edge reaches are never faulted in (issue 29: 6.5 MB of the dragon, per thread).
+/// The edge pass's list of every edge with its kind (features first), kept per thread: room for
+/// every edge, of which about 2 % are written, left uninitialised, so that the pages no feature
+/// edge reaches are never faulted in (issue 29: 6.5 MB of the dragon, per thread).
 struct EdgeScratch {
     std::unique_ptr<std::int32_t[]> edges;
     std::unique_ptr<std::uint8_t[]> kinds;
