@@ -143,7 +143,7 @@ private slots:
         for (int i = 0; i < 3; ++i) {
             m_view->update();
             QApplication::processEvents();
-            overlay.image();
+            QVERIFY(overlay.image() != nullptr); // asking for the picture must not extract again
         }
         QCOMPARE(overlay.outlineCache()->extractions(), before + 1);
 
