@@ -34,6 +34,23 @@ struct Soup {
     }
 };
 
+/// A perspective camera of w x h pixels at eye looking at target.
+RasterCamera lookingAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, int w, int h)
+{
+    RasterCamera c;
+    c.eye = eye;
+    c.target = target;
+    c.width = w;
+    c.height = h;
+    return c;
+}
+
+/// The same elements, bit for bit.
+template <typename V> bool sameBytes(const V& x, const V& y)
+{
+    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+}
+
 RasterCamera pixelCamera(int w, int h)
 {
     RasterCamera c;
@@ -494,26 +511,17 @@ private slots:
     void deterministic()
     {
         const Soup soup(3000, 11);
-        const Positions& v = soup.v;
-        const Faces& f = soup.f;
-        const Positions& normals = soup.normals;
-        RasterCamera c;
-        c.eye = Eigen::Vector3d(0.5, 0.2, 2.0); // inside the soup: many triangles cross the near plane
-        c.target = Eigen::Vector3d(0, 0, -1);
-        c.width = 160;
-        c.height = 120;
+        // Inside the soup: many triangles cross the near plane.
+        const RasterCamera c = lookingAt({0.5, 0.2, 2.0}, {0, 0, -1}, 160, 120);
         GBuffer g1, g2;
-        rasterise(v, f, normals, c, g1);
-        rasterise(v, f, normals, c, g2);
+        rasterise(soup.v, soup.f, soup.normals, c, g1);
+        rasterise(soup.v, soup.f, soup.normals, c, g2);
         QVERIFY(coveredCount(g1) > 1000);
-        const auto same = [](const auto& x, const auto& y) {
-            return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
-        };
-        QVERIFY(same(g1.depth, g2.depth));
-        QVERIFY(same(g1.faceId, g2.faceId));
-        QVERIFY(same(g1.position, g2.position));
-        QVERIFY(same(g1.normal, g2.normal));
-        QVERIFY(same(g1.barycentric, g2.barycentric));
+        QVERIFY(sameBytes(g1.depth, g2.depth));
+        QVERIFY(sameBytes(g1.faceId, g2.faceId));
+        QVERIFY(sameBytes(g1.position, g2.position));
+        QVERIFY(sameBytes(g1.normal, g2.normal));
+        QVERIFY(sameBytes(g1.barycentric, g2.barycentric));
     }
 
     /// Without positions (issue 29), the G-buffer says which normals face away from the eye, as the
@@ -523,27 +531,17 @@ private slots:
     void facesAwayWithoutPositions()
     {
         const Soup soup(2000, 5);
-        const Positions& v = soup.v;
-        const Faces& f = soup.f;
-        const Positions& normals = soup.normals;
-        RasterCamera c;
-        c.eye = Eigen::Vector3d(0.3, -0.2, 9.0);
-        c.target = Eigen::Vector3d(0, 0, 0);
-        c.width = 150;
-        c.height = 110;
+        const RasterCamera c = lookingAt({0.3, -0.2, 9.0}, {0, 0, 0}, 150, 110);
         GBuffer with, without;
-        rasterise(v, f, normals, c, with);
-        rasterise(v, f, normals, c, without, false);
+        rasterise(soup.v, soup.f, soup.normals, c, with);
+        rasterise(soup.v, soup.f, soup.normals, c, without, false);
         QVERIFY(without.position.empty());
         QVERIFY(with.facesAway.empty());
         QCOMPARE(without.facesAway.size(), with.faceId.size());
-        const auto same = [](const auto& x, const auto& y) {
-            return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
-        };
-        QVERIFY(same(with.depth, without.depth));
-        QVERIFY(same(with.faceId, without.faceId));
-        QVERIFY(same(with.normal, without.normal));
-        QVERIFY(same(with.barycentric, without.barycentric));
+        QVERIFY(sameBytes(with.depth, without.depth));
+        QVERIFY(sameBytes(with.faceId, without.faceId));
+        QVERIFY(sameBytes(with.normal, without.normal));
+        QVERIFY(sameBytes(with.barycentric, without.barycentric));
         const Eigen::Vector3f eye = c.eye.cast<float>();
         int away = 0, towards = 0;
         for (std::size_t i = 0; i < with.faceId.size(); ++i) {
@@ -558,9 +556,9 @@ private slots:
         QVERIFY2(
             away > 1000 && towards > 1000, qPrintable(QStringLiteral("%1 away, %2 towards").arg(away).arg(towards)));
         // The storage is reused: a second G-buffer made with positions drops facesAway again.
-        rasterise(v, f, normals, c, without);
+        rasterise(soup.v, soup.f, soup.normals, c, without);
         QVERIFY(without.facesAway.empty());
-        QVERIFY(same(with.position, without.position));
+        QVERIFY(sameBytes(with.position, without.position));
     }
 
     void sphereSilhouetteNormals()

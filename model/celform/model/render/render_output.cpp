@@ -138,16 +138,6 @@ void writeChannelsFile(const QString& path, int width, int height, const std::ve
     writeExr(path, width, height, sources);
 }
 
-namespace {
-
-void writeChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
-    const std::vector<float>& data, bool encodeSrgb)
-{
-    writeChannelsFile(path, width, height, names, data.data(), data.size(), encodeSrgb);
-}
-
-} // namespace
-
 algo::RenderLook renderLookFor(
     const ProjectData& data, const Look& look, const std::vector<float>* shadingOffsets, int frame)
 {
@@ -507,13 +497,14 @@ void passImage(const algo::RenderPasses& passes, const QString& pass, bool forFl
 
 void writeImage(const algo::ImageRGBA& image, const QString& path)
 {
-    writeChannels(path, image.width, image.height, {"R", "G", "B", "A"}, image.pixels, true);
+    writeChannelsFile(
+        path, image.width, image.height, {"R", "G", "B", "A"}, image.pixels.data(), image.pixels.size(), true);
 }
 
 void writeImageChannels(const QString& path, int width, int height, const std::vector<std::string>& names,
     const std::vector<float>& data, bool encodeSrgb)
 {
-    writeChannels(path, width, height, names, data, encodeSrgb);
+    writeChannelsFile(path, width, height, names, data.data(), data.size(), encodeSrgb);
 }
 
 QString incompleteImageProblem(const QString& path)
